@@ -1,0 +1,1 @@
+//! Output bundle: the zip holding the package and the report.

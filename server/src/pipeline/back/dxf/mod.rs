@@ -1,0 +1,1 @@
+//! DXF back end. See `write`.

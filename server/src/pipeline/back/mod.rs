@@ -1,0 +1,6 @@
+//! Back ends: validated IR (plus the passes' side tables) in, bytes out.
+
+pub mod bundle;
+pub mod dxf;
+pub mod modelica;
+pub mod stl;

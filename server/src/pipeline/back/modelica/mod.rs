@@ -1,0 +1,1 @@
+//! Modelica back end.

@@ -1,0 +1,1 @@
+//! STL back end. See `write_binary`.

@@ -1,0 +1,1 @@
+//! Input bundles: a zip or a directory's files, held in memory.

@@ -1,0 +1,5 @@
+//! Front ends: source formats in, IR out.
+
+pub mod bundle;
+pub mod simmechanics;
+pub mod stl;

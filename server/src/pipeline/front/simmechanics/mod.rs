@@ -1,0 +1,1 @@
+//! First-generation SimMechanics XML front end. See `parse`.

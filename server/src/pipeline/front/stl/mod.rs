@@ -1,0 +1,1 @@
+//! STL front end (ASCII and binary). See `parse`.

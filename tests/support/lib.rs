@@ -1,0 +1,1 @@
+//! Shared helpers for cad2mo's integration tests.
