@@ -1,5 +1,199 @@
-//! The `cad2mo` command line.
+//! The `cad2mo` command line: the only part of the converter that touches the file system.
+//!
+//! Exit codes: 0 success, 1 conversion error (message on stderr), 2 bad usage.
+//! An output file is written atomically (temporary file + rename): an error never leaves a
+//! partial file behind.
 
-pub fn main() -> std::process::ExitCode {
-    std::process::ExitCode::SUCCESS
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+
+use crate::pipeline::front::bundle::{Bundle, Limits};
+use crate::pipeline::{self, Options};
+
+#[derive(Parser, Debug)]
+#[command(name = "cad2mo", version, about = "Converts CAD assembly exports into Modelica packages")]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Convert a bundle (a .zip or a directory with the XML export and its meshes) into a zip
+    /// holding the Modelica package and report.json.
+    Convert {
+        /// The input bundle: a .zip file or a directory.
+        bundle: PathBuf,
+        /// The output zip.
+        #[arg(short, long)]
+        output: PathBuf,
+        /// Name of the Modelica package (default: from the assembly's name).
+        #[arg(long)]
+        package_name: Option<String>,
+        /// Gravity vector in world coordinates, m/s^2, as X,Y,Z.
+        #[arg(long, value_parser = parse_gravity, default_value = "0,-9.81,0", allow_hyphen_values = true)]
+        gravity: [f64; 3],
+        /// Merge bodies joined by welds into single bodies.
+        #[arg(long)]
+        lump_welds: bool,
+    },
+    /// Print the conversion report (JSON) of a bundle without writing a package.
+    Inspect {
+        bundle: PathBuf,
+        #[arg(long)]
+        lump_welds: bool,
+    },
+}
+
+fn parse_gravity(s: &str) -> Result<[f64; 3], String> {
+    let parts: Vec<&str> = s.split(',').map(str::trim).collect();
+    if parts.len() != 3 {
+        return Err(format!("expected three numbers X,Y,Z, got \"{s}\""));
+    }
+    let mut g = [0.0; 3];
+    for (k, p) in parts.iter().enumerate() {
+        g[k] = p.parse::<f64>().map_err(|_| format!("\"{p}\" is not a number"))?;
+        if !g[k].is_finite() {
+            return Err(format!("\"{p}\" is not finite"));
+        }
+    }
+    Ok(g)
+}
+
+/// Reads a bundle from a zip file or a directory tree.
+pub fn read_bundle(path: &Path, limits: &Limits) -> Result<Bundle, String> {
+    let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_else(|| path.display().to_string());
+    let meta = std::fs::metadata(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    if meta.is_dir() {
+        let mut files = Vec::new();
+        let mut total = 0u64;
+        let mut stack = vec![path.to_path_buf()];
+        while let Some(dir) = stack.pop() {
+            let entries = std::fs::read_dir(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+            for entry in entries {
+                let entry = entry.map_err(|e| format!("{}: {e}", dir.display()))?;
+                let p = entry.path();
+                let ft = entry.file_type().map_err(|e| format!("{}: {e}", p.display()))?;
+                if ft.is_dir() {
+                    stack.push(p);
+                } else if ft.is_file() {
+                    let bytes = std::fs::read(&p).map_err(|e| format!("{}: {e}", p.display()))?;
+                    total += bytes.len() as u64;
+                    if total > limits.max_total_bytes || files.len() >= limits.max_entries {
+                        return Err(format!("{}: bundle exceeds {} bytes or {} files", path.display(), limits.max_total_bytes, limits.max_entries));
+                    }
+                    let rel = p.strip_prefix(path).map_err(|e| e.to_string())?;
+                    let rel = rel.components().map(|c| c.as_os_str().to_string_lossy()).collect::<Vec<_>>().join("/");
+                    files.push((rel, bytes));
+                }
+            }
+        }
+        Bundle::from_files(&name, files).map_err(|e| e.to_string())
+    } else {
+        let bytes = std::fs::read(path).map_err(|e| format!("{}: {e}", path.display()))?;
+        Bundle::from_zip(&name, &bytes, limits).map_err(|e| e.to_string())
+    }
+}
+
+/// Writes `bytes` to `path` through a temporary file in the same folder and a rename.
+pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    let dir = path.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    let file_name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+    let tmp = dir.join(format!(".{file_name}.{}.tmp", std::process::id()));
+    let result = std::fs::write(&tmp, bytes).and_then(|_| std::fs::rename(&tmp, path));
+    if result.is_err() {
+        let _ = std::fs::remove_file(&tmp);
+    }
+    result
+}
+
+fn print_warnings(warnings: &[pipeline::ir::Warning]) {
+    for w in warnings {
+        eprintln!("warning[{}]: {}: {}", w.code, w.location, w.message);
+    }
+}
+
+pub fn main() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(c) => c,
+        Err(e) => {
+            let _ = e.print();
+            return if e.use_stderr() { ExitCode::from(2) } else { ExitCode::SUCCESS };
+        }
+    };
+    let limits = Limits::default();
+    match cli.command {
+        Command::Convert { bundle, output, package_name, gravity, lump_welds } => {
+            if let Some(p) = &package_name {
+                if pipeline::back::modelica::sanitize(p, "P") != *p {
+                    eprintln!("error: --package-name \"{p}\" is not a Modelica identifier ([A-Za-z_][A-Za-z0-9_]*, not a keyword)");
+                    return ExitCode::from(2);
+                }
+            }
+            let b = match read_bundle(&bundle, &limits) {
+                Ok(b) => b,
+                Err(e) => {
+                    eprintln!("error: {e}");
+                    return ExitCode::from(1);
+                }
+            };
+            let opts = Options { package_name, gravity, lump_welds, write_shapes: true };
+            let out = match pipeline::convert(&b, &opts) {
+                Ok(o) => o,
+                Err(e) => {
+                    eprintln!("error: {e}");
+                    return ExitCode::from(1);
+                }
+            };
+            print_warnings(&out.report.warnings);
+            let zip = match pipeline::back::bundle::write_zip(&out.files) {
+                Ok(z) => z,
+                Err(e) => {
+                    eprintln!("error: writing zip: {e}");
+                    return ExitCode::from(1);
+                }
+            };
+            if let Err(e) = write_atomic(&output, &zip) {
+                eprintln!("error: {}: {e}", output.display());
+                return ExitCode::from(1);
+            }
+            eprintln!(
+                "wrote {} (package {}, {} bodies, {} joints, {} warnings)",
+                output.display(),
+                out.report.package_name,
+                out.report.bodies.len(),
+                out.report.joints.len(),
+                out.report.warnings.len()
+            );
+            ExitCode::SUCCESS
+        }
+        Command::Inspect { bundle, lump_welds } => {
+            let b = match read_bundle(&bundle, &limits) {
+                Ok(b) => b,
+                Err(e) => {
+                    eprintln!("error: {e}");
+                    return ExitCode::from(1);
+                }
+            };
+            let opts = Options { lump_welds, write_shapes: false, ..Options::default() };
+            match pipeline::convert(&b, &opts) {
+                Ok(out) => match serde_json::to_string_pretty(&out.report) {
+                    Ok(s) => {
+                        println!("{s}");
+                        ExitCode::SUCCESS
+                    }
+                    Err(e) => {
+                        eprintln!("error: {e}");
+                        ExitCode::from(1)
+                    }
+                },
+                Err(e) => {
+                    eprintln!("error: {e}");
+                    ExitCode::from(1)
+                }
+            }
+        }
+    }
 }

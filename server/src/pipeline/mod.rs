@@ -1,5 +1,11 @@
 //! The conversion pipeline: front ends -> IR -> passes -> validation -> back ends.
 //!
+//! ```text
+//! Bundle ──front::simmechanics──▶ ir::Model ──passes::geometry (front::stl)──▶ meshes
+//!        ──[passes::lump]──▶ passes::hierarchy + passes::kinematics ──valid──▶ Validated
+//!        ──back::modelica + back::dxf + back::stl──▶ files ──report──▶ report.json
+//! ```
+//!
 //! Architecture invariant: nothing under `pipeline` performs IO or depends on an async runtime,
 //! a web framework or a database. Bytes and options come in, files and diagnostics go out.
 //! (`tests/tidy.rs` enforces this.)
@@ -7,3 +13,157 @@
 pub mod back;
 pub mod front;
 pub mod ir;
+pub mod passes;
+pub mod report;
+pub mod valid;
+
+use serde::Serialize;
+
+use front::bundle::{Bundle, BundleError};
+use front::simmechanics::XmlError;
+use ir::{Model, Warning};
+use passes::geometry::GeometryError;
+use valid::{Analysis, Validated, ValidationError};
+
+/// The converter's version, written into every package and report.
+pub const VERSION: &str = env!("CARGO_PKG_VERSION");
+
+/// Conversion options.
+#[derive(Clone, Debug)]
+pub struct Options {
+    /// Modelica package name; `None` derives it from the assembly's name.
+    pub package_name: Option<String>,
+    /// Gravity in world coordinates, m/s² (CAD "up" is usually +y).
+    pub gravity: [f64; 3],
+    /// Merge bodies joined by welds into one body each.
+    pub lump_welds: bool,
+    /// Write DXF/STL shape files (off for `inspect`).
+    pub write_shapes: bool,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options { package_name: None, gravity: [0.0, -9.81, 0.0], lump_welds: false, write_shapes: true }
+    }
+}
+
+/// One conversion error, by stage. Every variant names the file (and where it can, the line,
+/// column and element).
+#[derive(Debug, thiserror::Error)]
+pub enum ConvertError {
+    #[error(transparent)]
+    Bundle(#[from] BundleError),
+    #[error(transparent)]
+    Xml(#[from] XmlError),
+    #[error(transparent)]
+    Geometry(#[from] GeometryError),
+    #[error(transparent)]
+    Validation(#[from] ValidationError),
+    #[error("invalid option: {0}")]
+    Options(String),
+}
+
+/// A positioned message, for APIs that list errors.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct Diagnostic {
+    pub file: String,
+    pub line: u32,
+    pub column: u32,
+    pub message: String,
+}
+
+impl ConvertError {
+    pub fn diagnostics(&self) -> Vec<Diagnostic> {
+        let (file, line, column) = match self {
+            ConvertError::Xml(e) => (e.file.clone(), e.line, e.column),
+            ConvertError::Geometry(GeometryError::Stl(e)) => (e.file.clone(), e.line, 0),
+            _ => (String::new(), 0, 0),
+        };
+        vec![Diagnostic { file, line, column, message: self.to_string() }]
+    }
+}
+
+/// A finished conversion.
+#[derive(Debug)]
+pub struct Output {
+    /// Every file of the output zip, paths relative to its root: `<Pkg>/...` and `report.json`.
+    pub files: Vec<(String, Vec<u8>)>,
+    pub report: report::Report,
+}
+
+/// Front end and passes up to validation: the model as back ends will see it.
+pub struct Analysed {
+    pub model: Model,
+    pub validated: Validated,
+    /// Per lumped body, the node IDs merged into it.
+    pub merged: std::collections::BTreeMap<String, Vec<String>>,
+    /// Front-end, geometry and validation warnings, in that order.
+    pub warnings: Vec<Warning>,
+}
+
+/// Parses and analyses a bundle.
+pub fn analyse(bundle: &Bundle, opts: &Options) -> Result<Analysed, ConvertError> {
+    let xml_path = bundle.find_export(front::simmechanics::is_physical_modeling_xml)?.to_string();
+    let bytes = bundle.get(&xml_path).unwrap_or_default();
+    let (mut model, mut warnings) = front::simmechanics::parse(&xml_path, bytes)?;
+    warnings.extend(passes::geometry::read_meshes(&mut model, bundle, &xml_path)?);
+    let mut merged = Default::default();
+    if opts.lump_welds {
+        let h = passes::hierarchy::build(&model);
+        let lumped = passes::lump::lump(&model, &h);
+        model = lumped.model;
+        merged = lumped.merged;
+    }
+    let hierarchy = passes::hierarchy::build(&model);
+    let chains = model.joints.iter().map(|j| passes::kinematics::chain(&model, j)).collect();
+    let validated = valid::validate(&model, Analysis { hierarchy, chains })?;
+    warnings.extend(validated.warnings.iter().cloned());
+    Ok(Analysed { model, validated, merged, warnings })
+}
+
+/// Converts a bundle into the files of the output zip.
+pub fn convert(bundle: &Bundle, opts: &Options) -> Result<Output, ConvertError> {
+    if !opts.gravity.iter().all(|g| g.is_finite()) {
+        return Err(ConvertError::Options(format!("gravity {:?} is not finite", opts.gravity)));
+    }
+    let a = analyse(bundle, opts)?;
+    let package_name = match &opts.package_name {
+        Some(p) if back::modelica::sanitize(p, "P") == *p => p.clone(),
+        Some(p) => return Err(ConvertError::Options(format!("package name \"{p}\" is not a Modelica identifier"))),
+        None => back::modelica::sanitize(&a.model.name, "P"),
+    };
+    let package_name = if package_name == "P" { "CadModel".to_string() } else { package_name };
+    let pkg = back::modelica::write(
+        &a.model,
+        &a.validated,
+        &back::modelica::Options {
+            package_name: package_name.clone(),
+            gravity: opts.gravity,
+            converter_version: VERSION.to_string(),
+        },
+    );
+    let mut files = pkg.files;
+    if opts.write_shapes {
+        for (i, stem) in pkg.layout.shapes.iter().enumerate() {
+            let (Some(stem), Some(mesh)) = (stem, &a.model.bodies[i].mesh) else { continue };
+            let color = a.model.bodies[i].material.as_ref().map_or([0.7; 3], |m| m.color);
+            let rgb = color.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() as u8);
+            let dir = format!("{package_name}/Resources/Shapes");
+            files.push((format!("{dir}/{stem}.dxf"), back::dxf::write(mesh, rgb, stem)));
+            files.push((format!("{dir}/{stem}.stl"), back::stl::write_binary(mesh, stem)));
+        }
+    }
+    let report = report::build(report::ReportInput {
+        model: &a.model,
+        validated: &a.validated,
+        layout: &pkg.layout,
+        package_name: &package_name,
+        options: report::ReportOptions { lump_welds: opts.lump_welds, gravity: opts.gravity },
+        merged: &a.merged,
+        warnings: a.warnings,
+        version: VERSION,
+    });
+    let json = serde_json::to_vec_pretty(&report).map_err(|e| ConvertError::Options(e.to_string()))?;
+    files.push(("report.json".to_string(), json));
+    Ok(Output { files, report })
+}

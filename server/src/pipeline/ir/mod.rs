@@ -18,6 +18,8 @@
 //! - **Order**: vectors keep the source file's order; passes that need a stable order sort by
 //!   `node_id`, never by position.
 
+pub mod dump;
+
 use nalgebra::{Isometry3, Matrix3, Vector3};
 use serde::Serialize;
 

@@ -1,0 +1,490 @@
+//! Writes the package's `.mo` files.
+
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+
+use nalgebra::{Isometry3, Matrix3, Vector3};
+
+use super::names::{self, sanitize, Names, Scope};
+use crate::pipeline::ir::{FrameId, FrameOwner, Model, PrimitiveKind};
+use crate::pipeline::passes::hierarchy::LoopKind;
+use crate::pipeline::passes::kinematics::is_identity;
+use crate::pipeline::valid::{is_root_part, Validated};
+
+const MB: &str = "Modelica.Mechanics.MultiBody";
+
+/// Options of the Modelica back end.
+#[derive(Clone, Debug)]
+pub struct Options {
+    /// A valid Modelica identifier (the caller sanitises user input with [`sanitize`]).
+    pub package_name: String,
+    /// Gravity vector in world coordinates, m/s².
+    pub gravity: [f64; 3],
+    pub converter_version: String,
+}
+
+/// Where each IR entity ended up in the Modelica model: what the report and tests need.
+#[derive(Clone, Debug, Default)]
+pub struct Layout {
+    pub names: Option<Names>,
+    /// Per frame: the connector that carries it (`LINK.frame_a`, `LINK_CS3.frame_b`,
+    /// `world.frame_b`), for frames that appear in the model.
+    pub connectors: BTreeMap<FrameId, String>,
+    /// Per body: the shape component and file stem, when the body has a mesh.
+    pub shapes: Vec<Option<String>>,
+    /// Per joint: the Modelica components of its chain, in order (empty when it is a plain
+    /// connect or omitted).
+    pub joint_elements: Vec<Vec<String>>,
+    /// Per joint: how it was emitted.
+    pub emitted_as: Vec<&'static str>,
+}
+
+/// The package's text files, paths relative to the zip root (`<Pkg>/...`).
+#[derive(Clone, Debug)]
+pub struct Package {
+    pub files: Vec<(String, Vec<u8>)>,
+    pub layout: Layout,
+}
+
+/// Shortest round-trip decimal; `-0` prints as `0`.
+fn num(x: f64) -> String {
+    let x = if x == 0.0 { 0.0 } else { x };
+    format!("{x:?}")
+}
+
+fn vec3(v: &Vector3<f64>) -> String {
+    format!("{{{}, {}, {}}}", num(v.x), num(v.y), num(v.z))
+}
+
+/// Escapes text for a Modelica string literal.
+fn mstr(s: &str) -> String {
+    s.replace('\\', "\\\\").replace('"', "\\\"")
+}
+
+fn html(s: &str) -> String {
+    mstr(&s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;"))
+}
+
+/// Placement on a simple grid: one column per kind of component, one row per component.
+fn placement(column: i32, row: usize) -> String {
+    let x = column * 40;
+    let y = -(row as i32) * 25;
+    format!(
+        "annotation (Placement(transformation(extent={{{{-10,-10}},{{10,10}}}}, origin={{{x},{y}}})))"
+    )
+}
+
+struct Writer<'a> {
+    model: &'a Model,
+    v: &'a Validated,
+    pkg: &'a str,
+    scope: Scope,
+    decl: String,
+    conn: String,
+    layout: Layout,
+    rows: [usize; 6],
+}
+
+const COL_WORLD: usize = 0;
+const COL_FRAME: usize = 1;
+const COL_JOINT: usize = 2;
+const COL_BODY: usize = 3;
+const COL_SHAPE: usize = 4;
+const COL_GROUND: usize = 5;
+
+impl Writer<'_> {
+    fn place(&mut self, col: usize) -> String {
+        let column = match col {
+            COL_WORLD | COL_GROUND => -4,
+            COL_FRAME => 4,
+            COL_JOINT => -1,
+            COL_BODY => 7,
+            _ => 10,
+        };
+        let row = self.rows[col];
+        self.rows[col] += 1;
+        placement(column, row + usize::from(col == COL_GROUND) * 2)
+    }
+
+    fn connect(&mut self, a: &str, b: &str) {
+        let _ = writeln!(self.conn, "  connect({a}, {b});");
+    }
+
+    /// Declares a fixed transform `name` for `iso` (frame_b in frame_a coordinates).
+    fn fixed(&mut self, name: &str, iso: &Isometry3<f64>, comment: &str) {
+        let r = iso.translation.vector;
+        let rot = iso.rotation.to_rotation_matrix();
+        let place = self.place(COL_FRAME);
+        if iso.rotation.angle() <= crate::pipeline::passes::kinematics::IDENTITY_TOL {
+            let _ = writeln!(
+                self.decl,
+                "  {MB}.Parts.FixedTranslation {name}(r={}, animation=false)\n    \"{}\" {place};",
+                vec3(&r),
+                mstr(comment)
+            );
+        } else {
+            let m = rot.matrix();
+            let nx = m.column(0).into_owned();
+            let ny = m.column(1).into_owned();
+            let _ = writeln!(
+                self.decl,
+                "  {MB}.Parts.FixedRotation {name}(\n    r={},\n    rotationType={MB}.Types.RotationTypes.TwoAxesVectors,\n    n_x={},\n    n_y={},\n    animation=false)\n    \"{}\" {place};",
+                vec3(&r),
+                vec3(&nx),
+                vec3(&ny),
+                mstr(comment)
+            );
+        }
+    }
+
+    /// The connector of a frame, declaring the fixed transform that carries it on first use.
+    fn frame_connector(&mut self, f: FrameId, body_names: &[String]) -> String {
+        if let Some(c) = self.layout.connectors.get(&f) {
+            return c.clone();
+        }
+        let frame = self.model.frame(f);
+        let c = match frame.owner {
+            FrameOwner::Body(b) => {
+                let body = self.model.body(b);
+                let bname = &body_names[b.index()];
+                let cs1 = self.model.frame(body.cs1).pose;
+                let rel = cs1.inverse() * frame.pose;
+                if f == body.cs1 || is_identity(&rel) {
+                    format!("{bname}.frame_a")
+                } else {
+                    let label = if frame.display_name.is_empty() { &frame.name } else { &frame.display_name };
+                    let name = self.scope.take(&format!("{bname}_{}", sanitize(label, "f")));
+                    self.fixed(
+                        &name,
+                        &rel,
+                        &format!("Frame {} of {} (nodeID {})", frame.name, body.cad_name, frame.node_id),
+                    );
+                    self.connect(&format!("{bname}.frame_a"), &format!("{name}.frame_a"));
+                    format!("{name}.frame_b")
+                }
+            }
+            FrameOwner::Ground(g) => {
+                let ground = self.model.ground(g);
+                if is_identity(&frame.pose) {
+                    "world.frame_b".to_string()
+                } else {
+                    let name = self.scope.take(&sanitize(&ground.name, "g"));
+                    self.fixed(
+                        &name,
+                        &frame.pose,
+                        &format!("Ground {} (nodeID {}) in the world frame", ground.name, ground.node_id),
+                    );
+                    self.connect("world.frame_b", &format!("{name}.frame_a"));
+                    format!("{name}.frame_b")
+                }
+            }
+        };
+        self.layout.connectors.insert(f, c.clone());
+        c
+    }
+}
+
+fn is_user_frame(node_id: &str, display_name: &str) -> bool {
+    node_id.contains("USERADDED") || !display_name.is_empty()
+}
+
+/// Writes the package. Shapes are referenced for every body with a mesh; the caller writes the
+/// files under `<Pkg>/Resources/Shapes/<stem>.dxf|.stl` using [`Layout::shapes`].
+pub fn write(model: &Model, v: &Validated, opts: &Options) -> Package {
+    let names = names::assign(model);
+    let pkg = opts.package_name.as_str();
+    let mut w = Writer {
+        model,
+        v,
+        pkg,
+        scope: names.scope.clone(),
+        decl: String::new(),
+        conn: String::new(),
+        layout: Layout {
+            shapes: vec![None; model.bodies.len()],
+            joint_elements: vec![Vec::new(); model.joints.len()],
+            emitted_as: vec![""; model.joints.len()],
+            ..Layout::default()
+        },
+        rows: [0; 6],
+    };
+    let g = Vector3::from(opts.gravity);
+    let g_norm = g.norm();
+    let n = if g_norm > 0.0 { g / g_norm } else { Vector3::new(0.0, -1.0, 0.0) };
+    let place = w.place(COL_WORLD);
+    let _ = writeln!(
+        w.decl,
+        "  inner {MB}.World world(n={}, g={}) \"World frame: the CAD assembly's frame\"\n    {place};",
+        vec3(&n),
+        num(g_norm)
+    );
+
+    let analysis = &v.analysis;
+    let _ = writeln!(w.decl, "\n  // Bodies: frame_a is each part's CS1 frame");
+    for (i, body) in model.bodies.iter().enumerate() {
+        let name = &names.bodies[i];
+        let cs1 = model.frame(body.cs1).pose;
+        let cg = model.frame(body.cg).pose;
+        let r_cm = cs1.rotation.inverse() * (cg.translation.vector - cs1.translation.vector);
+        let rc = cs1.rotation.to_rotation_matrix().into_inner();
+        let rg = cg.rotation.to_rotation_matrix().into_inner();
+        let sym = (body.inertia_cg + body.inertia_cg.transpose()) * 0.5;
+        let ia: Matrix3<f64> = rc.transpose() * rg * sym * rg.transpose() * rc;
+        let anim = if body.mesh.is_some() || body.mass == 0.0 { ",\n    animation=false" } else { "" };
+        let place = w.place(COL_BODY);
+        let _ = writeln!(
+            w.decl,
+            "  {MB}.Parts.Body {name}(\n    m={},\n    r_CM={},\n    I_11={}, I_22={}, I_33={},\n    I_21={}, I_31={}, I_32={}{anim})\n    \"{}{} (nodeID {})\" {place};",
+            num(body.mass),
+            vec3(&r_cm),
+            num(ia[(0, 0)]),
+            num(ia[(1, 1)]),
+            num(ia[(2, 2)]),
+            num(ia[(1, 0)]),
+            num(ia[(2, 0)]),
+            num(ia[(2, 1)]),
+            if is_root_part(body) { "Assembly root " } else { "Part " },
+            mstr(&body.cad_name),
+            mstr(&body.node_id)
+        );
+        w.layout.connectors.insert(body.cs1, format!("{name}.frame_a"));
+    }
+
+    let _ = writeln!(w.decl, "\n  // Frames: grounds, joint attachment frames and user-added CAD frames");
+    for gid in model.ground_ids() {
+        w.frame_connector(model.ground(gid).frame, &names.bodies);
+    }
+    let mut used: Vec<FrameId> = Vec::new();
+    for j in &model.joints {
+        used.push(j.base);
+        used.push(j.follower);
+    }
+    for body in &model.bodies {
+        for f in &body.frames {
+            let fr = model.frame(*f);
+            if is_user_frame(&fr.node_id, &fr.display_name) {
+                used.push(*f);
+            }
+        }
+    }
+    for f in used {
+        w.frame_connector(f, &names.bodies);
+    }
+
+    let _ = writeln!(w.decl, "\n  // Joints: base frame -> follower frame; start values reproduce the CAD pose");
+    let mut order: Vec<_> = analysis.hierarchy.tree.clone();
+    order.extend(analysis.hierarchy.loops.iter().map(|l| l.closing));
+    for jid in order {
+        let joint = model.joint(jid);
+        let jname = names.joints[jid.index()].clone();
+        let chain = &analysis.chains[jid.index()];
+        let loop_kind = analysis.hierarchy.loop_of_closing(jid).map(|l| l.kind);
+        let in_loop = analysis.hierarchy.in_loop[jid.index()];
+        let base = w.layout.connectors[&joint.base].clone();
+        let follower = w.layout.connectors[&joint.follower].clone();
+        let what = format!("{} (nodeID {})", joint.cad_name, joint.node_id);
+        if loop_kind == Some(LoopKind::Rigid) {
+            let _ = writeln!(w.decl, "  // {}: redundant weld closing a rigid loop, not emitted", mstr(&what));
+            w.layout.emitted_as[jid.index()] = "omitted-redundant-weld";
+            continue;
+        }
+        if chain.elements.is_empty() {
+            if is_identity(&chain.residual) {
+                w.connect(&base, &follower);
+                w.layout.emitted_as[jid.index()] = "connect";
+            } else {
+                let name = jname.clone();
+                w.fixed(&name, &chain.residual, &format!("Rigid joint {what}"));
+                w.connect(&base, &format!("{name}.frame_a"));
+                w.connect(&format!("{name}.frame_b"), &follower);
+                w.layout.joint_elements[jid.index()].push(name);
+                w.layout.emitted_as[jid.index()] = "fixed";
+            }
+            continue;
+        }
+        let count = chain.elements.len();
+        let mut prev = base;
+        for (k, e) in chain.elements.iter().enumerate() {
+            let name = if count == 1 { jname.clone() } else { w.scope.take(&format!("{jname}_{}", k + 1)) };
+            let fixed = if in_loop { "" } else { ", fixed=true" };
+            let place = w.place(COL_JOINT);
+            let desc = if count == 1 {
+                format!("Joint {what}")
+            } else {
+                format!("Joint {what}, primitive {} of {count}", k + 1)
+            };
+            let kind = match (e.kind, loop_kind) {
+                (PrimitiveKind::Revolute, Some(LoopKind::PlanarRevolute)) => {
+                    let _ = writeln!(
+                        w.decl,
+                        "  {MB}.Joints.RevolutePlanarLoopConstraint {name}(n={})\n    \"{}: closes a planar loop\" {place};",
+                        vec3(&e.axis),
+                        mstr(&desc)
+                    );
+                    "revolute-planar-loop-constraint"
+                }
+                (PrimitiveKind::Revolute, _) => {
+                    let _ = writeln!(
+                        w.decl,
+                        "  {pkg}.Components.Revolute {name}(\n    n={},\n    phi(start={}{fixed}),\n    w(start=0{fixed}))\n    \"{}\" {place};",
+                        vec3(&e.axis),
+                        num(e.q0),
+                        mstr(&desc)
+                    );
+                    "revolute"
+                }
+                (PrimitiveKind::Prismatic, _) => {
+                    let _ = writeln!(
+                        w.decl,
+                        "  {pkg}.Components.Prismatic {name}(\n    n={},\n    s(start={}{fixed}),\n    v(start=0{fixed}))\n    \"{}\" {place};",
+                        vec3(&e.axis),
+                        num(e.q0),
+                        mstr(&desc)
+                    );
+                    "prismatic"
+                }
+                _ => {
+                    let states = if in_loop {
+                        String::new()
+                    } else {
+                        "(\n    enforceStates=true,\n    useQuaternions=true,\n    angles_fixed=true,\n    w_rel_a_fixed=true)".to_string()
+                    };
+                    let _ = writeln!(
+                        w.decl,
+                        "  {MB}.Joints.Spherical {name}{states}\n    \"{}\" {place};",
+                        mstr(&desc)
+                    );
+                    "spherical"
+                }
+            };
+            w.connect(&prev, &format!("{name}.frame_a"));
+            prev = format!("{name}.frame_b");
+            w.layout.joint_elements[jid.index()].push(name);
+            w.layout.emitted_as[jid.index()] = if count == 1 { kind } else { "chain" };
+        }
+        if is_identity(&chain.residual) {
+            w.connect(&prev, &follower);
+        } else {
+            let name = w.scope.take(&format!("{jname}_offset"));
+            w.fixed(&name, &chain.residual, &format!("CAD offset of joint {what} at its start values"));
+            w.connect(&prev, &format!("{name}.frame_a"));
+            w.connect(&format!("{name}.frame_b"), &follower);
+            w.layout.joint_elements[jid.index()].push(name);
+        }
+    }
+
+    let _ = writeln!(w.decl, "\n  // Shapes: CAD meshes in each body frame, metres");
+    for (i, body) in model.bodies.iter().enumerate() {
+        if body.mesh.as_ref().is_none_or(|m| m.triangles.is_empty()) {
+            continue;
+        }
+        let bname = &names.bodies[i];
+        let sname = w.scope.take(&format!("{bname}_shape"));
+        let color = body.material.as_ref().map(|m| m.color).unwrap_or([0.7, 0.7, 0.7]);
+        let c = color.map(|x| (x.clamp(0.0, 1.0) * 255.0).round() as i32);
+        let place = w.place(COL_SHAPE);
+        let _ = writeln!(
+            w.decl,
+            "  {MB}.Visualizers.FixedShape {sname}(\n    shapeType=\"modelica://{pkg}/Resources/Shapes/{bname}.dxf\",\n    length=1, width=1, height=1,\n    extra=0,\n    color={{{}, {}, {}}})\n    \"Shape of {}\" {place};",
+            c[0],
+            c[1],
+            c[2],
+            mstr(&body.cad_name)
+        );
+        w.connect(&format!("{bname}.frame_a"), &format!("{sname}.frame_a"));
+        w.layout.shapes[i] = Some(bname.clone());
+    }
+
+    let mechanics = mechanics_file(&w, opts);
+    let mut files = vec![
+        (format!("{pkg}/package.mo"), package_file(model, opts).into_bytes()),
+        (format!("{pkg}/package.order"), b"Mechanics\nComponents\n".to_vec()),
+        (format!("{pkg}/Mechanics.mo"), mechanics.into_bytes()),
+    ];
+    files.extend(components(pkg, opts));
+    let mut layout = w.layout;
+    layout.names = Some(names);
+    Package { files, layout }
+}
+
+fn provenance(model: &Model, opts: &Options) -> String {
+    let s = &model.source;
+    format!(
+        "<p>Converted by cad2mo {} from <code>{}</code> ({}), exported by {} from {} on {} by {}.</p>",
+        html(&opts.converter_version),
+        html(&s.file),
+        html(&s.container),
+        html(&s.created_using),
+        html(&s.created_from),
+        html(&s.created_on),
+        html(&s.created_by)
+    )
+}
+
+fn package_file(model: &Model, opts: &Options) -> String {
+    let pkg = &opts.package_name;
+    format!(
+        "within ;\npackage {pkg} \"Modelica model of CAD assembly {}, converted by cad2mo\"\n  annotation (\n    uses(Modelica(version=\"4.0.0\")),\n    Documentation(info=\"<html>\n{}\n<p><code>Mechanics</code> is the pure mechanical model, regenerated at every CAD change. <code>Components</code> holds joints with a 1-D <code>drive</code> flange: left open the joint is free, a motor connected to it actuates the joint.</p>\n</html>\"));\nend {pkg};\n",
+        mstr(&model.name),
+        provenance(model, opts)
+    )
+}
+
+fn mechanics_file(w: &Writer, opts: &Options) -> String {
+    let model = w.model;
+    let pkg = w.pkg;
+    let h = &w.v.analysis.hierarchy;
+    let mut notes = String::new();
+    for l in &h.loops {
+        let j = model.joint(l.closing);
+        let _ = write!(
+            notes,
+            "<li>Joint {} closes a {} loop.</li>",
+            html(&j.cad_name),
+            match l.kind {
+                LoopKind::PlanarRevolute => "planar revolute (emitted as RevolutePlanarLoopConstraint)",
+                LoopKind::Spatial => "spatial",
+                LoopKind::Rigid => "rigid (redundant weld, omitted)",
+            }
+        );
+    }
+    for b in &h.free_bodies {
+        let _ = write!(notes, "<li>Body {} has no path to the ground (free body).</li>", html(&model.body(*b).cad_name));
+    }
+    let notes = if notes.is_empty() { String::new() } else { format!("\n<ul>{notes}</ul>") };
+    format!(
+        "within {pkg};\nmodel Mechanics \"Mechanical model of {} ({} bodies, {} joints)\"\n{}\nequation\n{}  annotation (\n    experiment(StopTime=1),\n    Documentation(info=\"<html>\n{}\n<p>All quantities in SI units. Each body's frame_a is its CAD part frame CS1; joint start values reproduce the CAD pose.</p>{}\n</html>\"));\nend Mechanics;\n",
+        mstr(&model.name),
+        model.bodies.len(),
+        model.joints.len(),
+        w.decl.trim_end(),
+        w.conn,
+        provenance(model, opts),
+        notes
+    )
+}
+
+fn components(pkg: &str, opts: &Options) -> Vec<(String, Vec<u8>)> {
+    let version = mstr(&opts.converter_version);
+    let joint = |class: &str, base: &str, flange: &str, what: &str| {
+        format!(
+            "within {pkg}.Components;\nmodel {class} \"{what} joint with a drive flange\"\n  extends {MB}.Joints.{base}(final useAxisFlange=true);\n  {flange} drive\n    \"Drive flange: connect a motor or gear here; left open, the joint is free\"\n    annotation (Placement(transformation(extent={{{{-70,90}},{{-50,110}}}})));\nequation\n  connect(drive, axis);\n  annotation (Documentation(info=\"<html><p>The MSL {base} joint with <code>useAxisFlange=true</code>, exposing the 1-D axis flange as <code>drive</code> (the abstract joint of Juh&aacute;sz and Schmucker, 2008). Generated by cad2mo {version}.</p></html>\"));\nend {class};\n"
+        )
+    };
+    vec![
+        (
+            format!("{pkg}/Components/package.mo"),
+            format!("within {pkg};\npackage Components \"Joints with a drive flange, used by Mechanics\"\n  annotation (Documentation(info=\"<html><p>Generated by cad2mo {version}.</p></html>\"));\nend Components;\n").into_bytes(),
+        ),
+        (format!("{pkg}/Components/package.order"), b"Revolute\nPrismatic\n".to_vec()),
+        (
+            format!("{pkg}/Components/Revolute.mo"),
+            joint("Revolute", "Revolute", "Modelica.Mechanics.Rotational.Interfaces.Flange_a", "Revolute").into_bytes(),
+        ),
+        (
+            format!("{pkg}/Components/Prismatic.mo"),
+            joint("Prismatic", "Prismatic", "Modelica.Mechanics.Translational.Interfaces.Flange_a", "Prismatic")
+                .into_bytes(),
+        ),
+    ]
+}

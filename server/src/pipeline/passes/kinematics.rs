@@ -1,0 +1,309 @@
+//! Joint kinematics: how each joint's primitive chain reproduces the CAD pose.
+//!
+//! A joint runs from its base frame B to its follower frame F. Its primitives become a serial
+//! chain of elements with no mass in between. Each element's axis is resolved in the element's
+//! own `frame_a` at the CAD pose; its start coordinate is the CAD offset; whatever the chain cannot
+//! express (CAD noise, frames that do not coincide where they should) goes into a fixed `residual`
+//! transform between the last element and F. Forward kinematics of the chain at the start values,
+//! followed by the residual, gives F exactly, by construction:
+//!
+//! - prismatic displacements `s` are the least-squares fit of `p_F - p_B` onto the prismatic axes;
+//! - revolute angles are the twist (about the element axis) of the rotation still missing;
+//! - spherical elements start at the identity; the rotation they would carry is in the residual;
+//! - weld primitives add nothing.
+//!
+//! Axes are normalised, and components below 1e-9 (CAD noise) snapped to zero, *before* the start
+//! values are computed, so the snapping never moves a frame.
+
+use nalgebra::{DMatrix, DVector, Isometry3, Translation3, Unit, UnitQuaternion, Vector3};
+
+use crate::pipeline::ir::{Joint, Model, PrimitiveKind, Warning};
+
+/// One element of a joint chain.
+#[derive(Clone, Debug)]
+pub struct Element {
+    pub kind: PrimitiveKind,
+    /// Unit axis in the element's frame_a (zero vector for spherical).
+    pub axis: Vector3<f64>,
+    /// Start coordinate: rad (revolute) or m (prismatic); 0 for spherical.
+    pub q0: f64,
+}
+
+/// The emitted form of one joint.
+#[derive(Clone, Debug)]
+pub struct Chain {
+    /// Movable elements in XML order (welds dropped). Empty for a rigid joint.
+    pub elements: Vec<Element>,
+    /// Fixed transform from the last element's frame_b (or B when there is none) to F, expressed
+    /// in that frame.
+    pub residual: Isometry3<f64>,
+}
+
+/// Smallest residual translation (m) and rotation (rad) still emitted; below this the chain
+/// connects straight to the follower frame.
+pub const IDENTITY_TOL: f64 = 1e-12;
+
+/// Tolerance for "frames coincide" warnings: 10 µm and 1e-4 rad (CAD prints 6 digits).
+pub const COINCIDE_TOL_M: f64 = 1e-5;
+pub const COINCIDE_TOL_RAD: f64 = 1e-4;
+
+pub fn is_identity(iso: &Isometry3<f64>) -> bool {
+    iso.translation.vector.norm() <= IDENTITY_TOL && iso.rotation.angle() <= IDENTITY_TOL
+}
+
+/// Normalises and snaps CAD noise; `None` for a zero or non-finite axis.
+pub fn clean_axis(v: &Vector3<f64>) -> Option<Vector3<f64>> {
+    let n = v.try_normalize(1e-12)?;
+    let snapped = n.map(|c| if c.abs() < 1e-9 { 0.0 } else { c });
+    snapped.try_normalize(1e-12).filter(|n| n.iter().all(|c| c.is_finite()))
+}
+
+/// Twist angle of `r` about unit axis `n`, in (-pi, pi].
+pub fn twist_angle(r: &UnitQuaternion<f64>, n: &Vector3<f64>) -> f64 {
+    let q = r.quaternion();
+    let a = 2.0 * q.imag().dot(n).atan2(q.w);
+    // atan2 gives (-pi, pi] for the half angle; the full angle may leave the range.
+    let two_pi = std::f64::consts::TAU;
+    let mut a = a % two_pi;
+    if a > std::f64::consts::PI {
+        a -= two_pi;
+    } else if a <= -std::f64::consts::PI {
+        a += two_pi;
+    }
+    a
+}
+
+/// Computes the chain of `joint`. Primitives whose axis is zero are treated as welds; the caller
+/// (validation) reports them.
+pub fn chain(model: &Model, joint: &Joint) -> Chain {
+    let b = model.frame(joint.base).pose;
+    let f = model.frame(joint.follower).pose;
+
+    // Least-squares prismatic displacements from the world axes.
+    let prismatic_axes: Vec<Vector3<f64>> = joint
+        .primitives
+        .iter()
+        .filter(|p| p.kind == PrimitiveKind::Prismatic)
+        .filter_map(|p| clean_axis(&p.axis_world))
+        .collect();
+    let d = f.translation.vector - b.translation.vector;
+    let s = least_squares(&prismatic_axes, &d);
+
+    let mut cur = b;
+    let mut elements = Vec::new();
+    let mut k = 0;
+    for p in &joint.primitives {
+        match p.kind {
+            PrimitiveKind::Weld => {}
+            PrimitiveKind::Spherical => {
+                elements.push(Element { kind: p.kind, axis: Vector3::zeros(), q0: 0.0 });
+            }
+            PrimitiveKind::Revolute | PrimitiveKind::Prismatic => {
+                let Some(world_axis) = clean_axis(&p.axis_world) else { continue };
+                let Some(axis) = clean_axis(&(cur.rotation.inverse() * world_axis)) else { continue };
+                if p.kind == PrimitiveKind::Revolute {
+                    let missing = cur.rotation.inverse() * f.rotation;
+                    let q0 = twist_angle(&missing, &axis);
+                    cur.rotation *= UnitQuaternion::from_axis_angle(&Unit::new_unchecked(axis), q0);
+                    elements.push(Element { kind: p.kind, axis, q0 });
+                } else {
+                    let q0 = s.get(k).copied().unwrap_or(0.0);
+                    k += 1;
+                    cur.translation.vector += cur.rotation * (axis * q0);
+                    elements.push(Element { kind: p.kind, axis, q0 });
+                }
+            }
+        }
+    }
+    let mut residual = cur.inverse() * f;
+    if residual.translation.vector.norm() <= IDENTITY_TOL {
+        residual.translation = Translation3::identity();
+    }
+    if residual.rotation.angle() <= IDENTITY_TOL {
+        residual.rotation = UnitQuaternion::identity();
+    }
+    Chain { elements, residual }
+}
+
+fn least_squares(axes: &[Vector3<f64>], d: &Vector3<f64>) -> Vec<f64> {
+    if axes.is_empty() {
+        return Vec::new();
+    }
+    let a = DMatrix::from_fn(3, axes.len(), |r, c| axes[c][r]);
+    let rhs = DVector::from_column_slice(d.as_slice());
+    match a.svd(true, true).solve(&rhs, 1e-12) {
+        Ok(x) => x.iter().copied().collect(),
+        Err(_) => vec![0.0; axes.len()],
+    }
+}
+
+/// Warnings about a joint's CAD frames: they should coincide where the joint type requires it.
+pub fn check(model: &Model, joint: &Joint, chain: &Chain, location: &str) -> Vec<Warning> {
+    let mut out = Vec::new();
+    let kinds: Vec<PrimitiveKind> = joint.primitives.iter().map(|p| p.kind).collect();
+    let has_prismatic = kinds.contains(&PrimitiveKind::Prismatic);
+    let has_spherical = kinds.contains(&PrimitiveKind::Spherical);
+    let gap = chain.residual.translation.vector.norm();
+    if gap > COINCIDE_TOL_M {
+        let what = if has_prismatic { "off the prismatic axes" } else { "apart" };
+        out.push(Warning::new(
+            "joint-frames-apart",
+            format!(
+                "{} joint: base and follower frames are {:.6} mm {what}; the CAD offset is kept as a fixed translation",
+                describe(&kinds),
+                gap * 1e3
+            ),
+            location,
+        ));
+    }
+    let angle = chain.residual.rotation.angle();
+    if !has_spherical && angle > COINCIDE_TOL_RAD {
+        let base = model.frame(joint.base);
+        let fol = model.frame(joint.follower);
+        out.push(Warning::new(
+            "joint-frames-misaligned",
+            format!(
+                "{} joint: follower frame {} is rotated {:.6} deg from base frame {} beyond what the joint's axes allow; the CAD orientation is kept as a fixed rotation",
+                describe(&kinds),
+                fol.name,
+                angle.to_degrees(),
+                base.name
+            ),
+            location,
+        ));
+    }
+    out
+}
+
+fn describe(kinds: &[PrimitiveKind]) -> String {
+    kinds.iter().map(|k| k.as_str()).collect::<Vec<_>>().join("+")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::pipeline::ir::*;
+    use nalgebra::{Rotation3, Vector3};
+
+    fn frame(owner: FrameOwner, pose: Isometry3<f64>) -> Frame {
+        Frame {
+            name: "CS".into(),
+            display_name: String::new(),
+            node_id: String::new(),
+            owner,
+            ref_id: None,
+            pose,
+            loc: SourceLoc::default(),
+        }
+    }
+
+    fn model_with(b: Isometry3<f64>, f: Isometry3<f64>, prims: &[(PrimitiveKind, [f64; 3])]) -> (Model, Joint) {
+        let mut m = Model::default();
+        m.frames.push(frame(FrameOwner::Body(BodyId(0)), b));
+        m.frames.push(frame(FrameOwner::Body(BodyId(1)), f));
+        let j = Joint {
+            cad_name: "j".into(),
+            node_id: "1:-:2".into(),
+            subsystem_path: vec![],
+            base: FrameId(0),
+            follower: FrameId(1),
+            primitives: prims
+                .iter()
+                .map(|(k, a)| Primitive { kind: *k, axis_world: Vector3::from(*a), loc: SourceLoc::default() })
+                .collect(),
+            loc: SourceLoc::default(),
+        };
+        (m, j)
+    }
+
+    fn fk(b: &Isometry3<f64>, c: &Chain) -> Isometry3<f64> {
+        let mut cur = *b;
+        for e in &c.elements {
+            match e.kind {
+                PrimitiveKind::Revolute => {
+                    cur.rotation *= UnitQuaternion::from_axis_angle(&Unit::new_normalize(e.axis), e.q0)
+                }
+                PrimitiveKind::Prismatic => cur.translation.vector += cur.rotation * (e.axis * e.q0),
+                _ => {}
+            }
+        }
+        cur * c.residual
+    }
+
+    #[test]
+    fn revolute_offset_becomes_start_angle() {
+        let rb = Rotation3::from_euler_angles(0.3, -0.2, 1.1);
+        let b = Isometry3::from_parts(Translation3::new(0.1, 0.2, 0.3), rb.into());
+        let axis_world = rb * Vector3::new(0.0, 0.0, 1.0);
+        let f_rot = UnitQuaternion::from_rotation_matrix(&rb)
+            * UnitQuaternion::from_axis_angle(&Vector3::z_axis(), 0.5);
+        let f = Isometry3::from_parts(b.translation, f_rot);
+        let (m, j) = model_with(b, f, &[(PrimitiveKind::Revolute, axis_world.into())]);
+        let c = chain(&m, &j);
+        assert_eq!(c.elements.len(), 1);
+        assert!((c.elements[0].q0 - 0.5).abs() < 1e-12);
+        assert!((c.elements[0].axis - Vector3::z()).norm() < 1e-12);
+        assert!(is_identity(&c.residual), "{:?}", c.residual);
+        assert!((fk(&b, &c).to_homogeneous() - f.to_homogeneous()).norm() < 1e-12);
+    }
+
+    #[test]
+    fn six_dof_chain_reproduces_pose() {
+        let b = Isometry3::translation(0.0, 0.0, 0.0);
+        let f = Isometry3::from_parts(
+            Translation3::new(0.01, -0.02, 0.03),
+            UnitQuaternion::from_euler_angles(0.2, 0.1, -0.4),
+        );
+        let (m, j) = model_with(
+            b,
+            f,
+            &[
+                (PrimitiveKind::Prismatic, [1.0, 0.0, 0.0]),
+                (PrimitiveKind::Prismatic, [0.0, 1.0, 0.0]),
+                (PrimitiveKind::Prismatic, [0.0, 0.0, 1.0]),
+                (PrimitiveKind::Spherical, [0.0, 0.0, 0.0]),
+            ],
+        );
+        let c = chain(&m, &j);
+        let q: Vec<f64> = c.elements.iter().map(|e| e.q0).collect();
+        assert!((q[0] - 0.01).abs() < 1e-15 && (q[1] + 0.02).abs() < 1e-15 && (q[2] - 0.03).abs() < 1e-15);
+        assert!(c.residual.translation.vector.norm() < 1e-15);
+        assert!((fk(&b, &c).to_homogeneous() - f.to_homogeneous()).norm() < 1e-12);
+    }
+
+    #[test]
+    fn noisy_axis_is_snapped_without_moving_frames() {
+        let b = Isometry3::identity();
+        let f = Isometry3::from_parts(
+            Translation3::identity(),
+            UnitQuaternion::from_axis_angle(&Unit::new_normalize(Vector3::new(0.0, -1.61681e-10, -1.0)), 0.7),
+        );
+        let (m, j) = model_with(b, f, &[(PrimitiveKind::Revolute, [0.0, -1.61681e-10, -1.0])]);
+        let c = chain(&m, &j);
+        assert_eq!(c.elements[0].axis, Vector3::new(0.0, 0.0, -1.0));
+        assert!((fk(&b, &c).to_homogeneous() - f.to_homogeneous()).norm() < 1e-12);
+    }
+
+    #[test]
+    fn misplaced_revolute_frames_warn() {
+        let b = Isometry3::identity();
+        let f = Isometry3::translation(0.002, 0.0, 0.0);
+        let (m, j) = model_with(b, f, &[(PrimitiveKind::Revolute, [0.0, 0.0, 1.0])]);
+        let c = chain(&m, &j);
+        let w = check(&m, &j, &c, "joint j");
+        assert_eq!(w.len(), 1);
+        assert_eq!(w[0].code, "joint-frames-apart");
+        assert!(w[0].message.contains("2.000000 mm"), "{}", w[0].message);
+        assert!((fk(&b, &c).to_homogeneous() - f.to_homogeneous()).norm() < 1e-12);
+    }
+
+    #[test]
+    fn twist_range() {
+        let q = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), 3.0);
+        assert!((twist_angle(&q, &Vector3::z()) - 3.0).abs() < 1e-12);
+        let q = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), -3.0);
+        assert!((twist_angle(&q, &Vector3::z()) + 3.0).abs() < 1e-12);
+        let q = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), 0.25);
+        assert!((twist_angle(&q, &-Vector3::z()) + 0.25).abs() < 1e-12);
+    }
+}

@@ -1,0 +1,11 @@
+//! Passes over the IR. Each computes a side table (or, for lumping, a new IR) and never does IO.
+//!
+//! - [`hierarchy`]: spanning tree from the grounds, loops, free bodies.
+//! - [`kinematics`]: each joint's primitive chain, start coordinates and residual offset.
+//! - [`lump`]: optional merge of welded groups into single bodies.
+//! - [`geometry`]: reads each body's STL named by the XML from the bundle.
+
+pub mod geometry;
+pub mod hierarchy;
+pub mod kinematics;
+pub mod lump;

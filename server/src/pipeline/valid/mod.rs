@@ -1,0 +1,239 @@
+//! Validation: the checks no CAD tool makes, run once before any back end.
+//!
+//! Hard errors stop the conversion ([`ValidationError`]); everything else becomes a [`Warning`]
+//! with the offending values, returned next to the output. Back ends take a [`Validated`], so
+//! unvalidated IR cannot reach them.
+
+use nalgebra::{Matrix3, SymmetricEigen};
+
+use crate::pipeline::ir::{Body, Model, PrimitiveKind, Warning};
+use crate::pipeline::passes::hierarchy::{self, Hierarchy, LoopKind, Node};
+use crate::pipeline::passes::kinematics::{self, Chain};
+
+/// The passes' side tables for one model.
+#[derive(Clone, Debug)]
+pub struct Analysis {
+    pub hierarchy: Hierarchy,
+    /// One chain per joint, indexed like `Model::joints`.
+    pub chains: Vec<Chain>,
+}
+
+/// Proof that a model passed validation, with the analysis back ends need.
+#[derive(Clone, Debug)]
+pub struct Validated {
+    pub analysis: Analysis,
+    pub warnings: Vec<Warning>,
+}
+
+#[derive(Debug, thiserror::Error, PartialEq)]
+pub enum ValidationError {
+    #[error("{location}: joint \"{joint}\" connects a {what} to itself (base and follower frames {base} and {follower} both belong to it)")]
+    SelfJoint { location: String, joint: String, what: &'static str, base: String, follower: String },
+    #[error("{location}: body \"{body}\" has negative mass {mass} kg")]
+    NegativeMass { location: String, body: String, mass: f64 },
+    #[error("{location}: the model has no bodies")]
+    Empty { location: String },
+}
+
+/// Densities (kg/m³) at which mass and volume are numerically equal in a common unit pair: the
+/// mark of a part exported without a material.
+const UNIT_DENSITIES: &[(f64, &str)] = &[
+    (1e9, "kg and mm^3"),
+    (1.0, "kg and m^3"),
+    (1e6, "g and mm^3"),
+    (1e3, "g and cm^3"),
+    (1e6, "kg and cm^3"),
+    (27_679.904_710_203_12, "lbm and in^3"),
+    (890_574.598_127, "slug and in^3"),
+];
+
+pub fn validate(model: &Model, analysis: Analysis) -> Result<Validated, ValidationError> {
+    if model.bodies.is_empty() {
+        return Err(ValidationError::Empty { location: model.source.file.clone() });
+    }
+    let mut warnings = Vec::new();
+    for body in &model.bodies {
+        if body.mass < 0.0 {
+            return Err(ValidationError::NegativeMass {
+                location: body.loc.to_string(),
+                body: body.cad_name.clone(),
+                mass: body.mass,
+            });
+        }
+        check_inertia(body, &mut warnings);
+        check_density(body, &mut warnings);
+    }
+    for (j, joint) in model.joints.iter().enumerate() {
+        let (a, b) = (hierarchy::node_of(model, joint.base), hierarchy::node_of(model, joint.follower));
+        let location = format!("{} (joint \"{}\", nodeID \"{}\")", joint.loc, joint.cad_name, joint.node_id);
+        if a == b {
+            return Err(ValidationError::SelfJoint {
+                location: joint.loc.to_string(),
+                joint: joint.cad_name.clone(),
+                what: if matches!(a, Node::Body(_)) { "body" } else { "ground" },
+                base: model.frame(joint.base).name.clone(),
+                follower: model.frame(joint.follower).name.clone(),
+            });
+        }
+        for p in &joint.primitives {
+            let movable = matches!(p.kind, PrimitiveKind::Revolute | PrimitiveKind::Prismatic);
+            if movable && kinematics::clean_axis(&p.axis_world).is_none() {
+                warnings.push(Warning::new(
+                    "zero-axis",
+                    format!(
+                        "{} primitive has axis ({}, {}, {}), which has no direction; it is emitted as rigid",
+                        p.kind.as_str(),
+                        p.axis_world.x,
+                        p.axis_world.y,
+                        p.axis_world.z
+                    ),
+                    location.clone(),
+                ));
+            }
+        }
+        warnings.extend(kinematics::check(model, joint, &analysis.chains[j], &location));
+    }
+    for l in &analysis.hierarchy.loops {
+        let j = model.joint(l.closing);
+        if l.kind == LoopKind::Rigid {
+            warnings.push(Warning::new(
+                "redundant-weld",
+                format!(
+                    "weld \"{}\" closes a loop of welds only; it is redundant and not emitted",
+                    j.cad_name
+                ),
+                format!("{} (joint nodeID \"{}\")", j.loc, j.node_id),
+            ));
+        }
+    }
+    check_massless_leaves(model, &analysis, &mut warnings);
+    let without: Vec<String> = model
+        .bodies
+        .iter()
+        .filter(|b| b.mesh.is_none() && b.geometry_file.is_none() && !is_root_part(b))
+        .map(|b| format!("\"{}\" ({})", b.cad_name, b.node_id))
+        .collect();
+    if !without.is_empty() {
+        warnings.push(Warning::new(
+            "no-geometry",
+            format!("{} bodies have no geometry: {}", without.len(), without.join(", ")),
+            model.source.file.clone(),
+        ));
+    }
+    Ok(Validated { analysis, warnings })
+}
+
+/// A zero-mass placeholder every assembly and subsystem has.
+pub fn is_root_part(b: &Body) -> bool {
+    b.mass == 0.0 && b.cad_name == "RootPart"
+}
+
+fn body_location(b: &Body) -> String {
+    format!("{} (body \"{}\", nodeID \"{}\")", b.loc, b.cad_name, b.node_id)
+}
+
+fn fmt_matrix(m: &Matrix3<f64>) -> String {
+    let rows: Vec<String> = (0..3)
+        .map(|r| format!("[{:e}, {:e}, {:e}]", m[(r, 0)], m[(r, 1)], m[(r, 2)]))
+        .collect();
+    format!("[{}]", rows.join(", "))
+}
+
+fn check_inertia(body: &Body, warnings: &mut Vec<Warning>) {
+    let i = body.inertia_cg;
+    let scale = i.abs().max();
+    if scale == 0.0 {
+        return;
+    }
+    let asym = (i - i.transpose()).abs().max();
+    if asym > 1e-6 * scale {
+        warnings.push(Warning::new(
+            "inertia-not-symmetric",
+            format!(
+                "inertia tensor {} kg*m^2 is not symmetric (largest difference {:e}); its symmetric part is used",
+                fmt_matrix(&i),
+                asym
+            ),
+            body_location(body),
+        ));
+    }
+    let sym = (i + i.transpose()) * 0.5;
+    let mut eig: Vec<f64> = SymmetricEigen::new(sym).eigenvalues.iter().copied().collect();
+    eig.sort_by(f64::total_cmp);
+    let tol = 1e-6 * scale;
+    if eig[0] < -tol {
+        warnings.push(Warning::new(
+            "inertia-not-positive",
+            format!(
+                "inertia tensor is not positive semi-definite: principal moments {:e}, {:e}, {:e} kg*m^2",
+                eig[0], eig[1], eig[2]
+            ),
+            body_location(body),
+        ));
+    } else if eig[0] + eig[1] < eig[2] - tol {
+        warnings.push(Warning::new(
+            "inertia-triangle-inequality",
+            format!(
+                "principal moments {:e} + {:e} < {:e} kg*m^2 violate the triangle inequality: no real mass distribution has this inertia",
+                eig[0], eig[1], eig[2]
+            ),
+            body_location(body),
+        ));
+    }
+}
+
+fn check_density(body: &Body, warnings: &mut Vec<Warning>) {
+    let Some(volume) = body.volume.filter(|v| *v > 0.0) else { return };
+    if body.mass <= 0.0 {
+        return;
+    }
+    let density = body.mass / volume;
+    if let Some((_, units)) = UNIT_DENSITIES.iter().find(|(d, _)| ((density - d) / d).abs() < 1e-4) {
+        warnings.push(Warning::new(
+            "no-material",
+            format!(
+                "mass equals volume numerically ({units}; density {density:.6e} kg/m^3): the part probably has no material assigned in CAD, so its mass and inertia are wrong"
+            ),
+            body_location(body),
+        ));
+    } else if !(100.0..=25_000.0).contains(&density) {
+        warnings.push(Warning::new(
+            "density-implausible",
+            format!(
+                "density {density:.6e} kg/m^3 (mass {} kg, volume {:e} m^3) is outside 100..25000 kg/m^3",
+                body.mass, volume
+            ),
+            body_location(body),
+        ));
+    }
+}
+
+/// A massless body at the end of a movable joint makes the model singular.
+fn check_massless_leaves(model: &Model, analysis: &Analysis, warnings: &mut Vec<Warning>) {
+    let mut degree = vec![0usize; model.bodies.len()];
+    for joint in &model.joints {
+        for f in [joint.base, joint.follower] {
+            if let Node::Body(b) = hierarchy::node_of(model, f) {
+                degree[b.index()] += 1;
+            }
+        }
+    }
+    for (j, joint) in model.joints.iter().enumerate() {
+        if analysis.chains[j].elements.is_empty() {
+            continue;
+        }
+        if let Node::Body(b) = hierarchy::node_of(model, joint.follower) {
+            let body = model.body(b);
+            if body.mass == 0.0 && degree[b.index()] == 1 {
+                warnings.push(Warning::new(
+                    "massless-leaf",
+                    format!(
+                        "body \"{}\" has zero mass and hangs only from movable joint \"{}\": the model will be singular",
+                        body.cad_name, joint.cad_name
+                    ),
+                    body_location(body),
+                ));
+            }
+        }
+    }
+}
