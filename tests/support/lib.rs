@@ -1,1 +1,13 @@
 //! Shared helpers for cad2mo's integration tests.
+//!
+//! - [`common`]: locating fixtures and tools, converting bundles, writing packages to disk.
+//! - [`modelica`], [`fk`]: an independent reader of the `Mechanics.mo` we emit and a forward
+//!   kinematics walker over it (they deliberately use nothing from the converter).
+//! - [`truth`]: frames and CGs scanned straight from an XML export.
+//! - [`check`]: the FK comparison of an output against that truth.
+
+pub mod check;
+pub mod common;
+pub mod fk;
+pub mod modelica;
+pub mod truth;

@@ -73,13 +73,25 @@ pub struct Diagnostic {
 }
 
 impl ConvertError {
+    /// The error as positioned diagnostics: the file, line and column where known, and the
+    /// message without them.
     pub fn diagnostics(&self) -> Vec<Diagnostic> {
-        let (file, line, column) = match self {
-            ConvertError::Xml(e) => (e.file.clone(), e.line, e.column),
-            ConvertError::Geometry(GeometryError::Stl(e)) => (e.file.clone(), e.line, 0),
-            _ => (String::new(), 0, 0),
+        let d = match self {
+            ConvertError::Xml(e) => Diagnostic {
+                file: e.file.clone(),
+                line: e.line,
+                column: e.column,
+                message: if e.element.is_empty() { e.kind.to_string() } else { format!("in {}: {}", e.element, e.kind) },
+            },
+            ConvertError::Geometry(GeometryError::Stl(e)) => {
+                Diagnostic { file: e.file.clone(), line: e.line, column: 0, message: e.kind.to_string() }
+            }
+            ConvertError::Bundle(BundleError::Ambiguous { referenced_from, .. }) => {
+                Diagnostic { file: referenced_from.clone(), line: 0, column: 0, message: self.to_string() }
+            }
+            _ => Diagnostic { file: String::new(), line: 0, column: 0, message: self.to_string() },
         };
-        vec![Diagnostic { file, line, column, message: self.to_string() }]
+        vec![d]
     }
 }
 
@@ -103,7 +115,18 @@ pub struct Analysed {
 
 /// Parses and analyses a bundle.
 pub fn analyse(bundle: &Bundle, opts: &Options) -> Result<Analysed, ConvertError> {
-    let xml_path = bundle.find_export(front::simmechanics::is_physical_modeling_xml)?.to_string();
+    let xml_path = match bundle.find_export(front::simmechanics::is_physical_modeling_xml) {
+        Ok(p) => p.to_string(),
+        Err(e @ BundleError::NoXml { .. }) => {
+            // One XML of another kind: let the front end say what it is (e.g. second-generation).
+            let xmls: Vec<&str> = bundle.paths().filter(|p| p.to_ascii_lowercase().ends_with(".xml")).collect();
+            if let [only] = xmls.as_slice() {
+                front::simmechanics::parse(only, bundle.get(only).unwrap_or_default())?;
+            }
+            return Err(e.into());
+        }
+        Err(e) => return Err(e.into()),
+    };
     let bytes = bundle.get(&xml_path).unwrap_or_default();
     let (mut model, mut warnings) = front::simmechanics::parse(&xml_path, bytes)?;
     warnings.extend(passes::geometry::read_meshes(&mut model, bundle, &xml_path)?);

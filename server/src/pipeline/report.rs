@@ -103,6 +103,8 @@ pub struct JointReport {
     pub emitted_as: String,
     pub in_tree: bool,
     pub in_loop: bool,
+    /// Whether the joint's coordinates are fixed at their start values in the model.
+    pub start_fixed: bool,
 }
 
 #[derive(Serialize, Debug, Clone)]
@@ -212,6 +214,7 @@ pub fn build(input: ReportInput) -> Report {
                 emitted_as: layout.emitted_as[j].to_string(),
                 in_tree: h.tree.iter().any(|t| t.index() == j),
                 in_loop: h.in_loop[j],
+                start_fixed: h.start_fixed[j],
             }
         })
         .collect();

@@ -246,7 +246,8 @@ pub struct Ground {
     pub loc: SourceLoc,
 }
 
-/// A triangle mesh. Vertices in the owning body's CS1 frame, metres.
+/// A triangle mesh. Vertices in the owning body's CS1 frame, metres; every vertex is finite and
+/// every index is below `vertices.len()` (front ends guarantee both).
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Mesh {
     pub vertices: Vec<[f32; 3]>,

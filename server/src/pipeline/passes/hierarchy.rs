@@ -50,10 +50,18 @@ pub struct Hierarchy {
     pub loops: Vec<Loop>,
     /// Bodies without a path to any ground, sorted by `node_id`.
     pub free_bodies: Vec<BodyId>,
+    /// The root of each free component (its body with the smallest `node_id`): it carries the
+    /// component's initial pose.
+    pub free_roots: Vec<BodyId>,
     /// Depth of each body in the tree (grounds are depth 0); `None` for free bodies.
     pub depth: Vec<Option<u32>>,
     /// Per joint: true when it lies on some loop (tree path or closing joint).
     pub in_loop: Vec<bool>,
+    /// Per joint: true when its coordinates are fixed at their start values (`fixed=true`).
+    /// Joints outside loops are fixed. In a loop with `d` degrees of freedom, the first `d`
+    /// one-coordinate joints of its path that lie in no other loop are fixed, nearest the ground
+    /// first; the rest of the loop follows from the closure, so initialisation is well-posed.
+    pub start_fixed: Vec<bool>,
 }
 
 impl Hierarchy {
@@ -153,8 +161,10 @@ pub fn build(model: &Model) -> Hierarchy {
         (0..nb).filter(|&i| depth[i].is_none()).map(|i| BodyId(i as u32)).collect();
     free_bodies.sort_by(|a, b| model.body(*a).node_id.cmp(&model.body(*b).node_id));
     let mut free_depth = depth.clone();
+    let mut free_roots = Vec::new();
     for b in &free_bodies {
         if free_depth[b.index()].is_none() {
+            free_roots.push(*b);
             bfs(b.index(), &mut free_depth, &mut tree);
         }
     }
@@ -176,8 +186,52 @@ pub fn build(model: &Model) -> Hierarchy {
         }
         loops.push(Loop { closing: j, path, kind });
     }
+    let start_fixed = choose_fixed(model, &tree, &loops, &in_loop);
     let depth = (0..nb).map(|i| free_depth[i]).collect();
-    Hierarchy { tree, loops, free_bodies, depth, in_loop }
+    Hierarchy { tree, loops, free_bodies, free_roots, depth, in_loop, start_fixed }
+}
+
+/// Degrees of freedom of a joint's primitives (zero axes count as rigid).
+fn joint_dof(model: &Model, j: JointId) -> usize {
+    model
+        .joint(j)
+        .primitives
+        .iter()
+        .map(|p| match p.kind {
+            PrimitiveKind::Weld => 0,
+            PrimitiveKind::Spherical => 3,
+            _ => usize::from(p.axis_world.try_normalize(1e-12).is_some()),
+        })
+        .sum()
+}
+
+fn choose_fixed(model: &Model, tree: &[JointId], loops: &[Loop], in_loop: &[bool]) -> Vec<bool> {
+    let mut fixed: Vec<bool> = in_loop.iter().map(|l| !l).collect();
+    let mut loops_of = vec![0usize; model.joints.len()];
+    for l in loops.iter().filter(|l| l.kind != LoopKind::Rigid) {
+        for j in std::iter::once(&l.closing).chain(&l.path) {
+            loops_of[j.index()] += 1;
+        }
+    }
+    let bfs_rank = |j: &JointId| tree.iter().position(|t| t == j).unwrap_or(usize::MAX);
+    for l in loops.iter().filter(|l| l.kind != LoopKind::Rigid) {
+        let path_dof: usize = l.path.iter().map(|j| joint_dof(model, *j)).sum();
+        let dof = match l.kind {
+            LoopKind::PlanarRevolute => path_dof.saturating_sub(2),
+            _ => (path_dof + joint_dof(model, l.closing)).saturating_sub(6),
+        };
+        let mut candidates: Vec<JointId> = l
+            .path
+            .iter()
+            .copied()
+            .filter(|j| loops_of[j.index()] == 1 && joint_dof(model, *j) == 1 && model.joint(*j).primitives.len() == 1)
+            .collect();
+        candidates.sort_by_key(bfs_rank);
+        for j in candidates.into_iter().take(dof) {
+            fixed[j.index()] = true;
+        }
+    }
+    fixed
 }
 
 fn sort_key(model: &Model, j: JointId) -> (bool, &str) {

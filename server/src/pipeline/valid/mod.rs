@@ -107,6 +107,19 @@ pub fn validate(model: &Model, analysis: Analysis) -> Result<Validated, Validati
         }
     }
     check_massless_leaves(model, &analysis, &mut warnings);
+    let free = &analysis.hierarchy.free_bodies;
+    if !free.is_empty() {
+        let names: Vec<String> = free.iter().map(|b| format!("\"{}\"", model.body(*b).cad_name)).collect();
+        warnings.push(Warning::new(
+            "free-bodies",
+            format!(
+                "{} bodies have no path to a ground and float freely from their CAD pose (6 degrees of freedom per free group): {}",
+                free.len(),
+                names.join(", ")
+            ),
+            model.source.file.clone(),
+        ));
+    }
     let without: Vec<String> = model
         .bodies
         .iter()
@@ -165,7 +178,7 @@ fn check_inertia(body: &Body, warnings: &mut Vec<Warning>) {
         warnings.push(Warning::new(
             "inertia-not-positive",
             format!(
-                "inertia tensor is not positive semi-definite: principal moments {:e}, {:e}, {:e} kg*m^2",
+                "inertia tensor is not positive semi-definite: principal moments {:e}, {:e}, {:e} kg*m^2 (a known fault of mirrored Creo parts: correct the mass properties in CAD)",
                 eig[0], eig[1], eig[2]
             ),
             body_location(body),

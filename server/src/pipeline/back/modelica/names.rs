@@ -112,38 +112,76 @@ fn short_hash(s: &str) -> String {
 
 /// Assigns names to bodies and joints. Identity is (kind, node_id); entities are processed sorted
 /// by it, so the result does not depend on file order.
+///
+/// A CAD name used once gives the plain name. Same-named entities (every subsystem has its own
+/// `RootPart`) get a suffix: the name of the innermost enclosing subsystem when that tells them
+/// apart, otherwise the distinguishing part of their node ID.
 pub fn assign(model: &Model) -> Names {
     struct Entity<'a> {
         is_joint: bool,
         index: usize,
         node_id: &'a str,
         cad_name: &'a str,
+        subsystem: Option<&'a String>,
         base: String,
     }
     let mut entities: Vec<Entity> = Vec::new();
     for (i, b) in model.bodies.iter().enumerate() {
-        entities.push(Entity { is_joint: false, index: i, node_id: &b.node_id, cad_name: &b.cad_name, base: sanitize(&b.cad_name, "b") });
+        entities.push(Entity {
+            is_joint: false,
+            index: i,
+            node_id: &b.node_id,
+            cad_name: &b.cad_name,
+            subsystem: b.subsystem_path.last(),
+            base: sanitize(&b.cad_name, "b"),
+        });
     }
     for (i, j) in model.joints.iter().enumerate() {
-        entities.push(Entity { is_joint: true, index: i, node_id: &j.node_id, cad_name: &j.cad_name, base: sanitize(&j.cad_name, "j") });
+        entities.push(Entity {
+            is_joint: true,
+            index: i,
+            node_id: &j.node_id,
+            cad_name: &j.cad_name,
+            subsystem: j.subsystem_path.last(),
+            base: sanitize(&j.cad_name, "j"),
+        });
     }
     entities.sort_by(|a, b| (a.is_joint, a.node_id).cmp(&(b.is_joint, b.node_id)));
-    let mut groups: BTreeMap<String, usize> = BTreeMap::new();
-    for e in &entities {
-        *groups.entry(e.base.to_lowercase()).or_default() += 1;
+    let mut groups: BTreeMap<String, Vec<usize>> = BTreeMap::new();
+    for (k, e) in entities.iter().enumerate() {
+        groups.entry(e.base.to_lowercase()).or_default().push(k);
+    }
+    // Preferred name of each entity.
+    let mut wanted: Vec<String> = vec![String::new(); entities.len()];
+    for members in groups.values() {
+        if let [only] = members.as_slice() {
+            wanted[*only] = entities[*only].base.clone();
+            continue;
+        }
+        let by_subsystem: Vec<Option<String>> = members
+            .iter()
+            .map(|k| entities[*k].subsystem.map(|s| format!("{}_{}", entities[*k].base, sanitize(s, "s"))))
+            .collect();
+        for (m, k) in members.iter().enumerate() {
+            let e = &entities[*k];
+            let unique = by_subsystem[m].as_ref().filter(|name| {
+                by_subsystem.iter().filter(|o| o.as_deref().map(str::to_lowercase) == Some(name.to_lowercase())).count() == 1
+            });
+            wanted[*k] = match unique {
+                Some(name) => name.clone(),
+                None => format!("{}_{}", e.base, distinguishing(e.node_id, e.cad_name)),
+            };
+        }
     }
     let mut scope = Scope::new();
     let mut bodies = vec![String::new(); model.bodies.len()];
     let mut joints = vec![String::new(); model.joints.len()];
-    // Unique names first so that a suffixed duplicate can never take a plain name.
-    let mut order: Vec<&Entity> = entities.iter().collect();
-    order.sort_by_key(|e| groups[&e.base.to_lowercase()] > 1);
-    for e in order {
-        let mut name = if groups[&e.base.to_lowercase()] == 1 && !scope.is_taken(&e.base) {
-            e.base.clone()
-        } else {
-            format!("{}_{}", e.base, distinguishing(e.node_id, e.cad_name))
-        };
+    // Plain names first so that a suffixed duplicate can never take one.
+    let mut order: Vec<usize> = (0..entities.len()).collect();
+    order.sort_by_key(|k| groups[&entities[*k].base.to_lowercase()].len() > 1);
+    for k in order {
+        let e = &entities[k];
+        let mut name = wanted[k].clone();
         if scope.is_taken(&name) {
             name = format!("{}_{}", e.base, short_hash(e.node_id));
         }

@@ -56,6 +56,18 @@ fn vec3(v: &Vector3<f64>) -> String {
     format!("{{{}, {}, {}}}", num(v.x), num(v.y), num(v.z))
 }
 
+/// Cardan angles {a, b, c} with R = Rx(a) * Ry(b) * Rz(c) (MSL `sequence_start={1,2,3}`:
+/// rotations about the moving frame's x, then y, then z axis).
+fn cardan_xyz(r: &Matrix3<f64>) -> Vector3<f64> {
+    let b = r[(0, 2)].clamp(-1.0, 1.0).asin();
+    if r[(0, 2)].abs() < 1.0 - 1e-12 {
+        Vector3::new((-r[(1, 2)]).atan2(r[(2, 2)]), b, (-r[(0, 1)]).atan2(r[(0, 0)]))
+    } else {
+        // Gimbal lock: only a + c (or a - c) is defined; put it all in a.
+        Vector3::new(r[(1, 0)].atan2(r[(1, 1)]), b, 0.0)
+    }
+}
+
 /// Escapes text for a Modelica string literal.
 fn mstr(s: &str) -> String {
     s.replace('\\', "\\\\").replace('"', "\\\"")
@@ -231,10 +243,20 @@ pub fn write(model: &Model, v: &Validated, opts: &Options) -> Package {
         let sym = (body.inertia_cg + body.inertia_cg.transpose()) * 0.5;
         let ia: Matrix3<f64> = rc.transpose() * rg * sym * rg.transpose() * rc;
         let anim = if body.mesh.is_some() || body.mass == 0.0 { ",\n    animation=false" } else { "" };
+        let initial = if analysis.hierarchy.free_roots.iter().any(|b| b.index() == i) {
+            let a = cardan_xyz(&rc);
+            format!(
+                ",\n    r_0(start={}, each fixed=true),\n    v_0(start={{0, 0, 0}}, each fixed=true),\n    angles_fixed=true,\n    angles_start={},\n    w_0_fixed=true",
+                vec3(&cs1.translation.vector),
+                vec3(&a)
+            )
+        } else {
+            String::new()
+        };
         let place = w.place(COL_BODY);
         let _ = writeln!(
             w.decl,
-            "  {MB}.Parts.Body {name}(\n    m={},\n    r_CM={},\n    I_11={}, I_22={}, I_33={},\n    I_21={}, I_31={}, I_32={}{anim})\n    \"{}{} (nodeID {})\" {place};",
+            "  {MB}.Parts.Body {name}(\n    m={},\n    r_CM={},\n    I_11={}, I_22={}, I_33={},\n    I_21={}, I_31={}, I_32={}{anim}{initial})\n    \"{}{} (nodeID {})\" {place};",
             num(body.mass),
             vec3(&r_cm),
             num(ia[(0, 0)]),
@@ -280,6 +302,7 @@ pub fn write(model: &Model, v: &Validated, opts: &Options) -> Package {
         let chain = &analysis.chains[jid.index()];
         let loop_kind = analysis.hierarchy.loop_of_closing(jid).map(|l| l.kind);
         let in_loop = analysis.hierarchy.in_loop[jid.index()];
+        let start_fixed = analysis.hierarchy.start_fixed[jid.index()];
         let base = w.layout.connectors[&joint.base].clone();
         let follower = w.layout.connectors[&joint.follower].clone();
         let what = format!("{} (nodeID {})", joint.cad_name, joint.node_id);
@@ -306,7 +329,7 @@ pub fn write(model: &Model, v: &Validated, opts: &Options) -> Package {
         let mut prev = base;
         for (k, e) in chain.elements.iter().enumerate() {
             let name = if count == 1 { jname.clone() } else { w.scope.take(&format!("{jname}_{}", k + 1)) };
-            let fixed = if in_loop { "" } else { ", fixed=true" };
+            let fixed = if start_fixed { ", fixed=true" } else { "" };
             let place = w.place(COL_JOINT);
             let desc = if count == 1 {
                 format!("Joint {what}")
@@ -344,7 +367,7 @@ pub fn write(model: &Model, v: &Validated, opts: &Options) -> Package {
                     "prismatic"
                 }
                 _ => {
-                    let states = if in_loop {
+                    let states = if in_loop || !start_fixed {
                         String::new()
                     } else {
                         "(\n    enforceStates=true,\n    useQuaternions=true,\n    angles_fixed=true,\n    w_rel_a_fixed=true)".to_string()
@@ -487,4 +510,34 @@ fn components(pkg: &str, opts: &Options) -> Vec<(String, Vec<u8>)> {
                 .into_bytes(),
         ),
     ]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::{Rotation3, Vector3};
+
+    fn rebuild(a: &Vector3<f64>) -> Matrix3<f64> {
+        (Rotation3::from_axis_angle(&Vector3::x_axis(), a.x)
+            * Rotation3::from_axis_angle(&Vector3::y_axis(), a.y)
+            * Rotation3::from_axis_angle(&Vector3::z_axis(), a.z))
+        .into_inner()
+    }
+
+    #[test]
+    fn cardan_angles_rebuild_the_rotation() {
+        for (x, y, z) in [(0.3, -0.2, 1.1), (2.9, 0.1, -3.0), (0.0, std::f64::consts::FRAC_PI_2, 0.4), (1.0, -std::f64::consts::FRAC_PI_2, 0.0)] {
+            let r = Rotation3::from_euler_angles(x, y, z).into_inner();
+            let a = cardan_xyz(&r);
+            assert!((rebuild(&a) - r).abs().max() < 1e-12, "{x} {y} {z}: {a:?}");
+        }
+    }
+
+    #[test]
+    fn numbers_and_strings() {
+        assert_eq!(num(-0.0), "0.0");
+        assert_eq!(num(1e-5), "1e-5");
+        assert_eq!(num(0.1), "0.1");
+        assert_eq!(mstr("a \"b\" \\c"), "a \\\"b\\\" \\\\c");
+    }
 }

@@ -1,1 +1,124 @@
-//! First-generation SimMechanics XML front end. See `parse`.
+//! First-generation SimMechanics XML front end. See [`parse`].
+//!
+//! # The format
+//! `PhysicalModelingXMLFile` is what SimMechanics Link 3.x–4.0 and Simscape Multibody Link
+//! 4.8–5.x write from Pro/E–Creo (and, in principle, SolidWorks and Inventor):
+//!
+//! ```text
+//! PhysicalModelingXMLFile   formatVersion, createdUsing, createdFrom, createdOn, createdBy, name
+//!   SimMechanics | SimscapeMultibody          (the container; Link >= 4.8 writes the latter)
+//!     bodies/Body*          name, nodeID, mass+massUnits, inertia+inertiaUnits,
+//!                           volume+volumeUnits, surfaceArea+surfaceAreaUnits,
+//!                           frames/Frame*, geometryFileName, MaterialProp
+//!     joints/SimpleJoint*   name, nodeID, base|follower/JointSide/connection/Frame@ref,
+//!                           primitives/Primitive* (name, referenceFrame, axis)
+//!     grounds/Ground*       name, nodeID, frame/Frame
+//!     subsystems/Subsystem* the same content, nested to any depth
+//! ```
+//!
+//! Strings are quoted inside the element (`<name>"CS1"</name>`), vectors are comma-separated,
+//! every value carries its own unit element. A `Frame` has a world position and a 3x3
+//! orientation whose nine numbers are the frame's x, y and z axes in world coordinates; frames
+//! used by joints carry a `ref` attribute that is unique in the whole file.
+//!
+//! # What is supported
+//! - Both container spellings, subsystems to any depth (`subsystem_path` records them), joints
+//!   whose frames live in other subsystems (refs are resolved globally after reading).
+//! - Units: length mm, cm, m, in, ft; mass kg, g, lbm, slug; inertia, area and volume as
+//!   products of those; orientation units rad and deg. All converted to SI here.
+//! - Frames: only `positionOrigin`, `positionReferenceFrame`, `orientationReferenceFrame` =
+//!   `WORLD` (absent = `WORLD`) and `orientationType` = `3x3 Transform`. The matrix is
+//!   projected onto the nearest rotation; one that is far from a rotation (mirrored, scaled)
+//!   gives a `frame-not-orthonormal` warning.
+//! - Primitives weld, revolute, prismatic and spherical, axes in `WORLD`.
+//! - Elements are found by name; unknown ones are skipped. A non-`SimpleJoint` entry under
+//!   `joints` is skipped with a `joint-element-skipped` warning (a constraint would be lost).
+//! - Second-generation files (`SimMechanicsImportXML`) are recognised and rejected.
+//!
+//! Everything else is an [`XmlError`] pointing at the offending element; malformed input never
+//! panics. Physical plausibility (inertia, density, loops) is checked by later passes.
+
+mod dom;
+mod error;
+mod lower;
+mod pose;
+mod units;
+
+#[cfg(test)]
+mod tests;
+
+pub use error::{XmlError, XmlErrorKind};
+
+use crate::pipeline::ir;
+use dom::{Doc, Root};
+
+/// Root element name of first-generation files.
+const ROOT: &[u8] = b"PhysicalModelingXMLFile";
+/// Root element name of second-generation (Simscape Multibody import) files.
+const SECOND_GENERATION_ROOT: &[u8] = b"SimMechanicsImportXML";
+
+/// Parses a first-generation SimMechanics XML file into the IR (SI units, world poses).
+///
+/// `file` is only used in messages and source locations. Warnings (currently
+/// `frame-not-orthonormal` and `joint-element-skipped`) come back next to the model.
+pub fn parse(file: &str, bytes: &[u8]) -> Result<(ir::Model, Vec<ir::Warning>), XmlError> {
+    let bytes = strip_bom(bytes);
+    if u32::try_from(bytes.len()).is_err() {
+        let kind = XmlErrorKind::TooLarge { size: bytes.len() };
+        return Err(XmlError {
+            file: file.to_owned(),
+            line: 0,
+            column: 0,
+            element: String::new(),
+            kind,
+        });
+    }
+    match dom::root_element(bytes) {
+        Root::Element { name, .. } if name == ROOT => {}
+        Root::Element { name, offset } => {
+            let root = String::from_utf8_lossy(name).into_owned();
+            let kind = if name == SECOND_GENERATION_ROOT {
+                XmlErrorKind::SecondGeneration
+            } else {
+                XmlErrorKind::NotPhysicalModelingXml { root: root.clone() }
+            };
+            return Err(XmlError::at(file, bytes, offset, root, kind));
+        }
+        Root::Missing => {
+            let kind = XmlErrorKind::Syntax {
+                message: "no root element".into(),
+            };
+            return Err(XmlError::at(file, bytes, bytes.len(), String::new(), kind));
+        }
+        Root::Error { offset, message } => {
+            let kind = XmlErrorKind::Syntax { message };
+            return Err(XmlError::at(file, bytes, offset, String::new(), kind));
+        }
+    }
+    let doc = Doc::build(bytes).map_err(|e| {
+        let element = e
+            .open
+            .map(|n| lower::describe(&e.doc, n))
+            .unwrap_or_default();
+        XmlError::at(
+            file,
+            bytes,
+            e.offset,
+            element,
+            XmlErrorKind::Syntax { message: e.message },
+        )
+    })?;
+    lower::lower(file, &doc)
+}
+
+/// Cheap sniff: is the root element `PhysicalModelingXMLFile`? Skips a UTF-8 byte-order mark,
+/// the XML declaration, comments and processing instructions; reads no further than the root's
+/// start tag.
+pub fn is_physical_modeling_xml(bytes: &[u8]) -> bool {
+    matches!(dom::root_element(strip_bom(bytes)), Root::Element { name, .. } if name == ROOT)
+}
+
+/// Removes a UTF-8 byte-order mark (positions are then counted from after it).
+fn strip_bom(bytes: &[u8]) -> &[u8] {
+    bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes)
+}

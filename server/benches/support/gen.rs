@@ -1,0 +1,89 @@
+//! Generated first-generation SimMechanics XML for benchmarks: a tree of `n` bodies, each hung
+//! from its parent `(i - 1) / 3` by a revolute joint, with rotated frames, in mm/kg.
+
+use std::fmt::Write as _;
+
+fn frame(out: &mut String, name: &str, node: &str, r: Option<usize>, p: [f64; 3], angle: f64) {
+    let (s, c) = angle.sin_cos();
+    let refattr = r.map(|r| format!(" ref=\"{r}\"")).unwrap_or_default();
+    let _ = write!(
+        out,
+        "          <Frame{refattr}>\n            <name>\"{name}\"</name>\n            <displayName>\"\"</displayName>\n            <nodeID>\"{node}\"</nodeID>\n            <position>{},{},{}</position>\n            <positionOrigin>\"WORLD\"</positionOrigin>\n            <positionReferenceFrame>\"WORLD\"</positionReferenceFrame>\n            <positionUnits>\"mm\"</positionUnits>\n            <orientation>{c},{s},0,{},{c},0,0,0,1</orientation>\n            <orientationType>\"3x3 Transform\"</orientationType>\n            <orientationUnits>\"rad\"</orientationUnits>\n            <orientationReferenceFrame>\"WORLD\"</orientationReferenceFrame>\n          </Frame>\n",
+        p[0], p[1], p[2], -s
+    );
+}
+
+fn body(out: &mut String, name: &str, node: &str, mass: f64, frames: &str) {
+    let _ = write!(
+        out,
+        "      <Body>\n        <name>\"{name}\"</name>\n        <nodeID>\"{node}\"</nodeID>\n        <status>\"\"</status>\n        <mass>{mass}</mass>\n        <massUnits>\"kg\"</massUnits>\n        <inertia>0.001,0,0,0,0.002,0,0,0,0.0025</inertia>\n        <inertiaUnits>\"kg*m^2\"</inertiaUnits>\n        <volume>{}</volume>\n        <volumeUnits>\"mm^3\"</volumeUnits>\n        <surfaceArea>1000</surfaceArea>\n        <surfaceAreaUnits>\"mm^2\"</surfaceAreaUnits>\n        <frames>\n{frames}        </frames>\n        <geometryFileName>\"\"</geometryFileName>\n      </Body>\n",
+        mass / 2700.0 * 1e9
+    );
+}
+
+fn joint(out: &mut String, name: &str, node: &str, base: usize, follower: usize, kind: &str, axis: &str) {
+    let _ = write!(
+        out,
+        "      <SimpleJoint>\n        <name>\"{name}\"</name>\n        <nodeID>\"{node}\"</nodeID>\n        <status>\"\"</status>\n        <base>\n          <JointSide>\n            <name>\"\"</name>\n            <connection>\n              <Frame ref=\"{base}\"></Frame>\n            </connection>\n          </JointSide>\n        </base>\n        <follower>\n          <JointSide>\n            <name>\"\"</name>\n            <connection>\n              <Frame ref=\"{follower}\"></Frame>\n            </connection>\n          </JointSide>\n        </follower>\n        <primitives>\n          <Primitive>\n            <name>\"{kind}\"</name>\n            <nodeID>\"\"</nodeID>\n            <referenceFrame>\"WORLD\"</referenceFrame>\n            <axis>{axis}</axis>\n          </Primitive>\n        </primitives>\n      </SimpleJoint>\n"
+    );
+}
+
+/// An export with `n` bodies plus a RootPart, `n + 1` joints and a ground.
+pub fn tree_xml(n: usize) -> String {
+    let mut bodies = String::new();
+    let mut joints = String::new();
+    let mut next_ref = 1usize;
+    // RootPart at the origin, welded to the ground; body 0 hangs from it.
+    let mut f = String::new();
+    frame(&mut f, "CG", "R::CG", None, [0.0; 3], 0.0);
+    frame(&mut f, "CS1", "R::CS1", None, [0.0; 3], 0.0);
+    let root_ground = next_ref;
+    frame(&mut f, "CS2", "R::G", Some(root_ground), [0.0; 3], 0.0);
+    let root_child = next_ref + 1;
+    frame(&mut f, "CS3", "R::0", Some(root_child), [0.0; 3], 0.0);
+    next_ref += 3; // ref 3 is the ground frame
+    body(&mut bodies, "RootPart", "BENCH/RootPart", 0.0, &f);
+    let ground_ref = 3;
+    joint(&mut joints, "RootGround--RootPart", "RootGround:-:BENCH/RootPart", ground_ref, root_ground, "weld", "0.57735,0.57735,0.57735");
+    let pos = |i: usize| -> [f64; 3] {
+        let depth = ((i + 1) as f64).log(3.0).floor();
+        [depth * 120.0, (i % 97) as f64 * 3.5, (i % 13) as f64 * -7.25]
+    };
+    let mut child_refs: Vec<Vec<(usize, usize)>> = vec![Vec::new(); n];
+    let mut parent_ref = vec![0usize; n];
+    for i in 0..n {
+        parent_ref[i] = next_ref;
+        next_ref += 1;
+        if i > 0 {
+            let p = (i - 1) / 3;
+            child_refs[p].push((i, next_ref));
+            next_ref += 1;
+        }
+    }
+    for i in 0..n {
+        let mut f = String::new();
+        let p = pos(i);
+        let angle = (i as f64) * 0.1;
+        frame(&mut f, "CG", &format!("{i}::CG"), None, [p[0] + 40.0, p[1] + 5.0, p[2]], angle);
+        frame(&mut f, "CS1", &format!("{i}::CS1"), None, p, angle);
+        frame(&mut f, "CS2", &format!("{i}::parent"), Some(parent_ref[i]), p, angle);
+        for (k, (child, r)) in child_refs[i].iter().enumerate() {
+            frame(&mut f, &format!("CS{}", k + 3), &format!("{i}:-:{child}"), Some(*r), pos(*child), angle);
+        }
+        body(&mut bodies, &format!("LINK_{i}"), &format!("{}", 1000 + i), 1.0 + (i % 7) as f64 * 0.25, &f);
+        let (base, name) = if i == 0 {
+            (root_child, "RootPart--LINK_0".to_string())
+        } else {
+            let p = (i - 1) / 3;
+            let r = child_refs[p].iter().find(|(c, _)| *c == i).map(|(_, r)| *r).unwrap_or(0);
+            (r, format!("LINK_{p}--LINK_{i}"))
+        };
+        let axis = ["0,0,1", "0,1,0", "1,0,0"][i % 3];
+        joint(&mut joints, &name, &format!("{i}:-:j"), base, parent_ref[i], "revolute", axis);
+    }
+    let mut ground = String::new();
+    frame(&mut ground, "CS1", "RootGround::CS1", Some(ground_ref), [0.0; 3], 0.0);
+    format!(
+        "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\" ?>\n<PhysicalModelingXMLFile>\n  <formatVersion>\"1.0.4\"</formatVersion>\n  <internalVersion>1</internalVersion>\n  <createdUsing>\"cad2mo benchmark generator\"</createdUsing>\n  <createdFrom>\"generated\"</createdFrom>\n  <createdOn>\"01/01/26||00:00:00\"</createdOn>\n  <createdBy>\"bench\"</createdBy>\n  <name>\"BENCH\"</name>\n  <SimMechanics>\n    <name>\"BENCH\"</name>\n    <nodeID>\"BENCH\"</nodeID>\n    <bodies>\n{bodies}    </bodies>\n    <joints>\n{joints}    </joints>\n    <grounds>\n      <Ground>\n        <name>\"RootGround\"</name>\n        <nodeID>\"RootGround\"</nodeID>\n        <status>\"\"</status>\n        <frame>\n{ground}        </frame>\n      </Ground>\n    </grounds>\n    <subsystems></subsystems>\n    <connectionPorts></connectionPorts>\n    <id>0</id>\n  </SimMechanics>\n</PhysicalModelingXMLFile>\n"
+    )
+}

@@ -1,0 +1,1060 @@
+//! Tests of the SimMechanics XML front end on small inline files and on the shared fixtures.
+
+use super::*;
+use crate::pipeline::ir::{FrameOwner, Model, PrimitiveKind, Warning};
+use nalgebra::{Point3, Vector3};
+
+// ----- builders for small files --------------------------------------------------------------
+
+const IDENTITY: &str = "1,0,0,0,1,0,0,0,1";
+
+fn frame(name: &str, r: Option<u32>, pos: &str, units: &str, orientation: &str) -> String {
+    let r = r.map(|r| format!(" ref=\"{r}\"")).unwrap_or_default();
+    format!(
+        r#"<Frame{r}>
+            <name>"{name}"</name>
+            <displayName>""</displayName>
+            <nodeID>"{name}-id{r_id}"</nodeID>
+            <position>{pos}</position>
+            <positionOrigin>"WORLD"</positionOrigin>
+            <positionReferenceFrame>"WORLD"</positionReferenceFrame>
+            <positionUnits>"{units}"</positionUnits>
+            <orientation>{orientation}</orientation>
+            <orientationType>"3x3 Transform"</orientationType>
+            <orientationUnits>"rad"</orientationUnits>
+            <orientationReferenceFrame>"WORLD"</orientationReferenceFrame>
+          </Frame>
+"#,
+        r_id = r.len()
+    )
+}
+
+fn body(name: &str, node_id: &str, frames: &[String]) -> String {
+    format!(
+        r#"<Body>
+        <name>"{name}"</name>
+        <nodeID>"{node_id}"</nodeID>
+        <status>""</status>
+        <mass>1.5</mass>
+        <massUnits>"kg"</massUnits>
+        <inertia>1,0,0,0,2,0,0,0,3</inertia>
+        <inertiaUnits>"kg*m^2"</inertiaUnits>
+        <volume>1000</volume>
+        <volumeUnits>"mm^3"</volumeUnits>
+        <frames>
+{}        </frames>
+        <geometryFileName>"{name}_prt.stl"</geometryFileName>
+      </Body>
+"#,
+        frames.concat()
+    )
+}
+
+/// A body with CG, CS1 and one referenced frame CS2 at `pos` (mm).
+fn simple_body(name: &str, r: u32, pos: &str) -> String {
+    body(
+        name,
+        name,
+        &[
+            frame("CG", None, pos, "mm", IDENTITY),
+            frame("CS1", None, "0,0,0", "mm", IDENTITY),
+            frame("CS2", Some(r), pos, "mm", IDENTITY),
+        ],
+    )
+}
+
+fn joint(name: &str, base: u32, follower: u32, primitives: &[(&str, &str)]) -> String {
+    let prims: String = primitives
+        .iter()
+        .map(|(kind, axis)| {
+            format!(
+                r#"<Primitive><name>"{kind}"</name><nodeID>""</nodeID><referenceFrame>"WORLD"</referenceFrame><axis>{axis}</axis></Primitive>
+"#
+            )
+        })
+        .collect();
+    format!(
+        r#"<SimpleJoint>
+        <name>"{name}"</name>
+        <nodeID>"{name}"</nodeID>
+        <status>""</status>
+        <base><JointSide><name>""</name><connection><Frame ref="{base}"></Frame></connection></JointSide></base>
+        <follower><JointSide><name>""</name><connection><Frame ref="{follower}"></Frame></connection></JointSide></follower>
+        <primitives>
+{prims}        </primitives>
+      </SimpleJoint>
+"#
+    )
+}
+
+fn ground(r: u32) -> String {
+    format!(
+        r#"<Ground><name>"RootGround"</name><nodeID>"RootGround"</nodeID><status>""</status><frame>
+{}</frame></Ground>
+"#,
+        frame("CS1", Some(r), "0,0,0", "mm", IDENTITY)
+    )
+}
+
+fn system(
+    bodies: &[String],
+    joints: &[String],
+    grounds: &[String],
+    subsystems: &[String],
+) -> String {
+    format!(
+        "<bodies>\n{}</bodies>\n<joints>\n{}</joints>\n<grounds>\n{}</grounds>\n<subsystems>\n{}</subsystems>\n<connectionPorts></connectionPorts>\n<id>0</id>\n",
+        bodies.concat(),
+        joints.concat(),
+        grounds.concat(),
+        subsystems.concat()
+    )
+}
+
+fn subsystem(name: &str, content: &str) -> String {
+    format!("<Subsystem>\n<name>\"{name}\"</name>\n<nodeID>\"{name}\"</nodeID>\n<status>\"\"</status>\n{content}</Subsystem>\n")
+}
+
+fn document(container: &str, content: &str) -> String {
+    format!(
+        r#"<?xml version="1.0" encoding="UTF-8" standalone="no" ?>
+<PhysicalModelingXMLFile>
+  <formatVersion>"1.0.4"</formatVersion>
+  <internalVersion>1</internalVersion>
+  <createdUsing>"SimMechanics Link Version 4.0"</createdUsing>
+  <createdFrom>"Pro/E Wildfire Creo 2.0 - 2012360"</createdFrom>
+  <createdOn>"11/10/09||14:08:16"</createdOn>
+  <createdBy>"someone"</createdBy>
+  <name>"ASM"</name>
+  <{container}>
+    <name>"ASM"</name>
+    <nodeID>"ASM"</nodeID>
+{content}  </{container}>
+</PhysicalModelingXMLFile>
+"#
+    )
+}
+
+/// Two bodies, a ground welded to the first, a revolute between them.
+fn two_bodies(container: &str) -> String {
+    document(
+        container,
+        &system(
+            &[simple_body("A", 1, "10,0,0"), simple_body("B", 2, "20,0,0")],
+            &[
+                joint(
+                    "RootGround--A",
+                    9,
+                    1,
+                    &[("weld", "0.57735,0.57735,0.57735")],
+                ),
+                joint("A--B", 1, 2, &[("revolute", "0,0,1")]),
+            ],
+            &[ground(9)],
+            &[],
+        ),
+    )
+}
+
+fn ok(xml: &str) -> (Model, Vec<Warning>) {
+    match parse("t.xml", xml.as_bytes()) {
+        Ok(r) => r,
+        Err(e) => panic!("unexpected error: {e}"),
+    }
+}
+
+fn fails(xml: &str) -> XmlError {
+    match parse("t.xml", xml.as_bytes()) {
+        Ok(_) => panic!("expected an error"),
+        Err(e) => e,
+    }
+}
+
+/// 1-based line of the first occurrence of `needle` in `xml`.
+fn line_of(xml: &str, needle: &str) -> u32 {
+    let at = xml.find(needle).expect("needle present");
+    xml[..at].matches('\n').count() as u32 + 1
+}
+
+// ----- happy paths -----------------------------------------------------------------------------
+
+#[test]
+fn reads_header_bodies_joints_grounds() {
+    let xml = two_bodies("SimMechanics");
+    let (m, warnings) = ok(&xml);
+    assert!(warnings.is_empty(), "{warnings:?}");
+    assert_eq!(m.name, "ASM");
+    assert_eq!(m.source.file, "t.xml");
+    assert_eq!(m.source.container, "SimMechanics");
+    assert_eq!(m.source.format_version, "1.0.4");
+    assert_eq!(m.source.created_using, "SimMechanics Link Version 4.0");
+    assert_eq!(m.source.created_from, "Pro/E Wildfire Creo 2.0 - 2012360");
+    assert_eq!(m.source.created_on, "11/10/09||14:08:16");
+    assert_eq!(m.source.created_by, "someone");
+    assert_eq!(m.length_scale, 1e-3);
+    assert_eq!(
+        (
+            m.bodies.len(),
+            m.joints.len(),
+            m.grounds.len(),
+            m.frames.len()
+        ),
+        (2, 2, 1, 7)
+    );
+
+    let a = &m.bodies[0];
+    assert_eq!(a.cad_name, "A");
+    assert_eq!(a.mass, 1.5);
+    assert_eq!(a.inertia_cg[(1, 1)], 2.0);
+    assert_eq!(a.volume, Some(1000.0 * 1e-9));
+    assert_eq!(a.surface_area, None);
+    assert_eq!(a.geometry_file.as_deref(), Some("A_prt.stl"));
+    assert_eq!(m.frame(a.cg).name, "CG");
+    assert_eq!(m.frame(a.cs1).name, "CS1");
+    assert_eq!(a.frames.len(), 3);
+    assert!(a.subsystem_path.is_empty());
+    let cg = m.frame(a.cg);
+    assert_eq!(cg.owner, FrameOwner::Body(crate::pipeline::ir::BodyId(0)));
+    assert!((cg.pose.translation.vector - Vector3::new(0.01, 0.0, 0.0)).norm() < 1e-15);
+
+    let g = &m.grounds[0];
+    assert_eq!(g.name, "RootGround");
+    assert_eq!(
+        m.frame(g.frame).owner,
+        FrameOwner::Ground(crate::pipeline::ir::GroundId(0))
+    );
+    assert_eq!(m.frame(g.frame).ref_id, Some(9));
+
+    let weld = &m.joints[0];
+    assert!(weld.is_weld());
+    assert_eq!(weld.base, g.frame, "a joint may name a ground's frame");
+    let rev = &m.joints[1];
+    assert_eq!(rev.cad_name, "A--B");
+    assert_eq!(m.frame(rev.base).ref_id, Some(1));
+    assert_eq!(m.frame(rev.follower).ref_id, Some(2));
+    assert_eq!(rev.primitives[0].kind, PrimitiveKind::Revolute);
+    assert_eq!(rev.primitives[0].axis_world, Vector3::new(0.0, 0.0, 1.0));
+}
+
+#[test]
+fn source_locations_point_at_start_tags() {
+    let xml = two_bodies("SimMechanics");
+    let (m, _) = ok(&xml);
+    let body_line = line_of(&xml, "<Body>");
+    assert_eq!(m.bodies[0].loc.file, "t.xml");
+    assert_eq!(
+        (m.bodies[0].loc.line, m.bodies[0].loc.column),
+        (body_line, 1)
+    );
+    let cs1_line = line_of(&xml, "<name>\"CS1\"") - 1;
+    assert_eq!(m.frame(m.bodies[0].cs1).loc.line, cs1_line);
+    let joint_line = line_of(&xml, "<name>\"A--B\"") - 1;
+    assert_eq!(m.joints[1].loc.line, joint_line);
+    assert_eq!(
+        m.joints[1].primitives[0].loc.line,
+        line_of(&xml, "<Primitive><name>\"revolute\"")
+    );
+    assert_eq!(m.joints[1].primitives[0].loc.column, 1);
+    assert_eq!(m.grounds[0].loc.line, line_of(&xml, "<Ground>"));
+    for f in &m.frames {
+        assert!(f.loc.line > 0 && f.loc.column > 0);
+    }
+}
+
+#[test]
+fn simscape_multibody_container() {
+    let (m, _) = ok(&two_bodies("SimscapeMultibody"));
+    assert_eq!(m.source.container, "SimscapeMultibody");
+    assert_eq!(m.bodies.len(), 2);
+}
+
+#[test]
+fn imperial_units_convert_exactly() {
+    let f = |name: &str, r: Option<u32>| frame(name, r, "1,2,-1", "in", IDENTITY);
+    let b = format!(
+        r#"<Body><name>"P"</name><nodeID>"39"</nodeID>
+        <mass>1</mass><massUnits>"lbm"</massUnits>
+        <inertia>1,0,0,0,1,0,0,0,1</inertia><inertiaUnits>"lbm*in^2"</inertiaUnits>
+        <volume>1</volume><volumeUnits>"in^3"</volumeUnits>
+        <surfaceArea>1</surfaceArea><surfaceAreaUnits>"in^2"</surfaceAreaUnits>
+        <frames>{}{}</frames><geometryFileName>""</geometryFileName></Body>"#,
+        f("CG", None),
+        f("CS1", Some(1))
+    );
+    let (m, _) = ok(&document("SimMechanics", &system(&[b], &[], &[], &[])));
+    let body = &m.bodies[0];
+    assert_eq!(m.length_scale, 0.0254);
+    assert_eq!(body.mass, 0.45359237);
+    assert_eq!(body.inertia_cg[(0, 0)], 0.45359237 * (0.0254 * 0.0254));
+    assert_eq!(body.inertia_cg[(0, 1)], 0.0);
+    assert_eq!(body.volume, Some(0.0254 * 0.0254 * 0.0254));
+    assert_eq!(body.surface_area, Some(0.0254 * 0.0254));
+    assert_eq!(body.geometry_file, None, "empty geometryFileName is None");
+    let t = m.frame(body.cs1).pose.translation.vector;
+    assert_eq!(t, Vector3::new(0.0254, 2.0 * 0.0254, -0.0254));
+}
+
+#[test]
+fn mixed_length_units_convert_each_frame_and_scale_comes_from_the_first() {
+    let b = body(
+        "A",
+        "1",
+        &[
+            frame("CG", None, "1,0,0", "m", IDENTITY),
+            frame("CS1", None, "100,0,0", "cm", IDENTITY),
+        ],
+    );
+    let (m, _) = ok(&document("SimMechanics", &system(&[b], &[], &[], &[])));
+    assert_eq!(m.length_scale, 1.0);
+    assert!((m.frame(m.bodies[0].cs1).pose.translation.x - 1.0).abs() < 1e-15);
+}
+
+#[test]
+fn inertia_keeps_all_nine_entries_row_major() {
+    let xml = two_bodies("SimMechanics").replacen(
+        "<inertia>1,0,0,0,2,0,0,0,3</inertia>",
+        "<inertia>1,2,3,4,5,6,7,8,9</inertia>",
+        1,
+    );
+    let (m, _) = ok(&xml);
+    let i = m.bodies[0].inertia_cg;
+    assert_eq!(
+        (i[(0, 1)], i[(0, 2)], i[(1, 0)], i[(2, 1)]),
+        (2.0, 3.0, 4.0, 8.0)
+    );
+}
+
+#[test]
+fn orientation_is_read_as_columns() {
+    // Rotated 90 degrees about z: the frame's x axis is world y, its y axis is world -x.
+    let b = body(
+        "A",
+        "1",
+        &[
+            frame("CG", None, "0,0,0", "mm", "0,1,0,-1,0,0,0,0,1"),
+            frame("CS1", None, "0,0,0", "mm", IDENTITY),
+        ],
+    );
+    let (m, warnings) = ok(&document("SimMechanics", &system(&[b], &[], &[], &[])));
+    assert!(warnings.is_empty());
+    let pose = m.frame(m.bodies[0].cg).pose;
+    let x_axis = pose.rotation * Vector3::x();
+    let y_axis = pose.rotation * Vector3::y();
+    assert!((x_axis - Vector3::y()).norm() < 1e-12, "{x_axis}");
+    assert!((y_axis + Vector3::x()).norm() < 1e-12, "{y_axis}");
+    // p_world = pose * p_frame
+    let p = pose * Point3::new(1.0, 0.0, 0.0);
+    assert!((p.coords - Vector3::y()).norm() < 1e-12);
+}
+
+#[test]
+fn cad_noise_is_orthonormalised_silently_and_mirrors_warn() {
+    let noisy = "-0.319989,0.947421,0,0,0,1,0.947421,0.319989,0";
+    let mirrored = "1,0,0,0,1,0,0,0,-1";
+    let b = body(
+        "A",
+        "1",
+        &[
+            frame("CG", None, "0,0,0", "mm", noisy),
+            frame("CS1", None, "0,0,0", "mm", mirrored),
+        ],
+    );
+    let (m, warnings) = ok(&document("SimMechanics", &system(&[b], &[], &[], &[])));
+    let r = m.frame(m.bodies[0].cg).pose.rotation.to_rotation_matrix();
+    assert!((r.matrix().determinant() - 1.0).abs() < 1e-12);
+    assert!((r * Vector3::x() - Vector3::new(-0.319989, 0.947421, 0.0)).norm() < 1e-5);
+    assert_eq!(warnings.len(), 1, "{warnings:?}");
+    assert_eq!(warnings[0].code, "frame-not-orthonormal");
+    assert!(
+        warnings[0].message.contains("mirrored"),
+        "{}",
+        warnings[0].message
+    );
+    assert!(
+        warnings[0].location.starts_with("t.xml:"),
+        "{}",
+        warnings[0].location
+    );
+    assert!(
+        warnings[0].location.contains("Frame \"CS1\""),
+        "{}",
+        warnings[0].location
+    );
+}
+
+#[test]
+fn nested_subsystems_and_cross_subsystem_refs() {
+    // The parent's joint names frame 2, which lives in a body two subsystems down.
+    let inner = subsystem(
+        "INNER",
+        &system(&[simple_body("C", 2, "0,5,0")], &[], &[], &[]),
+    );
+    let outer = subsystem(
+        "OUTER",
+        &system(
+            &[simple_body("B", 3, "0,0,5")],
+            &[joint("B--C", 3, 4, &[("weld", "1,1,1")])],
+            &[],
+            &[inner],
+        ),
+    );
+    // A frame referenced before it is defined is fine too (ref 4 is in the last body).
+    let last = simple_body("D", 4, "1,1,1");
+    let xml = document(
+        "SimMechanics",
+        &system(
+            &[simple_body("A", 1, "0,0,0")],
+            &[joint("A--C", 1, 2, &[("revolute", "1,0,0")])],
+            &[ground(9)],
+            &[outer, subsystem("LAST", &system(&[last], &[], &[], &[]))],
+        ),
+    );
+    let (m, _) = ok(&xml);
+    let names: Vec<_> = m.bodies.iter().map(|b| b.cad_name.as_str()).collect();
+    assert_eq!(names, ["A", "B", "C", "D"]);
+    assert!(m.bodies[0].subsystem_path.is_empty());
+    assert_eq!(m.bodies[1].subsystem_path, ["OUTER"]);
+    assert_eq!(m.bodies[2].subsystem_path, ["OUTER", "INNER"]);
+    assert_eq!(m.bodies[3].subsystem_path, ["LAST"]);
+    let j = &m.joints[0];
+    assert_eq!(j.cad_name, "A--C");
+    assert!(j.subsystem_path.is_empty());
+    assert_eq!(
+        m.frame(j.follower).owner,
+        FrameOwner::Body(crate::pipeline::ir::BodyId(2))
+    );
+    let j = &m.joints[1];
+    assert_eq!(j.subsystem_path, ["OUTER"]);
+    assert_eq!(
+        m.frame(j.follower).owner,
+        FrameOwner::Body(crate::pipeline::ir::BodyId(3))
+    );
+}
+
+#[test]
+fn multiple_primitives_and_material() {
+    let b = simple_body("A", 1, "0,0,0").replace(
+        "</Body>",
+        "<MaterialProp><color>0.5,0.25,1</color><ambient>0.4</ambient><specular>0.9</specular><transparency>0.1</transparency></MaterialProp></Body>",
+    );
+    let prims = [
+        ("prismatic", "1,0,0"),
+        ("prismatic", "0,1,0"),
+        ("PRISMATIC", "0,0,1"),
+        ("Spherical", "0,0,1"),
+    ];
+    let xml = document(
+        "SimMechanics",
+        &system(
+            &[b, simple_body("B", 2, "0,0,0")],
+            &[joint("A--B", 1, 2, &prims)],
+            &[],
+            &[],
+        ),
+    );
+    let (m, _) = ok(&xml);
+    let kinds: Vec<_> = m.joints[0].primitives.iter().map(|p| p.kind).collect();
+    use PrimitiveKind::*;
+    assert_eq!(kinds, [Prismatic, Prismatic, Prismatic, Spherical]);
+    let mat = m.bodies[0].material.as_ref().expect("material");
+    assert_eq!(mat.color, [0.5, 0.25, 1.0]);
+    assert_eq!((mat.transparency, mat.specular), (0.1, 0.9));
+    assert!(m.bodies[1].material.is_none());
+}
+
+#[test]
+fn elements_are_found_by_name_not_position_and_unknown_ones_skipped() {
+    let f = r#"<Frame ref="1"><orientationReferenceFrame>"WORLD"</orientationReferenceFrame>
+        <surprise><name>"NOT THIS"</name></surprise><orientation>1,0,0,0,1,0,0,0,1</orientation>
+        <positionUnits>"m"</positionUnits><position>1,2,3</position><nodeID>"x"</nodeID><name>"CS1"</name></Frame>"#;
+    let b = format!(
+        r#"<Body><frames>{}{f}</frames><inertiaUnits>"kg*m^2"</inertiaUnits><inertia>0,0,0,0,0,0,0,0,0</inertia>
+        <massUnits>"kg"</massUnits><mass>0</mass><nodeID>"1"</nodeID><name>"A"</name><id>7</id></Body>"#,
+        frame("CG", None, "0,0,0", "m", IDENTITY)
+    );
+    let (m, _) = ok(&document("SimMechanics", &system(&[b], &[], &[], &[])));
+    let cs1 = m.frame(m.bodies[0].cs1);
+    assert_eq!(cs1.name, "CS1");
+    assert_eq!(cs1.display_name, "");
+    assert_eq!(cs1.pose.translation.vector, Vector3::new(1.0, 2.0, 3.0));
+}
+
+#[test]
+fn strings_unquote_exactly_once_and_decode_entities() {
+    let xml = two_bodies("SimMechanics")
+        .replacen("<name>\"A\"</name>", "<name>\"\"A&amp;B\"\"</name>", 1)
+        .replacen(
+            "<createdBy>\"someone\"</createdBy>",
+            "<createdBy>\"\"</createdBy>",
+            1,
+        );
+    let (m, _) = ok(&xml);
+    assert_eq!(m.bodies[0].cad_name, "\"A&B\"");
+    assert_eq!(m.source.created_by, "");
+}
+
+#[test]
+fn three_digit_exponents() {
+    let xml =
+        two_bodies("SimMechanics").replacen("<mass>1.5</mass>", "<mass>6.63933e-005</mass>", 1);
+    let (m, _) = ok(&xml);
+    assert_eq!(m.bodies[0].mass, 6.63933e-5);
+}
+
+#[test]
+fn bom_comments_and_sniffing() {
+    let xml = format!(
+        "\u{feff}<!-- exported --><?pi x?>{}",
+        two_bodies("SimMechanics").replacen(
+            r#"<?xml version="1.0" encoding="UTF-8" standalone="no" ?>"#,
+            "",
+            1,
+        )
+    );
+    assert!(is_physical_modeling_xml(xml.as_bytes()));
+    let (m, _) = ok(&xml);
+    assert_eq!(m.bodies.len(), 2);
+    assert!(is_physical_modeling_xml(
+        two_bodies("SimMechanics").as_bytes()
+    ));
+    assert!(!is_physical_modeling_xml(b"<SimMechanicsImportXML/>"));
+    assert!(!is_physical_modeling_xml(b"solid x\nfacet normal 0 0 1"));
+    assert!(!is_physical_modeling_xml(b""));
+    assert!(!is_physical_modeling_xml(
+        b"<?xml version=\"1.0\"?><!-- <PhysicalModelingXMLFile> --><other/>"
+    ));
+}
+
+// ----- errors ----------------------------------------------------------------------------------
+
+#[test]
+fn second_generation_is_rejected() {
+    let e = fails(
+        "<?xml version=\"1.0\"?>\n<SimMechanicsImportXML version=\"1.0\" xmlns=\"urn:mathworks:simmechanics:import\">\n</SimMechanicsImportXML>",
+    );
+    assert_eq!(e.kind, XmlErrorKind::SecondGeneration);
+    assert_eq!((e.line, e.column), (2, 1));
+    assert!(e.to_string().contains("second-generation"), "{e}");
+}
+
+#[test]
+fn other_roots_are_rejected() {
+    let e = fails("<svg></svg>");
+    assert_eq!(
+        e.kind,
+        XmlErrorKind::NotPhysicalModelingXml { root: "svg".into() }
+    );
+    let e = fails("<PhysicalModelingXMLFile><name>\"x\"</name></PhysicalModelingXMLFile>");
+    assert_eq!(e.kind, XmlErrorKind::NoContainer);
+}
+
+#[test]
+fn dangling_ref_names_joint_and_ref_with_position() {
+    let xml = two_bodies("SimMechanics")
+        .replace(r#"<Frame ref="2"></Frame>"#, r#"<Frame ref="42"></Frame>"#);
+    let e = fails(&xml);
+    assert_eq!(e.kind, XmlErrorKind::DanglingRef { ref_id: 42 });
+    let at = xml.find(r#"<Frame ref="42">"#).expect("present");
+    let line = xml[..at].matches('\n').count() as u32 + 1;
+    let column = (at - xml[..at].rfind('\n').map_or(0, |i| i + 1)) as u32 + 1;
+    assert_eq!((e.line, e.column), (line, column));
+    assert!(
+        e.element
+            .starts_with("SimpleJoint \"A--B\" (nodeID \"A--B\")"),
+        "{}",
+        e.element
+    );
+    assert!(e.element.ends_with("Frame ref=\"42\""), "{}", e.element);
+    let text = e.to_string();
+    assert!(
+        text.starts_with(&format!("t.xml:{line}:{column}: in SimpleJoint \"A--B\"")),
+        "{text}"
+    );
+    assert!(text.contains("ref=\"42\""), "{text}");
+}
+
+#[test]
+fn duplicate_ref_is_an_error() {
+    let xml = document(
+        "SimMechanics",
+        &system(
+            &[simple_body("A", 1, "0,0,0"), simple_body("B", 1, "0,0,0")],
+            &[],
+            &[],
+            &[],
+        ),
+    );
+    let e = fails(&xml);
+    assert!(
+        matches!(&e.kind, XmlErrorKind::DuplicateRef { ref_id: 1, first } if first.contains("Body")),
+        "{e}"
+    );
+}
+
+#[test]
+fn unknown_unit_error() {
+    let xml = two_bodies("SimMechanics").replacen(
+        "<positionUnits>\"mm\"</positionUnits>",
+        "<positionUnits>\"furlong\"</positionUnits>",
+        1,
+    );
+    let e = fails(&xml);
+    assert_eq!(
+        e.kind,
+        XmlErrorKind::UnknownUnit {
+            quantity: "length",
+            unit: "furlong".into(),
+            allowed: "mm, cm, m, in, ft"
+        }
+    );
+    assert_eq!(e.line, line_of(&xml, "furlong"));
+    assert_eq!(
+        e.element,
+        "Body \"A\" (nodeID \"A\") / frames / Frame \"CG\" (nodeID \"CG-id0\") / positionUnits"
+    );
+    assert!(e.to_string().ends_with(
+        ": in Body \"A\" (nodeID \"A\") / frames / Frame \"CG\" (nodeID \"CG-id0\") / positionUnits: unknown length unit \"furlong\" (expected one of mm, cm, m, in, ft)"
+    ), "{e}");
+    let xml = two_bodies("SimMechanics").replacen("\"kg*m^2\"", "\"stone*m^2\"", 1);
+    assert!(matches!(
+        fails(&xml).kind,
+        XmlErrorKind::UnknownUnit {
+            quantity: "inertia",
+            ..
+        }
+    ));
+}
+
+#[test]
+fn non_finite_and_bad_numbers_are_rejected() {
+    for (bad, non_finite) in [
+        ("NaN", true),
+        ("nan", true),
+        ("inf", true),
+        ("-1.#IND", true),
+        ("1.2.3", false),
+        ("", false),
+        ("1e", false),
+    ] {
+        let xml = two_bodies("SimMechanics").replacen(
+            "<position>10,0,0</position>",
+            &format!("<position>10,{bad},0</position>"),
+            1,
+        );
+        let e = fails(&xml);
+        match e.kind {
+            XmlErrorKind::NonFinite { ref text } => {
+                assert!(non_finite && text == bad, "{bad}: {e}")
+            }
+            XmlErrorKind::BadNumber { ref text } => {
+                assert!(!non_finite && text == bad, "{bad}: {e}")
+            }
+            _ => panic!("{bad}: {e}"),
+        }
+        assert_eq!(e.line, line_of(&xml, "<position>10,"));
+        assert!(e.element.ends_with("/ position"), "{}", e.element);
+    }
+    let xml = two_bodies("SimMechanics").replacen("<mass>1.5</mass>", "<mass>NaN</mass>", 1);
+    assert!(matches!(fails(&xml).kind, XmlErrorKind::NonFinite { .. }));
+}
+
+#[test]
+fn wrong_counts_are_rejected() {
+    let xml = two_bodies("SimMechanics").replacen(
+        "<position>10,0,0</position>",
+        "<position>10,0</position>",
+        1,
+    );
+    assert_eq!(
+        fails(&xml).kind,
+        XmlErrorKind::WrongCount {
+            expected: 3,
+            got: 2
+        }
+    );
+    let xml = two_bodies("SimMechanics").replacen(
+        "<inertia>1,0,0,0,2,0,0,0,3</inertia>",
+        "<inertia>1,0,0,0,2,0,0,0,3,4</inertia>",
+        1,
+    );
+    assert_eq!(
+        fails(&xml).kind,
+        XmlErrorKind::WrongCount {
+            expected: 9,
+            got: 10
+        }
+    );
+    let xml = two_bodies("SimMechanics").replacen("<axis>0,0,1</axis>", "<axis></axis>", 1);
+    assert_eq!(
+        fails(&xml).kind,
+        XmlErrorKind::WrongCount {
+            expected: 3,
+            got: 0
+        }
+    );
+}
+
+#[test]
+fn unsupported_frames_orientations_and_primitives() {
+    let base = two_bodies("SimMechanics");
+    let e = fails(&base.replacen(
+        "<positionReferenceFrame>\"WORLD\"",
+        "<positionReferenceFrame>\"CS1\"",
+        1,
+    ));
+    assert_eq!(
+        e.kind,
+        XmlErrorKind::UnsupportedReferenceFrame {
+            value: "CS1".into()
+        }
+    );
+    let e = fails(&base.replacen(
+        "<orientation>1,0,0,0,1,0,0,0,1</orientation>\n            <orientationType>\"3x3 Transform\"",
+        "<orientation>1,0,0,0</orientation>\n            <orientationType>\"Quaternion\"",
+        1,
+    ));
+    assert_eq!(
+        e.kind,
+        XmlErrorKind::UnsupportedOrientationType {
+            value: "Quaternion".into()
+        }
+    );
+    let e = fails(&base.replacen("\"revolute\"", "\"planar\"", 1));
+    assert_eq!(
+        e.kind,
+        XmlErrorKind::UnknownPrimitive {
+            name: "planar".into()
+        }
+    );
+    let e = fails(&base.replacen("<referenceFrame>\"WORLD\"", "<referenceFrame>\"BASE\"", 1));
+    assert_eq!(
+        e.kind,
+        XmlErrorKind::UnsupportedReferenceFrame {
+            value: "BASE".into()
+        }
+    );
+    let e = fails(&base.replacen("<orientationUnits>\"rad\"", "<orientationUnits>\"grad\"", 1));
+    assert!(
+        matches!(
+            e.kind,
+            XmlErrorKind::UnknownUnit {
+                quantity: "angle",
+                ..
+            }
+        ),
+        "{e}"
+    );
+    // Missing reference-frame elements mean WORLD.
+    let (m, _) = ok(&base.replace("<positionOrigin>\"WORLD\"</positionOrigin>", ""));
+    assert_eq!(m.bodies.len(), 2);
+}
+
+#[test]
+fn structural_errors() {
+    let base = two_bodies("SimMechanics");
+    let e = fails(&base.replacen("<name>\"CG\"</name>", "<name>\"CGX\"</name>", 1));
+    assert_eq!(e.kind, XmlErrorKind::MissingBodyFrame { name: "CG" });
+    assert_eq!(e.element, "Body \"A\" (nodeID \"A\")");
+    let e = fails(&base.replacen("<name>\"CS1\"</name>", "<name>\"CSX\"</name>", 1));
+    assert_eq!(e.kind, XmlErrorKind::MissingBodyFrame { name: "CS1" });
+    let e = fails(&base.replacen("<mass>1.5</mass>", "", 1));
+    assert_eq!(e.kind, XmlErrorKind::MissingElement { name: "mass" });
+    let e = fails(&base.replacen("<Primitive><name>\"revolute\"</name><nodeID>\"\"</nodeID><referenceFrame>\"WORLD\"</referenceFrame><axis>0,0,1</axis></Primitive>", "", 1));
+    assert_eq!(e.kind, XmlErrorKind::NoPrimitives);
+    let e = fails(&base.replacen(r#"<Frame ref="2"></Frame>"#, "<Frame></Frame>", 1));
+    assert_eq!(e.kind, XmlErrorKind::MissingAttribute { name: "ref" });
+    let e = fails(&base.replacen(
+        r#"<Frame ref="2"></Frame>"#,
+        r#"<Frame ref="two"></Frame>"#,
+        1,
+    ));
+    assert_eq!(e.kind, XmlErrorKind::BadNumber { text: "two".into() });
+    let doubled = base.replacen(
+        "<SimMechanics>",
+        "<SimMechanics></SimMechanics><SimMechanics>",
+        1,
+    );
+    assert_eq!(fails(&doubled).kind, XmlErrorKind::MultipleContainers);
+}
+
+#[test]
+fn deep_nesting_is_an_error_not_a_stack_overflow() {
+    let mut content = system(&[], &[], &[], &[]);
+    for i in 0..200 {
+        content = system(&[], &[], &[], &[subsystem(&format!("S{i}"), &content)]);
+    }
+    assert!(matches!(
+        fails(&document("SimMechanics", &content)).kind,
+        XmlErrorKind::TooDeep { .. }
+    ));
+}
+
+#[test]
+fn malformed_xml_is_an_error_at_every_truncation() {
+    let xml = two_bodies("SimMechanics");
+    let root_end = xml.find("</PhysicalModelingXMLFile>").expect("present");
+    // Every cut before the root is closed must be an error, never a panic.
+    for cut in 0..root_end {
+        let e = match parse("t.xml", &xml.as_bytes()[..cut]) {
+            Ok(_) => panic!("truncated at {cut} parsed"),
+            Err(e) => e,
+        };
+        assert!(e.line >= 1, "cut {cut}: {e}");
+    }
+    let e = fails(&xml[..xml.len() / 2]);
+    assert!(matches!(e.kind, XmlErrorKind::Syntax { .. }), "{e}");
+    assert!(e.to_string().contains("not closed"), "{e}");
+    let e = fails(&xml.replacen("</mass>", "</massX>", 1));
+    assert!(matches!(e.kind, XmlErrorKind::Syntax { .. }), "{e}");
+    assert_eq!(e.line, line_of(&xml, "</mass>"));
+    // Garbage bytes must not panic either.
+    let mut garbage = xml.clone().into_bytes();
+    for (i, b) in garbage.iter_mut().enumerate() {
+        if i % 97 == 13 {
+            *b = 0xFF;
+        }
+    }
+    let _ = parse("t.xml", &garbage);
+}
+
+// ----- real exports ----------------------------------------------------------------------------
+
+/// `../shared/fixtures`, or `$CAD2MO_FIXTURES`.
+fn fixtures() -> Option<std::path::PathBuf> {
+    let dir = std::env::var_os("CAD2MO_FIXTURES")
+        .map(std::path::PathBuf::from)
+        .unwrap_or_else(|| {
+            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/fixtures")
+        });
+    if dir.is_dir() {
+        Some(dir)
+    } else {
+        println!("fixtures not found at {}; skipping", dir.display());
+        None
+    }
+}
+
+fn xml_files(dir: &std::path::Path, out: &mut Vec<std::path::PathBuf>) {
+    let Ok(entries) = std::fs::read_dir(dir) else {
+        return;
+    };
+    for e in entries.flatten() {
+        let p = e.path();
+        if p.is_dir() {
+            xml_files(&p, out);
+        } else if p.extension().is_some_and(|x| x.eq_ignore_ascii_case("xml")) {
+            out.push(p);
+        }
+    }
+}
+
+/// Body and joint counts from `MANIFEST.md` (path relative to the fixtures directory).
+const EXPECTED: [(&str, usize, usize); 18] = [
+    (
+        "xml/robotology+icub-models-generator/6af98216/iCubGenova02_SIM_MODEL.xml",
+        39,
+        39,
+    ),
+    (
+        "xml/robotology+icub-models-generator/e780c99f/ICUB_2-5_BB_SIM_MODEL.xml",
+        47,
+        47,
+    ),
+    (
+        "xml/robotology+icub-models-generator/47ce5a54/ICUB_2-5_BB_SIM_MODEL.xml",
+        47,
+        47,
+    ),
+    (
+        "xml/robotology+icub-models-generator/08c7f3a5/ICUB_2-5_BB_SIM_MODEL.xml",
+        47,
+        47,
+    ),
+    (
+        "xml/robotology+icub-models-generator/4dd88947/ICUB_2-5_plus_BB_SIM_MODEL.xml",
+        47,
+        47,
+    ),
+    (
+        "xml/robotology+icub-models-generator/67275682/SIM_LEFT_HAND_Mk3.xml",
+        13,
+        13,
+    ),
+    (
+        "xml/robotology+icub-models-generator/85fdaa3f/SIM_L_WRIST.xml",
+        5,
+        5,
+    ),
+    (
+        "xml/robotology+icub-models-generator/2d4a19cf/ICUB3_UPPERBODY_SIM_MODEL.xml",
+        13,
+        13,
+    ),
+    (
+        "xml/robotology+icub-models-generator/d1456816/ICUB3_L_LEG_SIM_MODEL.xml",
+        10,
+        10,
+    ),
+    (
+        "xml/robotology+icub-models-generator/d1456816/ICUB3_R_LEG_SIM_MODEL.xml",
+        10,
+        10,
+    ),
+    (
+        "xml/robotology+icub-models-generator/3ca3b152/ICUB3_ALL_SIM_MODEL.xml",
+        43,
+        43,
+    ),
+    (
+        "xml/robotology+icub-models-generator/cf367280/ICUB3_ALL_SIM_MODEL.xml",
+        43,
+        43,
+    ),
+    (
+        "xml/robotology+simmechanics-to-urdf/a83a61f/LEGS_MECHANISM.xml",
+        29,
+        33,
+    ),
+    (
+        "xml/robotology+simmechanics-to-urdf/5beb5f5/LEGS_MECHANISM.xml",
+        14,
+        14,
+    ),
+    ("xml/steventen+SimMechanics-Parsing-Tools/fourbar.xml", 5, 6),
+    (
+        "xml/icub-tech-iit+ergocub-software/0a049c74/SIM_ERGOCUB_1-0.xml",
+        43,
+        42,
+    ),
+    (
+        "xml/icub-tech-iit+ergocub-software/1fe125d3/SIM_ERGOCUB_1-0.xml",
+        67,
+        67,
+    ),
+    (
+        "stl/robotology+icub-models-generator/25e4033/left_hand_mk3/SIM_LEFT_HAND.xml",
+        13,
+        13,
+    ),
+];
+
+#[test]
+fn real_fixtures_parse_with_manifest_counts() {
+    let Some(dir) = fixtures() else { return };
+    let mut files = Vec::new();
+    xml_files(&dir.join("xml"), &mut files);
+    xml_files(&dir.join("stl"), &mut files);
+    files.sort();
+    let mut parsed = 0;
+    let mut checked = 0;
+    for path in &files {
+        let rel = path
+            .strip_prefix(&dir)
+            .unwrap_or(path)
+            .to_string_lossy()
+            .replace('\\', "/");
+        let bytes = std::fs::read(path).expect("readable fixture");
+        if !is_physical_modeling_xml(&bytes) {
+            continue;
+        }
+        let (m, warnings) = match parse(&rel, &bytes) {
+            Ok(r) => r,
+            Err(e) => panic!("{e}"),
+        };
+        parsed += 1;
+        println!(
+            "{rel}: {} bodies, {} joints, {} frames, {} warnings, container {}",
+            m.bodies.len(),
+            m.joints.len(),
+            m.frames.len(),
+            warnings.len(),
+            m.source.container
+        );
+        for w in &warnings {
+            println!("  {} {}: {}", w.code, w.location, w.message);
+        }
+        if let Some(&(_, bodies, joints)) = EXPECTED.iter().find(|(p, _, _)| *p == rel) {
+            assert_eq!((m.bodies.len(), m.joints.len()), (bodies, joints), "{rel}");
+            checked += 1;
+        }
+        // Sanity of what the IR promises.
+        for j in &m.joints {
+            assert!(!j.primitives.is_empty());
+            assert!(j.base.index() < m.frames.len() && j.follower.index() < m.frames.len());
+            assert!(j.loc.line > 0);
+        }
+        for f in &m.frames {
+            let r = f.pose.rotation.to_rotation_matrix();
+            assert!(
+                (r.matrix().determinant() - 1.0).abs() < 1e-9,
+                "{rel} {}",
+                f.node_id
+            );
+        }
+        if rel.ends_with("fourbar.xml") {
+            assert_eq!(m.length_scale, 0.0254);
+            assert_eq!(m.source.container, "SimMechanics");
+        } else {
+            assert_eq!(m.length_scale, 1e-3, "{rel}");
+        }
+        if rel.contains("47ce5a54") {
+            assert_eq!(m.source.container, "SimscapeMultibody");
+        }
+        if rel.contains("3ca3b152") {
+            let prismatic = m
+                .joints
+                .iter()
+                .flat_map(|j| &j.primitives)
+                .filter(|p| p.kind == PrimitiveKind::Prismatic);
+            assert_eq!(prismatic.count(), 1);
+        }
+        if rel.contains("0a049c74") {
+            use PrimitiveKind::*;
+            for j in &m.joints {
+                let kinds: Vec<_> = j.primitives.iter().map(|p| p.kind).collect();
+                assert_eq!(
+                    kinds,
+                    [Prismatic, Prismatic, Prismatic, Spherical],
+                    "{}",
+                    j.node_id
+                );
+            }
+        }
+        if rel.contains("6af98216") {
+            assert!(
+                m.bodies.iter().any(|b| b.subsystem_path.len() >= 2),
+                "nested subsystems"
+            );
+        }
+    }
+    assert_eq!(
+        checked,
+        EXPECTED.len(),
+        "every manifest file was found and checked"
+    );
+    assert_eq!(parsed, EXPECTED.len());
+
+    let second = dir.join("xml/yoggi56+hexapod_simmechanics/Link1.xml");
+    let bytes = std::fs::read(second).expect("Link1.xml");
+    assert!(!is_physical_modeling_xml(&bytes));
+    let e = match parse("Link1.xml", &bytes) {
+        Ok(_) => panic!("second-generation file parsed"),
+        Err(e) => e,
+    };
+    assert_eq!(e.kind, XmlErrorKind::SecondGeneration);
+    assert_eq!(e.line, 2);
+}
+
+#[test]
+fn non_simple_joint_entries_warn() {
+    let xml = two_bodies("SimMechanics").replacen(
+        "</joints>",
+        "<UnknownConstraint><name>\"x\"</name></UnknownConstraint>\n</joints>",
+        1,
+    );
+    let (m, warnings) = ok(&xml);
+    assert_eq!(m.joints.len(), 2);
+    assert_eq!(warnings.len(), 1);
+    assert_eq!(warnings[0].code, "joint-element-skipped");
+    assert!(warnings[0].message.contains("UnknownConstraint"));
+}

@@ -1,0 +1,88 @@
+//! Forward kinematics: from the emitted `Mechanics.mo` alone, recompute every body frame's and
+//! centre of gravity's world position and compare with the XML to 1e-9 m.
+//!
+//! Ground truth comes from two independent sources: the XML scanned by `support/truth.rs`, and
+//! for our own cases the poses the fixture generator computed (`tests/in/<case>/expect.json`).
+
+use std::collections::BTreeMap;
+
+use cad2mo::pipeline::Options;
+use cad2mo_tests::check::{fk_check, nearest_rotation, TOL};
+use cad2mo_tests::common::{convert_path, files_with_ext, sorted_dirs, workspace_root};
+use cad2mo_tests::truth::{xml_cgs, xml_frames, TruthFrame};
+use nalgebra::{Matrix3, Vector3};
+use serde_json::Value;
+
+fn options(case: &std::path::Path) -> Options {
+    let mut o = Options { write_shapes: false, ..Options::default() };
+    if let Ok(t) = std::fs::read_to_string(case.join("options.json")) {
+        let v: Value = serde_json::from_str(&t).expect("options.json");
+        o.lump_welds = v["lump_welds"].as_bool().unwrap_or(false);
+    }
+    o
+}
+
+fn vec3(v: &Value) -> Option<Vector3<f64>> {
+    let a = v.as_array()?;
+    Some(Vector3::new(a.first()?.as_f64()?, a.get(1)?.as_f64()?, a.get(2)?.as_f64()?))
+}
+
+/// Frames from expect.json (the generator's own poses), when present.
+fn expected_frames(case: &std::path::Path) -> (BTreeMap<String, TruthFrame>, BTreeMap<String, Vector3<f64>>) {
+    let mut frames = BTreeMap::new();
+    let mut cgs = BTreeMap::new();
+    let Ok(t) = std::fs::read_to_string(case.join("expect.json")) else { return (frames, cgs) };
+    let v: Value = serde_json::from_str(&t).expect("expect.json");
+    for f in v["frames"].as_array().into_iter().flatten() {
+        let (Some(node), Some(p), Some(x), Some(y)) =
+            (f["node_id"].as_str(), vec3(&f["position_m"]), vec3(&f["x_axis"]), vec3(&f["y_axis"]))
+        else {
+            continue;
+        };
+        let rotation = Matrix3::from_columns(&[x, y, x.cross(&y)]);
+        frames.insert(node.to_string(), TruthFrame { position: p, rotation });
+    }
+    if let Some(m) = v["cg_world_m"].as_object() {
+        for (k, p) in m {
+            if let Some(p) = vec3(p) {
+                cgs.insert(k.clone(), p);
+            }
+        }
+    }
+    (frames, cgs)
+}
+
+#[test]
+fn own_cases_reproduce_cad_pose() {
+    let mut checked = 0;
+    for case in sorted_dirs(&workspace_root().join("tests/in")) {
+        let name = case.file_name().expect("name").to_string_lossy().to_string();
+        let Ok(out) = convert_path(&case, &options(&case)) else { continue };
+        let xml = files_with_ext(&case, &[".xml"]);
+        let text = std::fs::read_to_string(&xml[0]).expect("xml");
+        let stats = fk_check(&out, &xml_frames(&text), &xml_cgs(&text)).unwrap_or_else(|e| panic!("{name} (XML truth): {e}"));
+        assert!(stats.frames >= out.report.bodies.len(), "{name}: only {} frames checked", stats.frames);
+        let (frames, cgs) = expected_frames(&case);
+        if !frames.is_empty() {
+            let s2 = fk_check(&out, &frames, &cgs).unwrap_or_else(|e| panic!("{name} (generator truth): {e}"));
+            assert!(s2.frames > 0, "{name}: no generator frames matched");
+        }
+        println!(
+            "{name}: {} frames, {} CGs, {} loop checks, max error {:e} m / {:e}",
+            stats.frames, stats.cgs, stats.loop_checks, stats.max_position_error, stats.max_rotation_error
+        );
+        checked += 1;
+    }
+    assert!(checked >= 7, "only {checked} cases converted");
+}
+
+/// The truth scanner and the rotation clean-up agree with a hand-computed frame.
+#[test]
+fn truth_scanner_reads_columns() {
+    let xml = "<Frame ref=\"1\"><name>\"CS2\"</name><nodeID>\"7::CS2\"</nodeID><position>1,2,3</position><positionUnits>\"mm\"</positionUnits><orientation>0,1,0,-1,0,0,0,0,1</orientation></Frame>";
+    let f = &xml_frames(xml)["7::CS2"];
+    assert!((f.position - Vector3::new(0.001, 0.002, 0.003)).norm() < 1e-15);
+    assert_eq!(f.rotation.column(0), Vector3::new(0.0, 1.0, 0.0));
+    let r = nearest_rotation(&(f.rotation * 1.000001));
+    assert!((r - f.rotation).norm() < TOL);
+}

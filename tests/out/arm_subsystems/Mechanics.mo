@@ -1,0 +1,155 @@
+within ARM;
+model Mechanics "Mechanical model of ARM (6 bodies, 6 joints)"
+  inner Modelica.Mechanics.MultiBody.World world(n={0.0, -1.0, 0.0}, g=9.81) "World frame: the CAD assembly's frame"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-160,0})));
+
+  // Bodies: frame_a is each part's CS1 frame
+  Modelica.Mechanics.MultiBody.Parts.Body RootPart_ARM(
+    m=0.0,
+    r_CM={0.0, 0.0, 0.0},
+    I_11=0.0, I_22=0.0, I_33=0.0,
+    I_21=0.0, I_31=0.0, I_32=0.0,
+    animation=false)
+    "Assembly root RootPart (nodeID ARM/RootPart)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,0})));
+  Modelica.Mechanics.MultiBody.Parts.Body BASE(
+    m=3.4992,
+    r_CM={0.0, 0.045, 0.0},
+    I_11=0.006561, I_22=0.00839808, I_33=0.006561,
+    I_21=0.0, I_31=0.0, I_32=0.0,
+    animation=false)
+    "Part BASE (nodeID 7)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-25})));
+  Modelica.Mechanics.MultiBody.Parts.Body LINK_UPPER(
+    m=0.564473,
+    r_CM={0.12550000000000006, -0.0005000000000000282, 1.3877787807814457e-17},
+    I_11=7.229960000000002e-5, I_22=0.003741370000000003, I_33=0.0037594800000000034,
+    I_21=-2.168404344971009e-19, I_31=2.17715171677925e-19, I_32=-8.211739349119431e-20,
+    animation=false)
+    "Part LINK (nodeID 12/13)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-50})));
+  Modelica.Mechanics.MultiBody.Parts.Body RootPart_UPPER(
+    m=0.0,
+    r_CM={-0.06820749990150862, 0.16820749990150866, 0.0802868227941012},
+    I_11=0.0, I_22=0.0, I_33=0.0,
+    I_21=0.0, I_31=0.0, I_32=0.0,
+    animation=false)
+    "Assembly root RootPart (nodeID 12/RootPart)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-75})));
+  Modelica.Mechanics.MultiBody.Parts.Body LINK_FORE(
+    m=0.31752,
+    r_CM={0.10000000000000003, 0.0005000000000000282, 0.0004999999999999762},
+    I_11=2.8206400000000015e-5, I_22=0.0013393300000000001, I_33=0.0013441900000000005,
+    I_21=-5.421010862427522e-20, I_31=0.0, I_32=0.0,
+    animation=false)
+    "Part LINK (nodeID 12/20/21)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-100})));
+  Modelica.Mechanics.MultiBody.Parts.Body RootPart_FORE(
+    m=0.0,
+    r_CM={-0.2056366839437535, 0.16421532770644398, 0.16057732926576576},
+    I_11=0.0, I_22=0.0, I_33=0.0,
+    I_21=0.0, I_31=0.0, I_32=0.0,
+    animation=false)
+    "Assembly root RootPart (nodeID 12/20/RootPart)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-125})));
+
+  // Frames: grounds, joint attachment frames and user-added CAD frames
+  Modelica.Mechanics.MultiBody.Parts.FixedRotation BASE_CS3(
+    r={0.0, 0.1, 0.0},
+    rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
+    n_x={1.249000902703301e-16, 5.551115123125783e-17, -1.0},
+    n_y={-0.7071067811865475, 0.7071067811865474, -5.551115123125783e-17},
+    animation=false)
+    "Frame CS3 of BASE (nodeID 12:12/13:-:7::7(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,0})));
+  Modelica.Mechanics.MultiBody.Parts.FixedRotation LINK_UPPER_CS4(
+    r={0.0, 0.0, 0.0},
+    rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
+    n_x={-0.6427876096865395, -0.7660444431189782, 1.2408040349709545e-16},
+    n_y={0.7660444431189782, -0.6427876096865395, 3.390136147099546e-18},
+    animation=false)
+    "Frame CS4 of LINK (nodeID 12:12/13:-:7::12/13(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-25})));
+  Modelica.Mechanics.MultiBody.Parts.FixedTranslation RootPart_UPPER_CS2(r={-0.06820749990150862, 0.16820749990150866, 0.0802868227941012}, animation=false)
+    "Frame CS2 of RootPart (nodeID 12/13:-:12/RootPart::12/RootPart(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-50})));
+  Modelica.Mechanics.MultiBody.Parts.FixedRotation LINK_UPPER_CS2(
+    r={0.12550000000000006, -0.0005000000000000282, 1.3877787807814457e-17},
+    rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
+    n_x={-0.541675220419702, 0.4545194776720438, 0.7071067811865476},
+    n_y={0.541675220419702, -0.45451947767204354, 0.7071067811865478},
+    animation=false)
+    "Frame CS2 of LINK (nodeID 12/13:-:12/RootPart::12/13(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-75})));
+  Modelica.Mechanics.MultiBody.Parts.FixedRotation LINK_UPPER_CS3(
+    r={0.2500000000000002, -5.551115123125783e-17, -2.7755575615628914e-17},
+    rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
+    n_x={0.8375416992315327, 0.2202814155764324, 0.5000000000000002},
+    n_y={0.48355492550886214, 0.1271795345805249, -0.8660254037844387},
+    animation=false)
+    "Frame CS3 of LINK (nodeID 12/13:-:12/20:12/20/21::12/13(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-100})));
+  Modelica.Mechanics.MultiBody.Parts.FixedRotation LINK_FORE_CS3(
+    r={0.0, 0.0, 0.0},
+    rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
+    n_x={-0.766044443118978, -0.6427876096865396, -1.2158671938657635e-16},
+    n_y={0.6427876096865396, -0.766044443118978, -1.9204098632062258e-16},
+    animation=false)
+    "Frame CS3 of LINK (nodeID 12/13:-:12/20:12/20/21::12/20/21(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-125})));
+  Modelica.Mechanics.MultiBody.Parts.FixedTranslation RootPart_FORE_CS2(r={-0.2056366839437535, 0.16421532770644398, 0.16057732926576576}, animation=false)
+    "Frame CS2 of RootPart (nodeID 12/20/21:-:12/20/RootPart::12/20/RootPart(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-150})));
+  Modelica.Mechanics.MultiBody.Parts.FixedRotation LINK_FORE_CS2(
+    r={0.10000000000000006, 0.0004999999999999449, 0.0005000000000000004},
+    rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
+    n_x={-0.7071067811865476, 0.408248290463863, 0.5773502691896258},
+    n_y={-0.7071067811865476, -0.40824829046386296, -0.5773502691896258},
+    animation=false)
+    "Frame CS2 of LINK (nodeID 12/20/21:-:12/20/RootPart::12/20/21(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-175})));
+
+  // Joints: base frame -> follower frame; start values reproduce the CAD pose
+  ARM.Components.Revolute BASE_LINK(
+    n={0.0, 0.0, 1.0},
+    phi(start=-5.551115123125784e-17, fixed=true),
+    w(start=0, fixed=true))
+    "Joint BASE--LINK (nodeID 12:12/13:-:7)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-40,0})));
+  ARM.Components.Revolute LINK_LINK(
+    n={0.0, 0.0, 1.0},
+    phi(start=-0.3490658503988658, fixed=true),
+    w(start=0, fixed=true))
+    "Joint LINK--LINK (nodeID 12/13:-:12/20:12/20/21)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-40,-25})));
+
+  // Shapes: CAD meshes in each body frame, metres
+  Modelica.Mechanics.MultiBody.Visualizers.FixedShape BASE_shape(
+    shapeType="modelica://ARM/Resources/Shapes/BASE.dxf",
+    length=1, width=1, height=1,
+    extra=0,
+    color={170, 170, 170})
+    "Shape of BASE" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={400,0})));
+  Modelica.Mechanics.MultiBody.Visualizers.FixedShape LINK_UPPER_shape(
+    shapeType="modelica://ARM/Resources/Shapes/LINK_UPPER.dxf",
+    length=1, width=1, height=1,
+    extra=0,
+    color={51, 89, 204})
+    "Shape of LINK" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={400,-25})));
+  Modelica.Mechanics.MultiBody.Visualizers.FixedShape LINK_FORE_shape(
+    shapeType="modelica://ARM/Resources/Shapes/LINK_FORE.dxf",
+    length=1, width=1, height=1,
+    extra=0,
+    color={242, 140, 26})
+    "Shape of LINK" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={400,-50})));
+equation
+  connect(BASE.frame_a, BASE_CS3.frame_a);
+  connect(LINK_UPPER.frame_a, LINK_UPPER_CS4.frame_a);
+  connect(RootPart_UPPER.frame_a, RootPart_UPPER_CS2.frame_a);
+  connect(LINK_UPPER.frame_a, LINK_UPPER_CS2.frame_a);
+  connect(LINK_UPPER.frame_a, LINK_UPPER_CS3.frame_a);
+  connect(LINK_FORE.frame_a, LINK_FORE_CS3.frame_a);
+  connect(RootPart_FORE.frame_a, RootPart_FORE_CS2.frame_a);
+  connect(LINK_FORE.frame_a, LINK_FORE_CS2.frame_a);
+  connect(world.frame_b, RootPart_ARM.frame_a);
+  connect(RootPart_ARM.frame_a, BASE.frame_a);
+  connect(BASE_CS3.frame_b, BASE_LINK.frame_a);
+  connect(BASE_LINK.frame_b, LINK_UPPER_CS4.frame_b);
+  connect(RootPart_UPPER_CS2.frame_b, LINK_UPPER_CS2.frame_b);
+  connect(LINK_UPPER_CS3.frame_b, LINK_LINK.frame_a);
+  connect(LINK_LINK.frame_b, LINK_FORE_CS3.frame_b);
+  connect(RootPart_FORE_CS2.frame_b, LINK_FORE_CS2.frame_b);
+  connect(BASE.frame_a, BASE_shape.frame_a);
+  connect(LINK_UPPER.frame_a, LINK_UPPER_shape.frame_a);
+  connect(LINK_FORE.frame_a, LINK_FORE_shape.frame_a);
+  annotation (
+    experiment(StopTime=1),
+    Documentation(info="<html>
+<p>Converted by cad2mo 0.1.0 from <code>ARM_SIM_MODEL.xml</code> (SimMechanics), exported by SimMechanics Link Version 4.0 from Pro/E Wildfire Creo 2.0 - 2012360 on 03/14/24||10:20:30 by cad2mo.</p>
+<p>All quantities in SI units. Each body's frame_a is its CAD part frame CS1; joint start values reproduce the CAD pose.</p>
+</html>"));
+end Mechanics;

@@ -1,0 +1,124 @@
+within UJ;
+model Mechanics "Mechanical model of UJ (4 bodies, 4 joints)"
+  inner Modelica.Mechanics.MultiBody.World world(n={0.0, -1.0, 0.0}, g=9.81) "World frame: the CAD assembly's frame"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-160,0})));
+
+  // Bodies: frame_a is each part's CS1 frame
+  Modelica.Mechanics.MultiBody.Parts.Body RootPart(
+    m=0.0,
+    r_CM={0.0, 0.0, 0.0},
+    I_11=0.0, I_22=0.0, I_33=0.0,
+    I_21=0.0, I_31=0.0, I_32=0.0,
+    animation=false)
+    "Assembly root RootPart (nodeID UJ/RootPart)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,0})));
+  Modelica.Mechanics.MultiBody.Parts.Body BASE(
+    m=4.86,
+    r_CM={0.0, 0.09, 0.0},
+    I_11=0.017172, I_22=0.0081, I_33=0.017172,
+    I_21=0.0, I_31=0.0, I_32=0.0,
+    animation=false)
+    "Part BASE (nodeID 201)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-25})));
+  Modelica.Mechanics.MultiBody.Parts.Body CROSS(
+    m=0.864,
+    r_CM={0.0, 0.03, 0.02},
+    I_11=0.0011808, I_22=0.000576, I_33=0.0008352,
+    I_21=0.0, I_31=0.0, I_32=0.0,
+    animation=false)
+    "Part CROSS (nodeID 202)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-50})));
+  Modelica.Mechanics.MultiBody.Parts.Body FLOAT(
+    m=0.0972,
+    r_CM={0.0, 0.0, 0.0},
+    I_11=1.0530000000000003e-5, I_22=3.2400000000000015e-5, I_33=3.645e-5,
+    I_21=0.0, I_31=0.0, I_32=0.0,
+    animation=false)
+    "Part FLOAT (nodeID 203)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-75})));
+
+  // Frames: grounds, joint attachment frames and user-added CAD frames
+  Modelica.Mechanics.MultiBody.Parts.FixedTranslation BASE_CS3(r={0.0, 0.2, 0.0}, animation=false)
+    "Frame CS3 of BASE (nodeID 201:-:202::201(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,0})));
+  Modelica.Mechanics.MultiBody.Parts.FixedTranslation CROSS_CS3(r={0.0, 0.06, 0.04}, animation=false)
+    "Frame CS3 of CROSS (nodeID 202:-:203::202(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-25})));
+  Modelica.Mechanics.MultiBody.Parts.FixedRotation FLOAT_CS2(
+    r={0.0, 0.0, 0.0},
+    rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
+    n_x={0.90630778703665, -0.42261826174069944, 0.0},
+    n_y={0.42261826174069944, 0.90630778703665, 0.0},
+    animation=false)
+    "Frame CS2 of FLOAT (nodeID 202:-:203::203(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-50})));
+
+  // Joints: base frame -> follower frame; start values reproduce the CAD pose
+  UJ.Components.Revolute BASE_CROSS_1(
+    n={0.0, 0.0, 1.0},
+    phi(start=0.0, fixed=true),
+    w(start=0, fixed=true))
+    "Joint BASE--CROSS (nodeID 201:-:202), primitive 1 of 2" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-40,0})));
+  UJ.Components.Revolute BASE_CROSS_2(
+    n={0.0, 1.0, 0.0},
+    phi(start=0.0, fixed=true),
+    w(start=0, fixed=true))
+    "Joint BASE--CROSS (nodeID 201:-:202), primitive 2 of 2" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-40,-25})));
+  UJ.Components.Prismatic CROSS_FLOAT_1(
+    n={1.0, 0.0, 0.0},
+    s(start=0.01, fixed=true),
+    v(start=0, fixed=true))
+    "Joint CROSS--FLOAT (nodeID 202:-:203), primitive 1 of 4" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-40,-50})));
+  UJ.Components.Prismatic CROSS_FLOAT_2(
+    n={0.0, 1.0, 0.0},
+    s(start=-0.020000000000000018, fixed=true),
+    v(start=0, fixed=true))
+    "Joint CROSS--FLOAT (nodeID 202:-:203), primitive 2 of 4" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-40,-75})));
+  UJ.Components.Prismatic CROSS_FLOAT_3(
+    n={0.0, 0.0, 1.0},
+    s(start=0.030000000000000006, fixed=true),
+    v(start=0, fixed=true))
+    "Joint CROSS--FLOAT (nodeID 202:-:203), primitive 3 of 4" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-40,-100})));
+  Modelica.Mechanics.MultiBody.Joints.Spherical CROSS_FLOAT_4(
+    enforceStates=true,
+    useQuaternions=true,
+    angles_fixed=true,
+    w_rel_a_fixed=true)
+    "Joint CROSS--FLOAT (nodeID 202:-:203), primitive 4 of 4" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-40,-125})));
+
+  // Shapes: CAD meshes in each body frame, metres
+  Modelica.Mechanics.MultiBody.Visualizers.FixedShape BASE_shape(
+    shapeType="modelica://UJ/Resources/Shapes/BASE.dxf",
+    length=1, width=1, height=1,
+    extra=0,
+    color={170, 170, 170})
+    "Shape of BASE" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={400,0})));
+  Modelica.Mechanics.MultiBody.Visualizers.FixedShape CROSS_shape(
+    shapeType="modelica://UJ/Resources/Shapes/CROSS.dxf",
+    length=1, width=1, height=1,
+    extra=0,
+    color={51, 89, 204})
+    "Shape of CROSS" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={400,-25})));
+  Modelica.Mechanics.MultiBody.Visualizers.FixedShape FLOAT_shape(
+    shapeType="modelica://UJ/Resources/Shapes/FLOAT.dxf",
+    length=1, width=1, height=1,
+    extra=0,
+    color={242, 140, 26})
+    "Shape of FLOAT" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={400,-50})));
+equation
+  connect(BASE.frame_a, BASE_CS3.frame_a);
+  connect(CROSS.frame_a, CROSS_CS3.frame_a);
+  connect(FLOAT.frame_a, FLOAT_CS2.frame_a);
+  connect(world.frame_b, RootPart.frame_a);
+  connect(RootPart.frame_a, BASE.frame_a);
+  connect(BASE_CS3.frame_b, BASE_CROSS_1.frame_a);
+  connect(BASE_CROSS_1.frame_b, BASE_CROSS_2.frame_a);
+  connect(BASE_CROSS_2.frame_b, CROSS.frame_a);
+  connect(CROSS_CS3.frame_b, CROSS_FLOAT_1.frame_a);
+  connect(CROSS_FLOAT_1.frame_b, CROSS_FLOAT_2.frame_a);
+  connect(CROSS_FLOAT_2.frame_b, CROSS_FLOAT_3.frame_a);
+  connect(CROSS_FLOAT_3.frame_b, CROSS_FLOAT_4.frame_a);
+  connect(CROSS_FLOAT_4.frame_b, FLOAT_CS2.frame_b);
+  connect(BASE.frame_a, BASE_shape.frame_a);
+  connect(CROSS.frame_a, CROSS_shape.frame_a);
+  connect(FLOAT.frame_a, FLOAT_shape.frame_a);
+  annotation (
+    experiment(StopTime=1),
+    Documentation(info="<html>
+<p>Converted by cad2mo 0.1.0 from <code>UJ.xml</code> (SimscapeMultibody), exported by Simscape Multibody Link Version 5.0 from Pro/E Wildfire Creo 9.0 - 2022073 on 03/14/24||10:20:30 by cad2mo.</p>
+<p>All quantities in SI units. Each body's frame_a is its CAD part frame CS1; joint start values reproduce the CAD pose.</p>
+</html>"));
+end Mechanics;

@@ -1,0 +1,103 @@
+within CHAIN_IN;
+model Mechanics "Mechanical model of CHAIN_IN (3 bodies, 3 joints)"
+  inner Modelica.Mechanics.MultiBody.World world(n={0.0, -1.0, 0.0}, g=9.81) "World frame: the CAD assembly's frame"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-160,0})));
+
+  // Bodies: frame_a is each part's CS1 frame
+  Modelica.Mechanics.MultiBody.Parts.Body RootPart(
+    m=0.0,
+    r_CM={0.0, 0.508, 0.0},
+    I_11=0.0, I_22=0.0, I_33=0.0,
+    I_21=0.0, I_31=0.0, I_32=0.0,
+    animation=false)
+    "Assembly root RootPart (nodeID RootPart)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,0})));
+  Modelica.Mechanics.MultiBody.Parts.Body LINK1(
+    m=0.28759298472058,
+    r_CM={0.15239999999999998, 0.0, 0.0},
+    I_11=1.9327444438662193e-5, I_22=0.002616935953583689, I_33=0.0026285332630490875,
+    I_21=1.0842021724855044e-19, I_31=0.0, I_32=0.0,
+    animation=false)
+    "Part LINK1 (nodeID 39)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-25})));
+  Modelica.Mechanics.MultiBody.Parts.Body LINK2(
+    m=0.19910301003439,
+    r_CM={0.1016, -2.7755575615628914e-17, 0.0},
+    I_11=1.3380538457535359e-5, I_22=0.000869736755577719, I_33=0.0008777638612712817,
+    I_21=0.0, I_31=0.0, I_32=0.0,
+    animation=false)
+    "Part LINK2 (nodeID 40)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-50})));
+
+  // Frames: grounds, joint attachment frames and user-added CAD frames
+  Modelica.Mechanics.MultiBody.Parts.FixedTranslation RootGround(r={0.0, 0.508, 0.0}, animation=false)
+    "Ground RootGround (nodeID RootGround) in the world frame" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,0})));
+  Modelica.Mechanics.MultiBody.Parts.FixedTranslation RootPart_CS2(r={0.0508, 0.4572, 0.0}, animation=false)
+    "Frame CS2 of RootPart (nodeID 39:-:RootPart::RootPart(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-25})));
+  Modelica.Mechanics.MultiBody.Parts.FixedRotation LINK1_CS2(
+    r={0.0, 0.0, 0.0},
+    rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
+    n_x={0.34202014332566877, 0.9396926207859083, 0.0},
+    n_y={-0.9396926207859083, 0.34202014332566877, 0.0},
+    animation=false)
+    "Frame CS2 of LINK1 (nodeID 39:-:RootPart::39(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-50})));
+  Modelica.Mechanics.MultiBody.Parts.FixedRotation LINK1_CS3(
+    r={0.30479999999999996, 2.7755575615628914e-17, 0.0},
+    rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
+    n_x={0.34202014332566877, 0.9396926207859083, 0.0},
+    n_y={-0.9396926207859083, 0.34202014332566877, 0.0},
+    animation=false)
+    "Frame CS3 of LINK1 (nodeID 39:-:40::39(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-75})));
+  Modelica.Mechanics.MultiBody.Parts.FixedRotation LINK2_CS2(
+    r={0.0, 0.0, 0.0},
+    rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
+    n_x={-0.49999999999999956, 0.8660254037844387, 0.0},
+    n_y={-0.8660254037844387, -0.49999999999999956, 0.0},
+    animation=false)
+    "Frame CS2 of LINK2 (nodeID 39:-:40::40(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-100})));
+  Modelica.Mechanics.MultiBody.Parts.FixedTranslation RootPart_CS3(r={0.0, 0.508, 0.0}, animation=false)
+    "Frame CS3 of RootPart (nodeID RootGround:-:RootPart::RootPart(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-125})));
+
+  // Joints: base frame -> follower frame; start values reproduce the CAD pose
+  CHAIN_IN.Components.Revolute RootPart_LINK1(
+    n={0.0, 0.0, 1.0},
+    phi(start=0.0, fixed=true),
+    w(start=0, fixed=true))
+    "Joint RootPart--LINK1 (nodeID 39:-:RootPart)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-40,0})));
+  CHAIN_IN.Components.Revolute LINK1_LINK2(
+    n={0.0, 0.0, 1.0},
+    phi(start=0.0, fixed=true),
+    w(start=0, fixed=true))
+    "Joint LINK1--LINK2 (nodeID 39:-:40)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-40,-25})));
+
+  // Shapes: CAD meshes in each body frame, metres
+  Modelica.Mechanics.MultiBody.Visualizers.FixedShape LINK1_shape(
+    shapeType="modelica://CHAIN_IN/Resources/Shapes/LINK1.dxf",
+    length=1, width=1, height=1,
+    extra=0,
+    color={179, 179, 179})
+    "Shape of LINK1" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={400,0})));
+  Modelica.Mechanics.MultiBody.Visualizers.FixedShape LINK2_shape(
+    shapeType="modelica://CHAIN_IN/Resources/Shapes/LINK2.dxf",
+    length=1, width=1, height=1,
+    extra=0,
+    color={179, 179, 179})
+    "Shape of LINK2" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={400,-25})));
+equation
+  connect(world.frame_b, RootGround.frame_a);
+  connect(RootPart.frame_a, RootPart_CS2.frame_a);
+  connect(LINK1.frame_a, LINK1_CS2.frame_a);
+  connect(LINK1.frame_a, LINK1_CS3.frame_a);
+  connect(LINK2.frame_a, LINK2_CS2.frame_a);
+  connect(RootPart.frame_a, RootPart_CS3.frame_a);
+  connect(RootGround.frame_b, RootPart_CS3.frame_b);
+  connect(RootPart_CS2.frame_b, RootPart_LINK1.frame_a);
+  connect(RootPart_LINK1.frame_b, LINK1_CS2.frame_b);
+  connect(LINK1_CS3.frame_b, LINK1_LINK2.frame_a);
+  connect(LINK1_LINK2.frame_b, LINK2_CS2.frame_b);
+  connect(LINK1.frame_a, LINK1_shape.frame_a);
+  connect(LINK2.frame_a, LINK2_shape.frame_a);
+  annotation (
+    experiment(StopTime=1),
+    Documentation(info="<html>
+<p>Converted by cad2mo 0.1.0 from <code>CHAIN_IN.xml</code> (SimMechanics), exported by SimMechanics Link Version 3.1 from Pro/E Wildfire Wildfire 4.0 - 2008230 on 11/10/09||14:08:16 by cad2mo.</p>
+<p>All quantities in SI units. Each body's frame_a is its CAD part frame CS1; joint start values reproduce the CAD pose.</p>
+</html>"));
+end Mechanics;

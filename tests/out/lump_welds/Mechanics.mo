@@ -1,0 +1,97 @@
+within LumpedArm;
+model Mechanics "Mechanical model of LUMP (3 bodies, 3 joints)"
+  inner Modelica.Mechanics.MultiBody.World world(n={0.0, 0.0, -1.0}, g=9.81) "World frame: the CAD assembly's frame"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-160,0})));
+
+  // Bodies: frame_a is each part's CS1 frame
+  Modelica.Mechanics.MultiBody.Parts.Body RootPart(
+    m=0.0,
+    r_CM={0.0, 0.0, 0.0},
+    I_11=0.0, I_22=0.0, I_33=0.0,
+    I_21=0.0, I_31=0.0, I_32=0.0,
+    animation=false)
+    "Assembly root RootPart (nodeID LUMP/RootPart)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,0})));
+  Modelica.Mechanics.MultiBody.Parts.Body UPPER_A(
+    m=0.8182510000000001,
+    r_CM={0.16482497424384446, -0.00013528856060057715, -2.7755575615628914e-17},
+    I_11=7.167347355634152e-5, I_22=0.00429287340868633, I_33=0.004292484782242673,
+    I_21=-1.049712464879231e-5, I_31=1.1197234928296679e-18, I_32=1.0531835189284184e-18,
+    animation=false)
+    "Part UPPER_A (nodeID 302)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-25})));
+  Modelica.Mechanics.MultiBody.Parts.Body FORE(
+    m=0.19008,
+    r_CM={0.10000000000000002, 6.938893903907228e-18, 1.3877787807814457e-17},
+    I_11=1.0391000000000004e-5, I_22=0.0007707110000000004, I_33=0.0007729920000000008,
+    I_21=0.0, I_31=2.752293016277455e-20, I_32=4.616929682237346e-21,
+    animation=false)
+    "Part FORE (nodeID 304)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-50})));
+
+  // Frames: grounds, joint attachment frames and user-added CAD frames
+  Modelica.Mechanics.MultiBody.Parts.FixedTranslation RootPart_CS2(r={0.0, 0.0, 0.3}, animation=false)
+    "Frame CS2 of RootPart (nodeID 302:-:LUMP/RootPart::LUMP/RootPart(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,0})));
+  Modelica.Mechanics.MultiBody.Parts.FixedRotation UPPER_A_CS2(
+    r={0.0, 0.0, 0.0},
+    rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
+    n_x={1.942890293094024e-16, -5.551115123125783e-17, 1.0},
+    n_y={0.9284766908852593, 0.3713906763541036, -5.551115123125783e-17},
+    animation=false)
+    "Frame CS2 of UPPER_A (nodeID 302:-:LUMP/RootPart::302(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-25})));
+  Modelica.Mechanics.MultiBody.Parts.FixedRotation UPPER_A_CS3(
+    r={0.26, 0.0, -5.551115123125783e-17},
+    rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
+    n_x={1.942890293094024e-16, -5.551115123125783e-17, 1.0},
+    n_y={0.9284766908852593, 0.3713906763541036, -5.551115123125783e-17},
+    animation=false)
+    "Frame CS3 of UPPER_A (nodeID 303:-:304::303(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-50})));
+  Modelica.Mechanics.MultiBody.Parts.FixedRotation FORE_CS2(
+    r={0.0, 0.0, 0.0},
+    rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
+    n_x={4.5102810375396984e-17, 0.0, 1.0000000000000002},
+    n_y={0.28734788556634544, 0.9578262852211515, 0.0},
+    animation=false)
+    "Frame CS2 of FORE (nodeID 303:-:304::304(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-75})));
+
+  // Joints: base frame -> follower frame; start values reproduce the CAD pose
+  LumpedArm.Components.Revolute RootPart_UPPER_A(
+    n={1.0, 0.0, 0.0},
+    phi(start=0.0, fixed=true),
+    w(start=0, fixed=true))
+    "Joint RootPart--UPPER_A (nodeID 302:-:LUMP/RootPart)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-40,0})));
+  LumpedArm.Components.Revolute UPPER_B_FORE(
+    n={1.0, 0.0, 0.0},
+    phi(start=0.0, fixed=true),
+    w(start=0, fixed=true))
+    "Joint UPPER_B--FORE (nodeID 303:-:304)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-40,-25})));
+
+  // Shapes: CAD meshes in each body frame, metres
+  Modelica.Mechanics.MultiBody.Visualizers.FixedShape UPPER_A_shape(
+    shapeType="modelica://LumpedArm/Resources/Shapes/UPPER_A.dxf",
+    length=1, width=1, height=1,
+    extra=0,
+    color={170, 170, 170})
+    "Shape of UPPER_A" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={400,0})));
+  Modelica.Mechanics.MultiBody.Visualizers.FixedShape FORE_shape(
+    shapeType="modelica://LumpedArm/Resources/Shapes/FORE.dxf",
+    length=1, width=1, height=1,
+    extra=0,
+    color={242, 140, 26})
+    "Shape of FORE" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={400,-25})));
+equation
+  connect(RootPart.frame_a, RootPart_CS2.frame_a);
+  connect(UPPER_A.frame_a, UPPER_A_CS2.frame_a);
+  connect(UPPER_A.frame_a, UPPER_A_CS3.frame_a);
+  connect(FORE.frame_a, FORE_CS2.frame_a);
+  connect(world.frame_b, RootPart.frame_a);
+  connect(RootPart_CS2.frame_b, RootPart_UPPER_A.frame_a);
+  connect(RootPart_UPPER_A.frame_b, UPPER_A_CS2.frame_b);
+  connect(UPPER_A_CS3.frame_b, UPPER_B_FORE.frame_a);
+  connect(UPPER_B_FORE.frame_b, FORE_CS2.frame_b);
+  connect(UPPER_A.frame_a, UPPER_A_shape.frame_a);
+  connect(FORE.frame_a, FORE_shape.frame_a);
+  annotation (
+    experiment(StopTime=1),
+    Documentation(info="<html>
+<p>Converted by cad2mo 0.1.0 from <code>LUMP.xml</code> (SimMechanics), exported by SimMechanics Link Version 4.0 from Pro/E Wildfire Creo 3.0 - 2014140 on 03/14/24||10:20:30 by cad2mo.</p>
+<p>All quantities in SI units. Each body's frame_a is its CAD part frame CS1; joint start values reproduce the CAD pose.</p>
+</html>"));
+end Mechanics;

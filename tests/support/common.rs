@@ -1,0 +1,104 @@
+//! Locating fixtures and tools; converting bundles; writing packages to disk.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use cad2mo::pipeline::front::bundle::Limits;
+use cad2mo::pipeline::{self, Options, Output};
+
+/// The workspace root (the folder holding `Cargo.toml`, `server/`, `tests/`).
+pub fn workspace_root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).parent().expect("tests/ has a parent").to_path_buf()
+}
+
+/// `../shared` beside the project, when present.
+pub fn shared_dir() -> Option<PathBuf> {
+    let d = workspace_root().join("../shared");
+    d.is_dir().then_some(d)
+}
+
+/// The real CAD exports: `$CAD2MO_FIXTURES` or `../shared/fixtures`. `None` (with a printed
+/// notice) when absent, so tests can skip.
+pub fn fixtures_dir(test: &str) -> Option<PathBuf> {
+    let d = std::env::var_os("CAD2MO_FIXTURES")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| workspace_root().join("../shared/fixtures"));
+    if d.is_dir() {
+        Some(d)
+    } else {
+        println!("NOTICE: {test} skipped: fixtures not found at {} (set CAD2MO_FIXTURES)", d.display());
+        None
+    }
+}
+
+/// Whether a missing external tool must fail the test (the README's test command sets this).
+pub fn tools_required() -> bool {
+    std::env::var("CAD2MO_REQUIRE_TOOLS").is_ok_and(|v| v == "1")
+}
+
+/// Reads a bundle from disk and converts it.
+pub fn convert_path(path: &Path, opts: &Options) -> Result<Output, String> {
+    let bundle = cad2mo::cli::read_bundle(path, &Limits::default())?;
+    pipeline::convert(&bundle, opts).map_err(|e| e.to_string())
+}
+
+/// Writes every output file under `dir`.
+pub fn write_output(out: &Output, dir: &Path) {
+    for (path, bytes) in &out.files {
+        let p = dir.join(path);
+        std::fs::create_dir_all(p.parent().expect("file has a folder")).expect("create folder");
+        std::fs::write(&p, bytes).expect("write file");
+    }
+}
+
+/// The text of one output file.
+pub fn file_text<'a>(out: &'a Output, suffix: &str) -> Option<&'a str> {
+    out.files
+        .iter()
+        .find(|(p, _)| p.ends_with(suffix))
+        .and_then(|(_, b)| std::str::from_utf8(b).ok())
+}
+
+/// Runs `../shared/tools/msl-check` on `dir`. `None` (with a notice) when the tool is absent;
+/// `Some(Err(output))` when it reports problems.
+pub fn msl_check(dir: &Path) -> Option<Result<String, String>> {
+    let tool = shared_dir()?.join("tools/msl-check");
+    if !tool.is_file() {
+        println!("NOTICE: msl-check not found at {}", tool.display());
+        return None;
+    }
+    let out = Command::new("python3").arg(&tool).arg(dir).output().ok()?;
+    let text = format!("{}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
+    Some(if out.status.success() { Ok(text) } else { Err(text) })
+}
+
+/// Every sub-directory of `dir`, sorted.
+pub fn sorted_dirs(dir: &Path) -> Vec<PathBuf> {
+    let mut v: Vec<PathBuf> = std::fs::read_dir(dir)
+        .map(|rd| rd.filter_map(|e| e.ok()).map(|e| e.path()).filter(|p| p.is_dir()).collect())
+        .unwrap_or_default();
+    v.sort();
+    v
+}
+
+/// Every file under `dir` (recursively) whose name ends with one of `exts` (lowercase), sorted.
+pub fn files_with_ext(dir: &Path, exts: &[&str]) -> Vec<PathBuf> {
+    let mut out = Vec::new();
+    let mut stack = vec![dir.to_path_buf()];
+    while let Some(d) = stack.pop() {
+        let Ok(rd) = std::fs::read_dir(&d) else { continue };
+        for e in rd.flatten() {
+            let p = e.path();
+            if p.is_dir() {
+                stack.push(p);
+            } else {
+                let name = p.file_name().map(|n| n.to_string_lossy().to_lowercase()).unwrap_or_default();
+                if exts.iter().any(|x| name.ends_with(x)) {
+                    out.push(p);
+                }
+            }
+        }
+    }
+    out.sort();
+    out
+}
