@@ -6,9 +6,9 @@ use std::path::Path;
 use std::process::Command;
 
 use cad2mo::pipeline::Options;
-use cad2mo_tests::check::fk_check;
-use cad2mo_tests::common::{convert_path, files_with_ext, fixtures_dir, msl_check, tools_required, workspace_root, write_output};
-use cad2mo_tests::truth::{xml_cgs, xml_frames};
+use cad2mo_tests::check::fk_check_with_inertia;
+use cad2mo_tests::common::{convert_path, files_with_ext, fixtures_dir, modelica_syntax_errors, msl_check, tools_required, workspace_root, write_output};
+use cad2mo_tests::truth::{xml_cgs, xml_frames, xml_mass_properties};
 
 fn is_first_generation(text: &str) -> bool {
     text.contains("<PhysicalModelingXMLFile")
@@ -43,13 +43,16 @@ fn every_fixture_xml_converts_and_reproduces_the_cad_pose() {
         let joints = text.matches("<SimpleJoint>").count();
         assert_eq!(out.report.bodies.len(), bodies, "{rel}: body count");
         assert_eq!(out.report.joints.len(), joints, "{rel}: joint count");
-        let stats = fk_check(&out, &xml_frames(&text), &xml_cgs(&text)).unwrap_or_else(|e| panic!("{rel}: {e}"));
+        let stats = fk_check_with_inertia(&out, &xml_frames(&text), &xml_cgs(&text), &xml_mass_properties(&text)).unwrap_or_else(|e| panic!("{rel}: {e}"));
         assert!(stats.frames >= bodies, "{rel}: {} frames checked", stats.frames);
         let named = out.report.bodies.iter().filter(|b| !b.geometry.is_empty()).count();
         let dir = tempfile::tempdir().expect("tempdir");
         write_output(&out, dir.path());
         if let Some(Err(msg)) = msl_check(dir.path()) {
             panic!("{rel}: msl-check: {msg}");
+        }
+        if let Some(errors) = modelica_syntax_errors(dir.path()) {
+            assert!(errors.is_empty(), "{rel}: Modelica syntax errors:\n{}", errors.join("\n"));
         }
         println!(
             "{rel}: {bodies} bodies, {joints} joints, {} loops, {} free, {} meshes, {} warnings; FK {} frames, {} CGs, {} loop checks, max {:e} m",

@@ -7,9 +7,9 @@
 use std::collections::BTreeMap;
 
 use cad2mo::pipeline::Options;
-use cad2mo_tests::check::{fk_check, nearest_rotation, TOL};
+use cad2mo_tests::check::{fk_check, fk_check_with_inertia, nearest_rotation, TOL};
 use cad2mo_tests::common::{convert_path, files_with_ext, sorted_dirs, workspace_root};
-use cad2mo_tests::truth::{xml_cgs, xml_frames, TruthFrame};
+use cad2mo_tests::truth::{xml_cgs, xml_frames, xml_mass_properties, TruthFrame};
 use nalgebra::{Matrix3, Vector3};
 use serde_json::Value;
 
@@ -60,7 +60,7 @@ fn own_cases_reproduce_cad_pose() {
         let Ok(out) = convert_path(&case, &options(&case)) else { continue };
         let xml = files_with_ext(&case, &[".xml"]);
         let text = std::fs::read_to_string(&xml[0]).expect("xml");
-        let stats = fk_check(&out, &xml_frames(&text), &xml_cgs(&text)).unwrap_or_else(|e| panic!("{name} (XML truth): {e}"));
+        let stats = fk_check_with_inertia(&out, &xml_frames(&text), &xml_cgs(&text), &xml_mass_properties(&text)).unwrap_or_else(|e| panic!("{name} (XML truth): {e}"));
         assert!(stats.frames >= out.report.bodies.len(), "{name}: only {} frames checked", stats.frames);
         let (frames, cgs) = expected_frames(&case);
         if !frames.is_empty() {
@@ -85,4 +85,42 @@ fn truth_scanner_reads_columns() {
     assert_eq!(f.rotation.column(0), Vector3::new(0.0, 1.0, 0.0));
     let r = nearest_rotation(&(f.rotation * 1.000001));
     assert!((r - f.rotation).norm() < TOL);
+}
+
+/// Lumping welded parts: the emitted body's mass, CG and world inertia equal the generator's
+/// independently combined values (parallel-axis theorem done in Python).
+#[test]
+fn lumped_mass_properties_match_the_generator() {
+    let case = workspace_root().join("tests/in/lump_welds");
+    let out = convert_path(&case, &options(&case)).expect("lump_welds converts");
+    let expect: Value = serde_json::from_str(&std::fs::read_to_string(case.join("expect.json")).expect("expect.json")).expect("json");
+    let mechanics = cad2mo_tests::common::file_text(&out, "/Mechanics.mo").expect("Mechanics.mo");
+    let model = cad2mo_tests::fk::parse_mechanics(mechanics).expect("parse");
+    let poses = cad2mo_tests::fk::forward_kinematics(&model).expect("fk");
+    let groups = expect["lumped"].as_array().expect("lumped groups");
+    assert!(!groups.is_empty());
+    for g in groups {
+        let members: Vec<&str> = g["bodies"].as_array().expect("bodies").iter().filter_map(Value::as_str).collect();
+        let body = out
+            .report
+            .bodies
+            .iter()
+            .find(|b| members.contains(&b.node_id.as_str()) && !b.lumped.is_empty())
+            .expect("a lumped body for the group");
+        let mut all: Vec<&str> = body.lumped.iter().map(String::as_str).chain([body.node_id.as_str()]).collect();
+        all.sort();
+        let mut want = members.clone();
+        want.sort();
+        assert_eq!(all, want, "lumped members");
+        let mass = g["mass_kg"].as_f64().expect("mass");
+        assert!((body.mass - mass).abs() < 1e-12, "mass {} vs {mass}", body.mass);
+        let cg = cad2mo_tests::fk::cg_world(&model, &poses, &body.modelica_name).expect("cg");
+        let cg_want = vec3(&g["cg_world_m"]).expect("cg");
+        assert!((cg - cg_want).norm() < TOL, "CG {cg:?} vs {cg_want:?}");
+        let i = cad2mo_tests::fk::body_inertia_world(&model, &poses, &body.modelica_name).expect("inertia");
+        let rows: Vec<f64> = g["inertia_world_kgm2"].as_array().expect("rows").iter().flat_map(|r| r.as_array().expect("row").iter().filter_map(Value::as_f64)).collect();
+        let want = Matrix3::from_row_slice(&rows);
+        let err = (i - want).abs().max() / want.abs().max();
+        assert!(err < 1e-9, "inertia differs by {err:e} (relative):\n{i}\n{want}");
+    }
 }

@@ -9,7 +9,7 @@ use std::path::Path;
 
 use cad2mo::pipeline::front::bundle::Limits;
 use cad2mo::pipeline::{self, ir, Options};
-use cad2mo_tests::common::{file_text, msl_check, sorted_dirs, workspace_root, write_output};
+use cad2mo_tests::common::{file_text, modelica_syntax_errors, msl_check, sorted_dirs, workspace_root, write_output};
 use serde_json::Value;
 
 /// Options from `tests/in/<case>/options.json`, when present.
@@ -118,6 +118,11 @@ fn golden() {
                 write_output(&out, dir.path());
                 if let Some(Err(msg)) = msl_check(dir.path()) {
                     problems.push(format!("{name}: msl-check: {msg}"));
+                }
+                if let Some(errors) = modelica_syntax_errors(dir.path()) {
+                    if !errors.is_empty() {
+                        problems.push(format!("{name}: Modelica syntax errors:\n{}", errors.join("\n")));
+                    }
                 }
             }
         }

@@ -14,6 +14,8 @@ use crate::truth::TruthFrame;
 pub struct FkStats {
     pub frames: usize,
     pub cgs: usize,
+    /// Bodies whose emitted mass and world inertia were compared.
+    pub inertias: usize,
     pub loop_checks: usize,
     pub max_position_error: f64,
     pub max_rotation_error: f64,
@@ -39,6 +41,17 @@ pub fn fk_check(
     frames: &BTreeMap<String, TruthFrame>,
     cgs: &BTreeMap<String, Vector3<f64>>,
 ) -> Result<FkStats, String> {
+    fk_check_with_inertia(out, frames, cgs, &BTreeMap::new())
+}
+
+/// As [`fk_check`], and also compares each (unlumped) body's emitted mass and inertia, resolved
+/// in world axes through the walked pose, with `mass_props` (relative tolerance 1e-9).
+pub fn fk_check_with_inertia(
+    out: &Output,
+    frames: &BTreeMap<String, TruthFrame>,
+    cgs: &BTreeMap<String, Vector3<f64>>,
+    mass_props: &BTreeMap<String, (f64, Matrix3<f64>)>,
+) -> Result<FkStats, String> {
     let text = file_text(out, "/Mechanics.mo").ok_or("no Mechanics.mo in output")?;
     let model = fk::parse_mechanics(text)?;
     let poses = fk::forward_kinematics(&model)?;
@@ -63,6 +76,27 @@ pub fn fk_check(
                     "{conn} (body {}, frame {} {}): position off by {dp:e} m, rotation by {dr:e}",
                     body.cad_name, fr.name, fr.node_id
                 ));
+            }
+        }
+        if let (Some((mass, inertia)), true) = (mass_props.get(&body.node_id), body.lumped.is_empty()) {
+            let comp = model.components.iter().find(|c| c.name == body.modelica_name);
+            let m = comp.and_then(|c| match c.params.get("m") {
+                Some(fk::Value::Num(m)) => Some(*m),
+                _ => None,
+            });
+            match (m, fk::body_inertia_world(&model, &poses, &body.modelica_name)) {
+                (Some(m), Some(i)) => {
+                    stats.inertias += 1;
+                    let scale = inertia.abs().max().max(1e-300);
+                    let di = (i - inertia).abs().max() / scale;
+                    if (m - mass).abs() > 1e-12 * mass.max(1.0) || di > 1e-9 {
+                        errors.push(format!(
+                            "{}: emitted mass {m} kg vs {mass}; world inertia differs by {di:e} (relative)\n  emitted {i:?}\n  truth   {inertia:?}",
+                            body.modelica_name
+                        ));
+                    }
+                }
+                _ => errors.push(format!("{}: mass or inertia not found in Mechanics.mo", body.modelica_name)),
             }
         }
         if let Some(truth) = cgs.get(&body.node_id) {

@@ -102,3 +102,23 @@ pub fn files_with_ext(dir: &Path, exts: &[&str]) -> Vec<PathBuf> {
     out.sort();
     out
 }
+
+/// Runs the independent Modelica parser `rumoca-lint` (crate rumoca) on `dir` and returns its
+/// parse errors. Its reference checks do not follow MSL and give false positives, so only
+/// `[parse-error]` findings count. `None` (with a notice) when the tool is not installed.
+pub fn modelica_syntax_errors(dir: &Path) -> Option<Vec<String>> {
+    let candidates = [
+        PathBuf::from("rumoca-lint"),
+        std::env::var_os("CARGO_HOME").map(PathBuf::from).unwrap_or_else(|| {
+            PathBuf::from(std::env::var_os("HOME").unwrap_or_default()).join(".cargo")
+        }).join("bin/rumoca-lint"),
+    ];
+    for tool in candidates {
+        let Ok(out) = Command::new(&tool).args(["-l", "error", "-f", "compact"]).arg(dir).output() else { continue };
+        let text = String::from_utf8_lossy(&out.stdout).to_string() + &String::from_utf8_lossy(&out.stderr);
+        return Some(text.lines().filter(|l| l.contains("parse-error")).map(String::from).collect());
+    }
+    assert!(!tools_required(), "rumoca-lint is required (CAD2MO_REQUIRE_TOOLS=1) but not installed");
+    println!("NOTICE: rumoca-lint not installed; Modelica syntax check skipped");
+    None
+}

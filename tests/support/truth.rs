@@ -92,3 +92,52 @@ pub fn xml_cgs(xml: &str) -> BTreeMap<String, Vector3<f64>> {
     }
     out
 }
+
+fn kg_per(unit: &str) -> f64 {
+    match unit {
+        "kg" => 1.0,
+        "g" => 1e-3,
+        "lbm" => 0.453_592_37,
+        "slug" => 14.593_902_937_2,
+        other => panic!("truth scanner: unknown mass unit {other:?}"),
+    }
+}
+
+fn inertia_factor(unit: &str) -> f64 {
+    let (m, l) = unit.split_once('*').unwrap_or_else(|| panic!("truth scanner: inertia unit {unit:?}"));
+    let l = l.strip_suffix("^2").unwrap_or_else(|| panic!("truth scanner: inertia unit {unit:?}"));
+    kg_per(m) * metres_per(l).powi(2)
+}
+
+/// Mass (kg) and inertia about the CG resolved in world axes (kg m^2), by body nodeID:
+/// `R_cg * I * R_cgᵀ` with the CG frame's orientation as written (orthonormalised).
+pub fn xml_mass_properties(xml: &str) -> BTreeMap<String, (f64, Matrix3<f64>)> {
+    let mut out = BTreeMap::new();
+    for body in xml.split("<Body>").skip(1) {
+        let body = body.split("</Body>").next().unwrap_or(body);
+        let (Some(node), Some(mass), Some(mu), Some(inertia), Some(iu)) = (
+            element(body, "nodeID"),
+            element(body, "mass"),
+            element(body, "massUnits"),
+            element(body, "inertia"),
+            element(body, "inertiaUnits"),
+        ) else {
+            continue;
+        };
+        let i = numbers(inertia);
+        let Ok(m) = mass.parse::<f64>() else { continue };
+        if i.len() != 9 {
+            continue;
+        }
+        let Some(cg) = body.split("<Frame").skip(1).find(|f| element(f, "name") == Some("CG")) else { continue };
+        let o = numbers(element(cg, "orientation").unwrap_or(""));
+        if o.len() != 9 {
+            continue;
+        }
+        let r = crate::check::nearest_rotation(&Matrix3::from_column_slice(&o));
+        let i = Matrix3::from_row_slice(&i) * inertia_factor(iu);
+        let i = (i + i.transpose()) * 0.5;
+        out.insert(node.to_string(), (m * kg_per(mu), r * i * r.transpose()));
+    }
+    out
+}
