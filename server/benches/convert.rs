@@ -1,26 +1,15 @@
 //! End-to-end conversion benchmarks: a generated 2,000-body tree (no meshes), the largest XML
 //! fixture, and the largest fixture bundle with STL meshes (DXF + STL written).
 
-use std::path::PathBuf;
 
 use cad2mo::pipeline::front::bundle::Bundle;
 use cad2mo::pipeline::{self, Options};
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 
-#[path = "support/gen.rs"]
-mod gen;
+#[path = "support/mod.rs"]
+mod support;
+use support::{fixtures, gen};
 
-fn fixtures() -> Option<PathBuf> {
-    let d = std::env::var_os("CAD2MO_FIXTURES")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../shared/fixtures"));
-    if d.is_dir() {
-        Some(d)
-    } else {
-        println!("NOTICE: fixtures not found at {}; fixture benchmarks skipped", d.display());
-        None
-    }
-}
 
 fn bundle_of_dir(dir: &std::path::Path) -> Bundle {
     cad2mo::cli::read_bundle(dir, &Default::default()).expect("fixture bundle reads")

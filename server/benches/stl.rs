@@ -9,37 +9,17 @@
 //! workspace; override with `CAD2MO_FIXTURES`.
 
 use std::fmt::Write as _;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use cad2mo::pipeline::back::{dxf, stl as stl_out};
 use cad2mo::pipeline::front::stl;
 use cad2mo::pipeline::ir::Mesh;
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 
-fn fixtures() -> Option<PathBuf> {
-    let dir = std::env::var_os("CAD2MO_FIXTURES")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../shared/fixtures"));
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        println!("NOTICE: fixtures not found at {}; the fixture benchmarks are skipped", dir.display());
-        None
-    }
-}
+#[path = "support/mod.rs"]
+mod support;
 
-/// All STL files under `dir`.
-fn stl_files(dir: &Path, out: &mut Vec<PathBuf>) {
-    let Ok(rd) = std::fs::read_dir(dir) else { return };
-    for e in rd.flatten() {
-        let p = e.path();
-        if p.is_dir() {
-            stl_files(&p, out);
-        } else if p.extension().is_some_and(|x| x.eq_ignore_ascii_case("stl")) {
-            out.push(p);
-        }
-    }
-}
+
 
 /// A torus of `2 * nu * nv` triangles, radii 80 and 25 mm.
 fn torus(nu: u32, nv: u32) -> Mesh {
@@ -117,9 +97,8 @@ fn bench(c: &mut Criterion) {
     g.bench_function("binary_200k", |b| b.iter(|| stl::parse("torus.stl", &binary, 0.001)));
     g.throughput(Throughput::Bytes(text.len() as u64));
     g.bench_function("ascii_200k", |b| b.iter(|| stl::parse("torus.stl", &text, 0.001)));
-    if let Some(dir) = fixtures() {
-        let mut files = Vec::new();
-        stl_files(&dir.join("stl"), &mut files);
+    if let Some(dir) = support::fixtures() {
+        let files = support::files_with_ext(&dir.join("stl"), "stl");
         let mut loaded: Vec<(PathBuf, Vec<u8>)> =
             files.into_iter().filter_map(|p| Some((p.clone(), std::fs::read(&p).ok()?))).collect();
         loaded.sort_by_key(|(_, b)| std::cmp::Reverse(b.len()));

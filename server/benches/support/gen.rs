@@ -51,8 +51,8 @@ pub fn tree_xml(n: usize) -> String {
     };
     let mut child_refs: Vec<Vec<(usize, usize)>> = vec![Vec::new(); n];
     let mut parent_ref = vec![0usize; n];
-    for i in 0..n {
-        parent_ref[i] = next_ref;
+    for (i, slot) in parent_ref.iter_mut().enumerate() {
+        *slot = next_ref;
         next_ref += 1;
         if i > 0 {
             let p = (i - 1) / 3;

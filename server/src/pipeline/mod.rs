@@ -15,6 +15,8 @@ pub mod front;
 pub mod ir;
 pub mod passes;
 pub mod report;
+#[cfg(test)]
+pub(crate) mod testutil;
 pub mod valid;
 
 use serde::Serialize;

@@ -819,34 +819,6 @@ fn malformed_xml_is_an_error_at_every_truncation() {
 
 // ----- real exports ----------------------------------------------------------------------------
 
-/// `../shared/fixtures`, or `$CAD2MO_FIXTURES`.
-fn fixtures() -> Option<std::path::PathBuf> {
-    let dir = std::env::var_os("CAD2MO_FIXTURES")
-        .map(std::path::PathBuf::from)
-        .unwrap_or_else(|| {
-            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/fixtures")
-        });
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        println!("fixtures not found at {}; skipping", dir.display());
-        None
-    }
-}
-
-fn xml_files(dir: &std::path::Path, out: &mut Vec<std::path::PathBuf>) {
-    let Ok(entries) = std::fs::read_dir(dir) else {
-        return;
-    };
-    for e in entries.flatten() {
-        let p = e.path();
-        if p.is_dir() {
-            xml_files(&p, out);
-        } else if p.extension().is_some_and(|x| x.eq_ignore_ascii_case("xml")) {
-            out.push(p);
-        }
-    }
-}
 
 /// Body and joint counts from `MANIFEST.md` (path relative to the fixtures directory).
 const EXPECTED: [(&str, usize, usize); 18] = [
@@ -940,10 +912,9 @@ const EXPECTED: [(&str, usize, usize); 18] = [
 
 #[test]
 fn real_fixtures_parse_with_manifest_counts() {
-    let Some(dir) = fixtures() else { return };
-    let mut files = Vec::new();
-    xml_files(&dir.join("xml"), &mut files);
-    xml_files(&dir.join("stl"), &mut files);
+    let Some(dir) = crate::pipeline::testutil::fixtures_dir() else { return };
+    let mut files = crate::pipeline::testutil::files_with_ext(&dir.join("xml"), "xml");
+    files.extend(crate::pipeline::testutil::files_with_ext(&dir.join("stl"), "xml"));
     files.sort();
     let mut parsed = 0;
     let mut checked = 0;

@@ -102,7 +102,7 @@ impl<'a> Reader<'a> {
     fn coordinate(&mut self) -> Result<f32, ErrorKind> {
         self.skip_ws();
         let v = match number::parse_f64(self.b, self.pos) {
-            Some((v, end)) if self.b.get(end).map_or(true, |&c| is_ws(c)) => {
+            Some((v, end)) if self.b.get(end).is_none_or(|&c| is_ws(c)) => {
                 self.pos = end;
                 v
             }

@@ -1,40 +1,13 @@
 //! Unit tests of the STL front end: test-only code, declared by the parent under `#[cfg(test)]`.
 
 use super::*;
-use std::path::{Path, PathBuf};
-
-/// The shared fixtures folder (`CAD2MO_FIXTURES` overrides), `None` with a notice when absent.
-pub(crate) fn fixtures_dir() -> Option<PathBuf> {
-    let dir = std::env::var_os("CAD2MO_FIXTURES")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/fixtures"));
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        eprintln!("notice: fixtures folder {} not found; skipping (set CAD2MO_FIXTURES)", dir.display());
-        None
-    }
-}
+use std::path::PathBuf;
 
 /// Every `.stl`/`.STL` under `fixtures/stl`, sorted.
 pub(crate) fn fixture_stls() -> Vec<PathBuf> {
-    fn walk(dir: &Path, out: &mut Vec<PathBuf>) {
-        let Ok(rd) = std::fs::read_dir(dir) else { return };
-        for e in rd.flatten() {
-            let p = e.path();
-            if p.is_dir() {
-                walk(&p, out);
-            } else if p.extension().is_some_and(|x| x.eq_ignore_ascii_case("stl")) {
-                out.push(p);
-            }
-        }
-    }
-    let mut out = Vec::new();
-    if let Some(dir) = fixtures_dir() {
-        walk(&dir.join("stl"), &mut out);
-    }
-    out.sort();
-    out
+    crate::pipeline::testutil::fixtures_dir()
+        .map(|dir| crate::pipeline::testutil::files_with_ext(&dir.join("stl"), "stl"))
+        .unwrap_or_default()
 }
 
 fn tri_mesh() -> ir::Mesh {
