@@ -3,3 +3,4 @@
 pub mod bundle;
 pub mod simmechanics;
 pub mod stl;
+pub mod vrml;
