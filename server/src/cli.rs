@@ -39,6 +39,8 @@ enum Command {
         #[arg(long)]
         lump_welds: bool,
     },
+    /// Run the HTTP service (SQLite database created and migrated on start).
+    Serve(crate::config::ServeArgs),
     /// Print the conversion report (JSON) of a bundle without writing a package.
     Inspect {
         bundle: PathBuf,
@@ -125,6 +127,7 @@ pub fn main() -> ExitCode {
     };
     let limits = Limits::default();
     match cli.command {
+        Command::Serve(args) => serve(crate::config::Settings::from_args(args)),
         Command::Convert { bundle, output, package_name, gravity, lump_welds } => {
             if let Some(p) = &package_name {
                 if pipeline::back::modelica::sanitize(p, "P") != *p {
@@ -194,6 +197,28 @@ pub fn main() -> ExitCode {
                     ExitCode::from(1)
                 }
             }
+        }
+    }
+}
+
+fn runtime() -> std::io::Result<tokio::runtime::Runtime> {
+    tokio::runtime::Builder::new_multi_thread().enable_all().build()
+}
+
+fn serve(settings: crate::config::Settings) -> ExitCode {
+    crate::telemetry::init();
+    let result = runtime().map_err(anyhow::Error::from).and_then(|rt| {
+        rt.block_on(async {
+            let app = crate::app::App::build(settings).await?;
+            tracing::info!(address = %app.local_addr(), "cad2mo listening");
+            app.run_until_stopped().await
+        })
+    });
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e:#}");
+            ExitCode::from(1)
         }
     }
 }

@@ -1,7 +1,14 @@
-//! cad2mo: converts CAD assembly exports into Modelica packages.
+//! cad2mo: converts CAD assembly exports into Modelica packages, as a command line and a service.
 //!
 //! - [`pipeline`]: the converter itself. Bytes and options in, files and diagnostics out; no IO.
-//! - [`cli`]: the command line (reads bundles from disk, writes zips atomically).
+//! - [`cli`]: the command line (reads bundles from disk, writes zips atomically, runs the service).
+//! - [`app`], [`config`], [`telemetry`]: the service's start-up.
+//! - [`api`]: HTTP (axum); [`store`]: SQLite (sqlx) and the content-addressed file store.
 
+pub mod api;
+pub mod app;
 pub mod cli;
+pub mod config;
 pub mod pipeline;
+pub mod store;
+pub mod telemetry;

@@ -5,7 +5,11 @@
 //!   kinematics walker over it (they deliberately use nothing from the converter).
 //! - [`truth`]: frames and CGs scanned straight from an XML export.
 //! - [`check`]: the FK comparison of an output against that truth.
+//! - [`app`]: `TestApp`, the real service spawned on port 0 with a fresh database.
 
+pub mod app;
+pub mod app_library;
+pub mod app_models;
 pub mod check;
 pub mod common;
 pub mod fk;

@@ -1,0 +1,119 @@
+//! The one error type at the HTTP boundary: RFC 9457 `application/problem+json`.
+//!
+//! Bad input is always a 4xx with a stable `type` and a human `detail`; conversion errors carry
+//! their diagnostics. A 5xx logs the cause and returns a generic message.
+
+use axum::http::{header, StatusCode};
+use axum::response::{IntoResponse, Response};
+use serde::Serialize;
+
+use crate::pipeline::{ConvertError, Diagnostic};
+use crate::store::StoreError;
+
+/// A field-level validation message.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct FieldError {
+    pub field: String,
+    pub message: String,
+}
+
+#[derive(Debug, thiserror::Error)]
+pub enum ApiError {
+    #[error("{0} not found")]
+    NotFound(String),
+    #[error("{0}")]
+    BadRequest(String),
+    #[error("{detail}")]
+    Invalid { detail: String, errors: Vec<FieldError> },
+    #[error("{0}")]
+    Conflict(String),
+    #[error("the upload exceeds the limit of {limit} bytes")]
+    PayloadTooLarge { limit: u64 },
+    #[error("a valid bearer token is required")]
+    Unauthorized,
+    #[error("conversion failed: {0}")]
+    Conversion(#[from] ConvertError),
+    #[error("internal error")]
+    Internal(#[from] anyhow::Error),
+}
+
+impl From<StoreError> for ApiError {
+    fn from(e: StoreError) -> Self {
+        if e.is_unique_violation() {
+            ApiError::Conflict("an item with the same unique name already exists".into())
+        } else if e.is_foreign_key_violation() {
+            ApiError::Conflict("the item is still referred to by others (or refers to a missing item)".into())
+        } else {
+            ApiError::Internal(e.into())
+        }
+    }
+}
+
+#[derive(Serialize)]
+struct Problem<'a> {
+    #[serde(rename = "type")]
+    kind: String,
+    title: &'a str,
+    status: u16,
+    detail: String,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    errors: Vec<FieldError>,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    diagnostics: Vec<Diagnostic>,
+}
+
+impl ApiError {
+    /// (status, stable slug, title).
+    fn parts(&self) -> (StatusCode, &'static str, &'static str) {
+        match self {
+            ApiError::NotFound(_) => (StatusCode::NOT_FOUND, "not-found", "Not found"),
+            ApiError::BadRequest(_) => (StatusCode::BAD_REQUEST, "bad-request", "Bad request"),
+            ApiError::Invalid { .. } => (StatusCode::UNPROCESSABLE_ENTITY, "invalid", "Invalid input"),
+            ApiError::Conflict(_) => (StatusCode::CONFLICT, "conflict", "Conflict"),
+            ApiError::PayloadTooLarge { .. } => (StatusCode::PAYLOAD_TOO_LARGE, "payload-too-large", "Upload too large"),
+            ApiError::Unauthorized => (StatusCode::UNAUTHORIZED, "unauthorized", "Unauthorized"),
+            ApiError::Conversion(_) => (StatusCode::UNPROCESSABLE_ENTITY, "conversion-failed", "Conversion failed"),
+            ApiError::Internal(_) => (StatusCode::INTERNAL_SERVER_ERROR, "internal", "Internal error"),
+        }
+    }
+
+    /// The problem document, for storing with a failed job.
+    pub fn problem_json(&self) -> serde_json::Value {
+        let (status, slug, title) = self.parts();
+        let (errors, diagnostics) = match self {
+            ApiError::Invalid { errors, .. } => (errors.clone(), Vec::new()),
+            ApiError::Conversion(e) => (Vec::new(), e.diagnostics()),
+            _ => (Vec::new(), Vec::new()),
+        };
+        let p = Problem {
+            kind: format!("/problems/{slug}"),
+            title,
+            status: status.as_u16(),
+            detail: self.to_string(),
+            errors,
+            diagnostics,
+        };
+        serde_json::to_value(p).unwrap_or_default()
+    }
+}
+
+impl IntoResponse for ApiError {
+    fn into_response(self) -> Response {
+        if let ApiError::Internal(e) = &self {
+            tracing::error!(error = ?e, "internal error");
+        }
+        let (status, _, _) = self.parts();
+        let mut resp = (status, [(header::CONTENT_TYPE, "application/problem+json")], self.problem_json().to_string())
+            .into_response();
+        if matches!(self, ApiError::Unauthorized) {
+            resp.headers_mut().insert(header::WWW_AUTHENTICATE, axum::http::HeaderValue::from_static("Bearer"));
+        }
+        resp
+    }
+}
+
+/// Runs blocking work (IO, conversion) off the async runtime.
+pub async fn blocking<T: Send + 'static>(f: impl FnOnce() -> Result<T, ApiError> + Send + 'static) -> Result<T, ApiError> {
+    let span = tracing::Span::current();
+    tokio::task::spawn_blocking(move || span.in_scope(f)).await.map_err(|e| ApiError::Internal(e.into()))?
+}

@@ -1,0 +1,9 @@
+//! Routes of the library resource (being written).
+
+use axum::Router;
+
+use crate::app::AppState;
+
+pub fn router() -> Router<AppState> {
+    Router::new()
+}

@@ -1,0 +1,26 @@
+//! The HTTP API: the only module that knows HTTP. Each resource module owns its `router()`;
+//! they are merged here in reading order. DTOs are private to their modules, never IR types.
+
+mod drives;
+pub mod error;
+mod health;
+mod jobs;
+mod library;
+mod models;
+
+use axum::Router;
+
+pub use error::ApiError;
+
+use crate::app::AppState;
+
+/// Every route of the service.
+pub fn router(state: AppState) -> Router {
+    Router::new()
+        .merge(health::router())
+        .merge(models::router())
+        .merge(jobs::router())
+        .merge(library::router())
+        .merge(drives::router())
+        .with_state(state)
+}

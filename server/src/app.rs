@@ -1,0 +1,57 @@
+//! The application: [`App::build`] opens the store, starts the workers and binds the listener;
+//! [`App::run_until_stopped`] serves. Tests build on port 0 and read [`App::local_addr`].
+
+use std::net::SocketAddr;
+use std::sync::Arc;
+
+use anyhow::Context;
+use tokio::net::TcpListener;
+
+use crate::config::Settings;
+use crate::store::blobs::Blobs;
+use crate::store::Store;
+
+/// Shared by every handler (cheap to clone).
+#[derive(Clone)]
+pub struct AppState {
+    pub settings: Arc<Settings>,
+    pub store: Store,
+    pub blobs: Blobs,
+}
+
+pub struct App {
+    listener: TcpListener,
+    state: AppState,
+}
+
+impl App {
+    pub async fn build(settings: Settings) -> anyhow::Result<App> {
+        std::fs::create_dir_all(&settings.data_dir)
+            .with_context(|| format!("creating data folder {}", settings.data_dir.display()))?;
+        let store = Store::open(&settings.database_url).await.context("opening the database")?;
+        let blobs = Blobs::new(&settings.data_dir).context("opening the file store")?;
+        let listener = TcpListener::bind(settings.bind).await.with_context(|| format!("binding {}", settings.bind))?;
+        let state = AppState { settings: Arc::new(settings), store, blobs };
+        Ok(App { listener, state })
+    }
+
+    pub fn local_addr(&self) -> SocketAddr {
+        self.listener.local_addr().unwrap_or(self.state.settings.bind)
+    }
+
+    pub fn state(&self) -> &AppState {
+        &self.state
+    }
+
+    /// Serves until Ctrl-C (or the task is dropped).
+    pub async fn run_until_stopped(self) -> anyhow::Result<()> {
+        let router = crate::api::router(self.state.clone())
+            .layer(tower_http::trace::TraceLayer::new_for_http());
+        axum::serve(self.listener, router)
+            .with_graceful_shutdown(async {
+                let _ = tokio::signal::ctrl_c().await;
+            })
+            .await
+            .context("serving")
+    }
+}

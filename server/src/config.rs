@@ -1,0 +1,66 @@
+//! Settings: one typed struct, loaded in one place (flags, with environment fallbacks).
+//! Nothing else reads the environment.
+
+use std::net::SocketAddr;
+use std::path::PathBuf;
+
+use clap::Args;
+
+/// `cad2mo serve` flags. Every flag has an environment fallback (`CAD2MO_*`).
+#[derive(Args, Debug, Clone)]
+pub struct ServeArgs {
+    /// Address to listen on.
+    #[arg(long, env = "CAD2MO_BIND", default_value = "127.0.0.1:8080")]
+    pub bind: SocketAddr,
+    /// SQLite database URL (default: `<data-dir>/cad2mo.db`, created on start).
+    #[arg(long, env = "CAD2MO_DATABASE_URL")]
+    pub database_url: Option<String>,
+    /// Folder for the database and the content-addressed files (bundles, packages, reports).
+    #[arg(long, env = "CAD2MO_DATA_DIR", default_value = "data")]
+    pub data_dir: PathBuf,
+    /// Largest accepted upload, in bytes.
+    #[arg(long, env = "CAD2MO_MAX_UPLOAD", default_value_t = 256 * 1024 * 1024)]
+    pub max_upload: u64,
+    /// Conversion worker threads (default: the number of cores).
+    #[arg(long, env = "CAD2MO_WORKERS")]
+    pub workers: Option<usize>,
+}
+
+/// The service's settings.
+#[derive(Debug, Clone)]
+pub struct Settings {
+    pub bind: SocketAddr,
+    pub database_url: String,
+    pub data_dir: PathBuf,
+    pub max_upload: u64,
+    pub workers: usize,
+}
+
+impl Settings {
+    pub fn from_args(a: ServeArgs) -> Settings {
+        let database_url = a
+            .database_url
+            .unwrap_or_else(|| format!("sqlite://{}?mode=rwc", a.data_dir.join("cad2mo.db").display()));
+        let workers = a
+            .workers
+            .filter(|w| *w > 0)
+            .unwrap_or_else(|| std::thread::available_parallelism().map(|n| n.get()).unwrap_or(2));
+        Settings { bind: a.bind, database_url, data_dir: a.data_dir, max_upload: a.max_upload, workers }
+    }
+
+    /// Settings for tests: port 0 on loopback, everything under `dir`.
+    pub fn for_tests(dir: &std::path::Path) -> Settings {
+        Settings {
+            bind: SocketAddr::from(([127, 0, 0, 1], 0)),
+            database_url: format!("sqlite://{}?mode=rwc", dir.join("cad2mo.db").display()),
+            data_dir: dir.to_path_buf(),
+            max_upload: 64 * 1024 * 1024,
+            workers: 2,
+        }
+    }
+
+    /// Whether the service requires bearer tokens (it listens beyond loopback).
+    pub fn requires_auth(&self) -> bool {
+        !self.bind.ip().is_loopback()
+    }
+}

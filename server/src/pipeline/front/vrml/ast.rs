@@ -1,0 +1,301 @@
+//! The parsed form of one file: the nodes the scene needs, shared by DEF/USE (`Rc`), with
+//! everything else dropped at parse time.
+
+use std::rc::Rc;
+
+use nalgebra::Matrix4;
+
+/// A node shared by DEF/USE.
+pub(super) type NodeRef = Rc<Node>;
+
+/// Which VRML the file is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Version {
+    V1,
+    V2,
+}
+
+/// One parsed node.
+#[derive(Debug)]
+pub(super) struct Node {
+    /// The DEF name, when it has one.
+    pub def: Option<Rc<str>>,
+    /// The node type as written (`Transform`, a PROTO's name, ...).
+    pub type_name: Rc<str>,
+    /// The bundle file it is written in.
+    pub file: Rc<str>,
+    pub line: u32,
+    pub col: u32,
+    pub kind: Kind,
+}
+
+/// Grouping nodes of VRML 97 that differ only in name.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum GroupKind {
+    Transform,
+    Group,
+    Anchor,
+    Collision,
+    Billboard,
+    /// An unavailable EXTERNPROTO's instance (a Group over its `children`).
+    Proto,
+}
+
+/// VRML 1.0 grouping nodes, which differ in how they treat the traversal state.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum V1GroupKind {
+    /// Saves and restores the whole state.
+    Separator,
+    /// Saves and restores the transform only.
+    TransformSeparator,
+    /// State changes inside leak out (Group, WWWAnchor).
+    Group,
+    /// Like Group, traversing only child `which` (-1 none, -3 all).
+    Switch(i32),
+    /// Like Group, traversing only the first child (the highest detail).
+    Lod,
+}
+
+/// A primitive shape with its VRML parameters.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) enum Prim {
+    Box { size: [f64; 3] },
+    Sphere { radius: f64 },
+    Cylinder { radius: f64, height: f64, bottom: bool, top: bool, side: bool },
+    Cone { bottom_radius: f64, height: f64, side: bool, bottom: bool },
+}
+
+impl Prim {
+    pub fn kind(&self, v1: bool) -> &'static str {
+        match self {
+            Prim::Box { .. } if v1 => "Cube",
+            Prim::Box { .. } => "Box",
+            Prim::Sphere { .. } => "Sphere",
+            Prim::Cylinder { .. } => "Cylinder",
+            Prim::Cone { .. } => "Cone",
+        }
+    }
+}
+
+/// An IndexedFaceSet (VRML 97).
+#[derive(Debug)]
+pub(super) struct Ifs {
+    pub coord: Option<NodeRef>,
+    pub coord_index: Vec<i32>,
+    pub ccw: bool,
+    pub color: Option<NodeRef>,
+}
+
+#[derive(Debug)]
+pub(super) enum Kind {
+    /// Transform (with its matrix), Group, Anchor, Collision, Billboard.
+    Group { kind: GroupKind, children: Vec<NodeRef>, matrix: Option<Box<Matrix4<f64>>> },
+    Switch { which: i32, choice: Vec<NodeRef> },
+    Lod { level: Vec<NodeRef> },
+    Inline { urls: Vec<String> },
+    Shape { appearance: Option<NodeRef>, geometry: Option<NodeRef> },
+    Appearance { material: Option<NodeRef> },
+    Material { diffuse: [f32; 3] },
+    /// Coordinate (VRML 97) or Coordinate3 (VRML 1.0).
+    Coordinate { points: Vec<[f32; 3]> },
+    Color { colors: Vec<[f32; 3]> },
+    Ifs(Box<Ifs>),
+    Prim(Prim),
+    /// A PROTO instance: the body's first node (`None` for an empty body).
+    Instance(Option<NodeRef>),
+    /// Geometry this reader does not triangulate (IndexedLineSet, PointSet, ...).
+    IgnoredGeometry,
+    /// Anything else: skipped.
+    Other,
+    // VRML 1.0
+    V1Group { kind: V1GroupKind, children: Vec<NodeRef> },
+    V1Inline { name: String },
+    /// Transform, MatrixTransform, Translation, Rotation, Scale: post-multiplied into the state.
+    V1Xform(Box<Matrix4<f64>>),
+    /// ShapeHints: `Some(true)` for CLOCKWISE vertex ordering.
+    V1ShapeHints { clockwise: Option<bool> },
+    /// IndexedFaceSet over the current Coordinate3.
+    V1Ifs { coord_index: Vec<i32> },
+    /// FaceSet over the current Coordinate3.
+    V1FaceSet { start: i32, num_vertices: Vec<i32> },
+}
+
+/// A field's declared type (VRML 97, plus the VRML 1.0 types the reader needs).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum FieldType {
+    SFBool,
+    SFColor,
+    SFFloat,
+    SFImage,
+    SFInt32,
+    SFNode,
+    SFRotation,
+    SFString,
+    SFTime,
+    SFVec2f,
+    SFVec3f,
+    SFVec4f,
+    SFMatrix,
+    /// VRML 1.0 SFEnum / SFBitMask: words, `(A | B)`.
+    SFEnum,
+    MFBool,
+    MFColor,
+    MFFloat,
+    MFInt32,
+    MFNode,
+    MFRotation,
+    MFString,
+    MFTime,
+    MFVec2f,
+    MFVec3f,
+}
+
+impl FieldType {
+    pub fn from_name(name: &[u8]) -> Option<FieldType> {
+        use FieldType::*;
+        Some(match name {
+            b"SFBool" => SFBool,
+            b"SFColor" | b"SFColorRGBA" => SFColor,
+            b"SFFloat" | b"SFDouble" => SFFloat,
+            b"SFImage" => SFImage,
+            b"SFInt32" | b"SFLong" => SFInt32,
+            b"SFNode" => SFNode,
+            b"SFRotation" => SFRotation,
+            b"SFString" => SFString,
+            b"SFTime" => SFTime,
+            b"SFVec2f" | b"SFVec2d" => SFVec2f,
+            b"SFVec3f" | b"SFVec3d" => SFVec3f,
+            b"SFVec4f" | b"SFVec4d" => SFVec4f,
+            b"SFMatrix" => SFMatrix,
+            b"SFEnum" | b"SFBitMask" => SFEnum,
+            b"MFBool" => MFBool,
+            b"MFColor" => MFColor,
+            b"MFFloat" | b"MFDouble" | b"MFColorRGBA" | b"MFVec4f" | b"MFVec2d" => MFFloat,
+            b"MFInt32" | b"MFLong" | b"MFImage" => MFInt32,
+            b"MFNode" => MFNode,
+            b"MFRotation" => MFRotation,
+            b"MFString" => MFString,
+            b"MFTime" => MFTime,
+            b"MFVec2f" => MFVec2f,
+            b"MFVec3f" | b"MFVec3d" => MFVec3f,
+            _ => return None,
+        })
+    }
+
+    /// Numbers in one value of a fixed-size numeric type.
+    pub fn arity(self) -> usize {
+        use FieldType::*;
+        match self {
+            SFFloat | SFTime | MFFloat | MFTime => 1,
+            SFVec2f | MFVec2f => 2,
+            SFColor | SFVec3f | MFColor | MFVec3f => 3,
+            SFRotation | MFRotation | SFVec4f => 4,
+            SFMatrix => 16,
+            _ => 1,
+        }
+    }
+}
+
+/// A parsed field value.
+#[derive(Clone, Debug)]
+pub(super) enum Value {
+    Bools(Vec<bool>),
+    Floats(Vec<f64>),
+    /// MFVec3f / MFColor, straight into `f32` triples (mesh precision).
+    Vec3(Vec<[f32; 3]>),
+    Ints(Vec<i32>),
+    Strings(Vec<String>),
+    Nodes(Vec<NodeRef>),
+    /// A value that was skipped (SFImage).
+    Skipped,
+}
+
+impl Value {
+    pub fn floats(&self) -> Option<&[f64]> {
+        match self {
+            Value::Floats(v) => Some(v),
+            _ => None,
+        }
+    }
+}
+
+/// One interface declaration of a PROTO.
+#[derive(Clone, Debug)]
+pub(super) struct FieldDecl {
+    pub name: String,
+    pub ty: FieldType,
+    /// The default (`None` for eventIn/eventOut and EXTERNPROTO declarations).
+    pub default: Option<Value>,
+}
+
+/// A PROTO body kept as text, parsed again for every instance (so each instance has its own DEF
+/// namespace and IS values).
+#[derive(Debug)]
+pub(super) struct ProtoBody {
+    /// The body's text, from the start of the line where it begins to its closing brace.
+    pub text: Rc<[u8]>,
+    /// Offset of the body's first byte (after `{`) in `text`.
+    pub start: usize,
+    /// Line of `text`'s first byte.
+    pub line: u32,
+    pub file: Rc<str>,
+}
+
+/// A PROTO (or a resolved EXTERNPROTO).
+#[derive(Debug)]
+pub(super) struct ProtoDef {
+    pub name: Rc<str>,
+    pub fields: Vec<FieldDecl>,
+    /// `None` for an EXTERNPROTO that could not be resolved: instances become Groups.
+    pub body: Option<ProtoBody>,
+    /// The PROTOs visible where this one was declared.
+    pub scope: ProtoScope,
+}
+
+/// PROTOs in scope: a persistent list, newest first.
+#[derive(Clone, Debug, Default)]
+pub(super) struct ProtoScope(pub Option<Rc<ProtoLink>>);
+
+#[derive(Debug)]
+pub(super) struct ProtoLink {
+    pub def: Rc<ProtoDef>,
+    pub next: ProtoScope,
+}
+
+impl ProtoScope {
+    pub fn find(&self, name: &[u8]) -> Option<Rc<ProtoDef>> {
+        let mut cur = self.0.as_ref();
+        while let Some(link) = cur {
+            if link.def.name.as_bytes() == name {
+                return Some(link.def.clone());
+            }
+            cur = link.next.0.as_ref();
+        }
+        None
+    }
+
+    pub fn push(&self, def: Rc<ProtoDef>) -> ProtoScope {
+        ProtoScope(Some(Rc::new(ProtoLink { def, next: self.clone() })))
+    }
+
+    /// The oldest PROTO (the first declared in the file), for an EXTERNPROTO url without
+    /// a `#name`.
+    pub fn first(&self) -> Option<Rc<ProtoDef>> {
+        let mut cur = self.0.as_ref();
+        let mut last = None;
+        while let Some(link) = cur {
+            last = Some(link.def.clone());
+            cur = link.next.0.as_ref();
+        }
+        last
+    }
+}
+
+/// One parsed file.
+#[derive(Debug)]
+pub(super) struct ParsedFile {
+    pub version: Version,
+    pub roots: Vec<NodeRef>,
+    /// PROTOs declared at the top level (for EXTERNPROTO lookups into this file).
+    pub protos: ProtoScope,
+}

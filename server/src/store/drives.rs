@@ -1,0 +1,1 @@
+//! SQL for drives (being written).

@@ -1,0 +1,1 @@
+//! SQL for library (being written).

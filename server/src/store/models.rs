@@ -1,0 +1,1 @@
+//! SQL for models (being written).

@@ -1,0 +1,83 @@
+//! `TestApp`: the real service on port 0 with a fresh SQLite database and data folder per test,
+//! and one method per endpoint.
+
+use std::path::Path;
+
+use cad2mo::app::App;
+use cad2mo::config::Settings;
+
+pub struct TestApp {
+    pub address: String,
+    pub client: reqwest::Client,
+    dir: Option<tempfile::TempDir>,
+    handle: Option<tokio::task::JoinHandle<()>>,
+}
+
+impl Drop for TestApp {
+    fn drop(&mut self) {
+        if let Some(h) = self.handle.take() {
+            h.abort();
+        }
+    }
+}
+
+impl TestApp {
+    /// Spawns the app with default test settings.
+    pub async fn spawn() -> TestApp {
+        Self::spawn_with(|_| {}).await
+    }
+
+    /// Spawns the app after `tweak` adjusts the settings.
+    pub async fn spawn_with(tweak: impl FnOnce(&mut Settings)) -> TestApp {
+        let dir = tempfile::tempdir().expect("tempdir");
+        Self::spawn_in(dir, tweak).await
+    }
+
+    /// Spawns the app on an existing data folder (restart tests).
+    pub async fn spawn_in(dir: tempfile::TempDir, tweak: impl FnOnce(&mut Settings)) -> TestApp {
+        let mut settings = Settings::for_tests(dir.path());
+        tweak(&mut settings);
+        let app = App::build(settings).await.expect("app builds");
+        let address = format!("http://{}", app.local_addr());
+        let handle = tokio::spawn(async move {
+            let _ = app.run_until_stopped().await;
+        });
+        TestApp { address, client: reqwest::Client::new(), dir: Some(dir), handle: Some(handle) }
+    }
+
+    /// The data folder (database and blobs).
+    pub fn data_dir(&self) -> &Path {
+        self.dir.as_ref().expect("data folder").path()
+    }
+
+    /// Stops the server abruptly (like a kill) and hands back its data folder.
+    pub async fn stop(mut self) -> tempfile::TempDir {
+        if let Some(h) = self.handle.take() {
+            h.abort();
+            let _ = h.await;
+        }
+        self.dir.take().expect("data folder")
+    }
+
+    pub fn url(&self, path: &str) -> String {
+        format!("{}{}", self.address, path)
+    }
+
+    pub async fn get(&self, path: &str) -> reqwest::Response {
+        self.client.get(self.url(path)).send().await.expect("request")
+    }
+
+    pub async fn health(&self) -> reqwest::Response {
+        self.get("/api/health").await
+    }
+}
+
+/// Zips a directory (a bundle folder) into memory, paths relative to it.
+pub fn zip_dir(dir: &Path) -> Vec<u8> {
+    let mut files = Vec::new();
+    for p in crate::common::files_with_ext(dir, &[""]) {
+        let rel = p.strip_prefix(dir).expect("under dir").to_string_lossy().replace('\\', "/");
+        files.push((rel, std::fs::read(&p).expect("read")));
+    }
+    cad2mo::pipeline::back::bundle::write_zip(&files).expect("zip")
+}

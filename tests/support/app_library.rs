@@ -1,0 +1,1 @@
+//! `TestApp` methods for the library endpoints (being written).

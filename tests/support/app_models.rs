@@ -1,0 +1,1 @@
+//! `TestApp` methods for the models endpoints (being written).
