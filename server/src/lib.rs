@@ -4,11 +4,14 @@
 //! - [`cli`]: the command line (reads bundles from disk, writes zips atomically, runs the service).
 //! - [`app`], [`config`], [`telemetry`]: the service's start-up.
 //! - [`api`]: HTTP (axum); [`store`]: SQLite (sqlx) and the content-addressed file store.
+//! - [`jobs`]: the bounded conversion worker pool; [`library`]: the motor library's rules.
 
 pub mod api;
 pub mod app;
 pub mod cli;
 pub mod config;
+pub mod jobs;
+pub mod library;
 pub mod pipeline;
 pub mod store;
 pub mod telemetry;

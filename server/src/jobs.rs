@@ -1,0 +1,1 @@
+//! Background conversion jobs (being written).

@@ -1,0 +1,1 @@
+//! The motor library's domain: classes, parameters, instances, validation, XML (being written).
