@@ -1,1 +1,431 @@
-//! API tests of the models endpoints (being written).
+//! API tests of models, versions, conversion jobs, downloads and diffs: the real service on port
+//! 0 with a fresh database per test, driven through `TestApp` (tests/support/app_models.rs).
+
+use std::io::{Read, Write};
+use std::path::Path;
+use std::sync::Arc;
+
+use cad2mo::pipeline::back::bundle::write_zip;
+use cad2mo_tests::app::{zip_dir, TestApp};
+use cad2mo_tests::app_models::{problem, upload_form};
+use cad2mo_tests::common::workspace_root;
+use serde_json::Value;
+
+fn case(name: &str) -> std::path::PathBuf {
+    workspace_root().join("tests/in").join(name)
+}
+
+fn pendulum() -> Vec<u8> {
+    zip_dir(&case("pendulum"))
+}
+
+/// The pendulum with its revolute removed and the link renamed `ROD`.
+fn pendulum_edited() -> Vec<u8> {
+    let dir = case("pendulum");
+    let xml = std::fs::read_to_string(dir.join("PENDULUM.xml")).expect("xml");
+    let start = xml.find("<SimpleJoint>").expect("first joint");
+    let end = xml[start..].find("</SimpleJoint>").expect("joint end") + start + "</SimpleJoint>".len();
+    assert!(xml[start..end].contains("RootPart--LINK"), "the first joint is the revolute");
+    let mut edited = format!("{}{}", &xml[..start], &xml[end..]);
+    assert_eq!(edited.matches("<name>\"LINK\"</name>").count(), 1);
+    edited = edited.replace("<name>\"LINK\"</name>", "<name>\"ROD\"</name>");
+    let stl = std::fs::read(dir.join("meshes/LINK_prt.stl")).expect("stl");
+    write_zip(&[("PENDULUM.xml".into(), edited.into_bytes()), ("meshes/LINK_prt.stl".into(), stl)]).expect("zip")
+}
+
+fn zip_entries(bytes: &[u8]) -> Vec<String> {
+    let z = zip::ZipArchive::new(std::io::Cursor::new(bytes.to_vec())).expect("a valid zip");
+    z.file_names().map(str::to_string).collect()
+}
+
+fn header(r: &reqwest::Response, name: &str) -> String {
+    r.headers().get(name).and_then(|v| v.to_str().ok()).unwrap_or_default().to_string()
+}
+
+async fn json(r: reqwest::Response, status: u16) -> Value {
+    let got = r.status().as_u16();
+    let text = r.text().await.expect("body");
+    assert_eq!(got, status, "{text}");
+    serde_json::from_str(&text).expect("json")
+}
+
+#[tokio::test]
+async fn upload_convert_and_download() {
+    let app = TestApp::spawn().await;
+    let r = app.upload_model(pendulum(), "pendulum.zip", &[]).await;
+    assert_eq!(r.status(), 202);
+    let location = header(&r, "location");
+    let body: Value = r.json().await.expect("json");
+    assert_eq!(body["version"], 1);
+    let (model_id, job_id) = (body["model_id"].as_str().expect("id"), body["job_id"].as_str().expect("job"));
+    assert_eq!(location, format!("/api/jobs/{job_id}"));
+
+    let job = app.wait_for_job(job_id).await;
+    assert_eq!(job["status"], "succeeded", "{job:#}");
+    assert_eq!((job["kind"].as_str(), job["model_id"].as_str(), job["version"].as_i64()), (Some("convert"), Some(model_id), Some(1)));
+    assert!(job.get("error").is_none());
+    for t in ["created_at", "started_at", "finished_at"] {
+        assert!(job[t].as_str().is_some_and(|s| s.ends_with('Z')), "{t} in {job}");
+    }
+
+    let r = app.package(model_id, 1).await;
+    assert_eq!(r.status(), 200);
+    assert_eq!(header(&r, "content-type"), "application/zip");
+    assert_eq!(header(&r, "content-disposition"), "attachment; filename=\"PENDULUM-v1.zip\"");
+    let zip = r.bytes().await.expect("bytes");
+    let entries = zip_entries(&zip);
+    assert!(entries.iter().any(|e| e == "PENDULUM/Mechanics.mo"), "{entries:?}");
+    assert!(entries.iter().any(|e| e == "report.json"));
+
+    let r = app.report(model_id, 1).await;
+    assert_eq!(header(&r, "content-type"), "application/json");
+    let report = json(r, 200).await;
+    assert_eq!(report["package_name"], "PENDULUM");
+    assert_eq!(report["bodies"].as_array().map(Vec::len), Some(2));
+    // The report is the one inside the package.
+    let mut z = zip::ZipArchive::new(std::io::Cursor::new(zip.to_vec())).expect("zip");
+    let mut inner = String::new();
+    z.by_name("report.json").expect("report.json").read_to_string(&mut inner).expect("read");
+    assert_eq!(serde_json::from_str::<Value>(&inner).expect("json"), report);
+
+    let v = json(app.version(model_id, 1).await, 200).await;
+    assert_eq!(v["status"], "succeeded");
+    assert_eq!(v["job_id"], job_id);
+    assert_eq!(v["bundle"]["name"], "pendulum.zip");
+    assert_eq!(v["bundle"]["size"], pendulum().len());
+    assert_eq!(v["summary"]["bodies"], 2);
+    assert_eq!(v["summary"]["joints"], 2);
+    assert_eq!(v["summary"]["package_name"], "PENDULUM");
+    assert_eq!(v["options"]["gravity"], serde_json::json!([0.0, -9.81, 0.0]));
+    assert!(v.get("error").is_none());
+
+    // The model is named after the assembly when no name is given.
+    let m = json(app.model(model_id).await, 200).await;
+    assert_eq!(m["name"], "PENDULUM");
+}
+
+#[tokio::test]
+async fn versions_list_get_delete() {
+    let app = TestApp::spawn().await;
+    let (id, v1, job1) = app.upload_model_ok(pendulum(), &[("name", "My pendulum")]).await;
+    assert_eq!(v1, 1);
+    let options = [("package_name", "Pend"), ("gravity", "0,0,-9.81"), ("lump_welds", "true")];
+    let (id2, v2, job2) = app.upload_version_ok(&id, pendulum(), &options).await;
+    assert_eq!((id2.as_str(), v2), (id.as_str(), 2));
+    assert_eq!(app.wait_for_job(&job1).await["status"], "succeeded");
+    assert_eq!(app.wait_for_job(&job2).await["status"], "succeeded");
+
+    let list = json(app.models().await, 200).await;
+    let list = list.as_array().expect("array");
+    assert_eq!(list.len(), 1);
+    assert_eq!(list[0]["id"], id.as_str());
+    assert_eq!(list[0]["name"], "My pendulum");
+    assert_eq!(list[0]["latest_version"], serde_json::json!({"version": 2, "status": "succeeded"}));
+
+    let m = json(app.model(&id).await, 200).await;
+    assert_eq!(m["versions"].as_array().map(Vec::len), Some(2));
+    let v = json(app.version(&id, 2).await, 200).await;
+    assert_eq!(v["options"], serde_json::json!({"package_name": "Pend", "gravity": [0.0, 0.0, -9.81], "lump_welds": true}));
+    assert_eq!(v["summary"]["package_name"], "Pend");
+    let r = app.package(&id, 2).await;
+    assert!(zip_entries(&r.bytes().await.expect("bytes")).iter().any(|e| e == "Pend/Mechanics.mo"));
+
+    // Delete version 1; numbers are never reused.
+    assert_eq!(app.delete_version(&id, 1).await.status(), 204);
+    problem(app.version(&id, 1).await, 404).await;
+    problem(app.delete_version(&id, 1).await, 404).await;
+    problem(app.job(&job1).await, 404).await;
+    let versions = json(app.versions(&id).await, 200).await;
+    assert_eq!(versions.as_array().map(|a| a.iter().map(|v| v["version"].as_i64()).collect::<Vec<_>>()), Some(vec![Some(2)]));
+    let (_, v3, job3) = app.upload_version_ok(&id, pendulum(), &[]).await;
+    assert_eq!(v3, 3);
+    app.wait_for_job(&job3).await;
+
+    // Delete the model: versions and jobs go with it.
+    assert_eq!(app.delete_model(&id).await.status(), 204);
+    problem(app.model(&id).await, 404).await;
+    problem(app.versions(&id).await, 404).await;
+    problem(app.job(&job2).await, 404).await;
+    problem(app.delete_model(&id).await, 404).await;
+    assert_eq!(json(app.models().await, 200).await, serde_json::json!([]));
+}
+
+#[tokio::test]
+async fn the_original_bundle_round_trips() {
+    let app = TestApp::spawn().await;
+    let bundle = pendulum();
+    let r = app.upload_model(bundle.clone(), "C:\\exports\\my \"pendulum\".zip", &[]).await;
+    let (id, _, job) = cad2mo_tests::app_models::accepted(r).await;
+    let r = app.bundle(&id, 1).await;
+    assert_eq!(r.status(), 200);
+    assert_eq!(header(&r, "content-type"), "application/zip");
+    assert_eq!(header(&r, "content-disposition"), "attachment; filename=\"my__pendulum_.zip\"");
+    assert_eq!(r.bytes().await.expect("bytes").to_vec(), bundle);
+    app.wait_for_job(&job).await;
+}
+
+#[tokio::test]
+async fn diff_between_versions() {
+    let app = TestApp::spawn().await;
+    let (id, _, j1) = app.upload_model_ok(pendulum(), &[]).await;
+    let (_, v2, j2) = app.upload_version_ok(&id, pendulum_edited(), &[]).await;
+    assert_eq!(app.wait_for_job(&j1).await["status"], "succeeded");
+    let job2 = app.wait_for_job(&j2).await;
+    assert_eq!(job2["status"], "succeeded", "{job2:#}");
+
+    let d = json(app.diff(&id, 1, v2).await, 200).await;
+    assert_eq!((d["model_id"].as_str(), d["from"].as_i64(), d["to"].as_i64()), (Some(id.as_str()), Some(1), Some(2)));
+    // The revolute is gone.
+    let removed = d["joints"]["removed"].as_array().expect("removed");
+    assert_eq!(removed.len(), 1, "{d:#}");
+    assert_eq!(removed[0]["node_id"], "23:-:PENDULUM/RootPart");
+    assert_eq!(removed[0]["cad_name"], "RootPart--LINK");
+    assert_eq!(d["joints"]["added"], serde_json::json!([]));
+    assert_eq!(d["bodies"]["added"], serde_json::json!([]));
+    assert_eq!(d["bodies"]["removed"], serde_json::json!([]));
+    // The link is renamed (same node ID): CAD and Modelica names change, physics does not.
+    let changed = d["bodies"]["changed"].as_array().expect("changed");
+    assert_eq!(changed.len(), 1, "{d:#}");
+    assert_eq!(changed[0]["node_id"], "23");
+    let changes = changed[0]["changes"].as_array().expect("changes");
+    let cad = changes.iter().find(|c| c["field"] == "cad_name").expect("cad_name change");
+    assert_eq!((cad["old"].as_str(), cad["new"].as_str()), (Some("LINK"), Some("ROD")));
+    let modelica = changes.iter().find(|c| c["field"] == "modelica_name").expect("modelica_name change");
+    assert_ne!(modelica["old"], modelica["new"]);
+    assert!(changes.iter().all(|c| c["field"] != "mass" && c["field"] != "cg_world"), "{changes:?}");
+
+    // The other way round, the joint is added.
+    let back = json(app.diff(&id, 2, 1).await, 200).await;
+    assert_eq!(back["joints"]["added"][0]["node_id"], "23:-:PENDULUM/RootPart");
+    assert_eq!(back["joints"]["removed"], serde_json::json!([]));
+    // A version against itself: nothing.
+    let same = json(app.diff(&id, 1, 1).await, 200).await;
+    assert_eq!(same["bodies"]["changed"], serde_json::json!([]));
+    assert_eq!(same["joints"]["changed"], serde_json::json!([]));
+
+    problem(app.diff(&id, 1, 9).await, 404).await;
+    problem(app.diff("nope", 1, 2).await, 404).await;
+    problem(app.get(&format!("/api/models/{id}/diff")).await, 400).await;
+    problem(app.get(&format!("/api/models/{id}/diff?from=a&to=2")).await, 400).await;
+}
+
+/// A zip with the given entries (names taken as they are).
+fn raw_zip(entries: &[(&str, &[u8])], level: Option<i64>) -> Vec<u8> {
+    let mut out = std::io::Cursor::new(Vec::new());
+    let mut z = zip::ZipWriter::new(&mut out);
+    let opts = zip::write::SimpleFileOptions::default()
+        .compression_method(zip::CompressionMethod::Deflated)
+        .compression_level(level);
+    for (name, bytes) in entries {
+        z.start_file(*name, opts).expect("start");
+        z.write_all(bytes).expect("write");
+    }
+    z.finish().expect("finish");
+    out.into_inner()
+}
+
+/// Every upload refusal names the bundle, creates nothing, and is a problem document.
+#[tokio::test]
+async fn bad_bundles_are_refused_with_problems() {
+    let app = TestApp::spawn().await;
+
+    let p = problem(app.upload_model(b"this is not a zip".to_vec(), "notes.zip", &[]).await, 422).await;
+    assert!(p["detail"].as_str().expect("detail").contains("notes.zip"), "{p}");
+    assert_eq!(p["errors"][0]["field"], "bundle");
+
+    let xml = std::fs::read(case("pendulum").join("PENDULUM.xml")).expect("xml");
+    let traversal = raw_zip(&[("PENDULUM.xml", &xml), ("../../evil.stl", b"solid x\nendsolid x\n")], None);
+    let p = problem(app.upload_model(traversal, "evil.zip", &[]).await, 422).await;
+    let detail = p["detail"].as_str().expect("detail");
+    assert!(detail.contains("evil.zip") && detail.contains("unsafe path"), "{p}");
+
+    let zeros = vec![0u8; 16 << 20];
+    let bomb = raw_zip(&[("PENDULUM.xml", &xml), ("zeros.stl", &zeros)], Some(9));
+    let p = problem(app.upload_model(bomb, "bomb.zip", &[]).await, 422).await;
+    let detail = p["detail"].as_str().expect("detail");
+    assert!(detail.contains("bomb.zip") && detail.contains("zip bomb"), "{p}");
+
+    let p = problem(app.upload_model(zip_dir(&case("broken_dangling_ref")), "dangling.zip", &[]).await, 422).await;
+    assert_eq!(p["type"], "/problems/conversion-failed");
+    let d = &p["diagnostics"][0];
+    assert_eq!(d["file"], "BROKEN.xml", "{p}");
+    assert!(d["line"].as_u64().is_some_and(|l| l > 0), "{p}");
+    assert!(d["column"].as_u64().is_some_and(|c| c > 0), "{p}");
+    assert!(d["message"].as_str().expect("message").contains("9999"), "{p}");
+
+    let p = problem(app.upload_model(zip_dir(&case("broken_unknown_unit")), "unit.zip", &[]).await, 422).await;
+    assert!(p["diagnostics"][0]["message"].as_str().expect("message").contains("furlong"), "{p}");
+    assert!(p["diagnostics"][0]["line"].as_u64().is_some_and(|l| l > 0), "{p}");
+
+    // Bad options.
+    let p = problem(app.upload_model(pendulum(), "p.zip", &[("gravity", "0,-9.81")]).await, 422).await;
+    assert_eq!(p["errors"][0]["field"], "gravity");
+    let p = problem(app.upload_model(pendulum(), "p.zip", &[("package_name", "model")]).await, 422).await;
+    assert_eq!(p["errors"][0]["field"], "package_name");
+    let p = problem(app.upload_model(pendulum(), "p.zip", &[("lump_welds", "maybe")]).await, 422).await;
+    assert_eq!(p["errors"][0]["field"], "lump_welds");
+    let p = problem(app.upload_model(pendulum(), "p.zip", &[("colour", "red")]).await, 422).await;
+    assert_eq!(p["errors"][0]["field"], "colour");
+
+    // No bundle part; not multipart at all.
+    let form = reqwest::multipart::Form::new().text("name", "x");
+    let p = problem(app.post_model_form(form).await, 422).await;
+    assert_eq!(p["errors"][0]["field"], "bundle");
+    let r = app.client.post(app.url("/api/models")).json(&serde_json::json!({"bundle": "x"})).send().await.expect("request");
+    problem(r, 400).await;
+
+    // Nothing was created.
+    assert_eq!(json(app.models().await, 200).await, serde_json::json!([]));
+}
+
+#[tokio::test]
+async fn oversized_uploads_are_413() {
+    let limit = 16 * 1024;
+    let app = TestApp::spawn_with(|s| s.max_upload = limit).await;
+    let big: Vec<u8> = (0..(limit as usize * 2)).map(|i| (i * 7919 % 251) as u8).collect();
+    let p = problem(app.upload_model(big.clone(), "big.zip", &[]).await, 413).await;
+    assert!(p["detail"].as_str().expect("detail").contains(&limit.to_string()), "{p}");
+
+    // Without a Content-Length (chunked), the limit still holds while reading.
+    let addr = app.address.trim_start_matches("http://").to_string();
+    let (status, content_type) = tokio::task::spawn_blocking(move || chunked_upload(&addr, &big)).await.expect("join");
+    assert_eq!(status, 413);
+    assert_eq!(content_type, "application/problem+json");
+
+    // Under the limit is fine.
+    let (_, _, job) = app.upload_model_ok(pendulum(), &[]).await;
+    assert_eq!(app.wait_for_job(&job).await["status"], "succeeded");
+}
+
+/// Sends a multipart upload with `Transfer-Encoding: chunked` over a plain socket and returns
+/// the answer's status and content type.
+fn chunked_upload(addr: &str, bundle: &[u8]) -> (u16, String) {
+    let boundary = "cad2moBoundary";
+    let mut body = format!(
+        "--{boundary}\r\nContent-Disposition: form-data; name=\"bundle\"; filename=\"big.zip\"\r\nContent-Type: application/zip\r\n\r\n"
+    )
+    .into_bytes();
+    body.extend_from_slice(bundle);
+    body.extend_from_slice(format!("\r\n--{boundary}--\r\n").as_bytes());
+    let mut s = std::net::TcpStream::connect(addr).expect("connect");
+    let head = format!(
+        "POST /api/models HTTP/1.1\r\nHost: {addr}\r\nContent-Type: multipart/form-data; boundary={boundary}\r\nTransfer-Encoding: chunked\r\nConnection: close\r\n\r\n"
+    );
+    let mut request = head.into_bytes();
+    for chunk in body.chunks(4096) {
+        request.extend_from_slice(format!("{:x}\r\n", chunk.len()).as_bytes());
+        request.extend_from_slice(chunk);
+        request.extend_from_slice(b"\r\n");
+    }
+    request.extend_from_slice(b"0\r\n\r\n");
+    // The server may answer and close before reading everything: a failed write is fine.
+    let _ = s.write_all(&request);
+    let mut answer = Vec::new();
+    let _ = s.read_to_end(&mut answer);
+    let text = String::from_utf8_lossy(&answer);
+    let status = text.split_whitespace().nth(1).and_then(|s| s.parse().ok()).expect("a status line");
+    let content_type = text
+        .lines()
+        .find_map(|l| l.to_ascii_lowercase().strip_prefix("content-type:").map(|v| v.trim().to_string()))
+        .unwrap_or_default();
+    (status, content_type)
+}
+
+#[tokio::test]
+async fn unknown_things_are_404() {
+    let app = TestApp::spawn().await;
+    problem(app.model("nope").await, 404).await;
+    problem(app.versions("nope").await, 404).await;
+    problem(app.version("nope", 1).await, 404).await;
+    problem(app.package("nope", 1).await, 404).await;
+    problem(app.report("nope", 1).await, 404).await;
+    problem(app.bundle("nope", 1).await, 404).await;
+    problem(app.job("nope").await, 404).await;
+    problem(app.delete_model("nope").await, 404).await;
+    problem(app.upload_version("nope", pendulum(), "p.zip", &[]).await, 404).await;
+    let (id, _, job) = app.upload_model_ok(pendulum(), &[]).await;
+    problem(app.version(&id, 2).await, 404).await;
+    problem(app.version(&id, "abc").await, 404).await;
+    problem(app.package(&id, 7).await, 404).await;
+    app.wait_for_job(&job).await;
+}
+
+async fn open_store(dir: &Path) -> cad2mo::store::Store {
+    let url = cad2mo::config::Settings::for_tests(dir).database_url;
+    cad2mo::store::Store::open(&url).await.expect("store")
+}
+
+/// A job interrupted mid-conversion: downloads answer 409 until it is done, and a restart
+/// finishes it.
+#[tokio::test]
+async fn interrupted_jobs_resume_after_a_restart() {
+    let app = TestApp::spawn().await;
+    let (id, _, job) = app.upload_model_ok(pendulum(), &[]).await;
+    // A second upload, and a stop before the workers can be sure to have finished it.
+    let (id2, _, job2) = app.upload_model_ok(pendulum_edited(), &[]).await;
+    let dir = app.stop().await;
+
+    // Whatever the workers managed, make the first job look like a crash in the middle.
+    let store = open_store(dir.path()).await;
+    assert!(cad2mo::store::models::mark_interrupted(&store.pool, &job).await.expect("mark"));
+    assert!(!cad2mo::store::models::mark_interrupted(&store.pool, "nope").await.expect("mark"));
+    store.pool.close().await;
+
+    // The restarted server re-queues and finishes it.
+    let app = TestApp::spawn_in(dir, |_| {}).await;
+    let first = app.wait_for_job(&job).await;
+    assert_eq!(first["status"], "succeeded", "{first:#}");
+    assert_eq!(app.wait_for_job(&job2).await["status"], "succeeded");
+    let r = app.package(&id, 1).await;
+    assert_eq!(r.status(), 200);
+    assert!(zip_entries(&r.bytes().await.expect("bytes")).iter().any(|e| e == "PENDULUM/Mechanics.mo"));
+    assert_eq!(json(app.report(&id2, 1).await, 200).await["package_name"], "PENDULUM");
+
+    // The database is intact: both models, each with its version.
+    let models = json(app.models().await, 200).await;
+    assert_eq!(models.as_array().map(Vec::len), Some(2));
+    for m in models.as_array().expect("array") {
+        assert_eq!(m["latest_version"]["status"], "succeeded");
+    }
+
+    // Interrupt again while this server runs: its workers do not see it, downloads say 409.
+    let store = open_store(app.data_dir()).await;
+    assert!(cad2mo::store::models::mark_interrupted(&store.pool, &job).await.expect("mark"));
+    store.pool.close().await;
+    let p = problem(app.package(&id, 1).await, 409).await;
+    assert!(p["detail"].as_str().expect("detail").contains(&job), "{p}");
+    problem(app.report(&id, 1).await, 409).await;
+    problem(app.diff(&id, 1, 1).await, 409).await;
+    assert_eq!(json(app.job(&job).await, 200).await["status"], "running");
+    let dir = app.stop().await;
+    let app = TestApp::spawn_in(dir, |_| {}).await;
+    assert_eq!(app.wait_for_job(&job).await["status"], "succeeded");
+    assert_eq!(app.package(&id, 1).await.status(), 200);
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 4)]
+async fn twenty_uploads_at_once() {
+    let app = Arc::new(TestApp::spawn().await);
+    let bundle = pendulum();
+    let mut tasks = tokio::task::JoinSet::new();
+    for i in 0..20 {
+        let (app, bundle) = (app.clone(), bundle.clone());
+        tasks.spawn(async move {
+            let name = format!("pendulum {i}");
+            let r = app.post_model_form(upload_form(bundle, "p.zip", &[("name", &name)])).await;
+            let (id, _, job) = cad2mo_tests::app_models::accepted(r).await;
+            let done = app.wait_for_job(&job).await;
+            assert_eq!(done["status"], "succeeded", "{done:#}");
+            assert_eq!(app.package(&id, 1).await.status(), 200);
+            id
+        });
+    }
+    let mut ids = Vec::new();
+    while let Some(id) = tasks.join_next().await {
+        ids.push(id.expect("task"));
+    }
+    ids.sort();
+    ids.dedup();
+    assert_eq!(ids.len(), 20);
+    assert_eq!(json(app.models().await, 200).await.as_array().map(Vec::len), Some(20));
+}

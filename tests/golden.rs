@@ -89,7 +89,7 @@ fn golden() {
                 }
                 let analysed = pipeline::analyse(&bundle, &opts).expect("analyse succeeds when convert did");
                 problems.extend(check_file(&out_dir.join("ir.txt"), &ir::dump::dump(&analysed.model), bless));
-                for f in ["Mechanics.mo", "package.mo", "report.json"] {
+                for f in ["Mechanics.mo", "Mechatronics.mo", "package.mo", "report.json"] {
                     let text = file_text(&out, &format!("/{f}")).or_else(|| file_text(&out, f)).expect("file present");
                     problems.extend(check_file(&out_dir.join(f), text, bless));
                 }

@@ -1,5 +1,9 @@
 //! The application: [`App::build`] opens the store, starts the workers and binds the listener;
 //! [`App::run_until_stopped`] serves. Tests build on port 0 and read [`App::local_addr`].
+//!
+//! Start-up recovery: `App::build` starts the conversion workers with [`Jobs::start`], which first
+//! re-queues every job a previous run left `queued` or `running` (a crash, a kill, a power cut):
+//! conversion is idempotent, so such jobs are simply redone and never stay stuck.
 
 use std::net::SocketAddr;
 use std::sync::Arc;
@@ -8,6 +12,7 @@ use anyhow::Context;
 use tokio::net::TcpListener;
 
 use crate::config::Settings;
+use crate::jobs::Jobs;
 use crate::store::blobs::Blobs;
 use crate::store::Store;
 
@@ -17,6 +22,8 @@ pub struct AppState {
     pub settings: Arc<Settings>,
     pub store: Store,
     pub blobs: Blobs,
+    /// The conversion worker pool (notify it after queueing a job).
+    pub jobs: Jobs,
 }
 
 pub struct App {
@@ -29,9 +36,13 @@ impl App {
         std::fs::create_dir_all(&settings.data_dir)
             .with_context(|| format!("creating data folder {}", settings.data_dir.display()))?;
         let store = Store::open(&settings.database_url).await.context("opening the database")?;
+        crate::store::library::seed_if_empty(&store).await.context("seeding the motor library")?;
         let blobs = Blobs::new(&settings.data_dir).context("opening the file store")?;
         let listener = TcpListener::bind(settings.bind).await.with_context(|| format!("binding {}", settings.bind))?;
-        let state = AppState { settings: Arc::new(settings), store, blobs };
+        let jobs = Jobs::start(store.clone(), blobs.clone(), settings.workers)
+            .await
+            .context("starting the conversion workers")?;
+        let state = AppState { settings: Arc::new(settings), store, blobs, jobs };
         Ok(App { listener, state })
     }
 

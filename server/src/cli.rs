@@ -142,7 +142,7 @@ pub fn main() -> ExitCode {
                     return ExitCode::from(1);
                 }
             };
-            let opts = Options { package_name, gravity, lump_welds, write_shapes: true };
+            let opts = Options { package_name, gravity, lump_welds, write_shapes: true, ..Options::default() };
             let out = match pipeline::convert(&b, &opts) {
                 Ok(o) => o,
                 Err(e) => {

@@ -1,1 +1,169 @@
-//! Background conversion jobs (being written).
+//! Background conversion jobs: a bounded worker pool over the `jobs` table.
+//!
+//! The table is the queue. Uploads insert a `queued` job (with its version, in one transaction)
+//! and [`Jobs::notify`] the dispatcher. The dispatcher task holds a semaphore of
+//! `settings.workers` permits: with a permit in hand it claims the oldest queued job
+//! (`store::models::claim_next_job`: job and version -> `running`, `started_at`) and runs it on
+//! tokio's blocking pool, so at most `workers` conversions run at once and none on the async
+//! runtime. A run reads the bundle blob, builds the package ([`crate::export::build_package`]),
+//! stores package and report with [`Blobs::put`] (atomic) and only then points the version at
+//! them (`succeeded`, `finished_at`); any error is stored as a problem document on the job and
+//! the version (`failed`).
+//!
+//! Restart: [`Jobs::start`] (called by `App::build`) first re-queues every job a stopped server
+//! left `queued` or `running` (`store::models::requeue_unfinished`), then runs them. Conversion
+//! is deterministic and idempotent and blobs are content-addressed, so redoing a half-done job is
+//! harmless; a crash between the blob writes and the database update leaves at worst an
+//! unreferenced blob. One server per database: two servers would each re-queue the other's
+//! running jobs (still harmless, just wasted work).
+//!
+//! Shutdown: the dispatcher stops when the last [`Jobs`] handle is dropped (the app's state);
+//! queued jobs wait in the table for the next start.
+
+use std::sync::Arc;
+use std::time::Duration;
+
+use tokio::sync::{mpsc, Semaphore};
+use tracing::Instrument;
+
+use crate::api::ApiError;
+use crate::export::{self, ExportOptions};
+use crate::store::blobs::Blobs;
+use crate::store::models::{self, ClaimedJob, JobOutputs};
+use crate::store::{Store, StoreError};
+
+/// A handle on the worker pool (cheap to clone): wakes the dispatcher.
+#[derive(Clone, Debug)]
+pub struct Jobs {
+    wake: mpsc::Sender<()>,
+}
+
+#[derive(Clone)]
+struct Ctx {
+    store: Store,
+    blobs: Blobs,
+}
+
+impl Jobs {
+    /// Re-queues unfinished jobs, then starts the dispatcher with `workers` workers (at least one).
+    /// Must be called inside a tokio runtime.
+    pub async fn start(store: Store, blobs: Blobs, workers: usize) -> Result<Jobs, StoreError> {
+        let requeued = models::requeue_unfinished(&store.pool).await?;
+        if requeued > 0 {
+            tracing::warn!(requeued, "jobs interrupted by a stop were re-queued");
+        }
+        let (wake, rx) = mpsc::channel(1);
+        let ctx = Ctx { store, blobs };
+        tokio::spawn(dispatch(ctx, workers.max(1), rx).instrument(tracing::info_span!("jobs")));
+        let jobs = Jobs { wake };
+        jobs.notify(); // pick up what is already queued
+        Ok(jobs)
+    }
+
+    /// Tells the dispatcher that jobs may be queued (call after committing one).
+    pub fn notify(&self) {
+        // A full channel means a wake-up is already pending: nothing is lost.
+        let _ = self.wake.try_send(());
+    }
+}
+
+/// Claims queued jobs while permits are free; sleeps until notified when nothing is queued.
+async fn dispatch(ctx: Ctx, workers: usize, mut wake: mpsc::Receiver<()>) {
+    let permits = Arc::new(Semaphore::new(workers));
+    tracing::info!(workers, "job workers started");
+    loop {
+        let Ok(permit) = permits.clone().acquire_owned().await else { return };
+        match models::claim_next_job(&ctx.store.pool).await {
+            Ok(Some(job)) => {
+                let span = tracing::info_span!("job", job_id = %job.id, kind = %job.kind, model_id = %job.model_id, version = job.version);
+                let ctx = ctx.clone();
+                tokio::spawn(
+                    async move {
+                        run(&ctx, job).await;
+                        drop(permit);
+                    }
+                    .instrument(span),
+                );
+            }
+            Ok(None) => {
+                drop(permit);
+                if wake.recv().await.is_none() {
+                    tracing::info!("job workers stopped");
+                    return;
+                }
+            }
+            Err(e) => {
+                drop(permit);
+                tracing::error!(error = %e, "claiming a job failed; retrying");
+                tokio::time::sleep(Duration::from_secs(1)).await;
+            }
+        }
+    }
+}
+
+/// Runs one claimed job to `succeeded` or `failed`.
+async fn run(ctx: &Ctx, job: ClaimedJob) {
+    tracing::info!("job running");
+    let started = std::time::Instant::now();
+    let result = convert(ctx, &job).await;
+    let ms = started.elapsed().as_millis() as u64;
+    for attempt in 1..=3 {
+        let recorded = match &result {
+            Ok(out) => {
+                let outputs = JobOutputs {
+                    package_sha256: &out.package_sha256,
+                    report_sha256: &out.report_sha256,
+                    summary_json: &out.summary_json,
+                };
+                models::finish_succeeded(&ctx.store.pool, &job, &outputs).await
+            }
+            Err(e) => models::finish_failed(&ctx.store.pool, &job, &e.problem_json().to_string()).await,
+        };
+        match recorded {
+            Ok(()) => {
+                match &result {
+                    Ok(_) => tracing::info!(ms, "job succeeded"),
+                    Err(e) => tracing::warn!(ms, error = %e, "job failed"),
+                }
+                return;
+            }
+            Err(e) => {
+                tracing::error!(attempt, error = %e, "recording the job's result failed");
+                tokio::time::sleep(Duration::from_millis(500 * attempt)).await;
+            }
+        }
+    }
+    // Still `running` in the table: the next start re-queues it.
+}
+
+struct Stored {
+    package_sha256: String,
+    report_sha256: String,
+    summary_json: String,
+}
+
+/// The conversion itself, off the runtime: bundle blob -> package and report blobs.
+async fn convert(ctx: &Ctx, job: &ClaimedJob) -> Result<Stored, ApiError> {
+    let Some(source) = job.source.clone() else {
+        return Err(ApiError::NotFound(format!("version {} of model {}", job.version, job.model_id)));
+    };
+    let blobs = ctx.blobs.clone();
+    let span = tracing::Span::current();
+    let task = tokio::task::spawn_blocking(move || {
+        span.in_scope(|| {
+            let options: ExportOptions = serde_json::from_str(&source.options_json)
+                .map_err(|e| ApiError::Internal(anyhow::anyhow!("stored options are corrupt: {e}")))?;
+            let bundle = blobs
+                .get(&source.bundle_sha256)
+                .map_err(|e| ApiError::Internal(e.into()))?
+                .ok_or_else(|| ApiError::Internal(anyhow::anyhow!("bundle blob {} is missing", source.bundle_sha256)))?;
+            let built = export::build_package(&bundle, &source.bundle_name, &options)?;
+            let summary_json = serde_json::to_string(&built.summary).map_err(|e| ApiError::Internal(e.into()))?;
+            // Blobs first: the database points at them only once they are complete on disk.
+            let package_sha256 = blobs.put(&built.package_zip).map_err(|e| ApiError::Internal(e.into()))?;
+            let report_sha256 = blobs.put(&built.report_json).map_err(|e| ApiError::Internal(e.into()))?;
+            Ok(Stored { package_sha256, report_sha256, summary_json })
+        })
+    });
+    task.await.map_err(|e| ApiError::Internal(anyhow::anyhow!("the conversion panicked: {e}")))?
+}

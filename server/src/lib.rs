@@ -4,12 +4,15 @@
 //! - [`cli`]: the command line (reads bundles from disk, writes zips atomically, runs the service).
 //! - [`app`], [`config`], [`telemetry`]: the service's start-up.
 //! - [`api`]: HTTP (axum); [`store`]: SQLite (sqlx) and the content-addressed file store.
-//! - [`jobs`]: the bounded conversion worker pool; [`library`]: the motor library's rules.
+//! - [`jobs`]: the bounded conversion worker pool; [`export`]: a version's package from its
+//!   bundle; [`diff`]: what changed between two conversions; [`library`]: the motor library's rules.
 
 pub mod api;
 pub mod app;
 pub mod cli;
 pub mod config;
+pub mod diff;
+pub mod export;
 pub mod jobs;
 pub mod library;
 pub mod pipeline;

@@ -1,9 +1,58 @@
-//! Routes of the jobs resource (being written).
+//! The jobs resource: `GET /api/jobs/{job_id}`, the status of a conversion (poll it after an
+//! upload's 202): `{id, kind, model_id, version, status, error?, created_at, started_at,
+//! finished_at}` with `status` one of `queued`, `running`, `succeeded`, `failed`, and `error` the
+//! problem document of a failed job.
 
-use axum::Router;
+use axum::extract::rejection::PathRejection;
+use axum::extract::{Path, State};
+use axum::routing::get;
+use axum::{Json, Router};
+use serde::Serialize;
+use serde_json::Value;
 
+use super::ApiError;
 use crate::app::AppState;
+use crate::store::models as db;
 
 pub fn router() -> Router<AppState> {
-    Router::new()
+    Router::new().route("/api/jobs/{job_id}", get(get_job))
+}
+
+#[derive(Serialize)]
+struct JobView {
+    id: String,
+    kind: String,
+    model_id: String,
+    version: i64,
+    status: String,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    error: Option<Value>,
+    created_at: String,
+    started_at: Option<String>,
+    finished_at: Option<String>,
+}
+
+async fn get_job(
+    State(state): State<AppState>,
+    path: Result<Path<String>, PathRejection>,
+) -> Result<Json<JobView>, ApiError> {
+    let Path(id) = path.map_err(|e| ApiError::BadRequest(e.body_text()))?;
+    let job = db::get_job(&state.store.pool, &id).await?.ok_or_else(|| ApiError::NotFound(format!("job {id}")))?;
+    let error = job
+        .error_json
+        .as_deref()
+        .map(serde_json::from_str)
+        .transpose()
+        .map_err(|e| ApiError::Internal(anyhow::anyhow!("stored problem is corrupt: {e}")))?;
+    Ok(Json(JobView {
+        id: job.id,
+        kind: job.kind,
+        model_id: job.model_id,
+        version: job.version,
+        status: job.status,
+        error,
+        created_at: job.created_at,
+        started_at: job.started_at,
+        finished_at: job.finished_at,
+    }))
 }

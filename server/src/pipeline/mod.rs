@@ -41,11 +41,22 @@ pub struct Options {
     pub lump_welds: bool,
     /// Write DXF/STL shape files (off for `inspect`).
     pub write_shapes: bool,
+    /// Drives for `Mechatronics.mo` (the service fills them from its drive assignments).
+    pub drives: Vec<back::modelica::mechatronics::DrivePlan>,
+    /// VRML matching tolerances.
+    pub matching: passes::geometry_match::MatchOptions,
 }
 
 impl Default for Options {
     fn default() -> Self {
-        Options { package_name: None, gravity: [0.0, -9.81, 0.0], lump_welds: false, write_shapes: true }
+        Options {
+            package_name: None,
+            gravity: [0.0, -9.81, 0.0],
+            lump_welds: false,
+            write_shapes: true,
+            drives: Vec::new(),
+            matching: Default::default(),
+        }
     }
 }
 
@@ -61,6 +72,12 @@ pub enum ConvertError {
     Geometry(#[from] GeometryError),
     #[error(transparent)]
     Validation(#[from] ValidationError),
+    #[error(transparent)]
+    Vrml(#[from] front::vrml::VrmlError),
+    #[error("VRML matching: {0}")]
+    Matching(#[from] passes::geometry_match::MatchError),
+    #[error("mechatronic model: {0}")]
+    Mechatronics(#[from] back::modelica::mechatronics::MechatronicsError),
     #[error("invalid option: {0}")]
     Options(String),
 }
@@ -88,6 +105,9 @@ impl ConvertError {
             ConvertError::Geometry(GeometryError::Stl(e)) => {
                 Diagnostic { file: e.file.clone(), line: e.line, column: 0, message: e.kind.to_string() }
             }
+            ConvertError::Vrml(e) => {
+                Diagnostic { file: e.file.clone(), line: e.line, column: e.column, message: e.kind.to_string() }
+            }
             ConvertError::Bundle(BundleError::Ambiguous { referenced_from, .. }) => {
                 Diagnostic { file: referenced_from.clone(), line: 0, column: 0, message: self.to_string() }
             }
@@ -113,6 +133,8 @@ pub struct Analysed {
     pub merged: std::collections::BTreeMap<String, Vec<String>>,
     /// Front-end, geometry and validation warnings, in that order.
     pub warnings: Vec<Warning>,
+    /// How VRML geometry was matched, when the bundle had VRML.
+    pub vrml: Option<passes::geometry_match::MatchReport>,
 }
 
 /// Parses and analyses a bundle.
@@ -132,6 +154,7 @@ pub fn analyse(bundle: &Bundle, opts: &Options) -> Result<Analysed, ConvertError
     let bytes = bundle.get(&xml_path).unwrap_or_default();
     let (mut model, mut warnings) = front::simmechanics::parse(&xml_path, bytes)?;
     warnings.extend(passes::geometry::read_meshes(&mut model, bundle, &xml_path)?);
+    let vrml = match_vrml(&mut model, bundle, opts, &mut warnings)?;
     let mut merged = Default::default();
     if opts.lump_welds {
         let h = passes::hierarchy::build(&model);
@@ -143,7 +166,35 @@ pub fn analyse(bundle: &Bundle, opts: &Options) -> Result<Analysed, ConvertError
     let chains = model.joints.iter().map(|j| passes::kinematics::chain(&model, j)).collect();
     let validated = valid::validate(&model, Analysis { hierarchy, chains })?;
     warnings.extend(validated.warnings.iter().cloned());
-    Ok(Analysed { model, validated, merged, warnings })
+    Ok(Analysed { model, validated, merged, warnings, vrml })
+}
+
+/// Reads the bundle's VRML export (every main file: those no other VRML file inlines) and
+/// matches its groups to the bodies that have no mesh yet. `matching.json` pins come first.
+fn match_vrml(
+    model: &mut Model,
+    bundle: &Bundle,
+    opts: &Options,
+    warnings: &mut Vec<Warning>,
+) -> Result<Option<passes::geometry_match::MatchReport>, ConvertError> {
+    let mains = front::vrml::main_files(bundle);
+    if mains.is_empty() || model.bodies.iter().all(|b| b.mesh.is_some()) {
+        return Ok(None);
+    }
+    let mut scene = front::vrml::Scene::default();
+    for main in &mains {
+        let (s, w) = front::vrml::parse(bundle, main)?;
+        warnings.extend(w);
+        scene.append(s);
+    }
+    let pins_path = bundle.paths().find(|p| p.rsplit('/').next().is_some_and(|n| n.eq_ignore_ascii_case("matching.json")));
+    let pins = match pins_path {
+        Some(p) => passes::geometry_match::parse_pins(bundle.get(p).unwrap_or_default())?,
+        None => Default::default(),
+    };
+    let (report, w) = passes::geometry_match::match_scene(model, &scene, &pins, &opts.matching)?;
+    warnings.extend(w);
+    Ok(Some(report))
 }
 
 /// Converts a bundle into the files of the output zip.
@@ -168,6 +219,8 @@ pub fn convert(bundle: &Bundle, opts: &Options) -> Result<Output, ConvertError> 
         },
     );
     let mut files = pkg.files;
+    files.extend(back::modelica::mechatronics::components(&package_name));
+    files.extend(back::modelica::mechatronics::mechatronics(&package_name, &opts.drives, &back::modelica::provenance(&a.model, VERSION))?);
     if opts.write_shapes {
         for (i, stem) in pkg.layout.shapes.iter().enumerate() {
             let (Some(stem), Some(mesh)) = (stem, &a.model.bodies[i].mesh) else { continue };
@@ -185,6 +238,7 @@ pub fn convert(bundle: &Bundle, opts: &Options) -> Result<Output, ConvertError> 
         package_name: &package_name,
         options: report::ReportOptions { lump_welds: opts.lump_welds, gravity: opts.gravity },
         merged: &a.merged,
+        vrml: a.vrml.as_ref(),
         warnings: a.warnings,
         version: VERSION,
     });

@@ -23,6 +23,8 @@ pub struct Report {
     pub joints: Vec<JointReport>,
     pub loops: Vec<LoopReport>,
     pub free_bodies: Vec<String>,
+    /// How VRML geometry was matched (null without VRML).
+    pub vrml: Option<crate::pipeline::passes::geometry_match::MatchReport>,
     pub warnings: Vec<Warning>,
 }
 
@@ -141,12 +143,13 @@ pub struct ReportInput<'a> {
     pub package_name: &'a str,
     pub options: ReportOptions,
     pub merged: &'a std::collections::BTreeMap<String, Vec<String>>,
+    pub vrml: Option<&'a crate::pipeline::passes::geometry_match::MatchReport>,
     pub warnings: Vec<Warning>,
     pub version: &'a str,
 }
 
 pub fn build(input: ReportInput) -> Report {
-    let ReportInput { model, validated, layout, package_name, options, merged, warnings, version } = input;
+    let ReportInput { model, validated, layout, package_name, options, merged, vrml, warnings, version } = input;
     let names = layout.names.as_ref();
     let body_name = |i: usize| names.map(|n| n.bodies[i].clone()).unwrap_or_default();
     let node_name = |n: Node| match n {
@@ -242,6 +245,7 @@ pub fn build(input: ReportInput) -> Report {
         joints,
         loops,
         free_bodies: h.free_bodies.iter().map(|b| body_name(b.index())).collect(),
+        vrml: vrml.cloned(),
         warnings,
     }
 }

@@ -48,7 +48,13 @@ pub const COINCIDE_TOL_M: f64 = 1e-5;
 pub const COINCIDE_TOL_RAD: f64 = 1e-4;
 
 pub fn is_identity(iso: &Isometry3<f64>) -> bool {
-    iso.translation.vector.norm() <= IDENTITY_TOL && iso.rotation.angle() <= IDENTITY_TOL
+    iso.translation.vector.norm() <= IDENTITY_TOL && rotation_angle(&iso.rotation) <= IDENTITY_TOL
+}
+
+/// Rotation angle in [0, pi], accurate near zero (`UnitQuaternion::angle` uses `acos` and cannot
+/// see angles below about 3e-8 rad).
+pub fn rotation_angle(q: &UnitQuaternion<f64>) -> f64 {
+    2.0 * q.imag().norm().atan2(q.w.abs())
 }
 
 /// Normalises and snaps CAD noise; `None` for a zero or non-finite axis.
@@ -119,7 +125,7 @@ pub fn chain(model: &Model, joint: &Joint) -> Chain {
     if residual.translation.vector.norm() <= IDENTITY_TOL {
         residual.translation = Translation3::identity();
     }
-    if residual.rotation.angle() <= IDENTITY_TOL {
+    if rotation_angle(&residual.rotation) <= IDENTITY_TOL {
         residual.rotation = UnitQuaternion::identity();
     }
     Chain { elements, residual }
@@ -156,7 +162,7 @@ pub fn check(model: &Model, joint: &Joint, chain: &Chain, location: &str) -> Vec
             location,
         ));
     }
-    let angle = chain.residual.rotation.angle();
+    let angle = rotation_angle(&chain.residual.rotation);
     if !has_spherical && angle > COINCIDE_TOL_RAD {
         let base = model.frame(joint.base);
         let fol = model.frame(joint.follower);

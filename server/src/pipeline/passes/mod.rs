@@ -4,8 +4,10 @@
 //! - [`kinematics`]: each joint's primitive chain, start coordinates and residual offset.
 //! - [`lump`]: optional merge of welded groups into single bodies.
 //! - [`geometry`]: reads each body's STL named by the XML from the bundle.
+//! - [`geometry_match`]: matches VRML groups to bodies by CS1 position, orientation and name.
 
 pub mod geometry;
+pub mod geometry_match;
 pub mod hierarchy;
 pub mod kinematics;
 pub mod lump;

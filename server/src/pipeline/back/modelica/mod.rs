@@ -14,8 +14,9 @@
 //!
 //! The output is deterministic: no clock, no file order dependence beyond the IR's.
 
+pub mod mechatronics;
 mod names;
 mod write;
 
 pub use names::{sanitize, Names, Scope, KEYWORDS};
-pub use write::{write, Layout, Options, Package};
+pub use write::{provenance_html as provenance, write, Layout, Options, Package};

@@ -26,19 +26,30 @@ pub(super) struct Node {
     pub file: Rc<str>,
     pub line: u32,
     pub col: u32,
+    /// 1 + the largest height of the nodes it holds (bounds recursion in evaluation and drop).
+    pub height: u32,
     pub kind: Kind,
 }
 
-/// Grouping nodes of VRML 97 that differ only in name.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(super) enum GroupKind {
-    Transform,
-    Group,
-    Anchor,
-    Collision,
-    Billboard,
-    /// An unavailable EXTERNPROTO's instance (a Group over its `children`).
-    Proto,
+impl Kind {
+    /// Every node this node holds.
+    pub fn nodes(&self) -> Vec<&NodeRef> {
+        match self {
+            Kind::Group { children, .. } | Kind::V1Group { children, .. } => children.iter().collect(),
+            Kind::Switch { choice, .. } => choice.iter().collect(),
+            Kind::Lod { level } => level.iter().collect(),
+            Kind::Shape { appearance, geometry } => appearance.iter().chain(geometry.iter()).collect(),
+            Kind::Appearance { material } => material.iter().collect(),
+            Kind::Ifs(ifs) => ifs.coord.iter().chain(ifs.color.iter()).collect(),
+            Kind::Instance(inner) => inner.iter().collect(),
+            _ => Vec::new(),
+        }
+    }
+
+    /// The height of a node of this kind.
+    pub fn height(&self) -> u32 {
+        1 + self.nodes().iter().map(|n| n.height).max().unwrap_or(0)
+    }
 }
 
 /// VRML 1.0 grouping nodes, which differ in how they treat the traversal state.
@@ -88,8 +99,9 @@ pub(super) struct Ifs {
 
 #[derive(Debug)]
 pub(super) enum Kind {
-    /// Transform (with its matrix), Group, Anchor, Collision, Billboard.
-    Group { kind: GroupKind, children: Vec<NodeRef>, matrix: Option<Box<Matrix4<f64>>> },
+    /// Transform (with its matrix), Group, Anchor, Collision, Billboard, and the instances of
+    /// an unresolved EXTERNPROTO.
+    Group { children: Vec<NodeRef>, matrix: Option<Box<Matrix4<f64>>> },
     Switch { which: i32, choice: Vec<NodeRef> },
     Lod { level: Vec<NodeRef> },
     Inline { urls: Vec<String> },
@@ -210,15 +222,6 @@ pub(super) enum Value {
     Skipped,
 }
 
-impl Value {
-    pub fn floats(&self) -> Option<&[f64]> {
-        match self {
-            Value::Floats(v) => Some(v),
-            _ => None,
-        }
-    }
-}
-
 /// One interface declaration of a PROTO.
 #[derive(Clone, Debug)]
 pub(super) struct FieldDecl {
@@ -230,7 +233,7 @@ pub(super) struct FieldDecl {
 
 /// A PROTO body kept as text, parsed again for every instance (so each instance has its own DEF
 /// namespace and IS values).
-#[derive(Debug)]
+#[derive(Clone, Debug)]
 pub(super) struct ProtoBody {
     /// The body's text, from the start of the line where it begins to its closing brace.
     pub text: Rc<[u8]>,
@@ -260,6 +263,19 @@ pub(super) struct ProtoScope(pub Option<Rc<ProtoLink>>);
 pub(super) struct ProtoLink {
     pub def: Rc<ProtoDef>,
     pub next: ProtoScope,
+}
+
+impl Drop for ProtoLink {
+    /// Iterative, so a file with very many PROTOs cannot overflow the stack when dropped.
+    fn drop(&mut self) {
+        let mut next = self.next.0.take();
+        while let Some(rc) = next {
+            match Rc::try_unwrap(rc) {
+                Ok(mut link) => next = link.next.0.take(),
+                Err(_) => break,
+            }
+        }
+    }
 }
 
 impl ProtoScope {

@@ -75,6 +75,20 @@ impl Scene {
         out
     }
 
+    /// Adds another scene's nodes (e.g. a second main file) as further roots.
+    pub fn append(&mut self, other: Scene) {
+        let base = self.nodes.len();
+        for mut n in other.nodes {
+            n.parent = n.parent.map(|p| p + base);
+            for c in &mut n.children {
+                *c += base;
+            }
+            self.nodes.push(n);
+        }
+        self.roots.extend(other.roots.into_iter().map(|r| r + base));
+        self.files.extend(other.files);
+    }
+
     /// Total triangles in the scene.
     pub fn triangle_count(&self) -> usize {
         self.nodes.iter().flat_map(|n| &n.shapes).map(|s| s.mesh.triangles.len()).sum()

@@ -1,0 +1,202 @@
+//! Building a version's package from its stored bundle: the service's one way from an upload to
+//! `package.zip` + `report.json`.
+//!
+//! Today: read the zip ([`read_bundle`], with the service's limits), [`pipeline::convert`], zip
+//! the files ([`write_zip`]). The seam for what comes next (the mechatronic model with drives) is
+//! [`build_package`]: more inputs join [`Inputs`]-style arguments there, and more files join
+//! `files` before zipping (see the marked step). Everything here is synchronous and CPU-bound:
+//! callers run it off the async runtime (the job workers, `api::blocking`).
+//!
+//! Deterministic: the same bundle and options give byte-identical outputs, so re-running a job
+//! (after a restart) is harmless.
+
+use serde::{Deserialize, Serialize};
+
+use crate::api::error::{ApiError, FieldError};
+use crate::pipeline::back::bundle::write_zip;
+use crate::pipeline::front::bundle::{Bundle, BundleError, Limits};
+use crate::pipeline::report::Report;
+use crate::pipeline::{self, ConvertError};
+
+/// Conversion options of a version, as stored with it (`versions.options_json`).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct ExportOptions {
+    /// Modelica package name; `None` derives it from the assembly's name.
+    pub package_name: Option<String>,
+    /// Gravity in world coordinates, m/s².
+    pub gravity: [f64; 3],
+    /// Merge bodies joined by welds.
+    pub lump_welds: bool,
+}
+
+impl Default for ExportOptions {
+    fn default() -> Self {
+        let d = pipeline::Options::default();
+        ExportOptions { package_name: d.package_name, gravity: d.gravity, lump_welds: d.lump_welds }
+    }
+}
+
+impl ExportOptions {
+    /// The pipeline's options (shapes always written for packages).
+    pub fn pipeline(&self) -> pipeline::Options {
+        pipeline::Options {
+            package_name: self.package_name.clone(),
+            gravity: self.gravity,
+            lump_welds: self.lump_welds,
+            write_shapes: true,
+            ..pipeline::Options::default()
+        }
+    }
+}
+
+/// Counts from a version's report, kept with the version for listings (`versions.summary_json`).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Summary {
+    pub model_name: String,
+    pub package_name: String,
+    pub bodies: usize,
+    pub joints: usize,
+    pub loops: usize,
+    pub free_bodies: usize,
+    pub warnings: usize,
+}
+
+impl Summary {
+    pub fn of(r: &Report) -> Summary {
+        Summary {
+            model_name: r.model_name.clone(),
+            package_name: r.package_name.clone(),
+            bodies: r.bodies.len(),
+            joints: r.joints.len(),
+            loops: r.loops.len(),
+            free_bodies: r.free_bodies.len(),
+            warnings: r.warnings.len(),
+        }
+    }
+}
+
+/// A built package.
+#[derive(Debug)]
+pub struct Built {
+    /// The output zip: the Modelica package and `report.json`.
+    pub package_zip: Vec<u8>,
+    /// `report.json`, byte-identical to the copy inside the zip.
+    pub report_json: Vec<u8>,
+    pub summary: Summary,
+}
+
+/// What a bundle check found (the upload-time analysis).
+#[derive(Debug, Clone)]
+pub struct Checked {
+    /// The assembly's name from the XML (the model's default name).
+    pub model_name: String,
+    pub warnings: usize,
+}
+
+/// Why a package could not be built.
+#[derive(Debug, thiserror::Error)]
+pub enum ExportError {
+    /// The upload is not a readable, safe zip (not a zip, unsafe paths, zip bomb, ...).
+    #[error(transparent)]
+    Bundle(#[from] BundleError),
+    /// The bundle's content does not convert (diagnostics with file and position).
+    #[error(transparent)]
+    Convert(#[from] ConvertError),
+    /// Writing the output zip failed (not the input's fault).
+    #[error("writing the package zip: {0}")]
+    Zip(#[source] std::io::Error),
+}
+
+impl From<ExportError> for ApiError {
+    fn from(e: ExportError) -> Self {
+        match e {
+            ExportError::Bundle(b) => ApiError::Invalid {
+                detail: format!("the bundle cannot be read: {b}"),
+                errors: vec![FieldError { field: "bundle".into(), message: b.to_string() }],
+            },
+            ExportError::Convert(c) => ApiError::Conversion(c),
+            ExportError::Zip(io) => ApiError::Internal(anyhow::Error::new(io).context("writing the package zip")),
+        }
+    }
+}
+
+/// Limits for uploaded zips: the pipeline's defaults (1 GiB uncompressed, 20,000 entries,
+/// 1000x compression ratio).
+pub fn limits() -> Limits {
+    Limits::default()
+}
+
+/// Reads an uploaded bundle zip safely.
+pub fn read_bundle(bundle_bytes: &[u8], bundle_name: &str) -> Result<Bundle, BundleError> {
+    Bundle::from_zip(bundle_name, bundle_bytes, &limits())
+}
+
+/// Upload-time check: the zip reads safely and its XML parses, resolves and validates
+/// ([`pipeline::analyse`], no back ends). Fast; bad input is refused before anything is stored.
+pub fn check_bundle(bundle_bytes: &[u8], bundle_name: &str, options: &ExportOptions) -> Result<Checked, ExportError> {
+    let bundle = read_bundle(bundle_bytes, bundle_name)?;
+    let a = pipeline::analyse(&bundle, &options.pipeline())?;
+    Ok(Checked { model_name: a.model.name.clone(), warnings: a.warnings.len() })
+}
+
+/// Builds a version's package from its bundle.
+pub fn build_package(bundle_bytes: &[u8], bundle_name: &str, options: &ExportOptions) -> Result<Built, ExportError> {
+    let bundle = read_bundle(bundle_bytes, bundle_name)?;
+    let out = pipeline::convert(&bundle, &options.pipeline())?;
+    let files = out.files;
+    // SEAM: the mechatronic model (drives from the motor library) adds its files to `files`
+    // here, before zipping; its inputs join this function's arguments.
+    let report_json = files
+        .iter()
+        .find(|(path, _)| path == "report.json")
+        .map(|(_, bytes)| bytes.clone())
+        .ok_or_else(|| ExportError::Zip(std::io::Error::other("the conversion wrote no report.json")))?;
+    let package_zip = write_zip(&files).map_err(ExportError::Zip)?;
+    Ok(Built { package_zip, report_json, summary: Summary::of(&out.report) })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn pendulum_zip() -> Vec<u8> {
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/in/pendulum");
+        let files = vec![
+            ("PENDULUM.xml".to_string(), std::fs::read(root.join("PENDULUM.xml")).unwrap()),
+            ("meshes/LINK_prt.stl".to_string(), std::fs::read(root.join("meshes/LINK_prt.stl")).unwrap()),
+        ];
+        write_zip(&files).unwrap()
+    }
+
+    #[test]
+    fn builds_deterministically() {
+        let zip = pendulum_zip();
+        let opts = ExportOptions::default();
+        let a = build_package(&zip, "p.zip", &opts).unwrap();
+        let b = build_package(&zip, "p.zip", &opts).unwrap();
+        assert_eq!(a.package_zip, b.package_zip);
+        assert_eq!(a.summary.package_name, "PENDULUM");
+        assert_eq!((a.summary.bodies, a.summary.joints), (2, 2));
+        let report: serde_json::Value = serde_json::from_slice(&a.report_json).unwrap();
+        assert_eq!(report["package_name"], "PENDULUM");
+        assert_eq!(check_bundle(&zip, "p.zip", &opts).unwrap().model_name, "PENDULUM");
+    }
+
+    #[test]
+    fn errors_map_to_problems() {
+        let e = check_bundle(b"not a zip", "x.zip", &ExportOptions::default()).unwrap_err();
+        assert!(matches!(e, ExportError::Bundle(_)));
+        let p = ApiError::from(e).problem_json();
+        assert_eq!(p["status"], 422);
+        assert!(p["detail"].as_str().unwrap().contains("x.zip"));
+    }
+
+    #[test]
+    fn options_round_trip_with_defaults() {
+        let o: ExportOptions = serde_json::from_str("{}").unwrap();
+        assert_eq!(o, ExportOptions::default());
+        let o = ExportOptions { package_name: Some("P".into()), gravity: [0.0, 0.0, -9.81], lump_welds: true };
+        assert_eq!(serde_json::from_str::<ExportOptions>(&serde_json::to_string(&o).unwrap()).unwrap(), o);
+    }
+}

@@ -1,0 +1,326 @@
+//! The library a new installation starts with: the classes the Modelica generator knows
+//! (`pipeline::back::modelica::mechatronics::known_classes`, checked by a test) and instances
+//! from real datasheets. Values are written as the datasheets print them (`30.2 mNm/A`,
+//! `134 g.cm2`, `6940 rpm`) and go through the same checks and unit conversions as any API input.
+//!
+//! Ids are fixed, so every installation has the same seed ids and an exported seed library is
+//! the same file everywhere.
+
+use serde_json::{json, Map, Value as Json};
+
+use super::{check_class, check_instance, ClassDraft, InstanceDraft, Issue, Library, ParameterDraft};
+
+pub const DC_MOTOR: &str = "93162c18-a028-4dbb-a9a7-c37bb6da9e15";
+pub const MSL_DC_MACHINE: &str = "22a8fc74-4da7-4531-a1a0-75fb5313705d";
+pub const IDEAL_GEAR: &str = "081e59da-554a-4b0c-bd5a-7f03409fb279";
+pub const EFFICIENCY_GEAR: &str = "10ace2d9-1eef-4be8-b0c1-ba992d043a94";
+pub const LEAD_SCREW: &str = "1d6bd1fa-9a39-47b1-86dc-e0162feea6eb";
+pub const CASCADE_PPI: &str = "0f2fa95d-0f54-42fb-88f8-831a624c2754";
+
+/// Instance ids.
+pub const MAXON_RE40: &str = "a204da99-dd36-4642-91d0-a61534935347";
+pub const MAXON_EC45_FLAT: &str = "3cc686f6-fa23-4afb-9f9b-fe3c2b0b7a56";
+pub const FAULHABER_1331: &str = "ff8d8ade-6252-45e7-9e97-204bce4f2f2d";
+pub const FAULHABER_3564: &str = "ae1c622f-2892-40d8-95ef-0f7390777269";
+pub const MAXON_RE40_MSL: &str = "05ea8371-f744-4b39-8683-e42bcf2a4e2a";
+pub const GEAR_100: &str = "114caede-7ffb-45ea-b87d-177f3f8c80cd";
+pub const MAXON_GP42C_74: &str = "7255aafb-a3a5-4ca2-83a5-e57f136ff918";
+pub const BALL_SCREW_16X5: &str = "111ab6e0-9fec-4319-a1f0-7823f62e5ae4";
+pub const ROBOT_R3_CONTROLLER: &str = "42d928a7-a033-47a5-8545-33f2b4153faa";
+
+/// A Real parameter: (name, unit, min, max, editable, default, comment).
+fn real(
+    name: &str,
+    unit: &str,
+    min: Option<f64>,
+    max: Option<f64>,
+    editable: bool,
+    default: Option<f64>,
+    comment: &str,
+) -> ParameterDraft {
+    ParameterDraft {
+        name: name.to_string(),
+        ty: "Real".to_string(),
+        unit: unit.to_string(),
+        min,
+        max,
+        editable,
+        default: default.map(|d| json!(d)),
+        comment: comment.to_string(),
+    }
+}
+
+/// A nameplate value: not editable, no default, >= 0.
+fn nameplate(name: &str, unit: &str, comment: &str) -> ParameterDraft {
+    real(name, unit, Some(0.0), None, false, None, comment)
+}
+
+fn class(name: &str, domain: &str, modelica_class: &str, description: &str, parameters: Vec<ParameterDraft>) -> ClassDraft {
+    ClassDraft {
+        name: name.to_string(),
+        domain: domain.to_string(),
+        modelica_class: modelica_class.to_string(),
+        description: description.to_string(),
+        parameters,
+    }
+}
+
+fn classes() -> Vec<(&'static str, ClassDraft)> {
+    let ratio = || {
+        real(
+            "ratio",
+            "1",
+            None,
+            None,
+            true,
+            Some(1.0),
+            "Transmission ratio: motor speed / output speed (as MSL IdealGear); negative reverses; must not be 0",
+        )
+    };
+    vec![
+        (
+            DC_MOTOR,
+            class(
+                "DC permanent-magnet motor",
+                "motor",
+                "cad2mo.Drives.Motors.DCPermanentMagnet",
+                "Brushed (or block-commutated brushless) DC motor with permanent magnets: armature resistance and inductance, torque constant = back-EMF constant, rotor inertia and viscous friction, driven through an inner current loop with voltage and current limits. Our own class, generated into each package's Components/Drives.",
+                vec![
+                    nameplate("R", "Ohm", "Terminal (armature) resistance"),
+                    nameplate("L", "H", "Terminal (armature) inductance"),
+                    nameplate("k", "N.m/A", "Torque constant (= back-EMF constant in V.s/rad)"),
+                    nameplate("J", "kg.m2", "Rotor inertia"),
+                    real("d", "N.m.s/rad", Some(0.0), None, false, Some(0.0), "Viscous friction of the rotor (0 when the datasheet gives none)"),
+                    nameplate("V_max", "V", "Nominal (supply) voltage: limit of the armature voltage"),
+                    nameplate("I_max", "A", "Current limit: the nominal (max. continuous) current"),
+                    real("Tc", "s", Some(0.0), None, true, Some(0.001), "Time constant of the inner current loop (a drive setting, not a motor value)"),
+                ],
+            ),
+        ),
+        (
+            MSL_DC_MACHINE,
+            class(
+                "MSL DC permanent-magnet machine",
+                "motor",
+                "Modelica.Electrical.Machines.BasicMachines.DCMachines.DC_PermanentMagnet",
+                "The Modelica Standard Library's DC machine with permanent magnets, parametrised by its nominal operating point: the machine derives its EMF constant from (VaNominal - Ra*IaNominal)/wNominal.",
+                vec![
+                    nameplate("VaNominal", "V", "Nominal armature voltage"),
+                    nameplate("IaNominal", "A", "Nominal armature current (> 0: motor)"),
+                    nameplate("wNominal", "rad/s", "Nominal speed"),
+                    nameplate("TaNominal", "K", "Nominal armature temperature"),
+                    nameplate("Ra", "Ohm", "Armature resistance at TaRef"),
+                    nameplate("TaRef", "K", "Reference temperature of the armature resistance"),
+                    real("alpha20a", "1/K", None, None, false, Some(0.0), "Temperature coefficient of the armature resistance at 20 degC (0: no temperature dependence; copper: 3.93e-3)"),
+                    nameplate("La", "H", "Armature inductance"),
+                    nameplate("Jr", "kg.m2", "Rotor inertia"),
+                    nameplate("Js", "kg.m2", "Stator inertia (the stator is fixed in the drive)"),
+                    real("TaOperational", "K", Some(0.0), None, true, Some(293.15), "Operational armature temperature"),
+                ],
+            ),
+        ),
+        (
+            IDEAL_GEAR,
+            class(
+                "Ideal gear",
+                "gear",
+                "Modelica.Mechanics.Rotational.Components.IdealGear",
+                "Lossless gear of the MSL (flange_a.phi = ratio * flange_b.phi), for revolute joints.",
+                vec![ratio()],
+            ),
+        ),
+        (
+            EFFICIENCY_GEAR,
+            class(
+                "Gear with efficiency",
+                "gear",
+                "cad2mo.Drives.Gears.Efficiency",
+                "Gear with a constant efficiency in both directions of power flow (MSL LossyGear with lossTable [0, eta, eta, 0, 0]), for revolute joints.",
+                vec![
+                    ratio(),
+                    real("eta", "1", Some(0.0), Some(1.0), true, Some(1.0), "Efficiency, 0 < eta <= 1 (the generator refuses 0)"),
+                ],
+            ),
+        ),
+        (
+            LEAD_SCREW,
+            class(
+                "Lead screw",
+                "gear",
+                "cad2mo.Drives.Gears.LeadScrew",
+                "Ideal gearbox and lead screw (MSL IdealGearR2T) for prismatic joints.",
+                vec![
+                    ratio(),
+                    real("lead", "m", None, None, false, None, "Screw lead: travel per screw revolution (negative: left-hand thread; must not be 0)"),
+                ],
+            ),
+        ),
+        (
+            CASCADE_PPI,
+            class(
+                "Cascade P/PI controller",
+                "controller",
+                "cad2mo.Drives.Controllers.CascadePPI",
+                "Position P loop and speed PI loop on the motor side, commanding the armature current (as the axis controller of the MSL example RobotR3).",
+                vec![
+                    real("kp", "1/s", Some(0.0), None, true, Some(10.0), "Gain of the position controller"),
+                    real("ks", "A.s/rad", Some(0.0), None, true, Some(0.5), "Gain of the speed controller"),
+                    real("Ts", "s", Some(0.0), None, true, Some(0.05), "Time constant of the speed controller's integrator"),
+                ],
+            ),
+        ),
+    ]
+}
+
+fn values(v: Json) -> Map<String, Json> {
+    match v {
+        Json::Object(m) => m,
+        _ => Map::new(),
+    }
+}
+
+/// (id, class id, name, source, values).
+fn instances() -> Vec<(&'static str, &'static str, &'static str, &'static str, Map<String, Json>)> {
+    vec![
+        (
+            MAXON_RE40,
+            DC_MOTOR,
+            "maxon RE 40 148877 (24 V)",
+            "maxon RE 40 Ø40 mm, graphite brushes, 150 W, order number 148877 (24 V winding), maxon catalog motor data, nominal values at 24 V and 25 °C: terminal resistance 0.317 Ω, terminal inductance 0.0823 mH, torque constant 30.2 mNm/A, rotor inertia 134 gcm², nominal voltage 24 V, nominal (max. continuous) current 5.77 A. d is estimated from the no-load current 137 mA at the no-load speed 7580 rpm (d = I0·k/ω0).",
+            values(json!({
+                "R": {"value": 0.317, "unit": "Ohm"},
+                "L": {"value": 0.0823, "unit": "mH"},
+                "k": {"value": 30.2, "unit": "mNm/A"},
+                "J": {"value": 134, "unit": "g.cm2"},
+                "d": 5.21e-6,
+                "V_max": 24,
+                "I_max": 5.77,
+                "Tc": 0.001
+            })),
+        ),
+        (
+            MAXON_EC45_FLAT,
+            DC_MOTOR,
+            "maxon EC 45 flat 70 W (24 V)",
+            "maxon EC 45 flat Ø43.5 mm, brushless, 70 W, 24 V winding with Hall sensors, maxon catalog motor data (values at nominal voltage): terminal resistance phase to phase 0.573 Ω, terminal inductance phase to phase 0.301 mH, torque constant 40.4 mNm/A, rotor inertia 181 gcm², nominal current 3.29 A. A block-commutated brushless motor behaves as a DC motor with the phase-to-phase values. d is estimated from the no-load current 270 mA at the no-load speed 5600 rpm.",
+            values(json!({
+                "R": 0.573,
+                "L": {"value": 0.301, "unit": "mH"},
+                "k": {"value": 40.4, "unit": "mNm/A"},
+                "J": {"value": 181, "unit": "g.cm2"},
+                "d": 1.86e-5,
+                "V_max": 24,
+                "I_max": 3.29,
+                "Tc": 0.001
+            })),
+        ),
+        (
+            FAULHABER_1331,
+            DC_MOTOR,
+            "Faulhaber 1331 T 024 SR",
+            "FAULHABER DC-Micromotor series 1331 T ... SR (precious metal commutation), type 1331 T 024 SR, data sheet values at nominal voltage 24 V: terminal resistance 52.9 Ω, rotor inductance 1100 µH, torque constant 21.8 mNm/A, rotor inertia 0.63 gcm², current up to 0.19 A (thermal limit). d is estimated from the no-load current 0.0055 A at the no-load speed 10400 rpm.",
+            values(json!({
+                "R": 52.9,
+                "L": {"value": 1100, "unit": "uH"},
+                "k": {"value": 21.8, "unit": "mNm/A"},
+                "J": {"value": 0.63, "unit": "g.cm2"},
+                "d": 1.1e-7,
+                "V_max": 24,
+                "I_max": 0.19,
+                "Tc": 0.001
+            })),
+        ),
+        (
+            FAULHABER_3564,
+            DC_MOTOR,
+            "Faulhaber 3564 K 024 B",
+            "FAULHABER Brushless DC-Servomotor series 3564 K ... B, type 3564 K 024 B, data sheet values at nominal voltage 24 V: terminal resistance phase-phase 1.2 Ω, terminal inductance phase-phase 194 µH, torque constant 20.12 mNm/A, rotor inertia 34 gcm², dynamic friction torque 2.4·10⁻⁴ mNm/rpm (d), current up to 2.50 A (thermal limit).",
+            values(json!({
+                "R": 1.2,
+                "L": {"value": 194, "unit": "uH"},
+                "k": {"value": 20.12, "unit": "mNm/A"},
+                "J": {"value": 34, "unit": "g.cm2"},
+                "d": {"value": 2.4e-4, "unit": "mNm/rpm"},
+                "V_max": 24,
+                "I_max": 2.5,
+                "Tc": 0.001
+            })),
+        ),
+        (
+            MAXON_RE40_MSL,
+            MSL_DC_MACHINE,
+            "maxon RE 40 148877 (24 V), nominal point",
+            "maxon RE 40 Ø40 mm, graphite brushes, 150 W, order number 148877 (24 V winding), maxon catalog motor data at the nominal operating point: 24 V, nominal current 5.77 A, nominal speed 6940 rpm; terminal resistance 0.317 Ω and inductance 0.0823 mH, rotor inertia 134 gcm², all at 25 °C (temperature dependence off). The MSL machine derives its EMF constant (24 - 0.317·5.77)/726.7 rad/s = 0.0305 V·s/rad from this point (datasheet torque constant 30.2 mNm/A; the difference is the no-load loss). The stator inertia is set equal to the rotor's (the stator is fixed).",
+            values(json!({
+                "VaNominal": 24,
+                "IaNominal": 5.77,
+                "wNominal": {"value": 6940, "unit": "rpm"},
+                "TaNominal": {"value": 25, "unit": "degC"},
+                "Ra": 0.317,
+                "TaRef": {"value": 25, "unit": "degC"},
+                "alpha20a": 0,
+                "La": {"value": 0.0823, "unit": "mH"},
+                "Jr": {"value": 134, "unit": "g.cm2"},
+                "Js": {"value": 134, "unit": "g.cm2"},
+                "TaOperational": {"value": 25, "unit": "degC"}
+            })),
+        ),
+        (
+            GEAR_100,
+            IDEAL_GEAR,
+            "Ideal gear 100:1",
+            "Reduction 100:1 as of a strain-wave gear Harmonic Drive CSF-17-100 (catalog reduction ratio 100), modelled without losses.",
+            values(json!({"ratio": 100})),
+        ),
+        (
+            MAXON_GP42C_74,
+            EFFICIENCY_GEAR,
+            "maxon GP 42 C 74:1",
+            "maxon planetary gearhead GP 42 C Ø42 mm, 3.0-15.0 Nm, ceramic version, 3 stages, reduction 74:1 (nominal; the catalog also lists the exact absolute reduction), max. efficiency 72 % (catalog value for 3 stages).",
+            values(json!({"ratio": 74, "eta": {"value": 72, "unit": "%"}})),
+        ),
+        (
+            BALL_SCREW_16X5,
+            LEAD_SCREW,
+            "Ball screw 16x5, direct drive",
+            "Ball screw of 16 mm nominal diameter and 5 mm lead (standard size of ISO 3408, e.g. Bosch Rexroth FEM-E-S 16x5), motor coupled directly (ratio 1; set the ratio for a belt or gearbox in between).",
+            values(json!({"ratio": 1, "lead": {"value": 5, "unit": "mm"}})),
+        ),
+        (
+            ROBOT_R3_CONTROLLER,
+            CASCADE_PPI,
+            "RobotR3 axis controller",
+            "Gains in the style of the axis controllers of the MSL example Modelica.Mechanics.MultiBody.Examples.Systems.RobotR3 (P position loop kp, PI speed loop ks and Ts; fullRobot uses ks = 0.5 and Ts = 0.05 s): starting values, to be tuned per drive.",
+            values(json!({"kp": 10, "ks": 0.5, "Ts": 0.05})),
+        ),
+    ]
+}
+
+/// The seed library, checked by the same rules as any input (a failure is a bug, caught by a
+/// unit test).
+pub fn library() -> Result<Library, Vec<Issue>> {
+    let mut lib = Library::default();
+    let mut issues = Vec::new();
+    for (id, draft) in classes() {
+        match check_class(id, &draft) {
+            Ok(c) => lib.classes.push(c),
+            Err(e) => issues.extend(e.into_iter().map(|i| Issue::new(format!("seed class {}: {}", draft.name, i.field), i.message))),
+        }
+    }
+    for (id, class_id, name, source, values) in instances() {
+        let Some(class) = lib.class(class_id) else {
+            issues.push(Issue::new(format!("seed instance {name}"), format!("no seed class {class_id}")));
+            continue;
+        };
+        let draft = InstanceDraft { name: name.to_string(), source: source.to_string(), values };
+        match check_instance(id, class, &draft) {
+            Ok(i) => lib.instances.push(i),
+            Err(e) => issues.extend(e.into_iter().map(|i| Issue::new(format!("seed instance {name}: {}", i.field), i.message))),
+        }
+    }
+    if !issues.is_empty() {
+        return Err(issues);
+    }
+    lib.sort();
+    Ok(lib)
+}

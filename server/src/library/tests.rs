@@ -1,0 +1,468 @@
+//! Unit tests of the library rules, the XML format and the seed.
+
+use std::collections::HashSet;
+
+use serde_json::{json, Map, Value as Json};
+
+use super::*;
+
+fn obj(v: Json) -> Map<String, Json> {
+    match v {
+        Json::Object(m) => m,
+        other => panic!("not an object: {other}"),
+    }
+}
+
+fn param(name: &str, ty: ParamType, unit: &str, min: Option<f64>, max: Option<f64>, editable: bool) -> Parameter {
+    Parameter {
+        name: name.into(),
+        ty,
+        unit: unit.into(),
+        min,
+        max,
+        editable,
+        default: None,
+        comment: String::new(),
+    }
+}
+
+fn motor_class() -> Class {
+    Class {
+        id: "c1".into(),
+        name: "Motor".into(),
+        domain: "motor".into(),
+        modelica_class: "cad2mo.Drives.Motors.DCPermanentMagnet".into(),
+        description: String::new(),
+        parameters: vec![
+            param("R", ParamType::Real, "Ohm", Some(0.0), None, false),
+            param("L", ParamType::Real, "H", Some(0.0), None, false),
+            param("ratio", ParamType::Real, "1", None, None, true),
+            param("eta", ParamType::Real, "1", Some(0.0), Some(1.0), true),
+            param("poles", ParamType::Integer, "1", Some(1.0), None, false),
+            param("brushless", ParamType::Boolean, "", None, None, false),
+            param("winding", ParamType::String, "", None, None, true),
+        ],
+    }
+}
+
+fn good_values() -> Map<String, Json> {
+    obj(json!({
+        "R": 0.317, "L": {"value": 82, "unit": "uH"}, "ratio": 74, "eta": {"value": 72, "unit": "%"},
+        "poles": 2, "brushless": false, "winding": "24 V"
+    }))
+}
+
+fn fields(issues: &[Issue]) -> Vec<&str> {
+    issues.iter().map(|i| i.field.as_str()).collect()
+}
+
+// ---------------------------------------------------------------------------------------------
+// Values
+
+#[test]
+fn values_in_the_parameter_unit_and_converted() {
+    let c = motor_class();
+    let v = check_values(&c, &good_values()).expect("valid");
+    let get = |n: &str| v.iter().find(|(k, _)| k == n).map(|(_, v)| v.clone()).expect("value");
+    assert_eq!(get("R"), Value::Real(0.317));
+    assert_eq!(get("L"), Value::Real(8.2e-5));
+    assert_eq!(get("ratio"), Value::Real(74.0));
+    assert_eq!(get("eta"), Value::Real(0.72));
+    assert_eq!(get("poles"), Value::Integer(2));
+    assert_eq!(get("brushless"), Value::Boolean(false));
+    assert_eq!(get("winding"), Value::String("24 V".into()));
+    // In class order.
+    let names: Vec<&str> = v.iter().map(|(n, _)| n.as_str()).collect();
+    assert_eq!(names, ["R", "L", "ratio", "eta", "poles", "brushless", "winding"]);
+}
+
+#[test]
+fn a_unit_equal_to_the_parameter_unit_or_empty_is_accepted() {
+    let p = param("L", ParamType::Real, "H", Some(0.0), None, false);
+    assert_eq!(check_value(&p, &json!({"value": 1e-3, "unit": "H"})), Ok(Value::Real(1e-3)));
+    assert_eq!(check_value(&p, &json!({"value": 1e-3, "unit": ""})), Ok(Value::Real(1e-3)));
+    assert_eq!(check_value(&p, &json!({"value": 1e-3})), Ok(Value::Real(1e-3)));
+}
+
+#[test]
+fn value_errors_name_the_parameter() {
+    let c = motor_class();
+    let cases: Vec<(&str, Json, &str)> = vec![
+        ("L", json!({"value": 82, "unit": "rpm"}), "cannot be converted"),
+        ("L", json!({"value": 82, "unit": "furlong"}), "unknown unit"),
+        ("R", json!("0.3"), "expected a number"),
+        ("R", json!(-1), "below the minimum"),
+        ("eta", json!(1.5), "above the maximum"),
+        ("eta", json!({"value": 150, "unit": "%"}), "above the maximum"),
+        ("poles", json!(2.5), "whole number"),
+        ("brushless", json!(1), "true or false"),
+        ("brushless", json!({"value": true, "unit": "V"}), "numbers only"),
+        ("winding", json!(24), "a string"),
+        ("R", json!({"value": 1, "units": "Ohm"}), "unexpected key"),
+        ("R", json!({"unit": "Ohm"}), "no \"value\""),
+        ("R", json!(null), "got null"),
+        ("R", json!([1]), "got an array"),
+    ];
+    for (name, raw, want) in cases {
+        let p = c.parameter(name).expect("param");
+        let err = check_value(p, &raw).expect_err(&format!("{name} = {raw} must fail"));
+        assert!(err.starts_with(name), "{err}");
+        assert!(err.contains(want), "{name} = {raw}: {err}");
+    }
+}
+
+#[test]
+fn integers_accept_whole_floats_and_converted_whole_values() {
+    let p = param("n", ParamType::Integer, "1", None, None, false);
+    assert_eq!(check_value(&p, &json!(3.0)), Ok(Value::Integer(3)));
+    assert_eq!(check_value(&p, &json!({"value": 300, "unit": "%"})), Ok(Value::Integer(3)));
+    assert!(check_value(&p, &json!({"value": 250, "unit": "%"})).is_err());
+}
+
+#[test]
+fn all_missing_unknown_and_bad_values_are_listed() {
+    let c = motor_class();
+    let mut v = good_values();
+    v.remove("R");
+    v.remove("poles");
+    v.insert("Kt".into(), json!(1));
+    v.insert("L".into(), json!({"value": 1, "unit": "rpm"}));
+    v.insert("eta".into(), json!(2));
+    let issues = check_values(&c, &v).expect_err("invalid");
+    let f = fields(&issues);
+    for want in ["values.R", "values.L", "values.eta", "values.poles", "values.Kt"] {
+        assert!(f.contains(&want), "{want} missing in {f:?}");
+    }
+    assert_eq!(issues.len(), 5, "{issues:?}");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Classes
+
+fn draft_param(name: &str, ty: &str, unit: &str) -> ParameterDraft {
+    ParameterDraft { name: name.into(), ty: ty.into(), unit: unit.into(), ..ParameterDraft::default() }
+}
+
+#[test]
+fn class_check_lists_every_problem() {
+    let d = ClassDraft {
+        name: " ".into(),
+        domain: "Motor".into(),
+        modelica_class: "DCMotor".into(),
+        description: String::new(),
+        parameters: vec![
+            draft_param("L", "Real", "mH"),
+            draft_param("L", "Real", "H"),
+            draft_param("x", "Float", ""),
+            draft_param("flag", "Boolean", "V"),
+            ParameterDraft { min: Some(2.0), max: Some(1.0), ..draft_param("y", "Real", "1") },
+            ParameterDraft { default: Some(json!("a")), ..draft_param("z", "Real", "1") },
+            draft_param("end", "Real", "1"),
+            draft_param("w", "Real", "furlong"),
+        ],
+    };
+    let issues = check_class("id", &d).expect_err("invalid");
+    let f = fields(&issues);
+    for want in [
+        "name",
+        "domain",
+        "modelica_class",
+        "parameters[0].unit",
+        "parameters[1].name",
+        "parameters[2].type",
+        "parameters[3].unit",
+        "parameters[4].max",
+        "parameters[5].default",
+        "parameters[6].name",
+        "parameters[7].unit",
+    ] {
+        assert!(f.contains(&want), "{want} missing in {f:?}");
+    }
+    let mh = issues.iter().find(|i| i.field == "parameters[0].unit").expect("mH issue");
+    assert!(mh.message.contains("declare \"H\""), "{}", mh.message);
+}
+
+#[test]
+fn class_defaults_are_checked_and_converted() {
+    let d = ClassDraft {
+        name: "Gear".into(),
+        domain: "gear".into(),
+        modelica_class: "cad2mo.Drives.Gears.Efficiency".into(),
+        description: String::new(),
+        parameters: vec![ParameterDraft {
+            min: Some(0.0),
+            max: Some(1.0),
+            editable: true,
+            default: Some(json!({"value": 90, "unit": "%"})),
+            ..draft_param("eta", "Real", "1")
+        }],
+    };
+    let c = check_class("id", &d).expect("valid");
+    assert_eq!(c.parameters[0].default, Some(Value::Real(0.9)));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Instances: nameplate values, overrides, migration
+
+fn instance(c: &Class) -> Instance {
+    check_instance("i1", c, &InstanceDraft { name: "RE 40".into(), source: "datasheet".into(), values: good_values() })
+        .expect("valid")
+}
+
+#[test]
+fn nameplate_values_cannot_change_editable_ones_can() {
+    let c = motor_class();
+    let old = instance(&c);
+    // Same nameplate values (L given in another unit), changed editable values and name.
+    let mut v = good_values();
+    v.insert("L".into(), json!(8.2e-5));
+    v.insert("ratio".into(), json!(100));
+    v.insert("winding".into(), json!("48 V"));
+    let d = InstanceDraft { name: "RE 40 (renamed)".into(), source: "new source".into(), values: v };
+    let new = check_instance_update(&c, &old, &d).expect("editable change is fine");
+    assert_eq!(new.value("ratio"), Some(&Value::Real(100.0)));
+    assert_eq!(new.value("L"), old.value("L"));
+    assert_eq!(new.name, "RE 40 (renamed)");
+    // Nameplate changes are refused, each named.
+    let mut v = good_values();
+    v.insert("R".into(), json!(0.5));
+    v.insert("brushless".into(), json!(true));
+    let d = InstanceDraft { name: "RE 40".into(), source: String::new(), values: v };
+    let issues = check_instance_update(&c, &old, &d).expect_err("nameplate change");
+    assert_eq!(fields(&issues), ["values.R", "values.brushless"]);
+    assert!(issues[0].message.contains("nameplate"), "{}", issues[0].message);
+    assert!(issues[0].message.contains("new instance"), "{}", issues[0].message);
+}
+
+#[test]
+fn overrides_touch_editable_parameters_only() {
+    let c = motor_class();
+    let inst = instance(&c);
+    let ok = validate_overrides(&c, &obj(json!({"eta": {"value": 80, "unit": "%"}, "ratio": 50})))
+        .expect("editable overrides");
+    assert_eq!(ok, vec![("ratio".to_string(), Value::Real(50.0)), ("eta".to_string(), Value::Real(0.8))]);
+    let issues = validate_overrides(&c, &obj(json!({"R": 1, "nope": 1, "eta": 3}))).expect_err("bad overrides");
+    let f = fields(&issues);
+    assert!(f.contains(&"overrides.R") && f.contains(&"overrides.nope") && f.contains(&"overrides.eta"), "{f:?}");
+    assert!(issues.iter().any(|i| i.field == "overrides.R" && i.message.contains("nameplate")));
+
+    let resolved = resolved_values(&c, &inst, &ok);
+    let get = |n: &str| resolved.iter().find(|(k, _)| k == n).map(|(_, v)| v.clone());
+    assert_eq!(get("ratio"), Some(Value::Real(50.0)));
+    assert_eq!(get("eta"), Some(Value::Real(0.8)));
+    assert_eq!(get("R"), Some(Value::Real(0.317)));
+    assert_eq!(resolved.len(), c.parameters.len());
+    // A (forged) override of a nameplate value is ignored.
+    let forged = vec![("R".to_string(), Value::Real(9.0))];
+    assert_eq!(resolved_values(&c, &inst, &forged).first(), Some(&("R".to_string(), Value::Real(0.317))));
+}
+
+#[test]
+fn migration_converts_units_drops_removed_and_defaults_new_parameters() {
+    let old = motor_class();
+    let inst = instance(&old);
+    let mut new = old.clone();
+    new.parameters.retain(|p| p.name != "winding");
+    new.parameters[1].unit = "H".into();
+    new.parameters.push(Parameter { default: Some(Value::Real(0.0)), ..param("d", ParamType::Real, "N.m.s/rad", None, None, false) });
+    let m = migrate_instance(&old, &new, &inst).expect("migrates");
+    assert_eq!(m.value("winding"), None);
+    assert_eq!(m.value("d"), Some(&Value::Real(0.0)));
+    assert_eq!(m.value("L"), inst.value("L"));
+
+    // A new parameter without default, and a tighter limit, are problems.
+    let mut stricter = old.clone();
+    stricter.parameters[0].max = Some(0.1);
+    stricter.parameters.push(param("J", ParamType::Real, "kg.m2", None, None, false));
+    let issues = migrate_instance(&old, &stricter, &inst).expect_err("cannot migrate");
+    assert_eq!(issues.len(), 2, "{issues:?}");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Seed
+
+#[test]
+fn the_seed_is_valid_and_ids_are_unique() {
+    let lib = seed::library().unwrap_or_else(|e| panic!("seed invalid: {e:#?}"));
+    assert!(lib.classes.len() >= 5);
+    let mut ids = HashSet::new();
+    for id in lib.classes.iter().map(|c| &c.id).chain(lib.instances.iter().map(|i| &i.id)) {
+        assert_eq!(parse_id(id).as_deref(), Some(id.as_str()), "{id} is a canonical UUID");
+        assert!(ids.insert(id.clone()), "{id} twice");
+    }
+    let motors = lib.instances.iter().filter(|i| i.class_id == seed::DC_MOTOR).count();
+    assert!(motors >= 3, "{motors} motors of our own class");
+    for i in &lib.instances {
+        assert!(!i.source.is_empty(), "{} has a source", i.name);
+        let class = lib.class(&i.class_id).expect("class");
+        assert_eq!(i.values.len(), class.parameters.len(), "{} has every value", i.name);
+    }
+    let re40 = lib.instances.iter().find(|i| i.id == seed::MAXON_RE40).expect("RE 40");
+    assert_eq!(re40.value("L"), Some(&Value::Real(8.23e-5)));
+    assert_eq!(re40.value("k"), Some(&Value::Real(0.0302)));
+    assert_eq!(re40.value("J"), Some(&Value::Real(1.34e-5)));
+    let msl = lib.instances.iter().find(|i| i.id == seed::MAXON_RE40_MSL).expect("RE 40 MSL");
+    assert_eq!(msl.value("TaNominal"), Some(&Value::Real(298.15)));
+    let w = msl.value("wNominal").and_then(Value::as_f64).expect("wNominal");
+    assert!((w - 6940.0 * std::f64::consts::PI / 30.0).abs() < 1e-9, "{w}");
+    let gp42 = lib.instances.iter().find(|i| i.id == seed::MAXON_GP42C_74).expect("GP 42 C");
+    assert_eq!(gp42.value("eta"), Some(&Value::Real(0.72)));
+    // Gear ratios, efficiencies and controller gains are editable; motor values are not.
+    for c in &lib.classes {
+        for p in &c.parameters {
+            let should = matches!(p.name.as_str(), "ratio" | "eta" | "kp" | "ks" | "Ts" | "Tc" | "TaOperational");
+            assert_eq!(p.editable, should, "{}.{}", c.name, p.name);
+        }
+    }
+}
+
+/// Every seeded class is a class the Modelica generator knows, with exactly its parameters
+/// (names, types and units), so a drive built from the seed can always be generated.
+#[test]
+fn seeded_classes_match_the_generator() {
+    use crate::pipeline::back::modelica::mechatronics::known_classes;
+    let known = known_classes();
+    let lib = seed::library().unwrap_or_else(|e| panic!("seed invalid: {e:#?}"));
+    for c in &lib.classes {
+        let k = known
+            .iter()
+            .find(|k| k.modelica_class == c.modelica_class)
+            .unwrap_or_else(|| panic!("{} is not a class of known_classes()", c.modelica_class));
+        assert_eq!(k.domain, c.domain, "{}", c.modelica_class);
+        let ours: Vec<(&str, &str, &str)> =
+            c.parameters.iter().map(|p| (p.name.as_str(), p.ty.as_str(), p.unit.as_str())).collect();
+        let mut theirs: Vec<(&str, &str, &str)> = k.params.to_vec();
+        let mut ours_sorted = ours.clone();
+        ours_sorted.sort();
+        theirs.sort();
+        assert_eq!(ours_sorted, theirs, "parameters of {}", c.modelica_class);
+    }
+    // And every class the generator knows is seeded.
+    for k in &known {
+        assert!(lib.classes.iter().any(|c| c.modelica_class == k.modelica_class), "{} is not seeded", k.modelica_class);
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// XML
+
+fn import_into_empty(text: &str) -> Library {
+    let doc = xml::read(text).unwrap_or_else(|e| panic!("read: {e:#?}"));
+    let plan = plan_import(&Library::default(), &doc).unwrap_or_else(|e| panic!("plan: {e:#?}"));
+    let mut lib = Library { classes: plan.classes, instances: plan.instances };
+    lib.sort();
+    lib
+}
+
+#[test]
+fn xml_round_trip_of_the_seed_is_exact() {
+    let lib = seed::library().expect("seed");
+    let text = xml::write(&lib);
+    assert!(text.starts_with("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<motorLibrary version=\"1\">"), "{text}");
+    let back = import_into_empty(&text);
+    assert_eq!(back, lib);
+    assert_eq!(xml::write(&back), text);
+}
+
+#[test]
+fn xml_round_trip_of_awkward_text_and_values() {
+    let mut c = motor_class();
+    c.id = "6f1b7c1e-8a0e-4d55-9d59-5b2b0c7e1a01".into();
+    c.name = "Quotes \" ' & <angle> brackets".into();
+    c.description = "  leading space\nline two\r\nwith CR LF\tand tab ]]> µ Ω  ".into();
+    c.parameters[0].comment = "R <in> \"Ohm\" & more".into();
+    c.parameters[2].default = Some(Value::Real(-0.1));
+    c.parameters[6].default = Some(Value::String(String::new()));
+    let values = obj(json!({
+        "R": 0.1 + 0.2, "L": 1e-300, "ratio": -123456789.123456789, "eta": 5e-324,
+        "poles": i64::MAX, "brushless": true, "winding": "a\nb\r\nc\t\"d\" <e> & 'f'  "
+    }));
+    let i = check_instance(
+        "1b4e28ba-2fa1-11d2-883f-0016d3cca427",
+        &c,
+        &InstanceDraft { name: "x & y <z>".into(), source: "line 1\nline 2\r\n".into(), values },
+    )
+    .expect("valid");
+    let lib = Library { classes: vec![c], instances: vec![i] };
+    let text = xml::write(&lib);
+    assert_eq!(import_into_empty(&text), lib, "{text}");
+}
+
+#[test]
+fn xml_syntax_errors_name_the_line() {
+    let text = "<?xml version=\"1.0\"?>\n<motorLibrary version=\"1\">\n  <class id=\"x\">\n  </klass>\n</motorLibrary>\n";
+    let issues = xml::read(text).expect_err("malformed");
+    assert!(issues[0].field.starts_with("line 4"), "{issues:?}");
+    assert!(issues[0].message.contains("malformed XML"), "{issues:?}");
+}
+
+#[test]
+fn xml_structure_errors_are_collected_with_lines_and_elements() {
+    let text = r#"<motorLibrary version="1">
+  <class id="6f1b7c1e-8a0e-4d55-9d59-5b2b0c7e1a01" name="M" domain="motor" modelicaClass="cad2mo.M" colour="red">
+    <parameter name="R" type="Real" unit="Ohm" min="zero" editable="maybe"/>
+    <parameter name="L" type="Real" unit="H" editable="false"/>
+  </class>
+  <instance id="1b4e28ba-2fa1-11d2-883f-0016d3cca427" class="6f1b7c1e-8a0e-4d55-9d59-5b2b0c7e1a01">
+    <value param="L">0.1</value>
+  </instance>
+</motorLibrary>
+"#;
+    let issues = xml::read(text).expect_err("invalid");
+    let f = fields(&issues);
+    assert!(f.contains(&"line 2 <class>"), "{issues:?}");
+    assert!(f.contains(&"line 3 <parameter>"), "{issues:?}");
+    assert!(f.contains(&"line 6 <instance>"), "{issues:?}");
+    assert!(issues.iter().any(|i| i.message.contains("colour")), "{issues:?}");
+    assert!(issues.iter().any(|i| i.message.contains("zero")), "{issues:?}");
+    assert!(issues.iter().any(|i| i.message.contains("maybe")), "{issues:?}");
+    assert!(issues.iter().any(|i| i.message.contains("\"name\" is missing")), "{issues:?}");
+}
+
+#[test]
+fn import_checks_values_against_classes_and_names_the_value_line() {
+    let lib = seed::library().expect("seed");
+    let text = xml::write(&lib).replace(">0.317<", ">-1<").replace(">0.72<", ">lots<");
+    let doc = xml::read(&text).expect("syntax is fine");
+    let issues = plan_import(&Library::default(), &doc).expect_err("bad values");
+    assert!(issues.iter().any(|i| i.field.contains("<value param=\"R\">") && i.message.contains("minimum")), "{issues:?}");
+    assert!(issues.iter().any(|i| i.field.contains("<value param=\"eta\">") && i.message.contains("lots")), "{issues:?}");
+    for i in &issues {
+        assert!(i.field.starts_with("line "), "{i:?}");
+    }
+}
+
+#[test]
+fn import_updates_by_id_and_migrates_instances_not_in_the_file() {
+    let current = seed::library().expect("seed");
+    // A file with only the efficiency gear class, its eta no longer editable and a new
+    // parameter with a default.
+    let mut gear = current.class(seed::EFFICIENCY_GEAR).expect("gear").clone();
+    gear.parameters.push(Parameter {
+        default: Some(Value::Real(0.0)),
+        ..param("backlash", ParamType::Real, "rad", Some(0.0), None, false)
+    });
+    let text = xml::write(&Library { classes: vec![gear], instances: vec![] });
+    let doc = xml::read(&text).expect("read");
+    let plan = plan_import(&current, &doc).expect("plan");
+    assert_eq!(plan.counts.classes_updated, 1);
+    assert_eq!(plan.counts.classes_created, 0);
+    assert_eq!(plan.counts.instances_migrated, 1);
+    let gp = plan.instances.iter().find(|i| i.id == seed::MAXON_GP42C_74).expect("migrated");
+    assert_eq!(gp.value("backlash"), Some(&Value::Real(0.0)));
+
+    // The same class under another id but the same name collides.
+    let mut twin = current.class(seed::IDEAL_GEAR).expect("gear").clone();
+    twin.id = "6f1b7c1e-8a0e-4d55-9d59-5b2b0c7e1a01".into();
+    let doc = xml::read(&xml::write(&Library { classes: vec![twin], instances: vec![] })).expect("read");
+    let issues = plan_import(&current, &doc).expect_err("name taken");
+    assert!(issues[0].message.contains("two classes would be named"), "{issues:?}");
+}
+
+#[test]
+fn units_in_xml_values_are_converted() {
+    let lib = seed::library().expect("seed");
+    let text = xml::write(&lib).replace(r#"<value param="L">8.23e-5</value>"#, r#"<value param="L" unit="uH">82.3</value>"#);
+    assert!(text.contains("unit=\"uH\""));
+    assert_eq!(import_into_empty(&text), lib);
+}

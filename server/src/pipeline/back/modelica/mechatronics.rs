@@ -1,0 +1,708 @@
+//! The mechatronic model: `<Pkg>/Mechatronics.mo` and the drive library `<Pkg>/Components/Drives/`.
+//!
+//! `Mechatronics extends Mechanics` and, for every joint the user gave a drive, declares one
+//! `Drives.JointDrive` (revolute) or `Drives.LinearJointDrive` (prismatic) with the motor, gear and
+//! controller classes and parameter values chosen in the motor library, and
+//! `connect(drive_<joint>.flange, <joint>.drive)`. It names joints only, so a `Mechanics.mo`
+//! regenerated after a CAD change slots under it unchanged (the paper's idea).
+//!
+//! ```text
+//! reference (Constant | CombiTimeTable) ─▶ controller ─i_ref▶ motor ─flange▶ gear ─▶ joint.drive
+//!                                            ▲    ▲                 │
+//!                                  phi_motor │    │ w_motor ◀───────┘ (motor-side sensors)
+//! ```
+//!
+//! Conventions (documented again in the generated classes):
+//! - the motor command is the armature current `i_ref` in A; every motor has an inner current
+//!   loop with current and voltage limits;
+//! - gear `ratio` = motor speed / joint speed, as MSL `IdealGear` (flange_a.phi = ratio *
+//!   flange_b.phi); for a prismatic joint the transmission is in rad/m (`LeadScrew`);
+//! - the controller measures the motor angle and speed and scales the joint reference by the
+//!   transmission, so it works in motor radians; it drives the joint coordinate to the reference.
+//!
+//! The library classes that a drive may refer to are listed by [`known_classes`]: a class path
+//! starting with `cad2mo.` is our own class under `<Pkg>.Components`; a `Modelica.` path is the
+//! MSL model our wrapper embeds (its parameters forwarded 1:1).
+//!
+//! Plain data in, files out: no IO, no panics.
+
+use std::collections::BTreeSet;
+use std::fmt::Write as _;
+use std::sync::OnceLock;
+
+use super::names::KEYWORDS;
+
+mod classes;
+#[cfg(test)]
+mod tests;
+
+/// The kind of joint a drive actuates.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum JointKind {
+    Revolute,
+    Prismatic,
+}
+
+impl JointKind {
+    fn name(self) -> &'static str {
+        match self {
+            JointKind::Revolute => "revolute",
+            JointKind::Prismatic => "prismatic",
+        }
+    }
+
+    fn unit(self) -> &'static str {
+        match self {
+            JointKind::Revolute => "rad",
+            JointKind::Prismatic => "m",
+        }
+    }
+}
+
+/// A parameter value from the motor library.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ParamValue {
+    Real(f64),
+    Integer(i64),
+    Boolean(bool),
+    String(String),
+}
+
+impl ParamValue {
+    fn type_name(&self) -> &'static str {
+        match self {
+            ParamValue::Real(_) => "Real",
+            ParamValue::Integer(_) => "Integer",
+            ParamValue::Boolean(_) => "Boolean",
+            ParamValue::String(_) => "String",
+        }
+    }
+}
+
+/// A class for one slot (motor, gear or controller) with its parameter values.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ClassChoice {
+    /// A class path of [`known_classes`].
+    pub modelica_class: String,
+    pub params: Vec<(String, ParamValue)>,
+}
+
+/// The joint reference: angle in rad (revolute) or position in m (prismatic).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Reference {
+    /// Held from t = 0 (a step from the joint's start value when they differ).
+    Constant(f64),
+    /// (time in s, value) points, times non-decreasing (a time may repeat once, for a jump);
+    /// linear interpolation, last value held. A table starting after t = 0 is preceded by
+    /// (0, start); an empty table holds `start`; a single point at t <= 0 is a constant.
+    Table(Vec<(f64, f64)>),
+}
+
+/// One joint's drive, as assigned in the service.
+#[derive(Clone, Debug, PartialEq)]
+pub struct DrivePlan {
+    /// Modelica name of the joint component in Mechanics (e.g. "RootPart_LINK").
+    pub joint: String,
+    pub kind: JointKind,
+    /// The joint's start value (rad or m) from the report: where the reference starts.
+    pub start: f64,
+    pub motor: ClassChoice,
+    pub gear: ClassChoice,
+    pub controller: ClassChoice,
+    pub reference: Reference,
+    /// Human text for the description string, e.g. "joint RootPart--LINK (nodeID 23:-:1)".
+    pub label: String,
+}
+
+/// A class the motor library may refer to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct KnownClass {
+    pub modelica_class: &'static str,
+    /// `motor`, `gear` or `controller`.
+    pub domain: &'static str,
+    /// (name, Modelica type `Real|Integer|Boolean|String`, unit).
+    pub params: &'static [(&'static str, &'static str, &'static str)],
+}
+
+/// Why a drive cannot be written.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum MechatronicsError {
+    #[error("package name \"{0}\" is not a Modelica identifier")]
+    BadPackageName(String),
+    #[error("drive of joint \"{joint}\": the joint name is not a Modelica identifier")]
+    BadJointName { joint: String },
+    #[error("joint {joint} has more than one drive")]
+    DuplicateJoint { joint: String },
+    #[error("drive of joint {joint}: \"{class}\" is not a known {slot} class{found}")]
+    UnknownClass { joint: String, slot: &'static str, class: String, found: String },
+    #[error("drive of joint {joint}: gear class {class} is for {fits} joints, not for the {kind} joint")]
+    GearDoesNotFitJoint { joint: String, class: String, fits: &'static str, kind: &'static str },
+    #[error("drive of joint {joint}: {class} has no parameter \"{param}\" (known: {known})")]
+    UnknownParameter { joint: String, class: String, param: String, known: String },
+    #[error("drive of joint {joint}: parameter {param} of {class} is given twice")]
+    DuplicateParameter { joint: String, class: String, param: String },
+    #[error("drive of joint {joint}: parameter {param} of {class} is a {expected}, got a {got}")]
+    WrongType { joint: String, class: String, param: String, expected: &'static str, got: &'static str },
+    #[error("drive of joint {joint}: parameter {param} of {class} = {value} {rule}")]
+    OutOfRange { joint: String, class: String, param: String, value: String, rule: &'static str },
+    #[error("drive of joint {joint}: reference: {reason}")]
+    BadReference { joint: String, reason: String },
+}
+
+// ---------------------------------------------------------------------------------------------
+// The class table: one entry per library class; the Modelica parameter declarations, the Rust
+// validation and `known_classes` all come from it.
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Domain {
+    Motor,
+    Gear,
+    Controller,
+}
+
+impl Domain {
+    fn name(self) -> &'static str {
+        match self {
+            Domain::Motor => "motor",
+            Domain::Gear => "gear",
+            Domain::Controller => "controller",
+        }
+    }
+}
+
+// Every library parameter is a Real so far; the other types are supported by the validation and
+// by `known_classes` for classes to come.
+#[allow(dead_code)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Ty {
+    Real,
+    Integer,
+    Boolean,
+    String,
+}
+
+impl Ty {
+    fn name(self) -> &'static str {
+        match self {
+            Ty::Real => "Real",
+            Ty::Integer => "Integer",
+            Ty::Boolean => "Boolean",
+            Ty::String => "String",
+        }
+    }
+}
+
+/// Allowed values of a numeric parameter.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Range {
+    Any,
+    Positive,
+    NonNegative,
+    NonZero,
+    /// 0 < x <= 1 (efficiencies).
+    Efficiency,
+}
+
+impl Range {
+    /// The rule broken by `x`, if any.
+    fn violated(self, x: f64) -> Option<&'static str> {
+        if !x.is_finite() {
+            return Some("is not finite");
+        }
+        match self {
+            Range::Any => None,
+            Range::Positive if x <= 0.0 => Some("must be > 0"),
+            Range::NonNegative if x < 0.0 => Some("must be >= 0"),
+            Range::NonZero if x == 0.0 => Some("must not be 0"),
+            Range::Efficiency if x <= 0.0 || x > 1.0 => Some("must be in (0, 1]"),
+            _ => None,
+        }
+    }
+
+    /// Modelica `min`/`max` attributes.
+    fn attributes(self) -> &'static str {
+        match self {
+            Range::Positive | Range::NonNegative => "min=0",
+            Range::Efficiency => "min=0, max=1",
+            Range::Any | Range::NonZero => "",
+        }
+    }
+}
+
+/// A parameter of a library class.
+#[derive(Clone, Copy, Debug)]
+struct Param {
+    name: &'static str,
+    ty: Ty,
+    /// Modelica unit string ("" for none).
+    unit: &'static str,
+    /// Declared type in the generated class (`SI.Resistance`, `Real`, ...).
+    mtype: &'static str,
+    /// Default value (a Modelica expression) in the generated class.
+    default: &'static str,
+    range: Range,
+    doc: &'static str,
+    /// Declared in the slot's interface (e.g. the gear `ratio`), not in the class itself.
+    inherited: bool,
+}
+
+/// A library class.
+#[derive(Clone, Copy, Debug)]
+struct Spec {
+    /// Library class path: `cad2mo.Drives...` (ours) or an MSL path (the model we wrap).
+    path: &'static str,
+    domain: Domain,
+    /// The generated class, relative to `<Pkg>.Components.Drives`.
+    class: &'static str,
+    /// The joint kind a gear fits (`None`: any joint).
+    fits: Option<JointKind>,
+    doc: &'static str,
+    params: &'static [Param],
+}
+
+const fn real(
+    name: &'static str,
+    unit: &'static str,
+    mtype: &'static str,
+    default: &'static str,
+    range: Range,
+    doc: &'static str,
+) -> Param {
+    Param { name, ty: Ty::Real, unit, mtype, default, range, doc, inherited: false }
+}
+
+const fn inherited(p: Param) -> Param {
+    Param { inherited: true, ..p }
+}
+
+const RATIO: Param = real("ratio", "1", "Real", "1", Range::NonZero, "Transmission ratio: motor speed / joint speed");
+
+static SPECS: &[Spec] = &[
+    Spec {
+        path: "cad2mo.Drives.Motors.DCPermanentMagnet",
+        domain: Domain::Motor,
+        class: "Motors.DCPermanentMagnet",
+        fits: None,
+        doc: "DC permanent-magnet motor with an inner current loop and voltage and current limits (our own equations)",
+        params: &[
+            real("R", "Ohm", "SI.Resistance", "0.299", Range::NonNegative, "Armature resistance"),
+            real("L", "H", "SI.Inductance", "8.2e-5", Range::Positive, "Armature inductance"),
+            real("k", "N.m/A", "SI.ElectricalTorqueConstant", "0.0302", Range::Positive, "Torque constant = back-EMF constant (V.s/rad)"),
+            real("J", "kg.m2", "SI.Inertia", "1.42e-5", Range::Positive, "Rotor inertia"),
+            real("d", "N.m.s/rad", "SI.RotationalDampingConstant", "0", Range::NonNegative, "Viscous friction of the rotor"),
+            real("V_max", "V", "SI.Voltage", "24", Range::Positive, "Supply voltage: limit of the armature voltage"),
+            real("I_max", "A", "SI.Current", "10", Range::Positive, "Current limit of the drive"),
+            real("Tc", "s", "SI.Time", "0.001", Range::Positive, "Time constant of the current loop (proportional gain L/Tc)"),
+        ],
+    },
+    Spec {
+        path: "Modelica.Electrical.Machines.BasicMachines.DCMachines.DC_PermanentMagnet",
+        domain: Domain::Motor,
+        class: "Motors.MSL_DC_PermanentMagnet",
+        fits: None,
+        doc: "The MSL DC permanent-magnet machine fed by a controlled voltage source with a current loop",
+        params: &[
+            real("VaNominal", "V", "SI.Voltage", "100", Range::Positive, "Nominal armature voltage"),
+            real("IaNominal", "A", "SI.Current", "100", Range::Positive, "Nominal armature current (> 0: motor)"),
+            real("wNominal", "rad/s", "SI.AngularVelocity", "149.22565104551518", Range::Positive, "Nominal speed (1425 rpm by default)"),
+            real("TaNominal", "K", "SI.Temperature", "293.15", Range::Positive, "Nominal armature temperature"),
+            real("Ra", "Ohm", "SI.Resistance", "0.05", Range::NonNegative, "Armature resistance at TaRef"),
+            real("TaRef", "K", "SI.Temperature", "293.15", Range::Positive, "Reference temperature of the armature resistance"),
+            real("alpha20a", "1/K", "Modelica.Electrical.Machines.Thermal.LinearTemperatureCoefficient20", "0", Range::Any, "Temperature coefficient of the armature resistance at 20 degC"),
+            real("La", "H", "SI.Inductance", "0.0015", Range::Positive, "Armature inductance"),
+            real("Jr", "kg.m2", "SI.Inertia", "0.15", Range::Positive, "Rotor inertia"),
+            real("Js", "kg.m2", "SI.Inertia", "Jr", Range::Positive, "Stator inertia (the stator is fixed here)"),
+            real("TaOperational", "K", "SI.Temperature", "293.15", Range::Positive, "Operational armature temperature"),
+        ],
+    },
+    Spec {
+        path: "Modelica.Mechanics.Rotational.Components.IdealGear",
+        domain: Domain::Gear,
+        class: "Gears.Ideal",
+        fits: Some(JointKind::Revolute),
+        doc: "Ideal gear (MSL IdealGear)",
+        params: &[inherited(RATIO)],
+    },
+    Spec {
+        path: "cad2mo.Drives.Gears.Efficiency",
+        domain: Domain::Gear,
+        class: "Gears.Efficiency",
+        fits: Some(JointKind::Revolute),
+        doc: "Gear with a constant efficiency (MSL LossyGear, lossTable=[0, eta, eta, 0, 0])",
+        params: &[
+            inherited(RATIO),
+            real("eta", "1", "Real", "1", Range::Efficiency, "Efficiency in both directions of power flow"),
+        ],
+    },
+    Spec {
+        path: "cad2mo.Drives.Gears.LeadScrew",
+        domain: Domain::Gear,
+        class: "Gears.LeadScrew",
+        fits: Some(JointKind::Prismatic),
+        doc: "Ideal gearbox and lead screw for prismatic joints (MSL IdealGearR2T)",
+        params: &[
+            real("ratio", "1", "Real", "1", Range::NonZero, "Gearbox ratio: motor speed / screw speed"),
+            real("lead", "m", "SI.Length", "0.005", Range::NonZero, "Screw lead: joint travel per screw revolution"),
+        ],
+    },
+    Spec {
+        path: "cad2mo.Drives.Controllers.CascadePPI",
+        domain: Domain::Controller,
+        class: "Controllers.CascadePPI",
+        fits: None,
+        doc: "Cascade controller: P position loop, PI speed loop (as MSL RobotR3.Components.Controller)",
+        params: &[
+            real("kp", "1/s", "Real", "10", Range::NonNegative, "Gain of the position controller"),
+            real("ks", "A.s/rad", "Real", "0.05", Range::NonNegative, "Gain of the speed controller"),
+            real("Ts", "s", "SI.Time", "0.05", Range::Positive, "Time constant of the speed controller's integrator"),
+        ],
+    },
+];
+
+fn spec(path: &str) -> Option<&'static Spec> {
+    SPECS.iter().find(|s| s.path == path)
+}
+
+/// The classes the motor library may refer to, with their parameters.
+pub fn known_classes() -> Vec<KnownClass> {
+    type Params = Vec<(&'static str, &'static str, &'static str)>;
+    static PARAMS: OnceLock<Vec<Params>> = OnceLock::new();
+    let params =
+        PARAMS.get_or_init(|| SPECS.iter().map(|s| s.params.iter().map(|p| (p.name, p.ty.name(), p.unit)).collect()).collect());
+    SPECS
+        .iter()
+        .zip(params.iter())
+        .map(|(s, p)| KnownClass { modelica_class: s.path, domain: s.domain.name(), params: p.as_slice() })
+        .collect()
+}
+
+// ---------------------------------------------------------------------------------------------
+// Text helpers.
+
+/// Shortest round-trip decimal; `-0` prints as `0`.
+fn num(x: f64) -> String {
+    let x = if x == 0.0 { 0.0 } else { x };
+    format!("{x:?}")
+}
+
+/// Escapes text for a Modelica string literal.
+fn mstr(s: &str) -> String {
+    s.replace('\\', "\\\\").replace('"', "\\\"")
+}
+
+/// Escapes text for HTML inside a Modelica string literal.
+fn html(s: &str) -> String {
+    mstr(&s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;"))
+}
+
+/// `[A-Za-z_][A-Za-z0-9_]*`, not a keyword.
+fn is_identifier(s: &str) -> bool {
+    let mut chars = s.chars();
+    let first_ok = chars.next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_');
+    first_ok && chars.all(|c| c.is_ascii_alphanumeric() || c == '_') && !KEYWORDS.contains(&s)
+}
+
+fn value_text(v: &ParamValue) -> String {
+    match v {
+        ParamValue::Real(x) => num(*x),
+        ParamValue::Integer(i) => i.to_string(),
+        ParamValue::Boolean(b) => b.to_string(),
+        ParamValue::String(s) => format!("\"{}\"", mstr(s)),
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Validation.
+
+/// A validated slot: the class and its modifiers in the class table's order.
+struct Slot {
+    spec: &'static Spec,
+    /// (name, Modelica value text).
+    values: Vec<(&'static str, String)>,
+}
+
+fn slot(joint: &str, kind: JointKind, domain: Domain, choice: &ClassChoice) -> Result<Slot, MechatronicsError> {
+    let class = choice.modelica_class.as_str();
+    let spec = match spec(class) {
+        Some(s) if s.domain == domain => s,
+        other => {
+            return Err(MechatronicsError::UnknownClass {
+                joint: joint.to_string(),
+                slot: domain.name(),
+                class: class.to_string(),
+                found: other.map(|s| format!(" (it is a {} class)", s.domain.name())).unwrap_or_default(),
+            })
+        }
+    };
+    if let Some(fits) = spec.fits {
+        if fits != kind {
+            return Err(MechatronicsError::GearDoesNotFitJoint {
+                joint: joint.to_string(),
+                class: class.to_string(),
+                fits: fits.name(),
+                kind: kind.name(),
+            });
+        }
+    }
+    let mut given: Vec<Option<String>> = vec![None; spec.params.len()];
+    for (name, value) in &choice.params {
+        let Some(i) = spec.params.iter().position(|p| p.name == name) else {
+            return Err(MechatronicsError::UnknownParameter {
+                joint: joint.to_string(),
+                class: class.to_string(),
+                param: name.clone(),
+                known: spec.params.iter().map(|p| p.name).collect::<Vec<_>>().join(", "),
+            });
+        };
+        let p = &spec.params[i];
+        if given[i].is_some() {
+            return Err(MechatronicsError::DuplicateParameter {
+                joint: joint.to_string(),
+                class: class.to_string(),
+                param: name.clone(),
+            });
+        }
+        // Modelica widens Integer to Real; every other mismatch is an error.
+        let x = match (p.ty, value) {
+            (Ty::Real, ParamValue::Real(x)) => Some(*x),
+            (Ty::Real, ParamValue::Integer(i)) => Some(*i as f64),
+            (Ty::Integer, ParamValue::Integer(i)) => Some(*i as f64),
+            (Ty::Boolean, ParamValue::Boolean(_)) | (Ty::String, ParamValue::String(_)) => None,
+            _ => {
+                return Err(MechatronicsError::WrongType {
+                    joint: joint.to_string(),
+                    class: class.to_string(),
+                    param: name.clone(),
+                    expected: p.ty.name(),
+                    got: value.type_name(),
+                })
+            }
+        };
+        if let Some(x) = x {
+            if let Some(rule) = p.range.violated(x) {
+                return Err(MechatronicsError::OutOfRange {
+                    joint: joint.to_string(),
+                    class: class.to_string(),
+                    param: name.clone(),
+                    value: num(x),
+                    rule,
+                });
+            }
+        }
+        given[i] = Some(match (p.ty, value) {
+            (Ty::Real, ParamValue::Integer(i)) => num(*i as f64),
+            _ => value_text(value),
+        });
+    }
+    let values = spec.params.iter().zip(given).filter_map(|(p, v)| v.map(|v| (p.name, v))).collect();
+    Ok(Slot { spec, values })
+}
+
+/// The reference as emitted: a constant or a table whose first point is at t <= 0.
+enum Ref {
+    Constant(f64),
+    Table(Vec<(f64, f64)>),
+}
+
+fn reference(joint: &str, start: f64, r: &Reference) -> Result<Ref, MechatronicsError> {
+    let bad = |reason: String| MechatronicsError::BadReference { joint: joint.to_string(), reason };
+    if !start.is_finite() {
+        return Err(bad(format!("the joint's start value {start} is not finite")));
+    }
+    match r {
+        Reference::Constant(c) if c.is_finite() => Ok(Ref::Constant(*c)),
+        Reference::Constant(c) => Err(bad(format!("constant {c} is not finite"))),
+        Reference::Table(points) if points.is_empty() => Ok(Ref::Constant(start)),
+        Reference::Table(points) => {
+            for (k, (t, y)) in points.iter().enumerate() {
+                if !t.is_finite() || !y.is_finite() {
+                    return Err(bad(format!("point {} ({t}, {y}) is not finite", k + 1)));
+                }
+                if k > 0 && *t < points[k - 1].0 {
+                    return Err(bad(format!("time {t} of point {} is before the time of point {k}", k + 1)));
+                }
+                if k > 1 && *t == points[k - 1].0 && *t == points[k - 2].0 {
+                    return Err(bad(format!("time {t} appears more than twice")));
+                }
+            }
+            let mut table = Vec::with_capacity(points.len() + 1);
+            if points[0].0 > 0.0 {
+                table.push((0.0, start));
+            }
+            table.extend_from_slice(points);
+            match table.as_slice() {
+                // One point at t <= 0: a constant (CombiTimeTable wants two rows).
+                [(_, y)] => Ok(Ref::Constant(*y)),
+                _ => Ok(Ref::Table(table)),
+            }
+        }
+    }
+}
+
+struct Drive<'a> {
+    plan: &'a DrivePlan,
+    motor: Slot,
+    gear: Slot,
+    controller: Slot,
+    reference: Ref,
+}
+
+fn validate(drives: &[DrivePlan]) -> Result<Vec<Drive<'_>>, MechatronicsError> {
+    let mut seen = BTreeSet::new();
+    let mut out = Vec::with_capacity(drives.len());
+    for plan in drives {
+        let joint = plan.joint.as_str();
+        if !is_identifier(joint) {
+            return Err(MechatronicsError::BadJointName { joint: joint.to_string() });
+        }
+        if !seen.insert(joint) {
+            return Err(MechatronicsError::DuplicateJoint { joint: joint.to_string() });
+        }
+        out.push(Drive {
+            plan,
+            motor: slot(joint, plan.kind, Domain::Motor, &plan.motor)?,
+            gear: slot(joint, plan.kind, Domain::Gear, &plan.gear)?,
+            controller: slot(joint, plan.kind, Domain::Controller, &plan.controller)?,
+            reference: reference(joint, plan.start, &plan.reference)?,
+        });
+    }
+    Ok(out)
+}
+
+// ---------------------------------------------------------------------------------------------
+// Mechatronics.mo
+
+/// `redeclare <class> <name>(p=v, ...)`, one modifier a line.
+fn redeclare(pkg: &str, name: &str, slot: &Slot) -> String {
+    let class = format!("{pkg}.Components.Drives.{}", slot.spec.class);
+    if slot.values.is_empty() {
+        return format!("    redeclare {class} {name}");
+    }
+    let mods: Vec<String> = slot.values.iter().map(|(n, v)| format!("      {n}={v}")).collect();
+    format!("    redeclare {class} {name}(\n{})", mods.join(",\n"))
+}
+
+fn table_text(points: &[(f64, f64)]) -> String {
+    let rows: Vec<String> = points.iter().map(|(t, y)| format!("{}, {}", num(*t), num(*y))).collect();
+    format!("[{}]", rows.join("; "))
+}
+
+fn slot_html(slot: &Slot) -> String {
+    let values = if slot.values.is_empty() {
+        "defaults".to_string()
+    } else {
+        slot.values
+            .iter()
+            .map(|(n, v)| {
+                let unit = slot.spec.params.iter().find(|p| p.name == *n).map_or("", |p| p.unit);
+                if unit.is_empty() || unit == "1" {
+                    format!("{n}={}", html(v))
+                } else {
+                    format!("{n}={} {}", html(v), html(unit))
+                }
+            })
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    format!("<code>{}</code> ({values})", html(slot.spec.class))
+}
+
+fn reference_html(r: &Ref, kind: JointKind, start: f64) -> String {
+    let u = kind.unit();
+    match r {
+        Ref::Constant(c) if *c == start => format!("constant {} {u} (holds the start value)", num(*c)),
+        Ref::Constant(c) => format!("constant {} {u} (a step from the start value {} {u} at t = 0)", num(*c), num(start)),
+        Ref::Table(t) => {
+            let (t0, t1) = (t[0].0, t[t.len() - 1].0);
+            format!("table of {} points from t = {} s to {} s (linear, last value held)", t.len(), num(t0), num(t1))
+        }
+    }
+}
+
+/// Writes `<pkg>/Mechatronics.mo`: Mechanics plus one drive per plan. `provenance_html` is the
+/// HTML paragraph saying where the model came from (it is escaped for the string literal only).
+pub fn mechatronics(
+    pkg: &str,
+    drives: &[DrivePlan],
+    provenance_html: &str,
+) -> Result<Vec<(String, Vec<u8>)>, MechatronicsError> {
+    if !is_identifier(pkg) {
+        return Err(MechatronicsError::BadPackageName(pkg.to_string()));
+    }
+    let drives = validate(drives)?;
+    let mut decl = String::new();
+    let mut conn = String::new();
+    let mut rows = String::new();
+    let mut stop_time: f64 = 1.0;
+    for (i, d) in drives.iter().enumerate() {
+        let p = d.plan;
+        let joint = &p.joint;
+        let name = format!("drive_{joint}");
+        let model = match p.kind {
+            JointKind::Revolute => "JointDrive",
+            JointKind::Prismatic => "LinearJointDrive",
+        };
+        let reference = match &d.reference {
+            Ref::Constant(c) => format!("    useTable=false,\n    q_constant={}", num(*c)),
+            Ref::Table(t) => {
+                if let Some(last) = t.last() {
+                    stop_time = stop_time.max(last.0);
+                }
+                format!("    useTable=true,\n    table={}", table_text(t))
+            }
+        };
+        let label = if p.label.trim().is_empty() { format!("joint {joint}") } else { p.label.clone() };
+        let y = -(i as i64) * 30;
+        let _ = writeln!(
+            decl,
+            "  {pkg}.Components.Drives.{model} {name}(\n{},\n{},\n{},\n{})\n    \"Drive of {}\"\n    annotation (Placement(transformation(extent={{{{-10,-10}},{{10,10}}}}, origin={{-100,{y}}})));",
+            redeclare(pkg, "motor", &d.motor),
+            redeclare(pkg, "gear", &d.gear),
+            redeclare(pkg, "controller", &d.controller),
+            reference,
+            mstr(&label)
+        );
+        let _ = writeln!(conn, "  connect({name}.flange, {joint}.drive);");
+        let _ = write!(
+            rows,
+            "\n<tr><td><code>{}</code></td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>",
+            html(joint),
+            html(&label),
+            slot_html(&d.motor),
+            slot_html(&d.gear),
+            slot_html(&d.controller),
+            html(&reference_html(&d.reference, p.kind, p.start))
+        );
+    }
+    let body = if drives.is_empty() {
+        "<p>No drive is assigned: every joint is free, as in <code>Mechanics</code>. Assign motors, gears and controllers to joints in the motor library and regenerate this model.</p>".to_string()
+    } else {
+        format!(
+            "<p>Drives (motor, gear and controller classes under <code>Components.Drives</code>; the controllers drive the joint angle or position to the reference):</p>\n<table border='1' cellspacing='0' cellpadding='2'>\n<tr><th>Joint</th><th>CAD joint</th><th>Motor</th><th>Gear</th><th>Controller</th><th>Reference</th></tr>{rows}\n</table>"
+        )
+    };
+    let count = match drives.len() {
+        0 => "no joint drive".to_string(),
+        1 => "1 joint drive".to_string(),
+        n => format!("{n} joint drives"),
+    };
+    let decl = if drives.is_empty() {
+        String::new()
+    } else {
+        format!("\n  // Drives: reference -> controller -> motor -> gear -> joint drive flange\n{}", decl.trim_end_matches('\n'))
+    };
+    let text = format!(
+        "within {pkg};\nmodel Mechatronics \"Mechatronic model of {pkg}: Mechanics with {count}\"\n  extends {pkg}.Mechanics;\n{decl}\nequation\n{conn}  annotation (\n    experiment(StopTime={}),\n    Documentation(info=\"<html>\n{}\n<p><code>Mechatronics</code> extends <code>Mechanics</code> and refers to joints by name only: a <code>Mechanics</code> regenerated after a CAD change slots under it unchanged. Generated by cad2mo {}.</p>\n{}\n</html>\"));\nend Mechatronics;\n",
+        num(stop_time),
+        mstr(provenance_html),
+        html(crate::pipeline::VERSION),
+        body
+    );
+    Ok(vec![(format!("{pkg}/Mechatronics.mo"), text.into_bytes())])
+}
+
+/// The drive library, `<pkg>/Components/Drives/...`: written into every package (the line
+/// `Drives` belongs in `<pkg>/Components/package.order`).
+pub fn components(pkg: &str) -> Vec<(String, Vec<u8>)> {
+    classes::files(pkg)
+}
