@@ -27,3 +27,32 @@ async fn restart_keeps_the_database() {
     let app = TestApp::spawn_in(dir, |_| {}).await;
     assert_eq!(app.health().await.status(), 200);
 }
+
+#[tokio::test]
+async fn tokens_guard_models_and_writes_when_auth_is_required() {
+    let app = TestApp::spawn_with(|s| s.force_auth = true).await;
+    // No token: models are closed, the health check and library reads are open.
+    let r = app.get("/api/models").await;
+    assert_eq!(r.status(), 401);
+    assert_eq!(r.headers()["content-type"], "application/problem+json");
+    assert_eq!(r.headers()["www-authenticate"], "Bearer");
+    assert_eq!(app.health().await.status(), 200);
+    assert_eq!(app.get("/api/library/classes").await.status(), 200);
+    let r = app.client.post(app.url("/api/library/instances")).json(&serde_json::json!({})).send().await.expect("post");
+    assert_eq!(r.status(), 401);
+    // A wrong token is refused; a created one is accepted.
+    let r = app.client.get(app.url("/api/models")).bearer_auth("c2m_wrong").send().await.expect("get");
+    assert_eq!(r.status(), 401);
+    let url = format!("sqlite://{}?mode=rwc", app.data_dir().join("cad2mo.db").display());
+    let store = cad2mo::store::Store::open(&url).await.expect("store");
+    let token = cad2mo::store::tokens::create(&store, "test").await.expect("token");
+    let r = app.client.get(app.url("/api/models")).bearer_auth(&token).send().await.expect("get");
+    assert_eq!(r.status(), 200);
+    // Only the hash is stored.
+    let stored: Vec<(String,)> = sqlx_rows(&store).await;
+    assert!(stored.iter().all(|(h,)| h != &token && h.len() == 64));
+}
+
+async fn sqlx_rows(store: &cad2mo::store::Store) -> Vec<(String,)> {
+    cad2mo::store::tokens::hashes(store).await.expect("hashes").into_iter().map(|h| (h,)).collect()
+}

@@ -41,11 +41,28 @@ enum Command {
     },
     /// Run the HTTP service (SQLite database created and migrated on start).
     Serve(crate::config::ServeArgs),
+    /// Manage API tokens (required when the service listens beyond loopback).
+    Token {
+        #[command(subcommand)]
+        command: TokenCommand,
+    },
     /// Print the conversion report (JSON) of a bundle without writing a package.
     Inspect {
         bundle: PathBuf,
         #[arg(long)]
         lump_welds: bool,
+    },
+}
+
+#[derive(Subcommand, Debug)]
+enum TokenCommand {
+    /// Create a token and print it (only its hash is stored: keep it).
+    Create {
+        /// A name to recognise the token by.
+        #[arg(long, default_value = "cli")]
+        name: String,
+        #[command(flatten)]
+        service: crate::config::ServeArgs,
     },
 }
 
@@ -128,6 +145,26 @@ pub fn main() -> ExitCode {
     let limits = Limits::default();
     match cli.command {
         Command::Serve(args) => serve(crate::config::Settings::from_args(args)),
+        Command::Token { command: TokenCommand::Create { name, service } } => {
+            let settings = crate::config::Settings::from_args(service);
+            let result = runtime().map_err(anyhow::Error::from).and_then(|rt| {
+                rt.block_on(async {
+                    std::fs::create_dir_all(&settings.data_dir)?;
+                    let store = crate::store::Store::open(&settings.database_url).await?;
+                    Ok::<_, anyhow::Error>(crate::store::tokens::create(&store, &name).await?)
+                })
+            });
+            match result {
+                Ok(token) => {
+                    println!("{token}");
+                    ExitCode::SUCCESS
+                }
+                Err(e) => {
+                    eprintln!("error: {e:#}");
+                    ExitCode::from(1)
+                }
+            }
+        }
         Command::Convert { bundle, output, package_name, gravity, lump_welds } => {
             if let Some(p) = &package_name {
                 if pipeline::back::modelica::sanitize(p, "P") != *p {

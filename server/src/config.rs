@@ -24,6 +24,9 @@ pub struct ServeArgs {
     /// Conversion worker threads (default: the number of cores).
     #[arg(long, env = "CAD2MO_WORKERS")]
     pub workers: Option<usize>,
+    /// Require bearer tokens even on loopback (they are always required beyond it).
+    #[arg(long, env = "CAD2MO_REQUIRE_AUTH")]
+    pub require_auth: bool,
 }
 
 /// The service's settings.
@@ -34,6 +37,8 @@ pub struct Settings {
     pub data_dir: PathBuf,
     pub max_upload: u64,
     pub workers: usize,
+    /// Require tokens even on loopback.
+    pub force_auth: bool,
 }
 
 impl Settings {
@@ -45,7 +50,14 @@ impl Settings {
             .workers
             .filter(|w| *w > 0)
             .unwrap_or_else(|| std::thread::available_parallelism().map(|n| n.get()).unwrap_or(2));
-        Settings { bind: a.bind, database_url, data_dir: a.data_dir, max_upload: a.max_upload, workers }
+        Settings {
+            bind: a.bind,
+            database_url,
+            data_dir: a.data_dir,
+            max_upload: a.max_upload,
+            workers,
+            force_auth: a.require_auth,
+        }
     }
 
     /// Settings for tests: port 0 on loopback, everything under `dir`.
@@ -56,11 +68,12 @@ impl Settings {
             data_dir: dir.to_path_buf(),
             max_upload: 64 * 1024 * 1024,
             workers: 2,
+            force_auth: false,
         }
     }
 
     /// Whether the service requires bearer tokens (it listens beyond loopback).
     pub fn requires_auth(&self) -> bool {
-        !self.bind.ip().is_loopback()
+        self.force_auth || !self.bind.ip().is_loopback()
     }
 }

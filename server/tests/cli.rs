@@ -67,3 +67,13 @@ fn missing_input_exits_1() {
     assert_eq!(st.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&st.stderr).contains("/nonexistent/bundle.zip"));
 }
+
+#[test]
+fn token_create_prints_a_token_once() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let st = bin().args(["token", "create", "--name", "ci", "--data-dir"]).arg(dir.path()).output().expect("run");
+    assert!(st.status.success(), "{}", String::from_utf8_lossy(&st.stderr));
+    let token = String::from_utf8_lossy(&st.stdout).trim().to_string();
+    assert!(token.starts_with("c2m_") && token.len() > 40, "{token}");
+    assert!(dir.path().join("cad2mo.db").exists());
+}

@@ -1,6 +1,7 @@
 //! The HTTP API: the only module that knows HTTP. Each resource module owns its `router()`;
 //! they are merged here in reading order. DTOs are private to their modules, never IR types.
 
+mod auth;
 mod drives;
 pub mod error;
 mod health;
@@ -22,5 +23,6 @@ pub fn router(state: AppState) -> Router {
         .merge(jobs::router())
         .merge(library::router())
         .merge(drives::router())
+        .layer(axum::middleware::from_fn_with_state(state.clone(), auth::require_token))
         .with_state(state)
 }

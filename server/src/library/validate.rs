@@ -84,14 +84,6 @@ fn json_kind(v: &Json) -> &'static str {
     }
 }
 
-fn unit_text(unit: &str) -> String {
-    if unit.is_empty() {
-        "no unit".to_string()
-    } else {
-        format!("unit \"{unit}\"")
-    }
-}
-
 fn describe_number(x: f64, unit: &str) -> String {
     Value::Real(x).describe(unit)
 }

@@ -7,7 +7,7 @@ use nalgebra::Matrix4;
 
 use super::ast::*;
 use super::geom::{self, BadIndex};
-use super::parse::Loader;
+use super::parse::{Loader, R};
 use super::resolve::resolve_url;
 use super::scene::{NodeId, Scene, SceneNode, ShapeGeom};
 use super::{VrmlError, VrmlErrorKind, MAX_DEPTH, MAX_SCENE_NODES, MAX_SHAPES, MAX_TRIANGLES};
@@ -41,8 +41,8 @@ pub(super) struct Eval<'l, 'b> {
     shapes: usize,
 }
 
-fn node_error(n: &Node, kind: VrmlErrorKind) -> VrmlError {
-    VrmlError { file: n.file.to_string(), line: n.line, column: n.col, kind }
+fn node_error(n: &Node, kind: VrmlErrorKind) -> Box<VrmlError> {
+    Box::new(VrmlError { file: n.file.to_string(), line: n.line, column: n.col, kind })
 }
 
 /// The node a PROTO instance stands for.

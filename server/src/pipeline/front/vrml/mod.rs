@@ -186,10 +186,10 @@ pub enum VrmlErrorKind {
 /// EXTERNPROTOs inside the bundle. Returns the scene and the warnings.
 pub fn parse(bundle: &Bundle, main: &str) -> Result<(Scene, Vec<Warning>), VrmlError> {
     let mut ld = parse::Loader::new(bundle);
-    let file = ld.load(main)?;
+    let file = ld.load(main).map_err(|e| *e)?;
     let scene = {
         let mut ev = eval::Eval::new(&mut ld, main);
-        ev.run(&file)?;
+        ev.run(&file).map_err(|e| *e)?;
         std::mem::take(&mut ev.scene)
     };
     let mut scene = scene;

@@ -76,8 +76,8 @@ impl<'b> Loader<'b> {
         }
     }
 
-    fn whole_file_error(path: &str, kind: VrmlErrorKind) -> VrmlError {
-        VrmlError { file: path.to_string(), line: 0, column: 0, kind }
+    fn whole_file_error(path: &str, kind: VrmlErrorKind) -> Box<VrmlError> {
+        Box::new(VrmlError { file: path.to_string(), line: 0, column: 0, kind })
     }
 
     /// The parsed file at bundle path `path` (parsed on first use).
@@ -134,6 +134,9 @@ fn parse_text(ld: &mut Loader<'_>, path: &str, text: &[u8]) -> R<ParsedFile> {
     let roots = p.top_level()?;
     Ok(ParsedFile { version, roots, protos: p.protos.clone() })
 }
+
+/// Results inside the front end: errors boxed, so recursive frames stay small.
+pub(super) type R<T> = Result<T, Box<VrmlError>>;
 
 /// IS values of the PROTO instance whose body is being parsed.
 type Env = Rc<Vec<(String, Value)>>;
@@ -372,16 +375,16 @@ struct Parser<'a, 'b, 's> {
 }
 
 impl<'s> Parser<'_, '_, 's> {
-    fn err_at(&self, line: u32, column: u32, kind: VrmlErrorKind) -> VrmlError {
-        VrmlError { file: self.file.to_string(), line, column, kind }
+    fn err_at(&self, line: u32, column: u32, kind: VrmlErrorKind) -> Box<VrmlError> {
+        Box::new(VrmlError { file: self.file.to_string(), line, column, kind })
     }
 
-    fn err(&self, kind: VrmlErrorKind) -> VrmlError {
+    fn err(&self, kind: VrmlErrorKind) -> Box<VrmlError> {
         let (line, col) = self.lx.loc();
         self.err_at(line, col, kind)
     }
 
-    fn lex(&self, e: LexError) -> VrmlError {
+    fn lex(&self, e: LexError) -> Box<VrmlError> {
         self.err(match e {
             LexError::BadNumber(text) => VrmlErrorKind::BadNumber { text },
             LexError::UnterminatedString => VrmlErrorKind::UnterminatedString,
@@ -389,7 +392,7 @@ impl<'s> Parser<'_, '_, 's> {
         })
     }
 
-    fn expected(&mut self, what: &'static str) -> VrmlError {
+    fn expected(&mut self, what: &'static str) -> Box<VrmlError> {
         let e = self.lx.expected(what);
         self.lex(e)
     }
@@ -416,8 +419,6 @@ impl<'s> Parser<'_, '_, 's> {
 
     fn enter(&mut self) -> R<()> {
         self.depth += 1;
-        let probe = 0u8;
-        if self.depth == 10 || self.depth == 60 { eprintln!("STACKPROBE {} {}", self.depth, &probe as *const u8 as usize); }
         if self.depth > MAX_DEPTH {
             return Err(self.err(VrmlErrorKind::TooDeep { limit: MAX_DEPTH }));
         }
@@ -704,12 +705,40 @@ impl<'s> Parser<'_, '_, 's> {
 
     /// A value of type `ty`.
     fn value(&mut self, ty: FieldType) -> R<Value> {
+        match ty {
+            FieldType::SFNode | FieldType::MFNode => self.node_value(ty == FieldType::MFNode),
+            _ => self.plain_value(ty),
+        }
+    }
+
+    /// An SFNode or MFNode value.
+    fn node_value(&mut self, multi: bool) -> R<Value> {
+        let mut v = Vec::new();
+        if multi && self.lx.eat(b'[') {
+            loop {
+                if self.lx.peek() == Some(b']') {
+                    self.lx.pos += 1;
+                    break;
+                }
+                if let Some(n) = self.node()? {
+                    v.push(n);
+                }
+            }
+        } else if let Some(n) = self.node()? {
+            v.push(n);
+        }
+        Ok(Value::Nodes(v))
+    }
+
+    /// A value of a type other than SFNode / MFNode (not recursive: kept out of the recursive
+    /// frames).
+    #[inline(never)]
+    fn plain_value(&mut self, ty: FieldType) -> R<Value> {
         use FieldType::*;
         Ok(match ty {
             SFBool => Value::Bools(vec![self.bool()?]),
             SFInt32 => Value::Ints(vec![self.int()?]),
             SFString => Value::Strings(vec![self.lx.string().map_err(|e| self.lex(e))?]),
-            SFNode => Value::Nodes(self.node()?.into_iter().collect()),
             SFEnum => Value::Strings(self.enum_value()?),
             SFImage => {
                 let w = self.int()?;
@@ -728,23 +757,6 @@ impl<'s> Parser<'_, '_, 's> {
                     v.push(self.float()?);
                 }
                 Value::Floats(v)
-            }
-            MFNode => {
-                let mut v = Vec::new();
-                if self.lx.eat(b'[') {
-                    loop {
-                        if self.lx.peek() == Some(b']') {
-                            self.lx.pos += 1;
-                            break;
-                        }
-                        if let Some(n) = self.node()? {
-                            v.push(n);
-                        }
-                    }
-                } else if let Some(n) = self.node()? {
-                    v.push(n);
-                }
-                Value::Nodes(v)
             }
             MFString => {
                 let mut v = Vec::new();
@@ -784,6 +796,7 @@ impl<'s> Parser<'_, '_, 's> {
                 Value::Bools(v)
             }
             MFVec3f | MFColor => Value::Vec3(self.vec3_list()?),
+            SFNode | MFNode => Value::Skipped,
             MFFloat | MFTime | MFVec2f | MFRotation => {
                 let mut v = Vec::new();
                 if self.lx.eat(b'[') {
@@ -799,7 +812,7 @@ impl<'s> Parser<'_, '_, 's> {
     }
 
     /// MFVec3f: straight into `f32` triples.
-    fn vec3_list(&mut self) -> Result<Vec<[f32; 3]>, VrmlError> {
+    fn vec3_list(&mut self) -> R<Vec<[f32; 3]>> {
         let mut v = Vec::new();
         if !self.lx.eat(b'[') {
             let x = self.float()?;

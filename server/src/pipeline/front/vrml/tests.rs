@@ -1243,13 +1243,3 @@ fn fixtures_agree_with_vtk() {
     }
     println!("compared {compared} fixture files with VTK");
 }
-#[test]
-fn zz_probe() {
-    let n = 70;
-    let src = "Group { children [ ".repeat(n) + &"] } ".repeat(n);
-    let _ = parse_files(&[("main.wrl", &src)], "main.wrl");
-    let src = "Transform { children ".repeat(n) + &"} ".repeat(n);
-    let _ = parse_files(&[("main.wrl", &src)], "main.wrl");
-    let src = "PROTO P [ field MFNode c [] ] { Group { children IS c } }\n".to_string() + &"P { c ".repeat(n) + &"} ".repeat(n);
-    let _ = parse_files(&[("main.wrl", &src)], "main.wrl");
-}
