@@ -62,7 +62,10 @@ async fn upload_convert_and_download() {
 
     let job = app.wait_for_job(job_id).await;
     assert_eq!(job["status"], "succeeded", "{job:#}");
-    assert_eq!((job["kind"].as_str(), job["model_id"].as_str(), job["version"].as_i64()), (Some("convert"), Some(model_id), Some(1)));
+    assert_eq!(
+        (job["kind"].as_str(), job["model_id"].as_str(), job["version"].as_i64()),
+        (Some("convert"), Some(model_id), Some(1))
+    );
     assert!(job.get("error").is_none());
     for t in ["created_at", "started_at", "finished_at"] {
         assert!(job[t].as_str().is_some_and(|s| s.ends_with('Z')), "{t} in {job}");
@@ -125,7 +128,10 @@ async fn versions_list_get_delete() {
     let m = json(app.model(&id).await, 200).await;
     assert_eq!(m["versions"].as_array().map(Vec::len), Some(2));
     let v = json(app.version(&id, 2).await, 200).await;
-    assert_eq!(v["options"], serde_json::json!({"package_name": "Pend", "gravity": [0.0, 0.0, -9.81], "lump_welds": true}));
+    assert_eq!(
+        v["options"],
+        serde_json::json!({"package_name": "Pend", "gravity": [0.0, 0.0, -9.81], "lump_welds": true})
+    );
     assert_eq!(v["summary"]["package_name"], "Pend");
     let r = app.package(&id, 2).await;
     assert!(zip_entries(&r.bytes().await.expect("bytes")).iter().any(|e| e == "Pend/Mechanics.mo"));
@@ -136,7 +142,10 @@ async fn versions_list_get_delete() {
     problem(app.delete_version(&id, 1).await, 404).await;
     problem(app.job(&job1).await, 404).await;
     let versions = json(app.versions(&id).await, 200).await;
-    assert_eq!(versions.as_array().map(|a| a.iter().map(|v| v["version"].as_i64()).collect::<Vec<_>>()), Some(vec![Some(2)]));
+    assert_eq!(
+        versions.as_array().map(|a| a.iter().map(|v| v["version"].as_i64()).collect::<Vec<_>>()),
+        Some(vec![Some(2)])
+    );
     let (_, v3, job3) = app.upload_version_ok(&id, pendulum(), &[]).await;
     assert_eq!(v3, 3);
     app.wait_for_job(&job3).await;
@@ -271,7 +280,13 @@ async fn bad_bundles_are_refused_with_problems() {
     let form = reqwest::multipart::Form::new().text("name", "x");
     let p = problem(app.post_model_form(form).await, 422).await;
     assert_eq!(p["errors"][0]["field"], "bundle");
-    let r = app.client.post(app.url("/api/models")).json(&serde_json::json!({"bundle": "x"})).send().await.expect("request");
+    let r = app
+        .client
+        .post(app.url("/api/models"))
+        .json(&serde_json::json!({"bundle": "x"}))
+        .send()
+        .await
+        .expect("request");
     problem(r, 400).await;
 
     // Nothing was created.
@@ -401,6 +416,38 @@ async fn interrupted_jobs_resume_after_a_restart() {
     let app = TestApp::spawn_in(dir, |_| {}).await;
     assert_eq!(app.wait_for_job(&job).await["status"], "succeeded");
     assert_eq!(app.package(&id, 1).await.status(), 200);
+}
+
+/// A conversion that fails in the worker (here: the stored bundle replaced behind the service's
+/// back by one whose XML is broken) keeps its problem: on the job, the version and downloads.
+#[tokio::test]
+async fn failed_conversions_keep_their_problem() {
+    let app = TestApp::spawn().await;
+    let (id, _, job) = app.upload_model_ok(pendulum(), &[]).await;
+    app.wait_for_job(&job).await;
+    let sha = json(app.version(&id, 1).await, 200).await["bundle"]["sha256"].as_str().expect("sha").to_string();
+    let dir = app.stop().await;
+    let blob = dir.path().join("blobs").join(&sha[..2]).join(&sha);
+    std::fs::write(&blob, zip_dir(&case("broken_dangling_ref"))).expect("tamper");
+    let store = open_store(dir.path()).await;
+    assert!(cad2mo::store::models::mark_interrupted(&store.pool, &job).await.expect("mark"));
+    store.pool.close().await;
+
+    let app = TestApp::spawn_in(dir, |_| {}).await;
+    let done = app.wait_for_job(&job).await;
+    assert_eq!(done["status"], "failed");
+    assert_eq!(done["error"]["type"], "/problems/conversion-failed", "{done:#}");
+    assert!(done["error"]["diagnostics"][0]["message"].as_str().expect("message").contains("9999"));
+    assert!(done["finished_at"].is_string());
+
+    let p = problem(app.package(&id, 1).await, 422).await;
+    assert_eq!(p, done["error"]);
+    problem(app.report(&id, 1).await, 422).await;
+    problem(app.diff(&id, 1, 1).await, 409).await;
+    let v = json(app.version(&id, 1).await, 200).await;
+    assert_eq!((v["status"].as_str(), &v["error"]), (Some("failed"), &done["error"]));
+    assert!(v.get("summary").is_none());
+    assert_eq!(json(app.models().await, 200).await[0]["latest_version"]["status"], "failed");
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 4)]

@@ -41,6 +41,17 @@ enum Command {
     },
     /// Run the HTTP service (SQLite database created and migrated on start).
     Serve(crate::config::ServeArgs),
+    /// Regenerate the latest version of models with the current motor library and drives.
+    Reexport {
+        /// Every model.
+        #[arg(long, conflicts_with = "model", required_unless_present = "model")]
+        all: bool,
+        /// One model, by id.
+        #[arg(long)]
+        model: Option<String>,
+        #[command(flatten)]
+        service: crate::config::ServeArgs,
+    },
     /// Manage API tokens (required when the service listens beyond loopback).
     Token {
         #[command(subcommand)]
@@ -145,6 +156,7 @@ pub fn main() -> ExitCode {
     let limits = Limits::default();
     match cli.command {
         Command::Serve(args) => serve(crate::config::Settings::from_args(args)),
+        Command::Reexport { all: _, model, service } => reexport(crate::config::Settings::from_args(service), model),
         Command::Token { command: TokenCommand::Create { name, service } } => {
             let settings = crate::config::Settings::from_args(service);
             let result = runtime().map_err(anyhow::Error::from).and_then(|rt| {
@@ -258,4 +270,78 @@ fn serve(settings: crate::config::Settings) -> ExitCode {
             ExitCode::from(1)
         }
     }
+}
+
+/// `cad2mo reexport`: queues re-export jobs and runs them with the service's own worker pool,
+/// drawing a progress bar on stderr. A failing model does not stop the others; the exit code is
+/// 1 when any failed.
+fn reexport(settings: crate::config::Settings, model: Option<String>) -> ExitCode {
+    use crate::store::models;
+    let result = runtime().map_err(anyhow::Error::from).and_then(|rt| {
+        rt.block_on(async {
+            std::fs::create_dir_all(&settings.data_dir)?;
+            let store = crate::store::Store::open(&settings.database_url).await?;
+            let blobs = crate::store::blobs::Blobs::new(&settings.data_dir)?;
+            let ids: Vec<(String, String)> = match &model {
+                Some(id) => match models::get_model(&store.pool, id).await? {
+                    Some(m) => vec![(m.id, m.name)],
+                    None => anyhow::bail!("no model {id}"),
+                },
+                None => models::list_models(&store.pool).await?.into_iter().map(|m| (m.id, m.name)).collect(),
+            };
+            let mut jobs = Vec::new();
+            let mut failed = Vec::new();
+            for (id, name) in &ids {
+                match models::queue_reexport(&store.pool, id).await? {
+                    Some((version, job)) => jobs.push((name.clone(), version, job)),
+                    None => failed.push(format!("{name} ({id}): no version to re-export")),
+                }
+            }
+            let pool = crate::jobs::Jobs::start(store.clone(), blobs, settings.workers).await?;
+            pool.notify();
+            let total = jobs.len();
+            let mut done = 0;
+            let mut pending = jobs;
+            while !pending.is_empty() {
+                tokio::time::sleep(std::time::Duration::from_millis(100)).await;
+                let mut still = Vec::new();
+                for (name, version, job) in pending {
+                    match models::get_job(&store.pool, &job).await? {
+                        Some(j) if j.status == "succeeded" => done += 1,
+                        Some(j) if j.status == "failed" => {
+                            done += 1;
+                            let detail = j.error_json.and_then(|e| serde_json::from_str::<serde_json::Value>(&e).ok());
+                            let detail = detail.and_then(|d| d["detail"].as_str().map(String::from)).unwrap_or_default();
+                            failed.push(format!("{name} v{version}: {detail}"));
+                        }
+                        _ => still.push((name, version, job)),
+                    }
+                }
+                pending = still;
+                progress(done, total);
+            }
+            eprintln!();
+            Ok::<_, anyhow::Error>((total, failed))
+        })
+    });
+    match result {
+        Ok((total, failed)) => {
+            for f in &failed {
+                eprintln!("failed: {f}");
+            }
+            eprintln!("re-exported {} of {total} models", total.saturating_sub(failed.len()));
+            if failed.is_empty() { ExitCode::SUCCESS } else { ExitCode::from(1) }
+        }
+        Err(e) => {
+            eprintln!("error: {e:#}");
+            ExitCode::from(1)
+        }
+    }
+}
+
+/// `[#########           ] 9/20` on one line of stderr.
+fn progress(done: usize, total: usize) {
+    let width = 30;
+    let filled = (done * width).checked_div(total).unwrap_or(width);
+    eprint!("\r[{}{}] {done}/{total}", "#".repeat(filled), " ".repeat(width - filled));
 }

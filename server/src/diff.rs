@@ -220,6 +220,9 @@ mod tests {
         assert_eq!(d.joints.changed.len(), 2);
         assert_eq!(d.joints.changed[0].changes[0].field, "axis_world");
         // Matched by Modelica name: the node ID is the change.
-        assert_eq!(d.joints.changed[1].changes[0], FieldChange { field: "node_id".into(), old: json!("j3"), new: json!("j9") });
+        assert_eq!(
+            d.joints.changed[1].changes[0],
+            FieldChange { field: "node_id".into(), old: json!("j3"), new: json!("j9") }
+        );
     }
 }

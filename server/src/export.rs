@@ -140,18 +140,45 @@ pub fn check_bundle(bundle_bytes: &[u8], bundle_name: &str, options: &ExportOpti
     Ok(Checked { model_name: a.model.name.clone(), warnings: a.warnings.len() })
 }
 
-/// Builds a version's package from its bundle.
-pub fn build_package(bundle_bytes: &[u8], bundle_name: &str, options: &ExportOptions) -> Result<Built, ExportError> {
+/// Builds a version's package from its bundle, keeping the Modelica names of `name_hints` (the
+/// previous version's) for unchanged node IDs, with `Mechatronics.mo` driving the joints of
+/// `drives` that the converted model has. The report gains a `drives` section listing the
+/// active and the orphaned assignments (joints the model no longer has).
+///
+/// With drives, the conversion runs twice: once to learn the joints (names, kinds, start
+/// values) and once with the drive plans; a conversion takes milliseconds.
+pub fn build_package(
+    bundle_bytes: &[u8],
+    bundle_name: &str,
+    options: &ExportOptions,
+    drives: &[crate::drives::ResolvedDrive],
+    name_hints: &pipeline::back::modelica::Hints,
+) -> Result<Built, ExportError> {
     let bundle = read_bundle(bundle_bytes, bundle_name)?;
-    let out = pipeline::convert(&bundle, &options.pipeline())?;
-    let files = out.files;
-    // SEAM: the mechatronic model (drives from the motor library) adds its files to `files`
-    // here, before zipping; its inputs join this function's arguments.
-    let report_json = files
-        .iter()
-        .find(|(path, _)| path == "report.json")
-        .map(|(_, bytes)| bytes.clone())
-        .ok_or_else(|| ExportError::Zip(std::io::Error::other("the conversion wrote no report.json")))?;
+    let mut opts = options.pipeline();
+    opts.name_hints = name_hints.clone();
+    let mut out = pipeline::convert(&bundle, &opts)?;
+    let mut orphaned = Vec::new();
+    if !drives.is_empty() {
+        let report = serde_json::to_value(&out.report).map_err(|e| ExportError::Zip(std::io::Error::other(e)))?;
+        let (plans, orphans) = crate::drives::plans(&report, drives);
+        orphaned = orphans;
+        if !plans.is_empty() {
+            opts.drives = plans;
+            out = pipeline::convert(&bundle, &opts)?;
+        }
+    }
+    let mut files = out.files;
+    let mut report = serde_json::to_value(&out.report).map_err(|e| ExportError::Zip(std::io::Error::other(e)))?;
+    report["drives"] = serde_json::json!({
+        "active": opts.drives.iter().map(|d| d.joint.clone()).collect::<Vec<_>>(),
+        "orphaned": orphaned,
+    });
+    let report_json = serde_json::to_vec_pretty(&report).map_err(|e| ExportError::Zip(std::io::Error::other(e)))?;
+    match files.iter_mut().find(|(path, _)| path == "report.json") {
+        Some((_, bytes)) => *bytes = report_json.clone(),
+        None => return Err(ExportError::Zip(std::io::Error::other("the conversion wrote no report.json"))),
+    }
     let package_zip = write_zip(&files).map_err(ExportError::Zip)?;
     Ok(Built { package_zip, report_json, summary: Summary::of(&out.report) })
 }
@@ -173,8 +200,8 @@ mod tests {
     fn builds_deterministically() {
         let zip = pendulum_zip();
         let opts = ExportOptions::default();
-        let a = build_package(&zip, "p.zip", &opts).unwrap();
-        let b = build_package(&zip, "p.zip", &opts).unwrap();
+        let a = build_package(&zip, "p.zip", &opts, &[], &Default::default()).unwrap();
+        let b = build_package(&zip, "p.zip", &opts, &[], &Default::default()).unwrap();
         assert_eq!(a.package_zip, b.package_zip);
         assert_eq!(a.summary.package_name, "PENDULUM");
         assert_eq!((a.summary.bodies, a.summary.joints), (2, 2));

@@ -95,7 +95,10 @@ async fn dispatch(ctx: Ctx, workers: usize, mut wake: mpsc::Receiver<()>) {
             Err(e) => {
                 drop(permit);
                 tracing::error!(error = %e, "claiming a job failed; retrying");
-                tokio::time::sleep(Duration::from_secs(1)).await;
+                tokio::select! {
+                    () = tokio::time::sleep(Duration::from_secs(1)) => {}
+                    w = wake.recv() => if w.is_none() { return },
+                }
             }
         }
     }
@@ -136,6 +139,25 @@ async fn run(ctx: &Ctx, job: ClaimedJob) {
     // Still `running` in the table: the next start re-queues it.
 }
 
+/// The Modelica names of the model's latest converted version before this one (re-exports of a
+/// version keep their own earlier names too), so CAD renames keep their Modelica names.
+async fn previous_names(ctx: &Ctx, job: &ClaimedJob) -> Result<crate::pipeline::back::modelica::Hints, ApiError> {
+    let versions = models::list_versions(&ctx.store.pool, &job.model_id).await?;
+    let earlier = versions
+        .iter()
+        .filter(|v| v.version < job.version || (v.version == job.version && job.kind == "reexport"))
+        .filter(|v| v.report_sha256.is_some())
+        .max_by_key(|v| v.version);
+    let Some(hash) = earlier.and_then(|v| v.report_sha256.clone()) else { return Ok(Default::default()) };
+    let blobs = ctx.blobs.clone();
+    let bytes = tokio::task::spawn_blocking(move || blobs.get(&hash))
+        .await
+        .map_err(|e| ApiError::Internal(e.into()))?
+        .map_err(|e| ApiError::Internal(e.into()))?;
+    let report: serde_json::Value = bytes.and_then(|b| serde_json::from_slice(&b).ok()).unwrap_or_default();
+    Ok(crate::pipeline::name_hints(&report))
+}
+
 struct Stored {
     package_sha256: String,
     report_sha256: String,
@@ -147,17 +169,19 @@ async fn convert(ctx: &Ctx, job: &ClaimedJob) -> Result<Stored, ApiError> {
     let Some(source) = job.source.clone() else {
         return Err(ApiError::NotFound(format!("version {} of model {}", job.version, job.model_id)));
     };
+    let drives = crate::drives::resolve_for_model(&ctx.store, &job.model_id).await?;
+    let hints = previous_names(ctx, job).await?;
     let blobs = ctx.blobs.clone();
     let span = tracing::Span::current();
     let task = tokio::task::spawn_blocking(move || {
         span.in_scope(|| {
             let options: ExportOptions = serde_json::from_str(&source.options_json)
                 .map_err(|e| ApiError::Internal(anyhow::anyhow!("stored options are corrupt: {e}")))?;
-            let bundle = blobs
-                .get(&source.bundle_sha256)
-                .map_err(|e| ApiError::Internal(e.into()))?
-                .ok_or_else(|| ApiError::Internal(anyhow::anyhow!("bundle blob {} is missing", source.bundle_sha256)))?;
-            let built = export::build_package(&bundle, &source.bundle_name, &options)?;
+            let bundle =
+                blobs.get(&source.bundle_sha256).map_err(|e| ApiError::Internal(e.into()))?.ok_or_else(|| {
+                    ApiError::Internal(anyhow::anyhow!("bundle blob {} is missing", source.bundle_sha256))
+                })?;
+            let built = export::build_package(&bundle, &source.bundle_name, &options, &drives, &hints)?;
             let summary_json = serde_json::to_string(&built.summary).map_err(|e| ApiError::Internal(e.into()))?;
             // Blobs first: the database points at them only once they are complete on disk.
             let package_sha256 = blobs.put(&built.package_zip).map_err(|e| ApiError::Internal(e.into()))?;

@@ -11,6 +11,7 @@ pub mod api;
 pub mod app;
 pub mod cli;
 pub mod config;
+pub mod drives;
 pub mod diff;
 pub mod export;
 pub mod jobs;

@@ -17,7 +17,8 @@
 //! | `GET /api/models/{id}/diff?from=1&to=2` | 200 bodies and joints added, removed, changed |
 //!
 //! Uploads: multipart parts `bundle` (the zip, required), `name`, `package_name`, `gravity`
-//! ("x,y,z") and `lump_welds` ("true"/"false"). The body may not exceed `settings.max_upload`
+//! ("x,y,z") and `lump_welds` ("true"/"false"); `name` names a new model (default: the
+//! assembly's name from the XML) and is ignored for a new version. The body may not exceed `settings.max_upload`
 //! (413). The bundle is read and analysed at once, off the runtime: an unreadable or unsafe zip
 //! is a 422 naming the bundle, bad XML a 422 with the diagnostics; nothing is stored then.
 //! Otherwise the bundle blob is stored, then the model/version/job rows in one transaction, and
@@ -126,7 +127,8 @@ impl From<ModelRow> for ModelView {
 }
 
 fn version_view(v: VersionRow) -> Result<VersionView, ApiError> {
-    let corrupt = |what: &str, e: serde_json::Error| ApiError::Internal(anyhow::anyhow!("stored {what} is corrupt: {e}"));
+    let corrupt =
+        |what: &str, e: serde_json::Error| ApiError::Internal(anyhow::anyhow!("stored {what} is corrupt: {e}"));
     let options = serde_json::from_str(&v.options_json).map_err(|e| corrupt("options", e))?;
     let error = v.error_json.as_deref().map(serde_json::from_str).transpose().map_err(|e| corrupt("problem", e))?;
     let summary = v.summary_json.as_deref().map(serde_json::from_str).transpose().map_err(|e| corrupt("summary", e))?;
@@ -154,7 +156,8 @@ fn accepted(c: Created) -> Response {
     tracing::info!(model_id = %c.model_id, version = c.version, job_id = %c.job_id, "upload accepted");
     let location = HeaderValue::from_str(&format!("/api/jobs/{}", c.job_id)).ok();
     let mut resp =
-        (StatusCode::ACCEPTED, Json(Accepted { model_id: c.model_id, version: c.version, job_id: c.job_id })).into_response();
+        (StatusCode::ACCEPTED, Json(Accepted { model_id: c.model_id, version: c.version, job_id: c.job_id }))
+            .into_response();
     if let Some(l) = location {
         resp.headers_mut().insert(header::LOCATION, l);
     }
@@ -236,17 +239,17 @@ impl FromRequest<AppState> for Upload {
 
     async fn from_request(mut req: Request, state: &AppState) -> Result<Self, ApiError> {
         let limit = state.settings.max_upload;
-        let declared = req
-            .headers()
-            .get(header::CONTENT_LENGTH)
-            .and_then(|v| v.to_str().ok())
-            .and_then(|v| v.parse::<u64>().ok());
+        let declared =
+            req.headers().get(header::CONTENT_LENGTH).and_then(|v| v.to_str().ok()).and_then(|v| v.parse::<u64>().ok());
         if declared.is_some_and(|n| n > limit) {
             return Err(ApiError::PayloadTooLarge { limit });
         }
         DefaultBodyLimit::max(usize::try_from(limit).unwrap_or(usize::MAX)).apply(&mut req);
         let mut multipart = Multipart::from_request(req, state).await.map_err(|e| {
-            ApiError::BadRequest(format!("expected a multipart/form-data upload with a `bundle` part: {}", e.body_text()))
+            ApiError::BadRequest(format!(
+                "expected a multipart/form-data upload with a `bundle` part: {}",
+                e.body_text()
+            ))
         })?;
         let mut bundle: Option<(Bytes, String)> = None;
         let mut name = None;
@@ -266,10 +269,7 @@ impl FromRequest<AppState> for Upload {
             }
             let known = ["name", "package_name", "gravity", "lump_welds"];
             if !known.contains(&part.as_str()) {
-                return Err(invalid(
-                    &part,
-                    "unknown part (expected bundle, name, package_name, gravity, lump_welds)",
-                ));
+                return Err(invalid(&part, "unknown part (expected bundle, name, package_name, gravity, lump_welds)"));
             }
             let text = field.text().await.map_err(|e| multipart_error(e, limit))?;
             let text = text.trim();
@@ -316,7 +316,8 @@ fn parse_gravity(s: &str) -> Result<[f64; 3], String> {
     };
     let mut g = [0.0; 3];
     for (k, p) in [x, y, z].into_iter().enumerate() {
-        g[k] = p.parse::<f64>().ok().filter(|v| v.is_finite()).ok_or_else(|| format!("\"{p}\" is not a finite number"))?;
+        g[k] =
+            p.parse::<f64>().ok().filter(|v| v.is_finite()).ok_or_else(|| format!("\"{p}\" is not a finite number"))?;
     }
     Ok(g)
 }
@@ -346,7 +347,9 @@ async fn accept_upload(state: &AppState, upload: Upload) -> Result<(Upload, Stri
     let blobs = state.blobs.clone();
     blocking(move || {
         let checked = export::check_bundle(&upload.bundle, &upload.bundle_name, &upload.options)?;
-        let sha = blobs.put(&upload.bundle).map_err(|e| ApiError::Internal(anyhow::Error::new(e).context("storing the bundle")))?;
+        let sha = blobs
+            .put(&upload.bundle)
+            .map_err(|e| ApiError::Internal(anyhow::Error::new(e).context("storing the bundle")))?;
         Ok((upload, sha, checked.model_name))
     })
     .await
@@ -389,7 +392,9 @@ async fn create_version(
         bundle_size: i64::try_from(upload.bundle.len()).unwrap_or(i64::MAX),
         options_json: &options,
     };
-    let created = db::create_version(&state.store.pool, &id, &nv).await?.ok_or_else(|| ApiError::NotFound(format!("model {id}")))?;
+    let created = db::create_version(&state.store.pool, &id, &nv)
+        .await?
+        .ok_or_else(|| ApiError::NotFound(format!("model {id}")))?;
     state.jobs.notify();
     Ok(accepted(created))
 }
@@ -406,8 +411,10 @@ async fn get_model(
     path: Result<Path<String>, PathRejection>,
 ) -> Result<Json<ModelDetail>, ApiError> {
     let id = model_id(path)?;
-    let model = db::get_model(&state.store.pool, &id).await?.ok_or_else(|| ApiError::NotFound(format!("model {id}")))?;
-    let versions = db::list_versions(&state.store.pool, &id).await?.into_iter().map(version_view).collect::<Result<_, _>>()?;
+    let model =
+        db::get_model(&state.store.pool, &id).await?.ok_or_else(|| ApiError::NotFound(format!("model {id}")))?;
+    let versions =
+        db::list_versions(&state.store.pool, &id).await?.into_iter().map(version_view).collect::<Result<_, _>>()?;
     Ok(Json(ModelDetail { model: model.into(), versions }))
 }
 
@@ -432,12 +439,15 @@ async fn list_versions(
     if db::get_model(&state.store.pool, &id).await?.is_none() {
         return Err(ApiError::NotFound(format!("model {id}")));
     }
-    let versions = db::list_versions(&state.store.pool, &id).await?.into_iter().map(version_view).collect::<Result<_, _>>()?;
+    let versions =
+        db::list_versions(&state.store.pool, &id).await?.into_iter().map(version_view).collect::<Result<_, _>>()?;
     Ok(Json(versions))
 }
 
 async fn find_version(state: &AppState, id: &str, v: i64) -> Result<VersionRow, ApiError> {
-    db::get_version(&state.store.pool, id, v).await?.ok_or_else(|| ApiError::NotFound(format!("version {v} of model {id}")))
+    db::get_version(&state.store.pool, id, v)
+        .await?
+        .ok_or_else(|| ApiError::NotFound(format!("version {v} of model {id}")))
 }
 
 async fn get_version(

@@ -180,7 +180,9 @@ fn values(v: Json) -> Map<String, Json> {
 }
 
 /// (id, class id, name, source, values).
-fn instances() -> Vec<(&'static str, &'static str, &'static str, &'static str, Map<String, Json>)> {
+type SeedInstance = (&'static str, &'static str, &'static str, &'static str, Map<String, Json>);
+
+fn instances() -> Vec<SeedInstance> {
     vec![
         (
             MAXON_RE40,

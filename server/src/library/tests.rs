@@ -374,7 +374,7 @@ fn xml_round_trip_of_awkward_text_and_values() {
     c.parameters[2].default = Some(Value::Real(-0.1));
     c.parameters[6].default = Some(Value::String(String::new()));
     let values = obj(json!({
-        "R": 0.1 + 0.2, "L": 1e-300, "ratio": -123456789.123456789, "eta": 5e-324,
+        "R": 0.1 + 0.2, "L": 1e-300, "ratio": -123_456_789.123_456_79, "eta": 5e-324,
         "poles": i64::MAX, "brushless": true, "winding": "a\nb\r\nc\t\"d\" <e> & 'f'  "
     }));
     let i = check_instance(

@@ -26,11 +26,11 @@ impl Unit {
         Unit { si, num, den, offset: 0.0 }
     }
 
-    fn is_identity(&self) -> bool {
+    fn is_identity(self) -> bool {
         self.num == self.den && self.offset == 0.0
     }
 
-    fn to_si(&self, x: f64) -> f64 {
+    fn si_value(self, x: f64) -> f64 {
         let scaled = if self.den == 1.0 {
             x * self.num
         } else if self.num == 1.0 {
@@ -41,7 +41,7 @@ impl Unit {
         scaled + self.offset
     }
 
-    fn from_si(&self, x: f64) -> f64 {
+    fn value_in(self, x: f64) -> f64 {
         let x = x - self.offset;
         if self.num == 1.0 {
             x * self.den
@@ -188,7 +188,7 @@ pub fn convert(x: f64, from: &str, to: &str) -> Result<f64, UnitError> {
     if f.is_identity() && t.is_identity() {
         return Ok(x);
     }
-    Ok(round15(t.from_si(f.to_si(x))))
+    Ok(round15(t.value_in(f.si_value(x))))
 }
 
 /// Rounds to 15 significant digits (every decimal of up to 15 digits survives unchanged).

@@ -386,7 +386,8 @@ pub fn read(text: &str) -> Result<Document, Vec<Issue>> {
             Ok(e) => e,
             Err(err) => {
                 let line = line_of(text, reader.error_position() as usize);
-                issues.push(Issue::new(format!("line {line}"), format!("malformed XML: {err}")));
+                // The syntax error first: it is why reading stopped.
+                issues.insert(0, Issue::new(format!("line {line}"), format!("malformed XML: {err}")));
                 return Err(issues);
             }
         };

@@ -45,6 +45,8 @@ pub struct Options {
     pub drives: Vec<back::modelica::mechatronics::DrivePlan>,
     /// VRML matching tolerances.
     pub matching: passes::geometry_match::MatchOptions,
+    /// Modelica names an earlier version used, by node ID (see [`name_hints`]).
+    pub name_hints: back::modelica::Hints,
 }
 
 impl Default for Options {
@@ -56,6 +58,7 @@ impl Default for Options {
             write_shapes: true,
             drives: Vec::new(),
             matching: Default::default(),
+            name_hints: Default::default(),
         }
     }
 }
@@ -169,6 +172,19 @@ pub fn analyse(bundle: &Bundle, opts: &Options) -> Result<Analysed, ConvertError
     Ok(Analysed { model, validated, merged, warnings, vrml })
 }
 
+/// The names an earlier version's `report.json` gave its bodies and joints, by node ID.
+pub fn name_hints(report: &serde_json::Value) -> back::modelica::Hints {
+    let collect = |key: &str| {
+        report[key]
+            .as_array()
+            .into_iter()
+            .flatten()
+            .filter_map(|e| Some((e["node_id"].as_str()?.to_string(), e["modelica_name"].as_str()?.to_string())))
+            .collect()
+    };
+    back::modelica::Hints { bodies: collect("bodies"), joints: collect("joints") }
+}
+
 /// Reads the bundle's VRML export (every main file: those no other VRML file inlines) and
 /// matches its groups to the bodies that have no mesh yet. `matching.json` pins come first.
 fn match_vrml(
@@ -216,6 +232,7 @@ pub fn convert(bundle: &Bundle, opts: &Options) -> Result<Output, ConvertError> 
             package_name: package_name.clone(),
             gravity: opts.gravity,
             converter_version: VERSION.to_string(),
+            name_hints: opts.name_hints.clone(),
         },
     );
     let mut files = pkg.files;

@@ -147,7 +147,11 @@ pub async fn create_model(pool: &SqlitePool, name: &str, v: &NewVersion<'_>) -> 
 
 /// Adds a version (numbered after every version the model ever had) and its job, in one
 /// transaction. `None` when the model does not exist.
-pub async fn create_version(pool: &SqlitePool, model_id: &str, v: &NewVersion<'_>) -> Result<Option<Created>, StoreError> {
+pub async fn create_version(
+    pool: &SqlitePool,
+    model_id: &str,
+    v: &NewVersion<'_>,
+) -> Result<Option<Created>, StoreError> {
     let mut tx = pool.begin().await?;
     // A write first, so the transaction takes the write lock at once (no read-then-upgrade).
     let next: Option<(i64,)> =
@@ -185,7 +189,8 @@ pub async fn delete_model(pool: &SqlitePool, id: &str) -> Result<bool, StoreErro
     Ok(r.rows_affected() > 0)
 }
 
-const VERSION_SELECT: &str = "SELECT v.model_id, v.version, v.created_at, v.bundle_name, v.bundle_sha256, v.bundle_size,
+const VERSION_SELECT: &str =
+    "SELECT v.model_id, v.version, v.created_at, v.bundle_name, v.bundle_sha256, v.bundle_size,
             v.options_json, v.status, v.package_sha256, v.report_sha256, v.error_json, v.summary_json,
             (SELECT j.id FROM jobs j WHERE j.model_id = v.model_id AND j.version = v.version
               ORDER BY j.created_at DESC, j.rowid DESC LIMIT 1) AS job_id
@@ -286,12 +291,10 @@ pub struct JobOutputs<'a> {
 /// Marks a job and its version succeeded, pointing the version at its outputs.
 pub async fn finish_succeeded(pool: &SqlitePool, job: &ClaimedJob, out: &JobOutputs<'_>) -> Result<(), StoreError> {
     let mut tx = pool.begin().await?;
-    sqlx::query(&format!(
-        "UPDATE jobs SET status = 'succeeded', error_json = NULL, finished_at = {NOW} WHERE id = ?"
-    ))
-    .bind(&job.id)
-    .execute(&mut *tx)
-    .await?;
+    sqlx::query(&format!("UPDATE jobs SET status = 'succeeded', error_json = NULL, finished_at = {NOW} WHERE id = ?"))
+        .bind(&job.id)
+        .execute(&mut *tx)
+        .await?;
     sqlx::query(
         "UPDATE versions SET status = 'succeeded', package_sha256 = ?, report_sha256 = ?, summary_json = ?, error_json = NULL
          WHERE model_id = ? AND version = ?",
@@ -415,4 +418,34 @@ mod tests {
         assert!(get_job(&s.pool, &a.job_id).await.unwrap().is_none());
         assert_eq!(list_models(&s.pool).await.unwrap().len(), 1);
     }
+}
+
+/// Queues a re-export of a model's latest version (same bundle, current library and drives):
+/// a `reexport` job, with the version back to `queued`. `None` when the model has no version.
+pub async fn queue_reexport(pool: &SqlitePool, model_id: &str) -> Result<Option<(i64, String)>, StoreError> {
+    let mut tx = pool.begin().await?;
+    let latest: Option<(i64,)> = sqlx::query_as("SELECT MAX(version) FROM versions WHERE model_id = ? HAVING COUNT(*) > 0")
+        .bind(model_id)
+        .fetch_optional(&mut *tx)
+        .await?;
+    let Some((version,)) = latest else {
+        tx.rollback().await?;
+        return Ok(None);
+    };
+    let job_id = new_id();
+    sqlx::query(&format!(
+        "INSERT INTO jobs (id, kind, model_id, version, status, created_at) VALUES (?, 'reexport', ?, ?, 'queued', {NOW})"
+    ))
+    .bind(&job_id)
+    .bind(model_id)
+    .bind(version)
+    .execute(&mut *tx)
+    .await?;
+    sqlx::query("UPDATE versions SET status = 'queued' WHERE model_id = ? AND version = ? AND status <> 'running'")
+        .bind(model_id)
+        .bind(version)
+        .execute(&mut *tx)
+        .await?;
+    tx.commit().await?;
+    Ok(Some((version, job_id)))
 }

@@ -110,13 +110,23 @@ fn short_hash(s: &str) -> String {
     format!("{:06x}", h & 0xff_ffff)
 }
 
-/// Assigns names to bodies and joints. Identity is (kind, node_id); entities are processed sorted
+/// Assigns names to bodies and joints (see [`assign_with_hints`]). Identity is (kind, node_id); entities are processed sorted
 /// by it, so the result does not depend on file order.
 ///
 /// A CAD name used once gives the plain name. Same-named entities (every subsystem has its own
 /// `RootPart`) get a suffix: the name of the innermost enclosing subsystem when that tells them
 /// apart, otherwise the distinguishing part of their node ID.
-pub fn assign(model: &Model) -> Names {
+/// Names an earlier version of the model used, by node ID: a body or joint whose CAD name
+/// changed keeps its Modelica name, so drive assignments and user code that refer to it survive.
+#[derive(Clone, Debug, Default)]
+pub struct Hints {
+    pub bodies: BTreeMap<String, String>,
+    pub joints: BTreeMap<String, String>,
+}
+
+/// As [`assign`], but an entity whose node ID has a hint gets that name first (when it is a valid
+/// identifier and still free).
+pub fn assign_with_hints(model: &Model, hints: &Hints) -> Names {
     struct Entity<'a> {
         is_joint: bool,
         index: usize,
@@ -176,10 +186,19 @@ pub fn assign(model: &Model) -> Names {
     let mut scope = Scope::new();
     let mut bodies = vec![String::new(); model.bodies.len()];
     let mut joints = vec![String::new(); model.joints.len()];
-    // Plain names first so that a suffixed duplicate can never take one.
+    // Hinted names first, then plain names, so that a suffixed duplicate can never take one.
+    let hint_of = |e: &Entity| {
+        let map = if e.is_joint { &hints.joints } else { &hints.bodies };
+        map.get(e.node_id).filter(|h| sanitize(h, "x") == **h).cloned()
+    };
     let mut order: Vec<usize> = (0..entities.len()).collect();
-    order.sort_by_key(|k| groups[&entities[*k].base.to_lowercase()].len() > 1);
+    order.sort_by_key(|k| (hint_of(&entities[*k]).is_none(), groups[&entities[*k].base.to_lowercase()].len() > 1));
     for k in order {
+        if let Some(h) = hint_of(&entities[k]) {
+            if !scope.is_taken(&h) {
+                wanted[k] = h;
+            }
+        }
         let e = &entities[k];
         let mut name = wanted[k].clone();
         if scope.is_taken(&name) {

@@ -21,6 +21,8 @@ pub struct Options {
     /// Gravity vector in world coordinates, m/s².
     pub gravity: [f64; 3],
     pub converter_version: String,
+    /// Names of an earlier version, kept for unchanged node IDs.
+    pub name_hints: super::names::Hints,
 }
 
 /// Where each IR entity ended up in the Modelica model: what the report and tests need.
@@ -204,7 +206,7 @@ fn is_user_frame(node_id: &str, display_name: &str) -> bool {
 /// Writes the package. Shapes are referenced for every body with a mesh; the caller writes the
 /// files under `<Pkg>/Resources/Shapes/<stem>.dxf|.stl` using [`Layout::shapes`].
 pub fn write(model: &Model, v: &Validated, opts: &Options) -> Package {
-    let names = names::assign(model);
+    let names = names::assign_with_hints(model, &opts.name_hints);
     let pkg = opts.package_name.as_str();
     let mut w = Writer {
         model,

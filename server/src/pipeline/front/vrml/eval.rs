@@ -10,7 +10,7 @@ use super::geom::{self, BadIndex};
 use super::parse::{Loader, R};
 use super::resolve::resolve_url;
 use super::scene::{NodeId, Scene, SceneNode, ShapeGeom};
-use super::{VrmlError, VrmlErrorKind, MAX_DEPTH, MAX_SCENE_NODES, MAX_SHAPES, MAX_TRIANGLES};
+use super::{VrmlError, VrmlErrorKind, MAX_DEPTH};
 use crate::pipeline::ir::{Mesh, Warning};
 
 /// VRML 1.0 traversal state. `m` is relative to the scene node being filled.
@@ -113,8 +113,9 @@ impl<'l, 'b> Eval<'l, 'b> {
 
     /// A new scene node named after `ident` (its DEF name or type).
     fn add_node(&mut self, parent: Option<NodeId>, ident: &Node, global: Matrix4<f64>) -> R<NodeId> {
-        if self.scene.nodes.len() >= MAX_SCENE_NODES {
-            return Err(node_error(ident, VrmlErrorKind::TooManyNodes { limit: MAX_SCENE_NODES as u64 }));
+        let limit = self.ld.limits.scene_nodes;
+        if self.scene.nodes.len() >= limit {
+            return Err(node_error(ident, VrmlErrorKind::TooManyNodes { limit: limit as u64 }));
         }
         let (name, named) = match &ident.def {
             Some(d) => (d.to_string(), true),
@@ -166,11 +167,12 @@ impl<'l, 'b> Eval<'l, 'b> {
     fn attach(&mut self, parent: Option<NodeId>, ident: &Node, shape: ShapeGeom) -> R<()> {
         self.shapes += 1;
         self.triangles += shape.mesh.triangles.len();
-        if self.triangles > MAX_TRIANGLES {
-            return Err(node_error(ident, VrmlErrorKind::TooManyTriangles { limit: MAX_TRIANGLES }));
+        let limits = self.ld.limits;
+        if self.triangles > limits.triangles {
+            return Err(node_error(ident, VrmlErrorKind::TooManyTriangles { limit: limits.triangles }));
         }
-        if self.shapes > MAX_SHAPES {
-            return Err(node_error(ident, VrmlErrorKind::TooManyNodes { limit: MAX_SHAPES as u64 }));
+        if self.shapes > limits.shapes {
+            return Err(node_error(ident, VrmlErrorKind::TooManyNodes { limit: limits.shapes as u64 }));
         }
         let id = match parent {
             Some(p) => p,

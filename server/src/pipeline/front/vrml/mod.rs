@@ -110,6 +110,26 @@ pub const MAX_TRIANGLES: usize = 100_000_000;
 /// Limit on one file's size after gzip decompression.
 pub const MAX_FILE_BYTES: u64 = 1 << 30;
 
+/// The count limits (the defaults are the `MAX_*` constants; tests use smaller ones).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Limits {
+    pub parsed_nodes: u64,
+    pub scene_nodes: usize,
+    pub shapes: usize,
+    pub triangles: usize,
+}
+
+impl Default for Limits {
+    fn default() -> Self {
+        Limits {
+            parsed_nodes: MAX_PARSED_NODES,
+            scene_nodes: MAX_SCENE_NODES,
+            shapes: MAX_SHAPES,
+            triangles: MAX_TRIANGLES,
+        }
+    }
+}
+
 /// A file that could not be read, with the position of the problem.
 ///
 /// Displays as `parts/J1.wrl:12:5: IndexedFaceSet "_1": coordIndex 57 is out of range (20
@@ -185,7 +205,12 @@ pub enum VrmlErrorKind {
 /// Reads the VRML scene whose main file is the bundle path `main`, following Inlines and
 /// EXTERNPROTOs inside the bundle. Returns the scene and the warnings.
 pub fn parse(bundle: &Bundle, main: &str) -> Result<(Scene, Vec<Warning>), VrmlError> {
-    let mut ld = parse::Loader::new(bundle);
+    parse_with(bundle, main, Limits::default())
+}
+
+/// [`parse`] with other limits.
+pub(crate) fn parse_with(bundle: &Bundle, main: &str, limits: Limits) -> Result<(Scene, Vec<Warning>), VrmlError> {
+    let mut ld = parse::Loader::new(bundle, limits);
     let file = ld.load(main).map_err(|e| *e)?;
     let scene = {
         let mut ev = eval::Eval::new(&mut ld, main);

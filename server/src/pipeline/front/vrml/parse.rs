@@ -12,7 +12,7 @@ use super::ast::*;
 use super::lexer::{LexError, Lexer};
 use super::resolve::resolve_url;
 use super::xform;
-use super::{VrmlError, VrmlErrorKind, MAX_DEPTH, MAX_FILE_BYTES, MAX_PARSED_NODES};
+use super::{Limits, VrmlError, VrmlErrorKind, MAX_DEPTH, MAX_FILE_BYTES};
 use crate::pipeline::front::bundle::Bundle;
 use crate::pipeline::ir::Warning;
 
@@ -28,6 +28,7 @@ pub(super) struct Loader<'b> {
     /// Files that already got their `vrml-ignored-geometry` warning.
     ignored_warned: HashSet<Rc<str>>,
     parsed_nodes: u64,
+    pub limits: Limits,
 }
 
 /// Decompresses gzip data (decided by the magic bytes), with a size cap.
@@ -64,7 +65,7 @@ pub(super) fn detect(bytes: &[u8]) -> (Version, usize) {
 }
 
 impl<'b> Loader<'b> {
-    pub fn new(bundle: &'b Bundle) -> Self {
+    pub fn new(bundle: &'b Bundle, limits: Limits) -> Self {
         Loader {
             bundle,
             cache: HashMap::new(),
@@ -73,6 +74,7 @@ impl<'b> Loader<'b> {
             warnings: Vec::new(),
             ignored_warned: HashSet::new(),
             parsed_nodes: 0,
+            limits,
         }
     }
 
@@ -405,6 +407,12 @@ impl<'s> Parser<'_, '_, 's> {
         }
     }
 
+    /// Position of the next token.
+    fn here(&mut self) -> (u32, u32) {
+        self.lx.ws();
+        self.lx.loc()
+    }
+
     fn word(&mut self, what: &'static str) -> R<&'s [u8]> {
         match self.lx.word() {
             Some(w) => Ok(w),
@@ -427,8 +435,8 @@ impl<'s> Parser<'_, '_, 's> {
 
     fn count_node(&mut self) -> R<()> {
         self.ld.parsed_nodes += 1;
-        if self.ld.parsed_nodes > MAX_PARSED_NODES {
-            return Err(self.err(VrmlErrorKind::TooManyNodes { limit: MAX_PARSED_NODES }));
+        if self.ld.parsed_nodes > self.ld.limits.parsed_nodes {
+            return Err(self.err(VrmlErrorKind::TooManyNodes { limit: self.ld.limits.parsed_nodes }));
         }
         Ok(())
     }
@@ -516,7 +524,7 @@ impl<'s> Parser<'_, '_, 's> {
     }
 
     fn node_inner(&mut self) -> R<Option<NodeRef>> {
-        let (line, col) = self.lx.loc();
+        let (line, col) = self.here();
         let w = self.word("a node")?;
         match w {
             b"NULL" => Ok(None),
@@ -538,7 +546,6 @@ impl<'s> Parser<'_, '_, 's> {
             }
             b"DEF" => {
                 let name = self.word("a name after DEF")?.to_vec();
-                let (line, col) = self.lx.loc();
                 let ty = self.word("a node type")?;
                 let n = self.node_body(ty, Some(&name), line, col)?;
                 self.defs.insert(name, n.clone());
@@ -1007,7 +1014,7 @@ impl<'s> Parser<'_, '_, 's> {
                     ));
                 }
             };
-            let (line, col) = self.lx.loc();
+            let (line, col) = self.here();
             let ty_name = self.word("a field type")?;
             let Some(ty) = FieldType::from_name(ty_name) else {
                 let name = String::from_utf8_lossy(ty_name).into_owned();
@@ -1022,7 +1029,7 @@ impl<'s> Parser<'_, '_, 's> {
     /// `EXTERNPROTO name [ interface ] urls` (the keyword consumed): the PROTO is looked up in
     /// the bundle now; when it cannot be found, instances become Groups over their `children`.
     fn externproto_decl(&mut self) -> R<()> {
-        let (line, col) = self.lx.loc();
+        let (line, col) = self.here();
         let name_bytes = self.word("an EXTERNPROTO name")?.to_vec();
         let name: Rc<str> = Rc::from(String::from_utf8_lossy(&name_bytes).as_ref());
         self.want(b'[', "\"[\" opening an EXTERNPROTO interface")?;

@@ -262,7 +262,7 @@ fn transform_full_composition_and_nesting() {
 fn paths_names_and_groups() {
     let (s, _) = scene(&format!(
         "#VRML V2.0 utf8\nDEF ASM Group {{ children [\n  Transform {{ children [ {TRI} ] }}\n  DEF Obj01 Transform {{ }}\n  \
-         Anchor {{ children Collision {{ children Billboard {{ }} }} }}\n  DEF Obj01 Group {{ }}\n  DEF a/b[1] Group {{ }}\n] }}"
+         Anchor {{ children Collision {{ children Billboard {{ }} }} }}\n  DEF Obj01 Group {{ }}\n  DEF a/b%1 Group {{ }}\n] }}"
     ));
     assert_eq!(
         paths(&s),
@@ -274,7 +274,7 @@ fn paths_names_and_groups() {
             "ASM/Anchor[1]/Collision[0]",
             "ASM/Anchor[1]/Collision[0]/Billboard[0]",
             "ASM/Obj01[1]",
-            "ASM/a%2Fb%5B1%5D",
+            "ASM/a%2Fb%251",
         ]
     );
     let asm = node(&s, "ASM");
@@ -376,7 +376,7 @@ fn ignored_geometry_warns_once_per_file() {
     ));
     assert_eq!(w.len(), 1, "{w:?}");
     assert_eq!(w[0].code, "vrml-ignored-geometry");
-    assert_eq!(w[0].location, "main.wrl:1:38");
+    assert_eq!(w[0].location, "main.wrl:1:37");
     assert_eq!(s.triangle_count(), 2);
 }
 
@@ -557,7 +557,7 @@ fn proto_with_is_bindings_and_mfnode_children() {
     let robot = node(&s, "Robot");
     assert_eq!(robot.name, "Robot");
     assert!(robot.named);
-    assert_eq!(robot.line, 46);
+    assert_eq!(robot.line, 44);
     let j1 = node(&s, "Robot/Group[0]/J1");
     assert_matrix(&j1.global, &translation(0.0, 0.0, 1.2));
     let l1 = node(&s, "Robot/Group[0]/J1/L1");
@@ -674,7 +674,7 @@ fn inline_missing_warns_and_keeps_the_node() {
     assert_eq!(paths(&s), ["A", "Inline[0]"]);
     assert_eq!(w.len(), 2);
     assert!(w.iter().all(|w| w.code == "vrml-inline-missing"));
-    assert_eq!(w[0].location, "main.wrl:1:7");
+    assert_eq!(w[0].location, "main.wrl:1:1");
     assert!(w[0].message.contains("\"absent.wrl\""), "{}", w[0].message);
 }
 
@@ -906,12 +906,17 @@ fn deep_nesting_is_an_error_not_a_stack_overflow() {
 
 #[test]
 fn exponential_instancing_hits_a_limit() {
-    // 2^40 nodes by DEF/USE doubling.
+    let small = Limits { parsed_nodes: 100_000, scene_nodes: 10_000, shapes: 10_000, triangles: 50_000 };
+    let run = |src: &str| {
+        let b = bundle_of(&[("main.wrl", src.as_bytes())]);
+        parse_with(&b, "main.wrl", small).map(|_| ()).unwrap_err().kind
+    };
+    // 2^40 scene nodes by DEF/USE doubling.
     let mut src = String::from("DEF N0 Group { }\n");
     for i in 1..40 {
         src += &format!("DEF N{i} Group {{ children [ USE N{p} USE N{p} ] }}\n", p = i - 1);
     }
-    assert!(matches!(error(&src).kind, VrmlErrorKind::TooManyNodes { .. }));
+    assert_eq!(run(&src), VrmlErrorKind::TooManyNodes { limit: 10_000 });
     // 10^9 PROTO expansions.
     let mut src = String::from("PROTO P0 [] { Group { } }\n");
     for i in 1..10 {
@@ -919,7 +924,19 @@ fn exponential_instancing_hits_a_limit() {
         src += &format!("PROTO P{i} [] {{ Group {{ children [ {kids} ] }} }}\n");
     }
     src += "P9 { }";
-    assert!(matches!(error(&src).kind, VrmlErrorKind::TooManyNodes { .. }));
+    assert_eq!(run(&src), VrmlErrorKind::TooManyNodes { limit: 100_000 });
+    // Triangles: one shape used 2^20 times.
+    let mut src = format!("DEF N0 Group {{ children {TRI} }}\n");
+    for i in 1..20 {
+        src += &format!("DEF N{i} Group {{ children [ USE N{p} USE N{p} ] }}\n", p = i - 1);
+    }
+    let small = Limits { scene_nodes: 10_000_000, shapes: 10_000_000, ..small };
+    let b = bundle_of(&[("main.wrl", src.as_bytes())]);
+    let e = parse_with(&b, "main.wrl", small).map(|_| ()).unwrap_err();
+    assert_eq!(e.kind, VrmlErrorKind::TooManyTriangles { limit: 50_000 });
+    // The defaults are the documented constants.
+    let d = Limits::default();
+    assert_eq!((d.parsed_nodes, d.scene_nodes, d.shapes, d.triangles), (MAX_PARSED_NODES, MAX_SCENE_NODES, MAX_SHAPES, MAX_TRIANGLES));
 }
 
 /// A deterministic pseudo-random sequence.
@@ -1095,15 +1112,20 @@ fn fixture_rh2_and_gr001() {
     let Some((_, b)) = fixture_set("fkanehiro+openhrp3") else { return };
     let (s, w) = parse(&b, "RH2/RH2_withoutArm_withoutSensor.wrl").unwrap();
     assert!(w.is_empty(), "{w:?}");
-    let wheels: Vec<_> = s.nodes.iter().filter(|n| n.file.ends_with("wheel.wrl") && n.parent.is_some_and(|p| s.nodes[p].name == "Inline")).collect();
-    assert!(wheels.len() >= 2, "{:?}", wheels.iter().map(|n| &n.path).collect::<Vec<_>>());
+    // The wheel part is read once and appears under two Inlines.
+    assert_eq!(s.files.iter().filter(|f| f.ends_with("/wheel.wrl")).count(), 1);
+    let wheel = parse(&b, "RH2/parts/body/wheel.wrl").unwrap().0.triangle_count();
+    let tris = |id: NodeId| s.shapes_below(id).iter().map(|(_, sh)| sh.mesh.triangles.len()).sum::<usize>();
+    let wheels = s.nodes.iter().enumerate().filter(|(i, n)| n.name == "Inline" && tris(*i) == wheel).count();
+    assert_eq!(wheels, 2);
     let (s, _) = parse(&b, "closed-link-sample.wrl").unwrap();
     // ExtraJoint's empty PROTO body stands for nothing.
     assert!(s.nodes.iter().all(|n| n.name != "J1J3"));
     let Some((_, b)) = fixture_set("choreonoid+choreonoid") else { return };
     let (s, w) = parse(&b, "GR001/GR001.wrl").unwrap();
     assert!(w.is_empty(), "{w:?}");
-    assert_eq!(s.files.len(), 23);
+    assert_eq!(s.files.len(), 22, "the main file and its 21 parts");
+    assert_eq!(s.nodes.iter().filter(|n| n.name == "Inline").count(), 21);
     let (lo, hi) = world_bounds(&s).unwrap();
     // A 30 cm humanoid in metres.
     assert!(hi[2] - lo[2] > 0.2 && hi[2] - lo[2] < 0.5, "{lo:?} {hi:?}");
@@ -1147,45 +1169,46 @@ fn fixture_gzip_files() {
 // ---------------------------------------------------------------------------------------------
 // Cross-check with VTK
 
-/// How a fixture compares with VTK's vtkVRMLImporter (9.7). Default: triangle count and world
-/// bounds.
+/// How a fixture compares with VTK's vtkVRMLImporter (9.7) when it is not the default (equal
+/// triangle counts; equal world bounds when VTK's are reproducible, else equal untransformed
+/// bounds): `(file suffix, "switch" | "local" | "skip", why)`.
 fn vtk_expectation(rel: &str) -> Option<(&'static str, &'static str)> {
     const TABLE: &[(&str, &str, &str)] = &[
-        // (file suffix, what is compared, why)
-        ("DoubleArmV7/block0_prt.wrl", "local", "VTK draws every Switch choice (twice our count) and builds a garbage actor matrix for its Transform (any Transform with translation)"),
-        ("DoubleArmV7/work_tip_s.wrl", "local", "VTK draws every Switch choice (twice our count) and builds a garbage actor matrix for its Transform (any Transform with translation)"),
-        ("Labo1/rack3.wrl", "local", "VTK builds garbage (NaN or 1e200) actor matrices for Transforms with translation"),
-        ("PA10/parts/", "skip", "no header line: VTK's importer reads nothing (VRML allows header-less inlined files)"),
+        ("DoubleArmV7/block0_prt.wrl", "switch", "VTK ignores Switch.whichChoice and draws every choice (here two IndexedFaceSets over one shared Coordinate: twice our count, the same untransformed bounds)"),
+        ("DoubleArmV7/work_tip_s.wrl", "switch", "VTK ignores Switch.whichChoice and draws every choice (here two IndexedFaceSets over one shared Coordinate: twice our count, the same untransformed bounds)"),
+        ("PA10/parts/", "local", "the part files write their Transform's rotation after its children; VTK's one-pass importer applies a Transform field only to the nodes after it"),
         ("PA10/PA10.wrl", "skip", "geometry only through Inline, which vtkVRMLImporter does not follow (and PROTO)"),
         ("GrayCarDoorFR-Body.wrl", "skip", "geometry only through Inline, which vtkVRMLImporter does not follow"),
     ];
     TABLE.iter().find(|(suffix, _, _)| rel.ends_with(suffix) || rel.contains(suffix)).map(|(_, how, why)| (*how, *why))
 }
 
-/// Runs `tests/tools/vtk_check.py`; `None` when python3 or VTK is missing (an error when
-/// `CAD2MO_REQUIRE_TOOLS=1`) or VTK fails on the file.
-fn run_vtk(file: &Path) -> Option<serde_json::Value> {
+/// Runs `tests/tools/vtk_check.py` on `files`: its JSON line per file (by path). `None` when
+/// python3 or VTK is missing (a failure when `CAD2MO_REQUIRE_TOOLS=1`).
+fn run_vtk(files: &[PathBuf]) -> Option<std::collections::HashMap<String, serde_json::Value>> {
     let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/tools/vtk_check.py");
-    let out = std::process::Command::new("python3").arg(&script).arg(file).output();
+    let out = std::process::Command::new("python3").arg(&script).args(files).output();
     let require = std::env::var("CAD2MO_REQUIRE_TOOLS").is_ok_and(|v| v == "1");
-    match out {
-        Ok(o) if o.status.success() => serde_json::from_slice(&o.stdout).ok(),
-        Ok(o) => {
-            let err = String::from_utf8_lossy(&o.stderr);
-            if err.contains("not installed") {
-                assert!(!require, "VTK is required (CAD2MO_REQUIRE_TOOLS=1): {err}");
-                println!("NOTICE: {err}");
-                return None;
-            }
-            println!("NOTICE: VTK cannot read {} ({:?}); skipped", file.display(), o.status);
-            None
-        }
+    let o = match out {
+        Ok(o) => o,
         Err(e) => {
             assert!(!require, "python3 is required (CAD2MO_REQUIRE_TOOLS=1): {e}");
             println!("NOTICE: python3 not available ({e}); VTK cross-check skipped");
-            None
+            return None;
         }
+    };
+    let err = String::from_utf8_lossy(&o.stderr);
+    if err.contains("not installed") {
+        assert!(!require, "VTK is required (CAD2MO_REQUIRE_TOOLS=1): {err}");
+        println!("NOTICE: {err}; VTK cross-check skipped");
+        return None;
     }
+    let mut map = std::collections::HashMap::new();
+    for line in String::from_utf8_lossy(&o.stdout).lines() {
+        let v: serde_json::Value = serde_json::from_str(line).unwrap_or_else(|e| panic!("vtk_check.py output {line}: {e}"));
+        map.insert(v["file"].as_str().unwrap_or("").to_string(), v);
+    }
+    Some(map)
 }
 
 fn json_bounds(v: &serde_json::Value) -> Option<([f64; 3], [f64; 3])> {
@@ -1203,12 +1226,13 @@ fn assert_bounds_close(rel: &str, ours: ([f64; 3], [f64; 3]), vtk: ([f64; 3], [f
     }
 }
 
-/// Our triangle counts and bounds agree with VTK's on the VRML 97 fixtures it reads.
+/// Our triangle counts and bounds agree with VTK's on the VRML 97 fixtures it reads. VTK 9.7's
+/// importer crashes on the PROTO-based OpenHRP files and on `house/table.wrl` (primitives under
+/// nested Transforms): those are reported and skipped.
 #[test]
 fn fixtures_agree_with_vtk() {
-    let mut compared = 0;
+    let mut candidates = Vec::new();
     for set in fixture_sets() {
-        let b = folder_bundle(&set);
         for f in vrml_files(&set) {
             let rel = f.strip_prefix(&set).unwrap().to_string_lossy().replace('\\', "/");
             let raw = std::fs::read(&f).unwrap();
@@ -1216,30 +1240,53 @@ fn fixtures_agree_with_vtk() {
             if parse::detect(&text).0 != ast::Version::V2 {
                 continue; // VRML 1.0: vtkVRMLImporter reads VRML 97 only.
             }
-            let expect = vtk_expectation(&rel);
-            if let Some(("skip", why)) = expect {
+            if let Some(("skip", why)) = vtk_expectation(&rel) {
                 println!("NOTICE: {rel}: not compared with VTK: {why}");
                 continue;
             }
-            let Some(vtk) = run_vtk(&f) else { continue };
-            let (s, _) = parse(&b, &rel).unwrap();
-            let theirs = vtk["triangles"].as_u64().unwrap_or(0) as usize;
-            let ours = s.triangle_count();
-            match expect {
-                Some(("local", why)) => {
-                    println!("NOTICE: {rel}: local bounds only: {why}");
-                    assert!(theirs >= ours, "{rel}: VTK {theirs} < ours {ours}");
-                    assert_bounds_close(&rel, local_bounds(&s).unwrap(), json_bounds(&vtk["local_bounds"]).unwrap());
-                }
-                _ => {
-                    assert_eq!(ours, theirs, "{rel}: triangle count");
-                    if ours > 0 {
-                        assert_bounds_close(&rel, world_bounds(&s).unwrap(), json_bounds(&vtk["bounds"]).unwrap());
-                    }
-                }
-            }
-            compared += 1;
+            candidates.push((set.clone(), f, rel));
         }
     }
+    if candidates.is_empty() {
+        return;
+    }
+    let files: Vec<PathBuf> = candidates.iter().map(|(_, f, _)| f.clone()).collect();
+    let Some(vtk) = run_vtk(&files) else { return };
+    let mut compared = 0;
+    for (set, f, rel) in &candidates {
+        let Some(v) = vtk.get(f.to_string_lossy().as_ref()) else { panic!("no VTK result for {rel}") };
+        if let Some(e) = v.get("error") {
+            println!("NOTICE: VTK cannot read {rel} ({e}); skipped");
+            continue;
+        }
+        let (s, _) = parse(&folder_bundle(set), rel).unwrap();
+        let theirs = v["triangles"].as_u64().unwrap_or(0) as usize;
+        let ours = s.triangle_count();
+        let local = || {
+            let theirs = json_bounds(&v["local_bounds"]).unwrap_or_else(|| panic!("{rel}: VTK: {v}"));
+            assert_bounds_close(rel, local_bounds(&s).unwrap(), theirs);
+        };
+        if let Some(("switch", why)) = vtk_expectation(rel) {
+            println!("NOTICE: {rel}: {why}");
+            assert_eq!(theirs, 2 * ours, "{rel}");
+            local();
+        } else if let Some(("local", why)) = vtk_expectation(rel) {
+            println!("NOTICE: {rel}: untransformed bounds only: {why}");
+            assert_eq!(ours, theirs, "{rel}: triangle count");
+            local();
+        } else {
+            assert_eq!(ours, theirs, "{rel}: triangle count");
+            if ours == 0 {
+                // Nothing to bound.
+            } else if let Some(theirs) = json_bounds(&v["bounds"]) {
+                assert_bounds_close(rel, world_bounds(&s).unwrap(), theirs);
+            } else {
+                println!("NOTICE: {rel}: VTK's actor matrices are not reproducible (uninitialised memory in its importer): untransformed bounds compared");
+                local();
+            }
+        }
+        compared += 1;
+    }
     println!("compared {compared} fixture files with VTK");
+    assert!(compared >= 30, "{compared}");
 }
