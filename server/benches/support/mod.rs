@@ -2,6 +2,7 @@
 #![allow(dead_code)] // each benchmark uses part of it
 
 pub mod gen;
+pub mod vrml_gen;
 
 use std::path::{Path, PathBuf};
 

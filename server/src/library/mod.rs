@@ -101,10 +101,16 @@ impl Value {
     }
 
     /// The text form used in XML: Reals in Rust's shortest round-trip notation (`8.2e-5`,
-    /// `0.317`, `100.0`), so parsing the text gives back the same `f64` bit for bit.
+    /// `0.317`, `100`), so parsing the text gives back the same `f64` bit for bit.
     pub fn to_text(&self) -> String {
         match self {
-            Value::Real(x) => format!("{x:?}"),
+            Value::Real(x) => {
+                let s = format!("{x:?}");
+                match s.strip_suffix(".0") {
+                    Some(whole) => whole.to_string(),
+                    None => s,
+                }
+            }
             Value::Integer(i) => i.to_string(),
             Value::Boolean(b) => b.to_string(),
             Value::String(s) => s.clone(),

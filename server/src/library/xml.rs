@@ -75,12 +75,12 @@ pub struct Document {
 /// Escapes an attribute value; line breaks and tabs become character references so that they
 /// survive attribute-value normalisation by any XML reader.
 fn attr_escape(s: &str) -> String {
-    quick_xml::escape::escape(s).replace('\n', "&#10;").replace('\r', "&#13;").replace('\t', "&#9;")
+    quick_xml::escape::partial_escape(s).replace('"', "&quot;").replace('\n', "&#10;").replace('\r', "&#13;").replace('\t', "&#9;")
 }
 
 /// A text node; carriage returns become references too (XML readers turn a raw CR LF into LF).
 fn text_event(s: &str) -> BytesText<'static> {
-    BytesText::from_escaped(quick_xml::escape::escape(s).replace('\r', "&#13;"))
+    BytesText::from_escaped(quick_xml::escape::partial_escape(s).replace('\r', "&#13;"))
 }
 
 fn start<'a>(name: &'a str, attrs: &[(&'a str, String)]) -> BytesStart<'a> {

@@ -350,20 +350,31 @@ impl<'l, 'b> Eval<'l, 'b> {
                 self.v1_shape(n, mesh, st, parent)?;
             }
             Kind::V1FaceSet { start, num_vertices } => {
-                let mut index = Vec::new();
-                let mut next = i64::from(*start);
-                for &k in num_vertices {
-                    for _ in 0..k.max(0) {
-                        index.push(i32::try_from(next).unwrap_or(i32::MAX));
-                        next += 1;
-                    }
-                    index.push(-1);
-                }
                 let coords = st.coords.clone();
                 let points = match coords.as_deref().map(|c| &c.kind) {
                     Some(Kind::Coordinate { points }) => points.as_slice(),
                     _ => &[],
                 };
+                // Faces take consecutive points from startIndex; check the total before
+                // building the index list (a corrupt count must not allocate billions).
+                let total: i64 = num_vertices.iter().map(|&k| i64::from(k.max(0))).sum();
+                let end = i64::from(*start) + total;
+                if *start < 0 || end > points.len() as i64 {
+                    let index = if *start < 0 { i64::from(*start) } else { end - 1 };
+                    return Err(node_error(
+                        n,
+                        VrmlErrorKind::IndexOutOfRange { node: describe(n), index, count: points.len() },
+                    ));
+                }
+                let mut index = Vec::with_capacity(total as usize + num_vertices.len());
+                let mut next = *start;
+                for &k in num_vertices {
+                    for _ in 0..k.max(0) {
+                        index.push(next);
+                        next += 1;
+                    }
+                    index.push(-1);
+                }
                 let mut mesh = ifs_mesh(n, points, &index, !st.clockwise)?;
                 bake(&mut mesh, &st.m);
                 self.v1_shape(n, mesh, st, parent)?;

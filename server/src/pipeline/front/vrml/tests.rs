@@ -858,6 +858,15 @@ fn vrml1_def_use_top_level_shapes_and_inline_into_vrml97() {
 }
 
 #[test]
+fn vrml1_face_set_counts_are_checked() {
+    let src = "#VRML V1.0 ascii\nSeparator { Coordinate3 { point [0 0 0, 1 0 0, 0 1 0] } DEF F FaceSet { numVertices [ 2000000000 ] } }";
+    let e = error(src);
+    assert_eq!(e.to_string(), "main.wrl:2:54: FaceSet \"F\": coordIndex 1999999999 is out of range (3 points)");
+    let e = error("#VRML V1.0 ascii\nSeparator { Coordinate3 { point [0 0 0] } FaceSet { startIndex -1 numVertices [ 3 ] } }");
+    assert!(matches!(e.kind, VrmlErrorKind::IndexOutOfRange { index: -1, .. }), "{e}");
+}
+
+#[test]
 fn main_files_skips_inlined_and_extern_proto_files() {
     let b = bundle_of(&[
         ("asm.wrl", b"#VRML V2.0 utf8\nInline { url \"parts/A.WRL\" } # \"parts/b.wrl\" in a comment\n".as_slice()),
