@@ -99,6 +99,13 @@ async fn drives_survive_a_cad_change_and_reexport() {
     let p: Value = put_drive(&app, &model, "SLIDER_TOOL", &swapped).await.json().await.expect("problem");
     assert!(p["errors"].as_array().expect("errors").len() >= 2, "{p}");
     assert_eq!(put_drive(&app, &model, "NO_SUCH_JOINT", &body).await.status(), 404);
+    let one: Value = app.get(&format!("/api/models/{model}/drives/SLIDER_TOOL")).await.json().await.expect("drive");
+    assert_eq!(one["overrides"]["gear"]["ratio"], 100);
+    assert_eq!(one["reference"]["kind"], "table");
+    assert_eq!(app.get(&format!("/api/models/{model}/drives/NOPE")).await.status(), 404);
+    let r = app.client.put(app.url(&format!("/api/models/{model}/drives/SLIDER_TOOL"))).body("{").header("content-type", "application/json").send().await.expect("put");
+    assert_eq!(r.status(), 400);
+    assert_eq!(r.headers()["content-type"], "application/problem+json");
 
     // Re-export v1 with the drives: Mechatronics.mo drives both joints with ratio 100.
     let r = app.client.post(app.url(&format!("/api/models/{model}/reexport"))).send().await.expect("reexport");

@@ -77,3 +77,16 @@ fn token_create_prints_a_token_once() {
     assert!(token.starts_with("c2m_") && token.len() > 40, "{token}");
     assert!(dir.path().join("cad2mo.db").exists());
 }
+
+#[test]
+fn reexport_runs_with_a_progress_bar_and_reports_unknown_models() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let st = bin().args(["reexport", "--all", "--data-dir"]).arg(dir.path()).output().expect("run");
+    assert!(st.status.success(), "{}", String::from_utf8_lossy(&st.stderr));
+    assert!(String::from_utf8_lossy(&st.stderr).contains("re-exported 0 of 0 models"));
+    let st = bin().args(["reexport", "--model", "nope", "--data-dir"]).arg(dir.path()).output().expect("run");
+    assert_eq!(st.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&st.stderr).contains("no model nope"));
+    let st = bin().args(["reexport", "--data-dir"]).arg(dir.path()).output().expect("run");
+    assert_eq!(st.status.code(), Some(2), "--all or --model is required");
+}

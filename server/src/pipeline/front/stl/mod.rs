@@ -48,7 +48,7 @@
 
 mod ascii;
 mod dedup;
-mod number;
+pub(crate) mod number;
 #[cfg(test)]
 pub(crate) mod tests;
 

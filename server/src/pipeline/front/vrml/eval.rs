@@ -307,7 +307,30 @@ impl<'l, 'b> Eval<'l, 'b> {
         }
         match &n.kind {
             Kind::V1Group { kind, children } => {
-                let g = pglobal * st.m;
+                // The transforms a Separator or Group starts with (before its first shape, group
+                // or inline; property nodes may come between) place the node itself: they go
+                // into its global transform instead of its geometry.
+                let folds = matches!(
+                    kind,
+                    V1GroupKind::Separator | V1GroupKind::TransformSeparator | V1GroupKind::Group
+                );
+                let mut lead = Matrix4::identity();
+                let mut skip = 0;
+                if folds {
+                    for c in children {
+                        match &c.kind {
+                            Kind::V1Xform(m) => lead *= **m,
+                            Kind::Coordinate { .. }
+                            | Kind::Material { .. }
+                            | Kind::V1ShapeHints { .. }
+                            | Kind::Other
+                            | Kind::IgnoredGeometry => {}
+                            _ => break,
+                        }
+                        skip += 1;
+                    }
+                }
+                let g = pglobal * st.m * lead;
                 let id = self.add_node(parent, n, g)?;
                 let mut inner = V1State { m: Matrix4::identity(), ..st.clone() };
                 let selected: &[NodeRef] = match *kind {
@@ -319,7 +342,10 @@ impl<'l, 'b> Eval<'l, 'b> {
                     V1GroupKind::Lod => &children[..children.len().min(1)],
                     _ => children,
                 };
-                for c in selected {
+                for (i, c) in selected.iter().enumerate() {
+                    if i < skip && matches!(c.kind, Kind::V1Xform(_)) {
+                        continue; // already in `lead`
+                    }
                     self.node1(c, &mut inner, Some(id), &g, depth + 1)?;
                 }
                 match kind {
@@ -330,7 +356,7 @@ impl<'l, 'b> Eval<'l, 'b> {
                         st.clockwise = inner.clockwise;
                     }
                     _ => {
-                        let m = st.m * inner.m;
+                        let m = st.m * lead * inner.m;
                         *st = V1State { m, ..inner };
                     }
                 }

@@ -5,7 +5,7 @@
 //! names, DEF names, keywords) run up to the next delimiter: whitespace, `,`, `"`, `#`, `[`, `]`,
 //! `{`, `}`. Positions are 1-based lines (LF-counted) and 1-based byte columns.
 
-use super::number::parse_f64;
+use crate::pipeline::front::stl::number::parse_f64;
 
 /// Whether `c` ends a word or a number.
 #[inline]

@@ -62,9 +62,13 @@
 //! `Rotation`, `Scale` post-multiplied into the current matrix in file order; `Coordinate3`,
 //! `Material` (first `diffuseColor`), `ShapeHints` (`vertexOrdering CLOCKWISE` flips the
 //! winding), `IndexedFaceSet` (`coordIndex`), `FaceSet`, `Cube`/`Sphere`/`Cylinder`/`Cone`
-//! (with `parts`), `WWWInline` (`name`), DEF/USE. Shape geometry is baked with the matrix
-//! accumulated since its scene node, so it is in that node's coordinates. Unknown nodes (with
-//! or without a `fields [...]` declaration) are skipped.
+//! (with `parts`), `WWWInline` (`name`), DEF/USE. A node's frame: the matrix in force where it
+//! starts, times — for Separator, TransformSeparator and Group — the transform nodes it begins
+//! with (before its first shape, group or inline; property nodes such as Material or
+//! Coordinate3 may come between), the idiom `Separator { Transform {...} geometry }` placing a
+//! part. Later transforms are baked into the geometry that follows them, so shapes are in
+//! their scene node's coordinates; state changes leak out of Groups as VRML 1.0 says. Unknown
+//! nodes (with or without a `fields [...]` declaration) are skipped.
 //!
 //! # Output
 //! See [`scene`]. A Shape (VRML 1.0: a shape node) at the top level of the main file, outside
@@ -83,8 +87,6 @@ mod ast;
 mod eval;
 mod geom;
 mod lexer;
-#[path = "../stl/number.rs"]
-mod number;
 mod parse;
 mod resolve;
 pub mod scene;

@@ -809,26 +809,42 @@ fn vrml1_separator_state_and_transforms() {
             "Top/Switch[3]/Group[1]"
         ]
     );
+    // Top's leading Translation (after Material and Coordinate3) places Top itself.
     let top = node(&s, "Top");
-    assert_matrix(&top.global, &Matrix4::identity());
-    // Inner starts after the Translation; its rotation is baked into its shape.
+    assert_matrix(&top.global, &translation(10.0, 0.0, 0.0));
+    #[rustfmt::skip]
+    let rz = Matrix4::new(
+        0.0, -1.0, 0.0, 0.0,
+        1.0, 0.0, 0.0, 0.0,
+        0.0, 0.0, 1.0, 0.0,
+        0.0, 0.0, 0.0, 1.0,
+    );
+    // Inner: its leading Rotation is its frame; its shape stays in Inner's coordinates.
     let inner = node(&s, "Top/Inner");
-    assert_matrix(&inner.global, &translation(10.0, 0.0, 0.0));
+    assert_matrix(&inner.global, &(translation(10.0, 0.0, 0.0) * rz));
     assert_eq!(inner.shapes[0].color, Some([0.0, 0.0, 1.0]));
-    let v = &inner.shapes[0].mesh.vertices;
-    assert!((v[1][0] - 0.0).abs() < 1e-6 && (v[1][1] - 1.0).abs() < 1e-6, "{v:?}");
+    assert_eq!(inner.shapes[0].mesh.vertices[1], [1.0, 0.0, 0.0]);
     // Back in Top: the rotation and blue are gone; first diffuse colour of the Material.
     assert_eq!(top.shapes.len(), 3);
     assert_eq!(top.shapes[0].color, Some([1.0, 0.0, 0.0]));
-    assert_eq!(top.shapes[0].mesh.vertices[1], [11.0, 0.0, 0.0]);
-    // The Group's Scale leaks out to the Cube.
+    assert_eq!(top.shapes[0].mesh.vertices[1], [1.0, 0.0, 0.0]);
+    // The Group's Scale is the Group's frame and leaks out to the Cube.
+    assert_matrix(&node(&s, "Top/Group[0]").global, &(translation(10.0, 0.0, 0.0) * Matrix4::new_scaling(2.0)));
     assert_eq!(top.shapes[1].kind, "Cube");
-    assert_eq!(top.shapes[1].mesh.bounds().unwrap(), ([9.0, -1.0, -1.0], [11.0, 1.0, 1.0]));
+    assert_eq!(top.shapes[1].mesh.bounds().unwrap(), ([-1.0, -1.0, -1.0], [1.0, 1.0, 1.0]));
     // MatrixTransform (row vectors) then the WWWInline's frame.
     let inl = node(&s, "Top/WWWInline[1]");
     let want = translation(10.0, 0.0, 0.0) * Matrix4::from_diagonal(&Vector4::new(2.0, 2.0, 2.0, 1.0)) * translation(5.0, 6.0, 7.0);
     assert_matrix(&inl.global, &want);
     assert_eq!(node(&s, "Top/WWWInline[1]/Separator[0]").shapes[0].kind, "Sphere");
+    // Every shape lands in the same place as without the folding: world = global * local.
+    let (lo, hi) = world_bounds(&s).unwrap();
+    // The cube spans x 9..11 (scale 2 about Top's origin at x 10); the sphere (radius 1 under
+    // scale 2) sits at T(10) S(2) T(5, 6, 7) = (20, 12, 14).
+    let want = ([9.0, -1.0, -1.0], [22.0, 14.0, 16.0]);
+    for k in 0..3 {
+        assert!((lo[k] - want.0[k]).abs() < 1e-5 && (hi[k] - want.1[k]).abs() < 1e-5, "{lo:?} {hi:?}");
+    }
     // CLOCKWISE flips the winding of the last face set.
     assert_eq!(top.shapes[2].mesh.triangles, [[0, 2, 1]]);
 }
@@ -861,7 +877,7 @@ fn vrml1_def_use_top_level_shapes_and_inline_into_vrml97() {
 fn vrml1_face_set_counts_are_checked() {
     let src = "#VRML V1.0 ascii\nSeparator { Coordinate3 { point [0 0 0, 1 0 0, 0 1 0] } DEF F FaceSet { numVertices [ 2000000000 ] } }";
     let e = error(src);
-    assert_eq!(e.to_string(), "main.wrl:2:54: FaceSet \"F\": coordIndex 1999999999 is out of range (3 points)");
+    assert_eq!(e.to_string(), "main.wrl:2:57: FaceSet \"F\": coordIndex 1999999999 is out of range (3 points)");
     let e = error("#VRML V1.0 ascii\nSeparator { Coordinate3 { point [0 0 0] } FaceSet { startIndex -1 numVertices [ 3 ] } }");
     assert!(matches!(e.kind, VrmlErrorKind::IndexOutOfRange { index: -1, .. }), "{e}");
 }

@@ -11,7 +11,7 @@ pub(super) fn translation(t: [f64; 3]) -> Matrix4<f64> {
 pub(super) fn rotation(r: [f64; 4]) -> Matrix4<f64> {
     let axis = Vector3::new(r[0], r[1], r[2]);
     let n = axis.norm();
-    if !(n > 1e-300) || !r[3].is_finite() || r[3] == 0.0 {
+    if n.is_nan() || n <= 1e-300 || !r[3].is_finite() || r[3] == 0.0 {
         return Matrix4::identity();
     }
     nalgebra::Rotation3::from_axis_angle(&Unit::new_unchecked(axis / n), r[3]).to_homogeneous()
