@@ -335,11 +335,23 @@ pub fn match_scene(
             [] => {}
             [one] => chosen.entry(i).or_default().push((geo_nodes[*one], *rule)),
             _ => {
+                // Name each candidate by its outermost ancestor holding no other candidate: the
+                // part's own group, which is what a user pins.
+                let nodes: Vec<NodeId> = kept.iter().map(|k| geo_nodes[*k]).collect();
+                let outer = |mut v: NodeId| {
+                    while let Some(p) = scene.nodes[v].parent {
+                        if nodes.iter().any(|&o| o != v && contains(p, o) && !contains(v, o)) {
+                            break;
+                        }
+                        v = p;
+                    }
+                    scene.nodes[v].path.clone()
+                };
                 return Err(MatchError::Ambiguous {
                     body: model.bodies[i].cad_name.clone(),
                     node_id: model.bodies[i].node_id.clone(),
-                    candidates: kept.iter().map(|k| scene.nodes[geo_nodes[*k]].path.clone()).collect(),
-                })
+                    candidates: nodes.iter().map(|&v| outer(v)).collect(),
+                });
             }
         }
     }
