@@ -358,6 +358,36 @@ pub async fn mark_interrupted(pool: &SqlitePool, job_id: &str) -> Result<bool, S
     Ok(true)
 }
 
+/// Queues a re-export of a model's latest version (same bundle, current library and drives):
+/// a `reexport` job, with the version back to `queued`. `None` when the model has no version.
+pub async fn queue_reexport(pool: &SqlitePool, model_id: &str) -> Result<Option<(i64, String)>, StoreError> {
+    let mut tx = pool.begin().await?;
+    let latest: Option<(i64,)> = sqlx::query_as("SELECT MAX(version) FROM versions WHERE model_id = ? HAVING COUNT(*) > 0")
+        .bind(model_id)
+        .fetch_optional(&mut *tx)
+        .await?;
+    let Some((version,)) = latest else {
+        tx.rollback().await?;
+        return Ok(None);
+    };
+    let job_id = new_id();
+    sqlx::query(&format!(
+        "INSERT INTO jobs (id, kind, model_id, version, status, created_at) VALUES (?, 'reexport', ?, ?, 'queued', {NOW})"
+    ))
+    .bind(&job_id)
+    .bind(model_id)
+    .bind(version)
+    .execute(&mut *tx)
+    .await?;
+    sqlx::query("UPDATE versions SET status = 'queued' WHERE model_id = ? AND version = ? AND status <> 'running'")
+        .bind(model_id)
+        .bind(version)
+        .execute(&mut *tx)
+        .await?;
+    tx.commit().await?;
+    Ok(Some((version, job_id)))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -420,32 +450,3 @@ mod tests {
     }
 }
 
-/// Queues a re-export of a model's latest version (same bundle, current library and drives):
-/// a `reexport` job, with the version back to `queued`. `None` when the model has no version.
-pub async fn queue_reexport(pool: &SqlitePool, model_id: &str) -> Result<Option<(i64, String)>, StoreError> {
-    let mut tx = pool.begin().await?;
-    let latest: Option<(i64,)> = sqlx::query_as("SELECT MAX(version) FROM versions WHERE model_id = ? HAVING COUNT(*) > 0")
-        .bind(model_id)
-        .fetch_optional(&mut *tx)
-        .await?;
-    let Some((version,)) = latest else {
-        tx.rollback().await?;
-        return Ok(None);
-    };
-    let job_id = new_id();
-    sqlx::query(&format!(
-        "INSERT INTO jobs (id, kind, model_id, version, status, created_at) VALUES (?, 'reexport', ?, ?, 'queued', {NOW})"
-    ))
-    .bind(&job_id)
-    .bind(model_id)
-    .bind(version)
-    .execute(&mut *tx)
-    .await?;
-    sqlx::query("UPDATE versions SET status = 'queued' WHERE model_id = ? AND version = ? AND status <> 'running'")
-        .bind(model_id)
-        .bind(version)
-        .execute(&mut *tx)
-        .await?;
-    tx.commit().await?;
-    Ok(Some((version, job_id)))
-}
