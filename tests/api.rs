@@ -56,3 +56,21 @@ async fn tokens_guard_models_and_writes_when_auth_is_required() {
 async fn sqlx_rows(store: &cad2mo::store::Store) -> Vec<(String,)> {
     cad2mo::store::tokens::hashes(store).await.expect("hashes").into_iter().map(|h| (h,)).collect()
 }
+
+/// Library reads are cached; a write must never leave a stale read behind.
+#[tokio::test]
+async fn library_cache_never_serves_stale_reads() {
+    let app = TestApp::spawn().await;
+    let list: serde_json::Value = app.get("/api/library/instances?domain=gear").await.json().await.expect("list");
+    let inst = list.as_array().expect("instances").iter().find(|i| i["values"]["ratio"].is_number()).expect("a gear").clone();
+    let id = inst["id"].as_str().expect("id");
+    let mut update = serde_json::json!({"name": inst["name"], "source": inst["source"], "values": inst["values"]});
+    update["values"]["ratio"] = serde_json::json!(42.5);
+    let r = app.client.put(app.url(&format!("/api/library/instances/{id}"))).json(&update).send().await.expect("put");
+    assert_eq!(r.status(), 200, "{}", r.text().await.unwrap_or_default());
+    for path in [format!("/api/library/instances/{id}"), "/api/library/instances?domain=gear".to_string()] {
+        let body: serde_json::Value = app.get(&path).await.json().await.expect("json");
+        let text = body.to_string();
+        assert!(text.contains("42.5"), "{path} is stale: {text}");
+    }
+}

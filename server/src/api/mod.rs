@@ -2,6 +2,7 @@
 //! they are merged here in reading order. DTOs are private to their modules, never IR types.
 
 mod auth;
+mod cache;
 mod drives;
 pub mod error;
 mod health;
@@ -23,6 +24,7 @@ pub fn router(state: AppState) -> Router {
         .merge(jobs::router())
         .merge(library::router())
         .merge(drives::router())
+        .layer(axum::middleware::from_fn_with_state(cache::LibraryCache::default(), cache::library_cache))
         .layer(axum::middleware::from_fn_with_state(state.clone(), auth::require_token))
         .with_state(state)
 }
