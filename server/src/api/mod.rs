@@ -9,6 +9,7 @@ mod health;
 mod jobs;
 mod library;
 mod models;
+mod openapi;
 
 use axum::Router;
 
@@ -20,6 +21,7 @@ use crate::app::AppState;
 pub fn router(state: AppState) -> Router {
     Router::new()
         .merge(health::router())
+        .merge(openapi::router())
         .merge(models::router())
         .merge(jobs::router())
         .merge(library::router())
