@@ -38,6 +38,12 @@ enum Command {
         /// Merge bodies joined by welds into single bodies.
         #[arg(long)]
         lump_welds: bool,
+        /// VRML matching: position tolerance in metres (default: 1e-4 of the assembly's size).
+        #[arg(long)]
+        match_tolerance: Option<f64>,
+        /// VRML matching: orientation tolerance in radians (default 1e-3).
+        #[arg(long)]
+        match_angle: Option<f64>,
     },
     /// Run the HTTP service (SQLite database created and migrated on start).
     Serve(crate::config::ServeArgs),
@@ -177,7 +183,7 @@ pub fn main() -> ExitCode {
                 }
             }
         }
-        Command::Convert { bundle, output, package_name, gravity, lump_welds } => {
+        Command::Convert { bundle, output, package_name, gravity, lump_welds, match_tolerance, match_angle } => {
             if let Some(p) = &package_name {
                 if pipeline::back::modelica::sanitize(p, "P") != *p {
                     eprintln!("error: --package-name \"{p}\" is not a Modelica identifier ([A-Za-z_][A-Za-z0-9_]*, not a keyword)");
@@ -191,7 +197,8 @@ pub fn main() -> ExitCode {
                     return ExitCode::from(1);
                 }
             };
-            let opts = Options { package_name, gravity, lump_welds, write_shapes: true, ..Options::default() };
+            let matching = pipeline::passes::geometry_match::MatchOptions { tolerance_m: match_tolerance, angle_tolerance: match_angle };
+            let opts = Options { package_name, gravity, lump_welds, write_shapes: true, matching, ..Options::default() };
             let out = match pipeline::convert(&b, &opts) {
                 Ok(o) => o,
                 Err(e) => {
