@@ -119,11 +119,17 @@ async fn insert_version_and_job(
     .bind(v.options_json)
     .execute(&mut *tx)
     .await?;
+    insert_job(tx, "convert", model_id, version).await
+}
+
+/// Inserts a queued job of `kind` for a version (inside the caller's transaction).
+async fn insert_job(tx: &mut sqlx::SqliteConnection, kind: &str, model_id: &str, version: i64) -> Result<String, StoreError> {
     let job_id = new_id();
     sqlx::query(&format!(
-        "INSERT INTO jobs (id, kind, model_id, version, status, created_at) VALUES (?, 'convert', ?, ?, 'queued', {NOW})"
+        "INSERT INTO jobs (id, kind, model_id, version, status, created_at) VALUES (?, ?, ?, ?, 'queued', {NOW})"
     ))
     .bind(&job_id)
+    .bind(kind)
     .bind(model_id)
     .bind(version)
     .execute(&mut *tx)
@@ -370,15 +376,7 @@ pub async fn queue_reexport(pool: &SqlitePool, model_id: &str) -> Result<Option<
         tx.rollback().await?;
         return Ok(None);
     };
-    let job_id = new_id();
-    sqlx::query(&format!(
-        "INSERT INTO jobs (id, kind, model_id, version, status, created_at) VALUES (?, 'reexport', ?, ?, 'queued', {NOW})"
-    ))
-    .bind(&job_id)
-    .bind(model_id)
-    .bind(version)
-    .execute(&mut *tx)
-    .await?;
+    let job_id = insert_job(&mut tx, "reexport", model_id, version).await?;
     sqlx::query("UPDATE versions SET status = 'queued' WHERE model_id = ? AND version = ? AND status <> 'running'")
         .bind(model_id)
         .bind(version)
