@@ -87,9 +87,14 @@ async fn dispatch(ctx: Ctx, workers: usize, mut wake: mpsc::Receiver<()>) {
             }
             Ok(None) => {
                 drop(permit);
-                if wake.recv().await.is_none() {
-                    tracing::info!("job workers stopped");
-                    return;
+                // Woken by a new job, or after a short while: a job held back behind an earlier
+                // job of its model becomes claimable when that one finishes.
+                tokio::select! {
+                    w = wake.recv() => if w.is_none() {
+                        tracing::info!("job workers stopped");
+                        return;
+                    },
+                    () = tokio::time::sleep(Duration::from_millis(50)) => {}
                 }
             }
             Err(e) => {

@@ -258,13 +258,18 @@ pub async fn requeue_unfinished(pool: &SqlitePool) -> Result<u64, StoreError> {
     Ok(r.rows_affected())
 }
 
-/// Takes the oldest queued job: marks it and its version `running` and returns it. `None` when
-/// nothing is queued.
+/// Takes the oldest queued job whose model has no earlier job still queued or running (a
+/// model's jobs run in version order: a version's Modelica names come from the one before it),
+/// marks it and its version `running` and returns it. `None` when nothing is claimable.
 pub async fn claim_next_job(pool: &SqlitePool) -> Result<Option<ClaimedJob>, StoreError> {
     let mut tx = pool.begin().await?;
     let job: Option<(String, String, String, i64)> = sqlx::query_as(&format!(
         "UPDATE jobs SET status = 'running', started_at = {NOW}, finished_at = NULL, error_json = NULL
-         WHERE id = (SELECT id FROM jobs WHERE status = 'queued' ORDER BY created_at, rowid LIMIT 1)
+         WHERE id = (SELECT j.id FROM jobs j WHERE j.status = 'queued'
+                       AND NOT EXISTS (SELECT 1 FROM jobs e WHERE e.model_id = j.model_id
+                                         AND e.status IN ('queued', 'running')
+                                         AND (e.version < j.version OR (e.version = j.version AND e.rowid < j.rowid)))
+                     ORDER BY j.created_at, j.rowid LIMIT 1)
          RETURNING id, kind, model_id, version"
     ))
     .fetch_optional(&mut *tx)
