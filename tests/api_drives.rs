@@ -157,7 +157,7 @@ async fn drives_survive_a_cad_change_and_reexport() {
     let r = app.client.post(app.url("/api/reexport")).send().await.expect("batch");
     assert_eq!(r.status(), 202);
     let batch: Value = r.json().await.expect("json");
-    assert_eq!(batch["jobs"].as_array().expect("jobs").len(), 1);
+    assert_eq!(batch["jobs"].as_array().expect("jobs").len(), 1, "{batch}");
     for j in batch["jobs"].as_array().expect("jobs") {
         assert_eq!(app.wait_for_job(j["job_id"].as_str().expect("id")).await["status"], "succeeded");
     }

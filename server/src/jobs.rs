@@ -94,7 +94,7 @@ async fn dispatch(ctx: Ctx, workers: usize, mut wake: mpsc::Receiver<()>) {
                         tracing::info!("job workers stopped");
                         return;
                     },
-                    () = tokio::time::sleep(Duration::from_millis(50)) => {}
+                    () = tokio::time::sleep(Duration::from_millis(100)) => {}
                 }
             }
             Err(e) => {

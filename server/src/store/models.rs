@@ -262,16 +262,25 @@ pub async fn requeue_unfinished(pool: &SqlitePool) -> Result<u64, StoreError> {
 /// model's jobs run in version order: a version's Modelica names come from the one before it),
 /// marks it and its version `running` and returns it. `None` when nothing is claimable.
 pub async fn claim_next_job(pool: &SqlitePool) -> Result<Option<ClaimedJob>, StoreError> {
+    // Read first, outside any transaction: an idle poll must not take SQLite's write lock, or a
+    // concurrent read-then-write transaction elsewhere would fail with "database is locked".
+    let candidate: Option<(String,)> = sqlx::query_as(
+        "SELECT j.id FROM jobs j WHERE j.status = 'queued'
+           AND NOT EXISTS (SELECT 1 FROM jobs e WHERE e.model_id = j.model_id
+                             AND e.status IN ('queued', 'running')
+                             AND (e.version < j.version OR (e.version = j.version AND e.rowid < j.rowid)))
+         ORDER BY j.created_at, j.rowid LIMIT 1",
+    )
+    .fetch_optional(pool)
+    .await?;
+    let Some((candidate,)) = candidate else { return Ok(None) };
     let mut tx = pool.begin().await?;
     let job: Option<(String, String, String, i64)> = sqlx::query_as(&format!(
         "UPDATE jobs SET status = 'running', started_at = {NOW}, finished_at = NULL, error_json = NULL
-         WHERE id = (SELECT j.id FROM jobs j WHERE j.status = 'queued'
-                       AND NOT EXISTS (SELECT 1 FROM jobs e WHERE e.model_id = j.model_id
-                                         AND e.status IN ('queued', 'running')
-                                         AND (e.version < j.version OR (e.version = j.version AND e.rowid < j.rowid)))
-                     ORDER BY j.created_at, j.rowid LIMIT 1)
+         WHERE id = ? AND status = 'queued'
          RETURNING id, kind, model_id, version"
     ))
+    .bind(&candidate)
     .fetch_optional(&mut *tx)
     .await?;
     let Some((id, kind, model_id, version)) = job else {
@@ -373,15 +382,22 @@ pub async fn mark_interrupted(pool: &SqlitePool, job_id: &str) -> Result<bool, S
 /// a `reexport` job, with the version back to `queued`. `None` when the model has no version.
 pub async fn queue_reexport(pool: &SqlitePool, model_id: &str) -> Result<Option<(i64, String)>, StoreError> {
     let mut tx = pool.begin().await?;
-    let latest: Option<(i64,)> = sqlx::query_as("SELECT MAX(version) FROM versions WHERE model_id = ? HAVING COUNT(*) > 0")
-        .bind(model_id)
-        .fetch_optional(&mut *tx)
-        .await?;
-    let Some((version,)) = latest else {
+    // Write first (no read-then-write lock upgrade inside the transaction).
+    let job_id = new_id();
+    let inserted: Option<(i64,)> = sqlx::query_as(&format!(
+        "INSERT INTO jobs (id, kind, model_id, version, status, created_at)
+         SELECT ?, 'reexport', ?, MAX(version), 'queued', {NOW} FROM versions WHERE model_id = ? HAVING COUNT(*) > 0
+         RETURNING version"
+    ))
+    .bind(&job_id)
+    .bind(model_id)
+    .bind(model_id)
+    .fetch_optional(&mut *tx)
+    .await?;
+    let Some((version,)) = inserted else {
         tx.rollback().await?;
         return Ok(None);
     };
-    let job_id = insert_job(&mut tx, "reexport", model_id, version).await?;
     sqlx::query("UPDATE versions SET status = 'queued' WHERE model_id = ? AND version = ? AND status <> 'running'")
         .bind(model_id)
         .bind(version)
