@@ -63,11 +63,17 @@ pub struct SourceLoc {
 
 impl std::fmt::Display for SourceLoc {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        if self.line == 0 {
-            write!(f, "{}", self.file)
-        } else {
-            write!(f, "{}:{}:{}", self.file, self.line, self.column)
-        }
+        fmt_location(f, &self.file, self.line, self.column)
+    }
+}
+
+/// Writes `file`, or `file:line:column` when the line is known (0 = unknown): how every stage
+/// renders a position.
+pub fn fmt_location(f: &mut std::fmt::Formatter<'_>, file: &str, line: u32, column: u32) -> std::fmt::Result {
+    if line == 0 {
+        write!(f, "{file}")
+    } else {
+        write!(f, "{file}:{line}:{column}")
     }
 }
 

@@ -28,10 +28,7 @@ struct DisplayError<'e>(&'e XmlError);
 impl fmt::Display for DisplayError<'_> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let e = self.0;
-        write!(f, "{}", e.file)?;
-        if e.line > 0 {
-            write!(f, ":{}:{}", e.line, e.column)?;
-        }
+        crate::pipeline::ir::fmt_location(f, &e.file, e.line, e.column)?;
         if !e.element.is_empty() {
             write!(f, ": in {}", e.element)?;
         }

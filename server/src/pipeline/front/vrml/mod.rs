@@ -153,10 +153,7 @@ struct DisplayError<'e>(&'e VrmlError);
 impl fmt::Display for DisplayError<'_> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let e = self.0;
-        write!(f, "{}", e.file)?;
-        if e.line > 0 {
-            write!(f, ":{}:{}", e.line, e.column)?;
-        }
+        crate::pipeline::ir::fmt_location(f, &e.file, e.line, e.column)?;
         write!(f, ": {}", e.kind)
     }
 }
