@@ -10,6 +10,7 @@ mod jobs;
 mod library;
 mod models;
 mod openapi;
+mod web;
 
 use axum::Router;
 
@@ -26,6 +27,7 @@ pub fn router(state: AppState) -> Router {
         .merge(jobs::router())
         .merge(library::router())
         .merge(drives::router())
+        .merge(web::router())
         .layer(axum::middleware::from_fn_with_state(cache::LibraryCache::default(), cache::library_cache))
         .layer(axum::middleware::from_fn_with_state(state.clone(), auth::require_token))
         .with_state(state)

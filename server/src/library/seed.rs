@@ -65,13 +65,16 @@ fn class(name: &str, domain: &str, modelica_class: &str, description: &str, para
     }
 }
 
+/// The largest transmission ratio a gear takes (either sign): beyond any gearbox built.
+const RATIO_LIMIT: f64 = 10_000.0;
+
 fn classes() -> Vec<(&'static str, ClassDraft)> {
     let ratio = || {
         real(
             "ratio",
             "1",
-            None,
-            None,
+            Some(-RATIO_LIMIT),
+            Some(RATIO_LIMIT),
             true,
             Some(1.0),
             "Transmission ratio: motor speed / output speed (as MSL IdealGear); negative reverses; must not be 0",

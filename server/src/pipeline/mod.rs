@@ -241,8 +241,7 @@ pub fn convert(bundle: &Bundle, opts: &Options) -> Result<Output, ConvertError> 
     if opts.write_shapes {
         for (i, stem) in pkg.layout.shapes.iter().enumerate() {
             let (Some(stem), Some(mesh)) = (stem, &a.model.bodies[i].mesh) else { continue };
-            let color = a.model.bodies[i].material.as_ref().map_or([0.7; 3], |m| m.color);
-            let rgb = color.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() as u8);
+            let rgb = a.model.bodies[i].display_rgb();
             let dir = format!("{package_name}/Resources/Shapes");
             files.push((format!("{dir}/{stem}.dxf"), back::dxf::write(mesh, rgb, stem)));
             files.push((format!("{dir}/{stem}.stl"), back::stl::write_binary(mesh, stem)));

@@ -69,6 +69,8 @@ pub struct BodyReport {
     /// The shape file in the package, when the body has a mesh.
     pub shape: Option<String>,
     pub triangles: usize,
+    /// The shape's colour, RGB in 0..=1 (the CAD material, or the default grey).
+    pub color: [f64; 3],
     /// World pose of CS1, the body frame.
     pub cs1: FrameReport,
     pub frames: Vec<FrameReport>,
@@ -84,6 +86,12 @@ pub struct ElementReport {
     pub axis_local: [f64; 3],
     /// Start value: rad or m.
     pub initial_q: f64,
+    /// The axis in world coordinates at the CAD pose (zero for spherical): turning (or sliding)
+    /// the element by `dq` from `initial_q` moves the follower side about (along) this axis
+    /// through `origin_world`.
+    pub axis_world: [f64; 3],
+    /// The element's frame_a origin in the world at the CAD pose (m).
+    pub origin_world: [f64; 3],
 }
 
 #[derive(Serialize, Debug, Clone)]
@@ -174,6 +182,7 @@ pub fn build(input: ReportInput) -> Report {
                 geometry: b.geometry_sources.clone(),
                 shape: shape.map(|s| format!("{package_name}/Resources/Shapes/{s}.dxf")),
                 triangles: b.mesh.as_ref().map_or(0, |m| m.triangle_count()),
+                color: b.display_color(),
                 cs1: frame_report(model, layout, b.cs1),
                 frames: b.frames.iter().filter(|f| **f != b.cs1).map(|f| frame_report(model, layout, *f)).collect(),
                 lumped: merged.get(&b.node_id).cloned().unwrap_or_default(),
@@ -196,6 +205,8 @@ pub fn build(input: ReportInput) -> Report {
                     kind: e.kind,
                     axis_local: e.axis.into(),
                     initial_q: e.q0,
+                    axis_world: e.axis_world.into(),
+                    origin_world: e.origin_world.into(),
                 })
                 .collect();
             let axis_world = joint

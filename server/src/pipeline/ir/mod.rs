@@ -161,6 +161,18 @@ pub struct Body {
     pub loc: SourceLoc,
 }
 
+impl Body {
+    /// The colour the body's shape is drawn in (0..=1): its CAD material, or light grey.
+    pub fn display_color(&self) -> [f64; 3] {
+        self.material.as_ref().map_or([0.7; 3], |m| m.color.map(|c| c.clamp(0.0, 1.0)))
+    }
+
+    /// [`Body::display_color`] as 8-bit RGB.
+    pub fn display_rgb(&self) -> [u8; 3] {
+        self.display_color().map(|c| (c * 255.0).round() as u8)
+    }
+}
+
 /// Colour and finish from `MaterialProp`, components in 0..=1.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Material {

@@ -27,6 +27,10 @@ pub struct Element {
     pub axis: Vector3<f64>,
     /// Start coordinate: rad (revolute) or m (prismatic); 0 for spherical.
     pub q0: f64,
+    /// The axis in world coordinates at the CAD pose (zero vector for spherical).
+    pub axis_world: Vector3<f64>,
+    /// Where the element's frame_a is in the world at the CAD pose (m).
+    pub origin_world: Vector3<f64>,
 }
 
 /// The emitted form of one joint.
@@ -102,21 +106,28 @@ pub fn chain(model: &Model, joint: &Joint) -> Chain {
         match p.kind {
             PrimitiveKind::Weld => {}
             PrimitiveKind::Spherical => {
-                elements.push(Element { kind: p.kind, axis: Vector3::zeros(), q0: 0.0 });
+                elements.push(Element {
+                    kind: p.kind,
+                    axis: Vector3::zeros(),
+                    q0: 0.0,
+                    axis_world: Vector3::zeros(),
+                    origin_world: cur.translation.vector,
+                });
             }
             PrimitiveKind::Revolute | PrimitiveKind::Prismatic => {
                 let Some(world_axis) = clean_axis(&p.axis_world) else { continue };
                 let Some(axis) = clean_axis(&(cur.rotation.inverse() * world_axis)) else { continue };
+                let origin_world = cur.translation.vector;
                 if p.kind == PrimitiveKind::Revolute {
                     let missing = cur.rotation.inverse() * f.rotation;
                     let q0 = twist_angle(&missing, &axis);
                     cur.rotation *= UnitQuaternion::from_axis_angle(&Unit::new_unchecked(axis), q0);
-                    elements.push(Element { kind: p.kind, axis, q0 });
+                    elements.push(Element { kind: p.kind, axis, q0, axis_world: world_axis, origin_world });
                 } else {
                     let q0 = s.get(k).copied().unwrap_or(0.0);
                     k += 1;
                     cur.translation.vector += cur.rotation * (axis * q0);
-                    elements.push(Element { kind: p.kind, axis, q0 });
+                    elements.push(Element { kind: p.kind, axis, q0, axis_world: world_axis, origin_world });
                 }
             }
         }

@@ -406,8 +406,7 @@ pub fn write(model: &Model, v: &Validated, opts: &Options) -> Package {
         }
         let bname = &names.bodies[i];
         let sname = w.scope.take(&format!("{bname}_shape"));
-        let color = body.material.as_ref().map(|m| m.color).unwrap_or([0.7, 0.7, 0.7]);
-        let c = color.map(|x| (x.clamp(0.0, 1.0) * 255.0).round() as i32);
+        let c = body.display_rgb();
         let place = w.place(COL_SHAPE);
         let _ = writeln!(
             w.decl,

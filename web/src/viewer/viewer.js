@@ -1,0 +1,321 @@
+// The 3D view (three.js): every body's mesh in its CAD colour at its pose, joint axes as arrows,
+// the world frame and a ground grid, orbit/pan/zoom, picking, a red-cyan anaglyph mode, and
+// poses from the joint coordinates (kinematics.js). Renders on demand, not in a loop.
+
+import * as THREE from 'three';
+import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+import { AnaglyphEffect } from 'three/addons/effects/AnaglyphEffect.js';
+import { bodyDeltas, frameMatrix } from './kinematics.js';
+
+export const BACKGROUND = 0xf3f5f8;
+const HIGHLIGHT = new THREE.Color(0xff9900);
+const JOINT_COLORS = { revolute: 0xd03030, prismatic: 0x7030c0 };
+
+export class Viewer {
+  /**
+   * @param {HTMLElement} host  element the canvas goes into (sized by CSS)
+   * @param {object} report     the conversion report
+   * @param {Map<string, THREE.BufferGeometry>} meshes  body modelica_name → geometry in CS1, metres
+   * @param {(sel: {kind: 'body'|'joint', name: string} | null) => void} onPick
+   */
+  constructor(host, report, meshes, onPick) {
+    this.host = host;
+    this.report = report;
+    this.onPick = onPick;
+    this.q = new Map();
+    this.renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+    this.renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
+    this.renderer.setClearColor(BACKGROUND);
+    const canvas = this.renderer.domElement;
+    canvas.tabIndex = 0;
+    canvas.setAttribute('role', 'img');
+    canvas.setAttribute('aria-label', `3D view of ${report.model_name}: drag to orbit, right-drag or arrow keys to pan, wheel to zoom, click a body or joint to select it`);
+    canvas.classList.add('viewer-canvas');
+    host.append(canvas);
+
+    this.scene = new THREE.Scene();
+    this.scene.add(new THREE.HemisphereLight(0xffffff, 0x667788, 2.2));
+    const sun = new THREE.DirectionalLight(0xffffff, 1.6);
+    sun.position.set(1, 2, 1.5);
+    this.scene.add(sun);
+    const fill = new THREE.DirectionalLight(0xffffff, 0.6);
+    fill.position.set(-1.5, -0.5, -1);
+    this.scene.add(fill);
+
+    this.bodies = new Map(); // name → {group, cad: Matrix4, materials}
+    this.joints = new Map(); // name → {group, arrows}
+    this.build(meshes);
+
+    this.camera = new THREE.PerspectiveCamera(40, 1, this.size / 1000, this.size * 100);
+    this.camera.up.copy(this.up);
+    this.controls = new OrbitControls(this.camera, canvas);
+    this.controls.listenToKeyEvents(canvas);
+    this.controls.keyPanSpeed = 12;
+    this.controls.addEventListener('change', () => this.invalidate());
+    this.anaglyph = null;
+    this.resetView();
+
+    this.resize = new ResizeObserver(() => this.fit());
+    this.resize.observe(host);
+    this.fit();
+    this.installPicking(canvas);
+  }
+
+  /** Builds bodies, joint arrows, world frame and grid. */
+  build(meshes) {
+    const r = this.report;
+    const g = r.options?.gravity || [0, 0, -9.81];
+    this.up = new THREE.Vector3(-g[0], -g[1], -g[2]);
+    if (this.up.lengthSq() === 0) this.up.set(0, 0, 1);
+    this.up.normalize();
+
+    const box = new THREE.Box3();
+    for (const b of r.bodies) {
+      const group = new THREE.Group();
+      group.matrixAutoUpdate = false;
+      group.name = b.modelica_name;
+      const cad = frameMatrix(b.cs1);
+      const color = new THREE.Color(...b.color);
+      const materials = [];
+      const geom = meshes.get(b.modelica_name);
+      if (geom) {
+        const mat = new THREE.MeshStandardMaterial({ color, roughness: 0.65, metalness: 0.05, side: THREE.DoubleSide });
+        materials.push(mat);
+        const mesh = new THREE.Mesh(geom, mat);
+        mesh.userData.pick = { kind: 'body', name: b.modelica_name };
+        group.add(mesh);
+      }
+      this.scene.add(group);
+      this.bodies.set(b.modelica_name, { group, cad, materials, hasMesh: !!geom, cg: new THREE.Vector3(...b.cg_world) });
+      group.matrix.copy(cad);
+      group.updateMatrixWorld(true);
+      if (geom) box.expandByObject(group);
+      else box.expandByPoint(new THREE.Vector3(...b.cg_world));
+    }
+    for (const j of r.joints) for (const e of j.elements) if (e.origin_world) box.expandByPoint(new THREE.Vector3(...e.origin_world));
+    if (box.isEmpty()) box.set(new THREE.Vector3(-0.5, -0.5, -0.5), new THREE.Vector3(0.5, 0.5, 0.5));
+    this.box = box;
+    this.size = Math.max(box.getSize(new THREE.Vector3()).length(), 1e-3);
+
+    // Bodies without a mesh: a small sphere at the CG, so they can be seen and picked.
+    const dot = this.size * 0.015;
+    for (const b of r.bodies) {
+      const entry = this.bodies.get(b.modelica_name);
+      if (entry.hasMesh || !(b.mass > 0)) continue;
+      const mat = new THREE.MeshStandardMaterial({ color: new THREE.Color(...b.color), roughness: 0.5 });
+      entry.materials.push(mat);
+      const s = new THREE.Mesh(new THREE.SphereGeometry(dot, 16, 12), mat);
+      s.position.copy(new THREE.Vector3(...b.cg_world).applyMatrix4(entry.cad.clone().invert()));
+      s.userData.pick = { kind: 'body', name: b.modelica_name };
+      entry.group.add(s);
+    }
+
+    // Joint axes: one arrow per movable element, carried by the base side.
+    const len = this.size * 0.12;
+    for (const j of r.joints) {
+      const group = new THREE.Group();
+      group.matrixAutoUpdate = false;
+      const arrows = [];
+      for (const e of j.elements) {
+        const a = new THREE.Vector3(...(e.axis_world || [0, 0, 0]));
+        if (a.lengthSq() < 0.5 || !e.origin_world) continue;
+        const color = JOINT_COLORS[e.kind] || 0x333333;
+        const origin = new THREE.Vector3(...e.origin_world).addScaledVector(a.clone().normalize(), -len * 0.35);
+        const arrow = new THREE.ArrowHelper(a.normalize(), origin, len, color, len * 0.28, len * 0.14);
+        arrow.line.material.linewidth = 2;
+        arrow.traverse((o) => (o.userData.pick = { kind: 'joint', name: j.modelica_name }));
+        arrow.userData.color = color;
+        arrows.push(arrow);
+        group.add(arrow);
+      }
+      if (!arrows.length) continue;
+      this.scene.add(group);
+      this.joints.set(j.modelica_name, { group, arrows, base: j.base_body });
+    }
+
+    // World frame at the origin and a grid under the model, normal to "up" (against gravity).
+    this.axes = new THREE.AxesHelper(this.size * 0.2);
+    this.scene.add(this.axes);
+    const step = niceStep(this.size / 10);
+    const extent = Math.ceil((this.size * 1.5) / step) * step;
+    this.grid = new THREE.GridHelper(extent * 2, Math.round((extent * 2) / step), 0x9aa4b0, 0xd0d6de);
+    this.grid.quaternion.setFromUnitVectors(new THREE.Vector3(0, 1, 0), this.up);
+    const centre = box.getCenter(new THREE.Vector3());
+    let low = Infinity;
+    for (const c of corners(box)) low = Math.min(low, c.dot(this.up));
+    this.grid.position.copy(centre.clone().addScaledVector(this.up, low - centre.dot(this.up)));
+    this.scene.add(this.grid);
+    this.applyPose();
+  }
+
+  /** Poses every body and joint arrow for the current joint values. */
+  applyPose() {
+    const deltas = bodyDeltas(this.report, this.q);
+    for (const [name, b] of this.bodies) {
+      const d = deltas.get(name) || new THREE.Matrix4();
+      b.group.matrix.multiplyMatrices(d, b.cad);
+      b.group.matrixWorldNeedsUpdate = true;
+    }
+    for (const [, j] of this.joints) {
+      j.group.matrix.copy(deltas.get(j.base) || new THREE.Matrix4());
+      j.group.matrixWorldNeedsUpdate = true;
+    }
+    this.invalidate();
+  }
+
+  setCoordinate(key, value) {
+    this.q.set(key, value);
+    this.applyPose();
+  }
+
+  resetPose() {
+    this.q.clear();
+    this.applyPose();
+  }
+
+  /** Frames the whole model from an oblique direction. */
+  resetView() {
+    const centre = this.box.getCenter(new THREE.Vector3());
+    const up = this.up;
+    // A side direction perpendicular to "up", then lifted: an isometric-like view.
+    const side = Math.abs(up.z) > 0.9 ? new THREE.Vector3(1, -1.4, 0) : new THREE.Vector3(1, 0, 1.4);
+    side.addScaledVector(up, -side.dot(up)).normalize();
+    const dir = side.addScaledVector(up, 0.6).normalize();
+    const dist = (this.size / 2 / Math.tan((this.camera.fov * Math.PI) / 360)) * 1.15;
+    this.camera.position.copy(centre).addScaledVector(dir, dist);
+    this.camera.near = dist / 200;
+    this.camera.far = dist * 50;
+    this.camera.updateProjectionMatrix();
+    this.controls.target.copy(centre);
+    this.controls.update();
+    this.invalidate();
+  }
+
+  setAnaglyph(on) {
+    if (on && !this.anaglyph) {
+      this.anaglyph = new AnaglyphEffect(this.renderer);
+      this.fit();
+    }
+    this.anaglyphOn = on;
+    this.invalidate();
+  }
+
+  setGrid(on) {
+    this.grid.visible = on;
+    this.axes.visible = on;
+    this.invalidate();
+  }
+
+  /** Highlights one body or joint (null clears). */
+  select(sel) {
+    for (const [name, b] of this.bodies) {
+      const on = sel?.kind === 'body' && sel.name === name;
+      for (const m of b.materials) m.emissive.copy(on ? HIGHLIGHT : new THREE.Color(0)).multiplyScalar(on ? 0.45 : 0);
+    }
+    for (const [name, j] of this.joints) {
+      const on = sel?.kind === 'joint' && sel.name === name;
+      for (const a of j.arrows) {
+        a.setColor(on ? HIGHLIGHT : a.userData.color);
+        a.scale.setScalar(on ? 1.4 : 1);
+      }
+    }
+    this.invalidate();
+  }
+
+  fit() {
+    const w = Math.max(this.host.clientWidth, 1);
+    const hgt = Math.max(this.host.clientHeight, 1);
+    this.renderer.setSize(w, hgt, false);
+    this.anaglyph?.setSize(w, hgt);
+    this.camera.aspect = w / hgt;
+    this.camera.updateProjectionMatrix();
+    this.invalidate();
+  }
+
+  invalidate() {
+    if (this.frame) return;
+    this.frame = requestAnimationFrame(() => {
+      this.frame = null;
+      this.render();
+    });
+  }
+
+  render() {
+    if (this.anaglyphOn && this.anaglyph) {
+      // Eye separation and focal plane scale with the viewing distance (models are mm to m).
+      const dist = this.camera.position.distanceTo(this.controls.target);
+      this.anaglyph.eyeSep = dist / 30;
+      this.anaglyph.planeDistance = dist;
+      this.anaglyph.render(this.scene, this.camera);
+    }
+    else this.renderer.render(this.scene, this.camera);
+    this.host.dataset.rendered = String((Number(this.host.dataset.rendered) || 0) + 1);
+  }
+
+  /** Where the model's meshes are on screen, in canvas CSS pixels: {x0, y0, x1, y1}. */
+  screenBox(name) {
+    const out = { x0: Infinity, y0: Infinity, x1: -Infinity, y1: -Infinity };
+    const canvas = this.renderer.domElement;
+    for (const [n, b] of this.bodies) {
+      if (!b.hasMesh || (name && n !== name)) continue;
+      b.group.updateMatrixWorld(true);
+      const box = new THREE.Box3().setFromObject(b.group);
+      for (const c of corners(box)) {
+        const p = c.project(this.camera);
+        const x = ((p.x + 1) / 2) * canvas.clientWidth;
+        const y = ((1 - p.y) / 2) * canvas.clientHeight;
+        out.x0 = Math.min(out.x0, x);
+        out.y0 = Math.min(out.y0, y);
+        out.x1 = Math.max(out.x1, x);
+        out.y1 = Math.max(out.y1, y);
+      }
+    }
+    return out;
+  }
+
+  installPicking(canvas) {
+    const ray = new THREE.Raycaster();
+    ray.params.Line.threshold = this.size * 0.01;
+    let down = null;
+    canvas.addEventListener('pointerdown', (e) => (down = { x: e.clientX, y: e.clientY }));
+    canvas.addEventListener('pointerup', (e) => {
+      if (!down || Math.hypot(e.clientX - down.x, e.clientY - down.y) > 4) return;
+      const r = canvas.getBoundingClientRect();
+      const p = new THREE.Vector2(((e.clientX - r.left) / r.width) * 2 - 1, -((e.clientY - r.top) / r.height) * 2 + 1);
+      ray.setFromCamera(p, this.camera);
+      const targets = [];
+      for (const [, b] of this.bodies) targets.push(b.group);
+      for (const [, j] of this.joints) targets.push(j.group);
+      const hits = ray.intersectObjects(targets, true).filter((h) => h.object.userData.pick && h.object.visible);
+      // Joint arrows win over the body they sit in when both are hit.
+      const hit = hits.find((h) => h.object.userData.pick.kind === 'joint') || hits[0];
+      this.onPick(hit ? hit.object.userData.pick : null);
+    });
+  }
+
+  dispose() {
+    cancelAnimationFrame(this.frame);
+    this.resize.disconnect();
+    this.controls.dispose();
+    this.scene.traverse((o) => {
+      o.geometry?.dispose?.();
+      if (o.material) [].concat(o.material).forEach((m) => m.dispose());
+    });
+    this.anaglyph?.dispose?.();
+    this.renderer.dispose();
+    this.renderer.domElement.remove();
+  }
+}
+
+function corners(box) {
+  const out = [];
+  for (const x of [box.min.x, box.max.x]) for (const y of [box.min.y, box.max.y]) for (const z of [box.min.z, box.max.z]) out.push(new THREE.Vector3(x, y, z));
+  return out;
+}
+
+/** 1, 2 or 5 times a power of ten, at least x. */
+function niceStep(x) {
+  const p = 10 ** Math.floor(Math.log10(x));
+  for (const m of [1, 2, 5, 10]) if (m * p >= x) return m * p;
+  return 10 * p;
+}

@@ -1,0 +1,228 @@
+// One converted version: the 3D view beside three tabs (Structure with joint sliders, Report,
+// Drives). Selecting a body or joint anywhere highlights it in the 3D view and in the lists.
+
+import { unzipSync } from 'fflate';
+import { STLLoader } from 'three/addons/loaders/STLLoader.js';
+import { api, download, enc } from '../api.js';
+import { h, fill, errorBox, say, tabs, num } from '../ui.js';
+import { Viewer } from '../viewer/viewer.js';
+import { coordinates } from '../viewer/kinematics.js';
+import { renderDrives } from './drives.js';
+
+const DEG = 180 / Math.PI;
+
+/** STL meshes of the package, by body Modelica name (geometry in CS1, metres). */
+async function loadMeshes(version, report) {
+  const zip = new Uint8Array(await api(version.links.package, { accept: 'application/zip' }));
+  const wanted = new Map();
+  for (const b of report.bodies) if (b.shape) wanted.set(b.shape.replace(/\.dxf$/i, '.stl'), b.modelica_name);
+  const files = unzipSync(zip, { filter: (f) => wanted.has(f.name) });
+  const loader = new STLLoader();
+  const out = new Map();
+  for (const [name, bytes] of Object.entries(files)) {
+    out.set(wanted.get(name), loader.parse(bytes.buffer.slice(bytes.byteOffset, bytes.byteOffset + bytes.byteLength)));
+  }
+  return out;
+}
+
+export async function renderViewer(main, id, v, initialTab) {
+  fill(main, h('p', {}, 'Loading the model…'));
+  const [model, version] = await Promise.all([api(`/api/models/${enc(id)}`), api(`/api/models/${enc(id)}/versions/${v}`)]);
+  if (version.status !== 'succeeded') {
+    fill(
+      main,
+      h('p', { class: 'crumbs' }, h('a', { href: '#/models' }, 'Models'), ' / ', h('a', { href: `#/models/${enc(id)}` }, model.name)),
+      h('h1', {}, `${model.name} v${v}`),
+      version.status === 'failed'
+        ? errorBox({ message: version.error?.detail || 'the conversion failed' }, 'Conversion failed')
+        : h('p', {}, `This version is ${version.status}; reload when it is converted.`),
+    );
+    return;
+  }
+  const report = await api(version.links.report);
+  const meshes = await loadMeshes(version, report);
+
+  let selection = null;
+  const listeners = new Set(); // each list re-marks its selected entry
+  const select = (sel, { scroll = true } = {}) => {
+    selection = sel;
+    viewer.select(sel);
+    for (const f of listeners) f(sel, scroll);
+    info.textContent = sel ? `Selected ${sel.kind} ${sel.name}` : 'Nothing selected';
+  };
+
+  const stage = h('div', { class: 'stage' });
+  const info = h('p', { class: 'selection muted', 'aria-live': 'polite' }, 'Nothing selected');
+  const anaglyph = h('input', { type: 'checkbox', id: 'anaglyph' });
+  const grid = h('input', { type: 'checkbox', id: 'grid', checked: true });
+  const toolbar = h(
+    'div',
+    { class: 'toolbar', role: 'toolbar', 'aria-label': '3D view' },
+    h('button', { type: 'button', onclick: () => viewer.resetView() }, 'Reset view'),
+    h('button', { type: 'button', onclick: () => resetPose() }, 'Reset pose'),
+    h('span', { class: 'check' }, anaglyph, h('label', { for: 'anaglyph' }, 'Red-cyan anaglyph')),
+    h('span', { class: 'check' }, grid, h('label', { for: 'grid' }, 'Grid and world frame')),
+    h('button', { type: 'button', onclick: () => download(version.links.package, `${report.package_name}-v${v}.zip`).catch((e) => say(e.message, 'error')) }, 'Download package'),
+  );
+
+  const viewer = new Viewer(stage, report, meshes, (sel) => select(sel));
+  window.cad2moViewer = viewer; // for the end-to-end tests and the console
+  anaglyph.addEventListener('change', () => viewer.setAnaglyph(anaglyph.checked));
+  grid.addEventListener('change', () => viewer.setGrid(grid.checked));
+  const sliders = new Map();
+  const resetPose = () => {
+    viewer.resetPose();
+    for (const [, s] of sliders) s.reset();
+  };
+
+  const tabSpec = [
+    { id: 'structure', label: 'Structure', render: (p) => renderStructure(p) },
+    { id: 'report', label: 'Report', render: (p) => renderReport(p) },
+    { id: 'drives', label: 'Drives', render: (p) => renderDrives(p, { modelId: id, version, report, select, onSelect: (f) => listeners.add(f) }) },
+  ];
+  const t = tabs(tabSpec, {
+    initial: tabSpec.some((x) => x.id === initialTab) ? initialTab : 'structure',
+    label: 'Model details',
+    onChange: (tab) => history.replaceState(null, '', `#/models/${enc(id)}/versions/${v}${tab === 'structure' ? '' : '/' + tab}`),
+  });
+
+  fill(
+    main,
+    h('p', { class: 'crumbs' }, h('a', { href: '#/models' }, 'Models'), ' / ', h('a', { href: `#/models/${enc(id)}` }, model.name), ' / ', `v${v}`),
+    h('h1', {}, `${model.name} `, h('small', { class: 'muted' }, `v${v} · package ${report.package_name}`)),
+    h('div', { class: 'model-layout' }, h('section', { class: 'view3d', 'aria-label': '3D view' }, toolbar, stage, info), h('section', { class: 'side' }, t.el)),
+  );
+
+
+  // ---- Structure: bodies and joints, with a slider per joint coordinate.
+  function renderStructure(panel) {
+    const coords = coordinates(report);
+    const bodyItems = report.bodies.map((b) => {
+      const btn = h('button', { type: 'button', class: 'pick', dataset: { body: b.modelica_name }, onclick: () => select({ kind: 'body', name: b.modelica_name }) }, b.modelica_name);
+      return h(
+        'li',
+        { dataset: { body: b.modelica_name } },
+        h('span', { class: 'swatch', style: `background: rgb(${b.color.map((c) => Math.round(c * 255)).join(',')})`, 'aria-hidden': 'true' }),
+        btn,
+        h('small', { class: 'muted' }, ` ${b.cad_name} · ${num(b.mass)} kg${b.triangles ? ` · ${b.triangles} triangles` : ' · no shape'}`),
+      );
+    });
+    const jointItems = report.joints
+      .filter((j) => j.elements.length || j.emitted_as !== 'connect')
+      .map((j) => {
+        const btn = h('button', { type: 'button', class: 'pick', dataset: { joint: j.modelica_name }, onclick: () => select({ kind: 'joint', name: j.modelica_name }) }, j.modelica_name);
+        const rows = coords.filter((c) => c.joint === j.modelica_name && c.inTree).map((c) => slider(c));
+        const note = j.in_tree ? (j.in_loop ? 'in a loop: moving it opens the loop in this view' : '') : 'closes a loop (moves with the others)';
+        return h(
+          'li',
+          { dataset: { joint: j.modelica_name } },
+          btn,
+          h('small', { class: 'muted' }, ` ${j.emitted_as} · ${j.base_body} → ${j.follower_body}${note ? ' · ' + note : ''}`),
+          rows,
+        );
+      });
+    fill(
+      panel,
+      h('h2', {}, `Joints (${jointItems.length})`),
+      h('ul', { class: 'picklist joints' }, jointItems),
+      h('h2', {}, `Bodies (${report.bodies.length})`),
+      h('ul', { class: 'picklist bodies' }, bodyItems),
+    );
+    listeners.add((sel, scroll) => {
+      for (const li of panel.querySelectorAll('li[data-body], li[data-joint]')) {
+        const on = sel && ((sel.kind === 'body' && li.dataset.body === sel.name) || (sel.kind === 'joint' && li.dataset.joint === sel.name));
+        li.classList.toggle('selected', !!on);
+        li.querySelector('button.pick')?.setAttribute('aria-pressed', String(!!on));
+        if (on && scroll && !panel.hidden) li.scrollIntoView({ block: 'nearest' });
+      }
+    });
+  }
+
+  function slider(c) {
+    const rot = c.kind === 'revolute';
+    const scale = rot ? DEG : 1000; // shown in degrees or millimetres
+    const span = rot ? 180 : Math.max(0.05, viewer.size) * 1000;
+    const start = c.q0 * scale;
+    const input = h('input', {
+      type: 'range',
+      id: `q-${c.key}`,
+      min: String(start - span),
+      max: String(start + span),
+      step: rot ? '0.5' : String(niceStep(span / 400)),
+      value: String(start),
+      dataset: { coordinate: c.key },
+    });
+    const out = h('output', { for: input.id });
+    const show = () => (out.textContent = `${num(Number(input.value))} ${rot ? '°' : 'mm'}`);
+    input.addEventListener('input', () => {
+      viewer.setCoordinate(c.key, Number(input.value) / scale);
+      show();
+    });
+    input.addEventListener('focus', () => select({ kind: 'joint', name: c.joint }, { scroll: false }));
+    show();
+    sliders.set(c.key, { reset: () => ((input.value = String(start)), show()) });
+    return h('div', { class: 'slider' }, h('label', { for: input.id }, `${c.element} (${c.kind}, start ${num(start)} ${rot ? '°' : 'mm'})`), input, out);
+  }
+
+  // ---- Report: warnings, loops, free bodies and geometry matches, linked to the 3D view.
+  function renderReport(panel) {
+    const byNode = new Map();
+    for (const b of report.bodies) byNode.set(b.node_id, { kind: 'body', name: b.modelica_name });
+    for (const j of report.joints) byNode.set(j.node_id, { kind: 'joint', name: j.modelica_name });
+    const byCad = new Map(report.bodies.map((b) => [b.cad_name, { kind: 'body', name: b.modelica_name }]));
+    const link = (sel, text) =>
+      sel ? h('button', { type: 'button', class: 'link', onclick: () => select(sel), 'aria-label': `Show ${sel.kind} ${sel.name} in 3D` }, text || sel.name) : text;
+    const subject = (w) => {
+      const m = /nodeID "([^"]+)"/.exec(w.location || '') || /nodeID "([^"]+)"/.exec(w.message);
+      if (m && byNode.has(m[1])) return byNode.get(m[1]);
+      const b = /body "([^"]+)"/.exec(w.message) || /body "([^"]+)"/.exec(w.location || '');
+      return b ? byCad.get(b[1]) : null;
+    };
+    const warnings = report.warnings.map((w) =>
+      h('li', {}, h('code', {}, w.code), ' ', w.message, w.location ? h('small', { class: 'muted' }, ` (${w.location})`) : null, ' ', link(subject(w), subject(w) ? 'show' : null)),
+    );
+    const loops = report.loops.map((l) =>
+      h('li', {}, `${l.kind} loop closed by `, link({ kind: 'joint', name: l.closing_joint }), ': ', l.joints.map((j, i) => [i ? ' → ' : '', link({ kind: 'joint', name: j })])),
+    );
+    const free = report.free_bodies.map((b) => h('li', {}, link({ kind: 'body', name: b }), ' is connected to nothing (a free body)'));
+    const matches = [];
+    if (report.vrml) {
+      for (const b of report.bodies) {
+        for (const m of report.vrml.bodies[b.node_id] || []) {
+          matches.push(
+            h('tr', {}, h('th', { scope: 'row' }, link({ kind: 'body', name: b.modelica_name })), h('td', {}, m.node_path), h('td', {}, m.rule), h('td', {}, `${num(m.distance_m * 1000)} mm`), h('td', {}, `${num(m.angle_rad * DEG)}°`), h('td', {}, m.triangles)),
+          );
+        }
+      }
+    }
+    const stl = report.bodies.filter((b) => b.geometry.length && !report.vrml);
+    fill(
+      panel,
+      h('h2', {}, `Warnings (${warnings.length})`),
+      warnings.length ? h('ul', { class: 'report-list' }, warnings) : h('p', { class: 'muted' }, 'None.'),
+      h('h2', {}, `Loops (${loops.length})`),
+      loops.length ? h('ul', { class: 'report-list' }, loops) : h('p', { class: 'muted' }, 'None: the joints form a tree.'),
+      h('h2', {}, `Free bodies (${free.length})`),
+      free.length ? h('ul', { class: 'report-list' }, free) : h('p', { class: 'muted' }, 'None.'),
+      h('h2', {}, 'Geometry'),
+      report.vrml
+        ? [
+            h('p', {}, `VRML files: ${report.vrml.files.join(', ')}; scale ${report.vrml.scale} m per unit; ${report.vrml.unmatched.length} unmatched shapes.`),
+            h('div', { class: 'scroll' }, h('table', {}, h('thead', {}, h('tr', {}, ['Body', 'VRML node', 'Rule', 'Distance', 'Angle', 'Triangles'].map((c) => h('th', { scope: 'col' }, c)))), h('tbody', {}, matches))),
+            report.vrml.unmatched.length ? h('ul', {}, report.vrml.unmatched.map((u) => h('li', {}, typeof u === 'string' ? u : JSON.stringify(u)))) : null,
+          ]
+        : h('ul', { class: 'report-list' }, stl.map((b) => h('li', {}, link({ kind: 'body', name: b.modelica_name }), `: ${b.geometry.join(', ')} (${b.triangles} triangles)`))),
+    );
+  }
+
+  return () => {
+    viewer.dispose();
+    if (window.cad2moViewer === viewer) delete window.cad2moViewer;
+  };
+}
+
+function niceStep(x) {
+  const p = 10 ** Math.floor(Math.log10(x));
+  for (const m of [1, 2, 5, 10]) if (m * p >= x) return m * p;
+  return 10 * p;
+}
