@@ -3,7 +3,6 @@
 import './style.css';
 import { h, fill, errorBox } from './ui.js';
 import { renderModels, renderModel } from './views/models.js';
-import { renderViewer } from './views/model.js';
 import { renderLibrary } from './views/library.js';
 import { renderSettings } from './views/settings.js';
 
@@ -11,7 +10,11 @@ const routes = [
   [/^#?\/?$/, () => renderModels],
   [/^#\/models\/?$/, () => renderModels],
   [/^#\/models\/([^/]+)\/?$/, (m) => (main) => renderModel(main, decodeURIComponent(m[1]))],
-  [/^#\/models\/([^/]+)\/versions\/(\d+)(?:\/(\w+))?\/?$/, (m) => (main) => renderViewer(main, decodeURIComponent(m[1]), Number(m[2]), m[3])],
+  [/^#\/models\/([^/]+)\/versions\/(\d+)(?:\/(\w+))?\/?$/, (m) => async (main) => {
+    // three.js and the viewer load only when a model is opened.
+    const { renderViewer } = await import('./views/model.js');
+    return renderViewer(main, decodeURIComponent(m[1]), Number(m[2]), m[3]);
+  }],
   [/^#\/library\/?$/, () => renderLibrary],
   [/^#\/settings\/?$/, () => renderSettings],
 ];

@@ -122,7 +122,14 @@ export class Viewer {
         const color = JOINT_COLORS[e.kind] || 0x333333;
         const origin = new THREE.Vector3(...e.origin_world).addScaledVector(a.clone().normalize(), -len * 0.35);
         const arrow = new THREE.ArrowHelper(a.normalize(), origin, len, color, len * 0.28, len * 0.14);
-        arrow.line.material.linewidth = 2;
+        // Axes stay visible inside the bodies they sit in: drawn last, without depth test.
+        for (const m of [arrow.line.material, arrow.cone.material]) {
+          m.depthTest = false;
+          m.transparent = true;
+        }
+        arrow.renderOrder = 10;
+        arrow.line.renderOrder = 10;
+        arrow.cone.renderOrder = 10;
         arrow.traverse((o) => (o.userData.pick = { kind: 'joint', name: j.modelica_name }));
         arrow.userData.color = color;
         arrows.push(arrow);
@@ -314,7 +321,7 @@ function corners(box) {
 }
 
 /** 1, 2 or 5 times a power of ten, at least x. */
-function niceStep(x) {
+export function niceStep(x) {
   const p = 10 ** Math.floor(Math.log10(x));
   for (const m of [1, 2, 5, 10]) if (m * p >= x) return m * p;
   return 10 * p;

@@ -258,6 +258,8 @@ export async function renderDrives(panel, ctx) {
     regenOut,
   );
   renderTable();
+  const already = ctx.selected?.();
+  if (already?.kind === 'joint' && data.joints.some((j) => j.name === already.name)) open(already.name, false);
   // Selecting a joint anywhere (3D, lists) opens its drive here.
   ctx.onSelect((sel) => {
     if (sel?.kind === 'joint' && data.joints.some((j) => j.name === sel.name) && current !== sel.name) open(sel.name, false);

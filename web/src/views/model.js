@@ -5,7 +5,7 @@ import { unzipSync } from 'fflate';
 import { STLLoader } from 'three/addons/loaders/STLLoader.js';
 import { api, download, enc } from '../api.js';
 import { h, fill, errorBox, say, tabs, num } from '../ui.js';
-import { Viewer } from '../viewer/viewer.js';
+import { Viewer, niceStep } from '../viewer/viewer.js';
 import { coordinates } from '../viewer/kinematics.js';
 import { renderDrives } from './drives.js';
 
@@ -78,7 +78,7 @@ export async function renderViewer(main, id, v, initialTab) {
   const tabSpec = [
     { id: 'structure', label: 'Structure', render: (p) => renderStructure(p) },
     { id: 'report', label: 'Report', render: (p) => renderReport(p) },
-    { id: 'drives', label: 'Drives', render: (p) => renderDrives(p, { modelId: id, version, report, select, onSelect: (f) => listeners.add(f) }) },
+    { id: 'drives', label: 'Drives', render: (p) => renderDrives(p, { modelId: id, version, report, select, selected: () => selection, onSelect: (f) => listeners.add(f) }) },
   ];
   const t = tabs(tabSpec, {
     initial: tabSpec.some((x) => x.id === initialTab) ? initialTab : 'structure',
@@ -142,7 +142,7 @@ export async function renderViewer(main, id, v, initialTab) {
     const rot = c.kind === 'revolute';
     const scale = rot ? DEG : 1000; // shown in degrees or millimetres
     const span = rot ? 180 : Math.max(0.05, viewer.size) * 1000;
-    const start = c.q0 * scale;
+    const start = Math.round(c.q0 * scale * 1e6) / 1e6; // no float noise in the display
     const input = h('input', {
       type: 'range',
       id: `q-${c.key}`,
@@ -219,10 +219,4 @@ export async function renderViewer(main, id, v, initialTab) {
     viewer.dispose();
     if (window.cad2moViewer === viewer) delete window.cad2moViewer;
   };
-}
-
-function niceStep(x) {
-  const p = 10 ** Math.floor(Math.log10(x));
-  for (const m of [1, 2, 5, 10]) if (m * p >= x) return m * p;
-  return 10 * p;
 }

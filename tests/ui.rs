@@ -1,0 +1,230 @@
+//! The browser UI: its static files as the service serves them, the browser-side kinematics
+//! (node --test), and an end-to-end run in a real headless Chromium driven by playwright-core
+//! (`web/e2e/ui.mjs`): upload, 3D pixels, picking, joint sliders, anaglyph, report, drives with a
+//! refused and an accepted gear ratio, the regenerated package, the motor library (edit, export,
+//! re-import) and a narrow window. Screenshots go to `target/ui-screenshots/`.
+//!
+//! Chromium, Node and the npm packages are installed by the README's test command; without them
+//! these tests print a notice and pass, unless `CAD2MO_REQUIRE_TOOLS=1` (which that command sets).
+
+use std::io::Read;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use cad2mo_tests::app::{zip_dir, TestApp};
+use cad2mo_tests::common::{tools_required, workspace_root};
+
+fn web_dir() -> PathBuf {
+    workspace_root().join("web")
+}
+
+/// `Some(reason)` when the browser test cannot run here.
+fn missing_tools() -> Option<String> {
+    let chromium = std::env::var("CHROMIUM").unwrap_or_else(|_| "/usr/bin/chromium".into());
+    if !Path::new(&chromium).exists() {
+        return Some(format!("no Chromium at {chromium}"));
+    }
+    if !web_dir().join("node_modules/playwright-core").exists() {
+        return Some("web/node_modules has no playwright-core (run npm ci in web/)".into());
+    }
+    if Command::new("node").arg("--version").output().is_err() {
+        return Some("no node".into());
+    }
+    None
+}
+
+fn skip_or_fail(why: &str) {
+    assert!(!tools_required(), "the UI tests need their tools: {why}");
+    println!("skipping the browser UI test: {why}");
+}
+
+#[tokio::test]
+async fn static_files_have_types_caching_and_etags() {
+    let app = TestApp::spawn().await;
+    let client = reqwest::Client::new();
+    let index = client.get(app.url("/")).send().await.expect("GET /");
+    if index.status() == 503 {
+        // Built without npm: the page says why, the API still works.
+        let text = index.text().await.expect("body");
+        assert!(text.contains("not built"), "{text}");
+        skip_or_fail("the UI is not built into this binary");
+        return;
+    }
+    assert_eq!(index.status(), 200);
+    let h = index.headers().clone();
+    assert!(h["content-type"].to_str().expect("type").starts_with("text/html"));
+    assert_eq!(h["cache-control"], "no-cache");
+    assert!(h["content-security-policy"].to_str().expect("csp").contains("default-src 'self'"));
+    let html = index.text().await.expect("html");
+    // The page carries no data: everything comes from the API.
+    assert!(!html.contains("/api/"), "index.html has no data or API paths baked in");
+    let script = html.split("src=\"").nth(1).and_then(|s| s.split('"').next()).expect("a script");
+    assert!(script.starts_with("/assets/") && script.ends_with(".js"), "{script}");
+
+    let js = client.get(app.url(script)).send().await.expect("GET script");
+    assert_eq!(js.status(), 200);
+    let etag = js.headers()["etag"].clone();
+    assert!(js.headers()["content-type"].to_str().expect("type").contains("javascript"));
+    assert_eq!(js.headers()["cache-control"], "public, max-age=31536000, immutable");
+    assert!(js.bytes().await.expect("js").len() > 100_000, "three.js is bundled");
+    let again = client.get(app.url(script)).header("If-None-Match", etag).send().await.expect("revalidate");
+    assert_eq!(again.status(), 304);
+
+    let css = html.split("href=\"").find_map(|s| s.split('"').next().filter(|p| p.ends_with(".css"))).expect("a stylesheet");
+    let css = client.get(app.url(css)).send().await.expect("GET css");
+    assert!(css.headers()["content-type"].to_str().expect("type").starts_with("text/css"));
+    let icon = client.get(app.url("/favicon.svg")).send().await.expect("icon");
+    assert_eq!(icon.headers()["content-type"], "image/svg+xml");
+
+    let missing = client.get(app.url("/assets/nothing.js")).send().await.expect("404");
+    assert_eq!(missing.status(), 404);
+    assert_eq!(missing.headers()["content-type"], "application/problem+json");
+}
+
+#[test]
+fn browser_kinematics_unit_tests() {
+    if let Some(why) = missing_tools() {
+        skip_or_fail(&why);
+        return;
+    }
+    let out = Command::new("node").args(["--test", "src/"]).current_dir(web_dir()).output().expect("node --test");
+    assert!(out.status.success(), "{}\n{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn end_to_end_in_chromium() {
+    if let Some(why) = missing_tools() {
+        skip_or_fail(&why);
+        return;
+    }
+    let app = TestApp::spawn().await;
+    if app.get("/").await.status() == 503 {
+        skip_or_fail("the UI is not built into this binary");
+        return;
+    }
+    let work = tempfile::tempdir().expect("tempdir");
+    let bundle = work.path().join("arm.zip");
+    std::fs::write(&bundle, zip_dir(&workspace_root().join("tests/in/arm_subsystems"))).expect("bundle");
+    let shots = workspace_root().join("target/ui-screenshots");
+    std::fs::create_dir_all(&shots).expect("screenshot folder");
+    let downloads = work.path().join("downloads");
+    std::fs::create_dir_all(&downloads).expect("downloads");
+
+    let url = app.url("");
+    let (bundle_s, shots_s, downloads_s) = (bundle.clone(), shots.clone(), downloads.clone());
+    let out = tokio::task::spawn_blocking(move || {
+        Command::new("node")
+            .arg("e2e/ui.mjs")
+            .current_dir(web_dir())
+            .env("CAD2MO_URL", url.trim_end_matches('/'))
+            .env("CAD2MO_BUNDLE", bundle_s)
+            .env("CAD2MO_SCREENSHOTS", shots_s)
+            .env("CAD2MO_DOWNLOADS", downloads_s)
+            .output()
+            .expect("node e2e/ui.mjs")
+    })
+    .await
+    .expect("e2e task");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "the browser test failed:\n{stderr}\n{}", String::from_utf8_lossy(&out.stdout));
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let result: serde_json::Value = serde_json::from_str(stdout.lines().last().expect("a result line")).expect("result JSON");
+    let joint = result["joint"].as_str().expect("joint");
+
+    // The package the UI downloaded drives the chosen joint through a gear with ratio 100.
+    let zip = std::fs::read(result["package"].as_str().expect("package path")).expect("downloaded package");
+    let mut archive = zip::ZipArchive::new(std::io::Cursor::new(zip)).expect("a zip");
+    let name = archive.file_names().find(|n| n.ends_with("/Mechatronics.mo")).expect("Mechatronics.mo").to_string();
+    let mut mech = String::new();
+    archive.by_name(&name).expect("entry").read_to_string(&mut mech).expect("utf-8");
+    let decl = mech
+        .split(';')
+        .find(|d| d.contains(&format!("{joint}_drive")) || d.contains(&format!("\"{joint}\"")))
+        .unwrap_or_else(|| panic!("no drive declaration for {joint} in\n{mech}"));
+    assert!(decl.contains("ratio=100"), "the drive of {joint} has ratio 100:\n{decl}");
+    assert!(mech.contains(&format!("connect({joint}_drive.flange, {joint}.axis)")) || mech.contains(&format!("{joint}.axis")), "{mech}");
+
+    // The exported library is the XML the UI downloaded, with the edited gain.
+    let xml = std::fs::read_to_string(result["library"].as_str().expect("library path")).expect("library");
+    assert!(xml.contains("RobotR3 axis controller"));
+    for png in ["1-models-empty", "2-model-3d", "6-drives-refused", "7-drives-saved", "8-library", "11-narrow-model"] {
+        assert!(shots.join(format!("{png}.png")).exists(), "screenshot {png}");
+    }
+    app.stop().await;
+}
+
+/// The joint sliders show what the Modelica model would do: for golden cases, every movable
+/// coordinate of a tree joint outside loops is moved from its start value, the emitted
+/// `Mechanics.mo` is walked at those values (tests/support/fk.rs, MSL semantics) and the
+/// browser's kinematics (web/src/viewer/kinematics.js, from the report alone) must put every
+/// body's CS1 frame at the same pose.
+#[test]
+fn browser_kinematics_match_the_modelica_model() {
+    use cad2mo_tests::fk::{forward_kinematics, parse_mechanics, pose_error};
+    use nalgebra::{Isometry3, Matrix3, Rotation3, Translation3, UnitQuaternion};
+    if let Some(why) = missing_tools() {
+        skip_or_fail(&why);
+        return;
+    }
+    let cases = ["composite_joint", "rotated_frames", "arm_subsystems", "pendulum", "inch_lbm", "vrml_assembly"];
+    let mut inputs = Vec::new();
+    let mut expected = Vec::new();
+    for case in cases {
+        let dir = workspace_root().join("tests/out").join(case);
+        let report: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(dir.join("report.json")).expect("report")).expect("json");
+        let mut mo = std::fs::read_to_string(dir.join("Mechanics.mo")).expect("Mechanics.mo");
+        let mut q = serde_json::Map::new();
+        let mut n = 0;
+        for j in report["joints"].as_array().expect("joints") {
+            if j["in_tree"] != true || j["in_loop"] == true {
+                continue;
+            }
+            for (k, e) in j["elements"].as_array().expect("elements").iter().enumerate() {
+                let (var, d) = match e["kind"].as_str() {
+                    Some("revolute") => ("phi", 0.37 + 0.21 * n as f64),
+                    Some("prismatic") => ("s", 0.013 + 0.007 * n as f64),
+                    _ => continue,
+                };
+                n += 1;
+                let name = e["modelica_name"].as_str().expect("element name");
+                let value = e["initial_q"].as_f64().expect("q0") + d;
+                // Move the element in the Modelica text: its `phi(start=…` / `s(start=…`.
+                let decl = mo.find(&format!(" {name}(\n")).unwrap_or_else(|| panic!("{case}: no declaration of {name}"));
+                let key = format!("{var}(start=");
+                let at = decl + mo[decl..].find(&key).expect("start value") + key.len();
+                let end = at + mo[at..].find(',').expect("end of start value");
+                mo.replace_range(at..end, &format!("{value:?}"));
+                q.insert(format!("{}#{k}", j["modelica_name"].as_str().expect("joint")), value.into());
+            }
+        }
+        assert!(n > 0, "{case} has movable tree joints");
+        let model = parse_mechanics(&mo).unwrap_or_else(|e| panic!("{case}: {e}"));
+        let poses = forward_kinematics(&model).unwrap_or_else(|e| panic!("{case}: {e}"));
+        expected.push((case, poses));
+        inputs.push(serde_json::json!({"report": report, "q": q}));
+    }
+    let work = tempfile::tempdir().expect("tempdir");
+    let input = work.path().join("cases.json");
+    std::fs::write(&input, serde_json::to_vec(&inputs).expect("json")).expect("write");
+    let out = Command::new("node").arg("e2e/fk.mjs").arg(&input).current_dir(web_dir()).output().expect("node e2e/fk.mjs");
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let browser: Vec<serde_json::Map<String, serde_json::Value>> = serde_json::from_slice(&out.stdout).expect("poses");
+    let mut compared = 0;
+    for ((case, poses), got) in expected.iter().zip(&browser) {
+        for (body, m) in got {
+            let Some(want) = poses.get(&format!("{body}.frame_a")) else { continue };
+            let m: Vec<f64> = m.as_array().expect("matrix").iter().map(|x| x.as_f64().expect("number")).collect();
+            // three.js matrices are column-major.
+            let r = Matrix3::new(m[0], m[4], m[8], m[1], m[5], m[9], m[2], m[6], m[10]);
+            let pose = Isometry3::from_parts(
+                Translation3::new(m[12], m[13], m[14]),
+                UnitQuaternion::from_rotation_matrix(&Rotation3::from_matrix(&r)),
+            );
+            let (dp, da) = pose_error(want, &pose);
+            assert!(dp < 1e-9 && da < 1e-9, "{case}: {body} is {dp:e} m / {da:e} rad away from the Modelica pose");
+            compared += 1;
+        }
+    }
+    assert!(compared >= 15, "compared {compared} body poses");
+}

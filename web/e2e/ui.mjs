@@ -1,0 +1,223 @@
+// End-to-end test of the browser UI in a real headless Chromium (Debian's chromium, driven by
+// playwright-core). Started by tests/ui.rs against a freshly spawned service:
+//
+//   CAD2MO_URL          the service, e.g. http://127.0.0.1:41234
+//   CAD2MO_BUNDLE       a CAD export zip to upload
+//   CAD2MO_SCREENSHOTS  folder for a screenshot of each main screen
+//   CAD2MO_DOWNLOADS    folder for the downloaded package and library
+//
+// Prints one JSON line at the end ({joint, package, library}) for the Rust side to check the
+// downloaded package. Any failed expectation throws: exit code 1 with the reason.
+
+import { chromium } from 'playwright-core';
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
+
+const url = process.env.CAD2MO_URL;
+const bundle = process.env.CAD2MO_BUNDLE;
+const shots = process.env.CAD2MO_SCREENSHOTS;
+const downloads = process.env.CAD2MO_DOWNLOADS;
+const chromiumPath = process.env.CHROMIUM || '/usr/bin/chromium';
+for (const [k, v] of Object.entries({ url, bundle, shots, downloads })) assert.ok(v, `missing setting ${k}`);
+
+const step = (s) => console.error(`e2e: ${s}`);
+const shot = (page, name) => page.screenshot({ path: join(shots, `${name}.png`), fullPage: true });
+
+const browser = await chromium.launch({
+  executablePath: chromiumPath,
+  args: [
+    '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+    '--disable-background-networking', '--disable-component-update', '--disable-sync',
+    '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
+  ],
+});
+const consoleErrors = [];
+try {
+  const context = await browser.newContext({ viewport: { width: 1400, height: 900 }, acceptDownloads: true });
+  const page = await context.newPage();
+  page.on('console', (m) => m.type() === 'error' && consoleErrors.push(m.text()));
+  page.on('pageerror', (e) => consoleErrors.push(String(e)));
+  page.setDefaultTimeout(30_000);
+
+  // ---- Models: upload the bundle by the drop zone's file input and wait for the conversion.
+  step('models screen');
+  await page.goto(url);
+  await page.getByRole('heading', { name: 'Models', exact: true }).waitFor();
+  await page.getByText('No models yet').waitFor();
+  await shot(page, '1-models-empty');
+  await page.locator('section.upload input[type=file]').setInputFiles(bundle);
+  await page.waitForURL(/#\/models\/[^/]+\/versions\/1$/);
+  step('model view');
+  const stage = page.locator('.stage');
+  await stage.locator('canvas').waitFor();
+  await page.waitForFunction(() => Number(document.querySelector('.stage')?.dataset.rendered) > 0 && window.cad2moViewer);
+
+  // ---- The 3D view rendered the model: non-background pixels where the meshes project.
+  step('3D pixels');
+  await page.getByLabel('Grid and world frame').uncheck();
+  const pixels = await page.evaluate(async () => {
+    const v = window.cad2moViewer;
+    await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
+    v.render();
+    const c = v.renderer.domElement;
+    const w = c.clientWidth;
+    const h = c.clientHeight;
+    const ctx = Object.assign(document.createElement('canvas'), { width: w, height: h }).getContext('2d');
+    ctx.drawImage(c, 0, 0, w, h);
+    const img = ctx.getImageData(0, 0, w, h).data;
+    const bg = [0xf3, 0xf5, 0xf8];
+    const differs = (x, y) => {
+      const i = (Math.floor(y) * w + Math.floor(x)) * 4;
+      return Math.abs(img[i] - bg[0]) + Math.abs(img[i + 1] - bg[1]) + Math.abs(img[i + 2] - bg[2]) > 24;
+    };
+    const box = v.screenBox();
+    let inside = 0;
+    let insideHit = 0;
+    let outside = 0;
+    let outsideHit = 0;
+    for (let y = 0; y < h; y += 2) {
+      for (let x = 0; x < w; x += 2) {
+        const isIn = x >= box.x0 && x <= box.x1 && y >= box.y0 && y <= box.y1;
+        const hit = differs(x, y);
+        if (isIn) { inside++; insideHit += hit; } else { outside++; outsideHit += hit; }
+      }
+    }
+    return { w, h, box, inside, insideHit, outside, outsideHit, bodies: v.bodies.size };
+  });
+  step(`pixels ${JSON.stringify(pixels)}`);
+  assert.ok(pixels.box.x1 - pixels.box.x0 > pixels.w * 0.2, 'the model fills a fair part of the view');
+  assert.ok(pixels.insideHit / pixels.inside > 0.1, `model region is mostly background: ${pixels.insideHit}/${pixels.inside}`);
+  assert.ok(pixels.outsideHit / Math.max(pixels.outside, 1) < 0.05, `pixels drawn outside the model's region: ${pixels.outsideHit}/${pixels.outside}`);
+  await page.getByLabel('Grid and world frame').check();
+  await shot(page, '2-model-3d');
+
+  // ---- Click a body in the 3D view: the pick selects it (and the list marks it).
+  step('pick in 3D');
+  const target = await page.evaluate(() => {
+    const v = window.cad2moViewer;
+    for (const [name] of v.bodies) {
+      const b = v.screenBox(name);
+      if (Number.isFinite(b.x0) && b.x1 - b.x0 > 8) return { name, x: (b.x0 + b.x1) / 2, y: (b.y0 + b.y1) / 2 };
+    }
+    return null;
+  });
+  assert.ok(target, 'some body is on screen');
+  const canvasBox = await stage.locator('canvas').boundingBox();
+  // Try the body's centre and a few points around it: shapes may be hollow at the centre.
+  let picked = '';
+  for (const [dx, dy] of [[0, 0], [6, 0], [-6, 0], [0, 6], [0, -6], [12, 12], [-12, -12]]) {
+    await page.mouse.click(canvasBox.x + target.x + dx, canvasBox.y + target.y + dy);
+    picked = await page.locator('.selection').textContent();
+    if (picked.startsWith('Selected')) break;
+  }
+  assert.match(picked, /^Selected (body|joint) /, 'clicking the model selects a body or joint');
+
+  // ---- Select a joint in the list; move it with its slider (by keyboard) and see the view change.
+  step('joint selection and slider');
+  const slider = page.locator('.slider input[type=range]').first();
+  const joint = await slider.evaluate((el) => el.closest('li').dataset.joint);
+  await page.locator(`button.pick[data-joint="${joint}"]`).click();
+  await assert.doesNotReject(page.locator(`li[data-joint="${joint}"].selected`).waitFor());
+  assert.equal(await page.locator('.selection').textContent(), `Selected joint ${joint}`);
+  const before = await page.evaluate(() => window.cad2moViewer.renderer.domElement.toDataURL());
+  await slider.focus();
+  for (let i = 0; i < 40; i++) await page.keyboard.press('ArrowRight');
+  await page.waitForTimeout(200);
+  const after = await page.evaluate(() => window.cad2moViewer.renderer.domElement.toDataURL());
+  assert.notEqual(before, after, 'moving the joint slider redraws the model in a new pose');
+  await shot(page, '3-joint-moved');
+  await page.getByRole('button', { name: 'Reset pose' }).click();
+
+  // ---- Anaglyph mode renders (red-cyan: the picture changes).
+  step('anaglyph');
+  await page.getByLabel('Red-cyan anaglyph').check();
+  await page.waitForTimeout(200);
+  const anaglyph = await page.evaluate(() => window.cad2moViewer.renderer.domElement.toDataURL());
+  assert.notEqual(anaglyph, after, 'anaglyph mode draws a different picture');
+  await shot(page, '4-anaglyph');
+  await page.getByLabel('Red-cyan anaglyph').uncheck();
+
+  // ---- Report tab, reached by keyboard from the Structure tab.
+  step('report');
+  await page.getByRole('tab', { name: 'Structure' }).focus();
+  await page.keyboard.press('ArrowRight');
+  assert.equal(await page.getByRole('tab', { name: 'Report' }).getAttribute('aria-selected'), 'true');
+  await page.getByRole('heading', { name: /^Warnings/ }).waitFor();
+  await shot(page, '5-report');
+
+  // ---- Drives: the selected joint's drive; an out-of-range ratio is refused, 100 is saved.
+  step('drives');
+  await page.getByRole('tab', { name: 'Drives' }).click();
+  const editor = page.locator(`form[aria-label="Drive of ${joint}"]`);
+  await editor.waitFor();
+  await editor.getByLabel('Motor instance').selectOption({ label: 'maxon RE 40 148877 (24 V) (DC permanent-magnet motor)' });
+  await editor.getByLabel('Gear instance').selectOption({ label: 'maxon GP 42 C 74:1 (Gear with efficiency)' });
+  const ratio = editor.getByLabel('Gear ratio', { exact: false });
+  await ratio.fill('25000');
+  await editor.getByRole('button', { name: 'Save drive' }).click();
+  await editor.getByText('Gear ratio = 25000 is above the maximum 10000').first().waitFor();
+  assert.equal(await ratio.getAttribute('aria-invalid'), 'true');
+  await shot(page, '6-drives-refused');
+  await ratio.fill('100');
+  await editor.getByRole('button', { name: 'Save drive' }).click();
+  await page.getByText(`Saved the drive of ${joint}.`).waitFor();
+  const row = page.locator(`table.drives tr[data-joint="${joint}"]`);
+  assert.match(await row.textContent(), /maxon RE 40/);
+  assert.match(await row.locator('td.num').textContent(), /^100$/);
+  await shot(page, '7-drives-saved');
+  step('regenerate and download');
+  const [pkg] = await Promise.all([page.waitForEvent('download', { timeout: 60_000 }), page.getByRole('button', { name: 'Regenerate and download package' }).click()]);
+  const packagePath = join(downloads, pkg.suggestedFilename());
+  await pkg.saveAs(packagePath);
+
+  // ---- Motor library: an invalid value is refused, a valid edit sticks; export and re-import.
+  step('library');
+  await page.getByRole('link', { name: 'Motor library' }).click();
+  await page.getByRole('heading', { name: 'Motor library' }).waitFor();
+  const ctrl = page.locator('[data-instance-name="RobotR3 axis controller"]');
+  await ctrl.waitFor();
+  await shot(page, '8-library');
+  await ctrl.getByRole('button', { name: 'Edit RobotR3 axis controller' }).click();
+  const form = page.locator('form.instance-form');
+  await form.locator('input[name=kp]').fill('-1');
+  await form.getByRole('button', { name: 'Save' }).click();
+  await form.getByText(/kp = -1 .*below the minimum 0/).first().waitFor();
+  await shot(page, '9-library-refused');
+  await form.locator('input[name=kp]').fill('12.5');
+  await form.getByRole('button', { name: 'Save' }).click();
+  await form.waitFor({ state: 'detached' });
+  assert.match(await ctrl.locator('[data-param=kp]').textContent(), /^12\.5/);
+  const [xml] = await Promise.all([page.waitForEvent('download'), page.locator('#library-export').click()]);
+  const libraryPath = join(downloads, 'motor-library.xml');
+  await xml.saveAs(libraryPath);
+  assert.match(readFileSync(libraryPath, 'utf8'), /12\.5/);
+  // Change it again, then import the exported file: the exported value comes back.
+  await ctrl.getByRole('button', { name: 'Edit RobotR3 axis controller' }).click();
+  await form.locator('input[name=kp]').fill('20');
+  await form.getByRole('button', { name: 'Save' }).click();
+  await form.waitFor({ state: 'detached' });
+  assert.match(await ctrl.locator('[data-param=kp]').textContent(), /^20/);
+  await page.locator('#library-import').setInputFiles(libraryPath);
+  await page.waitForFunction(() => /^12\.5/.test(document.querySelector('[data-instance-name="RobotR3 axis controller"] [data-param=kp]')?.textContent || ''));
+
+  // ---- A narrow window: nothing wider than the screen, and the model still renders.
+  step('narrow window');
+  await page.setViewportSize({ width: 390, height: 844 });
+  await page.goto(`${url}/#/models`);
+  await page.getByRole('heading', { name: 'All models' }).waitFor();
+  await page.waitForTimeout(300);
+  await shot(page, '10-narrow-models');
+  const overflow = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
+  assert.ok(overflow <= 1, `the models page is ${overflow}px wider than a narrow window`);
+  await page.getByRole('link', { name: /^3D view of / }).first().click();
+  await page.waitForFunction(() => Number(document.querySelector('.stage')?.dataset.rendered) > 0);
+  await shot(page, '11-narrow-model');
+  const overflow3d = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
+  assert.ok(overflow3d <= 1, `the model page is ${overflow3d}px wider than a narrow window`);
+
+  assert.deepEqual(consoleErrors, [], 'the page logged errors');
+  console.log(JSON.stringify({ joint, package: packagePath, library: libraryPath }));
+} finally {
+  await browser.close();
+}
