@@ -398,8 +398,16 @@ export async function renderLibrary(main) {
         if (!here()) return;
         say(`Saved ${saved?.name || body.name}`, 'ok');
         if (open?.form === form) open = null;
-        form.remove();
-        await refresh();
+        // The list shows the saved instance in the same step as the form closes (no moment
+        // where the form is gone but the old values are still shown).
+        if (saved?.id) {
+          instances = [...instances.filter((i) => i.id !== saved.id), saved];
+          renderList();
+          form.remove();
+        } else {
+          await refresh();
+          form.remove();
+        }
         focusOpener(key);
       } catch (err) {
         if (!here()) return;
@@ -447,11 +455,11 @@ export async function renderLibrary(main) {
     const lim = limits(p);
     const hint = [
       p.comment,
-      numeric ? `Limits: ${lim}${unit && lim !== 'any' ? ` ${unit}` : ''}.` : null,
-      p.editable ? 'Editable.' : fixed ? 'Nameplate value: fixed for this instance.' : 'Nameplate value (fixed once created).',
+      numeric ? `limits ${lim}${unit && lim !== 'any' ? ` ${unit}` : ''}` : null,
+      p.editable ? 'editable' : fixed ? 'nameplate value, fixed for this instance' : 'nameplate value (fixed once created)',
     ]
       .filter(Boolean)
-      .join(' ');
+      .join(' · ');
     const cls = `lib-param ${p.editable ? 'editable' : 'nameplate'}`;
 
     if (fixed) {
