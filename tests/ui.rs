@@ -91,6 +91,29 @@ fn browser_kinematics_unit_tests() {
     assert!(out.status.success(), "{}\n{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
 }
 
+/// A copy of a zip with one text entry edited.
+fn rewrite_zip(zip: &[u8], entry: &str, edit: impl FnOnce(&mut String)) -> Vec<u8> {
+    use std::io::Write;
+    let mut input = zip::ZipArchive::new(std::io::Cursor::new(zip)).expect("zip");
+    let mut out = zip::ZipWriter::new(std::io::Cursor::new(Vec::new()));
+    let mut edit = Some(edit);
+    for i in 0..input.len() {
+        let mut f = input.by_index(i).expect("entry");
+        let name = f.name().to_string();
+        let mut bytes = Vec::new();
+        f.read_to_end(&mut bytes).expect("read entry");
+        if name == entry {
+            let mut text = String::from_utf8(bytes).expect("utf-8");
+            edit.take().expect("one entry")(&mut text);
+            bytes = text.into_bytes();
+        }
+        out.start_file(name, zip::write::SimpleFileOptions::default()).expect("start");
+        out.write_all(&bytes).expect("write");
+    }
+    assert!(edit.is_none(), "{entry} is in the zip");
+    out.finish().expect("finish").into_inner()
+}
+
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn end_to_end_in_chromium() {
     if let Some(why) = missing_tools() {
@@ -104,7 +127,16 @@ async fn end_to_end_in_chromium() {
     }
     let work = tempfile::tempdir().expect("tempdir");
     let bundle = work.path().join("arm.zip");
-    std::fs::write(&bundle, zip_dir(&workspace_root().join("tests/in/arm_subsystems"))).expect("bundle");
+    let arm = workspace_root().join("tests/in/arm_subsystems");
+    std::fs::write(&bundle, zip_dir(&arm)).expect("bundle");
+    // Version 2: the CAD change removed the joint BASE--LINK (the first joint, which gets a drive).
+    let v2 = rewrite_zip(&std::fs::read(&bundle).expect("bundle"), "ARM_SIM_MODEL.xml", |xml| {
+        let start = xml.find("<SimpleJoint>\n        <name>\"BASE--LINK\"").expect("the joint to remove");
+        let end = start + xml[start..].find("</SimpleJoint>").expect("its end") + "</SimpleJoint>".len();
+        xml.replace_range(start..end, "");
+    });
+    let bundle_v2 = work.path().join("arm-v2.zip");
+    std::fs::write(&bundle_v2, v2).expect("bundle v2");
     let shots = workspace_root().join("target/ui-screenshots");
     std::fs::create_dir_all(&shots).expect("screenshot folder");
     let downloads = work.path().join("downloads");
@@ -118,6 +150,7 @@ async fn end_to_end_in_chromium() {
             .current_dir(web_dir())
             .env("CAD2MO_URL", url.trim_end_matches('/'))
             .env("CAD2MO_BUNDLE", bundle_s)
+            .env("CAD2MO_BUNDLE_V2", bundle_v2)
             .env("CAD2MO_SCREENSHOTS", shots_s)
             .env("CAD2MO_DOWNLOADS", downloads_s)
             .output()
@@ -152,7 +185,7 @@ async fn end_to_end_in_chromium() {
     // The exported library is the XML the UI downloaded, with the edited gain.
     let xml = std::fs::read_to_string(result["library"].as_str().expect("library path")).expect("library");
     assert!(xml.contains("RobotR3 axis controller"));
-    for png in ["1-models-empty", "2-model-3d", "6-drives-refused", "7-drives-saved", "8-library", "11-narrow-model"] {
+    for png in ["1-models-empty", "2-model-3d", "6-drives-refused", "7-drives-saved", "8-library", "10-model-versions", "12-narrow-model"] {
         assert!(shots.join(format!("{png}.png")).exists(), "screenshot {png}");
     }
     app.stop().await;

@@ -3,6 +3,7 @@
 //
 //   CAD2MO_URL          the service, e.g. http://127.0.0.1:41234
 //   CAD2MO_BUNDLE       a CAD export zip to upload
+//   CAD2MO_BUNDLE_V2    the same model after a CAD change that removed the first joint
 //   CAD2MO_SCREENSHOTS  folder for a screenshot of each main screen
 //   CAD2MO_DOWNLOADS    folder for the downloaded package and library
 //
@@ -16,10 +17,11 @@ import { join } from 'node:path';
 
 const url = process.env.CAD2MO_URL;
 const bundle = process.env.CAD2MO_BUNDLE;
+const bundleV2 = process.env.CAD2MO_BUNDLE_V2;
 const shots = process.env.CAD2MO_SCREENSHOTS;
 const downloads = process.env.CAD2MO_DOWNLOADS;
 const chromiumPath = process.env.CHROMIUM || '/usr/bin/chromium';
-for (const [k, v] of Object.entries({ url, bundle, shots, downloads })) assert.ok(v, `missing setting ${k}`);
+for (const [k, v] of Object.entries({ url, bundle, bundleV2, shots, downloads })) assert.ok(v, `missing setting ${k}`);
 
 const step = (s) => console.error(`e2e: ${s}`);
 const shot = (page, name) => page.screenshot({ path: join(shots, `${name}.png`), fullPage: true });
@@ -201,18 +203,43 @@ try {
   await page.locator('#library-import').setInputFiles(libraryPath);
   await page.waitForFunction(() => /^12\.5/.test(document.querySelector('[data-instance-name="RobotR3 axis controller"] [data-param=kp]')?.textContent || ''));
 
+  // ---- A new CAD version: the diff and the orphaned drive; downloads; deleting a version.
+  step('new version');
+  await page.getByRole('link', { name: 'Models', exact: true }).first().click();
+  await page.getByRole('link', { name: 'ARM', exact: true }).click();
+  await page.getByRole('heading', { name: 'Versions', exact: true }).waitFor();
+  await page.locator('section.upload input[type=file]').setInputFiles(bundleV2);
+  await page.getByText('Version 2 converted.').waitFor();
+  const diff = page.locator('.diff-out');
+  await diff.getByText('v1 → v2').waitFor();
+  assert.match(await diff.textContent(), new RegExp(`removed ${joint}`));
+  const orphans = page.locator('ul.orphaned');
+  await orphans.waitFor();
+  assert.match(await orphans.textContent(), new RegExp(joint));
+  await shot(page, '10-model-versions');
+  // The orphan can be removed (it is kept until someone does).
+  await orphans.getByRole('button', { name: `Remove the orphaned drive of ${joint}` }).click();
+  await page.getByRole('dialog').getByRole('button', { name: 'Remove' }).click();
+  await orphans.waitFor({ state: 'detached' });
+  const [v1zip] = await Promise.all([page.waitForEvent('download'), page.getByRole('button', { name: 'Download the package of version 1' }).click()]);
+  assert.match(v1zip.suggestedFilename(), /^ARM-v1\.zip$/);
+  await page.getByRole('button', { name: 'Delete version 2' }).click();
+  await page.getByRole('dialog').getByRole('button', { name: 'Delete' }).click();
+  await page.locator('tr[data-version="2"]').waitFor({ state: 'detached' });
+  assert.equal(await page.locator('tr[data-version]').count(), 1);
+
   // ---- A narrow window: nothing wider than the screen, and the model still renders.
   step('narrow window');
   await page.setViewportSize({ width: 390, height: 844 });
   await page.goto(`${url}/#/models`);
   await page.getByRole('heading', { name: 'All models' }).waitFor();
   await page.waitForTimeout(300);
-  await shot(page, '10-narrow-models');
+  await shot(page, '11-narrow-models');
   const overflow = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
   assert.ok(overflow <= 1, `the models page is ${overflow}px wider than a narrow window`);
   await page.getByRole('link', { name: /^3D view of / }).first().click();
   await page.waitForFunction(() => Number(document.querySelector('.stage')?.dataset.rendered) > 0);
-  await shot(page, '11-narrow-model');
+  await shot(page, '12-narrow-model');
   const overflow3d = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
   assert.ok(overflow3d <= 1, `the model page is ${overflow3d}px wider than a narrow window`);
 

@@ -152,7 +152,7 @@ export async function renderDrives(panel, ctx) {
     const form = h(
       'form',
       { class: 'drive-editor card', 'aria-label': `Drive of ${jointName}`, novalidate: true, onsubmit: save },
-      h('h3', {}, `Drive of ${jointName} `, h('small', { class: 'muted' }, `${joint.kind}, start ${num(joint.start * (joint.kind === 'revolute' ? 180 / Math.PI : 1000))} ${refUnit}`)),
+      h('h3', {}, `Drive of ${jointName} `, h('small', { class: 'muted' }, `${joint.kind}, start ${num(Math.round(joint.start * (joint.kind === 'revolute' ? 180 / Math.PI : 1000) * 1e6) / 1e6)} ${refUnit}`)),
       SLOTS.map(section),
       field(`Reference position [${refUnit}] (empty: hold the start position)`, ref),
       out,

@@ -5,6 +5,7 @@ import { api, download, enc } from '../api.js';
 import { h, fill, errorBox, say, confirmAction, when, bytes, newId } from '../ui.js';
 import { uploadZone } from './upload.js';
 
+const plural = (n, one, many = `${one}s`) => `${n} ${n === 1 ? one : many}`;
 const statusBadge = (s) => h('span', { class: `badge badge-${s}` }, s);
 
 export async function renderModels(main) {
@@ -126,7 +127,7 @@ export async function renderModel(main, id) {
         { dataset: { version: v.version } },
         h('th', { scope: 'row' }, `v${v.version}`),
         h('td', {}, statusBadge(v.status)),
-        h('td', {}, s ? `${s.bodies} bodies, ${s.joints} joints, ${s.loops} loops, ${s.warnings} warnings` : v.error?.detail || ''),
+        h('td', {}, s ? [plural(s.bodies, 'body', 'bodies'), plural(s.joints, 'joint'), plural(s.loops, 'loop'), plural(s.warnings, 'warning')].join(', ') : v.error?.detail || ''),
         h('td', {}, `${v.bundle.name} (${bytes(v.bundle.size)})`, h('br'), h('small', { class: 'muted' }, when(v.created_at))),
         h(
           'td',
@@ -244,18 +245,41 @@ export async function renderModel(main, id) {
     fill(
       drivesBox,
       h('h2', { id: 'drives-h' }, 'Drives'),
-      h('p', {}, `${active.length} active drive${active.length === 1 ? '' : 's'} on ${d.joints.length} drivable joints of v${d.version ?? '—'}.`),
+      h('p', {}, `${plural(active.length, 'active drive')} on ${plural(d.joints.length, 'drivable joint')} of v${d.version ?? '—'}.`),
       latest ? h('a', { class: 'button', href: `#/models/${enc(id)}/versions/${latest.version}/drives` }, 'Edit drives') : null,
       orphaned.length
         ? h(
             'div',
             { class: 'warning', role: 'alert' },
-            h('strong', {}, `${orphaned.length} orphaned drive${orphaned.length === 1 ? '' : 's'}`),
+            h('strong', {}, plural(orphaned.length, 'orphaned drive')),
             h('p', {}, 'These joints are gone from the latest version; their assignments are kept (and left out of the package) until you delete them or the joint returns.'),
-            h('ul', { class: 'orphaned' }, orphaned.map((o) => h('li', {}, h('code', {}, o.joint), ` (node ${o.joint_node_id})`))),
+            h(
+              'ul',
+              { class: 'orphaned' },
+              orphaned.map((o) =>
+                h(
+                  'li',
+                  {},
+                  h('code', {}, o.joint),
+                  ` (node ${o.joint_node_id}) `,
+                  h('button', { type: 'button', class: 'danger', 'aria-label': `Remove the orphaned drive of ${o.joint}`, onclick: () => removeDrive(o.joint) }, 'Remove'),
+                ),
+              ),
+            ),
           )
         : null,
     );
+  }
+
+  async function removeDrive(joint) {
+    if (!(await confirmAction(`Remove the drive of ${joint}? Its motor and gear choice is lost.`, 'Remove'))) return;
+    try {
+      await api(`/api/models/${enc(id)}/drives/${enc(joint)}`, { method: 'DELETE' });
+      say(`Removed the drive of ${joint}`, 'ok');
+      loadDrives();
+    } catch (e) {
+      say(e.message, 'error');
+    }
   }
 
   await loadVersions();
