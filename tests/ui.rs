@@ -266,3 +266,48 @@ fn browser_kinematics_match_the_modelica_model() {
     }
     assert!(compared >= 15, "compared {compared} body poses");
 }
+
+/// Real CAD exports written by others render in the UI: the self-contained iCub left hand
+/// (XML + STL meshes, upper-case names resolved case-insensitively) must draw where its meshes
+/// project; the 29-body LEGS mechanism (XML only, closed loops) must load and list every body.
+#[test]
+fn real_fixtures_render_in_chromium() {
+    let Some(fixtures) = cad2mo_tests::common::fixtures_dir("real_fixtures_render_in_chromium") else { return };
+    if let Some(why) = missing_tools() {
+        skip_or_fail(&why);
+        return;
+    }
+    let rt = tokio::runtime::Builder::new_multi_thread().worker_threads(2).enable_all().build().expect("runtime");
+    let app = rt.block_on(TestApp::spawn());
+    if rt.block_on(app.get("/")).status() == 503 {
+        skip_or_fail("the UI is not built into this binary");
+        return;
+    }
+    let work = tempfile::tempdir().expect("tempdir");
+    let hand = work.path().join("left_hand_mk3.zip");
+    std::fs::write(&hand, zip_dir(&fixtures.join("stl/robotology+icub-models-generator/25e4033/left_hand_mk3"))).expect("zip");
+    let legs_dir = work.path().join("legs");
+    std::fs::create_dir_all(&legs_dir).expect("mkdir");
+    std::fs::copy(fixtures.join("xml/robotology+simmechanics-to-urdf/a83a61f/LEGS_MECHANISM.xml"), legs_dir.join("LEGS_MECHANISM.xml"))
+        .expect("copy");
+    let legs = work.path().join("legs_mechanism.zip");
+    std::fs::write(&legs, zip_dir(&legs_dir)).expect("zip");
+    let shots = workspace_root().join("target/ui-screenshots");
+    std::fs::create_dir_all(&shots).expect("screenshot folder");
+    let out = Command::new("node")
+        .arg("e2e/render.mjs")
+        .arg(&hand)
+        .arg(&legs)
+        .current_dir(web_dir())
+        .env("CAD2MO_URL", app.url("").trim_end_matches('/'))
+        .env("CAD2MO_SCREENSHOTS", &shots)
+        .output()
+        .expect("node e2e/render.mjs");
+    assert!(out.status.success(), "{}\n{}", String::from_utf8_lossy(&out.stderr), String::from_utf8_lossy(&out.stdout));
+    let results: Vec<serde_json::Value> =
+        serde_json::from_str(String::from_utf8_lossy(&out.stdout).lines().last().expect("result")).expect("json");
+    assert!(results[0]["meshes"].as_u64().expect("meshes") >= 10, "the hand's meshes are drawn: {}", results[0]);
+    assert!(results[1]["bodies"].as_u64().expect("bodies") >= 29, "{}", results[1]);
+    println!("{}", serde_json::Value::Array(results));
+    rt.block_on(app.stop());
+}

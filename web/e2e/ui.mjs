@@ -10,30 +10,22 @@
 // Prints one JSON line at the end ({joint, package, library}) for the Rust side to check the
 // downloaded package. Any failed expectation throws: exit code 1 with the reason.
 
-import { chromium } from 'playwright-core';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
+import { launch, waitForModel, checkModelPixels, checkLabels } from './lib.mjs';
 
 const url = process.env.CAD2MO_URL;
 const bundle = process.env.CAD2MO_BUNDLE;
 const bundleV2 = process.env.CAD2MO_BUNDLE_V2;
 const shots = process.env.CAD2MO_SCREENSHOTS;
 const downloads = process.env.CAD2MO_DOWNLOADS;
-const chromiumPath = process.env.CHROMIUM || '/usr/bin/chromium';
 for (const [k, v] of Object.entries({ url, bundle, bundleV2, shots, downloads })) assert.ok(v, `missing setting ${k}`);
 
 const step = (s) => console.error(`e2e: ${s}`);
 const shot = (page, name) => page.screenshot({ path: join(shots, `${name}.png`), fullPage: true });
 
-const browser = await chromium.launch({
-  executablePath: chromiumPath,
-  args: [
-    '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-    '--disable-background-networking', '--disable-component-update', '--disable-sync',
-    '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
-  ],
-});
+const browser = await launch();
 const consoleErrors = [];
 try {
   const context = await browser.newContext({ viewport: { width: 1400, height: 900 }, acceptDownloads: true });
@@ -48,50 +40,17 @@ try {
   await page.getByRole('heading', { name: 'Models', exact: true }).waitFor();
   await page.getByText('No models yet').waitFor();
   await shot(page, '1-models-empty');
+  await checkLabels(page, 'the models page');
   await page.locator('section.upload input[type=file]').setInputFiles(bundle);
   await page.waitForURL(/#\/models\/[^/]+\/versions\/1$/);
   step('model view');
   const stage = page.locator('.stage');
-  await stage.locator('canvas').waitFor();
-  await page.waitForFunction(() => Number(document.querySelector('.stage')?.dataset.rendered) > 0 && window.cad2moViewer);
+  await waitForModel(page);
 
   // ---- The 3D view rendered the model: non-background pixels where the meshes project.
   step('3D pixels');
-  await page.getByLabel('Grid and world frame').uncheck();
-  const pixels = await page.evaluate(async () => {
-    const v = window.cad2moViewer;
-    await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
-    v.render();
-    const c = v.renderer.domElement;
-    const w = c.clientWidth;
-    const h = c.clientHeight;
-    const ctx = Object.assign(document.createElement('canvas'), { width: w, height: h }).getContext('2d');
-    ctx.drawImage(c, 0, 0, w, h);
-    const img = ctx.getImageData(0, 0, w, h).data;
-    const bg = [0xf3, 0xf5, 0xf8];
-    const differs = (x, y) => {
-      const i = (Math.floor(y) * w + Math.floor(x)) * 4;
-      return Math.abs(img[i] - bg[0]) + Math.abs(img[i + 1] - bg[1]) + Math.abs(img[i + 2] - bg[2]) > 24;
-    };
-    const box = v.screenBox();
-    let inside = 0;
-    let insideHit = 0;
-    let outside = 0;
-    let outsideHit = 0;
-    for (let y = 0; y < h; y += 2) {
-      for (let x = 0; x < w; x += 2) {
-        const isIn = x >= box.x0 && x <= box.x1 && y >= box.y0 && y <= box.y1;
-        const hit = differs(x, y);
-        if (isIn) { inside++; insideHit += hit; } else { outside++; outsideHit += hit; }
-      }
-    }
-    return { w, h, box, inside, insideHit, outside, outsideHit, bodies: v.bodies.size };
-  });
-  step(`pixels ${JSON.stringify(pixels)}`);
-  assert.ok(pixels.box.x1 - pixels.box.x0 > pixels.w * 0.2, 'the model fills a fair part of the view');
-  assert.ok(pixels.insideHit / pixels.inside > 0.1, `model region is mostly background: ${pixels.insideHit}/${pixels.inside}`);
-  assert.ok(pixels.outsideHit / Math.max(pixels.outside, 1) < 0.05, `pixels drawn outside the model's region: ${pixels.outsideHit}/${pixels.outside}`);
-  await page.getByLabel('Grid and world frame').check();
+  step(`pixels ${JSON.stringify(await checkModelPixels(page))}`);
+  await checkLabels(page, 'the model view');
   await shot(page, '2-model-3d');
 
   // ---- Click a body in the 3D view: the pick selects it (and the list marks it).
@@ -168,6 +127,7 @@ try {
   assert.match(await row.textContent(), /maxon RE 40/);
   assert.match(await row.locator('td.num').textContent(), /^100$/);
   await shot(page, '7-drives-saved');
+  await checkLabels(page, 'the drives tab');
   step('regenerate and download');
   const [pkg] = await Promise.all([page.waitForEvent('download', { timeout: 60_000 }), page.getByRole('button', { name: 'Regenerate and download package' }).click()]);
   const packagePath = join(downloads, pkg.suggestedFilename());
@@ -180,6 +140,7 @@ try {
   const ctrl = page.locator('[data-instance-name="RobotR3 axis controller"]');
   await ctrl.waitFor();
   await shot(page, '8-library');
+  await checkLabels(page, 'the library');
   await ctrl.getByRole('button', { name: 'Edit RobotR3 axis controller' }).click();
   const form = page.locator('form.instance-form');
   await form.locator('input[name=kp]').fill('-1');
@@ -208,7 +169,19 @@ try {
   await page.getByRole('link', { name: 'Models', exact: true }).first().click();
   await page.getByRole('link', { name: 'ARM', exact: true }).click();
   await page.getByRole('heading', { name: 'Versions', exact: true }).waitFor();
-  await page.locator('section.upload input[type=file]').setInputFiles(bundleV2);
+  // This time by drag and drop: a real drop event carrying the file.
+  const dataTransfer = await page.evaluateHandle(
+    ([b64, name]) => {
+      const dt = new DataTransfer();
+      dt.items.add(new File([Uint8Array.from(atob(b64), (c) => c.charCodeAt(0))], name, { type: 'application/zip' }));
+      return dt;
+    },
+    [readFileSync(bundleV2).toString('base64'), 'arm-v2.zip'],
+  );
+  const zone = page.locator('section.upload .dropzone');
+  await zone.dispatchEvent('dragover', { dataTransfer });
+  assert.match(await zone.getAttribute('class'), /\bover\b/);
+  await zone.dispatchEvent('drop', { dataTransfer });
   await page.getByText('Version 2 converted.').waitFor();
   const diff = page.locator('.diff-out');
   await diff.getByText('v1 → v2').waitFor();
@@ -238,7 +211,7 @@ try {
   const overflow = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
   assert.ok(overflow <= 1, `the models page is ${overflow}px wider than a narrow window`);
   await page.getByRole('link', { name: /^3D view of / }).first().click();
-  await page.waitForFunction(() => Number(document.querySelector('.stage')?.dataset.rendered) > 0);
+  await waitForModel(page);
   await shot(page, '12-narrow-model');
   const overflow3d = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
   assert.ok(overflow3d <= 1, `the model page is ${overflow3d}px wider than a narrow window`);

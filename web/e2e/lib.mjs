@@ -1,0 +1,75 @@
+// Shared by the end-to-end scripts: Chromium as this machine runs it, and the 3D pixel check.
+import { chromium } from 'playwright-core';
+import assert from 'node:assert/strict';
+
+/** Debian's Chromium, headless, without network chatter (the machine's network is closed). */
+export function launch() {
+  return chromium.launch({
+    executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
+    args: [
+      '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+      '--disable-background-networking', '--disable-component-update', '--disable-sync',
+      '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
+    ],
+  });
+}
+
+/** Waits until the model view has drawn, with its meshes loaded. */
+export async function waitForModel(page) {
+  await page.locator('.stage canvas').waitFor();
+  await page.waitForFunction(() => Number(document.querySelector('.stage')?.dataset.rendered) > 0 && window.cad2moViewer);
+}
+
+/**
+ * Reads the 3D canvas back and counts pixels that differ from the background, inside and outside
+ * the screen rectangle the model's meshes project to (the grid and world frame are hidden first
+ * and shown again after). Asserts the model is drawn where it should be and nowhere else.
+ */
+export async function checkModelPixels(page) {
+  const grid = page.getByLabel('Grid and world frame');
+  await grid.uncheck();
+  const pixels = await page.evaluate(async () => {
+    const v = window.cad2moViewer;
+    await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
+    v.render();
+    const c = v.renderer.domElement;
+    const w = c.clientWidth;
+    const h = c.clientHeight;
+    const ctx = Object.assign(document.createElement('canvas'), { width: w, height: h }).getContext('2d');
+    ctx.drawImage(c, 0, 0, w, h);
+    const img = ctx.getImageData(0, 0, w, h).data;
+    const bg = [0xf3, 0xf5, 0xf8];
+    const differs = (x, y) => {
+      const i = (y * w + x) * 4;
+      return Math.abs(img[i] - bg[0]) + Math.abs(img[i + 1] - bg[1]) + Math.abs(img[i + 2] - bg[2]) > 24;
+    };
+    const box = v.screenBox();
+    let inside = 0;
+    let insideHit = 0;
+    let outside = 0;
+    let outsideHit = 0;
+    for (let y = 0; y < h; y += 2) {
+      for (let x = 0; x < w; x += 2) {
+        const isIn = x >= box.x0 - 1 && x <= box.x1 + 1 && y >= box.y0 - 1 && y <= box.y1 + 1;
+        const hit = differs(x, y);
+        if (isIn) { inside++; insideHit += hit; } else { outside++; outsideHit += hit; }
+      }
+    }
+    return { w, h, box, inside, insideHit, outside, outsideHit, bodies: v.bodies.size };
+  });
+  await grid.check();
+  assert.ok(pixels.box.x1 - pixels.box.x0 > pixels.w * 0.2, `the model fills a fair part of the view: ${JSON.stringify(pixels)}`);
+  assert.ok(pixels.insideHit / pixels.inside > 0.1, `the model's region is mostly background: ${JSON.stringify(pixels)}`);
+  assert.ok(pixels.outsideHit / Math.max(pixels.outside, 1) < 0.02, `pixels drawn outside the model's region: ${JSON.stringify(pixels)}`);
+  return pixels;
+}
+
+/** Every form control on the page has an accessible name (label, aria-label or aria-labelledby). */
+export async function checkLabels(page, where) {
+  const unlabelled = await page.evaluate(() =>
+    [...document.querySelectorAll('input, select, textarea, button')]
+      .filter((el) => el.type !== 'hidden' && !(el.labels && el.labels.length) && !el.getAttribute('aria-label') && !el.getAttribute('aria-labelledby') && !(el.tagName === 'BUTTON' && el.textContent.trim()))
+      .map((el) => el.outerHTML.slice(0, 120)),
+  );
+  assert.deepEqual(unlabelled, [], `unlabelled controls on ${where}`);
+}

@@ -1,0 +1,44 @@
+// Renders real CAD exports in the UI: each bundle (arguments) is uploaded through the page, the
+// model view must draw it (checkModelPixels when it has meshes) and list every joint and body
+// of its report, without page errors. Screenshots: CAD2MO_SCREENSHOTS/fixture-<name>.png.
+import assert from 'node:assert/strict';
+import { basename, join } from 'node:path';
+import { launch, waitForModel, checkModelPixels } from './lib.mjs';
+
+const url = process.env.CAD2MO_URL;
+const shots = process.env.CAD2MO_SCREENSHOTS;
+assert.ok(url && shots, 'CAD2MO_URL and CAD2MO_SCREENSHOTS are required');
+
+const browser = await launch();
+const results = [];
+try {
+  const page = await browser.newPage({ viewport: { width: 1280, height: 860 } });
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(String(e)));
+  page.setDefaultTimeout(60_000);
+  for (const bundle of process.argv.slice(2)) {
+    const name = basename(bundle, '.zip');
+    console.error(`render: ${name}`);
+    await page.goto(`${url}/#/models`);
+    await page.locator('section.upload input[type=file]').setInputFiles(bundle);
+    await page.waitForURL(/#\/models\/[^/]+\/versions\/\d+$/);
+    await waitForModel(page);
+    const counts = await page.evaluate(() => {
+      const v = window.cad2moViewer;
+      return {
+        bodies: v.report.bodies.length,
+        meshes: [...v.bodies.values()].filter((b) => b.hasMesh).length,
+        listedBodies: document.querySelectorAll('.picklist.bodies li').length,
+        axes: v.joints.size,
+      };
+    });
+    assert.equal(counts.listedBodies, counts.bodies, `${name}: every body is listed`);
+    const pixels = counts.meshes ? await checkModelPixels(page) : null;
+    await page.screenshot({ path: join(shots, `fixture-${name}.png`) });
+    results.push({ name, ...counts, pixels });
+  }
+  assert.deepEqual(errors, [], 'page errors');
+} finally {
+  await browser.close();
+}
+console.log(JSON.stringify(results));
