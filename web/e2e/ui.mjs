@@ -41,6 +41,11 @@ try {
   await page.getByText('No models yet').waitFor();
   await shot(page, '1-models-empty');
   await checkLabels(page, 'the models page');
+  // The drop zone is reachable by keyboard: Tab from the name field focuses its file input.
+  await page.getByLabel('Model name (optional)').focus();
+  await page.keyboard.press('Tab');
+  assert.equal(await page.evaluate(() => document.activeElement.type), 'file');
+  assert.match(await page.locator('.dropzone').getAttribute('class'), /\bfocus\b/);
   await page.locator('section.upload input[type=file]').setInputFiles(bundle);
   await page.waitForURL(/#\/models\/[^/]+\/versions\/1$/);
   step('model view');
@@ -163,6 +168,19 @@ try {
   assert.match(await ctrl.locator('[data-param=kp]').textContent(), /^20/);
   await page.locator('#library-import').setInputFiles(libraryPath);
   await page.waitForFunction(() => /^12\.5/.test(document.querySelector('[data-instance-name="RobotR3 axis controller"] [data-param=kp]')?.textContent || ''));
+
+  // Create an instance, then delete it.
+  await page.getByRole('button', { name: 'New Ideal gear instance' }).click();
+  const created = page.locator('form.instance-form');
+  await created.locator('input[name=__name]').fill('Test gear 50:1');
+  await created.locator('input[name=ratio]').fill('50');
+  await created.getByRole('button', { name: 'Save' }).click();
+  const newGear = page.locator('[data-instance-name="Test gear 50:1"]');
+  await newGear.waitFor();
+  assert.match(await newGear.locator('[data-param=ratio]').textContent(), /^50/);
+  await newGear.getByRole('button', { name: 'Delete Test gear 50:1' }).click();
+  await page.getByRole('dialog').getByRole('button', { name: 'Delete' }).click();
+  await newGear.waitFor({ state: 'detached' });
 
   // ---- A new CAD version: the diff and the orphaned drive; downloads; deleting a version.
   step('new version');

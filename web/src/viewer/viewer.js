@@ -248,6 +248,7 @@ export class Viewer {
   }
 
   render() {
+    const t0 = performance.now();
     if (this.anaglyphOn && this.anaglyph) {
       // Eye separation and focal plane scale with the viewing distance (models are mm to m).
       const dist = this.camera.position.distanceTo(this.controls.target);
@@ -257,6 +258,7 @@ export class Viewer {
     }
     else this.renderer.render(this.scene, this.camera);
     this.host.dataset.rendered = String((Number(this.host.dataset.rendered) || 0) + 1);
+    if (this.host.dataset.rendered === '1') performance.measure('cad2mo:first-frame', { start: t0 });
   }
 
   /** Where the model's meshes are on screen, in canvas CSS pixels: {x0, y0, x1, y1}. */

@@ -13,15 +13,23 @@ const DEG = 180 / Math.PI;
 
 /** STL meshes of the package, by body Modelica name (geometry in CS1, metres). */
 async function loadMeshes(version, report) {
+  // Timings land in the Performance timeline (cad2mo:*), for profiling large models.
+  const t0 = performance.now();
   const zip = new Uint8Array(await api(version.links.package, { accept: 'application/zip' }));
+  const t1 = performance.now();
   const wanted = new Map();
   for (const b of report.bodies) if (b.shape) wanted.set(b.shape.replace(/\.dxf$/i, '.stl'), b.modelica_name);
   const files = unzipSync(zip, { filter: (f) => wanted.has(f.name) });
+  const t2 = performance.now();
   const loader = new STLLoader();
   const out = new Map();
   for (const [name, bytes] of Object.entries(files)) {
     out.set(wanted.get(name), loader.parse(bytes.buffer.slice(bytes.byteOffset, bytes.byteOffset + bytes.byteLength)));
   }
+  const t3 = performance.now();
+  performance.measure('cad2mo:download', { start: t0, end: t1 });
+  performance.measure('cad2mo:unzip', { start: t1, end: t2 });
+  performance.measure('cad2mo:parse', { start: t2, end: t3 });
   return out;
 }
 
@@ -65,7 +73,9 @@ export async function renderViewer(main, id, v, initialTab) {
     h('button', { type: 'button', onclick: () => download(version.links.package, `${report.package_name}-v${v}.zip`).catch((e) => say(e.message, 'error')) }, 'Download package'),
   );
 
+  const tv = performance.now();
   const viewer = new Viewer(stage, report, meshes, (sel) => select(sel));
+  performance.measure('cad2mo:scene', { start: tv });
   window.cad2moViewer = viewer; // for the end-to-end tests and the console
   anaglyph.addEventListener('change', () => viewer.setAnaglyph(anaglyph.checked));
   grid.addEventListener('change', () => viewer.setGrid(grid.checked));
