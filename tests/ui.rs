@@ -135,6 +135,8 @@ async fn end_to_end_in_chromium() {
         let end = start + xml[start..].find("</SimpleJoint>").expect("its end") + "</SimpleJoint>".len();
         xml.replace_range(start..end, "");
     });
+    let broken = work.path().join("broken.zip");
+    std::fs::write(&broken, zip_dir(&workspace_root().join("tests/in/broken_truncated"))).expect("broken bundle");
     let bundle_v2 = work.path().join("arm-v2.zip");
     std::fs::write(&bundle_v2, v2).expect("bundle v2");
     let shots = workspace_root().join("target/ui-screenshots");
@@ -151,6 +153,7 @@ async fn end_to_end_in_chromium() {
             .env("CAD2MO_URL", url.trim_end_matches('/'))
             .env("CAD2MO_BUNDLE", bundle_s)
             .env("CAD2MO_BUNDLE_V2", bundle_v2)
+            .env("CAD2MO_BUNDLE_BROKEN", broken)
             .env("CAD2MO_SCREENSHOTS", shots_s)
             .env("CAD2MO_DOWNLOADS", downloads_s)
             .output()

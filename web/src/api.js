@@ -23,14 +23,17 @@ export class ApiError extends Error {
     this.diagnostics = p.diagnostics || [];
   }
 
-  /** Every line a user should see: the detail, then field errors and file positions. */
+  /** Every line a user should see: the detail, then field errors and file positions not in it. */
   lines() {
-    const out = [this.detail || this.title];
-    for (const e of this.errors) out.push(`${e.field}: ${e.message}`);
+    const head = this.detail || this.title;
+    const out = [head];
+    for (const e of this.errors) if (!head.includes(e.message)) out.push(`${e.field}: ${e.message}`);
     for (const d of this.diagnostics) {
       const at = [d.file, d.line, d.column].filter((x) => x !== undefined && x !== null).join(':');
-      out.push(at ? `${at}: ${d.message}` : d.message);
+      const line = at ? `${at}: ${d.message}` : d.message;
+      if (!head.includes(line)) out.push(line);
     }
+    if (this.status === 401) out.push('This service needs an API token: set one under Settings.');
     return out;
   }
 }

@@ -214,7 +214,11 @@ async fn put(
         }
     }
     if !errors.is_empty() {
-        return Err(ApiError::Invalid { detail: format!("the drive of joint {joint} is not valid ({} problems)", errors.len()), errors });
+        let detail = match errors.as_slice() {
+            [one] => format!("the drive of joint {joint} is not valid: {}", one.message),
+            many => format!("the drive of joint {joint} is not valid ({} problems)", many.len()),
+        };
+        return Err(ApiError::Invalid { detail, errors });
     }
     let a = Assignment {
         joint: joint.clone(),

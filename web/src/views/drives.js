@@ -56,7 +56,7 @@ export async function renderDrives(panel, ctx) {
         'tr',
         { dataset: { joint: j.name }, class: current === j.name ? 'selected' : '' },
         h('th', { scope: 'row' }, h('button', { type: 'button', class: 'link', onclick: () => open(j.name, true) }, j.name)),
-        h('td', {}, j.kind),
+        h('td', { class: 'kind' }, j.kind),
         h('td', {}, d ? inst(d.motor_instance) : h('span', { class: 'muted' }, 'none')),
         h('td', {}, d ? inst(d.gear_instance) : ''),
         h('td', { class: 'num' }, ratio !== null && ratio !== undefined ? num(ratio) : ''),
@@ -70,7 +70,7 @@ export async function renderDrives(panel, ctx) {
         'table',
         { class: 'drives' },
         h('caption', { class: 'visually-hidden' }, 'Drivable joints and their drives'),
-        h('thead', {}, h('tr', {}, ['Joint', 'Kind', 'Motor', 'Gear', 'Ratio', ''].map((c) => h('th', { scope: 'col' }, c)))),
+        h('thead', {}, h('tr', {}, ['Joint', 'Kind', 'Motor', 'Gear', 'Ratio', ''].map((c) => h('th', { scope: 'col', class: c === 'Kind' ? 'kind' : null }, c)))),
         h('tbody', {}, rows),
       ),
       orphaned.length
