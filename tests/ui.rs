@@ -270,12 +270,13 @@ fn browser_kinematics_match_the_modelica_model() {
     assert!(compared >= 15, "compared {compared} body poses");
 }
 
-/// Real CAD exports written by others render in the UI: the self-contained iCub left hand
-/// (XML + STL meshes, upper-case names resolved case-insensitively) must draw where its meshes
-/// project; the 29-body LEGS mechanism (XML only, closed loops) must load and list every body.
+/// Models render in the UI: our VRML assembly (colours and geometry matches from VRML) and the
+/// four-bar (a closed loop), and, when `../shared` is there, real CAD exports written by others:
+/// the self-contained iCub left hand (XML + STL, upper-case names resolved case-insensitively)
+/// and the 29-body LEGS mechanism (XML only, closed loops). Each must draw where its meshes
+/// project, list every body, and link its report into the 3D view.
 #[test]
-fn real_fixtures_render_in_chromium() {
-    let Some(fixtures) = cad2mo_tests::common::fixtures_dir("real_fixtures_render_in_chromium") else { return };
+fn models_render_in_chromium() {
     if let Some(why) = missing_tools() {
         skip_or_fail(&why);
         return;
@@ -287,20 +288,28 @@ fn real_fixtures_render_in_chromium() {
         return;
     }
     let work = tempfile::tempdir().expect("tempdir");
-    let hand = work.path().join("left_hand_mk3.zip");
-    std::fs::write(&hand, zip_dir(&fixtures.join("stl/robotology+icub-models-generator/25e4033/left_hand_mk3"))).expect("zip");
-    let legs_dir = work.path().join("legs");
-    std::fs::create_dir_all(&legs_dir).expect("mkdir");
-    std::fs::copy(fixtures.join("xml/robotology+simmechanics-to-urdf/a83a61f/LEGS_MECHANISM.xml"), legs_dir.join("LEGS_MECHANISM.xml"))
-        .expect("copy");
-    let legs = work.path().join("legs_mechanism.zip");
-    std::fs::write(&legs, zip_dir(&legs_dir)).expect("zip");
+    let mut bundles = Vec::new();
+    for case in ["vrml_assembly", "fourbar"] {
+        let zip = work.path().join(format!("{case}.zip"));
+        std::fs::write(&zip, zip_dir(&workspace_root().join("tests/in").join(case))).expect("zip");
+        bundles.push(zip);
+    }
+    if let Some(fixtures) = cad2mo_tests::common::fixtures_dir("models_render_in_chromium (real exports)") {
+        let hand = work.path().join("left_hand_mk3.zip");
+        std::fs::write(&hand, zip_dir(&fixtures.join("stl/robotology+icub-models-generator/25e4033/left_hand_mk3"))).expect("zip");
+        let legs_dir = work.path().join("legs");
+        std::fs::create_dir_all(&legs_dir).expect("mkdir");
+        std::fs::copy(fixtures.join("xml/robotology+simmechanics-to-urdf/a83a61f/LEGS_MECHANISM.xml"), legs_dir.join("LEGS_MECHANISM.xml"))
+            .expect("copy");
+        let legs = work.path().join("legs_mechanism.zip");
+        std::fs::write(&legs, zip_dir(&legs_dir)).expect("zip");
+        bundles.extend([hand, legs]);
+    }
     let shots = workspace_root().join("target/ui-screenshots");
     std::fs::create_dir_all(&shots).expect("screenshot folder");
     let out = Command::new("node")
         .arg("e2e/render.mjs")
-        .arg(&hand)
-        .arg(&legs)
+        .args(&bundles)
         .current_dir(web_dir())
         .env("CAD2MO_URL", app.url("").trim_end_matches('/'))
         .env("CAD2MO_SCREENSHOTS", &shots)
@@ -309,8 +318,13 @@ fn real_fixtures_render_in_chromium() {
     assert!(out.status.success(), "{}\n{}", String::from_utf8_lossy(&out.stderr), String::from_utf8_lossy(&out.stdout));
     let results: Vec<serde_json::Value> =
         serde_json::from_str(String::from_utf8_lossy(&out.stdout).lines().last().expect("result")).expect("json");
-    assert!(results[0]["meshes"].as_u64().expect("meshes") >= 10, "the hand's meshes are drawn: {}", results[0]);
-    assert!(results[1]["bodies"].as_u64().expect("bodies") >= 29, "{}", results[1]);
+    assert_eq!(results.len(), bundles.len());
+    assert_eq!(results[0]["meshes"], 3, "the VRML assembly's three parts are drawn: {}", results[0]);
+    assert_eq!(results[1]["loops"], 1, "the four-bar's loop is reported: {}", results[1]);
+    if let Some(hand) = results.get(2) {
+        assert!(hand["meshes"].as_u64().expect("meshes") >= 10, "the hand's meshes are drawn: {hand}");
+        assert!(results[3]["bodies"].as_u64().expect("bodies") >= 29, "{}", results[3]);
+    }
     println!("{}", serde_json::Value::Array(results));
     rt.block_on(app.stop());
 }

@@ -1,6 +1,6 @@
 // Renders real CAD exports in the UI: each bundle (arguments) is uploaded through the page, the
 // model view must draw it (checkModelPixels when it has meshes) and list every joint and body
-// of its report, without page errors. Screenshots: CAD2MO_SCREENSHOTS/fixture-<name>.png.
+// of its report, without page errors. Screenshots: CAD2MO_SCREENSHOTS/render-<name>.png.
 import assert from 'node:assert/strict';
 import { basename, join } from 'node:path';
 import { launch, waitForModel, checkModelPixels } from './lib.mjs';
@@ -34,7 +34,22 @@ try {
     });
     assert.equal(counts.listedBodies, counts.bodies, `${name}: every body is listed`);
     const pixels = counts.meshes ? await checkModelPixels(page) : null;
-    await page.screenshot({ path: join(shots, `fixture-${name}.png`) });
+    // The report's geometry matches (VRML) and loops link into the 3D view.
+    await page.getByRole('tab', { name: 'Report' }).click();
+    const report = await page.evaluate(() => window.cad2moViewer.report);
+    if (report.vrml) {
+      const matched = Object.values(report.vrml.bodies).reduce((n, m) => n + m.length, 0);
+      assert.equal(await page.locator('[role=tabpanel]:not([hidden]) table tbody tr').count(), matched, `${name}: one row per geometry match`);
+    }
+    const link = page.locator('[role=tabpanel]:not([hidden]) button.link').first();
+    if (await link.count()) {
+      const label = await link.getAttribute('aria-label');
+      await link.click();
+      const [, kind, target] = /^Show (body|joint) (.+) in 3D$/.exec(label);
+      assert.equal(await page.locator('.selection').textContent(), `Selected ${kind} ${target}`);
+    }
+    counts.loops = report.loops.length;
+    await page.screenshot({ path: join(shots, `render-${name}.png`) });
     results.push({ name, ...counts, pixels });
   }
   assert.deepEqual(errors, [], 'page errors');
