@@ -55,12 +55,38 @@ export async function checkModelPixels(page) {
         if (isIn) { inside++; insideHit += hit; } else { outside++; outsideHit += hit; }
       }
     }
-    return { w, h, box, inside, insideHit, outside, outsideHit, bodies: v.bodies.size };
+    // CAD colours: pixels whose chromaticity is that of a body's colour, inside its own box.
+    // Shading scales linear r, g and b alike, so r/(r+g+b) etc. of the linear values survive
+    // it (the canvas holds sRGB); greys are skipped.
+    const lin = (c) => (c <= 0.04045 ? c / 12.92 : ((c + 0.055) / 1.055) ** 2.4);
+    const chroma = (r, g, b) => {
+      const l = [lin(r), lin(g), lin(b)];
+      const s = l[0] + l[1] + l[2] || 1;
+      return l.map((x) => x / s);
+    };
+    const colours = [];
+    for (const b of v.report.bodies) {
+      const [r, g, b2] = b.color;
+      if (!v.bodies.get(b.modelica_name)?.hasMesh || Math.max(r, g, b2) - Math.min(r, g, b2) < 0.15) continue;
+      const want = chroma(r, g, b2);
+      const sb = v.screenBox(b.modelica_name);
+      let found = 0;
+      for (let y = Math.max(0, Math.floor(sb.y0)); y < Math.min(h, sb.y1); y += 1) {
+        for (let x = Math.max(0, Math.floor(sb.x0)); x < Math.min(w, sb.x1); x += 1) {
+          const i = (y * w + x) * 4;
+          const got = chroma(img[i] / 255, img[i + 1] / 255, img[i + 2] / 255);
+          if (Math.abs(got[0] - want[0]) + Math.abs(got[1] - want[1]) + Math.abs(got[2] - want[2]) < 0.1) found++;
+        }
+      }
+      colours.push({ body: b.modelica_name, found });
+    }
+    return { w, h, box, inside, insideHit, outside, outsideHit, bodies: v.bodies.size, colours };
   });
   await grid.check();
   assert.ok(pixels.box.x1 - pixels.box.x0 > pixels.w * 0.2, `the model fills a fair part of the view: ${JSON.stringify(pixels)}`);
   assert.ok(pixels.insideHit / pixels.inside > 0.1, `the model's region is mostly background: ${JSON.stringify(pixels)}`);
   assert.ok(pixels.outsideHit / Math.max(pixels.outside, 1) < 0.02, `pixels drawn outside the model's region: ${JSON.stringify(pixels)}`);
+  assert.ok(pixels.colours.every((c) => c.found >= 20), `bodies drawn in their CAD colours: ${JSON.stringify(pixels.colours)}`);
   return pixels;
 }
 

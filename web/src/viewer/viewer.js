@@ -75,7 +75,7 @@ export class Viewer {
       group.matrixAutoUpdate = false;
       group.name = b.modelica_name;
       const cad = frameMatrix(b.cs1);
-      const color = new THREE.Color(...b.color);
+      const color = srgb(b.color);
       const materials = [];
       const geom = meshes.get(b.modelica_name);
       if (geom) {
@@ -102,7 +102,7 @@ export class Viewer {
     for (const b of r.bodies) {
       const entry = this.bodies.get(b.modelica_name);
       if (entry.hasMesh || !(b.mass > 0)) continue;
-      const mat = new THREE.MeshStandardMaterial({ color: new THREE.Color(...b.color), roughness: 0.5 });
+      const mat = new THREE.MeshStandardMaterial({ color: srgb(b.color), roughness: 0.5 });
       entry.materials.push(mat);
       const s = new THREE.Mesh(new THREE.SphereGeometry(dot, 16, 12), mat);
       s.position.copy(new THREE.Vector3(...b.cg_world).applyMatrix4(entry.cad.clone().invert()));
@@ -327,4 +327,9 @@ export function niceStep(x) {
   const p = 10 ** Math.floor(Math.log10(x));
   for (const m of [1, 2, 5, 10]) if (m * p >= x) return m * p;
   return 10 * p;
+}
+
+/** A CAD colour (sRGB components in 0..1, as in the report and the Modelica shapes). */
+function srgb([r, g, b]) {
+  return new THREE.Color().setRGB(r, g, b, THREE.SRGBColorSpace);
 }
