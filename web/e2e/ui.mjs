@@ -69,6 +69,17 @@ try {
   await checkLabels(page, 'the model view');
   await shot(page, '2-model-3d');
 
+  // ---- The view is usable by keyboard: Shift+arrows orbit, + zooms.
+  const canvas = stage.locator('canvas');
+  const still = await page.evaluate(() => window.cad2moViewer.renderer.domElement.toDataURL());
+  await canvas.focus();
+  await page.keyboard.press('Shift+ArrowLeft');
+  await page.keyboard.press('+');
+  await page.waitForTimeout(150);
+  assert.notEqual(await page.evaluate(() => window.cad2moViewer.renderer.domElement.toDataURL()), still, 'keys move the camera');
+  await page.getByRole('button', { name: 'Reset view' }).click();
+  await page.waitForTimeout(150);
+
   // ---- Click a body in the 3D view: the pick selects it (and the list marks it).
   step('pick in 3D');
   const target = await page.evaluate(() => {

@@ -29,7 +29,10 @@ export class Viewer {
     const canvas = this.renderer.domElement;
     canvas.tabIndex = 0;
     canvas.setAttribute('role', 'img');
-    canvas.setAttribute('aria-label', `3D view of ${report.model_name}: drag to orbit, right-drag or arrow keys to pan, wheel to zoom, click a body or joint to select it`);
+    canvas.setAttribute(
+      'aria-label',
+      `3D view of ${report.model_name}: drag or Shift+arrow keys to orbit, right-drag or arrow keys to pan, wheel or + and - to zoom, click a body or joint to select it`,
+    );
     canvas.classList.add('viewer-canvas');
     host.append(canvas);
 
@@ -52,6 +55,13 @@ export class Viewer {
     this.controls.listenToKeyEvents(canvas);
     this.controls.keyPanSpeed = 12;
     this.controls.addEventListener('change', () => this.invalidate());
+    canvas.addEventListener('keydown', (e) => {
+      const f = { '+': 0.85, '=': 0.85, '-': 1 / 0.85, _: 1 / 0.85 }[e.key];
+      if (!f) return;
+      e.preventDefault();
+      this.camera.position.sub(this.controls.target).multiplyScalar(f).add(this.controls.target);
+      this.controls.update();
+    });
     this.anaglyph = null;
     this.resetView();
 
