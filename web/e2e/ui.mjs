@@ -108,6 +108,7 @@ try {
   await page.locator(`button.pick[data-joint="${joint}"]`).click();
   await assert.doesNotReject(page.locator(`li[data-joint="${joint}"].selected`).waitFor());
   assert.equal(await page.locator('.selection').textContent(), `Selected joint ${joint}`);
+  assert.match(await page.getByRole('table', { name: `Details of joint ${joint}` }).textContent(), /revolute about \(/);
   const before = await page.evaluate(() => window.cad2moViewer.renderer.domElement.toDataURL());
   await slider.focus();
   for (let i = 0; i < 40; i++) await page.keyboard.press('ArrowRight');

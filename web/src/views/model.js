@@ -57,10 +57,12 @@ export async function renderViewer(main, id, v, initialTab) {
     viewer.select(sel);
     for (const f of listeners) f(sel, scroll);
     info.textContent = sel ? `Selected ${sel.kind} ${sel.name}` : 'Nothing selected';
+    fill(details, sel ? describe(report, sel) : null);
   };
 
   const stage = h('div', { class: 'stage' });
   const info = h('p', { class: 'selection muted', 'aria-live': 'polite' }, 'Nothing selected');
+  const details = h('div', { class: 'details' });
   const anaglyph = h('input', { type: 'checkbox', id: 'anaglyph' });
   const grid = h('input', { type: 'checkbox', id: 'grid', checked: true });
   const toolbar = h(
@@ -74,7 +76,14 @@ export async function renderViewer(main, id, v, initialTab) {
   );
 
   const tv = performance.now();
-  const viewer = new Viewer(stage, report, meshes, (sel) => select(sel));
+  let viewer;
+  try {
+    viewer = new Viewer(stage, report, meshes, (sel) => select(sel));
+  } catch (e) {
+    // No WebGL here: the lists, report and drives still work.
+    viewer = blindViewer();
+    stage.replaceChildren(errorBox(e, 'The 3D view needs WebGL, which this browser does not offer'));
+  }
   performance.measure('cad2mo:scene', { start: tv });
   window.cad2moViewer = viewer; // for the end-to-end tests and the console
   anaglyph.addEventListener('change', () => viewer.setAnaglyph(anaglyph.checked));
@@ -100,7 +109,7 @@ export async function renderViewer(main, id, v, initialTab) {
     main,
     h('p', { class: 'crumbs' }, h('a', { href: '#/models' }, 'Models'), ' / ', h('a', { href: `#/models/${enc(id)}` }, model.name), ' / ', `v${v}`),
     h('h1', {}, `${model.name} `, h('small', { class: 'muted' }, `v${v} · package ${report.package_name}`)),
-    h('div', { class: 'model-layout' }, h('section', { class: 'view3d', 'aria-label': '3D view' }, toolbar, stage, info), h('section', { class: 'side' }, t.el)),
+    h('div', { class: 'model-layout' }, h('section', { class: 'view3d', 'aria-label': '3D view' }, toolbar, stage, info, details), h('section', { class: 'side' }, t.el)),
   );
 
 
@@ -229,4 +238,46 @@ export async function renderViewer(main, id, v, initialTab) {
     viewer.dispose();
     if (window.cad2moViewer === viewer) delete window.cad2moViewer;
   };
+}
+
+/** Stands in for the 3D view where WebGL is missing. */
+function blindViewer() {
+  const noop = () => {};
+  return { size: 1, select: noop, setCoordinate: noop, resetPose: noop, resetView: noop, setAnaglyph: noop, setGrid: noop, dispose: noop };
+}
+
+const mm = (v) => v.map((x) => num(x * 1000)).join(', ');
+
+/** The selected body's or joint's data, as the conversion report has it. */
+function describe(report, sel) {
+  const rows = [];
+  const row = (k, ...v) => rows.push(h('tr', {}, h('th', { scope: 'row' }, k), h('td', {}, ...v)));
+  if (sel.kind === 'body') {
+    const b = report.bodies.find((x) => x.modelica_name === sel.name);
+    if (!b) return null;
+    row('CAD name', b.cad_name, h('small', { class: 'muted' }, ` (nodeID ${b.node_id})`));
+    if (b.subsystem.length) row('Subsystem', b.subsystem.join(' / '));
+    row('Mass', `${num(b.mass)} kg`);
+    row('CG (world)', `${mm(b.cg_world)} mm`);
+    row('Inertia about CG', h('span', { class: 'matrix' }, b.inertia_cg.map((r) => h('span', {}, r.map(num).join('  ')))), ' kg·m²');
+    row('CS1 (world)', `${mm(b.cs1.position_world)} mm`);
+    row('Shape', b.triangles ? `${b.triangles} triangles from ${b.geometry.join(', ') || 'VRML'}` : 'none');
+    if (b.lumped.length) row('Lumped', b.lumped.join(', '));
+  } else {
+    const j = report.joints.find((x) => x.modelica_name === sel.name);
+    if (!j) return null;
+    row('CAD name', j.cad_name, h('small', { class: 'muted' }, ` (nodeID ${j.node_id})`));
+    row('Emitted as', j.emitted_as, j.in_loop ? ' (in a loop)' : '', j.in_tree ? '' : ' (closes a loop)');
+    row('Connects', `${j.base_body} → ${j.follower_body}`);
+    for (const e of j.elements) {
+      if (e.kind !== 'revolute' && e.kind !== 'prismatic') {
+        row(e.modelica_name, e.kind);
+        continue;
+      }
+      const start = e.kind === 'revolute' ? `${num(Math.round(e.initial_q * DEG * 1e6) / 1e6)}°` : `${num(e.initial_q * 1000)} mm`;
+      row(e.modelica_name, `${e.kind} about (${e.axis_world.map(num).join(', ')}) through (${mm(e.origin_world)}) mm, start ${start}`);
+    }
+    row('Start fixed', j.start_fixed ? 'yes' : 'no (solved with the loop)');
+  }
+  return h('table', { class: 'details-table', 'aria-label': `Details of ${sel.kind} ${sel.name}` }, h('tbody', {}, rows));
 }

@@ -26,7 +26,9 @@ export async function renderModels(main) {
     list,
   );
 
+  let timer = null;
   async function load() {
+    clearTimeout(timer);
     let models;
     try {
       models = await api('/api/models');
@@ -34,6 +36,8 @@ export async function renderModels(main) {
       fill(list, errorBox(e, 'Could not load the models'));
       return;
     }
+    // While a conversion is under way (here or from another client), follow it.
+    if (models.some((m) => ['queued', 'running'].includes(m.latest_version?.status)) && list.isConnected) timer = setTimeout(load, 1000);
     if (!models.length) {
       fill(list, h('p', { class: 'muted' }, 'No models yet: upload a CAD export above.'));
       return;
@@ -84,6 +88,7 @@ export async function renderModels(main) {
   }
 
   await load();
+  return () => clearTimeout(timer);
 }
 
 export async function renderModel(main, id) {
