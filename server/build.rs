@@ -1,7 +1,9 @@
 //! Builds the browser UI (`web/`, Vite + three.js from npm) and embeds it in the binary, so
 //! `cargo run -- serve` serves it with no other step. npm runs only when `web/` changed:
 //! `npm ci` when the lockfile is newer than `node_modules`, then `vite build` into `OUT_DIR`.
-//! Without npm (or when the build fails) the server still builds, and `/` explains what is missing.
+//! Text files are also gzipped here (best compression, once), so the server never compresses
+//! per request. Without npm (or when the build fails) the server still builds, and `/` explains
+//! what is missing.
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -31,15 +33,33 @@ fn main() {
         collect(&dist, &dist, &mut files);
     }
     files.sort();
-    let mut code = String::from("/// (path under the UI root, bytes, quoted SHA-256 ETag)\npub static ASSETS: &[(&str, &[u8], &str)] = &[\n");
+    let gz_dir = out.join("web-gz");
+    let mut code = String::from(
+        "/// (path under the UI root, bytes, gzipped bytes for text files, quoted SHA-256 ETag)\n\
+         pub static ASSETS: &[(&str, &[u8], Option<&[u8]>, &str)] = &[\n",
+    );
     for (rel, abs) in &files {
         let bytes = std::fs::read(abs).expect("reading a built UI file");
         let etag = hex(&Sha256::digest(&bytes)[..16]);
-        let _ = writeln!(code, "    ({rel:?}, include_bytes!({:?}), \"\\\"{etag}\\\"\"),", abs.display().to_string());
+        let gz = if is_text(rel) && bytes.len() > 1024 {
+            let path = gz_dir.join(format!("{rel}.gz"));
+            std::fs::create_dir_all(path.parent().expect("parent")).expect("gz folder");
+            let mut enc = flate2::write::GzEncoder::new(Vec::new(), flate2::Compression::best());
+            std::io::Write::write_all(&mut enc, &bytes).expect("gzip");
+            std::fs::write(&path, enc.finish().expect("gzip")).expect("writing a gzipped UI file");
+            format!("Some(include_bytes!({:?}))", path.display().to_string())
+        } else {
+            "None".to_string()
+        };
+        let _ = writeln!(code, "    ({rel:?}, include_bytes!({:?}), {gz}, \"\\\"{etag}\\\"\"),", abs.display().to_string());
     }
     code.push_str("];\n");
     let _ = writeln!(code, "/// Why the UI is missing, when it is.\npub static BUILD_ERROR: Option<&str> = {error:?};");
     std::fs::write(out.join("web_assets.rs"), code).expect("writing web_assets.rs");
+}
+
+fn is_text(path: &str) -> bool {
+    [".html", ".js", ".css", ".svg", ".json", ".txt", ".map"].iter().any(|e| path.ends_with(e))
 }
 
 fn hex(b: &[u8]) -> String {

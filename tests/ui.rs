@@ -66,9 +66,21 @@ async fn static_files_have_types_caching_and_etags() {
     let etag = js.headers()["etag"].clone();
     assert!(js.headers()["content-type"].to_str().expect("type").contains("javascript"));
     assert_eq!(js.headers()["cache-control"], "public, max-age=31536000, immutable");
+    assert!(js.headers().get("content-encoding").is_none(), "no gzip unless asked");
     assert!(!js.bytes().await.expect("js").is_empty());
-    let again = client.get(app.url(script)).header("If-None-Match", etag).send().await.expect("revalidate");
+    let again = client.get(app.url(script)).header("If-None-Match", etag.clone()).send().await.expect("revalidate");
     assert_eq!(again.status(), 304);
+    // Gzipped for clients that take it: the same bytes once inflated, its own ETag.
+    let gz = client.get(app.url(script)).header("Accept-Encoding", "gzip").send().await.expect("gzip");
+    assert_eq!(gz.headers()["content-encoding"], "gzip");
+    assert_eq!(gz.headers()["vary"], "accept-encoding");
+    assert_ne!(gz.headers()["etag"], etag);
+    let packed = gz.bytes().await.expect("gz body");
+    let mut unpacked = Vec::new();
+    flate2::read::GzDecoder::new(&packed[..]).read_to_end(&mut unpacked).expect("gunzip");
+    let plain = client.get(app.url(script)).send().await.expect("plain").bytes().await.expect("body");
+    assert_eq!(unpacked, plain.to_vec());
+    assert!(packed.len() * 2 < plain.len(), "{} -> {}", plain.len(), packed.len());
 
     let css = html.split("href=\"").find_map(|s| s.split('"').next().filter(|p| p.ends_with(".css"))).expect("a stylesheet");
     let css = client.get(app.url(css)).send().await.expect("GET css");
