@@ -34,10 +34,7 @@ fn main() {
     }
     files.sort();
     let gz_dir = out.join("web-gz");
-    let mut code = String::from(
-        "/// (path under the UI root, bytes, gzipped bytes for text files, quoted SHA-256 ETag)\n\
-         pub static ASSETS: &[(&str, &[u8], Option<&[u8]>, &str)] = &[\n",
-    );
+    let mut code = String::from("pub static ASSETS: &[super::Asset] = &[\n");
     for (rel, abs) in &files {
         let bytes = std::fs::read(abs).expect("reading a built UI file");
         let etag = hex(&Sha256::digest(&bytes)[..16]);
@@ -51,7 +48,11 @@ fn main() {
         } else {
             "None".to_string()
         };
-        let _ = writeln!(code, "    ({rel:?}, include_bytes!({:?}), {gz}, \"\\\"{etag}\\\"\"),", abs.display().to_string());
+        let _ = writeln!(
+            code,
+            "    super::Asset {{ path: {rel:?}, bytes: include_bytes!({:?}), gzip: {gz}, etag: \"\\\"{etag}\\\"\" }},",
+            abs.display().to_string()
+        );
     }
     code.push_str("];\n");
     let _ = writeln!(code, "/// Why the UI is missing, when it is.\npub static BUILD_ERROR: Option<&str> = {error:?};");
