@@ -6,7 +6,7 @@ use std::path::Path;
 use std::sync::Arc;
 
 use cad2mo::pipeline::back::bundle::write_zip;
-use cad2mo_tests::app::{zip_dir, TestApp};
+use cad2mo_tests::app::{heavy_pendulum, zip_dir, TestApp};
 use cad2mo_tests::app_models::{problem, upload_form};
 use cad2mo_tests::common::workspace_root;
 use serde_json::Value;
@@ -475,4 +475,52 @@ async fn twenty_uploads_at_once() {
     ids.dedup();
     assert_eq!(ids.len(), 20);
     assert_eq!(json(app.models().await, 200).await.as_array().map(Vec::len), Some(20));
+}
+
+/// A queued job says where it stands, a running one how far it is: its stages in order, its
+/// fraction never going back, and neither once it has finished.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn jobs_report_queue_position_and_progress() {
+    let app = TestApp::spawn_with(|s| s.workers = 1).await;
+    let heavy: Value = app.upload_model(heavy_pendulum(300_000), "heavy.zip", &[]).await.json().await.expect("json");
+    let light: Value = app.upload_model(pendulum(), "light.zip", &[]).await.json().await.expect("json");
+    let (heavy_job, light_job) = (heavy["job_id"].as_str().expect("job"), light["job_id"].as_str().expect("job"));
+
+    // One worker, busy with the heavy job for seconds: the light one waits, first in line.
+    let queued: Value = app.job(light_job).await.json().await.expect("json");
+    assert_eq!(queued["status"], "queued", "{queued:#}");
+    assert_eq!(queued["queue"], serde_json::json!({"ahead": 0, "running": 1}), "{queued:#}");
+    assert!(queued.get("progress").is_none());
+
+    let order = ["xml", "meshes", "vrml", "analysis", "modelica", "shapes", "report", "package", "storing"];
+    let mut seen: Vec<(usize, f64)> = Vec::new();
+    let deadline = std::time::Instant::now() + std::time::Duration::from_secs(120);
+    let done = loop {
+        let job: Value = app.job(heavy_job).await.json().await.expect("json");
+        if job["status"] != "running" {
+            if job["status"] == "succeeded" || job["status"] == "failed" {
+                break job;
+            }
+            continue;
+        }
+        assert!(job.get("queue").is_none(), "{job:#}");
+        if let Some(p) = job.get("progress") {
+            let stage = order.iter().position(|s| *s == p["stage"]).unwrap_or_else(|| panic!("unknown stage in {p}"));
+            let fraction = p["fraction"].as_f64().expect("fraction");
+            assert!((0.0..=1.0).contains(&fraction), "{p}");
+            assert!(p["done"].as_u64() <= p["total"].as_u64() && p["total"].as_u64() >= Some(1), "{p}");
+            assert!(p["label"].as_str().is_some_and(|l| !l.is_empty()), "{p}");
+            if let Some(&(s, f)) = seen.last() {
+                assert!(stage >= s && fraction >= f, "progress went back: {:?} then {p}", seen);
+            }
+            seen.push((stage, fraction));
+        }
+        assert!(std::time::Instant::now() < deadline, "the heavy job takes over 120 s");
+        tokio::time::sleep(std::time::Duration::from_millis(5)).await;
+    };
+    assert_eq!(done["status"], "succeeded", "{done:#}");
+    assert!(done.get("progress").is_none() && done.get("queue").is_none(), "{done:#}");
+    let stages: std::collections::BTreeSet<usize> = seen.iter().map(|s| s.0).collect();
+    assert!(stages.len() >= 2, "watched the heavy job in several stages: {seen:?}");
+    assert_eq!(app.wait_for_job(light_job).await["status"], "succeeded");
 }

@@ -2,7 +2,7 @@
 //! (node --test), and an end-to-end run in a real headless Chromium driven by playwright-core
 //! (`web/e2e/ui.mjs`): upload, 3D pixels, picking, joint sliders, anaglyph, report, drives with a
 //! refused and an accepted gear ratio, the regenerated package, the motor library (edit, export,
-//! re-import) and a narrow window. Screenshots go to `target/ui-screenshots/`.
+//! re-import), a slow conversion's progress and a narrow window. Screenshots go to `target/ui-screenshots/`.
 //!
 //! Chromium, Node and the npm packages are installed by the README's test command; without them
 //! these tests print a notice and pass, unless `CAD2MO_REQUIRE_TOOLS=1` (which that command sets).
@@ -11,7 +11,7 @@ use std::io::Read;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use cad2mo_tests::app::{zip_dir, TestApp};
+use cad2mo_tests::app::{heavy_pendulum, zip_dir, TestApp};
 use cad2mo_tests::common::{tools_required, workspace_root};
 
 fn web_dir() -> PathBuf {
@@ -141,14 +141,19 @@ async fn end_to_end_in_chromium() {
     let bundle = work.path().join("arm.zip");
     let arm = workspace_root().join("tests/in/arm_subsystems");
     std::fs::write(&bundle, zip_dir(&arm)).expect("bundle");
-    // Version 2: the CAD change removed the joint BASE--LINK (the first joint, which gets a drive).
+    // Version 2: the CAD change removed the joint BASE--LINK (the first joint, which gets a drive)...
     let v2 = rewrite_zip(&std::fs::read(&bundle).expect("bundle"), "ARM_SIM_MODEL.xml", |xml| {
         let start = xml.find("<SimpleJoint>\n        <name>\"BASE--LINK\"").expect("the joint to remove");
         let end = start + xml[start..].find("</SimpleJoint>").expect("its end") + "</SimpleJoint>".len();
         xml.replace_range(start..end, "");
+        // ... and made the fore link heavier.
+        assert_eq!(xml.matches("<mass>0.31752</mass>").count(), 1);
+        *xml = xml.replace("<mass>0.31752</mass>", "<mass>0.5</mass>");
     });
     let broken = work.path().join("broken.zip");
     std::fs::write(&broken, zip_dir(&workspace_root().join("tests/in/broken_truncated"))).expect("broken bundle");
+    let heavy = work.path().join("heavy.zip");
+    std::fs::write(&heavy, heavy_pendulum(200_000)).expect("heavy bundle");
     let bundle_v2 = work.path().join("arm-v2.zip");
     std::fs::write(&bundle_v2, v2).expect("bundle v2");
     let shots = workspace_root().join("target/ui-screenshots");
@@ -166,6 +171,7 @@ async fn end_to_end_in_chromium() {
             .env("CAD2MO_BUNDLE", bundle_s)
             .env("CAD2MO_BUNDLE_V2", bundle_v2)
             .env("CAD2MO_BUNDLE_BROKEN", broken)
+            .env("CAD2MO_BUNDLE_HEAVY", heavy)
             .env("CAD2MO_SCREENSHOTS", shots_s)
             .env("CAD2MO_DOWNLOADS", downloads_s)
             .output()
@@ -200,7 +206,7 @@ async fn end_to_end_in_chromium() {
     // The exported library is the XML the UI downloaded, with the edited gain.
     let xml = std::fs::read_to_string(result["library"].as_str().expect("library path")).expect("library");
     assert!(xml.contains("RobotR3 axis controller"));
-    for png in ["1-models-empty", "2-model-3d", "6-drives-refused", "7-drives-saved", "8-library", "10-model-versions", "12-narrow-model"] {
+    for png in ["1-models-empty", "2-model-3d", "6-drives-refused", "7-drives-saved", "8-library", "10-model-versions", "12-narrow-model", "15-job-progress"] {
         assert!(shots.join(format!("{png}.png")).exists(), "screenshot {png}");
     }
     app.stop().await;

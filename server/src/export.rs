@@ -1,11 +1,12 @@
 //! Building a version's package from its stored bundle: the service's one way from an upload to
 //! `package.zip` + `report.json`.
 //!
-//! Today: read the zip ([`read_bundle`], with the service's limits), [`pipeline::convert`], zip
-//! the files ([`write_zip`]). The seam for what comes next (the mechatronic model with drives) is
-//! [`build_package`]: more inputs join [`Inputs`]-style arguments there, and more files join
-//! `files` before zipping (see the marked step). Everything here is synchronous and CPU-bound:
-//! callers run it off the async runtime (the job workers, `api::blocking`).
+//! [`build_package`]: read the zip ([`read_bundle`], with the service's limits), convert it once
+//! with [`pipeline::convert_observed`] (the observer turns the model's drive assignments into
+//! drive plans as soon as the report names the joints, and passes the stages on as
+//! [`BuildStep`]s), add the report's `drives` section, zip the files ([`write_zip`]).
+//! Everything here is synchronous and CPU-bound: callers run it off the async runtime (the job
+//! workers, `api::blocking`).
 //!
 //! Deterministic: the same bundle and options give byte-identical outputs, so re-running a job
 //! (after a restart) is harmless.
@@ -13,8 +14,10 @@
 use serde::{Deserialize, Serialize};
 
 use crate::api::error::{ApiError, FieldError};
-use crate::pipeline::back::bundle::write_zip;
+use crate::pipeline::back::bundle::write_zip_observed;
+use crate::pipeline::back::modelica::mechatronics::DrivePlan;
 use crate::pipeline::front::bundle::{Bundle, BundleError, Limits};
+use crate::pipeline::observe::{Observer, Stage};
 use crate::pipeline::report::Report;
 use crate::pipeline::{self, ConvertError};
 
@@ -140,52 +143,93 @@ pub fn check_bundle(bundle_bytes: &[u8], bundle_name: &str, options: &ExportOpti
     Ok(Checked { model_name: a.model.name.clone(), warnings: a.warnings.len() })
 }
 
+/// Where a package build is: a stage of the conversion, or zipping its files.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BuildStage {
+    Convert(Stage),
+    Package,
+}
+
+/// One progress report of [`build_package`]: `done` of `total` units of `stage`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct BuildStep {
+    pub stage: BuildStage,
+    pub done: usize,
+    pub total: usize,
+}
+
 /// Builds a version's package from its bundle, keeping the Modelica names of `name_hints` (the
 /// previous version's) for unchanged node IDs, with `Mechatronics.mo` driving the joints of
 /// `drives` that the converted model has. The report gains a `drives` section listing the
-/// active and the orphaned assignments (joints the model no longer has).
-///
-/// With drives, the conversion runs twice: once to learn the joints (names, kinds, start
-/// values) and once with the drive plans; a conversion takes milliseconds.
+/// active and the orphaned assignments (joints the model no longer has). `progress` hears every
+/// step.
 pub fn build_package(
     bundle_bytes: &[u8],
     bundle_name: &str,
     options: &ExportOptions,
     drives: &[crate::drives::ResolvedDrive],
     name_hints: &pipeline::back::modelica::Hints,
+    progress: &mut dyn FnMut(BuildStep),
 ) -> Result<Built, ExportError> {
     let bundle = read_bundle(bundle_bytes, bundle_name)?;
     let mut opts = options.pipeline();
     opts.name_hints = name_hints.clone();
-    let mut out = pipeline::convert(&bundle, &opts)?;
-    let mut orphaned = Vec::new();
-    if !drives.is_empty() {
-        let report = serde_json::to_value(&out.report).map_err(|e| ExportError::Zip(std::io::Error::other(e)))?;
-        let (plans, orphans) = crate::drives::plans(&report, drives);
-        orphaned = orphans;
-        if !plans.is_empty() {
-            opts.drives = plans;
-            out = pipeline::convert(&bundle, &opts)?;
-        }
+    let mut obs = BuildObserver { drives, active: Vec::new(), orphaned: Vec::new(), failed: None, progress };
+    let out = pipeline::convert_observed(&bundle, &opts, &mut obs)?;
+    let BuildObserver { active, orphaned, failed, progress, .. } = obs;
+    if let Some(e) = failed {
+        return Err(ExportError::Zip(std::io::Error::other(e)));
     }
     let mut files = out.files;
     let mut report = serde_json::to_value(&out.report).map_err(|e| ExportError::Zip(std::io::Error::other(e)))?;
-    report["drives"] = serde_json::json!({
-        "active": opts.drives.iter().map(|d| d.joint.clone()).collect::<Vec<_>>(),
-        "orphaned": orphaned,
-    });
+    report["drives"] = serde_json::json!({ "active": active, "orphaned": orphaned });
     let report_json = serde_json::to_vec_pretty(&report).map_err(|e| ExportError::Zip(std::io::Error::other(e)))?;
     match files.iter_mut().find(|(path, _)| path == "report.json") {
         Some((_, bytes)) => *bytes = report_json.clone(),
         None => return Err(ExportError::Zip(std::io::Error::other("the conversion wrote no report.json"))),
     }
-    let package_zip = write_zip(&files).map_err(ExportError::Zip)?;
+    let package_zip = write_zip_observed(&files, &mut |done, total| progress(BuildStep { stage: BuildStage::Package, done, total }))
+        .map_err(ExportError::Zip)?;
     Ok(Built { package_zip, report_json, summary: Summary::of(&out.report) })
+}
+
+/// Passes the conversion's stages on and plans the drives from its report.
+struct BuildObserver<'a> {
+    drives: &'a [crate::drives::ResolvedDrive],
+    active: Vec<String>,
+    orphaned: Vec<String>,
+    /// The report could not be read for planning (then no drive is planned and the build fails).
+    failed: Option<serde_json::Error>,
+    progress: &'a mut dyn FnMut(BuildStep),
+}
+
+impl Observer for BuildObserver<'_> {
+    fn progress(&mut self, stage: Stage, done: usize, total: usize) {
+        (self.progress)(BuildStep { stage: BuildStage::Convert(stage), done, total: total.max(1) });
+    }
+
+    fn drives(&mut self, report: &Report, _planned: &[DrivePlan]) -> Vec<DrivePlan> {
+        if self.drives.is_empty() {
+            return Vec::new();
+        }
+        let json = match serde_json::to_value(report) {
+            Ok(j) => j,
+            Err(e) => {
+                self.failed = Some(e);
+                return Vec::new();
+            }
+        };
+        let (plans, orphans) = crate::drives::plans(&json, self.drives);
+        self.active = plans.iter().map(|d| d.joint.clone()).collect();
+        self.orphaned = orphans;
+        plans
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::pipeline::back::bundle::write_zip;
 
     fn pendulum_zip() -> Vec<u8> {
         let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/in/pendulum");
@@ -200,8 +244,8 @@ mod tests {
     fn builds_deterministically() {
         let zip = pendulum_zip();
         let opts = ExportOptions::default();
-        let a = build_package(&zip, "p.zip", &opts, &[], &Default::default()).unwrap();
-        let b = build_package(&zip, "p.zip", &opts, &[], &Default::default()).unwrap();
+        let a = build_package(&zip, "p.zip", &opts, &[], &Default::default(), &mut |_| {}).unwrap();
+        let b = build_package(&zip, "p.zip", &opts, &[], &Default::default(), &mut |_| {}).unwrap();
         assert_eq!(a.package_zip, b.package_zip);
         assert_eq!(a.summary.package_name, "PENDULUM");
         assert_eq!((a.summary.bodies, a.summary.joints), (2, 2));

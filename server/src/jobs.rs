@@ -17,17 +17,26 @@
 //! unreferenced blob. One server per database: two servers would each re-queue the other's
 //! running jobs (still harmless, just wasted work).
 //!
+//! Progress: a running job's latest step (conversion stage, `done` of `total`, an overall
+//! fraction) is kept in memory on a [`ProgressBoard`] shared with the API, which shows it on
+//! `GET /api/jobs/{id}`; it is ephemeral by nature (a restart re-runs the job from the start), so
+//! it never touches the database.
+//!
 //! Shutdown: the dispatcher stops when the last [`Jobs`] handle is dropped (the app's state);
 //! queued jobs wait in the table for the next start.
 
-use std::sync::Arc;
+use std::collections::HashMap;
+use std::sync::{Arc, Mutex};
 use std::time::Duration;
+
+use serde::Serialize;
 
 use tokio::sync::{mpsc, Semaphore};
 use tracing::Instrument;
 
 use crate::api::ApiError;
-use crate::export::{self, ExportOptions};
+use crate::export::{self, BuildStage, BuildStep, ExportOptions};
+use crate::pipeline::observe::Stage;
 use crate::store::blobs::Blobs;
 use crate::store::models::{self, ClaimedJob, JobOutputs};
 use crate::store::{Store, StoreError};
@@ -36,12 +45,86 @@ use crate::store::{Store, StoreError};
 #[derive(Clone, Debug)]
 pub struct Jobs {
     wake: mpsc::Sender<()>,
+    board: ProgressBoard,
 }
 
 #[derive(Clone)]
 struct Ctx {
     store: Store,
     blobs: Blobs,
+    board: ProgressBoard,
+}
+
+/// Where a running job is.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct JobProgress {
+    /// `xml`, `meshes`, `vrml`, `analysis`, `modelica`, `shapes`, `report`, `package` (zipping)
+    /// or `storing`, in that order; a job may skip some.
+    pub stage: &'static str,
+    /// The stage for people, e.g. "Writing shapes".
+    pub label: &'static str,
+    /// Units of the stage done (bodies, files) of `total`.
+    pub done: usize,
+    pub total: usize,
+    /// An estimate of the whole job done, 0..1, never decreasing: stages weighted by their usual
+    /// share of the time (meshes and shapes dominate large models).
+    pub fraction: f64,
+}
+
+/// The stages of a job, with their weights in the overall fraction (they add up to 100).
+const STAGES: [(&str, &str, f64); 9] = [
+    ("xml", "Reading the XML", 5.0),
+    ("meshes", "Reading STL meshes", 20.0),
+    ("vrml", "Reading and matching VRML", 20.0),
+    ("analysis", "Analysing joints and loops", 4.0),
+    ("modelica", "Writing Modelica", 4.0),
+    ("shapes", "Writing shapes", 30.0),
+    ("report", "Writing the report", 2.0),
+    ("package", "Zipping the package", 12.0),
+    ("storing", "Storing the package", 3.0),
+];
+
+impl JobProgress {
+    /// The progress of a job at `step`.
+    pub fn at(step: BuildStep) -> JobProgress {
+        let index = match step.stage {
+            BuildStage::Convert(s) => Stage::ALL.iter().position(|x| *x == s).unwrap_or(0),
+            BuildStage::Package => 7,
+        };
+        Self::of(index, step.done, step.total)
+    }
+
+    fn of(index: usize, done: usize, total: usize) -> JobProgress {
+        let (stage, label, weight) = STAGES[index.min(STAGES.len() - 1)];
+        let before: f64 = STAGES[..index].iter().map(|s| s.2).sum();
+        let within = if total == 0 { 0.0 } else { (done.min(total) as f64) / total as f64 };
+        JobProgress { stage, label, done, total, fraction: ((before + weight * within) / 100.0).clamp(0.0, 1.0) }
+    }
+
+    fn storing() -> JobProgress {
+        Self::of(STAGES.len() - 1, 0, 1)
+    }
+}
+
+/// The latest progress of every running job (cheap to clone; shared by workers and the API).
+#[derive(Clone, Default, Debug)]
+pub struct ProgressBoard(Arc<Mutex<HashMap<String, JobProgress>>>);
+
+impl ProgressBoard {
+    fn set(&self, job: &str, p: JobProgress) {
+        let mut map = self.0.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
+        map.insert(job.to_string(), p);
+    }
+
+    fn clear(&self, job: &str) {
+        let mut map = self.0.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
+        map.remove(job);
+    }
+
+    fn get(&self, job: &str) -> Option<JobProgress> {
+        let map = self.0.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
+        map.get(job).cloned()
+    }
 }
 
 impl Jobs {
@@ -53,9 +136,10 @@ impl Jobs {
             tracing::warn!(requeued, "jobs interrupted by a stop were re-queued");
         }
         let (wake, rx) = mpsc::channel(1);
-        let ctx = Ctx { store, blobs };
+        let board = ProgressBoard::default();
+        let ctx = Ctx { store, blobs, board: board.clone() };
         tokio::spawn(dispatch(ctx, workers.max(1), rx).instrument(tracing::info_span!("jobs")));
-        let jobs = Jobs { wake };
+        let jobs = Jobs { wake, board };
         jobs.notify(); // pick up what is already queued
         Ok(jobs)
     }
@@ -64,6 +148,11 @@ impl Jobs {
     pub fn notify(&self) {
         // A full channel means a wake-up is already pending: nothing is lost.
         let _ = self.wake.try_send(());
+    }
+
+    /// The latest progress of a running job (`None` when it is not running here).
+    pub fn progress(&self, job_id: &str) -> Option<JobProgress> {
+        self.board.get(job_id)
     }
 }
 
@@ -113,6 +202,7 @@ async fn dispatch(ctx: Ctx, workers: usize, mut wake: mpsc::Receiver<()>) {
 async fn run(ctx: &Ctx, job: ClaimedJob) {
     tracing::info!("job running");
     let started = std::time::Instant::now();
+    ctx.board.set(&job.id, JobProgress::of(0, 0, 1));
     let result = convert(ctx, &job).await;
     let ms = started.elapsed().as_millis() as u64;
     for attempt in 1..=3 {
@@ -129,6 +219,7 @@ async fn run(ctx: &Ctx, job: ClaimedJob) {
         };
         match recorded {
             Ok(()) => {
+                ctx.board.clear(&job.id);
                 match &result {
                     Ok(_) => tracing::info!(ms, "job succeeded"),
                     Err(e) => tracing::warn!(ms, error = %e, "job failed"),
@@ -142,6 +233,7 @@ async fn run(ctx: &Ctx, job: ClaimedJob) {
         }
     }
     // Still `running` in the table: the next start re-queues it.
+    ctx.board.clear(&job.id);
 }
 
 /// The Modelica names of the model's latest converted version before this one (re-exports of a
@@ -177,6 +269,8 @@ async fn convert(ctx: &Ctx, job: &ClaimedJob) -> Result<Stored, ApiError> {
     let drives = crate::drives::resolve_for_model(&ctx.store, &job.model_id).await?;
     let hints = previous_names(ctx, job).await?;
     let blobs = ctx.blobs.clone();
+    let board = ctx.board.clone();
+    let job_id = job.id.clone();
     let span = tracing::Span::current();
     let task = tokio::task::spawn_blocking(move || {
         span.in_scope(|| {
@@ -186,7 +280,16 @@ async fn convert(ctx: &Ctx, job: &ClaimedJob) -> Result<Stored, ApiError> {
                 blobs.get(&source.bundle_sha256).map_err(|e| ApiError::Internal(e.into()))?.ok_or_else(|| {
                     ApiError::Internal(anyhow::anyhow!("bundle blob {} is missing", source.bundle_sha256))
                 })?;
-            let built = export::build_package(&bundle, &source.bundle_name, &options, &drives, &hints)?;
+            let mut last = 0.0;
+            let built = export::build_package(&bundle, &source.bundle_name, &options, &drives, &hints, &mut |step| {
+                let p = JobProgress::at(step);
+                // Never backwards, and not every one of 10,000 bodies: a new stage or 1 % more.
+                if p.fraction >= last + 0.01 || (p.done == 0 && p.fraction >= last) {
+                    last = p.fraction.max(last);
+                    board.set(&job_id, p);
+                }
+            })?;
+            board.set(&job_id, JobProgress::storing());
             let summary_json = serde_json::to_string(&built.summary).map_err(|e| ApiError::Internal(e.into()))?;
             // Blobs first: the database points at them only once they are complete on disk.
             let package_sha256 = blobs.put(&built.package_zip).map_err(|e| ApiError::Internal(e.into()))?;

@@ -81,3 +81,22 @@ pub fn zip_dir(dir: &Path) -> Vec<u8> {
     }
     cad2mo::pipeline::back::bundle::write_zip(&files).expect("zip")
 }
+
+/// The pendulum case with a binary STL of `triangles` small facets inside its link's box (mm):
+/// a bundle whose conversion takes long enough (seconds in a debug build) to be watched.
+pub fn heavy_pendulum(triangles: u32) -> Vec<u8> {
+    let dir = crate::common::workspace_root().join("tests/in/pendulum");
+    let xml = std::fs::read(dir.join("PENDULUM.xml")).expect("xml");
+    let mut stl = vec![0u8; 80];
+    stl.extend_from_slice(&triangles.to_le_bytes());
+    for i in 0..triangles {
+        let x = -15.0 + 330.0 * (i as f32 / triangles as f32);
+        let y = -15.0 + 30.0 * ((i % 97) as f32 / 97.0);
+        stl.extend_from_slice(&[0f32, 0.0, 1.0].map(f32::to_le_bytes).concat());
+        for v in [[x, y, 0.0], [x + 0.5, y, 0.0], [x, y + 0.5, 1.0]] {
+            stl.extend_from_slice(&v.map(f32::to_le_bytes).concat());
+        }
+        stl.extend_from_slice(&[0, 0]);
+    }
+    cad2mo::pipeline::back::bundle::write_zip(&[("PENDULUM.xml".into(), xml), ("meshes/LINK_prt.stl".into(), stl)]).expect("zip")
+}

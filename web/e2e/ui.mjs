@@ -5,6 +5,7 @@
 //   CAD2MO_BUNDLE       a CAD export zip to upload
 //   CAD2MO_BUNDLE_V2    the same model after a CAD change that removed the first joint
 //   CAD2MO_BUNDLE_BROKEN a truncated export, refused with the file, line and element
+//   CAD2MO_BUNDLE_HEAVY a bundle whose conversion takes seconds (its progress is watched)
 //   CAD2MO_SCREENSHOTS  folder for a screenshot of each main screen
 //   CAD2MO_DOWNLOADS    folder for the downloaded package and library
 //
@@ -20,9 +21,10 @@ const url = process.env.CAD2MO_URL;
 const bundle = process.env.CAD2MO_BUNDLE;
 const bundleV2 = process.env.CAD2MO_BUNDLE_V2;
 const broken = process.env.CAD2MO_BUNDLE_BROKEN;
+const heavy = process.env.CAD2MO_BUNDLE_HEAVY;
 const shots = process.env.CAD2MO_SCREENSHOTS;
 const downloads = process.env.CAD2MO_DOWNLOADS;
-for (const [k, v] of Object.entries({ url, bundle, bundleV2, broken, shots, downloads })) assert.ok(v, `missing setting ${k}`);
+for (const [k, v] of Object.entries({ url, bundle, bundleV2, broken, heavy, shots, downloads })) assert.ok(v, `missing setting ${k}`);
 
 const step = (s) => console.error(`e2e: ${s}`);
 const shot = (page, name) => page.screenshot({ path: join(shots, `${name}.png`), fullPage: true });
@@ -233,6 +235,7 @@ try {
   const diff = page.locator('.diff-out');
   await diff.getByText('v1 → v2').waitFor();
   assert.match(await diff.textContent(), new RegExp(`removed ${joint}`));
+  assert.match(await diff.locator('li.changed').textContent(), /LINK_FORE \(LINK\).*mass: 0\.31752 → 0\.5 kg/);
   const orphans = page.locator('ul.orphaned');
   await orphans.waitFor();
   assert.match(await orphans.textContent(), new RegExp(joint));
@@ -247,6 +250,38 @@ try {
   await page.getByRole('dialog').getByRole('button', { name: 'Delete' }).click();
   await page.locator('tr[data-version="2"]').waitFor({ state: 'detached' });
   assert.equal(await page.locator('tr[data-version]').count(), 1);
+
+  // ---- A conversion that takes a while: the page follows the job's stages and its bar fills.
+  step('job progress');
+  await page.getByRole('link', { name: 'Models', exact: true }).first().click();
+  await page.getByRole('heading', { name: 'All models' }).waitFor();
+  await page.evaluate(() => {
+    window.cad2moStates = [];
+    const state = document.querySelector('section.upload .upload-state');
+    const bar = document.querySelector('section.upload progress.job-progress');
+    new MutationObserver(() => window.cad2moStates.push([state.textContent, bar.getAttribute('value')])).observe(state, {
+      childList: true,
+      characterData: true,
+      subtree: true,
+    });
+  });
+  await page.locator('section.upload input[type=file]').setInputFiles(heavy);
+  await page.getByText(/ · \d+ %/).first().waitFor({ timeout: 60_000 });
+  // The new model is listed at once, its conversion followed there too.
+  await page.locator('tr[data-model-id]', { hasText: 'PENDULUM' }).waitFor();
+  await shot(page, '15-job-progress');
+  assert.equal(await page.getByLabel('Conversion', { exact: true }).evaluate((el) => el.tagName), 'PROGRESS');
+  await page.waitForURL(/#\/models\/[^/]+\/versions\/1$/, { timeout: 120_000 });
+  const states = await page.evaluate(() => window.cad2moStates);
+  const staged = states.filter(([text]) => /: (Reading|Analysing|Writing|Zipping|Storing)[^·]* · \d+ %/.test(text));
+  assert.ok(staged.length >= 2, `the job's stages were shown: ${JSON.stringify(states)}`);
+  const values = staged.map(([, v]) => Number(v));
+  assert.ok(values.every((v, i) => i === 0 || v >= values[i - 1]) && values.at(-1) > values[0], `the bar fills: ${JSON.stringify(staged)}`);
+  await waitForModel(page);
+  await page.getByRole('link', { name: 'Models', exact: true }).first().click();
+  await page.getByRole('button', { name: 'Delete PENDULUM' }).click();
+  await page.getByRole('dialog').getByRole('button', { name: 'Delete' }).click();
+  await page.locator('tr[data-model-id]', { hasText: 'PENDULUM' }).waitFor({ state: 'detached' });
 
   // ---- A narrow window: nothing wider than the screen, and the model still renders.
   step('narrow window');

@@ -114,6 +114,21 @@ export async function waitForJob(jobId, onUpdate, { interval = 250, signal } = {
   }
 }
 
+/** A job's state in words: its place in the queue, or its stage and how far it is. */
+export function describeJob(job) {
+  if (job.status === 'queued' && job.queue) {
+    const { ahead, running } = job.queue;
+    const busy = running ? `, ${running} converting now` : '';
+    return ahead ? `queued behind ${ahead} ${ahead === 1 ? 'job' : 'jobs'}${busy}` : `queued, next in line${busy}`;
+  }
+  if (job.status === 'running' && job.progress) {
+    const p = job.progress;
+    const count = p.total > 1 ? ` ${Math.min(p.done + 1, p.total)} of ${p.total}` : '';
+    return `${p.label}${count} · ${Math.round(p.fraction * 100)} %`;
+  }
+  return job.status;
+}
+
 /** Downloads a URL with the auth header and hands it to the browser as a file. */
 export async function download(path, fallbackName) {
   const resp = await fetch(path, { headers: headers() });

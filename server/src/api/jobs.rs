@@ -1,7 +1,8 @@
 //! The jobs resource: `GET /api/jobs/{job_id}`, the status of a conversion (poll it after an
 //! upload's 202): `{id, kind, model_id, version, status, error?, created_at, started_at,
 //! finished_at}` with `status` one of `queued`, `running`, `succeeded`, `failed`, and `error` the
-//! problem document of a failed job.
+//! problem document of a failed job. A queued job also has `queue` (jobs ahead of it, jobs
+//! running), a running one `progress` (stage, `done` of `total`, overall `fraction`).
 
 use axum::extract::rejection::PathRejection;
 use axum::extract::{Path, State};
@@ -12,6 +13,7 @@ use serde_json::Value;
 
 use super::ApiError;
 use crate::app::AppState;
+use crate::jobs::JobProgress;
 use crate::store::models as db;
 
 pub fn router() -> Router<AppState> {
@@ -27,9 +29,21 @@ struct JobView {
     status: String,
     #[serde(skip_serializing_if = "Option::is_none")]
     error: Option<Value>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    queue: Option<QueueView>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    progress: Option<JobProgress>,
     created_at: String,
     started_at: Option<String>,
     finished_at: Option<String>,
+}
+
+#[derive(Serialize)]
+struct QueueView {
+    /// Queued jobs that will be claimed before this one.
+    ahead: i64,
+    /// Jobs converting now (at most the number of workers).
+    running: i64,
 }
 
 async fn get_job(
@@ -44,6 +58,11 @@ async fn get_job(
         .map(serde_json::from_str)
         .transpose()
         .map_err(|e| ApiError::Internal(anyhow::anyhow!("stored problem is corrupt: {e}")))?;
+    let queue = match job.status.as_str() {
+        "queued" => db::queue_position(&state.store.pool, &job.id).await?.map(|(ahead, running)| QueueView { ahead, running }),
+        _ => None,
+    };
+    let progress = if job.status == "running" { state.jobs.progress(&job.id) } else { None };
     Ok(Json(JobView {
         id: job.id,
         kind: job.kind,
@@ -51,6 +70,8 @@ async fn get_job(
         version: job.version,
         status: job.status,
         error,
+        queue,
+        progress,
         created_at: job.created_at,
         started_at: job.started_at,
         finished_at: job.finished_at,

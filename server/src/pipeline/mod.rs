@@ -13,6 +13,7 @@
 pub mod back;
 pub mod front;
 pub mod ir;
+pub mod observe;
 pub mod passes;
 pub mod report;
 #[cfg(test)]
@@ -24,6 +25,7 @@ use serde::Serialize;
 use front::bundle::{Bundle, BundleError};
 use front::simmechanics::XmlError;
 use ir::{Model, Warning};
+use observe::{Observer, Quiet, Stage};
 use passes::geometry::GeometryError;
 use valid::{Analysis, Validated, ValidationError};
 
@@ -142,6 +144,12 @@ pub struct Analysed {
 
 /// Parses and analyses a bundle.
 pub fn analyse(bundle: &Bundle, opts: &Options) -> Result<Analysed, ConvertError> {
+    analyse_observed(bundle, opts, &mut Quiet)
+}
+
+/// [`analyse`], telling `obs` how far it is.
+pub fn analyse_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer) -> Result<Analysed, ConvertError> {
+    obs.progress(Stage::Xml, 0, 1);
     let xml_path = match bundle.find_export(front::simmechanics::is_physical_modeling_xml) {
         Ok(p) => p.to_string(),
         Err(e @ BundleError::NoXml { .. }) => {
@@ -156,8 +164,11 @@ pub fn analyse(bundle: &Bundle, opts: &Options) -> Result<Analysed, ConvertError
     };
     let bytes = bundle.get(&xml_path).unwrap_or_default();
     let (mut model, mut warnings) = front::simmechanics::parse(&xml_path, bytes)?;
-    warnings.extend(passes::geometry::read_meshes(&mut model, bundle, &xml_path)?);
-    let vrml = match_vrml(&mut model, bundle, opts, &mut warnings)?;
+    warnings.extend(passes::geometry::read_meshes(&mut model, bundle, &xml_path, &mut |i, n| {
+        obs.progress(Stage::Meshes, i, n)
+    })?);
+    let vrml = match_vrml(&mut model, bundle, opts, &mut warnings, obs)?;
+    obs.progress(Stage::Analysis, 0, 1);
     let mut merged = Default::default();
     if opts.lump_welds {
         let h = passes::hierarchy::build(&model);
@@ -192,13 +203,15 @@ fn match_vrml(
     bundle: &Bundle,
     opts: &Options,
     warnings: &mut Vec<Warning>,
+    obs: &mut dyn Observer,
 ) -> Result<Option<passes::geometry_match::MatchReport>, ConvertError> {
     let mains = front::vrml::main_files(bundle);
     if mains.is_empty() || model.bodies.iter().all(|b| b.mesh.is_some()) {
         return Ok(None);
     }
     let mut scene = front::vrml::Scene::default();
-    for main in &mains {
+    for (i, main) in mains.iter().enumerate() {
+        obs.progress(Stage::Vrml, i, mains.len() + 1);
         let (s, w) = front::vrml::parse(bundle, main)?;
         warnings.extend(w);
         scene.append(s);
@@ -208,6 +221,7 @@ fn match_vrml(
         Some(p) => passes::geometry_match::parse_pins(bundle.get(p).unwrap_or_default())?,
         None => Default::default(),
     };
+    obs.progress(Stage::Vrml, mains.len(), mains.len() + 1);
     let (report, w) = passes::geometry_match::match_scene(model, &scene, &pins, &opts.matching)?;
     warnings.extend(w);
     Ok(Some(report))
@@ -215,16 +229,23 @@ fn match_vrml(
 
 /// Converts a bundle into the files of the output zip.
 pub fn convert(bundle: &Bundle, opts: &Options) -> Result<Output, ConvertError> {
+    convert_observed(bundle, opts, &mut Quiet)
+}
+
+/// [`convert`], telling `obs` how far it is and letting it choose the drives once the report
+/// exists (the report does not depend on them: drives only make `Mechatronics.mo`).
+pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer) -> Result<Output, ConvertError> {
     if !opts.gravity.iter().all(|g| g.is_finite()) {
         return Err(ConvertError::Options(format!("gravity {:?} is not finite", opts.gravity)));
     }
-    let a = analyse(bundle, opts)?;
+    let a = analyse_observed(bundle, opts, obs)?;
     let package_name = match &opts.package_name {
         Some(p) if back::modelica::sanitize(p, "P") == *p => p.clone(),
         Some(p) => return Err(ConvertError::Options(format!("package name \"{p}\" is not a Modelica identifier"))),
         None => back::modelica::sanitize(&a.model.name, "P"),
     };
     let package_name = if package_name == "P" { "CadModel".to_string() } else { package_name };
+    obs.progress(Stage::Modelica, 0, 1);
     let pkg = back::modelica::write(
         &a.model,
         &a.validated,
@@ -235,18 +256,6 @@ pub fn convert(bundle: &Bundle, opts: &Options) -> Result<Output, ConvertError> 
             name_hints: opts.name_hints.clone(),
         },
     );
-    let mut files = pkg.files;
-    files.extend(back::modelica::mechatronics::components(&package_name));
-    files.extend(back::modelica::mechatronics::mechatronics(&package_name, &opts.drives, &back::modelica::provenance(&a.model, VERSION))?);
-    if opts.write_shapes {
-        for (i, stem) in pkg.layout.shapes.iter().enumerate() {
-            let (Some(stem), Some(mesh)) = (stem, &a.model.bodies[i].mesh) else { continue };
-            let rgb = a.model.bodies[i].display_rgb();
-            let dir = format!("{package_name}/Resources/Shapes");
-            files.push((format!("{dir}/{stem}.dxf"), back::dxf::write(mesh, rgb, stem)));
-            files.push((format!("{dir}/{stem}.stl"), back::stl::write_binary(mesh, stem)));
-        }
-    }
     let report = report::build(report::ReportInput {
         model: &a.model,
         validated: &a.validated,
@@ -258,6 +267,24 @@ pub fn convert(bundle: &Bundle, opts: &Options) -> Result<Output, ConvertError> 
         warnings: a.warnings,
         version: VERSION,
     });
+    let drives = obs.drives(&report, &opts.drives);
+    let mut files = pkg.files;
+    files.extend(back::modelica::mechatronics::components(&package_name));
+    files.extend(back::modelica::mechatronics::mechatronics(&package_name, &drives, &back::modelica::provenance(&a.model, VERSION))?);
+    if opts.write_shapes {
+        let shapes: Vec<usize> = (0..pkg.layout.shapes.len())
+            .filter(|&i| pkg.layout.shapes[i].is_some() && a.model.bodies.get(i).is_some_and(|b| b.mesh.is_some()))
+            .collect();
+        for (k, &i) in shapes.iter().enumerate() {
+            obs.progress(Stage::Shapes, k, shapes.len());
+            let (Some(stem), Some(mesh)) = (&pkg.layout.shapes[i], &a.model.bodies[i].mesh) else { continue };
+            let rgb = a.model.bodies[i].display_rgb();
+            let dir = format!("{package_name}/Resources/Shapes");
+            files.push((format!("{dir}/{stem}.dxf"), back::dxf::write(mesh, rgb, stem)));
+            files.push((format!("{dir}/{stem}.stl"), back::stl::write_binary(mesh, stem)));
+        }
+    }
+    obs.progress(Stage::Report, 0, 1);
     let json = serde_json::to_vec_pretty(&report).map_err(|e| ConvertError::Options(e.to_string()))?;
     files.push(("report.json".to_string(), json));
     Ok(Output { files, report })

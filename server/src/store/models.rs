@@ -245,6 +245,20 @@ pub async fn get_job(pool: &SqlitePool, id: &str) -> Result<Option<JobRow>, Stor
     .await?)
 }
 
+/// How many queued jobs are ahead of queued job `id` (claimed in creation order), and how many
+/// are running; `None` when `id` is not queued.
+pub async fn queue_position(pool: &SqlitePool, id: &str) -> Result<Option<(i64, i64)>, StoreError> {
+    Ok(sqlx::query_as(
+        "SELECT (SELECT COUNT(*) FROM jobs a WHERE a.status = 'queued'
+                   AND (a.created_at < j.created_at OR (a.created_at = j.created_at AND a.rowid < j.rowid))),
+                (SELECT COUNT(*) FROM jobs r WHERE r.status = 'running')
+         FROM jobs j WHERE j.id = ? AND j.status = 'queued'",
+    )
+    .bind(id)
+    .fetch_optional(pool)
+    .await?)
+}
+
 /// Start-up recovery: every job left `queued` or `running` by a stopped server goes back to
 /// `queued` (conversion is idempotent, so a half-done run is simply redone), and so do their
 /// versions. Returns how many jobs were `running`.

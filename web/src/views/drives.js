@@ -3,7 +3,7 @@
 // (gear ratio first), with units and limits shown and enforced before anything is sent. Saving
 // stores the assignment; "Regenerate package" re-exports the latest version and downloads it.
 
-import { api, download, enc, waitForJob } from '../api.js';
+import { api, download, enc, waitForJob, describeJob } from '../api.js';
 import { h, fill, errorBox, say, num, unitLabel, limits, checkValue, field, confirmAction } from '../ui.js';
 
 const SLOTS = [
@@ -233,7 +233,7 @@ export async function renderDrives(panel, ctx) {
     fill(regenOut, h('p', { role: 'status' }, 'Regenerating…'));
     try {
       const q = await api(`/api/models/${enc(modelId)}/reexport`, { method: 'POST' });
-      const job = await waitForJob(q.job_id, (j) => fill(regenOut, h('p', { role: 'status' }, `Re-export of v${q.version}: ${j.status}`)));
+      const job = await waitForJob(q.job_id, (j) => fill(regenOut, h('p', { role: 'status' }, `Re-export of v${q.version}: ${describeJob(j)}`)));
       if (job.status !== 'succeeded') {
         fill(regenOut, errorBox({ message: job.error?.detail || 'the re-export failed' }, 'Re-export failed'));
         return;

@@ -2,11 +2,36 @@
 // upload, the diff between versions and the state of its drive assignments.
 
 import { api, download, enc } from '../api.js';
-import { h, fill, errorBox, say, confirmAction, when, bytes, newId } from '../ui.js';
+import { h, fill, errorBox, say, confirmAction, when, bytes, newId, num } from '../ui.js';
 import { uploadZone } from './upload.js';
 
 const plural = (n, one, many = `${one}s`) => `${n} ${n === 1 ? one : many}`;
 const statusBadge = (s) => h('span', { class: `badge badge-${s}` }, s);
+
+/** Fields of the diff, as people read them: label, unit and scale of numbers. */
+const DIFF_FIELDS = {
+  mass: ['mass', 'kg', 1],
+  cg_world: ['CG (world)', 'mm', 1000],
+  inertia_cg: ['inertia about the CG', 'kg·m²', 1],
+  axis_world: ['axis (world)', '', 1],
+  cad_name: ['CAD name', '', 1],
+  modelica_name: ['Modelica name', '', 1],
+  node_id: ['node ID', '', 1],
+  primitives: ['primitives', '', 1],
+  base_body: ['base body', '', 1],
+  follower_body: ['follower body', '', 1],
+};
+
+/** One changed field: "mass 0.31752 → 0.5 kg". */
+function fieldChange(f) {
+  const [label, unit, scale] = DIFF_FIELDS[f.field] || [f.field, '', 1];
+  const show = (v) => {
+    if (typeof v === 'number') return num(v * scale);
+    if (Array.isArray(v)) return `(${v.map((x) => (Array.isArray(x) ? show(x) : typeof x === 'number' ? num(x * scale) : String(x))).join(', ')})`;
+    return v === null || v === undefined ? '—' : String(v);
+  };
+  return `${label}: ${show(f.old)} → ${show(f.new)}${unit ? ` ${unit}` : ''}`;
+}
 
 export async function renderModels(main) {
   const list = h('div', { class: 'card' }, h('p', {}, 'Loading…'));
@@ -17,6 +42,7 @@ export async function renderModels(main) {
       url: '/api/models',
       label: 'Upload a new model',
       askName: true,
+      onAccepted: () => load(), // the new model shows up at once, its status followed
       onDone: (created, job) => {
         load();
         if (job.status === 'succeeded') location.hash = `#/models/${enc(created.model_id)}/versions/${created.version}`;
@@ -105,6 +131,7 @@ export async function renderModel(main, id) {
     uploadZone({
       url: `/api/models/${enc(id)}/versions`,
       label: 'Upload a new version (the CAD export after a change)',
+      onAccepted: () => loadVersions(),
       onDone: async (created, job) => {
         const versions = await loadVersions();
         await loadDrives();
@@ -228,7 +255,13 @@ export async function renderModel(main, id) {
         ...c.added.map((i) => h('li', { class: 'added' }, h('strong', {}, 'added '), `${i.modelica_name} (${i.cad_name})`)),
         ...c.removed.map((i) => h('li', { class: 'removed' }, h('strong', {}, 'removed '), `${i.modelica_name} (${i.cad_name})`)),
         ...c.changed.map((i) =>
-          h('li', { class: 'changed' }, h('strong', {}, 'changed '), `${i.modelica_name} (${i.cad_name}): `, i.changes.map((f) => f.field).join(', ')),
+          h(
+            'li',
+            { class: 'changed' },
+            h('strong', {}, 'changed '),
+            `${i.modelica_name} (${i.cad_name})`,
+            h('ul', {}, i.changes.map((f) => h('li', {}, fieldChange(f)))),
+          ),
         ),
       ];
       return [h('h3', {}, title), items.length ? h('ul', { class: 'diff' }, items) : h('p', { class: 'muted' }, 'No change.')];

@@ -1,7 +1,7 @@
 // The bundle drop zone: drag and drop or choose a file, upload with a progress bar, then follow
 // the conversion job until it finishes. Used for new models and for new versions of a model.
 
-import { upload, waitForJob, ApiError } from '../api.js';
+import { upload, waitForJob, describeJob, ApiError } from '../api.js';
 import { h, fill, errorBox, bytes, newId } from '../ui.js';
 
 /**
@@ -9,14 +9,23 @@ import { h, fill, errorBox, bytes, newId } from '../ui.js';
  * @param {string} o.url         POST target (multipart, part `bundle`)
  * @param {string} o.label       what the zone says
  * @param {boolean} [o.askName]  whether to offer a model name field
+ * @param {(created) => void} [o.onAccepted]  called when the service took the bundle (202)
  * @param {(created, job) => void} o.onDone  called after the job finished (either way)
  */
-export function uploadZone({ url, label, askName = false, onDone }) {
+export function uploadZone({ url, label, askName = false, onAccepted, onDone }) {
   const inputId = newId('bundle');
   const input = h('input', { type: 'file', id: inputId, accept: '.zip,application/zip', class: 'visually-hidden' });
   const name = askName ? h('input', { type: 'text', id: newId('name'), placeholder: 'from the bundle' }) : null;
-  const bar = h('progress', { max: 1, value: 0, 'aria-label': 'Upload progress', hidden: true, class: 'upload-progress' });
-  const jobBar = h('progress', { 'aria-label': 'Conversion progress', hidden: true, class: 'job-progress' });
+  const bar = h('progress', { max: 1, value: 0, id: newId('upload'), class: 'upload-progress' });
+  const jobBar = h('progress', { max: 1, id: newId('job'), class: 'job-progress' });
+  const bars = h(
+    'div',
+    { class: 'bars', hidden: true },
+    h('label', { for: bar.id }, 'Upload'),
+    bar,
+    h('label', { for: jobBar.id }, 'Conversion'),
+    jobBar,
+  );
   const state = h('p', { class: 'upload-state', 'aria-live': 'polite' });
   const out = h('div');
   const zone = h(
@@ -35,8 +44,9 @@ export function uploadZone({ url, label, askName = false, onDone }) {
     const form = new FormData();
     form.append('bundle', file, file.name);
     if (name?.value.trim()) form.append('name', name.value.trim());
-    bar.hidden = false;
+    bars.hidden = false;
     bar.value = 0;
+    jobBar.value = 0;
     state.textContent = `Uploading ${file.name} (${bytes(file.size)})…`;
     try {
       const created = await upload(url, form, (f) => {
@@ -44,14 +54,14 @@ export function uploadZone({ url, label, askName = false, onDone }) {
         state.textContent = `Uploading ${file.name}: ${Math.round(f * 100)} %`;
       });
       bar.value = 1;
-      jobBar.hidden = false;
-      jobBar.removeAttribute('value');
+      onAccepted?.(created);
+      jobBar.removeAttribute('value'); // indeterminate until the job reports a stage
       const started = performance.now();
       const job = await waitForJob(created.job_id, (j) => {
         const s = ((performance.now() - started) / 1000).toFixed(1);
-        state.textContent = `Version ${created.version}: conversion ${j.status} (${s} s)`;
+        state.textContent = `Version ${created.version}: ${describeJob(j)} (${s} s)`;
+        if (j.progress) jobBar.value = j.progress.fraction;
       });
-      jobBar.max = 1;
       jobBar.value = 1;
       if (job.status === 'failed') {
         state.textContent = `Version ${created.version}: conversion failed`;
@@ -91,8 +101,7 @@ export function uploadZone({ url, label, askName = false, onDone }) {
     name ? h('div', { class: 'field' }, h('label', { for: name.id }, 'Model name (optional)'), name) : null,
     input,
     zone,
-    bar,
-    jobBar,
+    bars,
     state,
     out,
   );

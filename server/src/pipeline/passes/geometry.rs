@@ -18,11 +18,19 @@ pub enum GeometryError {
 }
 
 /// Fills `Body::mesh` for every body whose STL is in the bundle. `xml_path` is the XML's path in
-/// the bundle (references are resolved from its folder).
-pub fn read_meshes(model: &mut Model, bundle: &Bundle, xml_path: &str) -> Result<Vec<Warning>, GeometryError> {
+/// the bundle (references are resolved from its folder). `done(i, n)` is told after each of the
+/// `n` bodies that name a file.
+pub fn read_meshes(
+    model: &mut Model,
+    bundle: &Bundle,
+    xml_path: &str,
+    done: &mut dyn FnMut(usize, usize),
+) -> Result<Vec<Warning>, GeometryError> {
     let mut warnings = Vec::new();
     let scale = model.length_scale;
-    for body in &mut model.bodies {
+    let total = model.bodies.iter().filter(|b| b.geometry_file.is_some()).count();
+    for (i, body) in model.bodies.iter_mut().filter(|b| b.geometry_file.is_some()).enumerate() {
+        done(i, total);
         let Some(name) = body.geometry_file.clone() else { continue };
         match bundle.resolve(xml_path, &name)? {
             Some(path) => {

@@ -7,6 +7,11 @@ use std::io::Write;
 
 /// Zips `files` (paths relative to the zip root) into memory.
 pub fn write_zip(files: &[(String, Vec<u8>)]) -> Result<Vec<u8>, std::io::Error> {
+    write_zip_observed(files, &mut |_, _| {})
+}
+
+/// [`write_zip`], calling `done(i, n)` before each of the `n` files is deflated.
+pub fn write_zip_observed(files: &[(String, Vec<u8>)], done: &mut dyn FnMut(usize, usize)) -> Result<Vec<u8>, std::io::Error> {
     let mut out = std::io::Cursor::new(Vec::new());
     {
         let mut zip = zip::ZipWriter::new(&mut out);
@@ -14,7 +19,8 @@ pub fn write_zip(files: &[(String, Vec<u8>)]) -> Result<Vec<u8>, std::io::Error>
             .compression_method(zip::CompressionMethod::Deflated)
             .last_modified_time(zip::DateTime::default())
             .large_file(false);
-        for (path, bytes) in files {
+        for (i, (path, bytes)) in files.iter().enumerate() {
+            done(i, files.len());
             zip.start_file(path.as_str(), opts).map_err(std::io::Error::other)?;
             zip.write_all(bytes)?;
         }

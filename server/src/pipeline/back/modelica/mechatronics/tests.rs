@@ -675,3 +675,48 @@ fn default_drive_moves_the_pendulum_to_its_reference() {
     let (s, _, _) = reversed.run(0.0, -0.3, 2.0, &gravity, j_load);
     assert!((s[0] + 0.3).abs() < 1e-4, "reversed gear: {}", s[0]);
 }
+
+/// An observer hears every stage once per conversion, in order, and the drives it chooses from
+/// the report (the joints' Modelica names and start values) are the ones `Mechatronics.mo` gets.
+#[test]
+fn an_observer_sees_the_stages_and_chooses_drives_from_the_report() {
+    use crate::pipeline::observe::{Observer, Stage};
+    struct Watch {
+        steps: Vec<(Stage, usize, usize)>,
+        joints_seen: Vec<String>,
+    }
+    impl Observer for Watch {
+        fn progress(&mut self, stage: Stage, done: usize, total: usize) {
+            self.steps.push((stage, done, total));
+        }
+        fn drives(&mut self, report: &crate::pipeline::report::Report, planned: &[DrivePlan]) -> Vec<DrivePlan> {
+            assert!(planned.is_empty());
+            self.joints_seen = report.joints.iter().map(|j| j.modelica_name.clone()).collect();
+            let j = report.joints.iter().find(|j| j.elements.iter().any(|e| e.kind == crate::pipeline::ir::PrimitiveKind::Revolute)).expect("a revolute");
+            vec![DrivePlan { start: j.elements[0].initial_q, ..plan(&j.modelica_name) }]
+        }
+    }
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/in/arm_subsystems");
+    let bundle = crate::cli::read_bundle(&dir, &Limits::default()).expect("read bundle");
+    let mut w = Watch { steps: Vec::new(), joints_seen: Vec::new() };
+    let opts = crate::pipeline::Options { write_shapes: true, ..Default::default() };
+    let out = crate::pipeline::convert_observed(&bundle, &opts, &mut w).expect("convert");
+    let stages: Vec<Stage> = w.steps.iter().map(|s| s.0).collect();
+    assert!(stages.windows(2).all(|p| p[0] <= p[1]), "stages in order: {stages:?}");
+    assert_eq!(stages.iter().filter(|s| **s == Stage::Xml).count(), 1, "one conversion: {stages:?}");
+    for s in [Stage::Xml, Stage::Meshes, Stage::Analysis, Stage::Modelica, Stage::Shapes, Stage::Report] {
+        assert!(stages.contains(&s), "{s:?} reported: {stages:?}");
+    }
+    let shapes: Vec<_> = w.steps.iter().filter(|s| s.0 == Stage::Shapes).collect();
+    assert_eq!(shapes.len(), out.report.bodies.iter().filter(|b| b.shape.is_some()).count(), "a step per shape");
+    assert!(shapes.iter().enumerate().all(|(i, s)| s.1 == i && s.2 == shapes.len()));
+    assert!(!w.joints_seen.is_empty());
+    let pkg = &out.report.package_name;
+    let mech = text(&out.files, &format!("{pkg}/Mechatronics.mo"));
+    let driven = &w.joints_seen.iter().find(|j| mech.contains(&format!("connect(drive_{j}.flange, {j}.drive);"))).expect("a driven joint");
+    assert!(mech.contains(&format!(" drive_{driven}(")), "{mech}");
+    // The report itself does not depend on the drives.
+    let plain = crate::pipeline::convert(&bundle, &opts).expect("convert");
+    assert_eq!(plain.report.joints.len(), out.report.joints.len());
+    assert_eq!(text(&plain.files, "report.json"), text(&out.files, "report.json"));
+}

@@ -1,0 +1,67 @@
+//! Watching a conversion as it runs: where it is (for progress displays) and, once the report
+//! exists, which drives `Mechatronics.mo` gets (the service decides them from the joints the
+//! report names, so it converts once instead of twice).
+//!
+//! The pipeline still performs no IO: an observer is a plain callback object, and the default
+//! one ([`Quiet`]) does nothing and takes `Options::drives` as they are.
+
+use serde::Serialize;
+
+use super::back::modelica::mechatronics::DrivePlan;
+use super::report::Report;
+
+/// A step of a conversion, in the order they run. Not every conversion passes every stage (no
+/// VRML, no shapes), and a stage may report progress several times (`done` of `total`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Stage {
+    /// The SimMechanics XML (front end).
+    Xml,
+    /// STL meshes named by the XML, one body at a time.
+    Meshes,
+    /// The VRML export and its matching to bodies.
+    Vrml,
+    /// Lumping, hierarchy, kinematics and validation.
+    Analysis,
+    /// The Modelica package text.
+    Modelica,
+    /// DXF and STL shape files, one body at a time.
+    Shapes,
+    /// `report.json`.
+    Report,
+}
+
+impl Stage {
+    pub const ALL: [Stage; 7] =
+        [Stage::Xml, Stage::Meshes, Stage::Vrml, Stage::Analysis, Stage::Modelica, Stage::Shapes, Stage::Report];
+
+    /// What a person reads while the stage runs.
+    pub fn label(self) -> &'static str {
+        match self {
+            Stage::Xml => "Reading the XML",
+            Stage::Meshes => "Reading STL meshes",
+            Stage::Vrml => "Reading and matching VRML",
+            Stage::Analysis => "Analysing joints and loops",
+            Stage::Modelica => "Writing Modelica",
+            Stage::Shapes => "Writing shapes",
+            Stage::Report => "Writing the report",
+        }
+    }
+}
+
+/// Receives a conversion's progress and may choose its drives.
+pub trait Observer {
+    /// `stage` has `done` of `total` units behind it (`total` is at least 1).
+    fn progress(&mut self, _stage: Stage, _done: usize, _total: usize) {}
+
+    /// The drives for `Mechatronics.mo`, decided once the report (joint names, kinds, start
+    /// values) exists. `planned` are `Options::drives`; the default keeps them.
+    fn drives(&mut self, _report: &Report, planned: &[DrivePlan]) -> Vec<DrivePlan> {
+        planned.to_vec()
+    }
+}
+
+/// The observer that watches nothing and keeps the planned drives.
+pub struct Quiet;
+
+impl Observer for Quiet {}
