@@ -97,11 +97,12 @@ pub(super) fn files(pkg: &str) -> Vec<(String, Vec<u8>)> {
         plain("JointDrive.mo", JOINT_DRIVE),
         plain("LinearJointDrive.mo", LINEAR_JOINT_DRIVE),
         plain("Interfaces/package.mo", INTERFACES),
-        plain("Interfaces/package.order", "Motor\nGear\nLinearGear\nController\n"),
+        plain("Interfaces/package.order", "Motor\nGear\nLinearGear\nController\nPartialJointDrive\n"),
         plain("Interfaces/Motor.mo", MOTOR),
         (format!("{dir}/Interfaces/Gear.mo"), fill(GEAR, pkg, &ratio, "")),
         plain("Interfaces/LinearGear.mo", LINEAR_GEAR),
         plain("Interfaces/Controller.mo", CONTROLLER),
+        plain("Interfaces/PartialJointDrive.mo", PARTIAL_JOINT_DRIVE),
         plain("Motors/package.mo", MOTORS),
         plain("Motors/package.order", "DCPermanentMagnet\nMSL_DC_PermanentMagnet\n"),
         class("Motors/DCPermanentMagnet.mo", DC_PERMANENT_MAGNET, "cad2mo.Drives.Motors.DCPermanentMagnet"),
@@ -466,54 +467,71 @@ $PARAMS_HTML
 end CascadePPI;
 "#;
 
-const JOINT_DRIVE: &str = r#"within $P.Components.Drives;
-model JointDrive "Drive of a revolute joint: reference, controller, motor and gear"
-  import SI = Modelica.Units.SI;
-  parameter Boolean useTable = false "= true: the reference angle follows table; = false: it is q_constant"
+const PARTIAL_JOINT_DRIVE: &str = r#"within $P.Components.Drives.Interfaces;
+partial model PartialJointDrive "Reference table, controller, motor and motor sensors of a joint drive"
+  parameter Boolean useTable = false "= true: the reference follows table; = false: it is constant"
     annotation (Evaluate=true, choices(checkBox=true));
-  parameter SI.Angle q_constant = 0 "Constant reference joint angle"
-    annotation (Dialog(enable=not useTable));
-  parameter Real table[:, 2] = [0, 0; 1, 0] "Reference joint angle over time: [time in s, angle in rad; ...]"
+  parameter Real table[:, 2] = [0, 0; 1, 0] "Reference joint coordinate over time: [time in s, value; ...]"
     annotation (Dialog(enable=useTable));
+  parameter Real motorPerJoint "Motor angle per unit of joint coordinate (the gear's ratio or transmission)";
 
   replaceable $P.Components.Drives.Controllers.CascadePPI controller
-    constrainedby $P.Components.Drives.Interfaces.Controller(final ratio=gear.ratio)
+    constrainedby $P.Components.Drives.Interfaces.Controller(final ratio=motorPerJoint)
     "Joint controller: reference and motor angle and speed in, current command out"
     annotation (choicesAllMatching=true, Placement(transformation(extent={{-50,-10},{-30,10}})));
   replaceable $P.Components.Drives.Motors.DCPermanentMagnet motor
     constrainedby $P.Components.Drives.Interfaces.Motor
     "Motor: current command in, shaft torque out"
     annotation (choicesAllMatching=true, Placement(transformation(extent={{-10,-10},{10,10}})));
-  replaceable $P.Components.Drives.Gears.Ideal gear
-    constrainedby $P.Components.Drives.Interfaces.Gear
-    "Gear: ratio = motor speed / joint speed"
-    annotation (choicesAllMatching=true, Placement(transformation(extent={{30,-10},{50,10}})));
-
-  Modelica.Blocks.Sources.Constant constantReference(k=q_constant) if not useTable
-    "Constant reference angle, rad"
-    annotation (Placement(transformation(extent={{-90,10},{-70,30}})));
   Modelica.Blocks.Sources.CombiTimeTable tableReference(
     table=table,
     smoothness=Modelica.Blocks.Types.Smoothness.LinearSegments,
     extrapolation=Modelica.Blocks.Types.Extrapolation.HoldLastPoint) if useTable
-    "Reference angle over time, rad"
+    "Reference joint coordinate over time"
     annotation (Placement(transformation(extent={{-90,-30},{-70,-10}})));
   Modelica.Mechanics.Rotational.Sensors.AngleSensor motorAngle "Motor angle, rad"
     annotation (Placement(transformation(extent={{10,-40},{-10,-20}})));
   Modelica.Mechanics.Rotational.Sensors.SpeedSensor motorSpeed "Motor speed, rad/s"
     annotation (Placement(transformation(extent={{10,-70},{-10,-50}})));
-  Modelica.Mechanics.Rotational.Interfaces.Flange_b flange "Connect to the revolute joint's drive flange"
-    annotation (Placement(transformation(extent={{90,-10},{110,10}})));
 equation
-  connect(constantReference.y, controller.q_ref);
   connect(tableReference.y[1], controller.q_ref);
   connect(controller.i_ref, motor.i_ref);
-  connect(motor.flange, gear.flange_a);
-  connect(gear.flange_b, flange);
   connect(motor.flange, motorAngle.flange);
   connect(motor.flange, motorSpeed.flange);
   connect(motorAngle.phi, controller.phi_motor);
   connect(motorSpeed.w, controller.w_motor);
+  annotation (Documentation(info="<html>
+<p>What the joint drives share: the reference (a constant, declared with its unit by the
+extending drive, or with <code>useTable=true</code> the table <code>table</code> = [time in s,
+value; ...], linear interpolation, last value held), the controller, the motor and the sensors on
+the motor shaft. The extending drive adds the gear, the flange to the joint and the constant
+reference, and sets <code>motorPerJoint</code> (motor angle per unit of joint coordinate) from its
+gear, so the controller works in motor radians and drives the joint coordinate to the reference.
+Replace <code>motor</code> and <code>controller</code> by any class extending
+<code>Interfaces.Motor</code> and <code>Interfaces.Controller</code>.</p>
+</html>"));
+end PartialJointDrive;
+"#;
+
+const JOINT_DRIVE: &str = r#"within $P.Components.Drives;
+model JointDrive "Drive of a revolute joint: reference, controller, motor and gear"
+  import SI = Modelica.Units.SI;
+  extends $P.Components.Drives.Interfaces.PartialJointDrive(final motorPerJoint=gear.ratio);
+  parameter SI.Angle q_constant = 0 "Constant reference joint angle"
+    annotation (Dialog(enable=not useTable));
+  replaceable $P.Components.Drives.Gears.Ideal gear
+    constrainedby $P.Components.Drives.Interfaces.Gear
+    "Gear: ratio = motor speed / joint speed"
+    annotation (choicesAllMatching=true, Placement(transformation(extent={{30,-10},{50,10}})));
+  Modelica.Blocks.Sources.Constant constantReference(k=q_constant) if not useTable
+    "Constant reference angle, rad"
+    annotation (Placement(transformation(extent={{-90,10},{-70,30}})));
+  Modelica.Mechanics.Rotational.Interfaces.Flange_b flange "Connect to the revolute joint's drive flange"
+    annotation (Placement(transformation(extent={{90,-10},{110,10}})));
+equation
+  connect(constantReference.y, controller.q_ref);
+  connect(motor.flange, gear.flange_a);
+  connect(gear.flange_b, flange);
   annotation ($ICON, Documentation(info="<html>
 <p>Drives a revolute joint: connect <code>flange</code> to the joint's <code>drive</code> flange.
 The reference joint angle (rad, the joint's own <code>phi</code>, which includes the CAD offset)
@@ -532,51 +550,22 @@ end JointDrive;
 const LINEAR_JOINT_DRIVE: &str = r#"within $P.Components.Drives;
 model LinearJointDrive "Drive of a prismatic joint: reference, controller, motor and screw"
   import SI = Modelica.Units.SI;
-  parameter Boolean useTable = false "= true: the reference position follows table; = false: it is q_constant"
-    annotation (Evaluate=true, choices(checkBox=true));
+  extends $P.Components.Drives.Interfaces.PartialJointDrive(final motorPerJoint=gear.transmission);
   parameter SI.Position q_constant = 0 "Constant reference joint position"
     annotation (Dialog(enable=not useTable));
-  parameter Real table[:, 2] = [0, 0; 1, 0] "Reference joint position over time: [time in s, position in m; ...]"
-    annotation (Dialog(enable=useTable));
-
-  replaceable $P.Components.Drives.Controllers.CascadePPI controller
-    constrainedby $P.Components.Drives.Interfaces.Controller(final ratio=gear.transmission)
-    "Joint controller: reference and motor angle and speed in, current command out"
-    annotation (choicesAllMatching=true, Placement(transformation(extent={{-50,-10},{-30,10}})));
-  replaceable $P.Components.Drives.Motors.DCPermanentMagnet motor
-    constrainedby $P.Components.Drives.Interfaces.Motor
-    "Motor: current command in, shaft torque out"
-    annotation (choicesAllMatching=true, Placement(transformation(extent={{-10,-10},{10,10}})));
   replaceable $P.Components.Drives.Gears.LeadScrew gear
     constrainedby $P.Components.Drives.Interfaces.LinearGear
     "Gearbox and screw: transmission = motor angle / joint displacement, rad/m"
     annotation (choicesAllMatching=true, Placement(transformation(extent={{30,-10},{50,10}})));
-
   Modelica.Blocks.Sources.Constant constantReference(k=q_constant) if not useTable
     "Constant reference position, m"
     annotation (Placement(transformation(extent={{-90,10},{-70,30}})));
-  Modelica.Blocks.Sources.CombiTimeTable tableReference(
-    table=table,
-    smoothness=Modelica.Blocks.Types.Smoothness.LinearSegments,
-    extrapolation=Modelica.Blocks.Types.Extrapolation.HoldLastPoint) if useTable
-    "Reference position over time, m"
-    annotation (Placement(transformation(extent={{-90,-30},{-70,-10}})));
-  Modelica.Mechanics.Rotational.Sensors.AngleSensor motorAngle "Motor angle, rad"
-    annotation (Placement(transformation(extent={{10,-40},{-10,-20}})));
-  Modelica.Mechanics.Rotational.Sensors.SpeedSensor motorSpeed "Motor speed, rad/s"
-    annotation (Placement(transformation(extent={{10,-70},{-10,-50}})));
   Modelica.Mechanics.Translational.Interfaces.Flange_b flange "Connect to the prismatic joint's drive flange"
     annotation (Placement(transformation(extent={{90,-10},{110,10}})));
 equation
   connect(constantReference.y, controller.q_ref);
-  connect(tableReference.y[1], controller.q_ref);
-  connect(controller.i_ref, motor.i_ref);
   connect(motor.flange, gear.flange_a);
   connect(gear.flange_b, flange);
-  connect(motor.flange, motorAngle.flange);
-  connect(motor.flange, motorSpeed.flange);
-  connect(motorAngle.phi, controller.phi_motor);
-  connect(motorSpeed.w, controller.w_motor);
   annotation ($ICON, Documentation(info="<html>
 <p>Drives a prismatic joint: connect <code>flange</code> to the joint's <code>drive</code> flange.
 The reference joint position (m, the joint's own <code>s</code>, which includes the CAD offset) is

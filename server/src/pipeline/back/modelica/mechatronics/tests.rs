@@ -720,3 +720,45 @@ fn an_observer_sees_the_stages_and_chooses_drives_from_the_report() {
     assert_eq!(plain.report.joints.len(), out.report.joints.len());
     assert_eq!(text(&plain.files, "report.json"), text(&out.files, "report.json"));
 }
+
+/// msl-check knows the MSL, not our own classes: every modifier of an `extends` of one of the
+/// drive library's classes must name a parameter that class (or what it extends) declares.
+#[test]
+fn extends_modifiers_name_declared_parameters() {
+    let files = components("P");
+    let class_text = |path: &str| -> String {
+        let rel = path.trim_start_matches("P.").replace('.', "/");
+        text(&files, &format!("P/{rel}.mo"))
+    };
+    // Parameters declared by a class and the classes it extends.
+    fn declared(text: &str, class_text: &dyn Fn(&str) -> String, out: &mut Vec<String>) {
+        for line in text.lines().map(str::trim) {
+            if let Some(rest) = line.strip_prefix("parameter ") {
+                let words: Vec<&str> = rest.split(|c: char| c.is_whitespace() || "[=(;".contains(c)).filter(|w| !w.is_empty()).collect();
+                if let Some(name) = words.get(1) {
+                    out.push(name.to_string());
+                }
+            }
+            if let Some(base) = line.strip_prefix("extends P.") {
+                let base = base.split(['(', ';']).next().unwrap_or_default();
+                declared(&class_text(&format!("P.{base}")), class_text, out);
+            }
+        }
+    }
+    let mut checked = 0;
+    for (path, bytes) in files.iter().filter(|(p, _)| p.ends_with(".mo")) {
+        let t = String::from_utf8_lossy(bytes);
+        for line in t.lines().map(str::trim).filter(|l| l.starts_with("extends P.") && l.contains('(')) {
+            let base = &line["extends ".len()..line.find('(').expect("(")];
+            let mods = &line[line.find('(').expect("(") + 1..line.rfind(')').expect(")")];
+            let mut names = Vec::new();
+            declared(&class_text(base), &class_text, &mut names);
+            for m in mods.split(',') {
+                let name = m.trim().trim_start_matches("final ").split('=').next().unwrap_or_default().trim();
+                assert!(names.iter().any(|n| n == name), "{path}: {base} declares no parameter {name} (it has {names:?})");
+                checked += 1;
+            }
+        }
+    }
+    assert!(checked >= 3, "checked {checked} modifiers");
+}
