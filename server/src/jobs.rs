@@ -71,7 +71,8 @@ pub struct JobProgress {
     pub fraction: f64,
 }
 
-/// The stages of a job, with their weights in the overall fraction (they add up to 100).
+/// The stages of a job in order: the conversion's ([`Stage::ALL`], row `Stage::X as usize`),
+/// then zipping and storing; with their weights in the overall fraction (they add up to 100).
 const STAGES: [(&str, &str, f64); 9] = [
     ("xml", "Reading the XML", 5.0),
     ("meshes", "Reading STL meshes", 20.0),
@@ -83,13 +84,15 @@ const STAGES: [(&str, &str, f64); 9] = [
     ("package", "Zipping the package", 12.0),
     ("storing", "Storing the package", 3.0),
 ];
+const PACKAGE: usize = Stage::ALL.len();
+const STORING: usize = PACKAGE + 1;
 
 impl JobProgress {
     /// The progress of a job at `step`.
     pub fn at(step: BuildStep) -> JobProgress {
         let index = match step.stage {
-            BuildStage::Convert(s) => Stage::ALL.iter().position(|x| *x == s).unwrap_or(0),
-            BuildStage::Package => 7,
+            BuildStage::Convert(s) => s as usize,
+            BuildStage::Package => PACKAGE,
         };
         Self::of(index, step.done, step.total)
     }
@@ -102,7 +105,7 @@ impl JobProgress {
     }
 
     fn storing() -> JobProgress {
-        Self::of(STAGES.len() - 1, 0, 1)
+        Self::of(STORING, 0, 1)
     }
 }
 
@@ -111,19 +114,21 @@ impl JobProgress {
 pub struct ProgressBoard(Arc<Mutex<HashMap<String, JobProgress>>>);
 
 impl ProgressBoard {
+    /// The map; a panic elsewhere while it was locked leaves plain data, still usable.
+    fn map(&self) -> std::sync::MutexGuard<'_, HashMap<String, JobProgress>> {
+        self.0.lock().unwrap_or_else(|poisoned| poisoned.into_inner())
+    }
+
     fn set(&self, job: &str, p: JobProgress) {
-        let mut map = self.0.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
-        map.insert(job.to_string(), p);
+        self.map().insert(job.to_string(), p);
     }
 
     fn clear(&self, job: &str) {
-        let mut map = self.0.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
-        map.remove(job);
+        self.map().remove(job);
     }
 
     fn get(&self, job: &str) -> Option<JobProgress> {
-        let map = self.0.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
-        map.get(job).cloned()
+        self.map().get(job).cloned()
     }
 }
 
@@ -298,4 +303,28 @@ async fn convert(ctx: &Ctx, job: &ClaimedJob) -> Result<Stored, ApiError> {
         })
     });
     task.await.map_err(|e| ApiError::Internal(anyhow::anyhow!("the conversion panicked: {e}")))?
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn stage_table_follows_the_pipeline_stages() {
+        for s in Stage::ALL {
+            assert_eq!(STAGES[s as usize].0, format!("{s:?}").to_lowercase(), "row of {s:?}");
+        }
+        assert_eq!((STAGES[PACKAGE].0, STAGES[STORING].0), ("package", "storing"));
+        assert_eq!(STAGES.iter().map(|s| s.2).sum::<f64>(), 100.0);
+        // Each step's fraction is at least the one before, through every stage and within it.
+        let mut steps: Vec<BuildStep> = Stage::ALL
+            .iter()
+            .flat_map(|&s| (0..=3).map(move |done| BuildStep { stage: BuildStage::Convert(s), done, total: 3 }))
+            .collect();
+        steps.extend((0..=2).map(|done| BuildStep { stage: BuildStage::Package, done, total: 2 }));
+        let mut fractions: Vec<f64> = steps.into_iter().map(|s| JobProgress::at(s).fraction).collect();
+        fractions.push(JobProgress::storing().fraction);
+        assert!(fractions.windows(2).all(|w| w[0] <= w[1]), "{fractions:?}");
+        assert_eq!((fractions[0], JobProgress::storing().fraction), (0.0, 0.97));
+    }
 }

@@ -5,15 +5,12 @@
 //! The pipeline still performs no IO: an observer is a plain callback object, and the default
 //! one ([`Quiet`]) does nothing and takes `Options::drives` as they are.
 
-use serde::Serialize;
-
 use super::back::modelica::mechatronics::DrivePlan;
 use super::report::Report;
 
 /// A step of a conversion, in the order they run. Not every conversion passes every stage (no
 /// VRML, no shapes), and a stage may report progress several times (`done` of `total`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
-#[serde(rename_all = "snake_case")]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Stage {
     /// The SimMechanics XML (front end).
     Xml,
@@ -32,21 +29,9 @@ pub enum Stage {
 }
 
 impl Stage {
+    /// Every stage, in the order they run (`Stage::X as usize` is its place here).
     pub const ALL: [Stage; 7] =
         [Stage::Xml, Stage::Meshes, Stage::Vrml, Stage::Analysis, Stage::Modelica, Stage::Shapes, Stage::Report];
-
-    /// What a person reads while the stage runs.
-    pub fn label(self) -> &'static str {
-        match self {
-            Stage::Xml => "Reading the XML",
-            Stage::Meshes => "Reading STL meshes",
-            Stage::Vrml => "Reading and matching VRML",
-            Stage::Analysis => "Analysing joints and loops",
-            Stage::Modelica => "Writing Modelica",
-            Stage::Shapes => "Writing shapes",
-            Stage::Report => "Writing the report",
-        }
-    }
 }
 
 /// Receives a conversion's progress and may choose its drives.
