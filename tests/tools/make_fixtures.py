@@ -1026,6 +1026,153 @@ def case_warnings():
 # -- broken inputs: a small valid model, then one flaw each -----------------------------------
 
 
+# -- Closed loops: cut forms chosen by rank ------------------------------------------------------
+
+
+def link(m, asm, name, node, P, Q, up=(0.0, 0.0, 1.0), density=DENSITY_AL, mat=GREY):
+    """A bar from P to Q: CS1 at P with x along the bar and z as close to `up` as it can be."""
+    x = unit(sub(Q, P))
+    up = up if abs(dot(unit(up), x)) < 0.99 else perpendicular(x)
+    z = unit(sub(up, mul(dot(up, x), x)))
+    R = from_cols(x, cross(z, x), z)
+    lo, hi = link_box(P, R, [P, Q], 8.0, 8.0, 4.0, 1.0)
+    return m.part(asm, name, node, P, R, lo, hi, density=density, mesh_path=name + "_prt.stl", material=mat)
+
+
+def circles(P, r1, Q, r2, upper=True):
+    """The intersection of circle(P, r1) and circle(Q, r2) in the z = 0 plane."""
+    d = sub(Q, P)
+    dist = norm(d)
+    a = (r1 ** 2 - r2 ** 2 + dist ** 2) / (2 * dist)
+    h = math.sqrt(r1 ** 2 - a ** 2)
+    ex = unit(d)
+    ey = (-ex[1], ex[0], 0.0)
+    c1 = add(add(P, mul(a, ex)), mul(h, ey))
+    c2 = sub(add(P, mul(a, ex)), mul(h, ey))
+    return c1 if (c1[1] >= c2[1]) == upper else c2
+
+
+def rounded(R):
+    """R with every entry printed to 6 significant digits, as the exports print them."""
+    return tuple(tuple(float(g6(v)) for v in row) for row in R)
+
+
+def case_slider_crank():
+    m = Model("SLIDERCRANK", container="SimMechanics", link="4.0",
+              created_from="Pro/E Wildfire Creo 2.0 - 2012360")
+    top = m.top
+    A = (0.0, 0.0, 0.0)
+    B = (40.0 * math.cos(math.radians(50)), 40.0 * math.sin(math.radians(50)), 0.0)
+    # C on the x axis at distance 120 from B.
+    C = (B[0] + math.sqrt(120.0 ** 2 - B[1] ** 2), 0.0, 0.0)
+    rp = m.root_part(top, (0.0, 0.0, 0.0))
+    crank = link(m, top, "CRANK", "40", A, B, mat=BLUE)
+    rod = link(m, top, "ROD", "41", B, C)
+    piston = m.part(top, "PISTON", "42", C, I3, (-15.0, -10.0, -10.0), (15.0, 10.0, 10.0),
+                    density=DENSITY_STEEL, mesh_path="PISTON_prt.stl", material=ORANGE)
+    m.joint(top, rp, crank, A, I3, prims=(("revolute", (0, 0, 1)),))
+    m.joint(top, crank, rod, B, I3, prims=(("revolute", (0, 0, 1)),))
+    m.joint(top, rod, piston, C, I3, prims=(("revolute", (0, 0, 1)),))
+    # The cylinder: the piston slides along world x; this joint's nodeID sorts last, so the
+    # spanning tree would close the loop at the prismatic.
+    j = m.joint(top, piston, rp, C, I3, fol_pos=(0.0, 0.0, 0.0), prims=(("prismatic", (1, 0, 0)),))
+    j.initial = [-C[0]]
+    m.ground(rp, (0.0, 0.0, 0.0))
+    return m, {"expected_cut": {"cut": "revolute-planar-loop-constraint", "kind": "planar"}}, None, "SLIDERCRANK.xml"
+
+
+def case_sixbar_6digit():
+    m = Model("SIXBAR", container="SimMechanics", link="4.0",
+              created_from="Pro/E Wildfire Creo 2.0 - 2012360")
+    top = m.top
+    A, D, G = (0.0, 0.0, 0.0), (200.0, 0.0, 0.0), (380.0, 40.0, 0.0)
+    B = (60.0 * math.cos(math.radians(75)), 60.0 * math.sin(math.radians(75)), 0.0)
+    C = circles(B, 190.0, D, 140.0)
+    # E on the ternary coupler, beyond C.
+    E = add(C, mul(60.0, unit(sub(C, B))))
+    F = circles(E, 150.0, G, 120.0)
+    rp = m.root_part(top, (0.0, 0.0, 0.0))
+    crank = link(m, top, "CRANK", "50", A, B, mat=BLUE)
+    coupler = link(m, top, "COUPLER", "51", B, E)
+    rocker = link(m, top, "ROCKER", "52", D, C, mat=ORANGE)
+    link5 = link(m, top, "LINK5", "53", E, F)
+    link6 = link(m, top, "LINK6", "54", G, F, mat=ORANGE)
+    # Axes printed with 6 significant digits: parallel to about 4e-6 rad, not to 1e-6.
+    noise = [(0.0, 0.0), (3e-06, -1e-06), (-2e-06, 2.5e-06), (1.5e-06, 3e-06), (-3.5e-06, 0.0),
+             (2e-06, -2e-06), (0.0, 4e-06)]
+    axes = [tuple(float(g6(v)) for v in unit((nx, ny, 1.0))) for nx, ny in noise]
+    pairs = [(rp, crank, A), (crank, coupler, B), (coupler, rocker, C), (rocker, rp, D),
+             (coupler, link5, E), (link5, link6, F), (link6, rp, G)]
+    for (a, b, P), axis in zip(pairs, axes):
+        m.joint(top, a, b, P, I3, prims=(("revolute", axis),))
+    m.ground(rp, (0.0, 0.0, 0.0))
+    return m, {"expected_cut": {"cut": "revolute-planar-loop-constraint", "kind": "planar"}}, None, "SIXBAR.xml"
+
+
+def case_crank_rocker_noise():
+    m = Model("CRANKROCKER", container="SimscapeMultibody", link="5.0")
+    top = m.top
+    A, D = (0.0, 0.0, 0.0), (250.0, 30.0, 0.0)
+    B = (50.0 * math.cos(math.radians(110)), 50.0 * math.sin(math.radians(110)), 0.0)
+    C = circles(B, 220.0, D, 160.0)
+    rp = m.root_part(top, (0.0, 0.0, 0.0))
+    crank = link(m, top, "CRANK", "60", A, B, mat=BLUE)
+    coupler = link(m, top, "COUPLER", "61", B, C)
+    rocker = link(m, top, "ROCKER", "62", D, C, mat=ORANGE)
+    # Joint frames turned with their links and printed to 6 digits (off orthonormal by ~1e-6),
+    # axes with 1e-10 noise: the emitted axes must still be parallel to well below 1e-10.
+    def fr(P, Q):
+        return rounded(Rz(math.degrees(math.atan2(Q[1] - P[1], Q[0] - P[0]))))
+    axes = [(1e-10, 0.0, 1.0), (0.0, -1e-10, 1.0), (1e-10, 1e-10, 1.0), (0.0, 0.0, -1.0)]
+    m.joint(top, rp, crank, A, fr(A, B), prims=(("revolute", axes[0]),))
+    m.joint(top, crank, coupler, B, fr(A, B), fol_R=fr(B, C), prims=(("revolute", axes[1]),))
+    m.joint(top, coupler, rocker, C, fr(B, C), fol_R=fr(D, C), prims=(("revolute", axes[2]),))
+    m.joint(top, rocker, rp, D, fr(D, C), fol_R=I3, prims=(("revolute", axes[3]),))
+    m.ground(rp, (0.0, 0.0, 0.0))
+    return m, {"expected_cut": {"cut": "revolute-planar-loop-constraint", "kind": "planar"}}, None, "CRANKROCKER.xml"
+
+
+def case_spatial_rssr():
+    m = Model("RSSR", container="SimscapeMultibody", link="5.0")
+    top = m.top
+    A = (0.0, 0.0, 0.0)
+    B = (50.0 * math.cos(math.radians(30)), 50.0 * math.sin(math.radians(30)), 0.0)
+    D = (200.0, 0.0, 80.0)
+    phi = math.radians(200)
+    C = add(D, (0.0, 100.0 * math.cos(phi), 100.0 * math.sin(phi)))
+    rp = m.root_part(top, (0.0, 0.0, 0.0))
+    crank = link(m, top, "CRANK", "70", A, B, mat=BLUE)
+    coupler = link(m, top, "COUPLER", "71", B, C, up=(0.0, 1.0, 0.0))
+    rocker = link(m, top, "ROCKER", "72", D, C, up=(1.0, 0.0, 0.0), mat=ORANGE)
+    m.joint(top, rp, crank, A, I3, prims=(("revolute", (0, 0, 1)),))
+    m.joint(top, crank, coupler, B, I3, prims=(("spherical", None),))
+    m.joint(top, coupler, rocker, C, I3, prims=(("spherical", None),))
+    m.joint(top, rp, rocker, D, I3, prims=(("revolute", (1, 0, 0)),))
+    m.ground(rp, (0.0, 0.0, 0.0))
+    return m, {"expected_cut": {"kind": "spatial", "mobility": 2}}, None, "RSSR.xml"
+
+
+def case_immobile_leg():
+    m = Model("LEG", container="SimMechanics", link="4.0",
+              created_from="Pro/E Wildfire Creo 2.0 - 2012360")
+    top = m.top
+    P = [(0.0, 0.0, 0.0), (0.0, 0.0, -100.0), (20.0, 10.0, -300.0), (30.0, 40.0, -500.0)]
+    rp = m.root_part(top, (0.0, 0.0, -250.0))
+    hip = link(m, top, "HIP", "80", P[0], P[1], up=(1.0, 0.0, 0.0), mat=BLUE)
+    thigh = link(m, top, "THIGH", "81", P[1], P[2], up=(1.0, 0.0, 0.0))
+    shank = link(m, top, "SHANK", "82", P[2], P[3], up=(1.0, 0.0, 0.0), mat=ORANGE)
+    # Welded to its root at hip and ankle, like LEGS_MECHANISM's left leg: four revolutes on
+    # generic axes form a loop that cannot move (rank 4 of 4), so 2 of a plain revolute's 5
+    # equations are redundant.
+    axes = [(0.0, 0.0, 1.0), (1.0, 0.0, 0.0), unit((0.0, 1.0, 0.2)), unit((1.0, 1.0, 1.0))]
+    m.joint(top, rp, hip, P[0], I3, prims=(("revolute", axes[0]),))
+    m.joint(top, hip, thigh, P[1], I3, prims=(("revolute", axes[1]),))
+    m.joint(top, thigh, shank, P[2], I3, prims=(("revolute", axes[2]),))
+    m.joint(top, shank, rp, P[3], I3, prims=(("revolute", axes[3]),))
+    m.ground(rp, (0.0, 0.0, 0.0))
+    return m, {"expected_cut": {"cut": "constraint-spherical", "kind": "spatial", "mobility": 0}}, None, "LEG.xml"
+
+
 def small_model(name="BROKEN", mesh_name="ARM_prt.stl"):
     m = Model(name, container="SimscapeMultibody", link="4.8")
     top = m.top
@@ -1105,6 +1252,11 @@ CASES = [
     ("composite_joint", case_composite_joint),
     ("lump_welds", case_lump_welds),
     ("warnings", case_warnings),
+    ("slider_crank", case_slider_crank),
+    ("sixbar_6digit", case_sixbar_6digit),
+    ("crank_rocker_noise", case_crank_rocker_noise),
+    ("spatial_rssr", case_spatial_rssr),
+    ("immobile_leg", case_immobile_leg),
     ("broken_dangling_ref", case_broken_dangling_ref),
     ("broken_unknown_unit", case_broken_unknown_unit),
     ("broken_truncated", case_broken_truncated),
@@ -1123,6 +1275,11 @@ README_TEXT = {
     "composite_joint": "Joints with several primitives. `BASE--CROSS` is a universal joint: two revolute primitives, world z then world y, with coincident frames. `CROSS--FLOAT` is a 6-DoF free joint written the way ergoCub exports do it: prismatic x, y, z then a spherical (dummy axis), with the follower frame (10, -20, 30) mm from the base frame and the same orientation, so the initial prismatic values are 10, -20 and 30 mm. `BASE` is welded to `UJ/RootPart`. Mixed ASCII and binary meshes, one in a sub-folder.",
     "lump_welds": "An arm `UPPER_A` -weld- `UPPER_B` between two revolutes about world x (RootPart--UPPER_A and UPPER_B--FORE). The weld frames coincide but the two parts' CS1 frames differ in origin and orientation (UPPER_B's is turned 90 deg about its x axis), and the parts differ in material (aluminium, steel), so lumping must combine mass, CG and inertia with the parallel-axis theorem. `options.json` asks for `lump_welds`, the package name `LumpedArm` and gravity (0, 0, -9.81). `expect.json` has the lumped body's mass, CG and inertia (about the combined CG, world axes) under `lumped`.",
     "warnings": "Converts, but trips every check once, each on its own body or joint (listed in `expect.json` under `expected_warnings`): `NOMAT` has mass 12.5 kg and volume 12.5 mm^3 (mass == volume numerically, density 1e9 kg/m^3); `ASYM`'s inertia is not symmetric; `TRI`'s principal moments violate the triangle inequality; the revolute `ASYM--TRI` has its base and follower frames 2 mm apart; the revolute `TRI--GHOST` has axis `0,0,0`; `GHOST` names `GHOST_prt.stl`, which is not in the bundle; `BARE` has no geometry (`geometryFileName \"\"`).",
+    "slider_crank": "A planar slider-crank (engine cylinder, the case MSL's `PlanarLoops` tutorial names): crank, connecting rod and piston joined by three revolutes about world z, the piston sliding along world x in the plane of motion. The prismatic joint's nodeID sorts last, so a spanning tree by node ID closes the loop at the prismatic; the loop is planar (rank 3), so a plain closing joint would repeat 3 of its equations: the cut must move to a revolute and become `RevolutePlanarLoopConstraint`.",
+    "sixbar_6digit": "A planar Watt six-bar (two independent loops sharing the ternary coupler) whose seven revolute axes are written with 6 significant digits, parallel only to about 4e-6 rad: still planar at the data's precision, so both loops take `RevolutePlanarLoopConstraint` and every emitted axis is the loops' common normal.",
+    "crank_rocker_noise": "A crank-rocker four-bar whose joint frames turn with their links and are printed to 6 significant digits (orthonormal only to ~1e-6), with 1e-10 noise in the axes and one axis antiparallel: the emitted revolute axes must be parallel to well within MSL's 1e-10.",
+    "spatial_rssr": "A spatial RSSR four-bar: crank revolute about world z, coupler with a spherical joint at each end, rocker revolute about world x on a pivot off the crank's plane. Genuinely spatial and mobile: 8 coordinates, rank 6, mobility 2 (the output and the coupler's spin about its own line); no equation of the closing joint is redundant.",
+    "immobile_leg": "A leg welded to its root at hip and ankle, like the real `LEGS_MECHANISM.xml`: four revolutes on generic axes form a loop that cannot move (rank 4 of 4 coordinates, mobility 0). A plain closing revolute would impose 5 equations of which 3 are independent; the cut is `Joints.Constraints.Spherical`.",
     "broken_dangling_ref": "The revolute's follower `<Frame ref=\"9999\">` names a ref that no frame has. Conversion must fail and say which ref.",
     "broken_unknown_unit": "A frame with `positionUnits \"furlong\"`. Conversion must fail naming the unknown unit.",
     "broken_truncated": "The XML is cut off in the middle of a `<position>` element (no closing tags). Conversion must fail; the message is expected to say the file is truncated.",

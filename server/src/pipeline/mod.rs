@@ -136,6 +136,8 @@ pub struct Analysed {
     pub validated: Validated,
     /// Per lumped body, the node IDs merged into it.
     pub merged: std::collections::BTreeMap<String, Vec<String>>,
+    /// Welds absorbed by lumping (reported with the body they went into).
+    pub absorbed: Vec<passes::lump::Absorbed>,
     /// Front-end, geometry and validation warnings, in that order.
     pub warnings: Vec<Warning>,
     /// How VRML geometry was matched, when the bundle had VRML.
@@ -170,17 +172,20 @@ pub fn analyse_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
     let vrml = match_vrml(&mut model, bundle, opts, &mut warnings, obs)?;
     obs.progress(Stage::Analysis, 0, 1);
     let mut merged = Default::default();
+    let mut absorbed = Vec::new();
     if opts.lump_welds {
         let h = passes::hierarchy::build(&model);
         let lumped = passes::lump::lump(&model, &h);
         model = lumped.model;
         merged = lumped.merged;
+        absorbed = lumped.absorbed;
     }
-    let hierarchy = passes::hierarchy::build(&model);
-    let chains = model.joints.iter().map(|j| passes::kinematics::chain(&model, j)).collect();
-    let validated = valid::validate(&model, Analysis { hierarchy, chains })?;
+    let planned = passes::loops::plan(&model);
+    warnings.extend(planned.warnings);
+    let analysis = Analysis { hierarchy: planned.hierarchy, chains: planned.chains, loops: planned.loops };
+    let validated = valid::validate(&model, analysis)?;
     warnings.extend(validated.warnings.iter().cloned());
-    Ok(Analysed { model, validated, merged, warnings, vrml })
+    Ok(Analysed { model, validated, merged, absorbed, warnings, vrml })
 }
 
 /// The names an earlier version's `report.json` gave its bodies and joints, by node ID.
@@ -191,6 +196,7 @@ pub fn name_hints(report: &serde_json::Value) -> back::modelica::Hints {
             .into_iter()
             .flatten()
             .filter_map(|e| Some((e["node_id"].as_str()?.to_string(), e["modelica_name"].as_str()?.to_string())))
+            .filter(|(_, name): &(String, String)| !name.is_empty())
             .collect()
     };
     back::modelica::Hints { bodies: collect("bodies"), joints: collect("joints") }
@@ -263,6 +269,7 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
         package_name: &package_name,
         options: report::ReportOptions { lump_welds: opts.lump_welds, gravity: opts.gravity },
         merged: &a.merged,
+        absorbed: &a.absorbed,
         vrml: a.vrml.as_ref(),
         warnings: a.warnings,
         version: VERSION,

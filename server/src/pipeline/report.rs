@@ -9,6 +9,8 @@ use serde::Serialize;
 use crate::pipeline::back::modelica::Layout;
 use crate::pipeline::ir::{Model, PrimitiveKind, SourceInfo, Warning};
 use crate::pipeline::passes::hierarchy::{LoopKind, Node};
+use crate::pipeline::passes::loops::Cut;
+use crate::pipeline::passes::lump::Absorbed;
 use crate::pipeline::passes::{hierarchy, kinematics};
 use crate::pipeline::valid::Validated;
 
@@ -115,13 +117,39 @@ pub struct JointReport {
     pub in_loop: bool,
     /// Whether the joint's coordinates are fixed at their start values in the model.
     pub start_fixed: bool,
+    /// With `lump_welds`: the Modelica name of the body a weld was absorbed into (the weld itself
+    /// has no component then, and `emitted_as` is `lumped`).
+    pub lumped_into: Option<String>,
 }
 
 #[derive(Serialize, Debug, Clone)]
 pub struct LoopReport {
     pub closing_joint: String,
+    /// Every joint of the loop, the closing joint first.
     pub joints: Vec<String>,
+    /// `planar`, `spatial` or `rigid` (welds only).
     pub kind: &'static str,
+    /// Joint coordinates of the loop's joints.
+    pub coordinates: usize,
+    /// Numerical rank of the loop's joint twists at the CAD pose (singular values above 1e-4,
+    /// lengths scaled by the loops' size).
+    pub rank: usize,
+    /// `coordinates - rank`.
+    pub mobility: usize,
+    /// Equations the closing joint would impose if emitted plainly.
+    pub closing_equations: usize,
+    /// Of those, the ones independent of the tree and of earlier loops.
+    pub independent_equations: usize,
+    /// `closing_equations - independent_equations`: what a plain closing joint would repeat.
+    pub redundant_equations: usize,
+    /// Redundant equations left in the emitted model (non-zero only with a `loop-redundant`
+    /// warning).
+    pub redundant_emitted: usize,
+    /// The common unit normal of a planar loop.
+    pub planar_normal: Option<[f64; 3]>,
+    /// How the closing joint was emitted (the joint's `emitted_as`).
+    pub cut: String,
+    pub why: String,
 }
 
 fn frame_report(model: &Model, layout: &Layout, f: crate::pipeline::ir::FrameId) -> FrameReport {
@@ -151,13 +179,15 @@ pub struct ReportInput<'a> {
     pub package_name: &'a str,
     pub options: ReportOptions,
     pub merged: &'a std::collections::BTreeMap<String, Vec<String>>,
+    /// Welds absorbed by lumping.
+    pub absorbed: &'a [Absorbed],
     pub vrml: Option<&'a crate::pipeline::passes::geometry_match::MatchReport>,
     pub warnings: Vec<Warning>,
     pub version: &'a str,
 }
 
 pub fn build(input: ReportInput) -> Report {
-    let ReportInput { model, validated, layout, package_name, options, merged, vrml, warnings, version } = input;
+    let ReportInput { model, validated, layout, package_name, options, merged, absorbed, vrml, warnings, version } = input;
     let names = layout.names.as_ref();
     let body_name = |i: usize| names.map(|n| n.bodies[i].clone()).unwrap_or_default();
     let node_name = |n: Node| match n {
@@ -228,22 +258,53 @@ pub fn build(input: ReportInput) -> Report {
                 emitted_as: layout.emitted_as[j].to_string(),
                 in_tree: h.tree.iter().any(|t| t.index() == j),
                 in_loop: h.in_loop[j],
-                start_fixed: h.start_fixed[j],
+                start_fixed: if chain.elements.is_empty() { !h.in_loop[j] } else { chain.elements.iter().all(|e| e.fixed) },
+                lumped_into: None,
             }
         })
+        .chain(absorbed.iter().map(|a| {
+            let body = model.bodies.iter().position(|b| b.node_id == a.body).map(&body_name).unwrap_or_default();
+            JointReport {
+                cad_name: a.cad_name.clone(),
+                node_id: a.node_id.clone(),
+                modelica_name: String::new(),
+                primitives: vec![PrimitiveKind::Weld],
+                base_body: body.clone(),
+                follower_body: body.clone(),
+                axis_world: None,
+                initial_q: Vec::new(),
+                elements: Vec::new(),
+                emitted_as: "lumped".to_string(),
+                in_tree: false,
+                in_loop: false,
+                start_fixed: true,
+                lumped_into: Some(body),
+            }
+        }))
         .collect();
     let jname = |j: crate::pipeline::ir::JointId| names.map(|n| n.joints[j.index()].clone()).unwrap_or_default();
     let loops = h
         .loops
         .iter()
-        .map(|l| LoopReport {
+        .zip(&validated.analysis.loops.loops)
+        .map(|(l, info)| LoopReport {
             closing_joint: jname(l.closing),
             joints: std::iter::once(l.closing).chain(l.path.iter().copied()).map(jname).collect(),
-            kind: match l.kind {
-                LoopKind::PlanarRevolute => "planar-revolute",
-                LoopKind::Spatial => "spatial",
-                LoopKind::Rigid => "rigid",
+            kind: match (l.kind, info.planar_normal) {
+                (LoopKind::Rigid, _) => "rigid",
+                (_, Some(_)) => "planar",
+                _ => "spatial",
             },
+            coordinates: info.coordinates,
+            rank: info.rank,
+            mobility: info.mobility,
+            closing_equations: info.closing_equations,
+            independent_equations: info.independent,
+            redundant_equations: info.closing_equations - info.independent.min(info.closing_equations),
+            redundant_emitted: if info.cut == Cut::Redundant { info.closing_equations - info.independent.min(info.closing_equations) } else { 0 },
+            planar_normal: info.planar_normal.map(Into::into),
+            cut: layout.emitted_as[l.closing.index()].to_string(),
+            why: info.why.clone(),
         })
         .collect();
     Report {

@@ -5,11 +5,9 @@
 //! the world up front. Welds first means a loop is closed by a movable joint whenever one exists
 //! in it; ordering by `node_id` (never file order) keeps the choice stable across re-exports.
 
-use std::collections::VecDeque;
+use std::collections::{BTreeSet, VecDeque};
 
-use nalgebra::Vector3;
-
-use crate::pipeline::ir::{BodyId, FrameId, FrameOwner, JointId, Model, PrimitiveKind};
+use crate::pipeline::ir::{BodyId, FrameId, FrameOwner, JointId, Model};
 
 /// A node of the graph: a body or a ground (grounds are all fixed to the world).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -18,14 +16,11 @@ pub enum Node {
     Ground(crate::pipeline::ir::GroundId),
 }
 
-/// How a joint that is not in the tree is treated.
+/// What kind of loop a joint outside the tree closes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum LoopKind {
-    /// Every movable primitive in the loop is a revolute and all axes are parallel: the closing
-    /// revolute becomes `RevolutePlanarLoopConstraint`.
-    PlanarRevolute,
-    /// Any other loop: the closing joint is kept (Modelica handles spatial loops).
-    Spatial,
+    /// A loop with movable joints: `passes::loops` decides how its closing joint is emitted.
+    Kinematic,
     /// A weld closing a loop of welds only: redundant, not emitted (the frames are already
     /// rigidly related through the tree).
     Rigid,
@@ -36,8 +31,11 @@ pub enum LoopKind {
 pub struct Loop {
     /// The joint outside the tree that closes the loop.
     pub closing: JointId,
-    /// The tree joints on the path between the closing joint's two sides.
+    /// The tree joints on the path between the closing joint's two sides: from its base side up
+    /// to the common ancestor, then down to its follower side.
     pub path: Vec<JointId>,
+    /// How many of `path`'s joints lie on the base side (the rest lie on the follower side).
+    pub base_side: usize,
     pub kind: LoopKind,
 }
 
@@ -57,11 +55,9 @@ pub struct Hierarchy {
     pub depth: Vec<Option<u32>>,
     /// Per joint: true when it lies on some loop (tree path or closing joint).
     pub in_loop: Vec<bool>,
-    /// Per joint: true when its coordinates are fixed at their start values (`fixed=true`).
-    /// Joints outside loops are fixed. In a loop with `d` degrees of freedom, the first `d`
-    /// one-coordinate joints of its path that lie in no other loop are fixed, nearest the ground
-    /// first; the rest of the loop follows from the closure, so initialisation is well-posed.
-    pub start_fixed: Vec<bool>,
+    /// Per tree joint: true when its follower side is the child (farther from the root), so the
+    /// child's motion relative to the parent is the joint's own motion; false when reversed.
+    pub follower_is_child: Vec<bool>,
 }
 
 impl Hierarchy {
@@ -100,6 +96,13 @@ impl Dsu {
 
 /// Builds the hierarchy. Infallible: every graph has a spanning forest.
 pub fn build(model: &Model) -> Hierarchy {
+    build_with(model, &BTreeSet::new())
+}
+
+/// [`build`], with the joints of `cut_last` taken into the tree only after every other joint of
+/// their kind, so that each one closes a loop it lies on (the loop pass uses this to move a cut to
+/// a better joint).
+pub fn build_with(model: &Model, cut_last: &BTreeSet<JointId>) -> Hierarchy {
     let nb = model.bodies.len();
     let ng = model.grounds.len();
     // Node index: bodies 0..nb, grounds nb..nb+ng, the world nb+ng.
@@ -115,7 +118,7 @@ pub fn build(model: &Model) -> Hierarchy {
     let mut order: Vec<JointId> = model.joint_ids().collect();
     order.sort_by(|a, b| {
         let (ja, jb) = (model.joint(*a), model.joint(*b));
-        (!ja.is_weld(), &ja.node_id).cmp(&(!jb.is_weld(), &jb.node_id))
+        (!ja.is_weld(), cut_last.contains(a), &ja.node_id).cmp(&(!jb.is_weld(), cut_last.contains(b), &jb.node_id))
     });
     let mut adjacency: Vec<Vec<(JointId, usize)>> = vec![Vec::new(); world + 1];
     let mut closers = Vec::new();
@@ -137,6 +140,7 @@ pub fn build(model: &Model) -> Hierarchy {
     // Breadth-first from the world, then from each free component (rooted at its smallest node_id).
     let mut depth: Vec<Option<u32>> = vec![None; world + 1];
     let mut parent: Vec<Option<(JointId, usize)>> = vec![None; world + 1];
+    let mut follower_is_child = vec![false; model.joints.len()];
     let mut tree = Vec::new();
     let mut bfs = |root: usize, depth: &mut Vec<Option<u32>>, tree: &mut Vec<JointId>| {
         depth[root] = Some(0);
@@ -150,6 +154,7 @@ pub fn build(model: &Model) -> Hierarchy {
                     parent[m] = (j.0 != u32::MAX).then_some((j, n));
                     if j.0 != u32::MAX {
                         tree.push(j);
+                        follower_is_child[j.index()] = index(node_of(model, model.joint(j).follower)) == m;
                     }
                     queue.push_back(m);
                 }
@@ -176,62 +181,19 @@ pub fn build(model: &Model) -> Hierarchy {
         let joint = model.joint(j);
         let a = index(node_of(model, joint.base));
         let b = index(node_of(model, joint.follower));
-        let path = tree_path(a, b, &parent, &free_depth);
-        let kind = classify(model, j, &path);
+        let (path, base_side) = tree_path(a, b, &parent, &free_depth);
+        let all_welds = std::iter::once(&j).chain(&path).all(|j| model.joint(*j).is_weld());
+        let kind = if all_welds { LoopKind::Rigid } else { LoopKind::Kinematic };
         if kind != LoopKind::Rigid {
             in_loop[j.index()] = true;
             for p in &path {
                 in_loop[p.index()] = true;
             }
         }
-        loops.push(Loop { closing: j, path, kind });
+        loops.push(Loop { closing: j, path, base_side, kind });
     }
-    let start_fixed = choose_fixed(model, &tree, &loops, &in_loop);
     let depth = (0..nb).map(|i| free_depth[i]).collect();
-    Hierarchy { tree, loops, free_bodies, free_roots, depth, in_loop, start_fixed }
-}
-
-/// Degrees of freedom of a joint's primitives (zero axes count as rigid).
-fn joint_dof(model: &Model, j: JointId) -> usize {
-    model
-        .joint(j)
-        .primitives
-        .iter()
-        .map(|p| match p.kind {
-            PrimitiveKind::Weld => 0,
-            PrimitiveKind::Spherical => 3,
-            _ => usize::from(p.axis_world.try_normalize(1e-12).is_some()),
-        })
-        .sum()
-}
-
-fn choose_fixed(model: &Model, tree: &[JointId], loops: &[Loop], in_loop: &[bool]) -> Vec<bool> {
-    let mut fixed: Vec<bool> = in_loop.iter().map(|l| !l).collect();
-    let mut loops_of = vec![0usize; model.joints.len()];
-    for l in loops.iter().filter(|l| l.kind != LoopKind::Rigid) {
-        for j in std::iter::once(&l.closing).chain(&l.path) {
-            loops_of[j.index()] += 1;
-        }
-    }
-    let bfs_rank = |j: &JointId| tree.iter().position(|t| t == j).unwrap_or(usize::MAX);
-    for l in loops.iter().filter(|l| l.kind != LoopKind::Rigid) {
-        let path_dof: usize = l.path.iter().map(|j| joint_dof(model, *j)).sum();
-        let dof = match l.kind {
-            LoopKind::PlanarRevolute => path_dof.saturating_sub(2),
-            _ => (path_dof + joint_dof(model, l.closing)).saturating_sub(6),
-        };
-        let mut candidates: Vec<JointId> = l
-            .path
-            .iter()
-            .copied()
-            .filter(|j| loops_of[j.index()] == 1 && joint_dof(model, *j) == 1 && model.joint(*j).primitives.len() == 1)
-            .collect();
-        candidates.sort_by_key(bfs_rank);
-        for j in candidates.into_iter().take(dof) {
-            fixed[j.index()] = true;
-        }
-    }
-    fixed
+    Hierarchy { tree, loops, free_bodies, free_roots, depth, in_loop, follower_is_child }
 }
 
 fn sort_key(model: &Model, j: JointId) -> (bool, &str) {
@@ -242,13 +204,14 @@ fn sort_key(model: &Model, j: JointId) -> (bool, &str) {
     (!joint.is_weld(), joint.node_id.as_str())
 }
 
-/// Tree joints between nodes `a` and `b` (via their lowest common ancestor).
+/// Tree joints between nodes `a` and `b` (via their lowest common ancestor): those from `a` up,
+/// then those down to `b`, and how many are on `a`'s side.
 fn tree_path(
     mut a: usize,
     mut b: usize,
     parent: &[Option<(JointId, usize)>],
     depth: &[Option<u32>],
-) -> Vec<JointId> {
+) -> (Vec<JointId>, usize) {
     let d = |n: usize| depth[n].unwrap_or(0);
     let (mut up_a, mut up_b) = (Vec::new(), Vec::new());
     while d(a) > d(b) {
@@ -274,40 +237,7 @@ fn tree_path(
         }
     }
     up_b.reverse();
+    let base_side = up_a.len();
     up_a.extend(up_b);
-    up_a
-}
-
-fn classify(model: &Model, closing: JointId, path: &[JointId]) -> LoopKind {
-    let all: Vec<JointId> = std::iter::once(closing).chain(path.iter().copied()).collect();
-    if all.iter().all(|j| model.joint(*j).is_weld()) {
-        return LoopKind::Rigid;
-    }
-    let closer = model.joint(closing);
-    let closer_is_revolute =
-        closer.primitives.len() == 1 && closer.primitives[0].kind == PrimitiveKind::Revolute;
-    let mut axis: Option<Vector3<f64>> = None;
-    for j in &all {
-        for p in &model.joint(*j).primitives {
-            match p.kind {
-                PrimitiveKind::Weld => {}
-                PrimitiveKind::Revolute => {
-                    let Some(n) = p.axis_world.try_normalize(1e-12) else {
-                        return LoopKind::Spatial;
-                    };
-                    match axis {
-                        None => axis = Some(n),
-                        Some(a) if a.cross(&n).norm() < 1e-6 => {}
-                        Some(_) => return LoopKind::Spatial,
-                    }
-                }
-                _ => return LoopKind::Spatial,
-            }
-        }
-    }
-    if closer_is_revolute && axis.is_some() {
-        LoopKind::PlanarRevolute
-    } else {
-        LoopKind::Spatial
-    }
+    (up_a, base_side)
 }

@@ -13,7 +13,9 @@
 //! - weld primitives add nothing.
 //!
 //! Axes are normalised, and components below 1e-9 (CAD noise) snapped to zero, *before* the start
-//! values are computed, so the snapping never moves a frame.
+//! values are computed, so the snapping never moves a frame. The loop pass may replace the world
+//! axes of a planar loop's joints by the loop's common normal ([`chain_with_axes`]); those are
+//! snapped only below 1e-12, so the emitted axes stay parallel to about 1e-12 rad.
 
 use nalgebra::{DMatrix, DVector, Isometry3, Translation3, Unit, UnitQuaternion, Vector3};
 
@@ -31,6 +33,9 @@ pub struct Element {
     pub axis_world: Vector3<f64>,
     /// Where the element's frame_a is in the world at the CAD pose (m).
     pub origin_world: Vector3<f64>,
+    /// Whether the start value is fixed (`fixed=true`): always outside loops; in a loop, for the
+    /// independent coordinates the loop pass chooses.
+    pub fixed: bool,
 }
 
 /// The emitted form of one joint.
@@ -61,10 +66,18 @@ pub fn rotation_angle(q: &UnitQuaternion<f64>) -> f64 {
     2.0 * q.imag().norm().atan2(q.w.abs())
 }
 
+/// Axis components below this are CAD noise and snapped to zero.
+pub const AXIS_SNAP: f64 = 1e-9;
+
 /// Normalises and snaps CAD noise; `None` for a zero or non-finite axis.
 pub fn clean_axis(v: &Vector3<f64>) -> Option<Vector3<f64>> {
+    snap_axis(v, AXIS_SNAP)
+}
+
+/// Normalises and snaps components below `snap` to zero; `None` for a zero or non-finite axis.
+fn snap_axis(v: &Vector3<f64>, snap: f64) -> Option<Vector3<f64>> {
     let n = v.try_normalize(1e-12)?;
-    let snapped = n.map(|c| if c.abs() < 1e-9 { 0.0 } else { c });
+    let snapped = n.map(|c| if c.abs() < snap { 0.0 } else { c });
     snapped.try_normalize(1e-12).filter(|n| n.iter().all(|c| c.is_finite()))
 }
 
@@ -86,15 +99,26 @@ pub fn twist_angle(r: &UnitQuaternion<f64>, n: &Vector3<f64>) -> f64 {
 /// Computes the chain of `joint`. Primitives whose axis is zero are treated as welds; the caller
 /// (validation) reports them.
 pub fn chain(model: &Model, joint: &Joint) -> Chain {
+    chain_with_axes(model, joint, &[])
+}
+
+/// [`chain`] with world axes replaced: `axes[i]`, when given, is primitive `i`'s unit world axis
+/// (a planar loop's common normal), snapped in the element frame only below 1e-12.
+pub fn chain_with_axes(model: &Model, joint: &Joint, axes: &[Option<Vector3<f64>>]) -> Chain {
     let b = model.frame(joint.base).pose;
     let f = model.frame(joint.follower).pose;
+    let world = |i: usize, p: &crate::pipeline::ir::Primitive| match axes.get(i).copied().flatten() {
+        Some(a) => (snap_axis(&a, 1e-15), 1e-12),
+        None => (clean_axis(&p.axis_world), AXIS_SNAP),
+    };
 
     // Least-squares prismatic displacements from the world axes.
     let prismatic_axes: Vec<Vector3<f64>> = joint
         .primitives
         .iter()
-        .filter(|p| p.kind == PrimitiveKind::Prismatic)
-        .filter_map(|p| clean_axis(&p.axis_world))
+        .enumerate()
+        .filter(|(_, p)| p.kind == PrimitiveKind::Prismatic)
+        .filter_map(|(i, p)| world(i, p).0)
         .collect();
     let d = f.translation.vector - b.translation.vector;
     let s = least_squares(&prismatic_axes, &d);
@@ -102,7 +126,7 @@ pub fn chain(model: &Model, joint: &Joint) -> Chain {
     let mut cur = b;
     let mut elements = Vec::new();
     let mut k = 0;
-    for p in &joint.primitives {
+    for (i, p) in joint.primitives.iter().enumerate() {
         match p.kind {
             PrimitiveKind::Weld => {}
             PrimitiveKind::Spherical => {
@@ -112,22 +136,23 @@ pub fn chain(model: &Model, joint: &Joint) -> Chain {
                     q0: 0.0,
                     axis_world: Vector3::zeros(),
                     origin_world: cur.translation.vector,
+                    fixed: true,
                 });
             }
             PrimitiveKind::Revolute | PrimitiveKind::Prismatic => {
-                let Some(world_axis) = clean_axis(&p.axis_world) else { continue };
-                let Some(axis) = clean_axis(&(cur.rotation.inverse() * world_axis)) else { continue };
+                let (Some(world_axis), snap) = world(i, p) else { continue };
+                let Some(axis) = snap_axis(&(cur.rotation.inverse() * world_axis), snap) else { continue };
                 let origin_world = cur.translation.vector;
                 if p.kind == PrimitiveKind::Revolute {
                     let missing = cur.rotation.inverse() * f.rotation;
                     let q0 = twist_angle(&missing, &axis);
                     cur.rotation *= UnitQuaternion::from_axis_angle(&Unit::new_unchecked(axis), q0);
-                    elements.push(Element { kind: p.kind, axis, q0, axis_world: world_axis, origin_world });
+                    elements.push(Element { kind: p.kind, axis, q0, axis_world: world_axis, origin_world, fixed: true });
                 } else {
                     let q0 = s.get(k).copied().unwrap_or(0.0);
                     k += 1;
                     cur.translation.vector += cur.rotation * (axis * q0);
-                    elements.push(Element { kind: p.kind, axis, q0, axis_world: world_axis, origin_world });
+                    elements.push(Element { kind: p.kind, axis, q0, axis_world: world_axis, origin_world, fixed: true });
                 }
             }
         }

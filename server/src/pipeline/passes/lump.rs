@@ -23,6 +23,17 @@ use crate::pipeline::ir::{BodyId, FrameId, FrameOwner, JointId, Mesh, Model};
 pub struct Lumped {
     pub model: Model,
     pub merged: BTreeMap<String, Vec<String>>,
+    /// The welds inside lumped groups, which the lumped model no longer has.
+    pub absorbed: Vec<Absorbed>,
+}
+
+/// A weld absorbed into a lumped body.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Absorbed {
+    pub cad_name: String,
+    pub node_id: String,
+    /// `node_id` of the lumped body (the group's representative).
+    pub body: String,
 }
 
 /// Lumps welded groups. Bodies that are not welded to another body come through unchanged.
@@ -102,12 +113,30 @@ pub fn lump(model: &Model, h: &Hierarchy) -> Lumped {
     }
     internal.sort();
     internal.dedup();
+    let absorbed = internal
+        .iter()
+        .map(|j| {
+            let joint = model.joint(*j);
+            let b = match hierarchy::node_of(model, joint.base) {
+                Node::Body(b) => b,
+                Node::Ground(_) => match hierarchy::node_of(model, joint.follower) {
+                    Node::Body(b) => b,
+                    Node::Ground(_) => BodyId(0),
+                },
+            };
+            Absorbed {
+                cad_name: joint.cad_name.clone(),
+                node_id: joint.node_id.clone(),
+                body: model.body(rep_of[b.index()]).node_id.clone(),
+            }
+        })
+        .collect();
     out.joints = model
         .joint_ids()
         .filter(|j| internal.binary_search(j).is_err())
         .map(|j| model.joint(j).clone())
         .collect();
-    Lumped { model: out, merged }
+    Lumped { model: out, merged, absorbed }
 }
 
 /// Writes the combined mass properties, frames and mesh of `list` into `out.bodies[rep]`.

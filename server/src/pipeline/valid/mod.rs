@@ -9,6 +9,7 @@ use nalgebra::{Matrix3, SymmetricEigen};
 use crate::pipeline::ir::{Body, Model, PrimitiveKind, Warning};
 use crate::pipeline::passes::hierarchy::{self, Hierarchy, LoopKind, Node};
 use crate::pipeline::passes::kinematics::{self, Chain};
+use crate::pipeline::passes::loops::LoopAnalysis;
 
 /// The passes' side tables for one model.
 #[derive(Clone, Debug)]
@@ -16,6 +17,8 @@ pub struct Analysis {
     pub hierarchy: Hierarchy,
     /// One chain per joint, indexed like `Model::joints`.
     pub chains: Vec<Chain>,
+    /// How each loop of `hierarchy.loops` is cut.
+    pub loops: LoopAnalysis,
 }
 
 /// Proof that a model passed validation, with the analysis back ends need.

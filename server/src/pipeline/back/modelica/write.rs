@@ -3,11 +3,11 @@
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 
-use nalgebra::{Isometry3, Matrix3, Vector3};
+use nalgebra::{Isometry3, Matrix3, Translation3, Unit, UnitQuaternion, Vector3};
 
 use super::names::{self, sanitize, Names, Scope};
-use crate::pipeline::ir::{FrameId, FrameOwner, Model, PrimitiveKind};
-use crate::pipeline::passes::hierarchy::LoopKind;
+use crate::pipeline::ir::{FrameId, FrameOwner, JointId, Model, PrimitiveKind};
+use crate::pipeline::passes::loops::{ConstraintClass, Cut};
 use crate::pipeline::passes::kinematics::is_identity;
 use crate::pipeline::valid::{is_root_part, Validated};
 
@@ -48,14 +48,25 @@ pub struct Package {
     pub layout: Layout,
 }
 
-/// Shortest round-trip decimal; `-0` prints as `0`.
+/// A number as the data supports it: rounded to 15 significant digits (what survives unit
+/// conversions and rotations of 17-digit doubles), then the shortest decimal that reads back to
+/// that; `-0` prints as `0`.
 fn num(x: f64) -> String {
-    let x = if x == 0.0 { 0.0 } else { x };
+    num_in(x, 0.0)
+}
+
+/// [`num`], with values below 1e-12 of `scale` (the size of the quantity they belong to) written
+/// as 0: rounding noise such as `8.6e-24` in an inertia of 1e-3.
+fn num_in(x: f64, scale: f64) -> String {
+    let rounded: f64 = format!("{x:.14e}").parse().unwrap_or(x);
+    let x = if rounded == 0.0 || rounded.abs() < 1e-12 * scale { 0.0 } else { rounded };
     format!("{x:?}")
 }
 
+/// A vector, components below 1e-12 of its length written as 0.
 fn vec3(v: &Vector3<f64>) -> String {
-    format!("{{{}, {}, {}}}", num(v.x), num(v.y), num(v.z))
+    let scale = v.norm();
+    format!("{{{}, {}, {}}}", num_in(v.x, scale), num_in(v.y, scale), num_in(v.z, scale))
 }
 
 /// Cardan angles {a, b, c} with R = Rx(a) * Ry(b) * Rz(c) (MSL `sequence_start={1,2,3}`:
@@ -199,6 +210,162 @@ impl Writer<'_> {
     }
 }
 
+impl Writer<'_> {
+    /// Emits one joint: its chain of elements (the last one as the loop's cut when it closes a
+    /// loop), then the CAD offset to the follower frame.
+    fn joint(&mut self, jid: JointId, jname: &str) {
+        let model = self.model;
+        let analysis = &self.v.analysis;
+        let joint = model.joint(jid);
+        let chain = &analysis.chains[jid.index()];
+        let cut = analysis.hierarchy.loops.iter().position(|l| l.closing == jid).map(|i| &analysis.loops.loops[i].cut);
+        let in_loop = analysis.hierarchy.in_loop[jid.index()];
+        let base = self.layout.connectors[&joint.base].clone();
+        let follower = self.layout.connectors[&joint.follower].clone();
+        let what = format!("{} (nodeID {})", joint.cad_name, joint.node_id);
+        if cut == Some(&Cut::Omitted) {
+            let (why, kind) = if joint.is_weld() {
+                ("redundant weld closing a rigid loop", "omitted-redundant-weld")
+            } else {
+                ("closes a loop whose equations the rest of the mechanism already implies", "omitted-implied")
+            };
+            let _ = writeln!(self.decl, "  // {}: {why}, not emitted", mstr(&what));
+            self.layout.emitted_as[jid.index()] = kind;
+            return;
+        }
+        if chain.elements.is_empty() {
+            if is_identity(&chain.residual) {
+                self.connect(&base, &follower);
+                self.layout.emitted_as[jid.index()] = "connect";
+            } else {
+                self.fixed(jname, &chain.residual, &format!("Rigid joint {what}"));
+                self.connect(&base, &format!("{jname}.frame_a"));
+                self.connect(&format!("{jname}.frame_b"), &follower);
+                self.layout.joint_elements[jid.index()].push(jname.to_string());
+                self.layout.emitted_as[jid.index()] = "fixed";
+            }
+            return;
+        }
+        let count = chain.elements.len();
+        let mut prev = base;
+        // Fixed transform from the last element's frame_b to the follower frame.
+        let mut offset = chain.residual;
+        for (k, e) in chain.elements.iter().enumerate() {
+            let name = if count == 1 { jname.to_string() } else { self.scope.take(&format!("{jname}_{}", k + 1)) };
+            let fixed = if e.fixed { ", fixed=true" } else { "" };
+            let desc = if count == 1 { format!("Joint {what}") } else { format!("Joint {what}, primitive {} of {count}", k + 1) };
+            let last_cut = if k + 1 == count { cut } else { None };
+            let kind = match (e.kind, last_cut) {
+                (PrimitiveKind::Revolute, Some(Cut::PlanarLoopConstraint)) => {
+                    let place = self.place(COL_JOINT);
+                    let _ = writeln!(
+                        self.decl,
+                        "  {MB}.Joints.RevolutePlanarLoopConstraint {name}(n={}, animation=false)\n    \"{}: closes a planar loop\" {place};",
+                        vec3(&e.axis),
+                        mstr(&desc)
+                    );
+                    "revolute-planar-loop-constraint"
+                }
+                (_, Some(Cut::Constraint(cc))) => {
+                    let axes = Isometry3::from_parts(Translation3::identity(), cc.axes);
+                    if !is_identity(&axes) {
+                        let axes_name = self.scope.take(&format!("{name}_axes"));
+                        self.fixed(&axes_name, &axes, &format!("Axes of the loop cut {name}"));
+                        self.connect(&prev, &format!("{axes_name}.frame_a"));
+                        prev = format!("{axes_name}.frame_b");
+                        self.layout.joint_elements[jid.index()].push(axes_name);
+                    }
+                    let mut params = Vec::new();
+                    match cc.class {
+                        ConstraintClass::Revolute => params.push(format!("n={}", vec3(&cc.n))),
+                        ConstraintClass::Universal => {
+                            params.push(format!("n_a={}", vec3(&cc.n)));
+                            params.push(format!("n_b={}", vec3(&cc.n_b)));
+                        }
+                        ConstraintClass::Spherical | ConstraintClass::Prismatic => {}
+                    }
+                    for (axis, locked) in ["x", "y", "z"].iter().zip(cc.locked) {
+                        params.push(format!("{axis}_locked={locked}"));
+                    }
+                    params.push("animation=false".to_string());
+                    let place = self.place(COL_JOINT);
+                    let _ = writeln!(
+                        self.decl,
+                        "  {MB}.Joints.Constraints.{} {name}({})\n    \"{}: closes a loop, imposing only its independent equations\" {place};",
+                        cc.class.name(),
+                        params.join(", "),
+                        mstr(&desc)
+                    );
+                    // The constraint's frame_b starts where its frame_a is: the element's own
+                    // start motion moves into the offset.
+                    let motion = match e.kind {
+                        PrimitiveKind::Revolute => Isometry3::from_parts(
+                            Translation3::identity(),
+                            UnitQuaternion::from_axis_angle(&Unit::new_normalize(e.axis), e.q0),
+                        ),
+                        PrimitiveKind::Prismatic => Isometry3::translation(e.axis.x * e.q0, e.axis.y * e.q0, e.axis.z * e.q0),
+                        _ => Isometry3::identity(),
+                    };
+                    offset = axes.inverse() * motion * chain.residual;
+                    match cc.class {
+                        ConstraintClass::Spherical => "constraint-spherical",
+                        ConstraintClass::Revolute => "constraint-revolute",
+                        ConstraintClass::Prismatic => "constraint-prismatic",
+                        ConstraintClass::Universal => "constraint-universal",
+                    }
+                }
+                (PrimitiveKind::Revolute, _) => {
+                    let place = self.place(COL_JOINT);
+                    let _ = writeln!(
+                        self.decl,
+                        "  {}.Components.Revolute {name}(\n    n={},\n    phi(start={}{fixed}),\n    w(start=0{fixed}))\n    \"{}\" {place};",
+                        self.pkg,
+                        vec3(&e.axis),
+                        num_in(e.q0, 1.0),
+                        mstr(&desc)
+                    );
+                    "revolute"
+                }
+                (PrimitiveKind::Prismatic, _) => {
+                    let place = self.place(COL_JOINT);
+                    let _ = writeln!(
+                        self.decl,
+                        "  {}.Components.Prismatic {name}(\n    n={},\n    s(start={}{fixed}),\n    v(start=0{fixed}))\n    \"{}\" {place};",
+                        self.pkg,
+                        vec3(&e.axis),
+                        num_in(e.q0, 1.0),
+                        mstr(&desc)
+                    );
+                    "prismatic"
+                }
+                _ => {
+                    let states = if in_loop || !e.fixed {
+                        String::new()
+                    } else {
+                        "(\n    enforceStates=true,\n    useQuaternions=true,\n    angles_fixed=true,\n    w_rel_a_fixed=true)".to_string()
+                    };
+                    let place = self.place(COL_JOINT);
+                    let _ = writeln!(self.decl, "  {MB}.Joints.Spherical {name}{states}\n    \"{}\" {place};", mstr(&desc));
+                    "spherical"
+                }
+            };
+            self.connect(&prev, &format!("{name}.frame_a"));
+            prev = format!("{name}.frame_b");
+            self.layout.joint_elements[jid.index()].push(name);
+            self.layout.emitted_as[jid.index()] = if count == 1 { kind } else { "chain" };
+        }
+        if is_identity(&offset) {
+            self.connect(&prev, &follower);
+        } else {
+            let name = self.scope.take(&format!("{jname}_offset"));
+            self.fixed(&name, &offset, &format!("CAD offset of joint {what} at its start values"));
+            self.connect(&prev, &format!("{name}.frame_a"));
+            self.connect(&format!("{name}.frame_b"), &follower);
+            self.layout.joint_elements[jid.index()].push(name);
+        }
+    }
+}
+
 fn is_user_frame(node_id: &str, display_name: &str) -> bool {
     node_id.contains("USERADDED") || !display_name.is_empty()
 }
@@ -245,6 +412,7 @@ pub fn write(model: &Model, v: &Validated, opts: &Options) -> Package {
         let rg = cg.rotation.to_rotation_matrix().into_inner();
         let sym = (body.inertia_cg + body.inertia_cg.transpose()) * 0.5;
         let ia: Matrix3<f64> = rc.transpose() * rg * sym * rg.transpose() * rc;
+        let i_scale = ia.amax();
         let anim = if body.mesh.is_some() || body.mass == 0.0 { ",\n    animation=false" } else { "" };
         let initial = if analysis.hierarchy.free_roots.iter().any(|b| b.index() == i) {
             let a = cardan_xyz(&rc);
@@ -262,12 +430,12 @@ pub fn write(model: &Model, v: &Validated, opts: &Options) -> Package {
             "  {MB}.Parts.Body {name}(\n    m={},\n    r_CM={},\n    I_11={}, I_22={}, I_33={},\n    I_21={}, I_31={}, I_32={}{anim}{initial})\n    \"{}{} (nodeID {})\" {place};",
             num(body.mass),
             vec3(&r_cm),
-            num(ia[(0, 0)]),
-            num(ia[(1, 1)]),
-            num(ia[(2, 2)]),
-            num(ia[(1, 0)]),
-            num(ia[(2, 0)]),
-            num(ia[(2, 1)]),
+            num_in(ia[(0, 0)], i_scale),
+            num_in(ia[(1, 1)], i_scale),
+            num_in(ia[(2, 2)], i_scale),
+            num_in(ia[(1, 0)], i_scale),
+            num_in(ia[(2, 0)], i_scale),
+            num_in(ia[(2, 1)], i_scale),
             if is_root_part(body) { "Assembly root " } else { "Part " },
             mstr(&body.cad_name),
             mstr(&body.node_id)
@@ -300,103 +468,7 @@ pub fn write(model: &Model, v: &Validated, opts: &Options) -> Package {
     let mut order: Vec<_> = analysis.hierarchy.tree.clone();
     order.extend(analysis.hierarchy.loops.iter().map(|l| l.closing));
     for jid in order {
-        let joint = model.joint(jid);
-        let jname = names.joints[jid.index()].clone();
-        let chain = &analysis.chains[jid.index()];
-        let loop_kind = analysis.hierarchy.loop_of_closing(jid).map(|l| l.kind);
-        let in_loop = analysis.hierarchy.in_loop[jid.index()];
-        let start_fixed = analysis.hierarchy.start_fixed[jid.index()];
-        let base = w.layout.connectors[&joint.base].clone();
-        let follower = w.layout.connectors[&joint.follower].clone();
-        let what = format!("{} (nodeID {})", joint.cad_name, joint.node_id);
-        if loop_kind == Some(LoopKind::Rigid) {
-            let _ = writeln!(w.decl, "  // {}: redundant weld closing a rigid loop, not emitted", mstr(&what));
-            w.layout.emitted_as[jid.index()] = "omitted-redundant-weld";
-            continue;
-        }
-        if chain.elements.is_empty() {
-            if is_identity(&chain.residual) {
-                w.connect(&base, &follower);
-                w.layout.emitted_as[jid.index()] = "connect";
-            } else {
-                let name = jname.clone();
-                w.fixed(&name, &chain.residual, &format!("Rigid joint {what}"));
-                w.connect(&base, &format!("{name}.frame_a"));
-                w.connect(&format!("{name}.frame_b"), &follower);
-                w.layout.joint_elements[jid.index()].push(name);
-                w.layout.emitted_as[jid.index()] = "fixed";
-            }
-            continue;
-        }
-        let count = chain.elements.len();
-        let mut prev = base;
-        for (k, e) in chain.elements.iter().enumerate() {
-            let name = if count == 1 { jname.clone() } else { w.scope.take(&format!("{jname}_{}", k + 1)) };
-            let fixed = if start_fixed { ", fixed=true" } else { "" };
-            let place = w.place(COL_JOINT);
-            let desc = if count == 1 {
-                format!("Joint {what}")
-            } else {
-                format!("Joint {what}, primitive {} of {count}", k + 1)
-            };
-            let kind = match (e.kind, loop_kind) {
-                (PrimitiveKind::Revolute, Some(LoopKind::PlanarRevolute)) => {
-                    let _ = writeln!(
-                        w.decl,
-                        "  {MB}.Joints.RevolutePlanarLoopConstraint {name}(n={})\n    \"{}: closes a planar loop\" {place};",
-                        vec3(&e.axis),
-                        mstr(&desc)
-                    );
-                    "revolute-planar-loop-constraint"
-                }
-                (PrimitiveKind::Revolute, _) => {
-                    let _ = writeln!(
-                        w.decl,
-                        "  {pkg}.Components.Revolute {name}(\n    n={},\n    phi(start={}{fixed}),\n    w(start=0{fixed}))\n    \"{}\" {place};",
-                        vec3(&e.axis),
-                        num(e.q0),
-                        mstr(&desc)
-                    );
-                    "revolute"
-                }
-                (PrimitiveKind::Prismatic, _) => {
-                    let _ = writeln!(
-                        w.decl,
-                        "  {pkg}.Components.Prismatic {name}(\n    n={},\n    s(start={}{fixed}),\n    v(start=0{fixed}))\n    \"{}\" {place};",
-                        vec3(&e.axis),
-                        num(e.q0),
-                        mstr(&desc)
-                    );
-                    "prismatic"
-                }
-                _ => {
-                    let states = if in_loop || !start_fixed {
-                        String::new()
-                    } else {
-                        "(\n    enforceStates=true,\n    useQuaternions=true,\n    angles_fixed=true,\n    w_rel_a_fixed=true)".to_string()
-                    };
-                    let _ = writeln!(
-                        w.decl,
-                        "  {MB}.Joints.Spherical {name}{states}\n    \"{}\" {place};",
-                        mstr(&desc)
-                    );
-                    "spherical"
-                }
-            };
-            w.connect(&prev, &format!("{name}.frame_a"));
-            prev = format!("{name}.frame_b");
-            w.layout.joint_elements[jid.index()].push(name);
-            w.layout.emitted_as[jid.index()] = if count == 1 { kind } else { "chain" };
-        }
-        if is_identity(&chain.residual) {
-            w.connect(&prev, &follower);
-        } else {
-            let name = w.scope.take(&format!("{jname}_offset"));
-            w.fixed(&name, &chain.residual, &format!("CAD offset of joint {what} at its start values"));
-            w.connect(&prev, &format!("{name}.frame_a"));
-            w.connect(&format!("{name}.frame_b"), &follower);
-            w.layout.joint_elements[jid.index()].push(name);
-        }
+        w.joint(jid, &names.joints[jid.index()]);
     }
 
     let _ = writeln!(w.decl, "\n  // Shapes: CAD meshes in each body frame, metres");
@@ -467,18 +539,9 @@ fn mechanics_file(w: &Writer, opts: &Options) -> String {
     let pkg = w.pkg;
     let h = &w.v.analysis.hierarchy;
     let mut notes = String::new();
-    for l in &h.loops {
+    for (l, info) in h.loops.iter().zip(&w.v.analysis.loops.loops) {
         let j = model.joint(l.closing);
-        let _ = write!(
-            notes,
-            "<li>Joint {} closes a {} loop.</li>",
-            html(&j.cad_name),
-            match l.kind {
-                LoopKind::PlanarRevolute => "planar revolute (emitted as RevolutePlanarLoopConstraint)",
-                LoopKind::Spatial => "spatial",
-                LoopKind::Rigid => "rigid (redundant weld, omitted)",
-            }
-        );
+        let _ = write!(notes, "<li>Joint {} closes a loop: {}.</li>", html(&j.cad_name), html(&info.why));
     }
     for b in &h.free_bodies {
         let _ = write!(notes, "<li>Body {} has no path to the ground (free body).</li>", html(&model.body(*b).cad_name));
@@ -547,6 +610,15 @@ mod tests {
         assert_eq!(num(-0.0), "0.0");
         assert_eq!(num(1e-5), "1e-5");
         assert_eq!(num(0.1), "0.1");
+        // Unit-conversion products keep the digits the data has.
+        assert_eq!(num(0.0027950400000000004), "0.00279504");
+        assert_eq!(num(25.4 * 0.1), "2.54");
+        assert_eq!(num(-1.0000000000000002), "-1.0");
+        // Noise relative to the quantity's scale becomes 0, real small values stay.
+        assert_eq!(num_in(8.6e-24, 1e-3), "0.0");
+        assert_eq!(num_in(2e-15, 1e-3), "2e-15");
+        assert_eq!(vec3(&Vector3::new(0.1, 1e-17, -0.2)), "{0.1, 0.0, -0.2}");
+        assert_eq!(vec3(&Vector3::new(1e-17, 0.0, 0.0)), "{1e-17, 0.0, 0.0}");
         assert_eq!(mstr("a \"b\" \\c"), "a \\\"b\\\" \\\\c");
     }
 }
