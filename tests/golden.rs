@@ -102,9 +102,26 @@ fn golden() {
                             problems.push(format!("{name}: {nb} bodies, expected {b}"));
                         }
                     }
-                    if let Some(j) = expect["joints"].as_u64() {
-                        if j != nj {
-                            problems.push(format!("{name}: {nj} joints, expected {j}"));
+                }
+                // Every CAD joint is reported, welds absorbed by lumping included.
+                if let Some(j) = expect["joints"].as_u64() {
+                    if j != nj {
+                        problems.push(format!("{name}: {nj} joints in the report, expected {j}"));
+                    }
+                }
+                // Loop cases state how their loop must be cut.
+                if let Some(want) = expect["expected_cut"].as_object() {
+                    for l in &out.report.loops {
+                        for (key, value) in want {
+                            let got = match key.as_str() {
+                                "cut" => Value::from(l.cut.clone()),
+                                "kind" => Value::from(l.kind),
+                                "mobility" => Value::from(l.mobility),
+                                other => Value::from(format!("unknown key {other}")),
+                            };
+                            if got != *value {
+                                problems.push(format!("{name}: loop closed by {}: {key} is {got}, expected {value}", l.closing_joint));
+                            }
                         }
                     }
                 }

@@ -188,3 +188,6 @@ export function field(label, control, hint) {
   control.setAttribute('aria-describedby', `${control.id}-msg`);
   return h('div', { class: 'field' }, h('label', { for: control.id }, label), control, hint ? h('small', {}, hint) : null, msg);
 }
+
+/** `3 bodies`, `1 joint`: a count with its noun. */
+export const plural = (n, one, many = `${one}s`) => `${n} ${n === 1 ? one : many}`;

@@ -20,28 +20,28 @@ model Mechanics "Mechanical model of ARM (6 bodies, 6 joints)"
     "Part BASE (nodeID 7)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-25})));
   Modelica.Mechanics.MultiBody.Parts.Body LINK_UPPER(
     m=0.564473,
-    r_CM={0.12550000000000006, -0.0005000000000000282, 1.3877787807814457e-17},
-    I_11=7.229960000000002e-5, I_22=0.003741370000000003, I_33=0.0037594800000000034,
-    I_21=-2.168404344971009e-19, I_31=2.17715171677925e-19, I_32=-8.211739349119431e-20,
+    r_CM={0.1255, -0.000500000000000028, 0.0},
+    I_11=7.22996e-5, I_22=0.00374137, I_33=0.00375948,
+    I_21=0.0, I_31=0.0, I_32=0.0,
     animation=false)
     "Part LINK (nodeID 12/13)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-50})));
   Modelica.Mechanics.MultiBody.Parts.Body RootPart_UPPER(
     m=0.0,
-    r_CM={-0.06820749990150862, 0.16820749990150866, 0.0802868227941012},
+    r_CM={-0.0682074999015086, 0.168207499901509, 0.0802868227941012},
     I_11=0.0, I_22=0.0, I_33=0.0,
     I_21=0.0, I_31=0.0, I_32=0.0,
     animation=false)
     "Assembly root RootPart (nodeID 12/RootPart)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-75})));
   Modelica.Mechanics.MultiBody.Parts.Body LINK_FORE(
     m=0.31752,
-    r_CM={0.10000000000000003, 0.0005000000000000282, 0.0004999999999999762},
-    I_11=2.8206400000000015e-5, I_22=0.0013393300000000001, I_33=0.0013441900000000005,
-    I_21=-5.421010862427522e-20, I_31=0.0, I_32=0.0,
+    r_CM={0.1, 0.000500000000000028, 0.000499999999999976},
+    I_11=2.82064e-5, I_22=0.00133933, I_33=0.00134419,
+    I_21=0.0, I_31=0.0, I_32=0.0,
     animation=false)
     "Part LINK (nodeID 12/20/21)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-100})));
   Modelica.Mechanics.MultiBody.Parts.Body RootPart_FORE(
     m=0.0,
-    r_CM={-0.2056366839437535, 0.16421532770644398, 0.16057732926576576},
+    r_CM={-0.205636683943754, 0.164215327706444, 0.160577329265766},
     I_11=0.0, I_22=0.0, I_33=0.0,
     I_21=0.0, I_31=0.0, I_32=0.0,
     animation=false)
@@ -51,59 +51,59 @@ model Mechanics "Mechanical model of ARM (6 bodies, 6 joints)"
   Modelica.Mechanics.MultiBody.Parts.FixedRotation BASE_CS3(
     r={0.0, 0.1, 0.0},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
-    n_x={1.249000902703301e-16, 5.551115123125783e-17, -1.0},
-    n_y={-0.7071067811865475, 0.7071067811865474, -5.551115123125783e-17},
+    n_x={0.0, 0.0, -1.0},
+    n_y={-0.707106781186547, 0.707106781186547, 0.0},
     animation=false)
     "Frame CS3 of BASE (nodeID 12:12/13:-:7::7(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,0})));
   Modelica.Mechanics.MultiBody.Parts.FixedRotation LINK_UPPER_CS4(
     r={0.0, 0.0, 0.0},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
-    n_x={-0.6427876096865395, -0.7660444431189782, 1.2408040349709545e-16},
-    n_y={0.7660444431189782, -0.6427876096865395, 3.390136147099546e-18},
+    n_x={-0.642787609686539, -0.766044443118978, 0.0},
+    n_y={0.766044443118978, -0.642787609686539, 0.0},
     animation=false)
     "Frame CS4 of LINK (nodeID 12:12/13:-:7::12/13(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-25})));
-  Modelica.Mechanics.MultiBody.Parts.FixedTranslation RootPart_UPPER_CS2(r={-0.06820749990150862, 0.16820749990150866, 0.0802868227941012}, animation=false)
+  Modelica.Mechanics.MultiBody.Parts.FixedTranslation RootPart_UPPER_CS2(r={-0.0682074999015086, 0.168207499901509, 0.0802868227941012}, animation=false)
     "Frame CS2 of RootPart (nodeID 12/13:-:12/RootPart::12/RootPart(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-50})));
   Modelica.Mechanics.MultiBody.Parts.FixedRotation LINK_UPPER_CS2(
-    r={0.12550000000000006, -0.0005000000000000282, 1.3877787807814457e-17},
+    r={0.1255, -0.000500000000000028, 0.0},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
-    n_x={-0.541675220419702, 0.4545194776720438, 0.7071067811865476},
-    n_y={0.541675220419702, -0.45451947767204354, 0.7071067811865478},
+    n_x={-0.541675220419702, 0.454519477672044, 0.707106781186548},
+    n_y={0.541675220419702, -0.454519477672044, 0.707106781186548},
     animation=false)
     "Frame CS2 of LINK (nodeID 12/13:-:12/RootPart::12/13(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-75})));
   Modelica.Mechanics.MultiBody.Parts.FixedRotation LINK_UPPER_CS3(
-    r={0.2500000000000002, -5.551115123125783e-17, -2.7755575615628914e-17},
+    r={0.25, 0.0, 0.0},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
-    n_x={0.8375416992315327, 0.2202814155764324, 0.5000000000000002},
-    n_y={0.48355492550886214, 0.1271795345805249, -0.8660254037844387},
+    n_x={0.837541699231533, 0.220281415576432, 0.5},
+    n_y={0.483554925508862, 0.127179534580525, -0.866025403784439},
     animation=false)
     "Frame CS3 of LINK (nodeID 12/13:-:12/20:12/20/21::12/13(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-100})));
   Modelica.Mechanics.MultiBody.Parts.FixedRotation LINK_FORE_CS3(
     r={0.0, 0.0, 0.0},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
-    n_x={-0.766044443118978, -0.6427876096865396, -1.2158671938657635e-16},
-    n_y={0.6427876096865396, -0.766044443118978, -1.9204098632062258e-16},
+    n_x={-0.766044443118978, -0.64278760968654, 0.0},
+    n_y={0.64278760968654, -0.766044443118978, 0.0},
     animation=false)
     "Frame CS3 of LINK (nodeID 12/13:-:12/20:12/20/21::12/20/21(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-125})));
-  Modelica.Mechanics.MultiBody.Parts.FixedTranslation RootPart_FORE_CS2(r={-0.2056366839437535, 0.16421532770644398, 0.16057732926576576}, animation=false)
+  Modelica.Mechanics.MultiBody.Parts.FixedTranslation RootPart_FORE_CS2(r={-0.205636683943754, 0.164215327706444, 0.160577329265766}, animation=false)
     "Frame CS2 of RootPart (nodeID 12/20/21:-:12/20/RootPart::12/20/RootPart(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-150})));
   Modelica.Mechanics.MultiBody.Parts.FixedRotation LINK_FORE_CS2(
-    r={0.10000000000000006, 0.0004999999999999449, 0.0005000000000000004},
+    r={0.1, 0.000499999999999945, 0.0005},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
-    n_x={-0.7071067811865476, 0.408248290463863, 0.5773502691896258},
-    n_y={-0.7071067811865476, -0.40824829046386296, -0.5773502691896258},
+    n_x={-0.707106781186548, 0.408248290463863, 0.577350269189626},
+    n_y={-0.707106781186548, -0.408248290463863, -0.577350269189626},
     animation=false)
     "Frame CS2 of LINK (nodeID 12/20/21:-:12/20/RootPart::12/20/21(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-175})));
 
   // Joints: base frame -> follower frame; start values reproduce the CAD pose
   ARM.Components.Revolute BASE_LINK(
     n={0.0, 0.0, 1.0},
-    phi(start=-5.551115123125784e-17, fixed=true),
+    phi(start=0.0, fixed=true),
     w(start=0, fixed=true))
     "Joint BASE--LINK (nodeID 12:12/13:-:7)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-40,0})));
   ARM.Components.Revolute LINK_LINK(
     n={0.0, 0.0, 1.0},
-    phi(start=-0.3490658503988658, fixed=true),
+    phi(start=-0.349065850398866, fixed=true),
     w(start=0, fixed=true))
     "Joint LINK--LINK (nodeID 12/13:-:12/20:12/20/21)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-40,-25})));
 

@@ -28,7 +28,7 @@ model Mechanics "Mechanical model of UJ (4 bodies, 4 joints)"
   Modelica.Mechanics.MultiBody.Parts.Body FLOAT(
     m=0.0972,
     r_CM={0.0, 0.0, 0.0},
-    I_11=1.0530000000000003e-5, I_22=3.2400000000000015e-5, I_33=3.645e-5,
+    I_11=1.053e-5, I_22=3.24e-5, I_33=3.645e-5,
     I_21=0.0, I_31=0.0, I_32=0.0,
     animation=false)
     "Part FLOAT (nodeID 203)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-75})));
@@ -41,8 +41,8 @@ model Mechanics "Mechanical model of UJ (4 bodies, 4 joints)"
   Modelica.Mechanics.MultiBody.Parts.FixedRotation FLOAT_CS2(
     r={0.0, 0.0, 0.0},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
-    n_x={0.90630778703665, -0.42261826174069944, 0.0},
-    n_y={0.42261826174069944, 0.90630778703665, 0.0},
+    n_x={0.90630778703665, -0.422618261740699, 0.0},
+    n_y={0.422618261740699, 0.90630778703665, 0.0},
     animation=false)
     "Frame CS2 of FLOAT (nodeID 202:-:203::203(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-50})));
 
@@ -64,12 +64,12 @@ model Mechanics "Mechanical model of UJ (4 bodies, 4 joints)"
     "Joint CROSS--FLOAT (nodeID 202:-:203), primitive 1 of 4" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-40,-50})));
   UJ.Components.Prismatic CROSS_FLOAT_2(
     n={0.0, 1.0, 0.0},
-    s(start=-0.020000000000000018, fixed=true),
+    s(start=-0.02, fixed=true),
     v(start=0, fixed=true))
     "Joint CROSS--FLOAT (nodeID 202:-:203), primitive 2 of 4" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-40,-75})));
   UJ.Components.Prismatic CROSS_FLOAT_3(
     n={0.0, 0.0, 1.0},
-    s(start=0.030000000000000006, fixed=true),
+    s(start=0.03, fixed=true),
     v(start=0, fixed=true))
     "Joint CROSS--FLOAT (nodeID 202:-:203), primitive 3 of 4" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-40,-100})));
   Modelica.Mechanics.MultiBody.Joints.Spherical CROSS_FLOAT_4(

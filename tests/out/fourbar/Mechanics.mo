@@ -13,22 +13,22 @@ model Mechanics "Mechanical model of FOURBAR (4 bodies, 5 joints)"
     "Assembly root RootPart (nodeID FOURBAR/RootPart)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,0})));
   Modelica.Mechanics.MultiBody.Parts.Body CRANK(
     m=0.10048,
-    r_CM={0.029999999999999995, 0.0, 0.0},
-    I_11=3.885229999999998e-6, I_22=5.412519999999999e-5, I_33=5.693869999999997e-5,
+    r_CM={0.03, 0.0, 0.0},
+    I_11=3.88523e-6, I_22=5.41252e-5, I_33=5.69387e-5,
     I_21=0.0, I_31=0.0, I_32=0.0,
     animation=false)
     "Part CRANK (nodeID 40)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-25})));
   Modelica.Mechanics.MultiBody.Parts.Body COUPLER(
     m=0.2512,
     r_CM={0.09, 0.0, 0.0},
-    I_11=9.713069999999996e-6, I_22=0.0008386729999999995, I_33=0.0008457069999999996,
+    I_11=9.71307e-6, I_22=0.000838673, I_33=0.000845707,
     I_21=0.0, I_31=0.0, I_32=0.0,
     animation=false)
     "Part COUPLER (nodeID 41)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-50})));
   Modelica.Mechanics.MultiBody.Parts.Body ROCKER(
     m=0.21352,
     r_CM={0.075, 0.0, 0.0},
-    I_11=8.256109999999996e-6, I_22=0.0005153659999999997, I_33=0.000521345,
+    I_11=8.25611e-6, I_22=0.000515366, I_33=0.000521345,
     I_21=0.0, I_31=0.0, I_32=0.0,
     animation=false)
     "Part ROCKER (nodeID 45)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-75})));
@@ -39,36 +39,36 @@ model Mechanics "Mechanical model of FOURBAR (4 bodies, 5 joints)"
   Modelica.Mechanics.MultiBody.Parts.FixedRotation CRANK_CS2(
     r={0.0, 0.0, 0.0},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
-    n_x={0.34202014332566877, -0.9396926207859083, 0.0},
-    n_y={0.9396926207859083, 0.34202014332566877, 0.0},
+    n_x={0.342020143325669, -0.939692620785908, 0.0},
+    n_y={0.939692620785908, 0.342020143325669, 0.0},
     animation=false)
     "Frame CS2 of CRANK (nodeID 40:-:FOURBAR/RootPart::40(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-25})));
   Modelica.Mechanics.MultiBody.Parts.FixedRotation CRANK_CS3(
-    r={0.059999999999999984, 1.734723475976807e-18, 0.0},
+    r={0.06, 0.0, 0.0},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
-    n_x={0.34202014332566877, -0.9396926207859083, 0.0},
-    n_y={0.9396926207859083, 0.34202014332566877, 0.0},
+    n_x={0.342020143325669, -0.939692620785908, 0.0},
+    n_y={0.939692620785908, 0.342020143325669, 0.0},
     animation=false)
     "Frame CS3 of CRANK (nodeID 40:-:41::40(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-50})));
   Modelica.Mechanics.MultiBody.Parts.FixedRotation COUPLER_CS2(
     r={0.0, 0.0, 0.0},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
-    n_x={0.8608343634035965, -0.508885251096477, 0.0},
-    n_y={0.508885251096477, 0.8608343634035965, 0.0},
+    n_x={0.860834363403597, -0.508885251096477, 0.0},
+    n_y={0.508885251096477, 0.860834363403597, 0.0},
     animation=false)
     "Frame CS2 of COUPLER (nodeID 40:-:41::41(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-75})));
   Modelica.Mechanics.MultiBody.Parts.FixedRotation COUPLER_CS3(
-    r={0.18, 2.0816681711721685e-17, 0.0},
+    r={0.18, 0.0, 0.0},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
-    n_x={0.8608343634035965, -0.508885251096477, 0.0},
-    n_y={0.508885251096477, 0.8608343634035965, 0.0},
+    n_x={0.860834363403597, -0.508885251096477, 0.0},
+    n_y={0.508885251096477, 0.860834363403597, 0.0},
     animation=false)
     "Frame CS3 of COUPLER (nodeID 41:-:45::41(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-100})));
   Modelica.Mechanics.MultiBody.Parts.FixedRotation ROCKER_CS2(
-    r={0.15000000000000002, 8.326672684688674e-17, 0.0},
+    r={0.15, 0.0, 0.0},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
-    n_x={-0.16352403991874992, -0.9865393496301356, 0.0},
-    n_y={0.9865393496301356, -0.16352403991874992, 0.0},
+    n_x={-0.16352403991875, -0.986539349630136, 0.0},
+    n_y={0.986539349630136, -0.16352403991875, 0.0},
     animation=false)
     "Frame CS2 of ROCKER (nodeID 41:-:45::45(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-125})));
   Modelica.Mechanics.MultiBody.Parts.FixedTranslation RootPart_CS3(r={0.22, 0.01, 0.0}, animation=false)
@@ -76,8 +76,8 @@ model Mechanics "Mechanical model of FOURBAR (4 bodies, 5 joints)"
   Modelica.Mechanics.MultiBody.Parts.FixedRotation ROCKER_CS3(
     r={0.0, 0.0, 0.0},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
-    n_x={-0.16352403991874992, -0.9865393496301356, 0.0},
-    n_y={0.9865393496301356, -0.16352403991874992, 0.0},
+    n_x={-0.16352403991875, -0.986539349630136, 0.0},
+    n_y={0.986539349630136, -0.16352403991875, 0.0},
     animation=false)
     "Frame CS3 of ROCKER (nodeID 45:-:FOURBAR/RootPart::45(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-175})));
 
@@ -97,7 +97,7 @@ model Mechanics "Mechanical model of FOURBAR (4 bodies, 5 joints)"
     phi(start=0.0),
     w(start=0))
     "Joint COUPLER--ROCKER (nodeID 41:-:45)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-40,-50})));
-  Modelica.Mechanics.MultiBody.Joints.RevolutePlanarLoopConstraint RootPart_ROCKER(n={0.0, 0.0, -1.0})
+  Modelica.Mechanics.MultiBody.Joints.RevolutePlanarLoopConstraint RootPart_ROCKER(n={0.0, 0.0, -1.0}, animation=false)
     "Joint RootPart--ROCKER (nodeID 45:-:FOURBAR/RootPart): closes a planar loop" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-40,-75})));
 
   // Shapes: CAD meshes in each body frame, metres
@@ -145,6 +145,6 @@ equation
     Documentation(info="<html>
 <p>Converted by cad2mo 0.1.0 from <code>FOURBAR.xml</code> (SimMechanics), exported by SimMechanics Link Version 4.0 from Pro/E Wildfire Creo 2.0 - 2012360 on 03/14/24||10:20:30 by cad2mo.</p>
 <p>All quantities in SI units. Each body's frame_a is its CAD part frame CS1; joint start values reproduce the CAD pose.</p>
-<ul><li>Joint RootPart--ROCKER closes a planar revolute (emitted as RevolutePlanarLoopConstraint) loop.</li></ul>
+<ul><li>Joint RootPart--ROCKER closes a loop: a plain revolute would repeat 3 of its 5 equations (2 independent); the loop is planar (axes parallel within 1e-4 rad), so RevolutePlanarLoopConstraint imposes the 2 in-plane position equations.</li></ul>
 </html>"));
 end Mechanics;

@@ -13,15 +13,15 @@ model Mechanics "Mechanical model of CHAIN_IN (3 bodies, 3 joints)"
     "Assembly root RootPart (nodeID RootPart)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,0})));
   Modelica.Mechanics.MultiBody.Parts.Body LINK1(
     m=0.28759298472058,
-    r_CM={0.15239999999999998, 0.0, 0.0},
-    I_11=1.9327444438662193e-5, I_22=0.002616935953583689, I_33=0.0026285332630490875,
-    I_21=1.0842021724855044e-19, I_31=0.0, I_32=0.0,
+    r_CM={0.1524, 0.0, 0.0},
+    I_11=1.93274444386622e-5, I_22=0.00261693595358369, I_33=0.00262853326304909,
+    I_21=0.0, I_31=0.0, I_32=0.0,
     animation=false)
     "Part LINK1 (nodeID 39)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-25})));
   Modelica.Mechanics.MultiBody.Parts.Body LINK2(
     m=0.19910301003439,
-    r_CM={0.1016, -2.7755575615628914e-17, 0.0},
-    I_11=1.3380538457535359e-5, I_22=0.000869736755577719, I_33=0.0008777638612712817,
+    r_CM={0.1016, 0.0, 0.0},
+    I_11=1.33805384575354e-5, I_22=0.000869736755577719, I_33=0.000877763861271282,
     I_21=0.0, I_31=0.0, I_32=0.0,
     animation=false)
     "Part LINK2 (nodeID 40)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-50})));
@@ -34,22 +34,22 @@ model Mechanics "Mechanical model of CHAIN_IN (3 bodies, 3 joints)"
   Modelica.Mechanics.MultiBody.Parts.FixedRotation LINK1_CS2(
     r={0.0, 0.0, 0.0},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
-    n_x={0.34202014332566877, 0.9396926207859083, 0.0},
-    n_y={-0.9396926207859083, 0.34202014332566877, 0.0},
+    n_x={0.342020143325669, 0.939692620785908, 0.0},
+    n_y={-0.939692620785908, 0.342020143325669, 0.0},
     animation=false)
     "Frame CS2 of LINK1 (nodeID 39:-:RootPart::39(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-50})));
   Modelica.Mechanics.MultiBody.Parts.FixedRotation LINK1_CS3(
-    r={0.30479999999999996, 2.7755575615628914e-17, 0.0},
+    r={0.3048, 0.0, 0.0},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
-    n_x={0.34202014332566877, 0.9396926207859083, 0.0},
-    n_y={-0.9396926207859083, 0.34202014332566877, 0.0},
+    n_x={0.342020143325669, 0.939692620785908, 0.0},
+    n_y={-0.939692620785908, 0.342020143325669, 0.0},
     animation=false)
     "Frame CS3 of LINK1 (nodeID 39:-:40::39(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-75})));
   Modelica.Mechanics.MultiBody.Parts.FixedRotation LINK2_CS2(
     r={0.0, 0.0, 0.0},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
-    n_x={-0.49999999999999956, 0.8660254037844387, 0.0},
-    n_y={-0.8660254037844387, -0.49999999999999956, 0.0},
+    n_x={-0.5, 0.866025403784439, 0.0},
+    n_y={-0.866025403784439, -0.5, 0.0},
     animation=false)
     "Frame CS2 of LINK2 (nodeID 39:-:40::40(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-100})));
   Modelica.Mechanics.MultiBody.Parts.FixedTranslation RootPart_CS3(r={0.0, 0.508, 0.0}, animation=false)

@@ -12,17 +12,17 @@ model Mechanics "Mechanical model of LUMP (3 bodies, 3 joints)"
     animation=false)
     "Assembly root RootPart (nodeID LUMP/RootPart)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,0})));
   Modelica.Mechanics.MultiBody.Parts.Body UPPER_A(
-    m=0.8182510000000001,
-    r_CM={0.16482497424384446, -0.00013528856060057715, -2.7755575615628914e-17},
-    I_11=7.167347355634152e-5, I_22=0.00429287340868633, I_33=0.004292484782242673,
-    I_21=-1.049712464879231e-5, I_31=1.1197234928296679e-18, I_32=1.0531835189284184e-18,
+    m=0.818251,
+    r_CM={0.164824974243844, -0.000135288560600577, 0.0},
+    I_11=7.16734735563415e-5, I_22=0.00429287340868633, I_33=0.00429248478224267,
+    I_21=-1.04971246487923e-5, I_31=0.0, I_32=0.0,
     animation=false)
     "Part UPPER_A (nodeID 302)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-25})));
   Modelica.Mechanics.MultiBody.Parts.Body FORE(
     m=0.19008,
-    r_CM={0.10000000000000002, 6.938893903907228e-18, 1.3877787807814457e-17},
-    I_11=1.0391000000000004e-5, I_22=0.0007707110000000004, I_33=0.0007729920000000008,
-    I_21=0.0, I_31=2.752293016277455e-20, I_32=4.616929682237346e-21,
+    r_CM={0.1, 0.0, 0.0},
+    I_11=1.0391e-5, I_22=0.000770711, I_33=0.000772992000000001,
+    I_21=0.0, I_31=0.0, I_32=0.0,
     animation=false)
     "Part FORE (nodeID 304)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-50})));
 
@@ -32,22 +32,22 @@ model Mechanics "Mechanical model of LUMP (3 bodies, 3 joints)"
   Modelica.Mechanics.MultiBody.Parts.FixedRotation UPPER_A_CS2(
     r={0.0, 0.0, 0.0},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
-    n_x={1.942890293094024e-16, -5.551115123125783e-17, 1.0},
-    n_y={0.9284766908852593, 0.3713906763541036, -5.551115123125783e-17},
+    n_x={0.0, 0.0, 1.0},
+    n_y={0.928476690885259, 0.371390676354104, 0.0},
     animation=false)
     "Frame CS2 of UPPER_A (nodeID 302:-:LUMP/RootPart::302(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-25})));
   Modelica.Mechanics.MultiBody.Parts.FixedRotation UPPER_A_CS3(
-    r={0.26, 0.0, -5.551115123125783e-17},
+    r={0.26, 0.0, 0.0},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
-    n_x={1.942890293094024e-16, -5.551115123125783e-17, 1.0},
-    n_y={0.9284766908852593, 0.3713906763541036, -5.551115123125783e-17},
+    n_x={0.0, 0.0, 1.0},
+    n_y={0.928476690885259, 0.371390676354104, 0.0},
     animation=false)
     "Frame CS3 of UPPER_A (nodeID 303:-:304::303(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-50})));
   Modelica.Mechanics.MultiBody.Parts.FixedRotation FORE_CS2(
     r={0.0, 0.0, 0.0},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
-    n_x={4.5102810375396984e-17, 0.0, 1.0000000000000002},
-    n_y={0.28734788556634544, 0.9578262852211515, 0.0},
+    n_x={0.0, 0.0, 1.0},
+    n_y={0.287347885566345, 0.957826285221152, 0.0},
     animation=false)
     "Frame CS2 of FORE (nodeID 303:-:304::304(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-75})));
 

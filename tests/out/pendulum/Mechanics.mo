@@ -13,8 +13,8 @@ model Mechanics "Mechanical model of PENDULUM (2 bodies, 2 joints)"
     "Assembly root RootPart (nodeID PENDULUM/RootPart)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,0})));
   Modelica.Mechanics.MultiBody.Parts.Body LINK(
     m=0.2673,
-    r_CM={0.15000000000000002, 0.0, 0.0},
-    I_11=2.2274999999999993e-5, I_22=0.0024279799999999993, I_33=0.002445799999999999,
+    r_CM={0.15, 0.0, 0.0},
+    I_11=2.2275e-5, I_22=0.00242798, I_33=0.0024458,
     I_21=0.0, I_31=0.0, I_32=0.0,
     animation=false)
     "Part LINK (nodeID 23)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-25})));
@@ -27,8 +27,8 @@ model Mechanics "Mechanical model of PENDULUM (2 bodies, 2 joints)"
   Modelica.Mechanics.MultiBody.Parts.FixedRotation LINK_CS2(
     r={0.0, 0.0, 0.0},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
-    n_x={0.4999999999999999, 0.8660254037844386, 0.0},
-    n_y={-0.8660254037844386, 0.4999999999999999, 0.0},
+    n_x={0.5, 0.866025403784439, 0.0},
+    n_y={-0.866025403784439, 0.5, 0.0},
     animation=false)
     "Frame CS2 of LINK (nodeID 23:-:PENDULUM/RootPart::23(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-50})));
   Modelica.Mechanics.MultiBody.Parts.FixedTranslation RootPart_CS3(r={0.0, 0.5, 0.0}, animation=false)

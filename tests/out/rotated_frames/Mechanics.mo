@@ -13,23 +13,23 @@ model Mechanics "Mechanical model of ROT (4 bodies, 4 joints)"
     "Assembly root RootPart (nodeID ROT/RootPart)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,0})));
   Modelica.Mechanics.MultiBody.Parts.Body BRACKET(
     m=1.22148,
-    r_CM={0.038000000000000006, 0.07250000000000001, -0.006500000000000002},
-    I_11=0.0022949546724929655, I_22=0.0008062764690354197, I_33=0.002791588858471616,
-    I_21=2.4240084765814185e-11, I_31=7.897380038335636e-10, I_32=4.345082080595142e-10,
+    r_CM={0.038, 0.0725, -0.0065},
+    I_11=0.00229495467249297, I_22=0.00080627646903542, I_33=0.00279158885847162,
+    I_21=2.42400847658142e-11, I_31=7.89738003833564e-10, I_32=4.34508208059514e-10,
     animation=false)
     "Part BRACKET (nodeID 101)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-25})));
   Modelica.Mechanics.MultiBody.Parts.Body SLIDER(
     m=3.0555,
-    r_CM={0.051000000000000004, 0.017500000000000022, 0.024500000000000015},
-    I_11=0.0018276993982082363, I_22=0.005272013021169884, I_33=0.004385917580621877,
-    I_21=3.218586620747782e-9, I_31=2.890093902261151e-9, I_32=-3.0766796538846813e-9,
+    r_CM={0.051, 0.0175, 0.0245},
+    I_11=0.00182769939820824, I_22=0.00527201302116988, I_33=0.00438591758062188,
+    I_21=3.21858662074778e-9, I_31=2.89009390226115e-9, I_32=-3.07667965388468e-9,
     animation=false)
     "Part SLIDER (nodeID 102)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-50})));
   Modelica.Mechanics.MultiBody.Parts.Body TOOL(
     m=0.543629,
-    r_CM={-0.011999999999999988, 0.04199999999999999, 0.01199999999999999},
-    I_11=0.0005776968529561558, I_22=0.00017541091452303033, I_33=0.0005776962325208137,
-    I_21=1.835260851303826e-10, I_31=-3.1583591563475247e-11, I_32=1.6777137470079528e-10,
+    r_CM={-0.012, 0.042, 0.012},
+    I_11=0.000577696852956156, I_22=0.00017541091452303, I_33=0.000577696232520814,
+    I_21=1.83526085130383e-10, I_31=-3.15835915634752e-11, I_32=1.67771374700795e-10,
     animation=false)
     "Part TOOL (nodeID 103)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-75})));
 
@@ -38,79 +38,79 @@ model Mechanics "Mechanical model of ROT (4 bodies, 4 joints)"
     r={0.1, -0.05, 0.03},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
     n_x={1.0, 0.0, 0.0},
-    n_y={0.0, 2.220446049250313e-16, -1.0},
+    n_y={0.0, 0.0, -1.0},
     animation=false)
     "Ground RootGround (nodeID RootGround) in the world frame" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,0})));
   Modelica.Mechanics.MultiBody.Parts.FixedRotation RootPart_CS2(
     r={0.15, 0.02, -0.04},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
-    n_x={0.7504718954890314, 0.5655211363340804, 0.34202014332566877},
-    n_y={-0.501895475867953, 0.15097002674496557, 0.8516507396391466},
+    n_x={0.750471895489031, 0.56552113633408, 0.342020143325669},
+    n_y={-0.501895475867953, 0.150970026744966, 0.851650739639147},
     animation=false)
     "Frame CS2 of RootPart (nodeID 101:-:ROT/RootPart::ROT/RootPart(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-25})));
   Modelica.Mechanics.MultiBody.Parts.FixedRotation BRACKET_CS2(
-    r={0.013470770341104138, 0.015537903426925093, -0.010105043469118717},
+    r={0.0134707703411041, 0.0155379034269251, -0.0101050434691187},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
-    n_x={0.15930774407134057, 0.9614576685138584, 0.22409862635633318},
-    n_y={-0.9535864748050319, 0.0911076433392703, 0.28700563129331863},
+    n_x={0.159307744071341, 0.961457668513858, 0.224098626356333},
+    n_y={-0.953586474805032, 0.0911076433392703, 0.287005631293319},
     animation=false)
     "Frame CS2 of BRACKET (nodeID 101:-:ROT/RootPart::101(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-50})));
   Modelica.Mechanics.MultiBody.Parts.FixedRotation BRACKET_CS3(
-    r={0.062301151366221136, 0.12937216412189106, -0.00253173633336725},
+    r={0.0623011513662211, 0.129372164121891, -0.00253173633336725},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
-    n_x={-0.0586938877883621, -0.0961102165134004, -0.9936386938007369},
-    n_y={-0.9600072941811049, -0.26751826275125284, 0.08258313516466415},
+    n_x={-0.0586938877883621, -0.0961102165134004, -0.993638693800737},
+    n_y={-0.960007294181105, -0.267518262751253, 0.0825831351646641},
     animation=false)
     "Frame CS3 of BRACKET (nodeID 101:-:102::101(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-75})));
   Modelica.Mechanics.MultiBody.Parts.FixedRotation SLIDER_CS2(
-    r={0.0015333785166566083, 0.008513071404819508, 0.0004199590231210859},
+    r={0.00153337851665661, 0.00851307140481951, 0.000419959023121086},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
-    n_x={0.14413650748816745, 0.9597633553902065, -0.24099578597818916},
-    n_y={-0.24693614184172036, 0.2707194089062418, 0.9304480337416918},
+    n_x={0.144136507488167, 0.959763355390207, -0.240995785978189},
+    n_y={-0.24693614184172, 0.270719408906242, 0.930448033741692},
     animation=false)
     "Frame CS2 of SLIDER (nodeID 101:-:102::102(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-100})));
   Modelica.Mechanics.MultiBody.Parts.FixedRotation SLIDER_CS3(
-    r={0.10030388158786362, 0.02650994424788375, 0.04885032440406023},
+    r={0.100303881587864, 0.0265099442478837, 0.0488503244040602},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
-    n_x={-0.9186504594614032, -0.12754625123095076, -0.3739161498628856},
-    n_y={0.377469135251024, -0.562728220045927, -0.7354277682388576},
+    n_x={-0.918650459461403, -0.127546251230951, -0.373916149862886},
+    n_y={0.377469135251024, -0.562728220045927, -0.735427768238858},
     animation=false)
     "Frame CS3 of SLIDER (nodeID 102:-:103::102(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-125})));
   Modelica.Mechanics.MultiBody.Parts.FixedRotation TOOL_CS3(
     r={0.0, 0.0, 0.0},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
-    n_x={0.38514393444457373, -0.9228521311255888, 0.002844967049484781},
-    n_y={0.2172295814058922, 0.09365408824623347, 0.9716173221577451},
+    n_x={0.385143934444574, -0.922852131125589, 0.00284496704948478},
+    n_y={0.217229581405892, 0.0936540882462335, 0.971617322157745},
     animation=false)
     "Frame CS3 of TOOL (nodeID 102:-:103::103(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-150})));
   Modelica.Mechanics.MultiBody.Parts.FixedRotation RootPart_CS3(
     r={0.1, -0.05, 0.03},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
     n_x={1.0, 0.0, 0.0},
-    n_y={0.0, 2.220446049250313e-16, -1.0},
+    n_y={0.0, 0.0, -1.0},
     animation=false)
     "Frame CS3 of RootPart (nodeID ROT/RootPart:-:RootGround::ROT/RootPart(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-175})));
   Modelica.Mechanics.MultiBody.Parts.FixedRotation TOOL_TOOL_TIP(
-    r={-0.02354290319779692, 0.0835738646072377, 0.023688412011577842},
+    r={-0.0235429031977969, 0.0835738646072377, 0.0236884120115778},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
-    n_x={-0.01049152776008977, 0.47300130644820526, 0.8809992576293978},
-    n_y={0.08723074736349065, -0.8772560104996842, 0.4720303896536585},
+    n_x={-0.0104915277600898, 0.473001306448205, 0.880999257629398},
+    n_y={0.0872307473634907, -0.877256010499684, 0.472030389653659},
     animation=false)
     "Frame CS2 of TOOL (nodeID 126(USERADDED))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-200})));
 
   // Joints: base frame -> follower frame; start values reproduce the CAD pose
   ROT.Components.Revolute RootPart_BRACKET(
     n={0.0, 0.0, 1.0},
-    phi(start=0.5235987755982988, fixed=true),
+    phi(start=0.523598775598299, fixed=true),
     w(start=0, fixed=true))
     "Joint RootPart--BRACKET (nodeID 101:-:ROT/RootPart)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-40,0})));
   ROT.Components.Prismatic BRACKET_SLIDER(
-    n={-0.9199931398517658, -0.3349985881110967, 0.20344180639500115},
-    s(start=0.024999999999999994, fixed=true),
+    n={-0.919993139851766, -0.334998588111097, 0.203441806395001},
+    s(start=0.025, fixed=true),
     v(start=0, fixed=true))
     "Joint BRACKET--SLIDER (nodeID 101:-:102)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-40,-25})));
   ROT.Components.Revolute SLIDER_TOOL(
-    n={0.04483836055479218, 0.31596819202926274, 0.9477096723409113},
+    n={0.0448383605547922, 0.315968192029263, 0.947709672340911},
     phi(start=0.0, fixed=true),
     w(start=0, fixed=true))
     "Joint SLIDER--TOOL (nodeID 102:-:103)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-40,-50})));

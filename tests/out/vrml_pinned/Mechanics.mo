@@ -13,16 +13,16 @@ model Mechanics "Mechanical model of VASM (3 bodies, 3 joints)"
     "Assembly root RootPart (nodeID VASM/RootPart)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,0})));
   Modelica.Mechanics.MultiBody.Parts.Body BOLT(
     m=0.0162,
-    r_CM={8.673617379884035e-18, -6.938893903907228e-18, 0.03},
-    I_11=4.9950000000000005e-6, I_22=4.9950000000000005e-6, I_33=2.700000000000001e-7,
-    I_21=9.696756882411822e-22, I_31=-4.02787435231252e-22, I_32=-2.9116757561866574e-22,
+    r_CM={0.0, 0.0, 0.03},
+    I_11=4.995e-6, I_22=4.995e-6, I_33=2.7e-7,
+    I_21=0.0, I_31=0.0, I_32=0.0,
     animation=false)
     "Part BOLT (nodeID 201)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-25})));
   Modelica.Mechanics.MultiBody.Parts.Body NUT(
     m=0.015552,
-    r_CM={9.540979117872439e-18, -4.336808689942018e-18, 0.005000000000000004},
-    I_11=8.76096e-7, I_22=8.760960000000003e-7, I_33=1.492990000000001e-6,
-    I_21=1.4318830134756216e-22, I_31=-1.3762307845436316e-22, I_32=0.0,
+    r_CM={0.0, 0.0, 0.005},
+    I_11=8.76096e-7, I_22=8.76096e-7, I_33=1.49299e-6,
+    I_21=0.0, I_31=0.0, I_32=0.0,
     animation=false)
     "Part NUT (nodeID 202)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-50})));
 
@@ -30,15 +30,15 @@ model Mechanics "Mechanical model of VASM (3 bodies, 3 joints)"
   Modelica.Mechanics.MultiBody.Parts.FixedRotation RootPart_CS2(
     r={0.12, 0.04, -0.03},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
-    n_x={0.9063077870366499, 0.42261826174069944, -2.7755575615628914e-17},
-    n_y={-0.3237443709670646, 0.6942720440148841, 0.6427876096865393},
+    n_x={0.90630778703665, 0.422618261740699, 0.0},
+    n_y={-0.323744370967065, 0.694272044014884, 0.642787609686539},
     animation=false)
     "Frame CS2 of RootPart (nodeID 201:-:VASM/RootPart::VASM/RootPart(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,0})));
   Modelica.Mechanics.MultiBody.Parts.FixedRotation RootPart_CS3(
     r={0.12, 0.04, -0.03},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
-    n_x={0.9063077870366499, 0.42261826174069944, -2.7755575615628914e-17},
-    n_y={-0.3237443709670646, 0.6942720440148841, 0.6427876096865393},
+    n_x={0.90630778703665, 0.422618261740699, 0.0},
+    n_y={-0.323744370967065, 0.694272044014884, 0.642787609686539},
     animation=false)
     "Frame CS3 of RootPart (nodeID 202:-:VASM/RootPart::VASM/RootPart(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-25})));
 

@@ -13,23 +13,23 @@ model Mechanics "Mechanical model of VASM (4 bodies, 4 joints)"
     "Assembly root RootPart (nodeID VASM/RootPart)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,0})));
   Modelica.Mechanics.MultiBody.Parts.Body BRACKET(
     m=0.1296,
-    r_CM={0.06, -8.673617379884035e-19, 0.0},
-    I_11=1.0799999999999998e-5, I_22=0.0002775600000000001, I_33=0.0002862000000000001,
-    I_21=-2.0328790734103208e-20, I_31=-5.421010862427522e-20, I_32=0.0,
+    r_CM={0.06, 0.0, 0.0},
+    I_11=1.08e-5, I_22=0.00027756, I_33=0.0002862,
+    I_21=0.0, I_31=0.0, I_32=0.0,
     animation=false)
     "Part BRACKET (nodeID 101)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-25})));
   Modelica.Mechanics.MultiBody.Parts.Body SLIDER(
     m=0.0756,
-    r_CM={0.02499999999999999, -2.0816681711721685e-17, -2.2551405187698492e-17},
-    I_11=5.040000000000002e-6, I_22=3.338999999999999e-5, I_33=3.339e-5,
-    I_21=1.6940658945086007e-21, I_31=-1.6940658945086007e-21, I_32=1.6940658945086007e-21,
+    r_CM={0.025, 0.0, 0.0},
+    I_11=5.04e-6, I_22=3.339e-5, I_33=3.339e-5,
+    I_21=0.0, I_31=0.0, I_32=0.0,
     animation=false)
     "Part SLIDER (nodeID 102)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-50})));
   Modelica.Mechanics.MultiBody.Parts.Body TOOL(
     m=0.0677376,
-    r_CM={0.040999999999999995, -2.0816681711721685e-17, 0.0},
-    I_11=2.89014e-6, I_22=5.5657699999999994e-5, I_33=5.565770000000001e-5,
-    I_21=1.6940658945086007e-21, I_31=-6.776263578034403e-21, I_32=0.0,
+    r_CM={0.041, 0.0, 0.0},
+    I_11=2.89014e-6, I_22=5.56577e-5, I_33=5.56577e-5,
+    I_21=0.0, I_31=0.0, I_32=0.0,
     animation=false)
     "Part TOOL (nodeID 103)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-75})));
 
@@ -37,22 +37,22 @@ model Mechanics "Mechanical model of VASM (4 bodies, 4 joints)"
   Modelica.Mechanics.MultiBody.Parts.FixedRotation RootPart_CS2(
     r={0.15, 0.02, -0.04},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
-    n_x={0.9457352705922856, 0.027827688097937786, -0.32374437096706465},
-    n_y={0.19826689127414615, 0.7399421116938482, 0.6427876096865394},
+    n_x={0.945735270592286, 0.0278276880979378, -0.323744370967065},
+    n_y={0.198266891274146, 0.739942111693848, 0.642787609686539},
     animation=false)
     "Frame CS2 of RootPart (nodeID 101:-:VASM/RootPart::VASM/RootPart(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,0})));
   Modelica.Mechanics.MultiBody.Parts.FixedRotation BRACKET_CS3(
-    r={0.13865048785232284, 0.05511265621777477, -0.007977301732681928},
+    r={0.138650487852323, 0.0551126562177748, -0.00797730173268193},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
-    n_x={-0.033724395124422324, 0.97092882126416, -0.23698077814894836},
-    n_y={-0.29580256991935966, -0.23618893555111567, -0.9255893400165829},
+    n_x={-0.0337243951244223, 0.97092882126416, -0.236980778148948},
+    n_y={-0.29580256991936, -0.236188935551116, -0.925589340016583},
     animation=false)
     "Frame CS3 of BRACKET (nodeID 101:-:102::101(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-25})));
   Modelica.Mechanics.MultiBody.Parts.FixedRotation SLIDER_CS3(
-    r={0.10550678380293146, 0.016698974566565272, 0.050144419629572834},
+    r={0.105506783802931, 0.0166989745665653, 0.0501444196295728},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
-    n_x={-0.16722280402450435, 0.5611926683443818, -0.8106166312201439},
-    n_y={0.9266957074557398, 0.3701351787990739, 0.06507699438728914},
+    n_x={-0.167222804024504, 0.561192668344382, -0.810616631220144},
+    n_y={0.92669570745574, 0.370135178799074, 0.0650769943872891},
     animation=false)
     "Frame CS3 of SLIDER (nodeID 102:-:103::102(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-50})));
 

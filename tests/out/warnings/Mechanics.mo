@@ -20,26 +20,26 @@ model Mechanics "Mechanical model of WARN (6 bodies, 6 joints)"
     "Part ASYM (nodeID 501)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-25})));
   Modelica.Mechanics.MultiBody.Parts.Body TRI(
     m=0.0648,
-    r_CM={0.04999999999999999, 0.0, 0.0},
+    r_CM={0.05, 0.0, 0.0},
     I_11=5.4e-7, I_22=7.83e-5, I_33=7.992e-5,
     I_21=0.0, I_31=0.0, I_32=0.0,
     animation=false)
     "Part TRI (nodeID 502)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-50})));
   Modelica.Mechanics.MultiBody.Parts.Body GHOST(
     m=0.0648,
-    r_CM={0.04999999999999999, 0.0, 0.0},
+    r_CM={0.05, 0.0, 0.0},
     I_11=2.7e-6, I_22=7.83e-5, I_33=7.992e-5,
     I_21=0.0, I_31=0.0, I_32=0.0)
     "Part GHOST (nodeID 503)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-75})));
   Modelica.Mechanics.MultiBody.Parts.Body BARE(
     m=0.0648,
-    r_CM={0.050000000000000044, 0.0, 0.0},
+    r_CM={0.05, 0.0, 0.0},
     I_11=2.7e-6, I_22=7.83e-5, I_33=7.992e-5,
     I_21=0.0, I_31=0.0, I_32=0.0)
     "Part BARE (nodeID 504)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-100})));
   Modelica.Mechanics.MultiBody.Parts.Body NOMAT(
     m=12.5,
-    r_CM={0.0020000000000000018, 0.0, 0.0},
+    r_CM={0.002, 0.0, 0.0},
     I_11=2.63021e-5, I_22=2.63021e-5, I_33=5.20833e-5,
     I_21=0.0, I_31=0.0, I_32=0.0,
     animation=false)
@@ -50,9 +50,9 @@ model Mechanics "Mechanical model of WARN (6 bodies, 6 joints)"
     "Frame CS3 of ASYM (nodeID 501:-:502::501(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,0})));
   Modelica.Mechanics.MultiBody.Parts.FixedTranslation TRI_CS3(r={0.1, 0.0, 0.0}, animation=false)
     "Frame CS3 of TRI (nodeID 502:-:503::502(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-25})));
-  Modelica.Mechanics.MultiBody.Parts.FixedTranslation GHOST_CS3(r={0.09999999999999998, 0.0, 0.0}, animation=false)
+  Modelica.Mechanics.MultiBody.Parts.FixedTranslation GHOST_CS3(r={0.1, 0.0, 0.0}, animation=false)
     "Frame CS3 of GHOST (nodeID 503:-:504::503(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-50})));
-  Modelica.Mechanics.MultiBody.Parts.FixedTranslation BARE_CS3(r={0.10000000000000003, 0.0, 0.0}, animation=false)
+  Modelica.Mechanics.MultiBody.Parts.FixedTranslation BARE_CS3(r={0.1, 0.0, 0.0}, animation=false)
     "Frame CS3 of BARE (nodeID 504:-:505::504(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-75})));
 
   // Joints: base frame -> follower frame; start values reproduce the CAD pose

@@ -4,7 +4,7 @@
 import { unzipSync } from 'fflate';
 import { STLLoader } from 'three/addons/loaders/STLLoader.js';
 import { api, download, enc } from '../api.js';
-import { h, fill, errorBox, say, tabs, num } from '../ui.js';
+import { h, fill, errorBox, say, tabs, num, plural } from '../ui.js';
 import { Viewer, niceStep } from '../viewer/viewer.js';
 import { coordinates } from '../viewer/kinematics.js';
 import { renderDrives } from './drives.js';
@@ -201,7 +201,22 @@ export async function renderViewer(main, id, v, initialTab) {
       h('li', {}, h('code', {}, w.code), ' ', w.message, w.location ? h('small', { class: 'muted' }, ` (${w.location})`) : null, ' ', link(subject(w), subject(w) ? 'show' : null)),
     );
     const loops = report.loops.map((l) =>
-      h('li', {}, `${l.kind} loop closed by `, link({ kind: 'joint', name: l.closing_joint }), ': ', l.joints.map((j, i) => [i ? ' → ' : '', link({ kind: 'joint', name: j })])),
+      h(
+        'li',
+        {},
+        `${l.kind} loop closed by `,
+        link({ kind: 'joint', name: l.closing_joint }),
+        ': ',
+        l.joints.map((j, i) => [i ? ' → ' : '', link({ kind: 'joint', name: j })]),
+        h(
+          'div',
+          { class: 'loop-facts' },
+          l.kind === 'rigid'
+            ? `welds only; cut: ${l.cut}`
+            : `rank ${l.rank} of ${plural(l.coordinates, 'coordinate')}, mobility ${l.mobility}; ${l.independent_equations} of ${l.closing_equations} closing equations independent; cut: ${l.cut}`,
+        ),
+        h('small', { class: l.redundant_emitted ? 'warn' : 'muted' }, l.why),
+      ),
     );
     const free = report.free_bodies.map((b) => h('li', {}, link({ kind: 'body', name: b }), ' is connected to nothing (a free body)'));
     const matches = [];

@@ -2,10 +2,9 @@
 // upload, the diff between versions and the state of its drive assignments.
 
 import { api, download, enc } from '../api.js';
-import { h, fill, errorBox, say, confirmAction, when, bytes, newId, num } from '../ui.js';
+import { h, fill, errorBox, say, confirmAction, when, bytes, newId, num, plural } from '../ui.js';
 import { uploadZone } from './upload.js';
 
-const plural = (n, one, many = `${one}s`) => `${n} ${n === 1 ? one : many}`;
 const statusBadge = (s) => h('span', { class: `badge badge-${s}` }, s);
 
 /** Fields of the diff, as people read them: label, unit and scale of numbers. */
