@@ -125,12 +125,13 @@ pub struct DrivableJoint {
     pub label: String,
 }
 
-/// Every revolute and prismatic element of a report (`report.json` as JSON; planar-loop
-/// constraints have no flange).
+/// Every revolute and prismatic element of a report (`report.json` as JSON). Loop cuts emitted
+/// as constraints (`revolute-planar-loop-constraint`, `constraint-*`) or omitted have no flange.
 pub fn drivable_joints(report: &Json) -> Vec<DrivableJoint> {
     let mut out = Vec::new();
     for j in report["joints"].as_array().into_iter().flatten() {
-        if j["emitted_as"] == "revolute-planar-loop-constraint" {
+        let emitted = j["emitted_as"].as_str().unwrap_or_default();
+        if emitted == "revolute-planar-loop-constraint" || emitted.starts_with("constraint-") || emitted.starts_with("omitted") {
             continue;
         }
         let cad = j["cad_name"].as_str().unwrap_or_default();
@@ -216,4 +217,25 @@ pub async fn resolve_for_model(store: &crate::store::Store, model_id: &str) -> R
         out.push(ResolvedDrive { joint: a.joint, motor, gear, controller, reference: a.reference });
     }
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::pipeline::front::bundle::Limits;
+
+    /// Loop cuts emitted as constraints have no drive flange, so they are never offered.
+    #[test]
+    fn loop_cuts_are_not_drivable() {
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/in");
+        for (case, cut, other) in [("immobile_leg", "SHANK_RootPart", "RootPart_HIP"), ("slider_crank", "ROD_PISTON", "PISTON_RootPart")] {
+            let bundle = crate::cli::read_bundle(&root.join(case), &Limits::default()).expect("bundle");
+            let opts = crate::pipeline::Options { write_shapes: false, ..Default::default() };
+            let out = crate::pipeline::convert(&bundle, &opts).expect("converts");
+            let report = serde_json::to_value(&out.report).expect("json");
+            let names: Vec<String> = drivable_joints(&report).into_iter().map(|j| j.name).collect();
+            assert!(!names.iter().any(|n| n == cut), "{case}: {names:?}");
+            assert!(names.iter().any(|n| n == other), "{case}: {names:?}");
+        }
+    }
 }

@@ -250,6 +250,9 @@ impl Writer<'_> {
         let mut prev = base;
         // Fixed transform from the last element's frame_b to the follower frame.
         let mut offset = chain.residual;
+        // Helper components after the elements in `joint_elements` (whose first entries match
+        // the chain's elements one to one).
+        let mut extra = Vec::new();
         for (k, e) in chain.elements.iter().enumerate() {
             let name = if count == 1 { jname.to_string() } else { self.scope.take(&format!("{jname}_{}", k + 1)) };
             let fixed = if e.fixed { ", fixed=true" } else { "" };
@@ -273,7 +276,7 @@ impl Writer<'_> {
                         self.fixed(&axes_name, &axes, &format!("Axes of the loop cut {name}"));
                         self.connect(&prev, &format!("{axes_name}.frame_a"));
                         prev = format!("{axes_name}.frame_b");
-                        self.layout.joint_elements[jid.index()].push(axes_name);
+                        extra.push(axes_name);
                     }
                     let mut params = Vec::new();
                     match cc.class {
@@ -361,8 +364,9 @@ impl Writer<'_> {
             self.fixed(&name, &offset, &format!("CAD offset of joint {what} at its start values"));
             self.connect(&prev, &format!("{name}.frame_a"));
             self.connect(&format!("{name}.frame_b"), &follower);
-            self.layout.joint_elements[jid.index()].push(name);
+            extra.push(name);
         }
+        self.layout.joint_elements[jid.index()].extend(extra);
     }
 }
 
