@@ -511,6 +511,16 @@ fn choose_cuts(
             why: String::new(),
         };
         let chosen = if independent == 0 {
+            if !closing.is_weld() {
+                warnings.push(Warning::new(
+                    "loop-joint-omitted",
+                    format!(
+                        "joint \"{}\" cannot move: the joints it closes a loop with already fix its two sides to each other, so it is not emitted",
+                        closing.cad_name
+                    ),
+                    format!("{} (joint nodeID \"{}\")", closing.loc, closing.node_id),
+                ));
+            }
             Some(Candidate { cut: Cut::Omitted, wrenches: Vec::new() })
         } else if redundant == 0 {
             Some(Candidate { cut: Cut::Joint, wrenches: plain.clone() })
@@ -654,5 +664,90 @@ fn fix_independent(h: &Hierarchy, chains: &mut [Chain], a: &DMatrix<f64>, column
                 }
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::pipeline::front::bundle::Limits;
+    use crate::pipeline::ir::{Joint, Primitive, SourceLoc};
+
+    fn model(case: &str) -> Model {
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/in").join(case);
+        let bundle = crate::cli::read_bundle(&dir, &Limits::default()).expect("bundle");
+        let xml = bundle.paths().find(|p| p.ends_with(".xml")).expect("xml").to_string();
+        crate::pipeline::front::simmechanics::parse(&xml, bundle.get(&xml).unwrap_or_default()).expect("parses").0
+    }
+
+    fn joint_named<'a>(m: &'a mut Model, name: &str) -> &'a mut Joint {
+        m.joints.iter_mut().find(|j| j.cad_name == name).expect("joint")
+    }
+
+    fn only_loop(p: &Planned) -> (&hierarchy::Loop, &LoopInfo) {
+        let i = p.hierarchy.loops.iter().position(|l| l.kind == LoopKind::Kinematic).expect("a kinematic loop");
+        (&p.hierarchy.loops[i], &p.loops.loops[i])
+    }
+
+    #[test]
+    fn planar_within_the_data_precision_only() {
+        // 5e-5 rad off parallel: planar at 6-digit precision, and emitted exactly planar.
+        let mut m = model("fourbar");
+        joint_named(&mut m, "CRANK--COUPLER").primitives[0].axis_world = Vector3::new(5e-5, 0.0, 1.0);
+        let p = plan(&m);
+        let (l, info) = only_loop(&p);
+        assert_eq!(info.cut, Cut::PlanarLoopConstraint);
+        assert_eq!((info.rank, info.mobility, info.independent), (3, 1, 2));
+        let n = info.planar_normal.expect("normal");
+        for j in std::iter::once(&l.closing).chain(&l.path) {
+            for e in &p.chains[j.index()].elements {
+                assert!(e.axis_world.cross(&n).norm() < 1e-15, "{:?}", e.axis_world);
+            }
+        }
+        // 1e-3 rad off: a spatial loop of four revolutes, immobile; the cut imposes 3 forces.
+        let mut m = model("fourbar");
+        joint_named(&mut m, "CRANK--COUPLER").primitives[0].axis_world = Vector3::new(1e-3, 0.0, 1.0);
+        let p = plan(&m);
+        let (_, info) = only_loop(&p);
+        assert_eq!((info.rank, info.mobility, info.independent, info.planar_normal), (4, 0, 3, None));
+        assert!(matches!(&info.cut, Cut::Constraint(c) if c.class == ConstraintClass::Spherical && c.locked == [true; 3]), "{:?}", info.cut);
+    }
+
+    #[test]
+    fn a_cut_moves_off_a_joint_of_several_elements() {
+        let mut m = model("fourbar");
+        // The closing joint becomes a universal joint: the cut moves to a single revolute and the
+        // universal joint joins the tree.
+        let closing = plan(&m).hierarchy.loops[0].closing;
+        m.joints[closing.index()].primitives.push(Primitive { kind: PrimitiveKind::Revolute, axis_world: Vector3::x(), loc: SourceLoc::default() });
+        let p = plan(&m);
+        let (l, info) = only_loop(&p);
+        assert_ne!(l.closing, closing);
+        assert!(l.path.contains(&closing));
+        assert_eq!(p.chains[l.closing.index()].elements.len(), 1);
+        // The universal's second axis leaves the plane, so the loop has rank 4 of 5 coordinates
+        // (mobility 1: the planar motion) and the closing revolute adds 4 - 1 = 3 independent
+        // equations of its 5: three forces, no moment.
+        assert_eq!((info.coordinates, info.rank, info.mobility, info.independent), (5, 4, 1, 3), "{info:?}");
+        assert!(matches!(&info.cut, Cut::Constraint(c) if c.class == ConstraintClass::Spherical), "{:?}", info.cut);
+    }
+
+    #[test]
+    fn a_joint_the_rest_already_implies_is_omitted() {
+        // A revolute doubled by a weld between the same two bodies: it can never move.
+        let mut m = model("pendulum");
+        let mut weld = m.joints[0].clone();
+        weld.node_id = format!("{}-weld", weld.node_id);
+        weld.primitives = vec![Primitive { kind: PrimitiveKind::Weld, axis_world: Vector3::zeros(), loc: SourceLoc::default() }];
+        let revolute = m.joints.iter().position(|j| !j.is_weld()).expect("revolute");
+        weld.base = m.joints[revolute].base;
+        weld.follower = m.joints[revolute].follower;
+        m.joints.push(weld);
+        let p = plan(&m);
+        let (l, info) = only_loop(&p);
+        assert_eq!(l.closing.index(), revolute);
+        assert_eq!((info.independent, info.cut.clone()), (0, Cut::Omitted));
+        assert_eq!(p.warnings.len(), 1, "{:?}", p.warnings);
+        assert_eq!(p.warnings[0].code, "loop-joint-omitted");
     }
 }
