@@ -83,6 +83,8 @@ pub enum ConvertError {
     Matching(#[from] passes::geometry_match::MatchError),
     #[error("mechatronic model: {0}")]
     Mechatronics(#[from] back::modelica::mechatronics::MechatronicsError),
+    #[error(transparent)]
+    Loops(#[from] passes::loops::TooManyLoops),
     #[error("invalid option: {0}")]
     Options(String),
 }
@@ -180,7 +182,7 @@ pub fn analyse_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
         merged = lumped.merged;
         absorbed = lumped.absorbed;
     }
-    let planned = passes::loops::plan(&model);
+    let planned = passes::loops::plan(&model)?;
     warnings.extend(planned.warnings);
     let analysis = Analysis { hierarchy: planned.hierarchy, chains: planned.chains, loops: planned.loops };
     let validated = valid::validate(&model, analysis)?;

@@ -95,22 +95,8 @@ model Mechanics "Mechanical model of LEG (4 bodies, 5 joints)"
     phi(start=0.0),
     w(start=0))
     "Joint THIGH--SHANK (nodeID 81:-:82)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-40,-50})));
-  Modelica.Mechanics.MultiBody.Parts.FixedRotation SHANK_RootPart_axes(
-    r={0.0, 0.0, 0.0},
-    rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
-    n_x={0.816496580927726, -0.408248290463863, -0.408248290463863},
-    n_y={0.0, 0.707106781186547, -0.707106781186547},
-    animation=false)
-    "Axes of the loop cut SHANK_RootPart" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-175})));
   Modelica.Mechanics.MultiBody.Joints.Constraints.Spherical SHANK_RootPart(x_locked=true, y_locked=true, z_locked=true, animation=false)
     "Joint SHANK--RootPart (nodeID 82:-:LEG/RootPart): closes a loop, imposing only its independent equations" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-40,-75})));
-  Modelica.Mechanics.MultiBody.Parts.FixedRotation SHANK_RootPart_offset(
-    r={0.0, 0.0, 0.0},
-    rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
-    n_x={0.816496580927726, 0.0, 0.577350269189626},
-    n_y={-0.408248290463863, 0.707106781186547, 0.577350269189626},
-    animation=false)
-    "CAD offset of joint SHANK--RootPart (nodeID 82:-:LEG/RootPart) at its start values" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-200})));
 
   // Shapes: CAD meshes in each body frame, metres
   Modelica.Mechanics.MultiBody.Visualizers.FixedShape HIP_shape(
@@ -146,10 +132,8 @@ equation
   connect(HIP_THIGH.frame_b, THIGH_CS2.frame_b);
   connect(THIGH_CS3.frame_b, THIGH_SHANK.frame_a);
   connect(THIGH_SHANK.frame_b, SHANK_CS2.frame_b);
-  connect(SHANK_CS3.frame_b, SHANK_RootPart_axes.frame_a);
-  connect(SHANK_RootPart_axes.frame_b, SHANK_RootPart.frame_a);
-  connect(SHANK_RootPart.frame_b, SHANK_RootPart_offset.frame_a);
-  connect(SHANK_RootPart_offset.frame_b, RootPart_CS3.frame_b);
+  connect(SHANK_CS3.frame_b, SHANK_RootPart.frame_a);
+  connect(SHANK_RootPart.frame_b, RootPart_CS3.frame_b);
   connect(HIP.frame_a, HIP_shape.frame_a);
   connect(THIGH.frame_a, THIGH_shape.frame_a);
   connect(SHANK.frame_a, SHANK_shape.frame_a);

@@ -21,11 +21,23 @@
 use std::collections::BTreeSet;
 use std::fmt::Write as _;
 
-use nalgebra::{DMatrix, Matrix3, Rotation3, UnitQuaternion, Vector3, Vector6};
+use nalgebra::{DMatrix, DVector, Matrix3, Rotation3, UnitQuaternion, Vector3, Vector6};
 
 use super::hierarchy::{self, Hierarchy, LoopKind};
 use super::kinematics::{self, Chain, Element};
 use crate::pipeline::ir::{JointId, Model, PrimitiveKind, Warning};
+
+/// Most independent kinematic loops analysed in one model. Real mechanisms have a few; an export
+/// with thousands of overlapping loops is refused rather than analysed for minutes.
+pub const MAX_LOOPS: usize = 256;
+
+/// A model beyond what the loop analysis takes.
+#[derive(Debug, thiserror::Error, PartialEq)]
+#[error("{file}: the joints form {loops} independent closed loops; at most {MAX_LOOPS} are supported (a real mechanism has a few: check the export for duplicated joints)")]
+pub struct TooManyLoops {
+    pub file: String,
+    pub loops: usize,
+}
 
 /// Singular values below this (of twists with lengths scaled by the loops' size) count as zero.
 pub const RANK_TOL: f64 = 1e-4;
@@ -120,9 +132,13 @@ pub struct Planned {
 
 /// Builds the tree, moves cuts to joints that can take an exact cut, makes planar loops exactly
 /// planar, and chooses every cut and every fixed start value.
-pub fn plan(model: &Model) -> Planned {
+pub fn plan(model: &Model) -> Result<Planned, TooManyLoops> {
     let mut cut_last = BTreeSet::new();
     let mut hierarchy = hierarchy::build(model);
+    let loops = hierarchy.loops.iter().filter(|l| l.kind == LoopKind::Kinematic).count();
+    if loops > MAX_LOOPS {
+        return Err(TooManyLoops { file: model.source.file.clone(), loops });
+    }
     let mut chains: Vec<Chain> = model.joints.iter().map(|j| kinematics::chain(model, j)).collect();
     // Each pass only adds joints to `cut_last`, so this ends; three passes suffice in practice.
     for _ in 0..4 {
@@ -139,7 +155,7 @@ pub fn plan(model: &Model) -> Planned {
     }
     let normals = snap_planar(model, &hierarchy, &mut chains);
     let (loops, warnings) = choose_cuts(model, &hierarchy, &mut chains, &normals);
-    Planned { hierarchy, chains, loops: LoopAnalysis { loops }, warnings }
+    Ok(Planned { hierarchy, chains, loops: LoopAnalysis { loops }, warnings })
 }
 
 /// Movable elements of a joint's chain.
@@ -321,15 +337,48 @@ fn annihilator(t: &[Vector6<f64>]) -> Vec<Vector6<f64>> {
         .collect()
 }
 
-/// Appends rows `w . M` to `a`.
-fn with_rows(a: &DMatrix<f64>, wrenches: &[Vector6<f64>], m: &DMatrix<f64>) -> DMatrix<f64> {
-    let mut out = DMatrix::zeros(a.nrows() + wrenches.len(), m.ncols());
-    out.rows_mut(0, a.nrows()).copy_from(a);
-    for (i, w) in wrenches.iter().enumerate() {
-        let row = w.transpose() * m;
-        out.row_mut(a.nrows() + i).copy_from(&row);
+/// The rows `w . M` of constraint wrenches acting through the relative-twist map `m`.
+fn rows_of(wrenches: &[Vector6<f64>], m: &DMatrix<f64>) -> Vec<DVector<f64>> {
+    wrenches.iter().map(|w| (w.transpose() * m).transpose()).collect()
+}
+
+/// An orthonormal basis of the span of the rows accepted so far, grown one loop at a time, so that
+/// testing a loop's rows costs a projection, not a decomposition of everything before it.
+struct RowBasis {
+    basis: Vec<DVector<f64>>,
+    /// The accepted rows themselves (the cut equations on the tree coordinates).
+    rows: Vec<DVector<f64>>,
+}
+
+impl RowBasis {
+    /// The parts of `rows` independent of the basis, orthonormalised: as many as `rows` adds to
+    /// the rank (singular values above [`RANK_TOL`]).
+    fn gain(&self, rows: &[DVector<f64>]) -> Vec<DVector<f64>> {
+        let Some(first) = rows.first() else { return Vec::new() };
+        let mut m = DMatrix::<f64>::zeros(rows.len(), first.len());
+        for (i, r) in rows.iter().enumerate() {
+            let mut p = r.clone();
+            for b in &self.basis {
+                p -= b * b.dot(&p);
+            }
+            m.set_row(i, &p.transpose());
+        }
+        if m.ncols() == 0 {
+            return Vec::new();
+        }
+        let svd = m.svd(false, true);
+        let Some(v_t) = svd.v_t else { return Vec::new() };
+        (0..svd.singular_values.len())
+            .filter(|&i| svd.singular_values[i] > RANK_TOL)
+            .map(|i| v_t.row(i).transpose())
+            .collect()
     }
-    out
+
+    fn accept(&mut self, rows: Vec<DVector<f64>>) {
+        let gained = self.gain(&rows);
+        self.basis.extend(gained);
+        self.rows.extend(rows);
+    }
 }
 
 /// A candidate cut: the form and its constraint wrenches (world, scaled).
@@ -413,8 +462,12 @@ fn candidates(e: &Element, frame_a: &Matrix3<f64>, planar: Option<Vector3<f64>>,
                 let mut w: Vec<Vector6<f64>> = (0..3).filter(|&i| locked[i]).map(|i| force(p, &axes[i])).collect();
                 w.extend((0..3).filter(|&i| m[i]).map(|i| moment(&axes[i])));
                 let unit = |i: usize| Vector3::from_fn(|r, _| if r == i { 1.0 } else { 0.0 });
+                // Locking every translation (or none) without a moment does not depend on the
+                // axes: keep the element's own frame, so no extra rotation is emitted.
+                let any_axes = *class == ConstraintClass::Spherical && (locked.iter().all(|l| *l) || locked.iter().all(|l| !*l));
+                let axes = if any_axes { UnitQuaternion::identity() } else { rel };
                 out.push(Candidate {
-                    cut: Cut::Constraint(ConstraintCut { class: *class, axes: rel, locked: *locked, n: unit(*n), n_b: unit(*n_b) }),
+                    cut: Cut::Constraint(ConstraintCut { class: *class, axes, locked: *locked, n: unit(*n), n_b: unit(*n_b) }),
                     wrenches: w,
                 });
             }
@@ -457,7 +510,7 @@ fn choose_cuts(
         }
     }
     let ncols = columns.len();
-    let mut a = DMatrix::<f64>::zeros(0, ncols);
+    let mut a = RowBasis { basis: Vec::new(), rows: Vec::new() };
     let mut infos = Vec::new();
     let mut warnings = Vec::new();
     for (i, l) in h.loops.iter().enumerate() {
@@ -497,7 +550,7 @@ fn choose_cuts(
         let loop_rank = rank(&DMatrix::from_fn(6, coordinates.max(1), |r, k| own.get(k).map_or(0.0, |t| t[r])));
         let closing_equations = 6 - dof(cchain).min(6);
         let plain = annihilator(&twists(cchain, &c, len));
-        let independent = rank(&with_rows(&a, &plain, &m)) - a.nrows();
+        let independent = a.gain(&rows_of(&plain, &m)).len();
         let redundant = closing_equations.saturating_sub(independent);
         let plain_name = describe(cchain);
         let mut info = LoopInfo {
@@ -531,18 +584,18 @@ fn choose_cuts(
             candidates(e, &frame_a, normals[i], &p)
                 .into_iter()
                 .filter(|cand| cand.wrenches.len() == independent)
-                .find(|cand| rank(&with_rows(&a, &cand.wrenches, &m)) == a.nrows() + independent)
+                .find(|cand| a.gain(&rows_of(&cand.wrenches, &m)).len() == independent)
         } else {
             None
         };
         match chosen {
             Some(cand) => {
                 info.why = explain(&cand.cut, &plain_name, closing_equations, independent, normals[i].is_some());
-                a = with_rows(&a, &cand.wrenches, &m);
+                a.accept(rows_of(&cand.wrenches, &m));
                 info.cut = cand.cut;
             }
             None => {
-                a = with_rows(&a, &plain, &m);
+                a.accept(rows_of(&plain, &m));
                 let names: Vec<&str> = loop_joints(l).iter().map(|j| model.joint(*j).cad_name.as_str()).collect();
                 info.why = format!(
                     "a plain {plain_name} would impose {closing_equations} equations of which only {independent} are independent, and no MSL cut imposes exactly those: emitted as it is, with {redundant} redundant"
@@ -560,7 +613,7 @@ fn choose_cuts(
         }
         infos.push(info);
     }
-    fix_independent(h, chains, &a, &columns);
+    fix_independent(h, chains, &a.rows, &columns);
     (infos, warnings)
 }
 
@@ -609,54 +662,12 @@ fn explain(cut: &Cut, plain: &str, equations: usize, k: usize, planar: bool) -> 
 /// Marks the start values of loop coordinates: the dependent ones (a set of columns on which the
 /// cut equations have full rank, chosen far from the ground first, spherical elements always) get
 /// only a guess, the independent ones stay fixed. Closing joints are never fixed.
-fn fix_independent(h: &Hierarchy, chains: &mut [Chain], a: &DMatrix<f64>, columns: &[(JointId, usize, Vector6<f64>)]) {
+fn fix_independent(h: &Hierarchy, chains: &mut [Chain], rows: &[DVector<f64>], columns: &[(JointId, usize, Vector6<f64>)]) {
     for l in h.loops.iter().filter(|l| l.kind == LoopKind::Kinematic) {
         for e in &mut chains[l.closing.index()].elements {
             e.fixed = false;
         }
-    }
-    if a.nrows() == 0 {
-        return;
-    }
-    let bfs_rank = |j: JointId| h.tree.iter().position(|t| *t == j).unwrap_or(usize::MAX);
-    // Element index within its joint for each column (sphericals span three columns).
-    let element_of = |j: JointId, col: usize| {
-        let mut k = 0;
-        let mut seen = 0;
-        for (i, e) in chains[j.index()].elements.iter().enumerate() {
-            let n = if e.kind == PrimitiveKind::Spherical { 3 } else { 1 };
-            if col < seen + n {
-                k = i;
-                break;
-            }
-            seen += n;
-        }
-        k
-    };
-    let mut order: Vec<usize> = (0..columns.len()).collect();
-    let spherical = |c: usize| chains[columns[c].0.index()].elements[element_of(columns[c].0, columns[c].1)].kind == PrimitiveKind::Spherical;
-    order.sort_by_key(|&c| (!spherical(c), std::cmp::Reverse(bfs_rank(columns[c].0)), std::cmp::Reverse(columns[c].1)));
-    let mut dependent: Vec<usize> = Vec::new();
-    let mut got = 0;
-    for c in order {
-        if got == a.nrows() {
-            break;
-        }
-        let mut trial = dependent.clone();
-        trial.push(c);
-        let sub = DMatrix::from_fn(a.nrows(), trial.len(), |r, k| a[(r, trial[k])]);
-        let r = rank(&sub);
-        if r > got {
-            got = r;
-            dependent = trial;
-        }
-    }
-    let free: Vec<(JointId, usize)> = dependent.iter().map(|&c| (columns[c].0, element_of(columns[c].0, columns[c].1))).collect();
-    for (j, k) in free {
-        chains[j.index()].elements[k].fixed = false;
-    }
-    // Spherical elements in loops have no states to fix.
-    for l in h.loops.iter().filter(|l| l.kind == LoopKind::Kinematic) {
+        // Spherical elements in loops have no states to fix.
         for j in &l.path {
             for e in &mut chains[j.index()].elements {
                 if e.kind == PrimitiveKind::Spherical {
@@ -664,6 +675,46 @@ fn fix_independent(h: &Hierarchy, chains: &mut [Chain], a: &DMatrix<f64>, column
                 }
             }
         }
+    }
+    let needed = RowBasis { basis: Vec::new(), rows: Vec::new() }.gain(rows).len();
+    if needed == 0 {
+        return;
+    }
+    // Column `c` of the equations, and the chain element it moves.
+    let column = |c: usize| DVector::from_iterator(rows.len(), rows.iter().map(|r| r[c]));
+    let element_of = |j: JointId, col: usize| {
+        let mut seen = 0;
+        for (i, e) in chains[j.index()].elements.iter().enumerate() {
+            seen += if e.kind == PrimitiveKind::Spherical { 3 } else { 1 };
+            if col < seen {
+                return i;
+            }
+        }
+        0
+    };
+    let bfs_rank = |j: JointId| h.tree.iter().position(|t| *t == j).unwrap_or(usize::MAX);
+    let spherical = |c: usize| chains[columns[c].0.index()].elements[element_of(columns[c].0, columns[c].1)].kind == PrimitiveKind::Spherical;
+    let mut order: Vec<usize> = (0..columns.len()).collect();
+    order.sort_by_key(|&c| (!spherical(c), std::cmp::Reverse(bfs_rank(columns[c].0)), std::cmp::Reverse(columns[c].1)));
+    // Greedy: a column is dependent when it adds to the rank of the dependent columns so far.
+    let mut basis: Vec<DVector<f64>> = Vec::new();
+    let mut free = Vec::new();
+    for c in order {
+        if basis.len() == needed {
+            break;
+        }
+        let mut p = column(c);
+        for b in &basis {
+            p -= b * b.dot(&p);
+        }
+        let norm = p.norm();
+        if norm > RANK_TOL {
+            basis.push(p / norm);
+            free.push((columns[c].0, element_of(columns[c].0, columns[c].1)));
+        }
+    }
+    for (j, k) in free {
+        chains[j.index()].elements[k].fixed = false;
     }
 }
 
@@ -694,7 +745,7 @@ mod tests {
         // 5e-5 rad off parallel: planar at 6-digit precision, and emitted exactly planar.
         let mut m = model("fourbar");
         joint_named(&mut m, "CRANK--COUPLER").primitives[0].axis_world = Vector3::new(5e-5, 0.0, 1.0);
-        let p = plan(&m);
+        let p = plan(&m).expect("plan");
         let (l, info) = only_loop(&p);
         assert_eq!(info.cut, Cut::PlanarLoopConstraint);
         assert_eq!((info.rank, info.mobility, info.independent), (3, 1, 2));
@@ -707,7 +758,7 @@ mod tests {
         // 1e-3 rad off: a spatial loop of four revolutes, immobile; the cut imposes 3 forces.
         let mut m = model("fourbar");
         joint_named(&mut m, "CRANK--COUPLER").primitives[0].axis_world = Vector3::new(1e-3, 0.0, 1.0);
-        let p = plan(&m);
+        let p = plan(&m).expect("plan");
         let (_, info) = only_loop(&p);
         assert_eq!((info.rank, info.mobility, info.independent, info.planar_normal), (4, 0, 3, None));
         assert!(matches!(&info.cut, Cut::Constraint(c) if c.class == ConstraintClass::Spherical && c.locked == [true; 3]), "{:?}", info.cut);
@@ -718,9 +769,9 @@ mod tests {
         let mut m = model("fourbar");
         // The closing joint becomes a universal joint: the cut moves to a single revolute and the
         // universal joint joins the tree.
-        let closing = plan(&m).hierarchy.loops[0].closing;
+        let closing = plan(&m).expect("plan").hierarchy.loops[0].closing;
         m.joints[closing.index()].primitives.push(Primitive { kind: PrimitiveKind::Revolute, axis_world: Vector3::x(), loc: SourceLoc::default() });
-        let p = plan(&m);
+        let p = plan(&m).expect("plan");
         let (l, info) = only_loop(&p);
         assert_ne!(l.closing, closing);
         assert!(l.path.contains(&closing));
@@ -743,7 +794,7 @@ mod tests {
         weld.base = m.joints[revolute].base;
         weld.follower = m.joints[revolute].follower;
         m.joints.push(weld);
-        let p = plan(&m);
+        let p = plan(&m).expect("plan");
         let (l, info) = only_loop(&p);
         assert_eq!(l.closing.index(), revolute);
         assert_eq!((info.independent, info.cut.clone()), (0, Cut::Omitted));
