@@ -2,7 +2,7 @@
 //!
 //! ```text
 //! Bundle ──front::simmechanics──▶ ir::Model ──passes::geometry (front::stl)──▶ meshes
-//!        ──[passes::lump]──▶ passes::hierarchy + passes::kinematics ──valid──▶ Validated
+//!        ──[passes::lump]──▶ passes::loops (hierarchy + kinematics + cuts) ──valid──▶ Validated
 //!        ──back::modelica + back::dxf + back::stl──▶ files ──report──▶ report.json
 //! ```
 //!
