@@ -214,6 +214,7 @@ class Body:
         self.mass_text = None  # overrides
         self.inertia_text = None
         self.volume_text = None
+        self.mass_units = None
 
 
 class Ground:
@@ -489,7 +490,7 @@ class Model:
         w('%s<nodeID>"%s"</nodeID>' % (q, b.node_id))
         w('%s<status>""</status>' % q)
         w("%s<mass>%s</mass>" % (q, b.mass_text or g6(b.mass)))
-        w('%s<massUnits>"%s"</massUnits>' % (q, u["mass"]))
+        w('%s<massUnits>"%s"</massUnits>' % (q, b.mass_units or u["mass"]))
         w("%s<inertia>%s</inertia>" % (q, b.inertia_text or vec([b.inertia[i][j] for i in range(3) for j in range(3)], g6)))
         w('%s<inertiaUnits>"%s"</inertiaUnits>' % (q, u["inertia"]))
         w("%s<volume>%s</volume>" % (q, b.volume_text or g6(b.volume)))
@@ -1243,6 +1244,32 @@ def case_broken_ambiguous_mesh():
                "flaw": '"part.stl" matches a/PART.stl and b/part.STL'}, None, "BROKEN.xml"
 
 
+def case_broken_mass_overflow():
+    m, arm, j = small_model()
+    arm.mass_text = "1.7e308"
+    arm.mass_units = "slug"
+    return m, {"error_contains": "not a finite number",
+               "flaw": "ARM's mass is 1.7e308 slug, which overflows to infinity in kg"}, None, "BROKEN.xml"
+
+
+def case_broken_far_frame():
+    m, arm, j = small_model()
+    m.finish()
+    arm.frames[1].over["position"] = "0,2000000000,0"
+    return m, {"error_contains": "beyond any real machine",
+               "flaw": "ARM's CS1 frame is 2e9 mm (2000 km) from the origin"}, None, "BROKEN.xml"
+
+
+def case_broken_nan_stl():
+    m, arm, j = small_model(mesh_name="ARM_prt.stl")
+    data = bytearray(box_stl("ARM", (-10.0, -10.0, -5.0), (160.0, 10.0, 5.0), "binary"))
+    # The first triangle's second vertex x becomes NaN (offset: header 80 + count 4 + normal 12).
+    data[96:100] = struct.pack("<f", float("nan"))
+    m.meshes["ARM_prt.stl"] = bytes(data)
+    return m, {"error_contains": "not finite",
+               "flaw": "ARM_prt.stl (binary) has a NaN vertex coordinate"}, None, "BROKEN.xml"
+
+
 CASES = [
     ("pendulum", case_pendulum),
     ("fourbar", case_fourbar),
@@ -1264,6 +1291,9 @@ CASES = [
     ("broken_nan", case_broken_nan),
     ("broken_two_xml", case_broken_two_xml),
     ("broken_ambiguous_mesh", case_broken_ambiguous_mesh),
+    ("broken_mass_overflow", case_broken_mass_overflow),
+    ("broken_far_frame", case_broken_far_frame),
+    ("broken_nan_stl", case_broken_nan_stl),
 ]
 
 README_TEXT = {
@@ -1286,6 +1316,9 @@ README_TEXT = {
     "broken_non_world": "A frame with `positionReferenceFrame \"CS1\"` instead of `\"WORLD\"`: an explicit unsupported error, not a silent misreading.",
     "broken_nan": "The CG frame of `ARM` has position `x,nan,z`. Non-finite numbers must be rejected.",
     "broken_two_xml": "Two valid PhysicalModelingXMLFile exports (`FIRST.xml`, `SECOND.xml`) in one bundle: the converter must refuse to guess.",
+    "broken_mass_overflow": "`ARM` has mass `1.7e308` in `slug`: finite as written, infinite in kg. Conversion must fail naming the body, not write `m=inf`.",
+    "broken_far_frame": "`ARM`'s CS1 frame lies 2e9 mm (2,000 km) from the origin: beyond any real machine (a unit error or a corrupt export). Conversion must fail naming the frame.",
+    "broken_nan_stl": "`ARM_prt.stl` is a binary STL whose first triangle has a NaN coordinate. Conversion must fail naming the mesh, not write NaN into the DXF and STL.",
     "broken_ambiguous_mesh": "The XML names `part.stl`; the bundle holds `a/PART.stl` and `b/part.STL`, both matches of the case-insensitive sub-folder lookup. Conversion must fail naming the ambiguity rather than pick one.",
 }
 

@@ -115,6 +115,12 @@ impl ConvertError {
             ConvertError::Vrml(e) => {
                 Diagnostic { file: e.file.clone(), line: e.line, column: e.column, message: e.kind.to_string() }
             }
+            ConvertError::Validation(e) => {
+                let loc = e.loc();
+                let text = e.to_string();
+                let message = text.strip_prefix(&format!("{loc}: ")).unwrap_or(&text).to_string();
+                Diagnostic { file: loc.file.clone(), line: loc.line, column: loc.column, message }
+            }
             ConvertError::Bundle(BundleError::Ambiguous { referenced_from, .. }) => {
                 Diagnostic { file: referenced_from.clone(), line: 0, column: 0, message: self.to_string() }
             }

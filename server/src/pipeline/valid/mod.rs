@@ -6,7 +6,7 @@
 
 use nalgebra::{Matrix3, SymmetricEigen};
 
-use crate::pipeline::ir::{Body, Model, PrimitiveKind, Warning};
+use crate::pipeline::ir::{Body, Model, PrimitiveKind, SourceLoc, Warning};
 use crate::pipeline::passes::hierarchy::{self, Hierarchy, LoopKind, Node};
 use crate::pipeline::passes::kinematics::{self, Chain};
 use crate::pipeline::passes::loops::LoopAnalysis;
@@ -30,12 +30,100 @@ pub struct Validated {
 
 #[derive(Debug, thiserror::Error, PartialEq)]
 pub enum ValidationError {
-    #[error("{location}: joint \"{joint}\" connects a {what} to itself (base and follower frames {base} and {follower} both belong to it)")]
-    SelfJoint { location: String, joint: String, what: &'static str, base: String, follower: String },
-    #[error("{location}: body \"{body}\" has negative mass {mass} kg")]
-    NegativeMass { location: String, body: String, mass: f64 },
-    #[error("{location}: the model has no bodies")]
-    Empty { location: String },
+    #[error("{loc}: joint \"{joint}\" connects a {what} to itself (base and follower frames {base} and {follower} both belong to it)")]
+    SelfJoint { loc: SourceLoc, joint: String, what: &'static str, base: String, follower: String },
+    #[error("{loc}: body \"{body}\" has negative mass {} kg", readable(*mass))]
+    NegativeMass { loc: SourceLoc, body: String, mass: f64 },
+    #[error("{loc}: the model has no bodies")]
+    Empty { loc: SourceLoc },
+    /// A value that is not a finite number after unit conversion (e.g. `1.7e308` slug).
+    #[error("{loc}: {what} is not a finite number after conversion to SI units ({value})")]
+    NotFinite { loc: SourceLoc, what: String, value: String },
+    /// A magnitude beyond any real machine: a unit error or a corrupt export.
+    #[error("{loc}: {what} is {} {unit}, beyond any real machine (at most {} {unit}); check the export's units", readable(*value), readable(*limit))]
+    Implausible { loc: SourceLoc, what: String, value: f64, limit: f64, unit: &'static str },
+}
+
+impl ValidationError {
+    /// Where in the source the problem is.
+    pub fn loc(&self) -> &SourceLoc {
+        match self {
+            ValidationError::SelfJoint { loc, .. }
+            | ValidationError::NegativeMass { loc, .. }
+            | ValidationError::Empty { loc }
+            | ValidationError::NotFinite { loc, .. }
+            | ValidationError::Implausible { loc, .. } => loc,
+        }
+    }
+}
+
+/// Largest distance from the world origin of any frame or mesh vertex, m.
+pub const MAX_LENGTH_M: f64 = 1e5;
+/// Largest body mass, kg (the heaviest machines weigh about 1e7 kg).
+pub const MAX_MASS_KG: f64 = 1e9;
+/// Largest inertia tensor entry, kg·m².
+pub const MAX_INERTIA: f64 = 1e15;
+/// Largest volume, m³, and surface area, m².
+pub const MAX_VOLUME_M3: f64 = 1e9;
+pub const MAX_AREA_M2: f64 = 1e10;
+
+/// A number for a message: plain in the usual range, with an exponent outside it, never a
+/// 300-digit expansion of a denormal.
+pub fn readable(x: f64) -> String {
+    if x == 0.0 || (1e-4..1e7).contains(&x.abs()) {
+        let r: f64 = format!("{x:.6e}").parse().unwrap_or(x);
+        format!("{r}")
+    } else {
+        format!("{x:.6e}")
+    }
+}
+
+/// Every number of the model is finite and within what a real machine can have.
+fn check_magnitudes(model: &Model) -> Result<(), ValidationError> {
+    fn check(loc: &SourceLoc, what: &dyn Fn() -> String, value: f64, limit: f64, unit: &'static str) -> Result<(), ValidationError> {
+        if !value.is_finite() {
+            return Err(ValidationError::NotFinite { loc: loc.clone(), what: what(), value: format!("{value}") });
+        }
+        if value.abs() > limit {
+            return Err(ValidationError::Implausible { loc: loc.clone(), what: what(), value, limit, unit });
+        }
+        Ok(())
+    }
+    for f in &model.frames {
+        let what = || format!("the position of frame \"{}\" (nodeID \"{}\")", f.name, f.node_id);
+        check(&f.loc, &what, f.pose.translation.vector.norm(), MAX_LENGTH_M, "m")?;
+        let q = f.pose.rotation.quaternion();
+        let what = || format!("the orientation of frame \"{}\" (nodeID \"{}\")", f.name, f.node_id);
+        check(&f.loc, &what, q.norm(), 2.0, "")?;
+    }
+    for b in &model.bodies {
+        let name = || format!("body \"{}\" (nodeID \"{}\")", b.cad_name, b.node_id);
+        check(&b.loc, &|| format!("the mass of {}", name()), b.mass, MAX_MASS_KG, "kg")?;
+        for v in b.inertia_cg.iter() {
+            check(&b.loc, &|| format!("an inertia entry of {}", name()), *v, MAX_INERTIA, "kg*m^2")?;
+        }
+        if let Some(v) = b.volume {
+            check(&b.loc, &|| format!("the volume of {}", name()), v, MAX_VOLUME_M3, "m^3")?;
+        }
+        if let Some(a) = b.surface_area {
+            check(&b.loc, &|| format!("the surface area of {}", name()), a, MAX_AREA_M2, "m^2")?;
+        }
+        if let Some(mesh) = &b.mesh {
+            // The largest coordinate, or the first one that is not finite.
+            let worst = mesh.vertices.iter().flatten().map(|c| f64::from(c.abs())).find(|c| !c.is_finite()).unwrap_or_else(|| {
+                mesh.vertices.iter().flatten().map(|c| f64::from(c.abs())).fold(0.0, f64::max)
+            });
+            let what = || format!("a vertex coordinate of the mesh of {} ({})", name(), b.geometry_sources.join(", "));
+            check(&b.loc, &what, worst, MAX_LENGTH_M, "m")?;
+        }
+    }
+    for j in &model.joints {
+        for p in &j.primitives {
+            let what = || format!("the axis of a {} primitive of joint \"{}\" (nodeID \"{}\")", p.kind.as_str(), j.cad_name, j.node_id);
+            check(&p.loc, &what, p.axis_world.norm(), f64::MAX, "")?;
+        }
+    }
+    Ok(())
 }
 
 /// Densities (kg/m³) at which mass and volume are numerically equal in a common unit pair: the
@@ -52,13 +140,14 @@ const UNIT_DENSITIES: &[(f64, &str)] = &[
 
 pub fn validate(model: &Model, analysis: Analysis) -> Result<Validated, ValidationError> {
     if model.bodies.is_empty() {
-        return Err(ValidationError::Empty { location: model.source.file.clone() });
+        return Err(ValidationError::Empty { loc: SourceLoc { file: model.source.file.clone(), line: 0, column: 0 } });
     }
+    check_magnitudes(model)?;
     let mut warnings = Vec::new();
     for body in &model.bodies {
         if body.mass < 0.0 {
             return Err(ValidationError::NegativeMass {
-                location: body.loc.to_string(),
+                loc: body.loc.clone(),
                 body: body.cad_name.clone(),
                 mass: body.mass,
             });
@@ -71,7 +160,7 @@ pub fn validate(model: &Model, analysis: Analysis) -> Result<Validated, Validati
         let location = format!("{} (joint \"{}\", nodeID \"{}\")", joint.loc, joint.cad_name, joint.node_id);
         if a == b {
             return Err(ValidationError::SelfJoint {
-                location: joint.loc.to_string(),
+                loc: joint.loc.clone(),
                 joint: joint.cad_name.clone(),
                 what: if matches!(a, Node::Body(_)) { "body" } else { "ground" },
                 base: model.frame(joint.base).name.clone(),
@@ -86,9 +175,9 @@ pub fn validate(model: &Model, analysis: Analysis) -> Result<Validated, Validati
                     format!(
                         "{} primitive has axis ({}, {}, {}), which has no direction; it is emitted as rigid",
                         p.kind.as_str(),
-                        p.axis_world.x,
-                        p.axis_world.y,
-                        p.axis_world.z
+                        readable(p.axis_world.x),
+                        readable(p.axis_world.y),
+                        readable(p.axis_world.z)
                     ),
                     location.clone(),
                 ));
@@ -208,7 +297,8 @@ fn check_density(body: &Body, warnings: &mut Vec<Warning>) {
         warnings.push(Warning::new(
             "no-material",
             format!(
-                "mass equals volume numerically ({units}; density {density:.6e} kg/m^3): the part probably has no material assigned in CAD, so its mass and inertia are wrong"
+                "mass equals volume numerically ({units}; density {} kg/m^3): the part probably has no material assigned in CAD, so its mass and inertia are wrong",
+                readable(density)
             ),
             body_location(body),
         ));
@@ -216,8 +306,10 @@ fn check_density(body: &Body, warnings: &mut Vec<Warning>) {
         warnings.push(Warning::new(
             "density-implausible",
             format!(
-                "density {density:.6e} kg/m^3 (mass {} kg, volume {:e} m^3) is outside 100..25000 kg/m^3",
-                body.mass, volume
+                "density {} kg/m^3 (mass {} kg, volume {} m^3) is outside 100..25000 kg/m^3",
+                readable(density),
+                readable(body.mass),
+                readable(volume)
             ),
             body_location(body),
         ));
