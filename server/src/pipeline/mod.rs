@@ -32,6 +32,9 @@ use valid::{Analysis, Validated, ValidationError};
 /// The converter's version, written into every package and report.
 pub const VERSION: &str = env!("CARGO_PKG_VERSION");
 
+/// Longest diagnostic message (bytes); longer ones are clipped with a note of what was cut.
+pub const MAX_MESSAGE_BYTES: usize = 4096;
+
 /// Conversion options.
 #[derive(Clone, Debug)]
 pub struct Options {
@@ -126,7 +129,8 @@ impl ConvertError {
             }
             _ => Diagnostic { file: String::new(), line: 0, column: 0, message: self.to_string() },
         };
-        vec![d]
+        // Messages stay bounded whatever the input (an element path or a list can be long).
+        vec![Diagnostic { message: ir::clip(&d.message, MAX_MESSAGE_BYTES), file: ir::clip(&d.file, 1024), ..d }]
     }
 }
 

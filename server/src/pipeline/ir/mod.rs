@@ -77,6 +77,27 @@ pub fn fmt_location(f: &mut std::fmt::Formatter<'_>, file: &str, line: u32, colu
     }
 }
 
+/// At most `max` items joined with `, `, then "and N more": lists in messages stay bounded.
+pub fn bounded_list<S: AsRef<str>>(items: &[S], max: usize) -> String {
+    let mut out = items.iter().take(max).map(AsRef::as_ref).collect::<Vec<_>>().join(", ");
+    if items.len() > max {
+        out.push_str(&format!(" and {} more", items.len() - max));
+    }
+    out
+}
+
+/// `s` cut to at most `max` bytes (at a character boundary), saying how much was cut.
+pub fn clip(s: &str, max: usize) -> String {
+    if s.len() <= max {
+        return s.to_string();
+    }
+    let mut end = max;
+    while !s.is_char_boundary(end) {
+        end -= 1;
+    }
+    format!("{} ... ({} more bytes)", &s[..end], s.len() - end)
+}
+
 /// Facts about the export itself, copied verbatim from the XML header.
 #[derive(Clone, Debug, Default, Serialize)]
 pub struct SourceInfo {
@@ -321,5 +342,18 @@ pub struct Warning {
 impl Warning {
     pub fn new(code: &'static str, message: impl Into<String>, location: impl Into<String>) -> Self {
         Warning { code, message: message.into(), location: location.into() }
+    }
+}
+
+#[cfg(test)]
+mod message_tests {
+    use super::*;
+
+    #[test]
+    fn messages_stay_bounded() {
+        assert_eq!(bounded_list(&["a", "b", "c"], 5), "a, b, c");
+        assert_eq!(bounded_list(&["a", "b", "c"], 2), "a, b and 1 more");
+        assert_eq!(clip("héllo", 10), "héllo");
+        assert_eq!(clip("héllo", 2), "h ... (5 more bytes)");
     }
 }

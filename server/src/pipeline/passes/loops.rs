@@ -31,12 +31,16 @@ use crate::pipeline::ir::{JointId, Model, PrimitiveKind, Warning};
 /// with thousands of overlapping loops is refused rather than analysed for minutes.
 pub const MAX_LOOPS: usize = 256;
 
+/// Most loop joints (summed over the loops) analysed in one model.
+pub const MAX_LOOP_JOINTS: usize = 100_000;
+
 /// A model beyond what the loop analysis takes.
 #[derive(Debug, thiserror::Error, PartialEq)]
-#[error("{file}: the joints form {loops} independent closed loops; at most {MAX_LOOPS} are supported (a real mechanism has a few: check the export for duplicated joints)")]
+#[error("{file}: the joints form {loops} independent closed loops through {joints} joints in all; at most {MAX_LOOPS} loops and {MAX_LOOP_JOINTS} loop joints are supported (a real mechanism has a few loops: check the export for duplicated joints)")]
 pub struct TooManyLoops {
     pub file: String,
     pub loops: usize,
+    pub joints: usize,
 }
 
 /// Singular values below this (of twists with lengths scaled by the loops' size) count as zero.
@@ -135,9 +139,10 @@ pub struct Planned {
 pub fn plan(model: &Model) -> Result<Planned, TooManyLoops> {
     let mut cut_last = BTreeSet::new();
     let mut hierarchy = hierarchy::build(model);
-    let loops = hierarchy.loops.iter().filter(|l| l.kind == LoopKind::Kinematic).count();
-    if loops > MAX_LOOPS {
-        return Err(TooManyLoops { file: model.source.file.clone(), loops });
+    let kinematic = || hierarchy.loops.iter().filter(|l| l.kind == LoopKind::Kinematic);
+    let (loops, joints) = (kinematic().count(), kinematic().map(|l| l.path.len() + 1).sum::<usize>());
+    if loops > MAX_LOOPS || joints > MAX_LOOP_JOINTS {
+        return Err(TooManyLoops { file: model.source.file.clone(), loops, joints });
     }
     let mut chains: Vec<Chain> = model.joints.iter().map(|j| kinematics::chain(model, j)).collect();
     // Each pass only adds joints to `cut_last`, so this ends; three passes suffice in practice.
@@ -604,7 +609,7 @@ fn choose_cuts(
                     "loop-redundant",
                     format!(
                         "the loop through joints {} is closed by \"{}\" with {redundant} redundant constraint equations (rank {loop_rank} of {coordinates} coordinates): Modelica tools may report the model as structurally singular",
-                        names.iter().map(|n| format!("\"{n}\"")).collect::<Vec<_>>().join(", "),
+                        crate::pipeline::ir::bounded_list(&names.iter().map(|n| format!("\"{n}\"")).collect::<Vec<_>>(), 20),
                         closing.cad_name
                     ),
                     format!("{} (joint nodeID \"{}\")", closing.loc, closing.node_id),
@@ -738,6 +743,21 @@ mod tests {
     fn only_loop(p: &Planned) -> (&hierarchy::Loop, &LoopInfo) {
         let i = p.hierarchy.loops.iter().position(|l| l.kind == LoopKind::Kinematic).expect("a kinematic loop");
         (&p.hierarchy.loops[i], &p.loops.loops[i])
+    }
+
+    #[test]
+    fn thousands_of_loops_are_refused_early() {
+        // One body hinged to the ground by 300 parallel revolutes: 299 independent loops.
+        let mut m = model("pendulum");
+        let revolute = m.joints.iter().position(|j| !j.is_weld()).expect("revolute");
+        for k in 0..299 {
+            let mut j = m.joints[revolute].clone();
+            j.node_id = format!("{}-{k:03}", j.node_id);
+            m.joints.push(j);
+        }
+        let e = plan(&m).err().expect("refused");
+        assert_eq!((e.loops, e.joints), (299, 598));
+        assert!(e.to_string().contains("at most 256 loops"), "{e}");
     }
 
     #[test]

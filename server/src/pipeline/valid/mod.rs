@@ -207,7 +207,7 @@ pub fn validate(model: &Model, analysis: Analysis) -> Result<Validated, Validati
             format!(
                 "{} bodies have no path to a ground and float freely from their CAD pose (6 degrees of freedom per free group): {}",
                 free.len(),
-                names.join(", ")
+                crate::pipeline::ir::bounded_list(&names, 20)
             ),
             model.source.file.clone(),
         ));
@@ -221,7 +221,7 @@ pub fn validate(model: &Model, analysis: Analysis) -> Result<Validated, Validati
     if !without.is_empty() {
         warnings.push(Warning::new(
             "no-geometry",
-            format!("{} bodies have no geometry: {}", without.len(), without.join(", ")),
+            format!("{} bodies have no geometry: {}", without.len(), crate::pipeline::ir::bounded_list(&without, 20)),
             model.source.file.clone(),
         ));
     }

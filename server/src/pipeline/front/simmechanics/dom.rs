@@ -15,6 +15,12 @@ pub(crate) type NodeId = u32;
 /// Marks "no node" in the links below.
 const NONE: u32 = u32::MAX;
 
+/// Most elements read (32 bytes each: 128 MiB of tree). A real export has a few hundred
+/// thousand; a file of millions of tiny elements is refused before the tree outgrows memory.
+pub(crate) const MAX_ELEMENTS: usize = 4_000_000;
+/// Deepest element nesting (real exports nest about 15 deep).
+pub(crate) const MAX_NESTING: usize = 256;
+
 /// One element. Offsets are into [`Doc::bytes`].
 #[derive(Clone, Copy, Debug)]
 struct Node {
@@ -109,7 +115,7 @@ impl<'a> Doc<'a> {
     pub fn build(bytes: &'a [u8]) -> Result<Doc<'a>, Box<BuildError<'a>>> {
         let mut doc = Doc {
             bytes,
-            nodes: Vec::with_capacity(bytes.len() / 48 + 16),
+            nodes: Vec::with_capacity((bytes.len() / 48 + 16).min(MAX_ELEMENTS)),
         };
         let mut reader = Reader::from_reader(bytes);
         // (node, last child so far) of every open element, innermost last.
@@ -160,6 +166,12 @@ impl<'a> Doc<'a> {
             };
             if root_done {
                 return fail(doc, &stack, before, "a second root element".into());
+            }
+            if doc.nodes.len() >= MAX_ELEMENTS {
+                return fail(doc, &stack, before, format!("more than {MAX_ELEMENTS} elements: far beyond a real export"));
+            }
+            if !empty && stack.len() >= MAX_NESTING {
+                return fail(doc, &stack, before, format!("elements nested more than {MAX_NESTING} deep: far beyond a real export"));
             }
             let id = doc.nodes.len() as u32;
             let name_end = (before + 1 + name_len) as u32;
@@ -344,5 +356,34 @@ mod tests {
         assert!(!err.message.is_empty());
         assert!(Doc::build(b"<r></q>").is_err());
         assert!(Doc::build(b"").is_err());
+    }
+}
+
+#[cfg(test)]
+mod limit_tests {
+    use super::*;
+
+    fn build_error(text: &str) -> String {
+        match Doc::build(text.as_bytes()) {
+            Ok(_) => "built".to_string(),
+            Err(e) => e.message,
+        }
+    }
+
+    #[test]
+    fn nesting_is_bounded() {
+        let ok = format!("<r>{}{}</r>", "<a>".repeat(MAX_NESTING - 2), "</a>".repeat(MAX_NESTING - 2));
+        assert_eq!(build_error(&ok), "built");
+        // An unclosed file a million elements deep is refused at the limit, not read to the end.
+        let deep = format!("<r>{}", "<a>".repeat(1_000_000));
+        assert!(build_error(&deep).contains(&format!("nested more than {MAX_NESTING} deep")));
+    }
+
+    #[test]
+    fn element_count_is_bounded() {
+        let many = format!("<r>{}</r>", "<a/>".repeat(MAX_ELEMENTS));
+        assert!(build_error(&many).contains(&format!("more than {MAX_ELEMENTS} elements")));
+        let fewer = format!("<r>{}</r>", "<a/>".repeat(MAX_ELEMENTS - 1));
+        assert_eq!(build_error(&fewer), "built");
     }
 }

@@ -45,8 +45,8 @@ pub enum XmlErrorKind {
     /// Text that must be read is not UTF-8.
     #[error("text is not valid UTF-8")]
     InvalidUtf8,
-    /// The file is larger than this front end can address (4 GiB).
-    #[error("file too large ({size} bytes; the limit is 4 GiB)")]
+    /// The file is larger than any real export (256 MiB).
+    #[error("file too large ({size} bytes; the limit is 256 MiB)")]
     TooLarge { size: usize },
     /// The root element is something other than `PhysicalModelingXMLFile`.
     #[error("not a first-generation SimMechanics XML file: the root element is <{root}>, expected <PhysicalModelingXMLFile>")]

@@ -52,6 +52,9 @@ pub use error::{XmlError, XmlErrorKind};
 use crate::pipeline::ir;
 use dom::{Doc, Root};
 
+/// Largest XML file read (real exports are a few MB; the element tree's offsets are `u32`).
+pub const MAX_XML_BYTES: usize = 256 << 20;
+
 /// Root element name of first-generation files.
 const ROOT: &[u8] = b"PhysicalModelingXMLFile";
 /// Root element name of second-generation (Simscape Multibody import) files.
@@ -63,7 +66,7 @@ const SECOND_GENERATION_ROOT: &[u8] = b"SimMechanicsImportXML";
 /// `frame-not-orthonormal` and `joint-element-skipped`) come back next to the model.
 pub fn parse(file: &str, bytes: &[u8]) -> Result<(ir::Model, Vec<ir::Warning>), XmlError> {
     let bytes = strip_bom(bytes);
-    if u32::try_from(bytes.len()).is_err() {
+    if bytes.len() > MAX_XML_BYTES {
         let kind = XmlErrorKind::TooLarge { size: bytes.len() };
         return Err(XmlError {
             file: file.to_owned(),
