@@ -87,6 +87,34 @@ fn truth_scanner_reads_columns() {
     assert!((r - f.rotation).norm() < TOL);
 }
 
+/// The truth scanner resolves frames given relative to a sibling frame and ADJOINING.
+#[test]
+fn truth_scanner_resolves_relative_frames() {
+    let frame = |r: &str, name: &str, node: &str, pos: &str, o: &str, refs: [&str; 3]| {
+        format!(
+            "<Frame{r}><name>\"{name}\"</name><nodeID>\"{node}\"</nodeID><position>{pos}</position><positionOrigin>\"{}\"</positionOrigin><positionReferenceFrame>\"{}\"</positionReferenceFrame><positionUnits>\"mm\"</positionUnits><orientation>{o}</orientation><orientationReferenceFrame>\"{}\"</orientationReferenceFrame></Frame>",
+            refs[0], refs[1], refs[2]
+        )
+    };
+    let (w, rz90, id) = (["WORLD"; 3], "0,1,0,-1,0,0,0,0,1", "1,0,0,0,1,0,0,0,1");
+    let xml = format!(
+        "<Body><nodeID>\"A\"</nodeID>{}{}</Body><Body><nodeID>\"B\"</nodeID>{}{}</Body><SimpleJoint><base><Frame ref=\"1\"></Frame></base><follower><Frame ref=\"2\"></Frame></follower></SimpleJoint>",
+        frame(" ref=\"1\"", "CS1", "a1", "10,0,0", rz90, w),
+        frame("", "CG", "acg", "0,0,1", id, ["WORLD", "CS1", "CS1"]),
+        frame(" ref=\"2\"", "CS1", "b1", "2,0,0", rz90, ["ADJOINING"; 3]),
+        frame("", "CG", "bcg", "1,0,0", id, ["CS1", "WORLD", "WORLD"]),
+    );
+    let f = xml_frames(&xml);
+    let near = |a: Vector3<f64>, b: [f64; 3]| (a - Vector3::from(b) * 1e-3).norm() < 1e-15;
+    assert!(near(f["acg"].position, [0.0, 0.0, 1.0]), "{}", f["acg"].position);
+    assert!((f["acg"].rotation.column(0) - Vector3::new(0.0, 1.0, 0.0)).norm() < 1e-15);
+    // b1: 2 mm along a1's x axis (world y) from a1, turned Rz(90) twice.
+    assert!(near(f["b1"].position, [10.0, 2.0, 0.0]), "{}", f["b1"].position);
+    assert!((f["b1"].rotation.column(0) - Vector3::new(-1.0, 0.0, 0.0)).norm() < 1e-15);
+    assert!(near(f["bcg"].position, [11.0, 2.0, 0.0]), "{}", f["bcg"].position);
+    assert!(near(xml_cgs(&xml)["B"], [11.0, 2.0, 0.0]));
+}
+
 /// Lumping welded parts: the emitted body's mass, CG and world inertia equal the generator's
 /// independently combined values (parallel-axis theorem done in Python).
 #[test]

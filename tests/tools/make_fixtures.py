@@ -12,7 +12,12 @@ The mechanisms are built directly in world coordinates: every frame gets its wor
 rotation matrices computed here, so joint frames coincide (or differ by exactly the encoded
 initial joint value) to the last bit. Numbers that fix a pose are printed with repr (17
 significant digits), so the XML round-trips exactly; the facts in expect.json are read back from
-the printed text, so they are exactly what a parser of the XML sees, converted to SI.
+the printed text, so they are exactly what a parser of the XML sees, converted to SI. A frame
+may be written relative to other frames (`Frame.rel`: position origin, position axes,
+orientation reference, each WORLD, a frame of the same body or the frame at the other end of
+its joint, ADJOINING); its numbers are then computed from its exact world pose and what a parser
+sees of the frames it refers to, so the world pose is reproduced to ~1e-15. A primitive's axis
+may be written in the axes of its joint's BASE or FOLLOWER frame (`Joint.axis_frames`).
 
 Standard library only, deterministic: running it twice gives byte-identical files.
 
@@ -197,6 +202,9 @@ class Frame:
         self.display = display
         self.name = ""
         self.over = {}  # element name -> raw text (used by the broken cases)
+        # Position origin, position axes, orientation reference: None (WORLD) or a Frame of the
+        # same owner (written by name) or at the other end of this frame's joint (ADJOINING).
+        self.rel = (None, None, None)
 
 
 class Body:
@@ -234,6 +242,7 @@ class Joint:
         self.prims = prims  # [(kind, axis tuple or None for the dummy axis)]
         self.initial = initial  # per primitive: rad / file length / None
         self.follower_ref_text = None
+        self.axis_frames = ["WORLD"] * len(self.prims)  # or "BASE" / "FOLLOWER"
 
 
 class Asm:
@@ -274,6 +283,7 @@ class Model:
         self.next_ref = 1
         self.meshes = {}  # bundle path -> bytes
         self.weld_groups = []
+        self._seen = {}  # id(frame) -> world pose as a parser of the XML sees it
 
     @property
     def old_link(self):
@@ -407,6 +417,57 @@ class Model:
         for g in self.grounds():
             yield g.frame
 
+    # -- frames relative to other frames -----------------------------------------------------
+
+    def rel_name(self, f, t):
+        """How frame f writes its reference t: WORLD, a sibling's name or ADJOINING."""
+        if t is None:
+            return "WORLD"
+        if t.owner is f.owner:
+            return t.name
+        users = [j for j in self.joints() if f in (j.base, j.follower)]
+        assert len(users) == 1 and t in (users[0].base, users[0].follower), "ADJOINING: not joined"
+        return "ADJOINING"
+
+    def given(self, f):
+        """The position and orientation written for f: its exact world pose expressed relative
+        to what a parser sees of its references."""
+        X, Y, Z = (None if t is None else self.seen(t) for t in f.rel)
+        origin = X[0] if X else (0.0, 0.0, 0.0)
+        RY = Y[1] if Y else I3
+        RZ = Z[1] if Z else I3
+        return mat_vec(transpose(RY), sub(f.pos, origin)), mat_mul(transpose(RZ), f.R)
+
+    def seen(self, f):
+        """World pose (position in the file's length unit, orientation) of f as a parser of the
+        printed XML computes it."""
+        key = id(f)
+        if key not in self._seen:
+            p, R = self.given(f)
+            p = parse_vec(vec(p))
+            o = parse_vec(orient_text(R))
+            R = from_cols(o[0:3], o[3:6], o[6:9])
+            X, Y, Z = (None if t is None else self.seen(t) for t in f.rel)
+            if X or Y or Z:
+                p = add(X[0] if X else (0.0, 0.0, 0.0), mat_vec(Y[1] if Y else I3, p))
+                R = mat_mul(Z[1], R) if Z else R
+            self._seen[key] = (p, R)
+        return self._seen[key]
+
+    def axis_text(self, j, k):
+        """A primitive's axis as written: in world axes or its BASE / FOLLOWER frame's axes."""
+        axis = j.prims[k][1]
+        if axis is None:
+            return DUMMY_AXIS
+        frame = {"WORLD": None, "BASE": j.base, "FOLLOWER": j.follower}[j.axis_frames[k]]
+        return vec(axis if frame is None else mat_vec(transpose(self.seen(frame)[1]), axis))
+
+    def axis_seen(self, j, k):
+        """A primitive's world axis as a parser of the printed XML computes it."""
+        a = parse_vec(self.axis_text(j, k))
+        frame = {"WORLD": None, "BASE": j.base, "FOLLOWER": j.follower}[j.axis_frames[k]]
+        return a if frame is None else mat_vec(self.seen(frame)[1], a)
+
     def finish(self):
         """Name the frames like the exports: CG, CS1, then CS2.. in order (user frames first)."""
         for b in self.bodies():
@@ -515,19 +576,21 @@ class Model:
         p = " " * ind
         q = p + "  "
         o = f.over
+        pos, R = self.given(f)
+        origin, axes, orient_ref = (self.rel_name(f, t) for t in f.rel)
         w("%s<Frame%s>" % (p, ' ref="%d"' % f.ref if f.ref is not None else ""))
         w('%s<name>"%s"</name>' % (q, f.name))
         if not self.old_link:
             w('%s<displayName>"%s"</displayName>' % (q, f.display))
         w('%s<nodeID>"%s"</nodeID>' % (q, f.node_id))
-        w("%s<position>%s</position>" % (q, o.get("position", vec(f.pos))))
-        w('%s<positionOrigin>"%s"</positionOrigin>' % (q, o.get("positionOrigin", "WORLD")))
-        w('%s<positionReferenceFrame>"%s"</positionReferenceFrame>' % (q, o.get("positionReferenceFrame", "WORLD")))
+        w("%s<position>%s</position>" % (q, o.get("position", vec(pos))))
+        w('%s<positionOrigin>"%s"</positionOrigin>' % (q, o.get("positionOrigin", origin)))
+        w('%s<positionReferenceFrame>"%s"</positionReferenceFrame>' % (q, o.get("positionReferenceFrame", axes)))
         w('%s<positionUnits>"%s"</positionUnits>' % (q, o.get("positionUnits", self.u["length"])))
-        w("%s<orientation>%s</orientation>" % (q, o.get("orientation", orient_text(f.R))))
+        w("%s<orientation>%s</orientation>" % (q, o.get("orientation", orient_text(R))))
         w('%s<orientationType>"3x3 Transform"</orientationType>' % q)
         w('%s<orientationUnits>"rad"</orientationUnits>' % q)
-        w('%s<orientationReferenceFrame>"WORLD"</orientationReferenceFrame>' % q)
+        w('%s<orientationReferenceFrame>"%s"</orientationReferenceFrame>' % (q, o.get("orientationReferenceFrame", orient_ref)))
         w("%s</Frame>" % p)
 
     def _joint(self, j, ind, w):
@@ -550,12 +613,12 @@ class Model:
             w("%s  </JointSide>" % q)
             w("%s</%s>" % (q, side))
         w("%s<primitives>" % q)
-        for kind, axis in j.prims:
+        for k, (kind, axis) in enumerate(j.prims):
             w("%s  <Primitive>" % q)
             w('%s    <name>"%s"</name>' % (q, kind))
             w('%s    <nodeID>""</nodeID>' % q)
-            w('%s    <referenceFrame>"WORLD"</referenceFrame>' % q)
-            w("%s    <axis>%s</axis>" % (q, DUMMY_AXIS if axis is None else vec(axis)))
+            w('%s    <referenceFrame>"%s"</referenceFrame>' % (q, j.axis_frames[k]))
+            w("%s    <axis>%s</axis>" % (q, self.axis_text(j, k)))
             w("%s  </Primitive>" % q)
         w("%s</primitives>" % q)
         w("%s</SimpleJoint>" % p)
@@ -582,18 +645,19 @@ class Model:
         cgs = {}
         masses = {}
         for f in self.all_frames():
-            p = parse_vec(vec(f.pos))
-            o = parse_vec(orient_text(f.R))
+            p, R = self.seen(f)
             owner = f.owner.node_id
             entry = {
                 "node_id": f.node_id,
                 "owner": owner,
                 "name": f.name,
                 "position_m": [v * L for v in p],
-                "x_axis": list(o[0:3]),
-                "y_axis": list(o[3:6]),
-                "z_axis": list(o[6:9]),
+                "x_axis": list(col(R, 0)),
+                "y_axis": list(col(R, 1)),
+                "z_axis": list(col(R, 2)),
             }
+            if f.rel != (None, None, None):
+                entry["given_relative_to"] = [self.rel_name(f, t) for t in f.rel]
             if f.ref is not None:
                 entry["ref"] = f.ref
             if f.display:
@@ -606,8 +670,10 @@ class Model:
         joints = []
         for j in self.joints():
             prims = []
-            for (kind, axis), init in zip(j.prims, j.initial):
-                pr = {"kind": kind, "axis_world": list(parse_vec(DUMMY_AXIS if axis is None else vec(axis)))}
+            for k, ((kind, axis), init) in enumerate(zip(j.prims, j.initial)):
+                pr = {"kind": kind, "axis_world": list(self.axis_seen(j, k))}
+                if j.axis_frames[k] != "WORLD":
+                    pr["axis_given_in"] = j.axis_frames[k]
                 if kind == "revolute":
                     pr["initial_rad"] = init
                 elif kind == "prismatic":
@@ -1125,10 +1191,12 @@ def case_crank_rocker_noise():
     def fr(P, Q):
         return rounded(Rz(math.degrees(math.atan2(Q[1] - P[1], Q[0] - P[0]))))
     axes = [(1e-10, 0.0, 1.0), (0.0, -1e-10, 1.0), (1e-10, 1e-10, 1.0), (0.0, 0.0, -1.0)]
+    ang = lambda P, Q: math.atan2(Q[1] - P[1], Q[0] - P[0])  # noqa: E731
+    t1, t2, t3 = ang(A, B), ang(B, C), ang(D, C)
     m.joint(top, rp, crank, A, fr(A, B), prims=(("revolute", axes[0]),))
-    m.joint(top, crank, coupler, B, fr(A, B), fol_R=fr(B, C), prims=(("revolute", axes[1]),))
-    m.joint(top, coupler, rocker, C, fr(B, C), fol_R=fr(D, C), prims=(("revolute", axes[2]),))
-    m.joint(top, rocker, rp, D, fr(D, C), fol_R=I3, prims=(("revolute", axes[3]),))
+    m.joint(top, crank, coupler, B, fr(A, B), fol_R=fr(B, C), prims=(("revolute", axes[1]),), initial=[t2 - t1])
+    m.joint(top, coupler, rocker, C, fr(B, C), fol_R=fr(D, C), prims=(("revolute", axes[2]),), initial=[t3 - t2])
+    m.joint(top, rocker, rp, D, fr(D, C), fol_R=I3, prims=(("revolute", axes[3]),), initial=[t3])
     m.ground(rp, (0.0, 0.0, 0.0))
     return m, {"expected_cut": {"cut": "revolute-planar-loop-constraint", "kind": "planar"}}, None, "CRANKROCKER.xml"
 
@@ -1199,14 +1267,6 @@ def case_broken_unknown_unit():
     return m, {"error_contains": "furlong", "flaw": 'CG frame of ARM has positionUnits "furlong"'}, None, "BROKEN.xml"
 
 
-def case_broken_non_world():
-    m, arm, j = small_model()
-    m.finish()
-    arm.frames[0].over["positionReferenceFrame"] = "CS1"
-    return m, {"error_contains": "positionReferenceFrame",
-               "flaw": 'CG frame of ARM has positionReferenceFrame "CS1"'}, None, "BROKEN.xml"
-
-
 def case_broken_nan():
     m, arm, j = small_model()
     m.finish()
@@ -1270,6 +1330,82 @@ def case_broken_nan_stl():
                "flaw": "ARM_prt.stl (binary) has a NaN vertex coordinate"}, None, "BROKEN.xml"
 
 
+def case_frames_relative():
+    """Frames written relative to other frames (see README_TEXT)."""
+    m = Model("RELFRAMES", container="SimscapeMultibody", link="5.0",
+              created_from="Pro/E Wildfire Creo 9.0 - 2022073")
+    top = m.top
+    rp = m.root_part(top, (0.0, 0.0, 0.0))
+    # Joint 1: revolute about world z at J1, frames rotated Rz(15) (WORLD axis).
+    J1 = (40.0, -20.0, 120.0)
+    R1 = chain(Rz(37.0), Rx(25.0), Ry(-10.0))
+    J2 = add(J1, mat_vec(R1, (180.0, 0.0, 0.0)))
+    lo, hi = link_box(J1, R1, [J1, J2], 15.0, 15.0, 10.0, 1.0)
+    crank = m.part(top, "CRANK", "601", add(J1, mat_vec(R1, (-5.0, 3.0, 0.0))), R1, lo, hi,
+                   cg_R=chain(R1, Rz(-20.0)), mesh_path="CRANK_prt.stl", mesh_format="ascii",
+                   material=GREY)
+    # Joint 2: revolute about the z axis of its base frame (axis written in BASE), follower
+    # turned 25 degrees about it (initial angle) and written ADJOINING.
+    Rb = chain(Ry(30.0), Rx(-50.0), Rz(12.0))
+    a2 = col(Rb, 2)
+    R2 = chain(rot(a2, 70.0), R1)
+    J3 = add(J2, mat_vec(R2, (150.0, 0.0, 0.0)))
+    lo, hi = link_box(J2, R2, [J2, J3], 12.0, 12.0, 10.0, 1.0)
+    rod = m.part(top, "ROD", "602", J2, R2, lo, hi, density=DENSITY_STEEL,
+                 cg_R=chain(R2, Rx(40.0), Ry(15.0)), mesh_path="ROD_prt.stl", mesh_format="binary",
+                 material=BLUE)
+    # Joint 3: prismatic along a generic world axis, follower 15 mm along it.
+    a3 = unit((0.2, 0.7, -0.4))
+    Rp = frame_xz(perpendicular(a3), a3)
+    J3f = add(J3, mul(15.0, a3))
+    R3 = chain(Rz(-40.0), Ry(20.0))
+    lo, hi = bounds([local(J3f, R3, p) for p in (J3f, add(J3f, mul(60.0, a3)))], 10.0, 1.0)
+    slider = m.part(top, "SLIDER", "603", J3f, R3, lo, hi, mesh_path="SLIDER_prt.stl",
+                    mesh_format="ascii", material=ORANGE)
+    m.joint(top, rp, crank, J1, Rz(15.0), prims=(("revolute", (0, 0, 1)),))
+    j2 = m.joint(top, crank, rod, J2, Rb, J2, mat_mul(rot(a2, 25.0), Rb),
+                 prims=(("revolute", a2),), initial=[math.radians(25.0)])
+    m.joint(top, rod, slider, J3, Rp, J3f, Rp, prims=(("prismatic", a3),), initial=[15.0])
+    m.ground(rp, (0.0, 0.0, 0.0))
+    m.finish()
+    cg, cs1, cs2 = crank.frames[0], crank.frames[1], crank.frames[2]
+    assert (cg.name, cs1.name, cs2.name) == ("CG", "CS1", "CS2")
+    cs1.rel = (cs2, cs2, cs2)  # CG -> CS1 -> CS2 -> WORLD
+    cg.rel = (cs1, cs1, cs1)
+    rod_cg, rod_cs1, rod_cs2, rod_cs3 = rod.frames
+    rod_cs2.rel = (j2.base, j2.base, j2.base)  # the follower of joint 2: ADJOINING
+    rod_cs3.rel = (rod_cs1, rod_cg, rod_cs2)  # origin, axes and orientation: three frames
+    j2.axis_frames = ["BASE"]
+    return m, {}, None, "RELFRAMES.xml"
+
+
+def case_broken_frame_cycle():
+    m, arm, j = small_model()
+    m.finish()
+    arm.frames[0].over["positionOrigin"] = "CS1"
+    arm.frames[1].over["orientationReferenceFrame"] = "CG"
+    return m, {"error_contains": "frame references form a cycle: CG -> CS1 -> CG",
+               "flaw": 'CG frame of ARM has positionOrigin "CS1", whose orientationReferenceFrame is "CG"'}, \
+        None, "BROKEN.xml"
+
+
+def case_broken_frame_missing():
+    m, arm, j = small_model()
+    m.finish()
+    arm.frames[0].over["positionReferenceFrame"] = "CS9"
+    return m, {"error_contains": 'refers to frame "CS9", which its body does not have',
+               "flaw": 'CG frame of ARM has positionReferenceFrame "CS9"; ARM has no CS9'}, None, "BROKEN.xml"
+
+
+def case_broken_unsupported_ref():
+    m, arm, j = small_model()
+    m.finish()
+    arm.frames[0].over["positionReferenceFrame"] = "BASE"
+    return m, {"error_contains": 'reference frame "BASE" is not supported',
+               "flaw": 'CG frame of ARM has positionReferenceFrame "BASE" (allowed only for a primitive axis)'}, \
+        None, "BROKEN.xml"
+
+
 CASES = [
     ("pendulum", case_pendulum),
     ("fourbar", case_fourbar),
@@ -1284,16 +1420,19 @@ CASES = [
     ("crank_rocker_noise", case_crank_rocker_noise),
     ("spatial_rssr", case_spatial_rssr),
     ("immobile_leg", case_immobile_leg),
+    ("frames_relative", case_frames_relative),
     ("broken_dangling_ref", case_broken_dangling_ref),
     ("broken_unknown_unit", case_broken_unknown_unit),
     ("broken_truncated", case_broken_truncated),
-    ("broken_non_world", case_broken_non_world),
+    ("broken_unsupported_ref", case_broken_unsupported_ref),
     ("broken_nan", case_broken_nan),
     ("broken_two_xml", case_broken_two_xml),
     ("broken_ambiguous_mesh", case_broken_ambiguous_mesh),
     ("broken_mass_overflow", case_broken_mass_overflow),
     ("broken_far_frame", case_broken_far_frame),
     ("broken_nan_stl", case_broken_nan_stl),
+    ("broken_frame_cycle", case_broken_frame_cycle),
+    ("broken_frame_missing", case_broken_frame_missing),
 ]
 
 README_TEXT = {
@@ -1310,16 +1449,19 @@ README_TEXT = {
     "crank_rocker_noise": "A crank-rocker four-bar whose joint frames turn with their links and are printed to 6 significant digits (orthonormal only to ~1e-6), with 1e-10 noise in the axes and one axis antiparallel: the emitted revolute axes must be parallel to well within MSL's 1e-10.",
     "spatial_rssr": "A spatial RSSR four-bar: crank revolute about world z, coupler with a spherical joint at each end, rocker revolute about world x on a pivot off the crank's plane. Genuinely spatial and mobile: 8 coordinates, rank 6, mobility 2 (the output and the coupler's spin about its own line); no equation of the closing joint is redundant.",
     "immobile_leg": "A leg welded to its root at hip and ankle, like the real `LEGS_MECHANISM.xml`: four revolutes on generic axes form a loop that cannot move (rank 4 of 4 coordinates, mobility 0). A plain closing revolute would impose 5 equations of which 3 are independent; the cut is `Joints.Constraints.Spherical`.",
+    "frames_relative": "Frames written relative to other frames, in mm/kg (Simscape Multibody Link 5.0): `RELFRAMES/RootPart` -revolute (world z)- `CRANK` -revolute- `ROD` (steel) -prismatic (generic world axis, follower 15 mm along it)- `SLIDER`. `CRANK`'s CG is given relative to its CS1 and CS1 relative to the joint frame CS2 (origin, axes and orientation; CS2 itself in WORLD): the chain CG -> CS1 -> CS2 -> WORLD. The revolute `CRANK--ROD` has its axis written in the axes of its base frame (`referenceFrame \"BASE\"`, `0,0,1` up to rounding) and its follower frame (`ROD`'s CS2, turned 25 deg about the axis: initial angle) written `ADJOINING` (relative to the base frame on `CRANK`). `ROD`'s CS3 (the prismatic's base frame) has `positionOrigin` CS1, `positionReferenceFrame` CG and `orientationReferenceFrame` CS2 (itself ADJOINING). Everything else is in WORLD. The relative numbers are computed from the exact world poses, so `expect.json` (world poses; `given_relative_to` lists each relative frame's three references) is reproduced to ~1e-15.",
     "broken_dangling_ref": "The revolute's follower `<Frame ref=\"9999\">` names a ref that no frame has. Conversion must fail and say which ref.",
     "broken_unknown_unit": "A frame with `positionUnits \"furlong\"`. Conversion must fail naming the unknown unit.",
     "broken_truncated": "The XML is cut off in the middle of a `<position>` element (no closing tags). Conversion must fail; the message is expected to say the file is truncated.",
-    "broken_non_world": "A frame with `positionReferenceFrame \"CS1\"` instead of `\"WORLD\"`: an explicit unsupported error, not a silent misreading.",
+    "broken_unsupported_ref": "The CG frame of `ARM` has `positionReferenceFrame \"BASE\"`: `BASE` and `FOLLOWER` name a joint frame only in a primitive's `referenceFrame`; a frame's references are `WORLD`, `ADJOINING` or a frame of the same body. An explicit unsupported error, not a silent misreading.",
     "broken_nan": "The CG frame of `ARM` has position `x,nan,z`. Non-finite numbers must be rejected.",
     "broken_two_xml": "Two valid PhysicalModelingXMLFile exports (`FIRST.xml`, `SECOND.xml`) in one bundle: the converter must refuse to guess.",
     "broken_mass_overflow": "`ARM` has mass `1.7e308` in `slug`: finite as written, infinite in kg. Conversion must fail naming the body, not write `m=inf`.",
     "broken_far_frame": "`ARM`'s CS1 frame lies 2e9 mm (2,000 km) from the origin: beyond any real machine (a unit error or a corrupt export). Conversion must fail naming the frame.",
     "broken_nan_stl": "`ARM_prt.stl` is a binary STL whose first triangle has a NaN coordinate. Conversion must fail naming the mesh, not write NaN into the DXF and STL.",
     "broken_ambiguous_mesh": "The XML names `part.stl`; the bundle holds `a/PART.stl` and `b/part.STL`, both matches of the case-insensitive sub-folder lookup. Conversion must fail naming the ambiguity rather than pick one.",
+    "broken_frame_cycle": "`ARM`'s CG has `positionOrigin \"CS1\"` and CS1 has `orientationReferenceFrame \"CG\"`: a reference cycle. Conversion must fail naming the frames of the cycle.",
+    "broken_frame_missing": "`ARM`'s CG has `positionReferenceFrame \"CS9\"`, a frame `ARM` does not have. Conversion must fail naming the missing frame.",
 }
 
 

@@ -83,9 +83,23 @@ pub enum XmlErrorKind {
     #[error("frame ref=\"{ref_id}\" is already used by {first}")]
     DuplicateRef { ref_id: u32, first: String },
     /// `positionOrigin`, `positionReferenceFrame`, `orientationReferenceFrame` or a primitive's
-    /// `referenceFrame` is not `WORLD`.
-    #[error("reference frame \"{value}\" is not supported (only \"WORLD\")")]
-    UnsupportedReferenceFrame { value: String },
+    /// `referenceFrame` names something the format does not allow there.
+    #[error("reference frame \"{value}\" is not supported (expected {expected})")]
+    UnsupportedReferenceFrame {
+        value: String,
+        expected: &'static str,
+    },
+    /// A frame is placed relative to a frame name its body does not have.
+    #[error("frame \"{frame}\" refers to frame \"{name}\", which its body does not have")]
+    UnknownFrameName { frame: String, name: String },
+    /// A frame is placed relative to `ADJOINING`, but not exactly one joint uses it.
+    #[error(
+        "frame \"{frame}\" refers to ADJOINING, but {joints} joints use it (expected exactly one)"
+    )]
+    AdjoiningNotOneJoint { frame: String, joints: usize },
+    /// Frames placed relative to each other in a circle.
+    #[error("frame references form a cycle: {cycle}")]
+    FrameCycle { cycle: String },
     /// `orientationType` is not `3x3 Transform`.
     #[error("orientation type \"{value}\" is not supported (only \"3x3 Transform\")")]
     UnsupportedOrientationType { value: String },

@@ -3,7 +3,8 @@
 //! Every element is found by name among its parent's children; unknown elements are skipped.
 //! Frame `ref`s are collected while reading and joints are resolved against them only at the
 //! end, because a joint may point at a frame that comes later in the file (for instance inside
-//! a child subsystem). Source positions are recorded as byte offsets and turned into
+//! a child subsystem). Frames placed relative to other frames are turned into world poses after
+//! that (`place`), because `ADJOINING` needs the joints. Source positions are recorded as byte offsets and turned into
 //! line/column in one pass at the end.
 
 use std::borrow::Cow;
@@ -20,6 +21,9 @@ use crate::pipeline::ir::{
     Body, BodyId, Frame, FrameId, FrameOwner, Ground, GroundId, Joint, Material, Model, Primitive,
     PrimitiveKind, SourceInfo, SourceLoc, Warning,
 };
+use place::{AxisFrame, FrameRefs};
+
+mod place;
 
 type Result<T> = std::result::Result<T, XmlError>;
 
@@ -38,6 +42,7 @@ pub(crate) fn lower(file: &str, doc: &Doc<'_>) -> Result<(Model, Vec<Warning>)> 
         warnings: Vec::new(),
         joints: Vec::new(),
         refs: HashMap::new(),
+        frame_refs: Vec::new(),
         locs: Vec::new(),
         length_scale: None,
         first_frame_scale: None,
@@ -65,6 +70,8 @@ struct PendingJoint {
     base: (u32, NodeId),
     follower: (u32, NodeId),
     primitives: Vec<Primitive>,
+    /// Per primitive: the frame whose axes its `axis` is given in.
+    axis_frames: Vec<AxisFrame>,
 }
 
 struct Lower<'d, 'a> {
@@ -75,6 +82,8 @@ struct Lower<'d, 'a> {
     joints: Vec<PendingJoint>,
     /// Every frame `ref` seen so far: the frame and its element.
     refs: HashMap<u32, (FrameId, NodeId)>,
+    /// Per frame (by index): what its pose as given is relative to.
+    frame_refs: Vec<FrameRefs>,
     /// (byte offset of the start tag, item) for every body, frame, joint, ground and primitive.
     locs: Vec<(u32, Slot)>,
     /// Metres per unit of the first body frame's `positionUnits`.
@@ -312,6 +321,7 @@ impl<'a> Lower<'_, 'a> {
         let (mut name, mut display, mut node_id) = (None, None, None);
         let (mut position, mut pos_units, mut orientation, mut o_type, mut o_units) =
             (None, None, None, None, None);
+        let mut ref_nodes = [None; 3];
         for c in doc.children(node) {
             match doc.name(c) {
                 b"name" => first(&mut name, c),
@@ -322,9 +332,9 @@ impl<'a> Lower<'_, 'a> {
                 b"orientation" => first(&mut orientation, c),
                 b"orientationType" => first(&mut o_type, c),
                 b"orientationUnits" => first(&mut o_units, c),
-                b"positionOrigin" | b"positionReferenceFrame" | b"orientationReferenceFrame" => {
-                    self.expect_world(c)?
-                }
+                b"positionOrigin" => first(&mut ref_nodes[place::ORIGIN], c),
+                b"positionReferenceFrame" => first(&mut ref_nodes[place::AXES], c),
+                b"orientationReferenceFrame" => first(&mut ref_nodes[place::ORIENTATION], c),
                 _ => {}
             }
         }
@@ -335,6 +345,12 @@ impl<'a> Lower<'_, 'a> {
         };
         let node_id = self.required_string(node, node_id, "nodeID")?;
         let ref_id = self.ref_attr(node)?;
+        let mut frame_refs = FrameRefs::default();
+        for (slot, n) in frame_refs.iter_mut().zip(ref_nodes) {
+            if let Some(n) = n {
+                *slot = self.frame_reference(n, owner)?.map(|r| (r, n));
+            }
+        }
 
         let [x, y, z] =
             self.numbers::<3>(position.ok_or_else(|| self.missing(node, "position"))?)?;
@@ -385,6 +401,7 @@ impl<'a> Lower<'_, 'a> {
             self.refs.insert(r, (id, node));
         }
         self.first_frame_scale.get_or_insert(scale);
+        self.frame_refs.push(frame_refs);
         self.locs.push((self.offset(node), Slot::Frame(id.0)));
         self.model.frames.push(Frame {
             name,
@@ -418,11 +435,13 @@ impl<'a> Lower<'_, 'a> {
         let follower = self.side(follower.ok_or_else(|| self.missing(node, "follower"))?)?;
         let prims = prims.ok_or_else(|| self.missing(node, "primitives"))?;
         let joint = self.joints.len() as u32;
-        let mut primitives = Vec::new();
+        let (mut primitives, mut axis_frames) = (Vec::new(), Vec::new());
         for p in doc.children(prims) {
             if doc.name(p) == b"Primitive" {
                 let index = primitives.len() as u32;
-                primitives.push(self.primitive(p)?);
+                let (primitive, axis_frame) = self.primitive(p)?;
+                primitives.push(primitive);
+                axis_frames.push(axis_frame);
                 self.locs
                     .push((self.offset(p), Slot::Primitive { joint, index }));
             }
@@ -438,6 +457,7 @@ impl<'a> Lower<'_, 'a> {
             base,
             follower,
             primitives,
+            axis_frames,
         });
         Ok(())
     }
@@ -454,13 +474,14 @@ impl<'a> Lower<'_, 'a> {
         Ok((r, frame))
     }
 
-    fn primitive(&self, node: NodeId) -> Result<Primitive> {
-        let (mut name, mut axis) = (None, None);
+    /// A primitive (axis as given) and the frame its axis is given in.
+    fn primitive(&self, node: NodeId) -> Result<(Primitive, AxisFrame)> {
+        let (mut name, mut axis, mut axis_frame) = (None, None, AxisFrame::World);
         for c in self.doc.children(node) {
             match self.doc.name(c) {
                 b"name" => first(&mut name, c),
                 b"axis" => first(&mut axis, c),
-                b"referenceFrame" => self.expect_world(c)?,
+                b"referenceFrame" => axis_frame = self.axis_frame(c)?,
                 _ => {}
             }
         }
@@ -477,11 +498,12 @@ impl<'a> Lower<'_, 'a> {
             }
         };
         let axis = self.numbers::<3>(axis.ok_or_else(|| self.missing(node, "axis"))?)?;
-        Ok(Primitive {
+        let primitive = Primitive {
             kind,
             axis_world: Vector3::from(axis),
             loc: SourceLoc::default(),
-        })
+        };
+        Ok((primitive, axis_frame))
     }
 
     fn ground(&mut self, node: NodeId) -> Result<()> {
@@ -511,11 +533,14 @@ impl<'a> Lower<'_, 'a> {
         Ok(())
     }
 
-    /// Resolves joints, sets `length_scale` and every item's line/column.
+    /// Resolves joints, places frames in the world, sets `length_scale` and every item's
+    /// line/column.
     fn finish(mut self) -> Result<(Model, Vec<Warning>)> {
         let pending = std::mem::take(&mut self.joints);
         self.model.joints.reserve(pending.len());
+        let mut axis_frames = Vec::with_capacity(pending.len());
         for j in pending {
+            axis_frames.push(j.axis_frames);
             let base = self.resolve(j.base)?;
             let follower = self.resolve(j.follower)?;
             self.model.joints.push(Joint {
@@ -528,6 +553,8 @@ impl<'a> Lower<'_, 'a> {
                 loc: SourceLoc::default(),
             });
         }
+        self.place_frames()?;
+        self.rotate_axes(&axis_frames);
         self.model.length_scale = self.length_scale.or(self.first_frame_scale).unwrap_or(1.0);
 
         // Recorded in document order already, except primitives before their joint.
@@ -654,16 +681,6 @@ impl<'a> Lower<'_, 'a> {
                 },
             )
         })
-    }
-
-    fn expect_world(&self, node: NodeId) -> Result<()> {
-        let value = self.value(node)?;
-        if value == "WORLD" {
-            Ok(())
-        } else {
-            let value = value.into_owned();
-            Err(self.err(node, XmlErrorKind::UnsupportedReferenceFrame { value }))
-        }
     }
 
     /// The `ref` attribute as a number.

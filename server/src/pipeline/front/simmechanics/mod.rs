@@ -17,20 +17,27 @@
 //! ```
 //!
 //! Strings are quoted inside the element (`<name>"CS1"</name>`), vectors are comma-separated,
-//! every value carries its own unit element. A `Frame` has a world position and a 3x3
-//! orientation whose nine numbers are the frame's x, y and z axes in world coordinates; frames
-//! used by joints carry a `ref` attribute that is unique in the whole file.
+//! every value carries its own unit element. A `Frame` has a position and a 3x3 orientation
+//! whose nine numbers are the frame's x, y and z axes (in world coordinates unless the frame
+//! says otherwise, see below); frames used by joints carry a `ref` attribute that is unique in
+//! the whole file.
 //!
 //! # What is supported
 //! - Both container spellings, subsystems to any depth (`subsystem_path` records them), joints
 //!   whose frames live in other subsystems (refs are resolved globally after reading).
 //! - Units: length mm, cm, m, in, ft; mass kg, g, lbm, slug; inertia, area and volume as
 //!   products of those; orientation units rad and deg. All converted to SI here.
-//! - Frames: only `positionOrigin`, `positionReferenceFrame`, `orientationReferenceFrame` =
-//!   `WORLD` (absent = `WORLD`) and `orientationType` = `3x3 Transform`. The matrix is
-//!   projected onto the nearest rotation; one that is far from a rotation (mirrored, scaled)
-//!   gives a `frame-not-orthonormal` warning.
-//! - Primitives weld, revolute, prismatic and spherical, axes in `WORLD`.
+//! - Frames: `orientationType` = `3x3 Transform`; `positionOrigin` X, `positionReferenceFrame`
+//!   Y and `orientationReferenceFrame` Z each `WORLD` (absent = `WORLD`), the name of another
+//!   frame of the same body (`CG`, `CS1`, ...), or `ADJOINING` (the frame at the other end of
+//!   the one joint using this frame; a ground's frame allows only `WORLD` and `ADJOINING`). The
+//!   position starts at X's origin with components in Y's axes, the orientation is relative to
+//!   Z: `p = origin(X) + R(Y) p`, `R = R(Z) R`, resolved recursively after all joints are read.
+//!   Cycles, unknown names and `ADJOINING` frames used by no joint or by several are errors.
+//!   The matrix as given is projected onto the nearest rotation first; one that is far from a
+//!   rotation (mirrored, scaled) gives a `frame-not-orthonormal` warning.
+//! - Primitives weld, revolute, prismatic and spherical, axes in `WORLD` or in the axes of the
+//!   joint's `BASE` or `FOLLOWER` frame.
 //! - Elements are found by name; unknown ones are skipped. A non-`SimpleJoint` entry under
 //!   `joints` is skipped with a `joint-element-skipped` warning (a constraint would be lost).
 //! - Second-generation files (`SimMechanicsImportXML`) are recognised and rejected.
@@ -57,10 +64,12 @@ pub const MAX_XML_BYTES: usize = 256 << 20;
 
 /// Root element name of first-generation files.
 const ROOT: &[u8] = b"PhysicalModelingXMLFile";
-/// Root element name of second-generation (Simscape Multibody import) files.
-const SECOND_GENERATION_ROOT: &[u8] = b"SimMechanicsImportXML";
+/// Root element names of second-generation (Simscape Multibody import) files: older exporters
+/// write `SimMechanicsImportXML`, newer ones `SimscapeMultibodyImportXML`.
+const SECOND_GENERATION_ROOTS: [&[u8]; 2] = [b"SimMechanicsImportXML", b"SimscapeMultibodyImportXML"];
 
-/// Parses a first-generation SimMechanics XML file into the IR (SI units, world poses).
+/// Parses a first-generation SimMechanics XML file into the IR (SI units, world poses: frames
+/// given relative to other frames are resolved here).
 ///
 /// `file` is only used in messages and source locations. Warnings (currently
 /// `frame-not-orthonormal` and `joint-element-skipped`) come back next to the model.
@@ -80,7 +89,7 @@ pub fn parse(file: &str, bytes: &[u8]) -> Result<(ir::Model, Vec<ir::Warning>), 
         Root::Element { name, .. } if name == ROOT => {}
         Root::Element { name, offset } => {
             let root = String::from_utf8_lossy(name).into_owned();
-            let kind = if name == SECOND_GENERATION_ROOT {
+            let kind = if SECOND_GENERATION_ROOTS.contains(&name) {
                 XmlErrorKind::SecondGeneration
             } else {
                 XmlErrorKind::NotPhysicalModelingXml { root: root.clone() }

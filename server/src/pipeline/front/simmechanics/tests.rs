@@ -9,6 +9,19 @@ use nalgebra::{Point3, Vector3};
 const IDENTITY: &str = "1,0,0,0,1,0,0,0,1";
 
 fn frame(name: &str, r: Option<u32>, pos: &str, units: &str, orientation: &str) -> String {
+    frame_in(name, r, pos, units, orientation, ["WORLD"; 3])
+}
+
+/// A frame whose `positionOrigin`, `positionReferenceFrame` and `orientationReferenceFrame`
+/// are `refs`.
+fn frame_in(
+    name: &str,
+    r: Option<u32>,
+    pos: &str,
+    units: &str,
+    orientation: &str,
+    [origin, axes, orient_ref]: [&str; 3],
+) -> String {
     let r = r.map(|r| format!(" ref=\"{r}\"")).unwrap_or_default();
     format!(
         r#"<Frame{r}>
@@ -16,13 +29,13 @@ fn frame(name: &str, r: Option<u32>, pos: &str, units: &str, orientation: &str) 
             <displayName>""</displayName>
             <nodeID>"{name}-id{r_id}"</nodeID>
             <position>{pos}</position>
-            <positionOrigin>"WORLD"</positionOrigin>
-            <positionReferenceFrame>"WORLD"</positionReferenceFrame>
+            <positionOrigin>"{origin}"</positionOrigin>
+            <positionReferenceFrame>"{axes}"</positionReferenceFrame>
             <positionUnits>"{units}"</positionUnits>
             <orientation>{orientation}</orientation>
             <orientationType>"3x3 Transform"</orientationType>
             <orientationUnits>"rad"</orientationUnits>
-            <orientationReferenceFrame>"WORLD"</orientationReferenceFrame>
+            <orientationReferenceFrame>"{orient_ref}"</orientationReferenceFrame>
           </Frame>
 "#,
         r_id = r.len()
@@ -699,15 +712,41 @@ fn unsupported_frames_orientations_and_primitives() {
     let base = two_bodies("SimMechanics");
     let e = fails(&base.replacen(
         "<positionReferenceFrame>\"WORLD\"",
-        "<positionReferenceFrame>\"CS1\"",
+        "<positionReferenceFrame>\"CS1 of BASE\"",
         1,
     ));
     assert_eq!(
         e.kind,
         XmlErrorKind::UnsupportedReferenceFrame {
-            value: "CS1".into()
+            value: "CS1 of BASE".into(),
+            expected: "WORLD, ADJOINING or the name of a frame of the same body",
         }
     );
+    assert_eq!(e.line, line_of(&base, "<positionReferenceFrame>"));
+    // A ground's frame has no sibling to name.
+    let ground_frame = base.find("<Ground>").expect("ground");
+    let (head, tail) = base.split_at(ground_frame);
+    let grounded = format!(
+        "{head}{}",
+        tail.replacen(
+            "<orientationReferenceFrame>\"WORLD\"",
+            "<orientationReferenceFrame>\"CS1\"",
+            1
+        )
+    );
+    let e = fails(&grounded);
+    assert_eq!(
+        e.kind,
+        XmlErrorKind::UnsupportedReferenceFrame {
+            value: "CS1".into(),
+            expected: "WORLD or ADJOINING",
+        }
+    );
+    assert_eq!(
+        e.line,
+        line_of(&grounded, "<orientationReferenceFrame>\"CS1\"")
+    );
+    assert!(e.element.starts_with("Ground \"RootGround\""), "{e}");
     let e = fails(&base.replacen(
         "<orientation>1,0,0,0,1,0,0,0,1</orientation>\n            <orientationType>\"3x3 Transform\"",
         "<orientation>1,0,0,0</orientation>\n            <orientationType>\"Quaternion\"",
@@ -726,11 +765,12 @@ fn unsupported_frames_orientations_and_primitives() {
             name: "planar".into()
         }
     );
-    let e = fails(&base.replacen("<referenceFrame>\"WORLD\"", "<referenceFrame>\"BASE\"", 1));
+    let e = fails(&base.replacen("<referenceFrame>\"WORLD\"", "<referenceFrame>\"CS2\"", 1));
     assert_eq!(
         e.kind,
         XmlErrorKind::UnsupportedReferenceFrame {
-            value: "BASE".into()
+            value: "CS2".into(),
+            expected: "WORLD, BASE or FOLLOWER",
         }
     );
     let e = fails(&base.replacen("<orientationUnits>\"rad\"", "<orientationUnits>\"grad\"", 1));
@@ -747,6 +787,284 @@ fn unsupported_frames_orientations_and_primitives() {
     // Missing reference-frame elements mean WORLD.
     let (m, _) = ok(&base.replace("<positionOrigin>\"WORLD\"</positionOrigin>", ""));
     assert_eq!(m.bodies.len(), 2);
+}
+
+// ----- frames relative to other frames -----------------------------------------------------
+
+/// Rz(90): x -> y, y -> -x (columns: the frame's axes).
+const RZ90: &str = "0,1,0,-1,0,0,0,0,1";
+/// Rx(90): y -> z, z -> -y.
+const RX90: &str = "1,0,0,0,0,1,0,-1,0";
+
+fn rot(columns: &str) -> nalgebra::Rotation3<f64> {
+    let v: Vec<f64> = columns
+        .split(',')
+        .map(|x| x.parse().expect("number"))
+        .collect();
+    nalgebra::Rotation3::from_matrix_unchecked(nalgebra::Matrix3::from_column_slice(&v))
+}
+
+fn assert_pose(
+    m: &Model,
+    id: crate::pipeline::ir::FrameId,
+    p_mm: [f64; 3],
+    r: nalgebra::Rotation3<f64>,
+) {
+    let f = m.frame(id);
+    let p = Vector3::from(p_mm) * 1e-3;
+    assert!(
+        (f.pose.translation.vector - p).norm() < 1e-15,
+        "{}: {} vs {p}",
+        f.name,
+        f.pose.translation.vector
+    );
+    let got = f.pose.rotation.to_rotation_matrix();
+    assert!(
+        (got.matrix() - r.matrix()).amax() < 1e-15,
+        "{}: {got} vs {r}",
+        f.name
+    );
+}
+
+/// The body's frame called `name`.
+fn named(m: &Model, body: usize, name: &str) -> crate::pipeline::ir::FrameId {
+    let b = &m.bodies[body];
+    *b.frames
+        .iter()
+        .find(|&&f| m.frame(f).name == name)
+        .expect("frame")
+}
+
+fn one_body(frames: &[String]) -> String {
+    document(
+        "SimMechanics",
+        &system(&[body("A", "A", frames)], &[], &[], &[]),
+    )
+}
+
+#[test]
+fn frame_chain_cs2_cg_cs1_world() {
+    let rel = |r: &'static str| [r; 3];
+    let xml = one_body(&[
+        frame_in("CG", None, "5,0,0", "mm", IDENTITY, rel("CS1")),
+        frame("CS1", None, "10,0,0", "mm", RZ90),
+        frame_in("CS2", None, "0,0,2", "mm", RX90, rel("CG")),
+    ]);
+    let (m, warnings) = ok(&xml);
+    assert!(warnings.is_empty());
+    assert_pose(&m, named(&m, 0, "CS1"), [10.0, 0.0, 0.0], rot(RZ90));
+    assert_pose(&m, named(&m, 0, "CG"), [10.0, 5.0, 0.0], rot(RZ90));
+    assert_pose(
+        &m,
+        named(&m, 0, "CS2"),
+        [10.0, 5.0, 2.0],
+        rot(RZ90) * rot(RX90),
+    );
+}
+
+#[test]
+fn position_origin_axes_and_orientation_from_different_frames() {
+    let xml = one_body(&[
+        // Starts at CS2's origin, components in CS1's axes, orientation relative to CS1.
+        frame_in("CG", None, "1,0,0", "mm", IDENTITY, ["CS2", "CS1", "CS1"]),
+        frame("CS1", None, "0,0,0", "mm", RZ90),
+        frame("CS2", None, "100,0,0", "mm", RX90),
+        // Position relative to CS1, orientation relative to CS2.
+        frame_in("CS3", None, "0,0,3", "mm", RZ90, ["CS1", "CS1", "CS2"]),
+        // Origin WORLD, axes CS2, orientation CS1.
+        frame_in("CS4", None, "0,1,0", "m", IDENTITY, ["WORLD", "CS2", "CS1"]),
+    ]);
+    let (m, _) = ok(&xml);
+    assert_pose(&m, named(&m, 0, "CG"), [100.0, 1.0, 0.0], rot(RZ90));
+    assert_pose(
+        &m,
+        named(&m, 0, "CS3"),
+        [0.0, 0.0, 3.0],
+        rot(RX90) * rot(RZ90),
+    );
+    assert_pose(&m, named(&m, 0, "CS4"), [0.0, 0.0, 1000.0], rot(RZ90));
+}
+
+/// A, B joined by a joint from A's CS2 (ref 1) to B's CS2 (ref 2), which is given ADJOINING
+/// (turned Rz(90) more); B's CG is given relative to its CS2.
+fn adjoining_pair(prims: &[(&str, &str)]) -> String {
+    let adj = ["ADJOINING"; 3];
+    let a = body(
+        "A",
+        "A",
+        &[
+            frame("CG", None, "0,0,0", "mm", IDENTITY),
+            frame("CS1", None, "0,0,0", "mm", IDENTITY),
+            frame("CS2", Some(1), "20,30,0", "mm", RZ90),
+        ],
+    );
+    let b = body(
+        "B",
+        "B",
+        &[
+            frame_in("CG", None, "10,0,0", "mm", IDENTITY, ["CS2"; 3]),
+            frame("CS1", None, "0,0,0", "mm", IDENTITY),
+            frame_in("CS2", Some(2), "0,0,0", "mm", RZ90, adj),
+        ],
+    );
+    document(
+        "SimMechanics",
+        &system(&[a, b], &[joint("A--B", 1, 2, prims)], &[], &[]),
+    )
+}
+
+#[test]
+fn adjoining_follower_frame_is_placed_from_the_base_frame_and_axes_in_joint_frames() {
+    let xml = adjoining_pair(&[
+        ("revolute", "1,0,0"),
+        ("prismatic", "1,0,0"),
+        ("prismatic", "0,0,1"),
+    ])
+    .replacen("<referenceFrame>\"WORLD\"", "<referenceFrame>\"BASE\"", 1)
+    .replacen(
+        "<referenceFrame>\"WORLD\"",
+        "<referenceFrame>\"FOLLOWER\"",
+        1,
+    );
+    let (m, _) = ok(&xml);
+    let rz180 = rot(RZ90) * rot(RZ90);
+    assert_pose(&m, named(&m, 1, "CS2"), [20.0, 30.0, 0.0], rz180);
+    // B's CG: 10 mm along B's CS2 x axis, which points along -x.
+    assert_pose(&m, named(&m, 1, "CG"), [10.0, 30.0, 0.0], rz180);
+    let axes: Vec<_> = m.joints[0]
+        .primitives
+        .iter()
+        .map(|p| p.axis_world)
+        .collect();
+    assert!(
+        (axes[0] - Vector3::new(0.0, 1.0, 0.0)).norm() < 1e-15,
+        "BASE: {}",
+        axes[0]
+    );
+    assert!(
+        (axes[1] - Vector3::new(-1.0, 0.0, 0.0)).norm() < 1e-15,
+        "FOLLOWER: {}",
+        axes[1]
+    );
+    assert_eq!(axes[2], Vector3::new(0.0, 0.0, 1.0), "WORLD");
+}
+
+#[test]
+fn frame_reference_errors_name_frames_and_lines() {
+    // A cycle inside one body: CG -> CS1 -> CG.
+    let xml = one_body(&[
+        frame_in(
+            "CG",
+            None,
+            "0,0,0",
+            "mm",
+            IDENTITY,
+            ["CS1", "WORLD", "WORLD"],
+        ),
+        frame_in(
+            "CS1",
+            None,
+            "0,0,0",
+            "mm",
+            IDENTITY,
+            ["WORLD", "WORLD", "CG"],
+        ),
+    ]);
+    let e = fails(&xml);
+    assert_eq!(e.line, line_of(&xml, "<positionOrigin>\"CS1\""));
+    assert!(
+        e.to_string().ends_with(
+            "Frame \"CG\" (nodeID \"CG-id0\") / positionOrigin: frame references form a cycle: CG -> CS1 -> CG"
+        ),
+        "{e}"
+    );
+    // A frame relative to itself.
+    let xml = one_body(&[
+        frame("CG", None, "0,0,0", "mm", IDENTITY),
+        frame_in(
+            "CS1",
+            None,
+            "0,0,0",
+            "mm",
+            IDENTITY,
+            ["WORLD", "CS1", "WORLD"],
+        ),
+    ]);
+    let e = fails(&xml);
+    assert_eq!(
+        e.kind,
+        XmlErrorKind::FrameCycle {
+            cycle: "CS1 -> CS1".into()
+        }
+    );
+    // Two joint frames ADJOINING each other.
+    let xml = adjoining_pair(&[("revolute", "0,0,1")]).replacen(
+        "<positionOrigin>\"WORLD\"</positionOrigin>\n            <positionReferenceFrame>\"WORLD\"</positionReferenceFrame>\n            <positionUnits>\"mm\"</positionUnits>\n            <orientation>0,1,0",
+        "<positionOrigin>\"ADJOINING\"</positionOrigin>\n            <positionReferenceFrame>\"WORLD\"</positionReferenceFrame>\n            <positionUnits>\"mm\"</positionUnits>\n            <orientation>0,1,0",
+        1,
+    );
+    let e = fails(&xml);
+    assert_eq!(
+        e.kind,
+        XmlErrorKind::FrameCycle {
+            cycle: "CS2 -> CS2 of body \"B\" -> CS2".into()
+        }
+    );
+    assert_eq!(e.line, line_of(&xml, "<positionOrigin>\"ADJOINING\""));
+    // A name the body does not have.
+    let xml = one_body(&[
+        frame_in(
+            "CG",
+            None,
+            "0,0,0",
+            "mm",
+            IDENTITY,
+            ["WORLD", "CS9", "WORLD"],
+        ),
+        frame("CS1", None, "0,0,0", "mm", IDENTITY),
+    ]);
+    let e = fails(&xml);
+    assert_eq!(e.line, line_of(&xml, "<positionReferenceFrame>\"CS9\""));
+    assert!(
+        e.to_string().ends_with(
+            "Frame \"CG\" (nodeID \"CG-id0\") / positionReferenceFrame: frame \"CG\" refers to frame \"CS9\", which its body does not have"
+        ),
+        "{e}"
+    );
+    // ADJOINING on a frame no joint uses.
+    let xml = one_body(&[
+        frame("CG", None, "0,0,0", "mm", IDENTITY),
+        frame_in(
+            "CS1",
+            None,
+            "0,0,0",
+            "mm",
+            IDENTITY,
+            ["WORLD", "WORLD", "ADJOINING"],
+        ),
+    ]);
+    let e = fails(&xml);
+    assert_eq!(
+        e.line,
+        line_of(&xml, "<orientationReferenceFrame>\"ADJOINING\"")
+    );
+    assert_eq!(
+        e.kind.to_string(),
+        "frame \"CS1\" refers to ADJOINING, but 0 joints use it (expected exactly one)"
+    );
+    // ... or that two joints use.
+    let xml = adjoining_pair(&[("revolute", "0,0,1")]).replace(
+        "</joints>",
+        &format!("{}</joints>", joint("A--B 2", 1, 2, &[("weld", "1,1,1")])),
+    );
+    let e = fails(&xml);
+    assert_eq!(
+        e.kind,
+        XmlErrorKind::AdjoiningNotOneJoint {
+            frame: "CS2".into(),
+            joints: 2
+        }
+    );
 }
 
 #[test]
@@ -818,7 +1136,6 @@ fn malformed_xml_is_an_error_at_every_truncation() {
 }
 
 // ----- real exports ----------------------------------------------------------------------------
-
 
 /// Body and joint counts from `MANIFEST.md` (path relative to the fixtures directory).
 const EXPECTED: [(&str, usize, usize); 18] = [
