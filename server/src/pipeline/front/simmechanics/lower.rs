@@ -777,6 +777,8 @@ fn unquote(raw: &[u8]) -> &[u8] {
 /// subsystem, with names and `nodeID`s of the elements that have them, e.g.
 /// `Body "ARM" (nodeID "59") / frames / Frame "CS2" (nodeID "59::CS2") / positionUnits`.
 pub(crate) fn describe(doc: &Doc<'_>, node: NodeId) -> String {
+    const MAX_PATH_SEGMENTS: usize = 12;
+    const MAX_SEGMENT_BYTES: usize = 160;
     let mut segments: Vec<(bool, String)> = Vec::new();
     let mut cur = Some(node);
     while let Some(id) = cur {
@@ -794,6 +796,20 @@ pub(crate) fn describe(doc: &Doc<'_>, node: NodeId) -> String {
         // The root is implied, except when it is the element itself.
         if cur.is_some_and(|p| doc.parent(p).is_none()) {
             break;
+        }
+    }
+    // Bounded whatever the input: the innermost segments (where the problem is) and the
+    // outermost one, each clipped.
+    if segments.len() > MAX_PATH_SEGMENTS {
+        let skipped = segments.len() - MAX_PATH_SEGMENTS;
+        let outer = segments.pop();
+        segments.truncate(MAX_PATH_SEGMENTS - 1);
+        segments.push((false, format!("({skipped} levels)")));
+        segments.extend(outer);
+    }
+    for (_, text) in &mut segments {
+        if text.len() > MAX_SEGMENT_BYTES {
+            *text = crate::pipeline::ir::clip(text, MAX_SEGMENT_BYTES);
         }
     }
     let mut out = String::new();

@@ -1346,3 +1346,18 @@ fn non_simple_joint_entries_warn() {
     assert_eq!(warnings[0].code, "joint-element-skipped");
     assert!(warnings[0].message.contains("UnknownConstraint"));
 }
+
+/// An unclosed, deeply nested file with a 100 KB name gives a short message that still names
+/// the innermost element and the body.
+#[test]
+fn error_paths_are_bounded() {
+    let xml = format!(
+        "<PhysicalModelingXMLFile><SimMechanics><bodies><Body><name>\"{}\"</name>{}",
+        "N".repeat(100_000),
+        (0..200).map(|i| format!("<x{i}>")).collect::<String>()
+    );
+    let e = super::parse("deep.xml", xml.as_bytes()).err().expect("refused");
+    let text = e.to_string();
+    assert!(text.len() < 800, "{} bytes: {text}", text.len());
+    assert!(text.contains("x199") && text.contains("levels") && text.contains("Body \"NNN"), "{text}");
+}
