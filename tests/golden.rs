@@ -146,3 +146,41 @@ fn golden() {
     }
     assert!(problems.is_empty(), "{} golden problems:\n{}", problems.len(), problems.join("\n\n"));
 }
+
+/// The cases under tests/in are exactly what `tests/tools/make_fixtures.py` writes, and its
+/// independent checker `check_fixtures.py` accepts them (poses, masses, meshes, each broken case's
+/// one flaw).
+#[test]
+fn golden_inputs_are_what_the_generator_writes() {
+    let root = workspace_root();
+    let tmp = tempfile::tempdir().expect("tempdir");
+    let run = |script: &str, arg: &Path| {
+        let out = std::process::Command::new("python3").arg(root.join("tests/tools").join(script)).arg(arg).output().expect("python3 runs");
+        assert!(out.status.success(), "{script}: {}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
+    };
+    run("make_fixtures.py", tmp.path());
+    let mut compared = 0;
+    for case in sorted_dirs(tmp.path()) {
+        for entry in walk(&case) {
+            let rel = entry.strip_prefix(tmp.path()).expect("under tmp");
+            let committed = std::fs::read(root.join("tests/in").join(rel)).unwrap_or_default();
+            assert!(std::fs::read(&entry).expect("read") == committed, "tests/in/{} differs from the generator's output: run python3 tests/tools/make_fixtures.py", rel.display());
+            compared += 1;
+        }
+    }
+    assert!(compared > 50, "only {compared} files compared");
+    run("check_fixtures.py", &root.join("tests/in"));
+}
+
+fn walk(dir: &Path) -> Vec<std::path::PathBuf> {
+    let mut out = Vec::new();
+    for e in std::fs::read_dir(dir).expect("read_dir").flatten() {
+        let p = e.path();
+        if p.is_dir() {
+            out.extend(walk(&p));
+        } else {
+            out.push(p);
+        }
+    }
+    out
+}
