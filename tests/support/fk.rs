@@ -544,8 +544,9 @@ pub fn body_inertia_world(model: &Model, poses: &Poses, body: &str) -> Option<Ma
     Some(r * ia * r.transpose())
 }
 
+/// Builders of `Mechanics.mo` texts, shared with the structural check's tests.
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use std::f64::consts::FRAC_PI_2;
 
@@ -561,13 +562,13 @@ mod tests {
         format!("{{{}, {}, {}}}", num(v[0]), num(v[1]), num(v[2]))
     }
 
-    fn world() -> String {
+    pub(crate) fn world() -> String {
         format!(
             "  inner {MB}.World world(n={{0.0, -1.0, 0.0}}, g=9.81) \"World frame: the CAD assembly's frame\"\n    {PLACE};\n"
         )
     }
 
-    fn body(name: &str, r_cm: [f64; 3], i: [f64; 6]) -> String {
+    pub(crate) fn body(name: &str, r_cm: [f64; 3], i: [f64; 6]) -> String {
         format!(
             "  {MB}.Parts.Body {name}(\n    m=1.5,\n    r_CM={},\n    I_11={}, I_22={}, I_33={},\n    I_21={}, I_31={}, I_32={},\n    animation=false)\n    \"Part {name} (nodeID 1)\" {PLACE};\n",
             v3(r_cm),
@@ -580,14 +581,14 @@ mod tests {
         )
     }
 
-    fn translation(name: &str, r: [f64; 3]) -> String {
+    pub(crate) fn translation(name: &str, r: [f64; 3]) -> String {
         format!(
             "  {MB}.Parts.FixedTranslation {name}(r={}, animation=false)\n    \"Frame of {name}\" {PLACE};\n",
             v3(r)
         )
     }
 
-    fn rotation(name: &str, r: [f64; 3], nx: [f64; 3], ny: [f64; 3]) -> String {
+    pub(crate) fn rotation(name: &str, r: [f64; 3], nx: [f64; 3], ny: [f64; 3]) -> String {
         format!(
             "  {MB}.Parts.FixedRotation {name}(\n    r={},\n    rotationType={MB}.Types.RotationTypes.TwoAxesVectors,\n    n_x={},\n    n_y={},\n    animation=false)\n    \"Frame of {name}\" {PLACE};\n",
             v3(r),
@@ -596,7 +597,7 @@ mod tests {
         )
     }
 
-    fn revolute(name: &str, n: [f64; 3], q: f64, fixed: bool) -> String {
+    pub(crate) fn revolute(name: &str, n: [f64; 3], q: f64, fixed: bool) -> String {
         let f = if fixed { ", fixed=true" } else { "" };
         format!(
             "  Demo.Components.Revolute {name}(\n    n={},\n    phi(start={}{f}),\n    w(start=0{f}))\n    \"Joint {name} (nodeID 9)\" {PLACE};\n",
@@ -605,7 +606,7 @@ mod tests {
         )
     }
 
-    fn prismatic(name: &str, n: [f64; 3], q: f64) -> String {
+    pub(crate) fn prismatic(name: &str, n: [f64; 3], q: f64) -> String {
         format!(
             "  Demo.Components.Prismatic {name}(\n    n={},\n    s(start={}, fixed=true),\n    v(start=0, fixed=true))\n    \"Joint {name} (nodeID 9)\" {PLACE};\n",
             v3(n),
@@ -613,7 +614,7 @@ mod tests {
         )
     }
 
-    fn spherical(name: &str, states: bool) -> String {
+    pub(crate) fn spherical(name: &str, states: bool) -> String {
         let s = if states {
             "(\n    enforceStates=true,\n    useQuaternions=true,\n    angles_fixed=true,\n    w_rel_a_fixed=true)"
         } else {
@@ -622,7 +623,7 @@ mod tests {
         format!("  {MB}.Joints.Spherical {name}{s}\n    \"Joint {name} (nodeID 9)\" {PLACE};\n")
     }
 
-    fn planar_constraint(name: &str, n: [f64; 3]) -> String {
+    pub(crate) fn planar_constraint(name: &str, n: [f64; 3]) -> String {
         format!(
             "  {MB}.Joints.RevolutePlanarLoopConstraint {name}(n={})\n    \"Joint {name} (nodeID 9): closes a planar loop\" {PLACE};\n",
             v3(n)
@@ -635,7 +636,7 @@ mod tests {
         )
     }
 
-    fn mechanics(decls: &[String], connects: &[(&str, &str)]) -> String {
+    pub(crate) fn mechanics(decls: &[String], connects: &[(&str, &str)]) -> String {
         let eqs: String = connects.iter().map(|(a, b)| format!("  connect({a}, {b});\n")).collect();
         format!(
             "within Demo;\nmodel Mechanics \"Mechanical model of demo (n bodies, n joints)\"\n{}\nequation\n{eqs}  annotation (\n    experiment(StopTime=1),\n    Documentation(info=\"<html>\n<p>Converted.</p>\n</html>\"));\nend Mechanics;\n",
@@ -649,7 +650,7 @@ mod tests {
         Ok((model, poses))
     }
 
-    fn fk_ok(text: &str) -> (Model, Poses) {
+    pub(crate) fn fk_ok(text: &str) -> (Model, Poses) {
         match fk(text) {
             Ok(r) => r,
             Err(e) => panic!("forward kinematics failed: {e}\n{text}"),
@@ -833,7 +834,7 @@ mod tests {
     /// A four-bar: ground pivots A = 0 and B = (d, 0, 0); crank a at theta2, coupler b, rocker c.
     /// Each link's frame_a is at its base pivot with x along the link; the loop closes at D
     /// between rocker_CS2.frame_b and coupler_CS2.frame_b.
-    fn four_bar(j3_error: f64, closing_axis: [f64; 3], with_j3: bool) -> String {
+    pub(crate) fn four_bar(j3_error: f64, closing_axis: [f64; 3], with_j3: bool) -> String {
         let (a, b, c, d) = (0.3, 0.9, 0.7, 1.0);
         let t2: f64 = 0.8;
         let cx = a * t2.cos();
@@ -926,7 +927,7 @@ mod tests {
     }
 
     /// A `Joints.Constraints.KIND` element with the modifiers `mods` (written as in Modelica).
-    fn cut_constraint(name: &str, kind: &str, mods: &str) -> String {
+    pub(crate) fn cut_constraint(name: &str, kind: &str, mods: &str) -> String {
         let mods = if mods.is_empty() { String::new() } else { format!("({mods})") };
         format!("  {MB}.Joints.Constraints.{kind} {name}{mods}\n    \"Joint {name} (nodeID 9): closes a loop\" {PLACE};\n")
     }
