@@ -483,8 +483,9 @@ fn vec3(s: &str) -> Option<Vector3<f64>> {
 /// grounds fixed; each `<SimpleJoint>` constrains its follower body's twist relative to its base
 /// body to the span of its primitives: a revolute about its world axis through the base frame's
 /// origin, a prismatic along its axis, a spherical (3 rotations) about the base frame's origin, a
-/// weld nothing. A primitive's `referenceFrame` `BASE` or `FOLLOWER` gives the axis in that
-/// frame's axes. The rows are an orthonormal basis of the wrenches annihilating that span.
+/// weld nothing, a revolute or prismatic whose axis is (0, 0, 0) nothing either (it has no
+/// direction to move along). A primitive's `referenceFrame` `BASE` or `FOLLOWER` gives the axis
+/// in that frame's axes. The rows are an orthonormal basis of the wrenches annihilating that span.
 pub fn cad_structure(xml: &str) -> Result<Structure, String> {
     let poses = xml_frames(xml);
     // Frame ref -> (owner: Some(free body) / None (ground), frame nodeID).
@@ -523,7 +524,8 @@ pub fn cad_structure(xml: &str) -> Result<Structure, String> {
                     "FOLLOWER" => rot_follower * v,
                     _ => v,
                 };
-                v.try_normalize(0.0).ok_or_else(|| format!("joint {name}: {kind} axis is the zero vector"))
+                // An axis (0, 0, 0) has no direction: the primitive allows no motion.
+                Ok(v.try_normalize(0.0).unwrap_or_default())
             };
             // Twists at the base frame's origin p: (ω, v_p).
             match kind {
