@@ -294,6 +294,11 @@ pub fn element(model: &Model, c: &Component) -> Result<Element, String> {
     }
 }
 
+/// `x <= tol`, false for NaN (a NaN residual is a violation).
+fn within(x: f64, tol: f64) -> bool {
+    x <= tol
+}
+
 /// Checks a constraint element's equations at the start poses `a` (frame_a) and `b` (frame_b),
 /// to `pos_tol` m and `angle_tol` (rad, or the sine of an angle).
 fn check_constraint(
@@ -323,7 +328,7 @@ fn check_constraint(
             // frame_b's origin relative to frame_a's, resolved in frame_a.
             let r = a.rotation.inverse() * (b.translation.vector - a.translation.vector);
             for (i, axis) in ["x", "y", "z"].iter().enumerate() {
-                if cut.locked[i] && !(r[i].abs() <= pos_tol) {
+                if cut.locked[i] && !within(r[i].abs(), pos_tol) {
                     return Err(format!(
                         "Constraints.{kind} {name} violated between {fa} and {fb}: frame_b's origin is {:e} m from \
                          frame_a's along the locked {axis} axis of frame_a",
@@ -335,7 +340,7 @@ fn check_constraint(
                 CutRotation::Free => {}
                 CutRotation::About(n) => {
                     let dn = (rel * n - n).norm();
-                    if !(dn <= angle_tol) {
+                    if !within(dn, angle_tol) {
                         return Err(format!(
                             "Constraints.{kind} {name} violated between {fa} and {fb}: R_a^T R_b moves the axis {:?} \
                              by {dn:e}",
@@ -345,7 +350,7 @@ fn check_constraint(
                 }
                 CutRotation::Locked => {
                     let da = rotation_angle(&a.rotation, &b.rotation);
-                    if !(da <= angle_tol) {
+                    if !within(da, angle_tol) {
                         return Err(format!(
                             "Constraints.{kind} {name} violated between {fa} and {fb}: the frames are rotated by \
                              {da:e} rad"
@@ -354,7 +359,7 @@ fn check_constraint(
                 }
                 CutRotation::Perpendicular { n_a, n_b } => {
                     let dot = n_a.dot(&(rel * n_b));
-                    if !(dot.abs() <= angle_tol) {
+                    if !within(dot.abs(), angle_tol) {
                         return Err(format!(
                             "Constraints.{kind} {name} violated between {fa} and {fb}: n_a {:?} . n_b {:?} = {dot:e} \
                              (must be 0)",

@@ -505,7 +505,9 @@ pub fn cad_structure(xml: &str) -> Result<Structure, String> {
     let mut couplings = Vec::new();
     for j in xml_blocks(xml, "SimpleJoint") {
         let name = xml_value(j, "nodeID").or(xml_value(j, "name")).unwrap_or("?").to_string();
-        let side = |tag: &str| -> Result<(Option<usize>, Matrix3<f64>, Vector3<f64>), String> {
+        // The side's body (None: a ground), its frame's axes and origin.
+        type Side = (Option<usize>, Matrix3<f64>, Vector3<f64>);
+        let side = |tag: &str| -> Result<Side, String> {
             let r = xml_blocks(j, tag).first().and_then(|s| frame_ref(s)).ok_or_else(|| format!("joint {name}: no {tag} frame"))?;
             let (body, node) = owner.get(r).ok_or_else(|| format!("joint {name}: {tag} frame ref {r} belongs to no body or ground"))?;
             let f = poses.get(*node).ok_or_else(|| format!("joint {name}: no unambiguous pose for frame {node}"))?;
