@@ -31,8 +31,10 @@ fn check(name: &str, mechanics: &str, xml: &str) -> Result<(), String> {
     let m = model_structure(&model, &poses).map_err(|e| format!("{name}: model: {e}"))?;
     let cad = cad_structure(xml).map_err(|e| format!("{name}: XML: {e}"))?;
     println!(
-        "{name}: model {} rows, rank {}, {} redundant, {} free groups, mobility {}; CAD {} rows, rank {}, {} bodies, mobility {}",
-        m.rows, m.rank, m.redundant, m.free_groups, m.mobility, cad.rows, cad.rank, cad.free_groups, cad.mobility
+        "{name}: model {} rows, rank {}, {} redundant, {} free groups, mobility {}; CAD {} rows, rank {}, {} bodies, \
+         mobility {}; singular values kept >= {:.1e} / {:.1e}, dropped <= {:.1e} / {:.1e} (model / CAD)",
+        m.rows, m.rank, m.redundant, m.free_groups, m.mobility, cad.rows, cad.rank, cad.free_groups, cad.mobility,
+        m.smallest_kept, cad.smallest_kept, m.largest_dropped, cad.largest_dropped
     );
     let mut errors = Vec::new();
     if m.redundant != 0 {

@@ -125,6 +125,10 @@ pub struct Structure {
     pub free_groups: usize,
     /// 6 × free_groups - rank.
     pub mobility: usize,
+    /// The smallest singular value counted in the rank, and the largest one below
+    /// [`TOL_RANK`] (0 when none): the margins on either side of the tolerance.
+    pub smallest_kept: f64,
+    pub largest_dropped: f64,
     /// Every element that closed a loop (its groups were already connected), in order; plus an
     /// entry `spanning tree` when the tree elements' own rows are dependent.
     pub closures: Vec<Closure>,
@@ -167,10 +171,11 @@ impl Sets {
     }
 }
 
-/// Numerical rank: singular values above [`TOL_RANK`].
-fn rank(rows: &[Vector6<f64>], coupling_cols: &[(Option<usize>, Option<usize>)], columns: usize) -> usize {
+/// Numerical rank (singular values above [`TOL_RANK`]), with the smallest kept and the
+/// largest dropped singular value.
+fn rank(rows: &[Vector6<f64>], coupling_cols: &[(Option<usize>, Option<usize>)], columns: usize) -> (usize, f64, f64) {
     if rows.is_empty() || columns == 0 {
-        return 0;
+        return (0, f64::INFINITY, 0.0);
     }
     let mut m = DMatrix::<f64>::zeros(rows.len(), columns);
     for (i, (r, (a, b))) in rows.iter().zip(coupling_cols).enumerate() {
@@ -185,7 +190,11 @@ fn rank(rows: &[Vector6<f64>], coupling_cols: &[(Option<usize>, Option<usize>)],
             }
         }
     }
-    m.singular_values().iter().filter(|s| **s > TOL_RANK).count()
+    let sv = m.singular_values();
+    let kept = sv.iter().filter(|s| **s > TOL_RANK);
+    let smallest = kept.clone().copied().fold(f64::INFINITY, f64::min);
+    let dropped = sv.iter().filter(|s| **s <= TOL_RANK).copied().fold(0.0, f64::max);
+    (kept.count(), smallest, dropped)
 }
 
 /// The couplings in the order a breadth-first walk meets them: from the world (node `free`)
@@ -250,7 +259,7 @@ pub fn solve(free: usize, groups: usize, couplings: &[Coupling]) -> Structure {
         let key = c.a.or(c.b).map(|g| mech.find(g));
         by_mech.entry(key).or_default().push(i);
     }
-    let mut s = Structure { groups, free_groups: free, ..Structure::default() };
+    let mut s = Structure { groups, free_groups: free, smallest_kept: f64::INFINITY, ..Structure::default() };
     for (key, members) in by_mech {
         // Local columns: the mechanism's free groups.
         let mut cols: BTreeMap<usize, usize> = BTreeMap::new();
@@ -285,7 +294,7 @@ pub fn solve(free: usize, groups: usize, couplings: &[Coupling]) -> Structure {
         for &i in &tree_members {
             push(i, &mut rows, &mut at);
         }
-        let mut r = rank(&rows, &at, 6 * cols.len());
+        let (mut r, _, _) = rank(&rows, &at, 6 * cols.len());
         if r < rows.len() {
             s.closures.push(Closure {
                 element: "spanning tree".into(),
@@ -297,7 +306,7 @@ pub fn solve(free: usize, groups: usize, couplings: &[Coupling]) -> Structure {
         for &i in &closers {
             let before = rows.len();
             push(i, &mut rows, &mut at);
-            let r2 = rank(&rows, &at, 6 * cols.len());
+            let (r2, _, _) = rank(&rows, &at, 6 * cols.len());
             s.closures.push(Closure {
                 element: couplings[i].name.clone(),
                 what: couplings[i].what.clone(),
@@ -306,6 +315,9 @@ pub fn solve(free: usize, groups: usize, couplings: &[Coupling]) -> Structure {
             });
             r = r2;
         }
+        let (_, kept, dropped) = rank(&rows, &at, 6 * cols.len());
+        s.smallest_kept = s.smallest_kept.min(kept);
+        s.largest_dropped = s.largest_dropped.max(dropped);
         s.rows += rows.len();
         s.rank += r;
     }
@@ -770,7 +782,7 @@ mod tests {
             &[("world.frame_b", "b.frame_a"), ("b.frame_a", "c.frame_a"), ("c.frame_a", "world.frame_b")],
         );
         let s = structure_of(&text);
-        assert_eq!(s, Structure { groups: 1, ..Structure::default() });
+        assert_eq!((s.groups, s.rows, s.mobility, s.closures.len()), (1, 0, 0, 0));
     }
 
     #[test]
