@@ -12,6 +12,11 @@
 //! - `Joints.Spherical`: the identity (its angles start at 0);
 //! - `Joints.RevolutePlanarLoopConstraint(n)`: not walked through; once both frames are known it
 //!   is checked (same origin, R_a^T R_b keeps n);
+//! - `Joints.Constraints.{Spherical, Revolute(n), Prismatic, Universal(n_a, n_b)}`: not walked
+//!   through; once both frames are known their equations are checked: frame_b's origin resolved
+//!   in frame_a is zero along each locked axis (`x_locked`, ... default true), and the relative
+//!   rotation is about n only (Revolute), none (Prismatic), or keeps n_a perpendicular to n_b
+//!   (Universal);
 //! - `World` (frame_b), `Parts.Body` and `Visualizers.FixedShape` (frame_a): end points.
 //!
 //! Both directions are walked. A connector reached a second time (a loop closing through a
@@ -37,7 +42,7 @@ pub struct Poses {
     /// `"LINK.frame_a"` -> pose of the connector in the world frame.
     pub connectors: BTreeMap<String, Isometry3<f64>>,
     /// Consistency checks performed on connections that closed loops (a connector reached a
-    /// second time, or a `RevolutePlanarLoopConstraint` with both frames known).
+    /// second time, or a constraint element with both frames known).
     pub loop_checks: usize,
 }
 
@@ -61,23 +66,100 @@ pub fn rotation_angle(a: &UnitQuaternion<f64>, b: &UnitQuaternion<f64>) -> f64 {
     2.0 * q.imag().norm().atan2(q.scalar().abs())
 }
 
-/// What a component does to the walk.
-enum Kind {
-    /// Seeds its frame_b with the identity.
+/// What a component is, with MSL semantics at its start values. The walker and the structural
+/// check (`structure.rs`) both classify components with [`element`], so the two agree on every
+/// class they know.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Element {
+    /// `World`: seeds its frame_b with the identity.
     World,
-    /// A single connector frame_a, nothing to propagate (Body, FixedShape).
+    /// A single connector frame_a, nothing to propagate (`Parts.Body`, `Visualizers.FixedShape`).
     Leaf,
-    /// pose(frame_b) = pose(frame_a) * transform.
-    Edge(Isometry3<f64>),
-    /// Checked once both frames are known; unit axis in frame_a.
-    LoopConstraint(Vector3<f64>),
+    /// `Parts.FixedTranslation`, `Parts.FixedRotation`: pose(frame_b) = pose(frame_a) * transform.
+    Rigid(Isometry3<f64>),
+    /// `PKG.Components.Revolute`: rotation by `phi` (start value) about unit `n` (frame_a).
+    Revolute { n: Unit<Vector3<f64>>, phi: f64 },
+    /// `PKG.Components.Prismatic`: translation by `s` (start value) along unit `n` (frame_a).
+    Prismatic { n: Unit<Vector3<f64>>, s: f64 },
+    /// `Joints.Spherical`: coincident origins, rotation free (the identity at the start).
+    Spherical,
+    /// A loop-closing constraint: not walked through, checked once both frames are known.
+    Constraint(Constraint),
 }
 
-fn connectors_of(kind: &Kind) -> &'static [&'static str] {
-    match kind {
-        Kind::World => &["frame_b"],
-        Kind::Leaf => &["frame_a"],
-        Kind::Edge(_) | Kind::LoopConstraint(_) => &["frame_a", "frame_b"],
+/// The equations of a loop-closing constraint element.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Constraint {
+    /// `Joints.RevolutePlanarLoopConstraint(n)`, unit `n` in frame_a: the relative position of
+    /// frame_b's origin, resolved in frame_a, has no component perpendicular to n (2 equations).
+    /// The walker checks the stronger start-pose condition the converter guarantees: same
+    /// origin, and R_a^T R_b keeps n.
+    PlanarLoop(Vector3<f64>),
+    /// `Joints.Constraints.{Spherical, Revolute, Prismatic, Universal}`.
+    Cut(Cut),
+}
+
+/// A `Joints.Constraints.*` element.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Cut {
+    /// `Spherical`, `Revolute`, `Prismatic` or `Universal`.
+    pub kind: &'static str,
+    /// `x_locked`, `y_locked`, `z_locked` (default true): frame_b's origin, resolved in frame_a,
+    /// has a zero component along that axis of frame_a.
+    pub locked: [bool; 3],
+    pub rotation: CutRotation,
+}
+
+/// The rotational equations of a [`Cut`].
+#[derive(Clone, Debug, PartialEq)]
+pub enum CutRotation {
+    /// `Constraints.Spherical`: none.
+    Free,
+    /// `Constraints.Revolute(n)`: relative rotation about unit `n` (frame_a) only (2 equations).
+    About(Vector3<f64>),
+    /// `Constraints.Prismatic`: no relative rotation (3 equations).
+    Locked,
+    /// `Constraints.Universal(n_a, n_b)`: unit `n_a` (fixed in frame_a) stays perpendicular to
+    /// unit `n_b` (fixed in frame_b) (1 equation).
+    Perpendicular { n_a: Vector3<f64>, n_b: Vector3<f64> },
+}
+
+impl Cut {
+    /// Number of equations: locked translations plus rotational equations.
+    pub fn equations(&self) -> usize {
+        let rot = match self.rotation {
+            CutRotation::Free => 0,
+            CutRotation::About(_) => 2,
+            CutRotation::Locked => 3,
+            CutRotation::Perpendicular { .. } => 1,
+        };
+        self.locked.iter().filter(|l| **l).count() + rot
+    }
+}
+
+impl Element {
+    /// pose(frame_b) = pose(frame_a) * transform, for elements the walker goes through.
+    pub fn transform(&self) -> Option<Isometry3<f64>> {
+        match self {
+            Element::Rigid(t) => Some(*t),
+            Element::Revolute { n, phi } => {
+                Some(Isometry3::from_parts(Translation3::identity(), UnitQuaternion::from_axis_angle(n, *phi)))
+            }
+            Element::Prismatic { n, s } => {
+                Some(Isometry3::from_parts(Translation3::from(n.into_inner() * *s), UnitQuaternion::identity()))
+            }
+            Element::Spherical => Some(Isometry3::identity()),
+            Element::World | Element::Leaf | Element::Constraint(_) => None,
+        }
+    }
+
+    /// The element's frame connectors.
+    pub fn connectors(&self) -> &'static [&'static str] {
+        match self {
+            Element::World => &["frame_b"],
+            Element::Leaf => &["frame_a"],
+            _ => &["frame_a", "frame_b"],
+        }
     }
 }
 
@@ -99,10 +181,23 @@ fn num_param(c: &Component, key: &str, default: Option<f64>) -> Result<f64, Stri
     }
 }
 
+fn bool_param(c: &Component, key: &str, default: bool) -> Result<bool, String> {
+    match c.params.get(key) {
+        None => Ok(default),
+        Some(Value::Bool(b)) => Ok(*b),
+        Some(other) => Err(format!("component `{}` ({}): `{key}` = {other} is not a Boolean", c.name, c.class)),
+    }
+}
+
+/// unit(param), like MSL's `normalizeWithAssert`.
+fn unit_param(c: &Component, key: &str, default: [f64; 3]) -> Result<Unit<Vector3<f64>>, String> {
+    let n = vec3_param(c, key, Some(default))?;
+    Unit::try_new(n, 0.0).ok_or_else(|| format!("component `{}` ({}): axis {key} is the zero vector", c.name, c.class))
+}
+
 /// unit(n), like MSL's `normalizeWithAssert`.
 fn axis_param(c: &Component, default: [f64; 3]) -> Result<Unit<Vector3<f64>>, String> {
-    let n = vec3_param(c, "n", Some(default))?;
-    Unit::try_new(n, 0.0).ok_or_else(|| format!("component `{}` ({}): axis n is the zero vector", c.name, c.class))
+    unit_param(c, "n", default)
 }
 
 /// MSL `Frames.from_nxy`: columns e_x, e_y, e_z of frame_b resolved in frame_a.
@@ -121,61 +216,162 @@ pub fn from_nxy(n_x: &Vector3<f64>, n_y: &Vector3<f64>) -> Rotation3<f64> {
     Rotation3::from_matrix_unchecked(Matrix3::from_columns(&[e_x, e_y, e_z]))
 }
 
-fn classify(model: &Model, c: &Component) -> Result<Kind, String> {
-    let pkg = &model.package;
-    let class = c.class.as_str();
-    let edge = |t: Translation3<f64>, r: UnitQuaternion<f64>| Ok(Kind::Edge(Isometry3::from_parts(t, r)));
-    match class {
-        _ if class == format!("{MB}.World") => Ok(Kind::World),
-        _ if class == format!("{MB}.Parts.Body") || class == format!("{MB}.Visualizers.FixedShape") => Ok(Kind::Leaf),
-        _ if class == format!("{MB}.Parts.FixedTranslation") => {
-            edge(Translation3::from(vec3_param(c, "r", None)?), UnitQuaternion::identity())
+fn fixed_rotation(c: &Component) -> Result<Element, String> {
+    let r = vec3_param(c, "r", Some([0.0; 3]))?;
+    let rot_type = match c.params.get("rotationType") {
+        None => "RotationAxis".to_string(),
+        Some(Value::Ident(s)) => s.rsplit('.').next().unwrap_or_default().to_string(),
+        Some(other) => return Err(format!("component `{}`: rotationType = {other} is not a name", c.name)),
+    };
+    let rot = match rot_type.as_str() {
+        "TwoAxesVectors" => {
+            let n_x = vec3_param(c, "n_x", Some([1.0, 0.0, 0.0]))?;
+            let n_y = vec3_param(c, "n_y", Some([0.0, 1.0, 0.0]))?;
+            UnitQuaternion::from_rotation_matrix(&from_nxy(&n_x, &n_y))
         }
-        _ if class == format!("{MB}.Parts.FixedRotation") => {
-            let r = vec3_param(c, "r", Some([0.0; 3]))?;
-            let rot_type = match c.params.get("rotationType") {
-                None => "RotationAxis".to_string(),
-                Some(Value::Ident(s)) => s.rsplit('.').next().unwrap_or_default().to_string(),
-                Some(other) => return Err(format!("component `{}`: rotationType = {other} is not a name", c.name)),
-            };
-            let rot = match rot_type.as_str() {
-                "TwoAxesVectors" => {
-                    let n_x = vec3_param(c, "n_x", Some([1.0, 0.0, 0.0]))?;
-                    let n_y = vec3_param(c, "n_y", Some([0.0, 1.0, 0.0]))?;
-                    UnitQuaternion::from_rotation_matrix(&from_nxy(&n_x, &n_y))
-                }
-                "RotationAxis" => {
-                    let n = axis_param(c, [1.0, 0.0, 0.0])?;
-                    let angle_deg = num_param(c, "angle", Some(0.0))?;
-                    UnitQuaternion::from_axis_angle(&n, angle_deg.to_radians())
-                }
-                other => return Err(format!("component `{}`: rotationType {other} is not supported", c.name)),
-            };
-            edge(Translation3::from(r), rot)
-        }
-        _ if class == format!("{pkg}.Components.Revolute") => {
-            let n = axis_param(c, [0.0, 0.0, 1.0])?;
-            let phi = num_param(c, "phi.start", Some(0.0))?;
-            edge(Translation3::identity(), UnitQuaternion::from_axis_angle(&n, phi))
-        }
-        _ if class == format!("{pkg}.Components.Prismatic") => {
+        "RotationAxis" => {
             let n = axis_param(c, [1.0, 0.0, 0.0])?;
-            let s = num_param(c, "s.start", Some(0.0))?;
-            edge(Translation3::from(n.into_inner() * s), UnitQuaternion::identity())
+            let angle_deg = num_param(c, "angle", Some(0.0))?;
+            UnitQuaternion::from_axis_angle(&n, angle_deg.to_radians())
         }
-        _ if class == format!("{MB}.Joints.Spherical") => {
-            if let Some(v) = c.params.get("angles_start") {
-                if *v != Value::Vec(vec![0.0; 3]) {
-                    return Err(format!("component `{}`: Spherical with angles_start = {v} is not supported", c.name));
-                }
+        other => return Err(format!("component `{}`: rotationType {other} is not supported", c.name)),
+    };
+    Ok(Element::Rigid(Isometry3::from_parts(Translation3::from(r), rot)))
+}
+
+/// A `Joints.Constraints.*` class (`kind` is the last part of its name).
+fn cut(c: &Component, kind: &'static str) -> Result<Element, String> {
+    let locked = [bool_param(c, "x_locked", true)?, bool_param(c, "y_locked", true)?, bool_param(c, "z_locked", true)?];
+    let rotation = match kind {
+        "Spherical" => CutRotation::Free,
+        "Revolute" => CutRotation::About(axis_param(c, [0.0, 0.0, 1.0])?.into_inner()),
+        "Prismatic" => CutRotation::Locked,
+        _ => CutRotation::Perpendicular {
+            n_a: unit_param(c, "n_a", [1.0, 0.0, 0.0])?.into_inner(),
+            n_b: unit_param(c, "n_b", [0.0, 1.0, 0.0])?.into_inner(),
+        },
+    };
+    Ok(Element::Constraint(Constraint::Cut(Cut { kind, locked, rotation })))
+}
+
+/// Classifies a component of `model` (whose package is `model.package`).
+pub fn element(model: &Model, c: &Component) -> Result<Element, String> {
+    let class = c.class.as_str();
+    if let Some(short) = class.strip_prefix(MB).and_then(|s| s.strip_prefix('.')) {
+        return match short {
+            "World" => Ok(Element::World),
+            "Parts.Body" | "Visualizers.FixedShape" => Ok(Element::Leaf),
+            "Parts.FixedTranslation" => {
+                Ok(Element::Rigid(Isometry3::from_parts(Translation3::from(vec3_param(c, "r", None)?), UnitQuaternion::identity())))
             }
-            edge(Translation3::identity(), UnitQuaternion::identity())
+            "Parts.FixedRotation" => fixed_rotation(c),
+            "Joints.Spherical" => {
+                if let Some(v) = c.params.get("angles_start") {
+                    if *v != Value::Vec(vec![0.0; 3]) {
+                        return Err(format!("component `{}`: Spherical with angles_start = {v} is not supported", c.name));
+                    }
+                }
+                Ok(Element::Spherical)
+            }
+            "Joints.RevolutePlanarLoopConstraint" => {
+                Ok(Element::Constraint(Constraint::PlanarLoop(axis_param(c, [0.0, 0.0, 1.0])?.into_inner())))
+            }
+            "Joints.Constraints.Spherical" => cut(c, "Spherical"),
+            "Joints.Constraints.Revolute" => cut(c, "Revolute"),
+            "Joints.Constraints.Prismatic" => cut(c, "Prismatic"),
+            "Joints.Constraints.Universal" => cut(c, "Universal"),
+            _ => Err(format!("component `{}`: unknown class `{}`", c.name, c.class)),
+        };
+    }
+    match class.strip_prefix(model.package.as_str()).and_then(|s| s.strip_prefix(".Components.")) {
+        Some("Revolute") if !model.package.is_empty() => {
+            Ok(Element::Revolute { n: axis_param(c, [0.0, 0.0, 1.0])?, phi: num_param(c, "phi.start", Some(0.0))? })
         }
-        _ if class == format!("{MB}.Joints.RevolutePlanarLoopConstraint") => {
-            Ok(Kind::LoopConstraint(axis_param(c, [0.0, 0.0, 1.0])?.into_inner()))
+        Some("Prismatic") if !model.package.is_empty() => {
+            Ok(Element::Prismatic { n: axis_param(c, [1.0, 0.0, 0.0])?, s: num_param(c, "s.start", Some(0.0))? })
         }
         _ => Err(format!("component `{}`: unknown class `{}`", c.name, c.class)),
     }
+}
+
+/// `x <= tol`, false for NaN (a NaN residual is a violation).
+fn within(x: f64, tol: f64) -> bool {
+    x <= tol
+}
+
+/// Checks a constraint element's equations at the start poses `a` (frame_a) and `b` (frame_b),
+/// to `pos_tol` m and `angle_tol` (rad, or the sine of an angle).
+fn check_constraint(
+    name: &str,
+    constraint: &Constraint,
+    a: &Isometry3<f64>,
+    b: &Isometry3<f64>,
+    pos_tol: f64,
+    angle_tol: f64,
+) -> Result<(), String> {
+    let (fa, fb) = (format!("{name}.frame_a"), format!("{name}.frame_b"));
+    let rel = a.rotation.inverse() * b.rotation;
+    match constraint {
+        Constraint::PlanarLoop(n) => {
+            let dp = (a.translation.vector - b.translation.vector).norm();
+            let dn = (rel * n - n).norm();
+            if !(dp <= pos_tol && dn <= angle_tol) {
+                return Err(format!(
+                    "RevolutePlanarLoopConstraint {name} violated between {fa} and {fb}: origins differ by {dp:e} m, \
+                     R_a^T R_b moves the axis {:?} by {dn:e}",
+                    n.as_slice()
+                ));
+            }
+        }
+        Constraint::Cut(cut) => {
+            let kind = cut.kind;
+            // frame_b's origin relative to frame_a's, resolved in frame_a.
+            let r = a.rotation.inverse() * (b.translation.vector - a.translation.vector);
+            for (i, axis) in ["x", "y", "z"].iter().enumerate() {
+                if cut.locked[i] && !within(r[i].abs(), pos_tol) {
+                    return Err(format!(
+                        "Constraints.{kind} {name} violated between {fa} and {fb}: frame_b's origin is {:e} m from \
+                         frame_a's along the locked {axis} axis of frame_a",
+                        r[i]
+                    ));
+                }
+            }
+            match &cut.rotation {
+                CutRotation::Free => {}
+                CutRotation::About(n) => {
+                    let dn = (rel * n - n).norm();
+                    if !within(dn, angle_tol) {
+                        return Err(format!(
+                            "Constraints.{kind} {name} violated between {fa} and {fb}: R_a^T R_b moves the axis {:?} \
+                             by {dn:e}",
+                            n.as_slice()
+                        ));
+                    }
+                }
+                CutRotation::Locked => {
+                    let da = rotation_angle(&a.rotation, &b.rotation);
+                    if !within(da, angle_tol) {
+                        return Err(format!(
+                            "Constraints.{kind} {name} violated between {fa} and {fb}: the frames are rotated by \
+                             {da:e} rad"
+                        ));
+                    }
+                }
+                CutRotation::Perpendicular { n_a, n_b } => {
+                    let dot = n_a.dot(&(rel * n_b));
+                    if !within(dot.abs(), angle_tol) {
+                        return Err(format!(
+                            "Constraints.{kind} {name} violated between {fa} and {fb}: n_a {:?} . n_b {:?} = {dot:e} \
+                             (must be 0)",
+                            n_a.as_slice(),
+                            n_b.as_slice()
+                        ));
+                    }
+                }
+            }
+        }
+    }
+    Ok(())
 }
 
 struct Link {
@@ -194,26 +390,27 @@ pub fn forward_kinematics(model: &Model) -> Result<Poses, String> {
 /// World poses of every connector reachable from the world, checking every loop closure to
 /// `pos_tol` m and `angle_tol` rad.
 pub fn forward_kinematics_tol(model: &Model, pos_tol: f64, angle_tol: f64) -> Result<Poses, String> {
-    let mut kinds: BTreeMap<&str, Kind> = BTreeMap::new();
+    let mut kinds: BTreeMap<&str, Element> = BTreeMap::new();
     let mut world = None;
     let mut links: Vec<Link> = Vec::new();
     let mut constraints = Vec::new();
     for c in &model.components {
-        let kind = classify(model, c)?;
-        match &kind {
-            Kind::World => {
-                if let Some(w) = world.replace(c.name.as_str()) {
-                    return Err(format!("two worlds: `{w}` and `{}`", c.name));
-                }
+        let kind = element(model, c)?;
+        if kind == Element::World {
+            if let Some(w) = world.replace(c.name.as_str()) {
+                return Err(format!("two worlds: `{w}` and `{}`", c.name));
             }
-            Kind::Edge(t) => links.push(Link {
+        }
+        if let Some(t) = kind.transform() {
+            links.push(Link {
                 a: format!("{}.frame_a", c.name),
                 b: format!("{}.frame_b", c.name),
-                t: *t,
+                t,
                 what: format!("component {} ({})", c.name, c.class),
-            }),
-            Kind::LoopConstraint(n) => constraints.push((c.name.as_str(), *n)),
-            Kind::Leaf => {}
+            });
+        }
+        if let Element::Constraint(k) = &kind {
+            constraints.push((c.name.as_str(), k.clone()));
         }
         if kinds.insert(c.name.as_str(), kind).is_some() {
             return Err(format!("component `{}` declared twice", c.name));
@@ -224,7 +421,7 @@ pub fn forward_kinematics_tol(model: &Model, pos_tol: f64, angle_tol: f64) -> Re
     let check_connector = |r: &str| -> Result<(), String> {
         let (comp, conn) = r.split_once('.').ok_or_else(|| format!("connect to `{r}`: not COMPONENT.CONNECTOR"))?;
         let kind = kinds.get(comp).ok_or_else(|| format!("connect to `{r}`: no component `{comp}`"))?;
-        if connectors_of(kind).contains(&conn) {
+        if kind.connectors().contains(&conn) {
             Ok(())
         } else {
             Err(format!("connect to `{r}`: `{comp}` has no frame connector `{conn}`"))
@@ -286,7 +483,7 @@ pub fn forward_kinematics_tol(model: &Model, pos_tol: f64, angle_tol: f64) -> Re
     }
     // A component with no path to the world starts where its root body's initial conditions
     // put it: `r_0(start=...)` and `angles_start` (Cardan sequence_start, default {1,2,3}).
-    let Some((name, pose)) = model.components.iter().filter(|c| kinds.get(c.name.as_str()).is_some_and(|k| matches!(k, Kind::Leaf)) && c.class.ends_with("Parts.Body")).find_map(|c| {
+    let Some((name, pose)) = model.components.iter().filter(|c| kinds.get(c.name.as_str()).is_some_and(|k| *k == Element::Leaf) && c.class.ends_with("Parts.Body")).find_map(|c| {
         let conn = format!("{}.frame_a", c.name);
         if poses.connectors.contains_key(&conn) {
             return None;
@@ -312,20 +509,14 @@ pub fn forward_kinematics_tol(model: &Model, pos_tol: f64, angle_tol: f64) -> Re
     queue.push_back(name);
     }
 
-    for (name, n) in constraints {
-        let (fa, fb) = (format!("{name}.frame_a"), format!("{name}.frame_b"));
-        let (Some(a), Some(b)) = (poses.connectors.get(&fa), poses.connectors.get(&fb)) else { continue };
+    for (name, constraint) in constraints {
+        let (Some(a), Some(b)) =
+            (poses.connectors.get(&format!("{name}.frame_a")), poses.connectors.get(&format!("{name}.frame_b")))
+        else {
+            continue;
+        };
         poses.loop_checks += 1;
-        let dp = (a.translation.vector - b.translation.vector).norm();
-        let rel = a.rotation.inverse() * b.rotation;
-        let dn = (rel * n - n).norm();
-        if !(dp <= pos_tol && dn <= angle_tol) {
-            return Err(format!(
-                "RevolutePlanarLoopConstraint {name} violated between {fa} and {fb}: origins differ by {dp:e} m, \
-                 R_a^T R_b moves the axis {:?} by {dn:e}",
-                n.as_slice()
-            ));
-        }
+        check_constraint(name, &constraint, a, b, pos_tol, angle_tol)?;
     }
     Ok(poses)
 }
@@ -358,8 +549,9 @@ pub fn body_inertia_world(model: &Model, poses: &Poses, body: &str) -> Option<Ma
     Some(r * ia * r.transpose())
 }
 
+/// Builders of `Mechanics.mo` texts, shared with the structural check's tests.
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use std::f64::consts::FRAC_PI_2;
 
@@ -375,13 +567,13 @@ mod tests {
         format!("{{{}, {}, {}}}", num(v[0]), num(v[1]), num(v[2]))
     }
 
-    fn world() -> String {
+    pub(crate) fn world() -> String {
         format!(
             "  inner {MB}.World world(n={{0.0, -1.0, 0.0}}, g=9.81) \"World frame: the CAD assembly's frame\"\n    {PLACE};\n"
         )
     }
 
-    fn body(name: &str, r_cm: [f64; 3], i: [f64; 6]) -> String {
+    pub(crate) fn body(name: &str, r_cm: [f64; 3], i: [f64; 6]) -> String {
         format!(
             "  {MB}.Parts.Body {name}(\n    m=1.5,\n    r_CM={},\n    I_11={}, I_22={}, I_33={},\n    I_21={}, I_31={}, I_32={},\n    animation=false)\n    \"Part {name} (nodeID 1)\" {PLACE};\n",
             v3(r_cm),
@@ -394,14 +586,14 @@ mod tests {
         )
     }
 
-    fn translation(name: &str, r: [f64; 3]) -> String {
+    pub(crate) fn translation(name: &str, r: [f64; 3]) -> String {
         format!(
             "  {MB}.Parts.FixedTranslation {name}(r={}, animation=false)\n    \"Frame of {name}\" {PLACE};\n",
             v3(r)
         )
     }
 
-    fn rotation(name: &str, r: [f64; 3], nx: [f64; 3], ny: [f64; 3]) -> String {
+    pub(crate) fn rotation(name: &str, r: [f64; 3], nx: [f64; 3], ny: [f64; 3]) -> String {
         format!(
             "  {MB}.Parts.FixedRotation {name}(\n    r={},\n    rotationType={MB}.Types.RotationTypes.TwoAxesVectors,\n    n_x={},\n    n_y={},\n    animation=false)\n    \"Frame of {name}\" {PLACE};\n",
             v3(r),
@@ -410,7 +602,7 @@ mod tests {
         )
     }
 
-    fn revolute(name: &str, n: [f64; 3], q: f64, fixed: bool) -> String {
+    pub(crate) fn revolute(name: &str, n: [f64; 3], q: f64, fixed: bool) -> String {
         let f = if fixed { ", fixed=true" } else { "" };
         format!(
             "  Demo.Components.Revolute {name}(\n    n={},\n    phi(start={}{f}),\n    w(start=0{f}))\n    \"Joint {name} (nodeID 9)\" {PLACE};\n",
@@ -419,7 +611,7 @@ mod tests {
         )
     }
 
-    fn prismatic(name: &str, n: [f64; 3], q: f64) -> String {
+    pub(crate) fn prismatic(name: &str, n: [f64; 3], q: f64) -> String {
         format!(
             "  Demo.Components.Prismatic {name}(\n    n={},\n    s(start={}, fixed=true),\n    v(start=0, fixed=true))\n    \"Joint {name} (nodeID 9)\" {PLACE};\n",
             v3(n),
@@ -427,7 +619,7 @@ mod tests {
         )
     }
 
-    fn spherical(name: &str, states: bool) -> String {
+    pub(crate) fn spherical(name: &str, states: bool) -> String {
         let s = if states {
             "(\n    enforceStates=true,\n    useQuaternions=true,\n    angles_fixed=true,\n    w_rel_a_fixed=true)"
         } else {
@@ -436,7 +628,7 @@ mod tests {
         format!("  {MB}.Joints.Spherical {name}{s}\n    \"Joint {name} (nodeID 9)\" {PLACE};\n")
     }
 
-    fn planar_constraint(name: &str, n: [f64; 3]) -> String {
+    pub(crate) fn planar_constraint(name: &str, n: [f64; 3]) -> String {
         format!(
             "  {MB}.Joints.RevolutePlanarLoopConstraint {name}(n={})\n    \"Joint {name} (nodeID 9): closes a planar loop\" {PLACE};\n",
             v3(n)
@@ -449,7 +641,7 @@ mod tests {
         )
     }
 
-    fn mechanics(decls: &[String], connects: &[(&str, &str)]) -> String {
+    pub(crate) fn mechanics(decls: &[String], connects: &[(&str, &str)]) -> String {
         let eqs: String = connects.iter().map(|(a, b)| format!("  connect({a}, {b});\n")).collect();
         format!(
             "within Demo;\nmodel Mechanics \"Mechanical model of demo (n bodies, n joints)\"\n{}\nequation\n{eqs}  annotation (\n    experiment(StopTime=1),\n    Documentation(info=\"<html>\n<p>Converted.</p>\n</html>\"));\nend Mechanics;\n",
@@ -463,7 +655,7 @@ mod tests {
         Ok((model, poses))
     }
 
-    fn fk_ok(text: &str) -> (Model, Poses) {
+    pub(crate) fn fk_ok(text: &str) -> (Model, Poses) {
         match fk(text) {
             Ok(r) => r,
             Err(e) => panic!("forward kinematics failed: {e}\n{text}"),
@@ -647,7 +839,7 @@ mod tests {
     /// A four-bar: ground pivots A = 0 and B = (d, 0, 0); crank a at theta2, coupler b, rocker c.
     /// Each link's frame_a is at its base pivot with x along the link; the loop closes at D
     /// between rocker_CS2.frame_b and coupler_CS2.frame_b.
-    fn four_bar(j3_error: f64, closing_axis: [f64; 3], with_j3: bool) -> String {
+    pub(crate) fn four_bar(j3_error: f64, closing_axis: [f64; 3], with_j3: bool) -> String {
         let (a, b, c, d) = (0.3, 0.9, 0.7, 1.0);
         let t2: f64 = 0.8;
         let cx = a * t2.cos();
@@ -736,6 +928,122 @@ mod tests {
         assert!(poses.get("J4.frame_a").is_none(), "not propagated through the constraint");
         assert!(poses.get("rocker.frame_a").is_none());
         assert!(poses.get("rocker_CS2.frame_b").is_none());
+        assert_eq!(poses.loop_checks, 0);
+    }
+
+    /// A `Joints.Constraints.KIND` element with the modifiers `mods` (written as in Modelica).
+    pub(crate) fn cut_constraint(name: &str, kind: &str, mods: &str) -> String {
+        let mods = if mods.is_empty() { String::new() } else { format!("({mods})") };
+        format!("  {MB}.Joints.Constraints.{kind} {name}{mods}\n    \"Joint {name} (nodeID 9): closes a loop\" {PLACE};\n")
+    }
+
+    /// The world reaches the cut's frame_a through FixedRotation `A` (r_a; x axis along nx_a,
+    /// y in the plane of ny_a) and its frame_b through FixedRotation `B` (r_b, nx_b, ny_b).
+    fn cut_between(cut: String, a: ([f64; 3], [f64; 3], [f64; 3]), b: ([f64; 3], [f64; 3], [f64; 3])) -> String {
+        mechanics(
+            &[world(), rotation("A", a.0, a.1, a.2), rotation("B", b.0, b.1, b.2), cut],
+            &[("world.frame_b", "A.frame_a"), ("world.frame_b", "B.frame_a"), ("A.frame_b", "C.frame_a"), ("B.frame_b", "C.frame_b")],
+        )
+    }
+
+    const X: [f64; 3] = [1.0, 0.0, 0.0];
+    const Y: [f64; 3] = [0.0, 1.0, 0.0];
+    const Z: [f64; 3] = [0.0, 0.0, 1.0];
+
+    #[test]
+    fn cut_spherical_checks_locked_translations_in_frame_a() {
+        // Same origin, any rotation: all locked translations hold, no rotational equation.
+        let text = cut_between(cut_constraint("C", "Spherical", ""), ([1.0, 2.0, 3.0], X, Y), ([1.0, 2.0, 3.0], Y, Z));
+        let (_, poses) = fk_ok(&text);
+        assert_eq!(poses.loop_checks, 1);
+        assert!(poses.get("C.frame_b").is_some());
+
+        // frame_a turned +90 degrees about z: world y is frame_a's x. An offset of 1e-6 m along
+        // world y violates the x equation, unless x is unlocked.
+        let a = ([1.0, 0.0, 0.0], Y, [-1.0, 0.0, 0.0]);
+        let b = ([1.0, 1e-6, 0.0], X, Y);
+        let e = fk_err(&cut_between(cut_constraint("C", "Spherical", ""), a, b));
+        assert!(e.contains("Constraints.Spherical C violated") && e.contains("locked x axis"), "{e}");
+        assert!((number_after(&e, "frame_b's origin is ") - 1e-6).abs() < 1e-15, "{e}");
+        let e = fk_err(&cut_between(cut_constraint("C", "Spherical", "y_locked=false"), a, b));
+        assert!(e.contains("locked x axis"), "{e}");
+        assert!(fk(&cut_between(cut_constraint("C", "Spherical", "x_locked=false"), a, b)).is_ok());
+        // Within tolerance.
+        assert!(fk(&cut_between(cut_constraint("C", "Spherical", ""), a, ([1.0, 5e-10, 0.0], X, Y))).is_ok());
+    }
+
+    #[test]
+    fn cut_revolute_allows_rotation_about_n_only() {
+        let (s, c) = 0.4f64.sin_cos();
+        let about_z = ([0.5, 0.0, 0.0], [c, s, 0.0], [-s, c, 0.0]);
+        let about_x = ([0.5, 0.0, 0.0], X, [0.0, c, s]);
+        let origin = ([0.5, 0.0, 0.0], X, Y);
+        assert!(fk(&cut_between(cut_constraint("C", "Revolute", "n={0.0, 0.0, 2.0}"), origin, about_z)).is_ok());
+        let e = fk_err(&cut_between(cut_constraint("C", "Revolute", "n={0.0, 0.0, 2.0}"), origin, about_x));
+        assert!(e.contains("Constraints.Revolute C violated") && e.contains("moves the axis [0.0, 0.0, 1.0]"), "{e}");
+        assert!((number_after(&e, "by ") - 2.0 * (0.2f64).sin()).abs() < 1e-12, "{e}");
+        // The default axis is z.
+        assert!(fk(&cut_between(cut_constraint("C", "Revolute", ""), origin, about_z)).is_ok());
+        // Translations: z unlocked allows an offset along z only.
+        let up = ([0.5, 0.0, 0.25], [c, s, 0.0], [-s, c, 0.0]);
+        assert!(fk(&cut_between(cut_constraint("C", "Revolute", "z_locked=false"), origin, up)).is_ok());
+        let e = fk_err(&cut_between(cut_constraint("C", "Revolute", ""), origin, up));
+        assert!(e.contains("locked z axis"), "{e}");
+    }
+
+    #[test]
+    fn cut_prismatic_and_universal_rotations() {
+        let origin = ([0.0, 0.0, 1.0], X, Y);
+        let shifted = ([0.3, 0.0, 1.0], X, Y);
+        let (s, c) = 0.3f64.sin_cos();
+        let about_z = ([0.0, 0.0, 1.0], [c, s, 0.0], [-s, c, 0.0]);
+        let about_x = ([0.0, 0.0, 1.0], X, [0.0, c, s]);
+
+        assert!(fk(&cut_between(cut_constraint("C", "Prismatic", "x_locked=false"), origin, shifted)).is_ok());
+        let e = fk_err(&cut_between(cut_constraint("C", "Prismatic", "x_locked=false"), origin, about_z));
+        assert!(e.contains("Constraints.Prismatic C violated") && e.contains("rotated by"), "{e}");
+        assert!((number_after(&e, "rotated by ") - 0.3).abs() < 1e-12, "{e}");
+
+        // n_a = x (frame_a), n_b = y (frame_b): a rotation about x keeps them perpendicular, one
+        // about z tilts n_b towards -x by sin 0.3.
+        let uni = || cut_constraint("C", "Universal", "n_a={2.0, 0.0, 0.0}, n_b={0.0, 1.0, 0.0}");
+        let (_, poses) = fk_ok(&cut_between(uni(), origin, about_x));
+        assert_eq!(poses.loop_checks, 1);
+        let e = fk_err(&cut_between(uni(), origin, about_z));
+        assert!(e.contains("Constraints.Universal C violated") && e.contains("n_a [1.0, 0.0, 0.0]"), "{e}");
+        assert!((number_after(&e, "= ") + s).abs() < 1e-12, "{e}");
+        let e = fk_err(&cut_between(uni(), origin, ([0.0, 1e-3, 1.0], X, Y)));
+        assert!(e.contains("locked y axis"), "{e}");
+    }
+
+    #[test]
+    fn cut_errors_and_classification() {
+        let e = fk_err(&cut_between(cut_constraint("C", "Spherical", "x_locked=1"), ([0.0; 3], X, Y), ([0.0; 3], X, Y)));
+        assert!(e.contains("`x_locked` = 1.0 is not a Boolean"), "{e}");
+        let e = fk_err(&cut_between(cut_constraint("C", "Universal", "n_b={0.0, 0.0, 0.0}"), ([0.0; 3], X, Y), ([0.0; 3], X, Y)));
+        assert!(e.contains("axis n_b is the zero vector"), "{e}");
+        let e = fk_err(&cut_between(cut_constraint("C", "Gearbox", ""), ([0.0; 3], X, Y), ([0.0; 3], X, Y)));
+        assert!(e.contains("unknown class"), "{e}");
+
+        let model = parse_mechanics(&cut_between(
+            cut_constraint("C", "Revolute", "x_locked=false, n={0.0, 3.0, 0.0}"),
+            ([0.0; 3], X, Y),
+            ([0.0; 3], X, Y),
+        ))
+        .expect("parse");
+        let c = model.component("C").expect("C");
+        let Element::Constraint(Constraint::Cut(cut)) = element(&model, c).expect("element") else { panic!("not a cut") };
+        assert_eq!(cut.kind, "Revolute");
+        assert_eq!(cut.locked, [false, true, true]);
+        assert_eq!(cut.rotation, CutRotation::About(Vector3::new(0.0, 1.0, 0.0)));
+        assert_eq!(cut.equations(), 4);
+        // Not walked through: without B the cut's frame_b is never reached.
+        let text = mechanics(
+            &[world(), rotation("A", [0.0; 3], X, Y), cut_constraint("C", "Prismatic", "")],
+            &[("world.frame_b", "A.frame_a"), ("A.frame_b", "C.frame_a")],
+        );
+        let (_, poses) = fk_ok(&text);
+        assert!(poses.get("C.frame_b").is_none());
         assert_eq!(poses.loop_checks, 0);
     }
 

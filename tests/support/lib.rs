@@ -5,6 +5,8 @@
 //!   kinematics walker over it (they deliberately use nothing from the converter).
 //! - [`truth`]: frames and CGs scanned straight from an XML export.
 //! - [`check`]: the FK comparison of an output against that truth.
+//! - [`structure`]: structural rank of closed loops (redundant equations, mobility) of the emitted
+//!   model and of the XML assembly.
 //! - [`app`]: `TestApp`, the real service spawned on port 0 with a fresh database.
 
 pub mod app;
@@ -14,4 +16,5 @@ pub mod check;
 pub mod common;
 pub mod fk;
 pub mod modelica;
+pub mod structure;
 pub mod truth;

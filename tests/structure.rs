@@ -1,0 +1,112 @@
+//! Structural soundness of closed loops: the emitted `Mechanics.mo` has no redundant constraint
+//! equation (Dymola and OpenModelica refuse structurally singular models) and the same mobility
+//! as the CAD assembly, for every golden case and every real first-generation export.
+//!
+//! Both sides are computed by `support/structure.rs`, independently of the converter: the model
+//! side from the parsed `Mechanics.mo` and its forward kinematics, the CAD side from the XML.
+//! Every case is checked and printed (rows, rank, mobility) before the test fails, so one run
+//! lists every offending input.
+
+use std::path::Path;
+
+use cad2mo::pipeline::Options;
+use cad2mo_tests::common::{convert_path, file_text, files_with_ext, fixtures_dir, sorted_dirs, workspace_root};
+use cad2mo_tests::fk::{forward_kinematics, parse_mechanics};
+use cad2mo_tests::structure::{cad_structure, model_structure};
+use serde_json::Value;
+
+fn options(case: &Path) -> Options {
+    let mut o = Options { write_shapes: false, ..Options::default() };
+    if let Ok(t) = std::fs::read_to_string(case.join("options.json")) {
+        let v: Value = serde_json::from_str(&t).expect("options.json");
+        o.lump_welds = v["lump_welds"].as_bool().unwrap_or(false);
+    }
+    o
+}
+
+/// Checks one converted case; prints its numbers. `Err` names what is wrong.
+fn check(name: &str, mechanics: &str, xml: &str) -> Result<(), String> {
+    let model = parse_mechanics(mechanics).map_err(|e| format!("{name}: Mechanics.mo: {e}"))?;
+    let poses = forward_kinematics(&model).map_err(|e| format!("{name}: forward kinematics: {e}"))?;
+    let m = model_structure(&model, &poses).map_err(|e| format!("{name}: model: {e}"))?;
+    let cad = cad_structure(xml).map_err(|e| format!("{name}: XML: {e}"))?;
+    println!(
+        "{name}: model {} rows, rank {}, {} redundant, {} free groups, mobility {}; CAD {} rows, rank {}, {} bodies, \
+         mobility {}; singular values kept >= {:.1e} / {:.1e}, dropped <= {:.1e} / {:.1e} (model / CAD)",
+        m.rows, m.rank, m.redundant, m.free_groups, m.mobility, cad.rows, cad.rank, cad.free_groups, cad.mobility,
+        m.smallest_kept, cad.smallest_kept, m.largest_dropped, cad.largest_dropped
+    );
+    let mut errors = Vec::new();
+    if m.redundant != 0 {
+        errors.push(format!("{} redundant equations in Mechanics.mo: {}", m.redundant, m.offenders()));
+    }
+    if m.mobility != cad.mobility {
+        errors.push(format!(
+            "mobility {} in Mechanics.mo, {} in the CAD assembly (loop closures in the model: {:?})",
+            m.mobility,
+            cad.mobility,
+            m.closures.iter().map(|c| format!("{} {}/{} independent", c.element, c.independent, c.rows)).collect::<Vec<_>>()
+        ));
+    }
+    if errors.is_empty() {
+        Ok(())
+    } else {
+        Err(format!("{name}: {}", errors.join("; ")))
+    }
+}
+
+#[test]
+fn own_cases_have_no_redundant_equations() {
+    let mut checked = 0;
+    let mut failures = Vec::new();
+    for case in sorted_dirs(&workspace_root().join("tests/in")) {
+        let name = case.file_name().expect("name").to_string_lossy().to_string();
+        let Ok(out) = convert_path(&case, &options(&case)) else { continue };
+        let xml = std::fs::read_to_string(&files_with_ext(&case, &[".xml"])[0]).expect("xml");
+        let mechanics = file_text(&out, "/Mechanics.mo").expect("Mechanics.mo");
+        if let Err(e) = check(&name, mechanics, &xml) {
+            failures.push(e);
+        }
+        checked += 1;
+    }
+    assert!(checked >= 7, "only {checked} cases converted");
+    assert!(failures.is_empty(), "{} of {checked} cases fail:\n{}", failures.len(), failures.join("\n"));
+}
+
+#[test]
+fn every_fixture_xml_has_no_redundant_equations() {
+    let Some(fx) = fixtures_dir("every_fixture_xml_has_no_redundant_equations") else { return };
+    let mut checked = 0;
+    let mut failures = Vec::new();
+    for xml in files_with_ext(&fx, &[".xml"]) {
+        let text = std::fs::read_to_string(&xml).expect("read xml");
+        if !text.contains("<PhysicalModelingXMLFile") {
+            continue;
+        }
+        let rel = xml.strip_prefix(&fx).expect("under fixtures").display().to_string();
+        // Like tests/fixtures.rs: a folder holding one XML is the bundle; the XML alone otherwise.
+        let bundle_dir = xml.parent().expect("folder");
+        let tmp = tempfile::tempdir().expect("tempdir");
+        let bundle: &Path = if files_with_ext(bundle_dir, &[".xml"]).len() == 1 {
+            bundle_dir
+        } else {
+            let p = tmp.path().join(xml.file_name().expect("name"));
+            std::fs::copy(&xml, &p).expect("copy");
+            tmp.path()
+        };
+        let out = match convert_path(bundle, &Options { write_shapes: false, ..Options::default() }) {
+            Ok(out) => out,
+            Err(e) => {
+                failures.push(format!("{rel}: conversion failed: {e}"));
+                continue;
+            }
+        };
+        let mechanics = file_text(&out, "/Mechanics.mo").expect("Mechanics.mo");
+        if let Err(e) = check(&rel, mechanics, &text) {
+            failures.push(e);
+        }
+        checked += 1;
+    }
+    assert!(checked >= 15, "only {checked} fixture XMLs converted");
+    assert!(failures.is_empty(), "{} of {checked} fixtures fail:\n{}", failures.len(), failures.join("\n"));
+}
