@@ -16,6 +16,7 @@ pub mod diff;
 pub mod export;
 pub mod jobs;
 pub mod library;
+pub mod motion;
 pub mod pipeline;
 pub mod store;
 pub mod telemetry;
