@@ -249,8 +249,8 @@ fn snap_planar(model: &Model, h: &Hierarchy, chains: &mut [Chain]) -> Vec<Option
         }
     }
     let mut common: Vec<Vector3<f64>> = vec![Vector3::zeros(); normals.len()];
-    for i in 0..normals.len() {
-        if let Some(n) = normals[i] {
+    for (i, normal) in normals.iter().enumerate() {
+        if let Some(n) = *normal {
             let r = find(&mut group, i);
             let n = if common[r].dot(&n) < 0.0 { -n } else { n };
             common[r] += n;
@@ -407,11 +407,14 @@ fn perpendicular(z: &Vector3<f64>) -> Vector3<f64> {
     (t - z * t.dot(z)).normalize()
 }
 
+/// Moment options of a cut: the class, which cut-frame axes carry a moment, `n` and `n_b` as
+/// cut-frame axis indices (0 = x, 1 = y, 2 = z).
+type MomentOption = (ConstraintClass, [bool; 3], usize, usize);
+
 /// Every form a single-element cut can take, most natural first.
 fn candidates(e: &Element, frame_a: &Matrix3<f64>, planar: Option<Vector3<f64>>, p: &Vector3<f64>) -> Vec<Candidate> {
     let mut out = Vec::new();
-    let (axis, forces_allowed, moments): (Vector3<f64>, [bool; 3], Vec<(ConstraintClass, [bool; 3], usize, usize)>) = match e.kind {
-        // (class, moment axes, n, n_b) with axes indices 0 = x, 1 = y, 2 = z of the cut frame.
+    let (axis, forces_allowed, moments): (Vector3<f64>, [bool; 3], Vec<MomentOption>) = match e.kind {
         PrimitiveKind::Revolute => (
             e.axis_world,
             [true; 3],
