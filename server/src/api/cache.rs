@@ -47,7 +47,7 @@ pub async fn library_cache(State(cache): State<LibraryCache>, req: Request, next
         return resp;
     }
     let (parts, body) = resp.into_parts();
-    if !body.size_hint().exact().is_some_and(|n| n <= MAX_BODY as u64) {
+    if body.size_hint().exact().is_none_or(|n| n > MAX_BODY as u64) {
         return Response::from_parts(parts, body);
     }
     let bytes = match to_bytes(body, MAX_BODY).await {
