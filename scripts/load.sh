@@ -24,7 +24,7 @@ echo "== 2. 50 concurrent uploads of a 5 MB bundle"
 python3 scripts/load/make_bundle.py "$work/big.zip" 30 5
 ls -l "$work/big.zip" | awk '{print "bundle bytes:", $5}'
 start=$(date +%s.%N)
-seq 50 | xargs -P 50 -I{} curl -s -o "$work/up{}.json" -w "%{http_code}\n" -F "bundle=@$work/big.zip" "$base/api/models" >"$work/codes.txt"
+seq 50 | xargs -P 50 -I{} curl -s -o "$work/up{}.json" -w "%{http_code}\n" -H "X-Requested-With: cad2mo" -F "bundle=@$work/big.zip" "$base/api/models" >"$work/codes.txt"
 echo "upload statuses: $(sort "$work/codes.txt" | uniq -c | tr '\n' ' ')"
 python3 - "$base" "$work" <<'PY'
 import json, sys, time, urllib.request, glob
@@ -55,7 +55,7 @@ for _ in range(20):
     body = (f"--{b}\r\nContent-Disposition: form-data; name=\"bundle\"; filename=\"b.zip\"\r\n"
             "Content-Type: application/zip\r\n\r\n").encode() + data + f"\r\n--{b}--\r\n".encode()
     t0 = time.perf_counter()
-    req = urllib.request.Request(f"{base}/api/models", data=body, headers={"Content-Type": f"multipart/form-data; boundary={b}"})
+    req = urllib.request.Request(f"{base}/api/models", data=body, headers={"Content-Type": f"multipart/form-data; boundary={b}", "X-Requested-With": "cad2mo"})
     job = json.load(urllib.request.urlopen(req))["job_id"]
     while True:
         s = json.load(urllib.request.urlopen(f"{base}/api/jobs/{job}"))["status"]

@@ -442,3 +442,34 @@ async fn a_broken_import_changes_nothing() {
     assert_eq!(counts["instances_updated"], json_of(app.library_instances("").await).await.as_array().expect("array").len());
     assert_eq!(json_of(app.library_instance(seed::MAXON_RE40).await).await["name"], "RE 40, renamed by import");
 }
+
+/// A listing larger than the response cache's cap (16 MiB) is served (uncached), not a 500.
+#[tokio::test]
+async fn a_library_above_the_cache_cap_still_lists() {
+    let app = TestApp::spawn().await;
+    let url = format!("sqlite://{}?mode=rwc", app.data_dir().join("cad2mo.db").display());
+    let store = cad2mo::store::Store::open(&url).await.expect("store");
+    let (re40, _) = cad2mo::store::library::get_instance(&store, seed::MAXON_RE40).await.expect("get").expect("seeded");
+    let source = "datasheet ".repeat(1_000); // 10,000 characters, the most a source may have
+    let n = 1_800; // 18 MB of sources
+    for k in 0..n {
+        let inst = cad2mo::library::Instance {
+            id: cad2mo::library::new_id(),
+            name: format!("RE 40 copy {k}"),
+            source: source.clone(),
+            ..re40.clone()
+        };
+        let done = cad2mo::store::library::insert_instance(&store, &re40.class_id, |_| Ok(inst)).await.expect("insert");
+        assert!(matches!(done, cad2mo::store::library::Change::Done(_)));
+    }
+    for round in 0..2 {
+        let r = app.library_instances("").await;
+        assert_eq!(r.status(), 200, "round {round}");
+        let body = r.bytes().await.expect("body");
+        assert!(body.len() > 16 * 1024 * 1024, "{} bytes", body.len());
+        let list: Value = serde_json::from_slice(&body).expect("json");
+        assert!(list.as_array().expect("array").len() > n, "round {round}");
+    }
+    // Small listings are still served (and cached) as before.
+    assert_eq!(app.library_instances("?domain=gear").await.status(), 200);
+}

@@ -324,7 +324,7 @@ fn chunked_upload(addr: &str, bundle: &[u8]) -> (u16, String) {
     body.extend_from_slice(format!("\r\n--{boundary}--\r\n").as_bytes());
     let mut s = std::net::TcpStream::connect(addr).expect("connect");
     let head = format!(
-        "POST /api/models HTTP/1.1\r\nHost: {addr}\r\nContent-Type: multipart/form-data; boundary={boundary}\r\nTransfer-Encoding: chunked\r\nConnection: close\r\n\r\n"
+        "POST /api/models HTTP/1.1\r\nHost: {addr}\r\nX-Requested-With: cad2mo\r\nContent-Type: multipart/form-data; boundary={boundary}\r\nTransfer-Encoding: chunked\r\nConnection: close\r\n\r\n"
     );
     let mut request = head.into_bytes();
     for chunk in body.chunks(4096) {
@@ -523,4 +523,79 @@ async fn jobs_report_queue_position_and_progress() {
     let stages: std::collections::BTreeSet<usize> = seen.iter().map(|s| s.0).collect();
     assert!(stages.len() >= 2, "watched the heavy job in several stages: {seen:?}");
     assert_eq!(app.wait_for_job(light_job).await["status"], "succeeded");
+}
+
+/// Upload checks are bounded: with one check at a time and a slow one in flight, another upload
+/// waits briefly, then gets 503 with Retry-After; once the slow one is done uploads work again.
+#[tokio::test(flavor = "multi_thread", worker_threads = 4)]
+async fn uploads_beyond_the_check_bound_get_503() {
+    let app = Arc::new(
+        TestApp::spawn_with(|s| {
+            s.max_checks = 1;
+            s.check_wait = std::time::Duration::from_millis(300);
+        })
+        .await,
+    );
+    let heavy = heavy_pendulum(400_000);
+    let slow = {
+        let app = app.clone();
+        tokio::spawn(async move {
+            let started = std::time::Instant::now();
+            let r = app.upload_model(heavy, "heavy.zip", &[]).await;
+            (r.status().as_u16(), started.elapsed())
+        })
+    };
+    // Light uploads, one after the other, until one arrives while the heavy check runs.
+    let mut refused = None;
+    let mut accepted = 0;
+    while !slow.is_finished() {
+        let r = app.upload_model(pendulum(), "light.zip", &[]).await;
+        if r.status() == 503 {
+            let retry = header(&r, "retry-after");
+            refused = Some((retry, problem(r, 503).await));
+            break;
+        }
+        assert_eq!(r.status(), 202, "{}", r.text().await.unwrap_or_default());
+        accepted += 1;
+        tokio::time::sleep(std::time::Duration::from_millis(20)).await;
+    }
+    let (retry, p) = refused.expect("an upload during the heavy check was refused");
+    assert!(retry.parse::<u64>().is_ok_and(|s| s >= 1), "Retry-After: {retry:?}");
+    assert_eq!(p["type"], "/problems/busy", "{p}");
+    let (status, took) = slow.await.expect("join");
+    assert_eq!(status, 202, "the heavy upload itself is accepted (took {took:?}, {accepted} light ones before)");
+    // Free again.
+    let (_, _, job) = app.upload_model_ok(pendulum(), &[]).await;
+    assert_eq!(app.wait_for_job(&job).await["status"], "succeeded");
+}
+
+/// A job whose conversion kills the service (simulated: left `running` by a "crash" after each
+/// start) is run at most MAX_ATTEMPTS times, then failed with a clear problem, not run again.
+#[tokio::test]
+async fn a_job_that_keeps_stopping_the_service_is_failed() {
+    let app = TestApp::spawn().await;
+    let (id, _, job) = app.upload_model_ok(pendulum(), &[]).await;
+    app.wait_for_job(&job).await; // attempt 1
+    let mut dir = app.stop().await;
+    for attempt in 2..=cad2mo::jobs::MAX_ATTEMPTS + 1 {
+        let store = open_store(dir.path()).await;
+        assert!(cad2mo::store::models::mark_interrupted(&store.pool, &job).await.expect("mark"));
+        store.pool.close().await;
+        let app = TestApp::spawn_in(dir, |_| {}).await;
+        let done = app.wait_for_job(&job).await;
+        if attempt <= cad2mo::jobs::MAX_ATTEMPTS {
+            assert_eq!(done["status"], "succeeded", "attempt {attempt} runs: {done:#}");
+        } else {
+            assert_eq!(done["status"], "failed", "attempt {attempt} is not run: {done:#}");
+            assert_eq!(done["error"]["type"], "/problems/conversion-aborted", "{done:#}");
+            let detail = done["error"]["detail"].as_str().expect("detail");
+            assert!(detail.contains(&format!("stopped the service {} times", cad2mo::jobs::MAX_ATTEMPTS)), "{detail}");
+            let p = problem(app.package(&id, 1).await, 422).await;
+            assert_eq!(p, done["error"]);
+            // A new version is a new job: it runs.
+            let (_, _, job2) = app.upload_version_ok(&id, pendulum(), &[]).await;
+            assert_eq!(app.wait_for_job(&job2).await["status"], "succeeded");
+        }
+        dir = app.stop().await;
+    }
 }

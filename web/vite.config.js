@@ -7,5 +7,14 @@ const api = process.env.CAD2MO_URL || 'http://127.0.0.1:8080';
 export default defineConfig({
   base: '/',
   build: { target: 'es2022', chunkSizeWarningLimit: 1024, sourcemap: false },
-  server: { proxy: { '/api': api, '/openapi.yaml': api } },
+  // The service answers only to its own host and origin (see README, Security): the proxy
+  // rewrites both to the service's.
+  server: {
+    proxy: Object.fromEntries(
+      ['/api', '/openapi.yaml'].map((p) => [
+        p,
+        { target: api, changeOrigin: true, configure: (proxy) => proxy.on('proxyReq', (req) => req.getHeader('origin') && req.setHeader('origin', new URL(api).origin)) },
+      ]),
+    ),
+  },
 });

@@ -24,6 +24,10 @@ pub struct AppState {
     pub blobs: Blobs,
     /// The conversion worker pool (notify it after queueing a job).
     pub jobs: Jobs,
+    /// Permits for upload checks (`settings.max_checks`): bounds the bundles analysed at once.
+    pub checks: Arc<tokio::sync::Semaphore>,
+    /// The address actually bound (port 0 resolved): the `Host` the service answers to.
+    pub addr: SocketAddr,
 }
 
 pub struct App {
@@ -42,12 +46,14 @@ impl App {
         let jobs = Jobs::start(store.clone(), blobs.clone(), settings.workers)
             .await
             .context("starting the conversion workers")?;
-        let state = AppState { settings: Arc::new(settings), store, blobs, jobs };
+        let addr = listener.local_addr().unwrap_or(settings.bind);
+        let checks = Arc::new(tokio::sync::Semaphore::new(settings.max_checks.max(1)));
+        let state = AppState { settings: Arc::new(settings), store, blobs, jobs, checks, addr };
         Ok(App { listener, state })
     }
 
     pub fn local_addr(&self) -> SocketAddr {
-        self.listener.local_addr().unwrap_or(self.state.settings.bind)
+        self.state.addr
     }
 
     pub fn state(&self) -> &AppState {

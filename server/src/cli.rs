@@ -73,14 +73,51 @@ enum Command {
 
 #[derive(Subcommand, Debug)]
 enum TokenCommand {
-    /// Create a token and print it (only its hash is stored: keep it).
+    /// Create a token and print it (only its hash is stored: keep it). Says on stderr which
+    /// database it was stored in.
     Create {
         /// A name to recognise the token by.
         #[arg(long, default_value = "cli")]
         name: String,
+        /// Validity, e.g. 30d, 12h, 90m, 2w (default: no expiry).
+        #[arg(long, value_parser = parse_duration)]
+        expires_in: Option<u64>,
         #[command(flatten)]
         service: crate::config::ServeArgs,
     },
+    /// List tokens: id, name, created, expiry and the last 8 hex digits of the stored hash
+    /// (never the token).
+    List {
+        #[command(flatten)]
+        service: crate::config::ServeArgs,
+    },
+    /// Revoke (delete) a token by id, or by name when one token has it.
+    Revoke {
+        /// The token's id or name.
+        name_or_id: String,
+        #[command(flatten)]
+        service: crate::config::ServeArgs,
+    },
+}
+
+/// `30d`, `12h`, `90m`, `45s`, `2w` (a positive whole number and a unit) in seconds.
+fn parse_duration(s: &str) -> Result<u64, String> {
+    let t = s.trim();
+    let split = t.find(|c: char| !c.is_ascii_digit()).unwrap_or(t.len());
+    let (n, unit) = t.split_at(split);
+    let n: u64 = n.parse().map_err(|_| format!("expected a number and a unit (s, m, h, d, w), e.g. 30d; got \"{s}\""))?;
+    let scale = match unit {
+        "s" => 1,
+        "m" => 60,
+        "h" => 3600,
+        "d" => 86_400,
+        "w" => 604_800,
+        _ => return Err(format!("unknown unit in \"{s}\": use s, m, h, d or w (e.g. 30d)")),
+    };
+    match n.checked_mul(scale) {
+        Some(secs) if secs > 0 && secs <= 100 * 365 * 86_400 => Ok(secs),
+        _ => Err(format!("\"{s}\" must be more than 0 and at most 100 years")),
+    }
 }
 
 fn parse_gravity(s: &str) -> Result<[f64; 3], String> {
@@ -102,6 +139,10 @@ fn parse_gravity(s: &str) -> Result<[f64; 3], String> {
 pub fn read_bundle(path: &Path, limits: &Limits) -> Result<Bundle, String> {
     let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_else(|| path.display().to_string());
     let meta = std::fs::metadata(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    if !meta.is_dir() && !meta.is_file() {
+        // A FIFO, socket or device could block forever or never end.
+        return Err(format!("{}: not a regular file or a directory", path.display()));
+    }
     if meta.is_dir() {
         let mut files = Vec::new();
         let mut total = 0u64;
@@ -115,7 +156,7 @@ pub fn read_bundle(path: &Path, limits: &Limits) -> Result<Bundle, String> {
                 if ft.is_dir() {
                     stack.push(p);
                 } else if ft.is_file() {
-                    let bytes = std::fs::read(&p).map_err(|e| format!("{}: {e}", p.display()))?;
+                    let bytes = read_bounded(&p, limits.max_total_bytes.saturating_sub(total))?;
                     total += bytes.len() as u64;
                     if total > limits.max_total_bytes || files.len() >= limits.max_entries {
                         return Err(format!("{}: bundle exceeds {} bytes or {} files", path.display(), limits.max_total_bytes, limits.max_entries));
@@ -128,9 +169,39 @@ pub fn read_bundle(path: &Path, limits: &Limits) -> Result<Bundle, String> {
         }
         Bundle::from_files(&name, files).map_err(|e| e.to_string())
     } else {
-        let bytes = std::fs::read(path).map_err(|e| format!("{}: {e}", path.display()))?;
+        let bytes = read_bounded(path, limits.max_total_bytes)?;
         Bundle::from_zip(&name, &bytes, limits).map_err(|e| e.to_string())
     }
+}
+
+/// Reads a regular file of at most `max` bytes (a file that grows while read, or that was swapped
+/// for something else after the check, is refused rather than read without end).
+fn read_bounded(path: &Path, max: u64) -> Result<Vec<u8>, String> {
+    use std::io::Read;
+    let err = |e: std::io::Error| format!("{}: {e}", path.display());
+    let file = std::fs::File::open(path).map_err(err)?;
+    let meta = file.metadata().map_err(err)?;
+    if !meta.is_file() {
+        return Err(format!("{}: not a regular file", path.display()));
+    }
+    let mut bytes = Vec::with_capacity(usize::try_from(meta.len().min(max)).unwrap_or(0));
+    file.take(max.saturating_add(1)).read_to_end(&mut bytes).map_err(err)?;
+    if bytes.len() as u64 > max {
+        return Err(format!("{}: larger than the limit of {max} bytes", path.display()));
+    }
+    Ok(bytes)
+}
+
+/// Whether writing `output` would replace `input` (or a file of an input folder): the same
+/// file by canonical path, symlinks followed.
+fn output_overwrites_input(input: &Path, output: &Path) -> bool {
+    let Ok(input) = std::fs::canonicalize(input) else { return false };
+    // The output may not exist yet: then its folder decides.
+    let resolved = std::fs::canonicalize(output).ok().or_else(|| {
+        let dir = output.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."));
+        Some(std::fs::canonicalize(dir).ok()?.join(output.file_name()?))
+    });
+    resolved.is_some_and(|out| out == input || (out.starts_with(&input) && out.exists()))
 }
 
 /// Writes `bytes` to `path` through a temporary file in the same folder and a rename.
@@ -163,32 +234,21 @@ pub fn main() -> ExitCode {
     match cli.command {
         Command::Serve(args) => serve(crate::config::Settings::from_args(args)),
         Command::Reexport { all: _, model, service } => reexport(crate::config::Settings::from_args(service), model),
-        Command::Token { command: TokenCommand::Create { name, service } } => {
-            let settings = crate::config::Settings::from_args(service);
-            let result = runtime().map_err(anyhow::Error::from).and_then(|rt| {
-                rt.block_on(async {
-                    std::fs::create_dir_all(&settings.data_dir)?;
-                    let store = crate::store::Store::open(&settings.database_url).await?;
-                    Ok::<_, anyhow::Error>(crate::store::tokens::create(&store, &name).await?)
-                })
-            });
-            match result {
-                Ok(token) => {
-                    println!("{token}");
-                    ExitCode::SUCCESS
-                }
-                Err(e) => {
-                    eprintln!("error: {e:#}");
-                    ExitCode::from(1)
-                }
-            }
-        }
+        Command::Token { command } => token(command),
         Command::Convert { bundle, output, package_name, gravity, lump_welds, match_tolerance, match_angle } => {
             if let Some(p) = &package_name {
                 if pipeline::back::modelica::sanitize(p, "P") != *p {
                     eprintln!("error: --package-name \"{p}\" is not a Modelica identifier ([A-Za-z_][A-Za-z0-9_]*, not a keyword)");
                     return ExitCode::from(2);
                 }
+            }
+            if output_overwrites_input(&bundle, &output) {
+                eprintln!(
+                    "error: the output {} is the input bundle {} (or inside it): choose another -o path",
+                    output.display(),
+                    bundle.display()
+                );
+                return ExitCode::from(2);
             }
             let b = match read_bundle(&bundle, &limits) {
                 Ok(b) => b,
@@ -255,6 +315,79 @@ pub fn main() -> ExitCode {
             }
         }
     }
+}
+
+/// Opens the database the service would use with `service`'s settings (the data folder made
+/// absolute, so messages say exactly which file).
+async fn open_store(service: crate::config::ServeArgs) -> anyhow::Result<(crate::store::Store, String)> {
+    let mut service = service;
+    service.data_dir = std::path::absolute(&service.data_dir)?;
+    let settings = crate::config::Settings::from_args(service);
+    std::fs::create_dir_all(&settings.data_dir)?;
+    let store = crate::store::Store::open(&settings.database_url).await?;
+    let shown = settings.database_url.trim_start_matches("sqlite://").split('?').next().unwrap_or_default().to_string();
+    Ok((store, shown))
+}
+
+/// `cad2mo token create|list|revoke`.
+fn token(command: TokenCommand) -> ExitCode {
+    use crate::store::tokens::{self, Revoked, TokenInfo};
+    let line = |t: &TokenInfo| {
+        let expiry = match (&t.expires_at, t.expired) {
+            (None, _) => "never".to_string(),
+            (Some(e), true) => format!("{e} (expired)"),
+            (Some(e), false) => e.clone(),
+        };
+        let tail = &t.sha256[t.sha256.len().saturating_sub(8)..];
+        format!("{}  {}  created {}  expires {}  sha256 …{}", t.id, t.name, t.created_at, expiry, tail)
+    };
+    let result = runtime().map_err(anyhow::Error::from).and_then(|rt| {
+        rt.block_on(async {
+            match command {
+                TokenCommand::Create { name, expires_in, service } => {
+                    let (store, db) = open_store(service).await?;
+                    let token = tokens::create(&store, &name, expires_in).await?;
+                    println!("{token}");
+                    let until = if expires_in.is_some() { " (it expires: see `cad2mo token list`)" } else { "" };
+                    eprintln!("token \"{name}\" stored in {db}{until}");
+                    Ok(ExitCode::SUCCESS)
+                }
+                TokenCommand::List { service } => {
+                    let (store, db) = open_store(service).await?;
+                    let all = tokens::list(&store).await?;
+                    for t in &all {
+                        println!("{}", line(t));
+                    }
+                    eprintln!("{} tokens in {db}", all.len());
+                    Ok(ExitCode::SUCCESS)
+                }
+                TokenCommand::Revoke { name_or_id, service } => {
+                    let (store, db) = open_store(service).await?;
+                    match tokens::revoke(&store, &name_or_id).await? {
+                        Revoked::One(t) => {
+                            eprintln!("revoked {}", line(&t));
+                            Ok(ExitCode::SUCCESS)
+                        }
+                        Revoked::NotFound => {
+                            eprintln!("error: no token with id or name \"{name_or_id}\" in {db}");
+                            Ok(ExitCode::from(1))
+                        }
+                        Revoked::Ambiguous(many) => {
+                            eprintln!("error: {} tokens are named \"{name_or_id}\"; revoke one by id:", many.len());
+                            for t in &many {
+                                eprintln!("  {}", line(t));
+                            }
+                            Ok(ExitCode::from(2))
+                        }
+                    }
+                }
+            }
+        })
+    });
+    result.unwrap_or_else(|e| {
+        eprintln!("error: {e:#}");
+        ExitCode::from(1)
+    })
 }
 
 fn runtime() -> std::io::Result<tokio::runtime::Runtime> {

@@ -27,6 +27,17 @@ pub struct ServeArgs {
     /// Require bearer tokens even on loopback (they are always required beyond it).
     #[arg(long, env = "CAD2MO_REQUIRE_AUTH")]
     pub require_auth: bool,
+    /// Uploads checked at once (each holds its bundle analysed in memory; default: --workers).
+    /// Beyond it an upload waits up to --check-wait, then gets 503 with Retry-After.
+    #[arg(long, env = "CAD2MO_MAX_CHECKS")]
+    pub max_checks: Option<usize>,
+    /// Seconds an upload may wait for a free check before 503.
+    #[arg(long, env = "CAD2MO_CHECK_WAIT", default_value_t = 10.0)]
+    pub check_wait: f64,
+    /// Extra host names the service answers to (`name` for any port, `name:port`), e.g. behind
+    /// a reverse proxy; repeat or separate by commas. Others get 421.
+    #[arg(long = "allowed-host", env = "CAD2MO_ALLOWED_HOSTS", value_delimiter = ',')]
+    pub allowed_hosts: Vec<String>,
 }
 
 /// The service's settings.
@@ -39,6 +50,12 @@ pub struct Settings {
     pub workers: usize,
     /// Require tokens even on loopback.
     pub force_auth: bool,
+    /// Upload checks (bundle analyses) at once.
+    pub max_checks: usize,
+    /// How long an upload waits for a check before 503.
+    pub check_wait: std::time::Duration,
+    /// Extra `Host` names (`name` or `name:port`), beyond the bound address.
+    pub allowed_hosts: Vec<String>,
 }
 
 impl Settings {
@@ -57,6 +74,9 @@ impl Settings {
             max_upload: a.max_upload,
             workers,
             force_auth: a.require_auth,
+            max_checks: a.max_checks.filter(|n| *n > 0).unwrap_or(workers),
+            check_wait: std::time::Duration::try_from_secs_f64(a.check_wait.clamp(0.0, 600.0)).unwrap_or_default(),
+            allowed_hosts: a.allowed_hosts.into_iter().map(|h| h.trim().to_string()).filter(|h| !h.is_empty()).collect(),
         }
     }
 
@@ -69,6 +89,9 @@ impl Settings {
             max_upload: 64 * 1024 * 1024,
             workers: 2,
             force_auth: false,
+            max_checks: 2,
+            check_wait: std::time::Duration::from_secs(10),
+            allowed_hosts: Vec::new(),
         }
     }
 

@@ -11,7 +11,12 @@
 //! the version (`failed`).
 //!
 //! Restart: [`Jobs::start`] (called by `App::build`) first re-queues every job a stopped server
-//! left `queued` or `running` (`store::models::requeue_unfinished`), then runs them. Conversion
+//! left `queued` or `running` (`store::models::requeue_unfinished`), then runs them.
+//!
+//! Poison jobs: every claim counts an attempt (`jobs.attempts`). A job claimed again after
+//! [`MAX_ATTEMPTS`] claims was running each time the service stopped: its conversion most likely
+//! kills the process (out of memory, a crash), so it is marked failed (`/problems/conversion-aborted`)
+//! instead of being run again and taking the service down at every start. Conversion
 //! is deterministic and idempotent and blobs are content-addressed, so redoing a half-done job is
 //! harmless; a crash between the blob writes and the database update leaves at worst an
 //! unreferenced blob. One server per database: two servers would each re-queue the other's
@@ -40,6 +45,10 @@ use crate::pipeline::observe::Stage;
 use crate::store::blobs::Blobs;
 use crate::store::models::{self, ClaimedJob, JobOutputs};
 use crate::store::{Store, StoreError};
+
+/// Claims of one job before it is given up (see the module doc): a job claimed for the
+/// `MAX_ATTEMPTS + 1`-th time fails without running.
+pub const MAX_ATTEMPTS: i64 = 3;
 
 /// A handle on the worker pool (cheap to clone): wakes the dispatcher.
 #[derive(Clone, Debug)]
@@ -208,7 +217,12 @@ async fn run(ctx: &Ctx, job: ClaimedJob) {
     tracing::info!("job running");
     let started = std::time::Instant::now();
     ctx.board.set(&job.id, JobProgress::of(0, 0, 1));
-    let result = convert(ctx, &job).await;
+    let result = if job.attempts > MAX_ATTEMPTS {
+        tracing::error!(attempts = job.attempts, "the job stopped the service every time it ran: marked failed");
+        Err(ApiError::Aborted { times: job.attempts - 1 })
+    } else {
+        convert(ctx, &job).await
+    };
     let ms = started.elapsed().as_millis() as u64;
     for attempt in 1..=3 {
         let recorded = match &result {

@@ -8,6 +8,9 @@ use cad2mo::config::Settings;
 
 pub struct TestApp {
     pub address: String,
+    /// Sends `X-Requested-With: cad2mo` like the browser UI (without a token, the service
+    /// refuses state-changing requests without it); use `reqwest::Client::new()` to play a
+    /// cross-site page.
     pub client: reqwest::Client,
     dir: Option<tempfile::TempDir>,
     handle: Option<tokio::task::JoinHandle<()>>,
@@ -42,7 +45,7 @@ impl TestApp {
         let handle = tokio::spawn(async move {
             let _ = app.run_until_stopped().await;
         });
-        TestApp { address, client: reqwest::Client::new(), dir: Some(dir), handle: Some(handle) }
+        TestApp { address, client: ui_client(), dir: Some(dir), handle: Some(handle) }
     }
 
     /// The data folder (database and blobs).
@@ -70,6 +73,13 @@ impl TestApp {
     pub async fn health(&self) -> reqwest::Response {
         self.get("/api/health").await
     }
+}
+
+/// A client that sends what the browser UI sends with every request (web/src/api.js).
+pub fn ui_client() -> reqwest::Client {
+    let mut headers = reqwest::header::HeaderMap::new();
+    headers.insert("x-requested-with", reqwest::header::HeaderValue::from_static("cad2mo"));
+    reqwest::Client::builder().default_headers(headers).build().expect("client")
 }
 
 /// Zips a directory (a bundle folder) into memory, paths relative to it.

@@ -38,8 +38,12 @@ export class ApiError extends Error {
   }
 }
 
+// Sent with every request: without a token the service refuses requests that change data unless
+// they carry it (a cross-site page cannot send it without a CORS preflight the service never grants).
+const CLIENT_HEADER = { 'X-Requested-With': 'cad2mo' };
+
 function headers(extra = {}) {
-  const h = { Accept: 'application/json', ...extra };
+  const h = { Accept: 'application/json', ...CLIENT_HEADER, ...extra };
   const t = token();
   if (t) h.Authorization = `Bearer ${t}`;
   return h;

@@ -1,12 +1,15 @@
-//! Bearer-token authentication. When the service listens beyond loopback (or with
-//! `--require-auth`), every request needs `Authorization: Bearer <token>` except the health check,
-//! the OpenAPI document, the browser UI's static files and reads of the motor library.
+//! The request guard: the host, origin and client-header rules of [`super::guard`] (safe by
+//! default on loopback), then bearer-token authentication. When the service listens beyond
+//! loopback (or with `--require-auth`), every request needs `Authorization: Bearer <token>`
+//! (scheme in any case; an expired token is refused) except the health check, the OpenAPI
+//! document, the browser UI's static files and reads of the motor library.
 
 use axum::extract::{Request, State};
-use axum::http::{header, Method};
+use axum::http::{header, HeaderMap, Method};
 use axum::middleware::Next;
 use axum::response::Response;
 
+use super::guard;
 use super::ApiError;
 use crate::app::AppState;
 
@@ -15,18 +18,34 @@ fn is_public(method: &Method, path: &str) -> bool {
     path == "/api/health" || path == "/openapi.yaml" || !path.starts_with("/api/") || (read && path.starts_with("/api/library/"))
 }
 
-pub async fn require_token(State(state): State<AppState>, req: Request, next: Next) -> Result<Response, ApiError> {
-    if !state.settings.requires_auth() || is_public(req.method(), req.uri().path()) {
-        return Ok(next.run(req).await);
+/// The token of an `Authorization: Bearer <token>` header (scheme case-insensitive).
+fn bearer(headers: &HeaderMap) -> Option<&str> {
+    let value = headers.get(header::AUTHORIZATION)?.to_str().ok()?.trim();
+    let (scheme, token) = value.split_once(' ')?;
+    let token = token.trim();
+    (scheme.eq_ignore_ascii_case("bearer") && !token.is_empty()).then_some(token)
+}
+
+/// What the guard layer needs: the app (settings, tokens) and the names it answers to.
+#[derive(Clone)]
+pub struct Guard {
+    pub state: AppState,
+    pub hosts: guard::Hosts,
+}
+
+pub async fn guard(State(Guard { state, hosts }): State<Guard>, req: Request, next: Next) -> Result<Response, ApiError> {
+    let host = hosts
+        .check_host(req.headers(), req.uri().authority().map(|a| a.as_str()))
+        .map_err(ApiError::MisdirectedHost)?;
+    let valid = match bearer(req.headers()) {
+        Some(token) => crate::store::tokens::verify(&state.store, token).await?,
+        None => false,
+    };
+    if guard::changes_state(req.method()) && !valid {
+        hosts.check_origin(req.headers(), &host).map_err(ApiError::CrossOrigin)?;
+        guard::check_client(req.headers()).map_err(ApiError::ClientHeaderRequired)?;
     }
-    let token = req
-        .headers()
-        .get(header::AUTHORIZATION)
-        .and_then(|v| v.to_str().ok())
-        .and_then(|v| v.strip_prefix("Bearer "))
-        .map(str::trim)
-        .ok_or(ApiError::Unauthorized)?;
-    if crate::store::tokens::verify(&state.store, token).await? {
+    if valid || !state.settings.requires_auth() || is_public(req.method(), req.uri().path()) {
         Ok(next.run(req).await)
     } else {
         Err(ApiError::Unauthorized)
@@ -44,5 +63,14 @@ mod tests {
         assert!(!is_public(&Method::POST, "/api/library/instances"));
         assert!(!is_public(&Method::GET, "/api/models"));
         assert!(is_public(&Method::GET, "/"));
+    }
+
+    #[test]
+    fn bearer_scheme_in_any_case() {
+        let mut h = HeaderMap::new();
+        for (v, want) in [("Bearer abc", Some("abc")), ("bearer abc", Some("abc")), ("BEARER  abc ", Some("abc")), ("Basic abc", None), ("Bearer", None), ("Bearer ", None)] {
+            h.insert(header::AUTHORIZATION, v.parse().unwrap());
+            assert_eq!(bearer(&h), want, "{v}");
+        }
     }
 }

@@ -1,11 +1,13 @@
 //! A response cache for the motor library's reads: the library changes rarely and is read on
 //! every page of the UI and by scripts. Successful `GET /api/library/...` responses are kept by
-//! URI; any successful write under `/api/library/` clears the cache. Bounded in entries.
+//! URI; any successful write under `/api/library/` clears the cache. Bounded in entries, and in
+//! size: a response whose body is larger than 16 MiB (or of unknown size) is served as it is,
+//! uncached (a huge library still lists, it is just not kept in memory twice).
 
 use std::collections::HashMap;
 use std::sync::{Arc, RwLock};
 
-use axum::body::{to_bytes, Body, Bytes};
+use axum::body::{to_bytes, Body, Bytes, HttpBody};
 use axum::extract::{Request, State};
 use axum::http::{header, HeaderValue, Method, StatusCode};
 use axum::middleware::Next;
@@ -45,8 +47,12 @@ pub async fn library_cache(State(cache): State<LibraryCache>, req: Request, next
         return resp;
     }
     let (parts, body) = resp.into_parts();
-    let Ok(bytes) = to_bytes(body, MAX_BODY).await else {
-        return StatusCode::INTERNAL_SERVER_ERROR.into_response();
+    if body.size_hint().exact().is_none_or(|n| n > MAX_BODY as u64) {
+        return Response::from_parts(parts, body);
+    }
+    let bytes = match to_bytes(body, MAX_BODY).await {
+        Ok(b) => b,
+        Err(e) => return super::ApiError::Internal(anyhow::anyhow!("reading a library response: {e}")).into_response(),
     };
     if let (Some(ct), Ok(mut m)) = (parts.headers.get(header::CONTENT_TYPE).cloned(), cache.0.write()) {
         if m.len() >= MAX_ENTRIES {

@@ -5,7 +5,7 @@
 //! Joints are named by their stable Modelica element name from the latest converted version's
 //! report; assignments to joints that version no longer has are listed as orphaned.
 
-use axum::extract::{Path, State};
+use axum::extract::State;
 use axum::http::StatusCode;
 use axum::routing::{get, post};
 use axum::{Json, Router};
@@ -13,6 +13,7 @@ use serde::{Deserialize, Serialize};
 use serde_json::{Map, Value as JsonValue};
 
 use super::error::FieldError;
+use super::extract::Path;
 use super::ApiError;
 use crate::app::AppState;
 use crate::drives::{self, Assignment, ReferenceSpec};

@@ -3,6 +3,7 @@
 //! Bad input is always a 4xx with a stable `type` and a human `detail`; conversion errors carry
 //! their diagnostics. A 5xx logs the cause and returns a generic message.
 
+use axum::extract::rejection::{PathRejection, QueryRejection};
 use axum::http::{header, StatusCode};
 use axum::response::{IntoResponse, Response};
 use serde::Serialize;
@@ -33,8 +34,35 @@ pub enum ApiError {
     Unauthorized,
     #[error("conversion failed: {0}")]
     Conversion(#[from] ConvertError),
+    #[error(
+        "the conversion stopped the service {times} times (it was still running at each restart); \
+         it is not tried again: check the bundle (size, meshes) or upload a new version"
+    )]
+    Aborted { times: i64 },
+    #[error("too many uploads are being checked right now; retry in {retry_after} s")]
+    Busy { retry_after: u64 },
+    /// A state-changing request from another web origin.
+    #[error("{0}")]
+    CrossOrigin(String),
+    /// A state-changing request without a token that a web page could have sent cross-site.
+    #[error("{0}")]
+    ClientHeaderRequired(String),
+    #[error("{0}")]
+    MisdirectedHost(String),
     #[error("internal error")]
     Internal(#[from] anyhow::Error),
+}
+
+impl From<PathRejection> for ApiError {
+    fn from(e: PathRejection) -> Self {
+        ApiError::BadRequest(format!("invalid path parameter: {}", e.body_text()))
+    }
+}
+
+impl From<QueryRejection> for ApiError {
+    fn from(e: QueryRejection) -> Self {
+        ApiError::BadRequest(format!("invalid query string: {}", e.body_text()))
+    }
 }
 
 impl From<StoreError> for ApiError {
@@ -73,6 +101,13 @@ impl ApiError {
             ApiError::PayloadTooLarge { .. } => (StatusCode::PAYLOAD_TOO_LARGE, "payload-too-large", "Upload too large"),
             ApiError::Unauthorized => (StatusCode::UNAUTHORIZED, "unauthorized", "Unauthorized"),
             ApiError::Conversion(_) => (StatusCode::UNPROCESSABLE_ENTITY, "conversion-failed", "Conversion failed"),
+            ApiError::Aborted { .. } => (StatusCode::UNPROCESSABLE_ENTITY, "conversion-aborted", "Conversion aborted"),
+            ApiError::Busy { .. } => (StatusCode::SERVICE_UNAVAILABLE, "busy", "Busy"),
+            ApiError::CrossOrigin(_) => (StatusCode::FORBIDDEN, "cross-origin", "Cross-origin request refused"),
+            ApiError::ClientHeaderRequired(_) => {
+                (StatusCode::FORBIDDEN, "client-header-required", "Request refused without a token or client header")
+            }
+            ApiError::MisdirectedHost(_) => (StatusCode::MISDIRECTED_REQUEST, "misdirected-request", "Unknown host"),
             ApiError::Internal(_) => (StatusCode::INTERNAL_SERVER_ERROR, "internal", "Internal error"),
         }
     }
@@ -105,8 +140,14 @@ impl IntoResponse for ApiError {
         let (status, _, _) = self.parts();
         let mut resp = (status, [(header::CONTENT_TYPE, "application/problem+json")], self.problem_json().to_string())
             .into_response();
-        if matches!(self, ApiError::Unauthorized) {
-            resp.headers_mut().insert(header::WWW_AUTHENTICATE, axum::http::HeaderValue::from_static("Bearer"));
+        match &self {
+            ApiError::Unauthorized => {
+                resp.headers_mut().insert(header::WWW_AUTHENTICATE, axum::http::HeaderValue::from_static("Bearer"));
+            }
+            ApiError::Busy { retry_after } => {
+                resp.headers_mut().insert(header::RETRY_AFTER, axum::http::HeaderValue::from(*retry_after));
+            }
+            _ => {}
         }
         resp
     }

@@ -15,8 +15,8 @@
 //! become problem documents like every other error. DTOs are private to this module.
 
 use axum::body::Bytes;
-use axum::extract::rejection::{BytesRejection, JsonRejection, QueryRejection};
-use axum::extract::{DefaultBodyLimit, Path, Query, State};
+use axum::extract::rejection::{BytesRejection, JsonRejection};
+use axum::extract::{DefaultBodyLimit, State};
 use axum::http::{header, StatusCode};
 use axum::response::{IntoResponse, Response};
 use axum::routing::{get, post};
@@ -25,6 +25,7 @@ use serde::{Deserialize, Serialize};
 use serde_json::{Map, Value as Json_};
 
 use super::error::FieldError;
+use super::extract::{Path, Query};
 use super::ApiError;
 use crate::app::AppState;
 use crate::library::{
@@ -343,9 +344,8 @@ async fn delete_class(State(s): State<AppState>, Path(id): Path<String>) -> Resu
 
 async fn list_instances(
     State(s): State<AppState>,
-    q: Result<Query<InstanceFilter>, QueryRejection>,
+    Query(f): Query<InstanceFilter>,
 ) -> Result<Response, ApiError> {
-    let Query(f) = q.map_err(|e| ApiError::BadRequest(e.body_text()))?;
     let class_id = f.class_id.as_deref().map(canonical);
     let list = db::list_instances(&s.store, class_id.as_deref(), f.domain.as_deref()).await?;
     Ok(Json(list.iter().map(|(i, c)| instance_out(i, c)).collect::<Vec<_>>()).into_response())

@@ -5,6 +5,8 @@ mod auth;
 mod cache;
 mod drives;
 pub mod error;
+mod extract;
+mod guard;
 mod health;
 mod jobs;
 mod library;
@@ -29,6 +31,9 @@ pub fn router(state: AppState) -> Router {
         .merge(drives::router())
         .merge(web::router())
         .layer(axum::middleware::from_fn_with_state(cache::LibraryCache::default(), cache::library_cache))
-        .layer(axum::middleware::from_fn_with_state(state.clone(), auth::require_token))
+        .layer(axum::middleware::from_fn_with_state(
+            auth::Guard { hosts: guard::Hosts::new(state.addr, &state.settings.allowed_hosts), state: state.clone() },
+            auth::guard,
+        ))
         .with_state(state)
 }

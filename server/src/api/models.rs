@@ -19,7 +19,8 @@
 //! Uploads: multipart parts `bundle` (the zip, required), `name`, `package_name`, `gravity`
 //! ("x,y,z") and `lump_welds` ("true"/"false"); `name` names a new model (default: the
 //! assembly's name from the XML) and is ignored for a new version. The body may not exceed `settings.max_upload`
-//! (413). The bundle is read and analysed at once, off the runtime: an unreadable or unsafe zip
+//! (413). The bundle is read and analysed at once, off the runtime, at most `settings.max_checks`
+//! at a time (beyond that, after `settings.check_wait`, a 503 with `Retry-After`): an unreadable or unsafe zip
 //! is a 422 naming the bundle, bad XML a 422 with the diagnostics; nothing is stored then.
 //! Otherwise the bundle blob is stored, then the model/version/job rows in one transaction, and
 //! the conversion is left to the workers (`crate::jobs`).
@@ -210,6 +211,9 @@ fn version_ids(path: Result<Path<(String, String)>, PathRejection>) -> Result<(S
     }
 }
 
+/// `Retry-After` of a 503 when every upload check is busy.
+const RETRY_AFTER_SECS: u64 = 3;
+
 /// A parsed upload.
 struct Upload {
     bundle: Bytes,
@@ -343,9 +347,22 @@ fn safe_file_name(raw: &str) -> String {
 
 /// Checks the bundle (off the runtime) and stores its blob. Returns the stored version's fields
 /// and the model name the XML gives.
+///
+/// At most `settings.max_checks` checks run at once (a check holds the bundle analysed in memory,
+/// many times its size): an upload waits up to `settings.check_wait` for a permit, then is a 503
+/// with `Retry-After`. The permit moves into the blocking task, so a client that hangs up does not
+/// free it before its check has really finished.
 async fn accept_upload(state: &AppState, upload: Upload) -> Result<(Upload, String, String), ApiError> {
+    let permit = match tokio::time::timeout(state.settings.check_wait, state.checks.clone().acquire_owned()).await {
+        Ok(Ok(permit)) => permit,
+        Ok(Err(_)) | Err(_) => {
+            tracing::warn!(max_checks = state.settings.max_checks, "upload refused: every check is busy");
+            return Err(ApiError::Busy { retry_after: RETRY_AFTER_SECS });
+        }
+    };
     let blobs = state.blobs.clone();
     blocking(move || {
+        let _permit = permit;
         let checked = export::check_bundle(&upload.bundle, &upload.bundle_name, &upload.options)?;
         let sha = blobs
             .put(&upload.bundle)

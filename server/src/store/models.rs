@@ -84,6 +84,9 @@ pub struct ClaimedJob {
     pub kind: String,
     pub model_id: String,
     pub version: i64,
+    /// How many times the job was claimed, this claim included (a job claimed again after a
+    /// restart found it `running` has attempts > 1).
+    pub attempts: i64,
     /// `None` when the version no longer exists (deleted meanwhile).
     pub source: Option<JobSource>,
 }
@@ -274,7 +277,8 @@ pub async fn requeue_unfinished(pool: &SqlitePool) -> Result<u64, StoreError> {
 
 /// Takes the oldest queued job whose model has no earlier job still queued or running (a
 /// model's jobs run in version order: a version's Modelica names come from the one before it),
-/// marks it and its version `running` and returns it. `None` when nothing is claimable.
+/// marks it and its version `running`, counts the attempt (`jobs.attempts`) and returns it.
+/// `None` when nothing is claimable.
 pub async fn claim_next_job(pool: &SqlitePool) -> Result<Option<ClaimedJob>, StoreError> {
     // Read first, outside any transaction: an idle poll must not take SQLite's write lock, or a
     // concurrent read-then-write transaction elsewhere would fail with "database is locked".
@@ -289,15 +293,16 @@ pub async fn claim_next_job(pool: &SqlitePool) -> Result<Option<ClaimedJob>, Sto
     .await?;
     let Some((candidate,)) = candidate else { return Ok(None) };
     let mut tx = pool.begin().await?;
-    let job: Option<(String, String, String, i64)> = sqlx::query_as(&format!(
-        "UPDATE jobs SET status = 'running', started_at = {NOW}, finished_at = NULL, error_json = NULL
+    let job: Option<(String, String, String, i64, i64)> = sqlx::query_as(&format!(
+        "UPDATE jobs SET status = 'running', started_at = {NOW}, finished_at = NULL, error_json = NULL,
+                attempts = attempts + 1
          WHERE id = ? AND status = 'queued'
-         RETURNING id, kind, model_id, version"
+         RETURNING id, kind, model_id, version, attempts"
     ))
     .bind(&candidate)
     .fetch_optional(&mut *tx)
     .await?;
-    let Some((id, kind, model_id, version)) = job else {
+    let Some((id, kind, model_id, version, attempts)) = job else {
         tx.rollback().await?;
         return Ok(None);
     };
@@ -311,7 +316,7 @@ pub async fn claim_next_job(pool: &SqlitePool) -> Result<Option<ClaimedJob>, Sto
     .fetch_optional(&mut *tx)
     .await?;
     tx.commit().await?;
-    Ok(Some(ClaimedJob { id, kind, model_id, version, source }))
+    Ok(Some(ClaimedJob { id, kind, model_id, version, attempts, source }))
 }
 
 /// The outputs of a successful job (blobs already stored).
@@ -460,7 +465,7 @@ mod tests {
         let a = create_model(&s.pool, "a", &upload()).await.unwrap();
         let b = create_model(&s.pool, "b", &upload()).await.unwrap();
         let j = claim_next_job(&s.pool).await.unwrap().unwrap();
-        assert_eq!(j.id, a.job_id);
+        assert_eq!((j.id.as_str(), j.attempts), (a.job_id.as_str(), 1));
         assert_eq!(j.source.as_ref().unwrap().bundle_name, "b.zip");
         let out = JobOutputs { package_sha256: "p", report_sha256: "r", summary_json: "{}" };
         finish_succeeded(&s.pool, &j, &out).await.unwrap();
@@ -472,6 +477,7 @@ mod tests {
         assert_eq!(get_job(&s.pool, &b.job_id).await.unwrap().unwrap().status, "queued");
         assert_eq!(get_version(&s.pool, &b.model_id, 1).await.unwrap().unwrap().status, "queued");
         let j3 = claim_next_job(&s.pool).await.unwrap().unwrap();
+        assert_eq!((j3.id.as_str(), j3.attempts), (b.job_id.as_str(), 2), "every claim counts");
         finish_failed(&s.pool, &j3, "{\"status\":422}").await.unwrap();
         let v = get_version(&s.pool, &b.model_id, 1).await.unwrap().unwrap();
         assert_eq!((v.status.as_str(), v.error_json.as_deref()), ("failed", Some("{\"status\":422}")));
