@@ -77,6 +77,9 @@ impl From<StoreError> for ApiError {
     }
 }
 
+/// Most field errors or diagnostics listed in one problem document.
+const MAX_LISTED: usize = 100;
+
 #[derive(Serialize)]
 struct Problem<'a> {
     #[serde(rename = "type")]
@@ -124,9 +127,10 @@ impl ApiError {
             kind: format!("/problems/{slug}"),
             title,
             status: status.as_u16(),
-            detail: self.to_string(),
-            errors,
-            diagnostics,
+            // Bounded whatever the input: a problem document never carries megabytes.
+            detail: crate::pipeline::ir::clip(&self.to_string(), crate::pipeline::MAX_MESSAGE_BYTES),
+            errors: errors.into_iter().take(MAX_LISTED).collect(),
+            diagnostics: diagnostics.into_iter().take(MAX_LISTED).collect(),
         };
         serde_json::to_value(p).unwrap_or_default()
     }
