@@ -82,6 +82,23 @@
 //! Inlines), more than [`MAX_PARSED_NODES`] parsed nodes (PROTO expansion included),
 //! [`MAX_SCENE_NODES`] scene nodes, [`MAX_SHAPES`] shapes or [`MAX_TRIANGLES`] triangles.
 //! Errors name the file, line and column ([`VrmlError`]).
+//!
+//! Expansions are counted before they are made, so a small file that would expand
+//! exponentially (PROTOs instantiating PROTOs, DEF/USE doubling) is refused at the size of
+//! its text ([`VrmlErrorKind::Expansion`], naming the USE, PROTO instance, Inline or node and
+//! the projected count):
+//! - every parsed node carries what it expands to in the scene (grouping nodes, shapes, an
+//!   upper bound of triangles: `k - 2` per polygon of `k` corners, the primitives' fixed
+//!   counts), summed from the nodes it holds, so a USE costs its DEF's expansion without
+//!   expanding it. The children of a grouping node and the roots of a file are summed as they
+//!   are read (the error names the child that passes the limit); any node whose own
+//!   expansion passes a limit is refused, even when nothing uses it;
+//! - a PROTO memoises the nodes one instance parses (its body parsed once with the instances
+//!   in it counted by their own memo, not expanded; IS values are shared, not parsed, so
+//!   every instance parses the same number), and an instance is refused before its body is
+//!   parsed when the parsed-node count would pass the limit;
+//! - an Inline's file is parsed, then its roots' expansion is checked against what the scene
+//!   already holds before it is expanded.
 
 mod ast;
 mod eval;
@@ -119,6 +136,21 @@ pub(crate) struct Limits {
     pub scene_nodes: usize,
     pub shapes: usize,
     pub triangles: usize,
+}
+
+impl Limits {
+    /// The first scene limit `cost`, added to what the scene already holds (`have`), would
+    /// exceed: its unit, the projected count and the limit.
+    fn exceeded(&self, have: ast::Cost, cost: ast::Cost) -> Option<(&'static str, u64, u64)> {
+        let total = have.add(cost);
+        [
+            ("grouping nodes", total.scene, self.scene_nodes as u64),
+            ("shapes", total.shapes, self.shapes as u64),
+            ("triangles", total.triangles, self.triangles as u64),
+        ]
+        .into_iter()
+        .find(|&(_, n, limit)| n > limit)
+    }
 }
 
 impl Default for Limits {
@@ -199,6 +231,10 @@ pub enum VrmlErrorKind {
     TooManyTriangles { limit: usize },
     #[error("more than {limit} nodes")]
     TooManyNodes { limit: u64 },
+    /// A USE, PROTO instance, Inline or node whose expansion would pass a limit, refused
+    /// before it is expanded; `what` names it (`USE N16`, `PROTO instance P39`, ...).
+    #[error("{what} would expand to {projected} {unit} (limit {limit})")]
+    Expansion { what: String, unit: &'static str, projected: u64, limit: u64 },
 }
 
 /// Reads the VRML scene whose main file is the bundle path `main`, following Inlines and

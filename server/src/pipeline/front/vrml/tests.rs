@@ -875,9 +875,13 @@ fn vrml1_def_use_top_level_shapes_and_inline_into_vrml97() {
 
 #[test]
 fn vrml1_face_set_counts_are_checked() {
+    let src = "#VRML V1.0 ascii\nSeparator { Coordinate3 { point [0 0 0, 1 0 0, 0 1 0] } DEF F FaceSet { numVertices [ 4 ] } }";
+    let e = error(src);
+    assert_eq!(e.to_string(), "main.wrl:2:57: FaceSet \"F\": coordIndex 3 is out of range (3 points)");
+    // A corrupt count is refused by its triangle count before an index list is built.
     let src = "#VRML V1.0 ascii\nSeparator { Coordinate3 { point [0 0 0, 1 0 0, 0 1 0] } DEF F FaceSet { numVertices [ 2000000000 ] } }";
     let e = error(src);
-    assert_eq!(e.to_string(), "main.wrl:2:57: FaceSet \"F\": coordIndex 1999999999 is out of range (3 points)");
+    assert_eq!(e.to_string(), "main.wrl:2:57: FaceSet \"F\" would expand to 1999999998 triangles (limit 100000000)");
     let e = error("#VRML V1.0 ascii\nSeparator { Coordinate3 { point [0 0 0] } FaceSet { startIndex -1 numVertices [ 3 ] } }");
     assert!(matches!(e.kind, VrmlErrorKind::IndexOutOfRange { index: -1, .. }), "{e}");
 }
@@ -941,7 +945,9 @@ fn exponential_instancing_hits_a_limit() {
     for i in 1..40 {
         src += &format!("DEF N{i} Group {{ children [ USE N{p} USE N{p} ] }}\n", p = i - 1);
     }
-    assert_eq!(run(&src), VrmlErrorKind::TooManyNodes { limit: 10_000 });
+    // Every root is expanded: N0 .. N12 make 2^14 - 2 - 13 nodes.
+    let what = "Group \"N12\"".to_string();
+    assert_eq!(run(&src), VrmlErrorKind::Expansion { what, unit: "grouping nodes", projected: 16369, limit: 10_000 });
     // 10^9 PROTO expansions.
     let mut src = String::from("PROTO P0 [] { Group { } }\n");
     for i in 1..10 {
@@ -949,7 +955,9 @@ fn exponential_instancing_hits_a_limit() {
         src += &format!("PROTO P{i} [] {{ Group {{ children [ {kids} ] }} }}\n");
     }
     src += "P9 { }";
-    assert_eq!(run(&src), VrmlErrorKind::TooManyNodes { limit: 100_000 });
+    // Refused at the instance, before its body is parsed: P_i parses 1 + 10 (1 + P_{i-1}) nodes.
+    let what = "PROTO instance P9".to_string();
+    assert_eq!(run(&src), VrmlErrorKind::Expansion { what, unit: "parsed nodes", projected: 2_222_222_222, limit: 100_000 });
     // Triangles: one shape used 2^20 times.
     let mut src = format!("DEF N0 Group {{ children {TRI} }}\n");
     for i in 1..20 {
@@ -958,10 +966,82 @@ fn exponential_instancing_hits_a_limit() {
     let small = Limits { scene_nodes: 10_000_000, shapes: 10_000_000, ..small };
     let b = bundle_of(&[("main.wrl", src.as_bytes())]);
     let e = parse_with(&b, "main.wrl", small).map(|_| ()).unwrap_err();
-    assert_eq!(e.kind, VrmlErrorKind::TooManyTriangles { limit: 50_000 });
+    let what = "Group \"N15\"".to_string();
+    assert_eq!(e.kind, VrmlErrorKind::Expansion { what, unit: "triangles", projected: 65_535, limit: 50_000 });
     // The defaults are the documented constants.
     let d = Limits::default();
     assert_eq!((d.parsed_nodes, d.scene_nodes, d.shapes, d.triangles), (MAX_PARSED_NODES, MAX_SCENE_NODES, MAX_SHAPES, MAX_TRIANGLES));
+}
+
+/// The PROTO bomb: each PROTO instantiates the previous one twice (2^40 nodes from 2 KB).
+fn proto_bomb() -> String {
+    let mut src = String::from("#VRML V2.0 utf8\nPROTO P0 [] { Shape { geometry Box { } } }\n");
+    for i in 1..40 {
+        src += &format!("PROTO P{i} [] {{ Group {{ children [ P{p} {{ }} P{p} {{ }} ] }} }}\n", p = i - 1);
+    }
+    src + "P39 { }\n"
+}
+
+/// The DEF/USE bomb: each DEF'd group USEs the previous one twice, 30 levels over a Sphere.
+fn use_bomb() -> String {
+    let mut src = String::from("#VRML V2.0 utf8\nDEF N0 Group { children Shape { geometry Sphere { } } }\n");
+    for i in 1..31 {
+        src += &format!("DEF N{i} Group {{ children [ USE N{p} USE N{p} ] }}\n", p = i - 1);
+    }
+    src
+}
+
+/// Expansion bombs are refused where the expansion would pass a limit, with the projected
+/// count, before anything is expanded (parsed-node and scene counts stay at the file's size).
+#[test]
+fn expansion_bombs_are_refused_before_expanding() {
+    let src = proto_bomb();
+    assert!(src.len() < 2500, "{}", src.len());
+    // P0 parses 2 nodes, P_i 1 + 2 (1 + P_{i-1}) = 5 * 2^i - 3, plus the instance itself.
+    assert_eq!(
+        error(&src).to_string(),
+        "main.wrl:42:1: PROTO instance P39 would expand to 2748779069438 parsed nodes (limit 20000000)"
+    );
+    // Each level doubles the Sphere's 528 triangles; every root is expanded, so N0 .. N17
+    // together pass 10^8 at the root N17.
+    let src = use_bomb();
+    assert_eq!(
+        error(&src).to_string(),
+        "main.wrl:19:1: Group \"N17\" would expand to 138411504 triangles (limit 100000000)"
+    );
+    // The same chain kept out of the scene (an empty Switch): a node whose own expansion
+    // passes a limit is refused all the same, at the USE that passes it.
+    let body: String = use_bomb().lines().skip(1).collect::<Vec<_>>().join("\n");
+    let src = format!("#VRML V2.0 utf8\nSwitch {{ choice [\n{body}\n] }}\n");
+    let e = error(&src);
+    assert_eq!(e.to_string(), "main.wrl:21:36: USE N17 would expand to 138412032 triangles (limit 100000000)");
+    // Through IS: a PROTO whose body uses its MFNode field twice, nested 40 deep (linear to
+    // parse), is refused at the node whose expansion passes the limit.
+    let mut src = String::from("PROTO D [ field MFNode c [] ] { Group { children [ Group { children IS c } Group { children IS c } ] } }\n");
+    src += &"D { c ".repeat(40);
+    src += "Shape { geometry Box { } }";
+    src += &" }".repeat(40);
+    let e = error(&src);
+    assert!(matches!(e.kind, VrmlErrorKind::Expansion { unit: "grouping nodes" | "shapes" | "triangles", .. }), "{e}");
+    // Below the limits the same constructs parse, and the counts are exact.
+    let mut src = String::from("DEF N0 Group { children Shape { geometry Sphere { } } }\n");
+    for i in 1..4 {
+        src += &format!("DEF N{i} Group {{ children [ USE N{p} USE N{p} ] }}\n", p = i - 1);
+    }
+    let (s, _) = scene(&src);
+    assert_eq!(s.nodes.len(), 1 + 3 + 7 + 15);
+    assert_eq!(s.triangle_count(), 528 * (1 + 2 + 4 + 8));
+}
+
+/// An Inline's expansion is checked (from its parsed file) before it is expanded.
+#[test]
+fn inline_expansion_is_checked_before_expanding() {
+    let small = Limits { parsed_nodes: 100_000, scene_nodes: 1_000, shapes: 1_000, triangles: 1_000_000 };
+    let part = "Group { children [ ".to_string() + &"Group { } ".repeat(600) + "] }";
+    let main = "Group { children [ Inline { url \"p.wrl\" } Inline { url \"p.wrl\" } ] }";
+    let b = bundle_of(&[("main.wrl", main.as_bytes()), ("p.wrl", part.as_bytes())]);
+    let e = parse_with(&b, "main.wrl", small).map(|_| ()).unwrap_err();
+    assert_eq!(e.to_string(), "main.wrl:1:43: Inline \"p.wrl\" would expand to 1205 grouping nodes (limit 1000)");
 }
 
 /// A deterministic pseudo-random sequence.
