@@ -1,10 +1,8 @@
 //! Bytes of one file to its [`ParsedFile`]: VRML 97 and VRML 1.0 parsers over one [`Lexer`],
 //! PROTO/EXTERNPROTO expansion, and the [`Loader`] that reads (and caches) bundle files.
 
-use std::borrow::Cow;
 use std::cell::Cell;
 use std::collections::{HashMap, HashSet};
-use std::io::Read;
 use std::rc::Rc;
 
 use nalgebra::Matrix4;
@@ -13,7 +11,7 @@ use super::ast::*;
 use super::lexer::{LexError, Lexer};
 use super::resolve::resolve_url;
 use super::xform;
-use super::{Limits, VrmlError, VrmlErrorKind, MAX_DEPTH, MAX_FILE_BYTES};
+use super::{Limits, VrmlError, VrmlErrorKind, MAX_DEPTH};
 use crate::pipeline::front::bundle::Bundle;
 use crate::pipeline::ir::Warning;
 
@@ -30,10 +28,16 @@ pub(super) struct Loader<'b> {
     ignored_warned: HashSet<Rc<str>>,
     parsed_nodes: u64,
     pub limits: Limits,
+    gz: &'b super::Gunzip,
 }
 
-/// Decompresses gzip data (decided by the magic bytes), with a size cap.
-pub(super) fn decode(bytes: &[u8]) -> Result<Cow<'_, [u8]>, VrmlErrorKind> {
+/// Decompresses gzip data (decided by the magic bytes), with a size cap (tests; the loader
+/// goes through its [`super::Gunzip`]).
+#[cfg(test)]
+pub(super) fn decode(bytes: &[u8]) -> Result<std::borrow::Cow<'_, [u8]>, VrmlErrorKind> {
+    use super::MAX_FILE_BYTES;
+    use std::borrow::Cow;
+    use std::io::Read;
     if !bytes.starts_with(&[0x1f, 0x8b]) {
         return Ok(Cow::Borrowed(bytes));
     }
@@ -66,7 +70,7 @@ pub(super) fn detect(bytes: &[u8]) -> (Version, usize) {
 }
 
 impl<'b> Loader<'b> {
-    pub fn new(bundle: &'b Bundle, limits: Limits) -> Self {
+    pub fn new(bundle: &'b Bundle, limits: Limits, gz: &'b super::Gunzip) -> Self {
         Loader {
             bundle,
             cache: HashMap::new(),
@@ -76,6 +80,7 @@ impl<'b> Loader<'b> {
             ignored_warned: HashSet::new(),
             parsed_nodes: 0,
             limits,
+            gz,
         }
     }
 
@@ -95,7 +100,7 @@ impl<'b> Loader<'b> {
         }
         let bundle = self.bundle;
         let raw = bundle.get(path).ok_or_else(|| Self::whole_file_error(path, VrmlErrorKind::NotFound))?;
-        let data = decode(raw).map_err(|k| Self::whole_file_error(path, k))?;
+        let data = self.gz.text(path, raw).map_err(|k| Self::whole_file_error(path, k))?;
         if u32::try_from(data.len()).is_err() {
             return Err(Self::whole_file_error(path, VrmlErrorKind::TooLarge { limit: u64::from(u32::MAX) }));
         }

@@ -737,7 +737,7 @@ fn gzip_by_magic_whatever_the_extension() {
     bad.truncate(main.len() / 2);
     let e = parse(&bundle_of(&[("main.wrl", &bad)]), "main.wrl").unwrap_err();
     assert!(matches!(e.kind, VrmlErrorKind::Gzip { .. }), "{e}");
-    assert_eq!(main_files(&b), ["main.wrl"]);
+    assert_eq!(main_files(&b).unwrap(), ["main.wrl"]);
 }
 
 #[test]
@@ -897,7 +897,7 @@ fn main_files_skips_inlined_and_extern_proto_files() {
         ("c.wrz", gzip(b"Group { }").as_slice()),
         ("notes.txt", b"\"asm.wrl\"".as_slice()),
     ]);
-    assert_eq!(main_files(&b), ["asm.wrl", "parts/b.wrl", "v1.wrl"]);
+    assert_eq!(main_files(&b).unwrap(), ["asm.wrl", "parts/b.wrl", "v1.wrl"]);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -938,7 +938,7 @@ fn exponential_instancing_hits_a_limit() {
     let small = Limits { parsed_nodes: 100_000, scene_nodes: 10_000, shapes: 10_000, triangles: 50_000 };
     let run = |src: &str| {
         let b = bundle_of(&[("main.wrl", src.as_bytes())]);
-        parse_with(&b, "main.wrl", small).map(|_| ()).unwrap_err().kind
+        parse_with(&b, "main.wrl", small, &Gunzip::default()).map(|_| ()).unwrap_err().kind
     };
     // 2^40 scene nodes by DEF/USE doubling.
     let mut src = String::from("DEF N0 Group { }\n");
@@ -965,7 +965,7 @@ fn exponential_instancing_hits_a_limit() {
     }
     let small = Limits { scene_nodes: 10_000_000, shapes: 10_000_000, ..small };
     let b = bundle_of(&[("main.wrl", src.as_bytes())]);
-    let e = parse_with(&b, "main.wrl", small).map(|_| ()).unwrap_err();
+    let e = parse_with(&b, "main.wrl", small, &Gunzip::default()).map(|_| ()).unwrap_err();
     let what = "Group \"N15\"".to_string();
     assert_eq!(e.kind, VrmlErrorKind::Expansion { what, unit: "triangles", projected: 65_535, limit: 50_000 });
     // The defaults are the documented constants.
@@ -1040,8 +1040,69 @@ fn inline_expansion_is_checked_before_expanding() {
     let part = "Group { children [ ".to_string() + &"Group { } ".repeat(600) + "] }";
     let main = "Group { children [ Inline { url \"p.wrl\" } Inline { url \"p.wrl\" } ] }";
     let b = bundle_of(&[("main.wrl", main.as_bytes()), ("p.wrl", part.as_bytes())]);
-    let e = parse_with(&b, "main.wrl", small).map(|_| ()).unwrap_err();
+    let e = parse_with(&b, "main.wrl", small, &Gunzip::default()).map(|_| ()).unwrap_err();
     assert_eq!(e.to_string(), "main.wrl:1:43: Inline \"p.wrl\" would expand to 1205 grouping nodes (limit 1000)");
+}
+
+/// `mib` MiB of zeros as concatenated gzip members (one member compressed once, repeated):
+/// a few hundred bytes per MiB.
+fn gzip_bomb(mib: usize) -> Vec<u8> {
+    gzip(&vec![0u8; 1 << 20]).repeat(mib)
+}
+
+/// A golden-test case folder as a bundle, with `extra` files added.
+fn case_bundle(case: &str, extra: &[(&str, Vec<u8>)]) -> Bundle {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/in").join(case);
+    let b = folder_bundle(&dir);
+    let mut files: Vec<(String, Vec<u8>)> = b.paths().map(|p| (p.to_string(), b.get(p).unwrap().to_vec())).collect();
+    files.extend(extra.iter().map(|(p, d)| (p.to_string(), d.clone())));
+    Bundle::from_files(case, files).unwrap()
+}
+
+/// gzip files share one budget for the bundle, and each is decompressed once.
+#[test]
+fn gzip_budget_per_bundle() {
+    let part = gzip(b"#VRML V2.0 utf8\nShape { geometry Box { } }");
+    let main = "#VRML V2.0 utf8\nInline { url \"part.wrz\" }";
+    let b = bundle_of(&[("main.wrl", main.as_bytes()), ("part.wrz", &part)]);
+    let gz = Gunzip::new(1 << 20);
+    assert_eq!(main_files_in(&b, &gz).unwrap(), ["main.wrl"]);
+    let used = gz.used();
+    assert!(used > 0);
+    let (s, _) = parse_in(&b, "main.wrl", &gz).unwrap();
+    assert_eq!(s.triangle_count(), 12);
+    assert_eq!(gz.used(), used, "decompressed again");
+    // Past the budget, with the budget and the file that passed it.
+    let b = bundle_of(&[("main.wrl", main.as_bytes()), ("part.wrz", &part), ("z/bomb.wrz", &gzip_bomb(3))]);
+    let e = main_files_in(&b, &Gunzip::new(2 << 20)).unwrap_err();
+    assert_eq!(e.to_string(), "z/bomb.wrz: the bundle's gzip VRML files decompress to more than 2097152 bytes together");
+    // Two files within the per-file cap but past the budget together.
+    let b = bundle_of(&[("a.wrz", &gzip_bomb(2)), ("b.wrz", &gzip_bomb(2))]);
+    let e = main_files_in(&b, &Gunzip::new(3 << 20)).unwrap_err();
+    assert_eq!((e.file.as_str(), e.kind), ("b.wrz", VrmlErrorKind::GzipBudget { limit: 3 << 20 }));
+}
+
+/// A bundle whose bodies all have STL meshes never reads its VRML: a .wrz that is not gzip
+/// at all (decompressing it would fail) does not stop the conversion.
+#[test]
+fn vrml_is_not_read_when_every_body_has_a_mesh() {
+    let mut bad = vec![0x1f, 0x8b];
+    bad.extend(b"not gzip at all".repeat(1000));
+    let b = case_bundle("pendulum", &[("big.wrz", bad.clone())]);
+    crate::pipeline::analyse(&b, &Default::default()).unwrap_or_else(|e| panic!("{e}"));
+    // A bundle that needs its VRML reads it, and the bad file is an error naming it.
+    let b = case_bundle("vrml_gzip", &[("big.wrz", bad)]);
+    let e = crate::pipeline::analyse(&b, &Default::default()).err().unwrap();
+    assert!(e.to_string().starts_with("big.wrz: corrupt gzip data"), "{e}");
+}
+
+/// A bundle that needs its VRML and whose gzip files decompress past the budget is refused.
+#[test]
+fn gzip_past_the_budget_is_refused() {
+    let mib = (MAX_GZIP_BYTES >> 20) as usize + 1;
+    let b = case_bundle("vrml_gzip", &[("big.wrz", gzip_bomb(mib))]);
+    let e = crate::pipeline::analyse(&b, &Default::default()).err().unwrap();
+    assert_eq!(e.to_string(), "big.wrz: the bundle's gzip VRML files decompress to more than 268435456 bytes together");
 }
 
 /// A deterministic pseudo-random sequence.
@@ -1169,18 +1230,18 @@ fn fixture_set(name: &str) -> Option<(PathBuf, Bundle)> {
 #[test]
 fn fixture_main_files() {
     let Some((_, b)) = fixture_set("choreonoid+choreonoid") else { return };
-    let mains = main_files(&b);
+    let mains = main_files(&b).unwrap();
     assert!(mains.contains(&"PA10/PA10.wrl".to_string()));
     assert!(mains.contains(&"GR001/GR001.wrl".to_string()));
     assert!(mains.contains(&"WRS2018/resource/GrayCarDoorFR-Body.wrl".to_string()));
     assert!(!mains.iter().any(|m| m.contains("/parts/") || m.contains("BodySurface")), "{mains:?}");
     let Some((_, b)) = fixture_set("usnistgov+engineering-design-models") else { return };
     assert_eq!(
-        main_files(&b),
+        main_files(&b).unwrap(),
         ["PTC_V18_boombox/CHAS_PROC_after/step001/chassis_process_a.wrl", "PTC_V18_boombox/CHAS_PROC_after/vrml/motor_shaft__p.wrl"]
     );
     let Some((_, b)) = fixture_set("jumpjack+VRMLviewer") else { return };
-    assert_eq!(main_files(&b), ["lander2.wrl", "pi1246924519_007006045l.wrz", "terrain_full_80k.wrl"]);
+    assert_eq!(main_files(&b).unwrap(), ["lander2.wrl", "pi1246924519_007006045l.wrz", "terrain_full_80k.wrl"]);
 }
 
 /// The OpenHRP PA10: Joint PROTO instances through IS bindings, headerless part files.
