@@ -215,7 +215,8 @@ pub fn name_hints(report: &serde_json::Value) -> back::modelica::Hints {
 }
 
 /// Reads the bundle's VRML export (every main file: those no other VRML file inlines) and
-/// matches its groups to the bodies that have no mesh yet. `matching.json` pins come first.
+/// matches its groups to the bodies that have no mesh yet (not read at all when every body
+/// but the RootParts has one). `matching.json` pins come first.
 fn match_vrml(
     model: &mut Model,
     bundle: &Bundle,
@@ -223,14 +224,21 @@ fn match_vrml(
     warnings: &mut Vec<Warning>,
     obs: &mut dyn Observer,
 ) -> Result<Option<passes::geometry_match::MatchReport>, ConvertError> {
-    let mains = front::vrml::main_files(bundle);
-    if mains.is_empty() || model.bodies.iter().all(|b| b.mesh.is_some()) {
+    // Nothing is decompressed or parsed unless a body the matching would target (one without
+    // a mesh, RootParts aside) still needs geometry; gzip files are decompressed once, within
+    // one budget for the bundle.
+    if !model.bodies.iter().any(|b| b.mesh.is_none() && !valid::is_root_part(b)) {
+        return Ok(None);
+    }
+    let gz = front::vrml::Gunzip::default();
+    let mains = front::vrml::main_files_in(bundle, &gz)?;
+    if mains.is_empty() {
         return Ok(None);
     }
     let mut scene = front::vrml::Scene::default();
     for (i, main) in mains.iter().enumerate() {
         obs.progress(Stage::Vrml, i, mains.len() + 1);
-        let (s, w) = front::vrml::parse(bundle, main)?;
+        let (s, w) = front::vrml::parse_in(bundle, main, &gz)?;
         warnings.extend(w);
         scene.append(s);
     }

@@ -1,8 +1,10 @@
 //! Input bundles: the files of one CAD export, held in memory.
 //!
 //! A bundle comes from a `.zip` ([`Bundle::from_zip`], read defensively: no absolute paths, no
-//! `..`, caps on size, entry count and compression ratio) or from a directory that the caller has
-//! read ([`Bundle::from_files`]; the pipeline itself never touches the file system).
+//! `..`, caps on size, entry count and compression ratio; an entry is inflated at most one byte
+//! past its declared size, so a header that lies is a `CorruptEntry` at the cost it declares)
+//! or from a directory that the caller has read ([`Bundle::from_files`]; the pipeline itself
+//! never touches the file system).
 //!
 //! Paths inside a bundle are relative, `/`-separated and normalised. Exports come from Windows and
 //! real bundles keep meshes in sub-folders, so [`Bundle::resolve`] looks a referenced name up
@@ -133,9 +135,11 @@ impl Bundle {
             if total.saturating_add(declared) > limits.max_total_bytes {
                 return Err(BundleError::TooLarge { bundle, limit: limits.max_total_bytes });
             }
-            // Never trust the declared size: read at most what the limits still allow.
+            // Never trust the declared size: inflate at most one byte past it (and past what
+            // the limits still allow), so a header that lies costs no more than it declares.
             let budget = (limits.max_total_bytes - total)
                 .min(compressed.saturating_mul(limits.max_ratio))
+                .min(declared)
                 .saturating_add(1);
             let mut data = Vec::with_capacity(declared.min(budget) as usize);
             (&mut entry)
@@ -147,7 +151,13 @@ impl Bundle {
                     reason: e.to_string(),
                 })?;
             if data.len() as u64 >= budget {
-                return Err(if total + data.len() as u64 > limits.max_total_bytes {
+                return Err(if data.len() as u64 > declared {
+                    BundleError::CorruptEntry {
+                        bundle,
+                        entry: raw_name,
+                        reason: format!("inflates to more than the {declared} bytes its header declares"),
+                    }
+                } else if total + data.len() as u64 > limits.max_total_bytes {
                     BundleError::TooLarge { bundle, limit: limits.max_total_bytes }
                 } else {
                     BundleError::CompressionRatio {
@@ -327,6 +337,41 @@ mod tests {
         let small = Limits { max_total_bytes: 1000, max_entries: 10, max_ratio: 1_000_000 };
         let err = Bundle::from_zip("b.zip", &z, &small).unwrap_err();
         assert!(matches!(err, BundleError::TooLarge { .. }), "{err}");
+    }
+
+    /// A deflated entry of `len` zeros whose local and central headers declare `declared`
+    /// uncompressed bytes.
+    fn lying_zip(len: usize, declared: u32) -> Vec<u8> {
+        let mut z = zip_of(&[("m/lie.bin", &vec![0u8; len])]);
+        let patch = |z: &mut Vec<u8>, sig: &[u8; 4], offset: usize| {
+            let at = z.windows(4).position(|w| w == sig).unwrap() + offset;
+            z[at..at + 4].copy_from_slice(&declared.to_le_bytes());
+        };
+        patch(&mut z, b"PK\x03\x04", 22);
+        patch(&mut z, b"PK\x01\x02", 24);
+        z
+    }
+
+    #[test]
+    fn entry_larger_than_its_header_declares_is_refused_at_the_declared_size() {
+        // 200 KB of zeros (a ratio under the limit) declared as 100 bytes.
+        let z = lying_zip(200_000, 100);
+        let err = Bundle::from_zip("b.zip", &z, &Limits::default()).unwrap_err();
+        assert_eq!(
+            err,
+            BundleError::CorruptEntry {
+                bundle: "b.zip".into(),
+                entry: "m/lie.bin".into(),
+                reason: "inflates to more than the 100 bytes its header declares".into()
+            }
+        );
+        // A declared size over the ratio limit is refused before inflating.
+        let z = lying_zip(200_000, 100_000_000);
+        let err = Bundle::from_zip("b.zip", &z, &Limits::default()).unwrap_err();
+        assert!(matches!(err, BundleError::CompressionRatio { .. }), "{err}");
+        // The truth is accepted.
+        let z = lying_zip(200_000, 200_000);
+        assert_eq!(Bundle::from_zip("b.zip", &z, &Limits::default()).unwrap().total_bytes(), 200_000);
     }
 
     #[test]

@@ -1,6 +1,7 @@
 //! The parsed form of one file: the nodes the scene needs, shared by DEF/USE (`Rc`), with
 //! everything else dropped at parse time.
 
+use std::cell::Cell;
 use std::rc::Rc;
 
 use nalgebra::Matrix4;
@@ -28,7 +29,49 @@ pub(super) struct Node {
     pub col: u32,
     /// 1 + the largest height of the nodes it holds (bounds recursion in evaluation and drop).
     pub height: u32,
+    /// What evaluating the node adds to the scene (USE'd nodes counted as often as they are
+    /// used), known before anything is expanded.
+    pub cost: Cost,
     pub kind: Kind,
+}
+
+/// What a node expands to in the scene: grouping nodes, shapes and triangles (saturating
+/// sums; an upper bound for triangles). Inlined files are not included (they are read during
+/// evaluation, which checks their cost before expanding them).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub(super) struct Cost {
+    pub scene: u64,
+    pub shapes: u64,
+    pub triangles: u64,
+}
+
+impl Cost {
+    pub fn add(self, o: Cost) -> Cost {
+        Cost {
+            scene: self.scene.saturating_add(o.scene),
+            shapes: self.shapes.saturating_add(o.shapes),
+            triangles: self.triangles.saturating_add(o.triangles),
+        }
+    }
+
+    pub fn sum<'a>(nodes: impl IntoIterator<Item = &'a NodeRef>) -> Cost {
+        nodes.into_iter().fold(Cost::default(), |acc, n| acc.add(n.cost))
+    }
+}
+
+/// Triangles of `-1`-separated polygons (k corners make k - 2; fewer than 3 make none).
+pub(super) fn polygon_triangles(index: &[i32]) -> u64 {
+    let mut total = 0u64;
+    let mut k = 0u64;
+    for &i in index.iter().chain(std::iter::once(&-1)) {
+        if i == -1 {
+            total += k.saturating_sub(2);
+            k = 0;
+        } else {
+            k += 1;
+        }
+    }
+    total
 }
 
 impl Kind {
@@ -49,6 +92,57 @@ impl Kind {
     /// The height of a node of this kind.
     pub fn height(&self) -> u32 {
         1 + self.nodes().iter().map(|n| n.height).max().unwrap_or(0)
+    }
+
+    /// What a node of this kind adds to the scene, from what it holds (evaluation follows the
+    /// same rules: a Switch its chosen child, an LOD its first level).
+    pub fn cost(&self) -> Cost {
+        let one = Cost { scene: 1, shapes: 0, triangles: 0 };
+        let shape = |triangles: u64| {
+            if triangles == 0 {
+                Cost::default()
+            } else {
+                Cost { scene: 0, shapes: 1, triangles }
+            }
+        };
+        match self {
+            Kind::Group { children, .. } => one.add(Cost::sum(children)),
+            Kind::Switch { which, choice } => {
+                one.add(Cost::sum(usize::try_from(*which).ok().and_then(|w| choice.get(w))))
+            }
+            Kind::Lod { level } => one.add(Cost::sum(level.first())),
+            Kind::Inline { .. } | Kind::V1Inline { .. } => one,
+            Kind::Shape { geometry, .. } => {
+                let mut g = geometry.as_ref();
+                while let Some(Kind::Instance(Some(inner))) = g.map(|n| &n.kind) {
+                    g = Some(inner);
+                }
+                match g.map(|n| &n.kind) {
+                    Some(Kind::Ifs(ifs)) => shape(polygon_triangles(&ifs.coord_index)),
+                    Some(Kind::Prim(p)) => shape(p.triangles()),
+                    _ => Cost::default(),
+                }
+            }
+            Kind::Instance(Some(inner)) => inner.cost,
+            Kind::V1Group { kind, children } => {
+                let selected: &[NodeRef] = match *kind {
+                    V1GroupKind::Switch(-3) => children,
+                    V1GroupKind::Switch(w) => match usize::try_from(w) {
+                        Ok(w) if w < children.len() => &children[w..=w],
+                        _ => &[],
+                    },
+                    V1GroupKind::Lod => &children[..children.len().min(1)],
+                    _ => children,
+                };
+                one.add(Cost::sum(selected))
+            }
+            Kind::Prim(p) => shape(p.triangles()),
+            Kind::V1Ifs { coord_index } => shape(polygon_triangles(coord_index)),
+            Kind::V1FaceSet { num_vertices, .. } => {
+                shape(num_vertices.iter().map(|&k| u64::try_from(k).unwrap_or(0).saturating_sub(2)).sum())
+            }
+            _ => Cost::default(),
+        }
     }
 }
 
@@ -77,6 +171,18 @@ pub(super) enum Prim {
 }
 
 impl Prim {
+    /// Triangles of its tessellation (see `geom::primitive`).
+    pub fn triangles(&self) -> u64 {
+        let seg = super::geom::SEGMENTS as u64;
+        let rings = super::geom::RINGS as u64;
+        match *self {
+            Prim::Box { .. } => 12,
+            Prim::Sphere { .. } => seg * 2 * (rings - 1),
+            Prim::Cylinder { top, bottom, side, .. } => seg * (2 * u64::from(side) + u64::from(top) + u64::from(bottom)),
+            Prim::Cone { side, bottom, .. } => seg * (u64::from(side) + u64::from(bottom)),
+        }
+    }
+
     pub fn kind(&self, v1: bool) -> &'static str {
         match self {
             Prim::Box { .. } if v1 => "Cube",
@@ -253,6 +359,9 @@ pub(super) struct ProtoDef {
     pub body: Option<ProtoBody>,
     /// The PROTOs visible where this one was declared.
     pub scope: ProtoScope,
+    /// Nodes parsed by one instance (its body's first node, nested instances expanded),
+    /// memoised on first use. The same for every instance: IS values are shared, not parsed.
+    pub parse_cost: Cell<Option<u64>>,
 }
 
 /// PROTOs in scope: a persistent list, newest first.

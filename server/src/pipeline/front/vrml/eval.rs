@@ -469,6 +469,12 @@ impl<'l, 'b> Eval<'l, 'b> {
             return Err(node_error(at, VrmlErrorKind::InlineCycle { chain }));
         }
         let file = self.ld.load(&path)?;
+        // The inlined file's expansion is known from its parse: refuse it before expanding it.
+        let have = Cost { scene: self.scene.nodes.len() as u64, shapes: self.shapes as u64, triangles: self.triangles as u64 };
+        if let Some((unit, projected, limit)) = self.ld.limits.exceeded(have, Cost::sum(&file.roots)) {
+            let what = format!("{} \"{path}\"", at.type_name);
+            return Err(node_error(at, VrmlErrorKind::Expansion { what, unit, projected, limit }));
+        }
         self.inline_stack.push(path);
         let r = self.file_roots(&file, Some(parent), g, depth + 1);
         self.inline_stack.pop();

@@ -6,7 +6,9 @@
 //!
 //! # Files
 //! - **gzip** is decided by the magic bytes `1f 8b`, whatever the extension (`.wrz`, or `.wrl`
-//!   holding gzip data); at most [`MAX_FILE_BYTES`] after decompression.
+//!   holding gzip data); at most [`MAX_FILE_BYTES`] after decompression, and the gzip files
+//!   of one bundle at most [`MAX_GZIP_BYTES`] together ([`Gunzip`]: each decompressed once,
+//!   stopping at the budget).
 //! - **Header**: `#VRML V1.0 ascii` selects VRML 1.0. `#VRML V2.0 utf8`, `# VRML V2.0 utf8`
 //!   (OpenHRP), `#X3D V3.x utf8` and a missing header (headerless part files) read as VRML 97.
 //!   Each file is read by its own version: a VRML 1.0 file can be inlined into a VRML 97 scene.
@@ -82,6 +84,23 @@
 //! Inlines), more than [`MAX_PARSED_NODES`] parsed nodes (PROTO expansion included),
 //! [`MAX_SCENE_NODES`] scene nodes, [`MAX_SHAPES`] shapes or [`MAX_TRIANGLES`] triangles.
 //! Errors name the file, line and column ([`VrmlError`]).
+//!
+//! Expansions are counted before they are made, so a small file that would expand
+//! exponentially (PROTOs instantiating PROTOs, DEF/USE doubling) is refused at the size of
+//! its text ([`VrmlErrorKind::Expansion`], naming the USE, PROTO instance, Inline or node and
+//! the projected count):
+//! - every parsed node carries what it expands to in the scene (grouping nodes, shapes, an
+//!   upper bound of triangles: `k - 2` per polygon of `k` corners, the primitives' fixed
+//!   counts), summed from the nodes it holds, so a USE costs its DEF's expansion without
+//!   expanding it. The children of a grouping node and the roots of a file are summed as they
+//!   are read (the error names the child that passes the limit); any node whose own
+//!   expansion passes a limit is refused, even when nothing uses it;
+//! - a PROTO memoises the nodes one instance parses (its body parsed once with the instances
+//!   in it counted by their own memo, not expanded; IS values are shared, not parsed, so
+//!   every instance parses the same number), and an instance is refused before its body is
+//!   parsed when the parsed-node count would pass the limit;
+//! - an Inline's file is parsed, then its roots' expansion is checked against what the scene
+//!   already holds before it is expanded.
 
 mod ast;
 mod eval;
@@ -111,6 +130,82 @@ pub const MAX_SHAPES: usize = 10_000_000;
 pub const MAX_TRIANGLES: usize = 100_000_000;
 /// Limit on one file's size after gzip decompression.
 pub const MAX_FILE_BYTES: u64 = 1 << 30;
+/// Limit on what the gzip files of one bundle decompress to, all together (the main-file
+/// search and parsing share it through a [`Gunzip`]; each file is decompressed once).
+pub const MAX_GZIP_BYTES: u64 = 256 << 20;
+
+/// Decompresses the gzip files of one bundle, each once (kept for the next use), within a total
+/// budget: create one per bundle and pass it to [`main_files_in`] and [`parse_in`].
+pub struct Gunzip {
+    left: std::cell::Cell<u64>,
+    limit: u64,
+    done: std::cell::RefCell<std::collections::HashMap<String, std::rc::Rc<[u8]>>>,
+}
+
+impl Default for Gunzip {
+    fn default() -> Self {
+        Gunzip::new(MAX_GZIP_BYTES)
+    }
+}
+
+impl Gunzip {
+    /// A budget of `limit` decompressed bytes.
+    pub fn new(limit: u64) -> Self {
+        Gunzip { left: std::cell::Cell::new(limit), limit, done: Default::default() }
+    }
+
+    /// Bytes decompressed so far.
+    pub fn used(&self) -> u64 {
+        self.limit - self.left.get()
+    }
+
+    /// The text of bundle file `path` (`raw`): decompressed when it is gzip (by the magic
+    /// bytes), stopping at the budget.
+    fn text<'a>(&self, path: &str, raw: &'a [u8]) -> Result<Text<'a>, VrmlErrorKind> {
+        use std::io::Read;
+        if !raw.starts_with(&[0x1f, 0x8b]) {
+            return Ok(Text::Plain(raw));
+        }
+        if let Some(t) = self.done.borrow().get(path) {
+            return Ok(Text::Gzip(t.clone()));
+        }
+        let left = self.left.get();
+        let cap = left.min(MAX_FILE_BYTES);
+        let mut out = Vec::new();
+        flate2::read::MultiGzDecoder::new(raw)
+            .take(cap + 1)
+            .read_to_end(&mut out)
+            .map_err(|e| VrmlErrorKind::Gzip { message: e.to_string() })?;
+        let n = out.len() as u64;
+        if n > MAX_FILE_BYTES {
+            return Err(VrmlErrorKind::TooLarge { limit: MAX_FILE_BYTES });
+        }
+        if n > left {
+            self.left.set(0);
+            return Err(VrmlErrorKind::GzipBudget { limit: self.limit });
+        }
+        self.left.set(left - n);
+        let rc: std::rc::Rc<[u8]> = out.into();
+        self.done.borrow_mut().insert(path.to_string(), rc.clone());
+        Ok(Text::Gzip(rc))
+    }
+}
+
+/// A file's text: the bundle's bytes, or a gzip file's decompressed bytes.
+enum Text<'a> {
+    Plain(&'a [u8]),
+    Gzip(std::rc::Rc<[u8]>),
+}
+
+impl std::ops::Deref for Text<'_> {
+    type Target = [u8];
+    fn deref(&self) -> &[u8] {
+        match self {
+            Text::Plain(b) => b,
+            Text::Gzip(b) => b,
+        }
+    }
+}
 
 /// The count limits (the defaults are the `MAX_*` constants; tests use smaller ones).
 #[derive(Clone, Copy, Debug)]
@@ -119,6 +214,21 @@ pub(crate) struct Limits {
     pub scene_nodes: usize,
     pub shapes: usize,
     pub triangles: usize,
+}
+
+impl Limits {
+    /// The first scene limit `cost`, added to what the scene already holds (`have`), would
+    /// exceed: its unit, the projected count and the limit.
+    fn exceeded(&self, have: ast::Cost, cost: ast::Cost) -> Option<(&'static str, u64, u64)> {
+        let total = have.add(cost);
+        [
+            ("grouping nodes", total.scene, self.scene_nodes as u64),
+            ("shapes", total.shapes, self.shapes as u64),
+            ("triangles", total.triangles, self.triangles as u64),
+        ]
+        .into_iter()
+        .find(|&(_, n, limit)| n > limit)
+    }
 }
 
 impl Default for Limits {
@@ -193,23 +303,40 @@ pub enum VrmlErrorKind {
     Gzip { message: String },
     #[error("larger than {limit} bytes")]
     TooLarge { limit: u64 },
+    /// The bundle's gzip files decompress to more than the budget ([`MAX_GZIP_BYTES`]) together.
+    #[error("the bundle's gzip VRML files decompress to more than {limit} bytes together")]
+    GzipBudget { limit: u64 },
     #[error("nested deeper than {limit} levels")]
     TooDeep { limit: u32 },
     #[error("more than {limit} triangles")]
     TooManyTriangles { limit: usize },
     #[error("more than {limit} nodes")]
     TooManyNodes { limit: u64 },
+    /// A USE, PROTO instance, Inline or node whose expansion would pass a limit, refused
+    /// before it is expanded; `what` names it (`USE N16`, `PROTO instance P39`, ...).
+    #[error("{what} would expand to {projected} {unit} (limit {limit})")]
+    Expansion { what: String, unit: &'static str, projected: u64, limit: u64 },
 }
 
 /// Reads the VRML scene whose main file is the bundle path `main`, following Inlines and
 /// EXTERNPROTOs inside the bundle. Returns the scene and the warnings.
 pub fn parse(bundle: &Bundle, main: &str) -> Result<(Scene, Vec<Warning>), VrmlError> {
-    parse_with(bundle, main, Limits::default())
+    parse_in(bundle, main, &Gunzip::default())
 }
 
-/// [`parse`] with other limits.
-pub(crate) fn parse_with(bundle: &Bundle, main: &str, limits: Limits) -> Result<(Scene, Vec<Warning>), VrmlError> {
-    let mut ld = parse::Loader::new(bundle, limits);
+/// [`parse`], decompressing gzip files through `gz` (shared by the bundle's main files).
+pub fn parse_in(bundle: &Bundle, main: &str, gz: &Gunzip) -> Result<(Scene, Vec<Warning>), VrmlError> {
+    parse_with(bundle, main, Limits::default(), gz)
+}
+
+/// [`parse_in`] with other limits.
+pub(crate) fn parse_with(
+    bundle: &Bundle,
+    main: &str,
+    limits: Limits,
+    gz: &Gunzip,
+) -> Result<(Scene, Vec<Warning>), VrmlError> {
+    let mut ld = parse::Loader::new(bundle, limits, gz);
     let file = ld.load(main).map_err(|e| *e)?;
     let scene = {
         let mut ev = eval::Eval::new(&mut ld, main);
@@ -261,13 +388,20 @@ fn quoted_strings(text: &[u8]) -> Vec<String> {
 
 /// The VRML files of the bundle (by extension: `.wrl`, `.wrz`, `.vrml`, `.wrl.gz`; gzip or not)
 /// that no other VRML file of the bundle references (Inline, WWWInline, EXTERNPROTO: every
-/// quoted string naming a file with a VRML extension is resolved like a url), sorted.
-pub fn main_files(bundle: &Bundle) -> Vec<String> {
+/// quoted string naming a file with a VRML extension is resolved like a url), sorted. Every
+/// VRML file is read (gzip ones decompressed): a corrupt one, or gzip files together past the
+/// budget, is an error naming the file.
+pub fn main_files(bundle: &Bundle) -> Result<Vec<String>, VrmlError> {
+    main_files_in(bundle, &Gunzip::default())
+}
+
+/// [`main_files`], decompressing through `gz` (which then holds the texts for [`parse_in`]).
+pub fn main_files_in(bundle: &Bundle, gz: &Gunzip) -> Result<Vec<String>, VrmlError> {
     let vrml: Vec<&str> = bundle.paths().filter(|p| vrml_extension(p)).collect();
     let mut referenced = std::collections::HashSet::new();
     for &path in &vrml {
         let Some(raw) = bundle.get(path) else { continue };
-        let Ok(text) = parse::decode(raw) else { continue };
+        let text = gz.text(path, raw).map_err(|kind| VrmlError { file: path.to_string(), line: 0, column: 0, kind })?;
         for s in quoted_strings(&text) {
             let file_part = s.split('#').next().unwrap_or("");
             if !vrml_extension(file_part.trim()) {
@@ -282,7 +416,7 @@ pub fn main_files(bundle: &Bundle) -> Vec<String> {
     }
     let mut out: Vec<String> = vrml.into_iter().filter(|p| !referenced.contains(*p)).map(String::from).collect();
     out.sort();
-    out
+    Ok(out)
 }
 
 /// Whether `bytes` begin with a VRML header (`#VRML V1.0`, `#VRML V2.0`, `# VRML V2.0`,

@@ -1,9 +1,8 @@
 //! Bytes of one file to its [`ParsedFile`]: VRML 97 and VRML 1.0 parsers over one [`Lexer`],
 //! PROTO/EXTERNPROTO expansion, and the [`Loader`] that reads (and caches) bundle files.
 
-use std::borrow::Cow;
+use std::cell::Cell;
 use std::collections::{HashMap, HashSet};
-use std::io::Read;
 use std::rc::Rc;
 
 use nalgebra::Matrix4;
@@ -12,7 +11,7 @@ use super::ast::*;
 use super::lexer::{LexError, Lexer};
 use super::resolve::resolve_url;
 use super::xform;
-use super::{Limits, VrmlError, VrmlErrorKind, MAX_DEPTH, MAX_FILE_BYTES};
+use super::{Limits, VrmlError, VrmlErrorKind, MAX_DEPTH};
 use crate::pipeline::front::bundle::Bundle;
 use crate::pipeline::ir::Warning;
 
@@ -29,10 +28,16 @@ pub(super) struct Loader<'b> {
     ignored_warned: HashSet<Rc<str>>,
     parsed_nodes: u64,
     pub limits: Limits,
+    gz: &'b super::Gunzip,
 }
 
-/// Decompresses gzip data (decided by the magic bytes), with a size cap.
-pub(super) fn decode(bytes: &[u8]) -> Result<Cow<'_, [u8]>, VrmlErrorKind> {
+/// Decompresses gzip data (decided by the magic bytes), with a size cap (tests; the loader
+/// goes through its [`super::Gunzip`]).
+#[cfg(test)]
+pub(super) fn decode(bytes: &[u8]) -> Result<std::borrow::Cow<'_, [u8]>, VrmlErrorKind> {
+    use super::MAX_FILE_BYTES;
+    use std::borrow::Cow;
+    use std::io::Read;
     if !bytes.starts_with(&[0x1f, 0x8b]) {
         return Ok(Cow::Borrowed(bytes));
     }
@@ -65,7 +70,7 @@ pub(super) fn detect(bytes: &[u8]) -> (Version, usize) {
 }
 
 impl<'b> Loader<'b> {
-    pub fn new(bundle: &'b Bundle, limits: Limits) -> Self {
+    pub fn new(bundle: &'b Bundle, limits: Limits, gz: &'b super::Gunzip) -> Self {
         Loader {
             bundle,
             cache: HashMap::new(),
@@ -75,6 +80,7 @@ impl<'b> Loader<'b> {
             ignored_warned: HashSet::new(),
             parsed_nodes: 0,
             limits,
+            gz,
         }
     }
 
@@ -94,7 +100,7 @@ impl<'b> Loader<'b> {
         }
         let bundle = self.bundle;
         let raw = bundle.get(path).ok_or_else(|| Self::whole_file_error(path, VrmlErrorKind::NotFound))?;
-        let data = decode(raw).map_err(|k| Self::whole_file_error(path, k))?;
+        let data = self.gz.text(path, raw).map_err(|k| Self::whole_file_error(path, k))?;
         if u32::try_from(data.len()).is_err() {
             return Err(Self::whole_file_error(path, VrmlErrorKind::TooLarge { limit: u64::from(u32::MAX) }));
         }
@@ -132,6 +138,7 @@ fn parse_text(ld: &mut Loader<'_>, path: &str, text: &[u8]) -> R<ParsedFile> {
         protos: ProtoScope::default(),
         env: None,
         depth: 0,
+        costing: false,
     };
     let roots = p.top_level()?;
     Ok(ParsedFile { version, roots, protos: p.protos.clone() })
@@ -374,6 +381,9 @@ struct Parser<'a, 'b, 's> {
     protos: ProtoScope,
     env: Option<Env>,
     depth: u32,
+    /// Measuring a PROTO body's parse cost: nested instances are not expanded (their memoised
+    /// cost is counted instead), no warnings, no limit checks.
+    costing: bool,
 }
 
 impl<'s> Parser<'_, '_, 's> {
@@ -421,6 +431,9 @@ impl<'s> Parser<'_, '_, 's> {
     }
 
     fn warn(&mut self, code: &'static str, message: String, line: u32, col: u32) {
+        if self.costing {
+            return;
+        }
         let loc = format!("{}:{line}:{col}", self.file);
         self.ld.warnings.push(Warning::new(code, message, loc));
     }
@@ -434,8 +447,8 @@ impl<'s> Parser<'_, '_, 's> {
     }
 
     fn count_node(&mut self) -> R<()> {
-        self.ld.parsed_nodes += 1;
-        if self.ld.parsed_nodes > self.ld.limits.parsed_nodes {
+        self.ld.parsed_nodes = self.ld.parsed_nodes.saturating_add(1);
+        if !self.costing && self.ld.parsed_nodes > self.ld.limits.parsed_nodes {
             return Err(self.err(VrmlErrorKind::TooManyNodes { limit: self.ld.limits.parsed_nodes }));
         }
         Ok(())
@@ -444,6 +457,7 @@ impl<'s> Parser<'_, '_, 's> {
     /// The statements of a whole file.
     fn top_level(&mut self) -> R<Vec<NodeRef>> {
         let mut roots = Vec::new();
+        let mut total = Cost::default();
         loop {
             match self.lx.peek() {
                 None => return Ok(roots),
@@ -452,12 +466,37 @@ impl<'s> Parser<'_, '_, 's> {
                     self.lx.pos += 1;
                 }
                 _ => {
+                    let at = self.child_start();
                     if let Some(n) = self.statement()? {
+                        self.attach(&mut total, &n, at)?;
                         roots.push(n);
                     }
                 }
             }
         }
+    }
+
+    /// Where the next child node starts, and whether it is a USE (for [`Parser::attach`]).
+    fn child_start(&mut self) -> (u32, u32, bool) {
+        let (line, col) = self.here();
+        (line, col, self.lx.peek_word() == Some(b"USE"))
+    }
+
+    /// Adds child `n` (starting at `at`) to the expanded cost `total` of its parent's list,
+    /// refusing it when that passes a scene limit: a USE'd node costs its whole expansion.
+    fn attach(&self, total: &mut Cost, n: &Node, at: (u32, u32, bool)) -> R<()> {
+        if self.costing {
+            return Ok(());
+        }
+        if let Some((unit, projected, limit)) = self.ld.limits.exceeded(*total, n.cost) {
+            let what = match (&n.def, at.2) {
+                (Some(d), true) => format!("USE {d}"),
+                _ => describe_node(n),
+            };
+            return Err(self.err_at(at.0, at.1, VrmlErrorKind::Expansion { what, unit, projected, limit }));
+        }
+        *total = total.add(n.cost);
+        Ok(())
     }
 
     /// One statement: a node, a PROTO or EXTERNPROTO declaration, a ROUTE, or (X3D classic)
@@ -561,12 +600,14 @@ impl<'s> Parser<'_, '_, 's> {
         self.want(b'{', "\"{\" after a node type")?;
         self.count_node()?;
         let kind = if let Some(proto) = (self.version == Version::V2).then(|| self.protos.find(ty)).flatten() {
-            self.instance(&proto)?
+            self.instance(&proto, line, col)?
         } else {
             match known_type(self.version, ty) {
                 Some(Kt::Ignored) => {
-                    let file = self.file.clone();
-                    self.ld.warn_ignored(&file, &type_name, line, col);
+                    if !self.costing {
+                        let file = self.file.clone();
+                        self.ld.warn_ignored(&file, &type_name, line, col);
+                    }
                     self.skip_body()?;
                     Kind::IgnoredGeometry
                 }
@@ -584,15 +625,24 @@ impl<'s> Parser<'_, '_, 's> {
         if height > MAX_DEPTH {
             return Err(self.err_at(line, col, VrmlErrorKind::TooDeep { limit: MAX_DEPTH }));
         }
-        Ok(Rc::new(Node {
+        let node = Node {
             def: def.map(|d| Rc::from(String::from_utf8_lossy(d).as_ref())),
             type_name,
             file: self.file.clone(),
             line,
             col,
             height,
+            cost: kind.cost(),
             kind,
-        }))
+        };
+        if !self.costing {
+            // IS values are not attached through a node list: check the node as a whole.
+            if let Some((unit, projected, limit)) = self.ld.limits.exceeded(Cost::default(), node.cost) {
+                let what = describe_node(&node);
+                return Err(self.err_at(line, col, VrmlErrorKind::Expansion { what, unit, projected, limit }));
+            }
+        }
+        Ok(Rc::new(node))
     }
 
     /// The IS value named `name` in the current PROTO body (`None` outside a body or for an
@@ -625,6 +675,10 @@ impl<'s> Parser<'_, '_, 's> {
                         if let Some(v) = self.is_value()? {
                             vals.0.push((key, v));
                         }
+                    } else if key == "children" {
+                        // Every child of a grouping node is expanded: check them as they come.
+                        let v = self.node_value(true, true)?;
+                        vals.0.push((key, v));
                     } else {
                         let v = self.value(ty)?;
                         vals.0.push((key, v));
@@ -639,6 +693,7 @@ impl<'s> Parser<'_, '_, 's> {
     /// A VRML 1.0 group node's body: fields and child nodes, mixed.
     fn v1_group(&mut self, kt: Kt) -> R<Kind> {
         let mut children = Vec::new();
+        let mut total = Cost::default();
         let mut which = -1;
         loop {
             match self.lx.peek() {
@@ -652,7 +707,12 @@ impl<'s> Parser<'_, '_, 's> {
             let w = self.lx.peek_word();
             let is_node = matches!(w, Some(b"DEF" | b"USE")) || self.lx.peek_second_byte() == Some(b'{');
             if is_node {
+                let at = self.child_start();
                 if let Some(n) = self.node()? {
+                    // Switch and LOD expand one child: their node's cost is checked as a whole.
+                    if !matches!(kt, Kt::V1Switch | Kt::V1Lod) {
+                        self.attach(&mut total, &n, at)?;
+                    }
                     children.push(n);
                 }
                 continue;
@@ -713,21 +773,27 @@ impl<'s> Parser<'_, '_, 's> {
     /// A value of type `ty`.
     fn value(&mut self, ty: FieldType) -> R<Value> {
         match ty {
-            FieldType::SFNode | FieldType::MFNode => self.node_value(ty == FieldType::MFNode),
+            FieldType::SFNode | FieldType::MFNode => self.node_value(ty == FieldType::MFNode, false),
             _ => self.plain_value(ty),
         }
     }
 
-    /// An SFNode or MFNode value.
-    fn node_value(&mut self, multi: bool) -> R<Value> {
+    /// An SFNode or MFNode value; with `expanded` (a grouping node's children), the expansion
+    /// of the nodes read so far is checked at each one.
+    fn node_value(&mut self, multi: bool, expanded: bool) -> R<Value> {
         let mut v = Vec::new();
+        let mut total = Cost::default();
         if multi && self.lx.eat(b'[') {
             loop {
                 if self.lx.peek() == Some(b']') {
                     self.lx.pos += 1;
                     break;
                 }
+                let at = self.child_start();
                 if let Some(n) = self.node()? {
+                    if expanded {
+                        self.attach(&mut total, &n, at)?;
+                    }
                     v.push(n);
                 }
             }
@@ -988,7 +1054,7 @@ impl<'s> Parser<'_, '_, 's> {
             line,
             file: self.file.clone(),
         };
-        let def = ProtoDef { name, fields, body: Some(body), scope: self.protos.clone() };
+        let def = ProtoDef { name, fields, body: Some(body), scope: self.protos.clone(), parse_cost: Cell::new(None) };
         self.protos = self.protos.push(Rc::new(def));
         Ok(())
     }
@@ -1066,7 +1132,13 @@ impl<'s> Parser<'_, '_, 's> {
             }
         }
         let def = match found {
-            Some(ext) => ProtoDef { name, fields: ext.fields.clone(), body: ext.body.clone(), scope: ext.scope.clone() },
+            Some(ext) => ProtoDef {
+                name,
+                fields: ext.fields.clone(),
+                body: ext.body.clone(),
+                scope: ext.scope.clone(),
+                parse_cost: Cell::new(ext.parse_cost.get()),
+            },
             None => {
                 self.warn(
                     "vrml-externproto-unresolved",
@@ -1077,15 +1149,48 @@ impl<'s> Parser<'_, '_, 's> {
                     line,
                     col,
                 );
-                ProtoDef { name, fields, body: None, scope: ProtoScope::default() }
+                ProtoDef { name, fields, body: None, scope: ProtoScope::default(), parse_cost: Cell::new(None) }
             }
         };
         self.protos = self.protos.push(Rc::new(def));
         Ok(())
     }
 
-    /// A PROTO instance's fields (the `{` consumed), then its body parsed with them.
-    fn instance(&mut self, def: &Rc<ProtoDef>) -> R<Kind> {
+    /// The nodes one instance of `def` parses (memoised): its body's first node parsed once
+    /// without expanding the instances in it, whose own costs are added instead.
+    fn proto_cost(&mut self, def: &Rc<ProtoDef>) -> R<u64> {
+        if let Some(c) = def.parse_cost.get() {
+            return Ok(c);
+        }
+        let Some(body) = &def.body else {
+            def.parse_cost.set(Some(0));
+            return Ok(0);
+        };
+        let before = self.ld.parsed_nodes;
+        let text = body.text.clone();
+        let mut sub = Parser {
+            ld: &mut *self.ld,
+            lx: Lexer::new(&text, body.start, body.line, 0),
+            file: body.file.clone(),
+            version: Version::V2,
+            defs: HashMap::new(),
+            protos: def.scope.clone(),
+            env: None,
+            depth: self.depth,
+            costing: true,
+        };
+        let r = sub.first_node();
+        let cost = self.ld.parsed_nodes.saturating_sub(before);
+        self.ld.parsed_nodes = before;
+        r?;
+        def.parse_cost.set(Some(cost));
+        Ok(cost)
+    }
+
+    /// A PROTO instance's fields (the `{` consumed), then its body parsed with them. The
+    /// instance (at `line`:`col`) is refused before its body is parsed when the nodes it would
+    /// parse pass the limit.
+    fn instance(&mut self, def: &Rc<ProtoDef>, line: u32, col: u32) -> R<Kind> {
         let mut given: Vec<(usize, Value)> = Vec::new();
         loop {
             match self.lx.peek() {
@@ -1118,6 +1223,17 @@ impl<'s> Parser<'_, '_, 's> {
                 env.push((f.name.clone(), v));
             }
         }
+        let cost = self.proto_cost(def)?;
+        if self.costing {
+            self.ld.parsed_nodes = self.ld.parsed_nodes.saturating_add(cost);
+            return Ok(Kind::Instance(None));
+        }
+        let projected = self.ld.parsed_nodes.saturating_add(cost);
+        if projected > self.ld.limits.parsed_nodes {
+            let what = format!("PROTO instance {}", def.name);
+            let (unit, limit) = ("parsed nodes", self.ld.limits.parsed_nodes);
+            return Err(self.err_at(line, col, VrmlErrorKind::Expansion { what, unit, projected, limit }));
+        }
         let Some(body) = &def.body else {
             let children = env
                 .into_iter()
@@ -1136,6 +1252,7 @@ impl<'s> Parser<'_, '_, 's> {
             protos: def.scope.clone(),
             env: Some(Rc::new(env)),
             depth: self.depth,
+            costing: false,
         };
         let first = sub.first_node()?;
         Ok(Kind::Instance(first))
@@ -1156,6 +1273,14 @@ impl<'s> Parser<'_, '_, 's> {
                 return Ok(None);
             }
         }
+    }
+}
+
+/// How a node is named in messages: its type and DEF name.
+fn describe_node(n: &Node) -> String {
+    match &n.def {
+        Some(d) => format!("{} \"{d}\"", n.type_name),
+        None => n.type_name.to_string(),
     }
 }
 

@@ -737,7 +737,7 @@ fn gzip_by_magic_whatever_the_extension() {
     bad.truncate(main.len() / 2);
     let e = parse(&bundle_of(&[("main.wrl", &bad)]), "main.wrl").unwrap_err();
     assert!(matches!(e.kind, VrmlErrorKind::Gzip { .. }), "{e}");
-    assert_eq!(main_files(&b), ["main.wrl"]);
+    assert_eq!(main_files(&b).unwrap(), ["main.wrl"]);
 }
 
 #[test]
@@ -875,9 +875,13 @@ fn vrml1_def_use_top_level_shapes_and_inline_into_vrml97() {
 
 #[test]
 fn vrml1_face_set_counts_are_checked() {
+    let src = "#VRML V1.0 ascii\nSeparator { Coordinate3 { point [0 0 0, 1 0 0, 0 1 0] } DEF F FaceSet { numVertices [ 4 ] } }";
+    let e = error(src);
+    assert_eq!(e.to_string(), "main.wrl:2:57: FaceSet \"F\": coordIndex 3 is out of range (3 points)");
+    // A corrupt count is refused by its triangle count before an index list is built.
     let src = "#VRML V1.0 ascii\nSeparator { Coordinate3 { point [0 0 0, 1 0 0, 0 1 0] } DEF F FaceSet { numVertices [ 2000000000 ] } }";
     let e = error(src);
-    assert_eq!(e.to_string(), "main.wrl:2:57: FaceSet \"F\": coordIndex 1999999999 is out of range (3 points)");
+    assert_eq!(e.to_string(), "main.wrl:2:57: FaceSet \"F\" would expand to 1999999998 triangles (limit 100000000)");
     let e = error("#VRML V1.0 ascii\nSeparator { Coordinate3 { point [0 0 0] } FaceSet { startIndex -1 numVertices [ 3 ] } }");
     assert!(matches!(e.kind, VrmlErrorKind::IndexOutOfRange { index: -1, .. }), "{e}");
 }
@@ -893,7 +897,7 @@ fn main_files_skips_inlined_and_extern_proto_files() {
         ("c.wrz", gzip(b"Group { }").as_slice()),
         ("notes.txt", b"\"asm.wrl\"".as_slice()),
     ]);
-    assert_eq!(main_files(&b), ["asm.wrl", "parts/b.wrl", "v1.wrl"]);
+    assert_eq!(main_files(&b).unwrap(), ["asm.wrl", "parts/b.wrl", "v1.wrl"]);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -934,14 +938,16 @@ fn exponential_instancing_hits_a_limit() {
     let small = Limits { parsed_nodes: 100_000, scene_nodes: 10_000, shapes: 10_000, triangles: 50_000 };
     let run = |src: &str| {
         let b = bundle_of(&[("main.wrl", src.as_bytes())]);
-        parse_with(&b, "main.wrl", small).map(|_| ()).unwrap_err().kind
+        parse_with(&b, "main.wrl", small, &Gunzip::default()).map(|_| ()).unwrap_err().kind
     };
     // 2^40 scene nodes by DEF/USE doubling.
     let mut src = String::from("DEF N0 Group { }\n");
     for i in 1..40 {
         src += &format!("DEF N{i} Group {{ children [ USE N{p} USE N{p} ] }}\n", p = i - 1);
     }
-    assert_eq!(run(&src), VrmlErrorKind::TooManyNodes { limit: 10_000 });
+    // Every root is expanded: N0 .. N12 make 2^14 - 2 - 13 nodes.
+    let what = "Group \"N12\"".to_string();
+    assert_eq!(run(&src), VrmlErrorKind::Expansion { what, unit: "grouping nodes", projected: 16369, limit: 10_000 });
     // 10^9 PROTO expansions.
     let mut src = String::from("PROTO P0 [] { Group { } }\n");
     for i in 1..10 {
@@ -949,7 +955,9 @@ fn exponential_instancing_hits_a_limit() {
         src += &format!("PROTO P{i} [] {{ Group {{ children [ {kids} ] }} }}\n");
     }
     src += "P9 { }";
-    assert_eq!(run(&src), VrmlErrorKind::TooManyNodes { limit: 100_000 });
+    // Refused at the instance, before its body is parsed: P_i parses 1 + 10 (1 + P_{i-1}) nodes.
+    let what = "PROTO instance P9".to_string();
+    assert_eq!(run(&src), VrmlErrorKind::Expansion { what, unit: "parsed nodes", projected: 2_222_222_222, limit: 100_000 });
     // Triangles: one shape used 2^20 times.
     let mut src = format!("DEF N0 Group {{ children {TRI} }}\n");
     for i in 1..20 {
@@ -957,11 +965,144 @@ fn exponential_instancing_hits_a_limit() {
     }
     let small = Limits { scene_nodes: 10_000_000, shapes: 10_000_000, ..small };
     let b = bundle_of(&[("main.wrl", src.as_bytes())]);
-    let e = parse_with(&b, "main.wrl", small).map(|_| ()).unwrap_err();
-    assert_eq!(e.kind, VrmlErrorKind::TooManyTriangles { limit: 50_000 });
+    let e = parse_with(&b, "main.wrl", small, &Gunzip::default()).map(|_| ()).unwrap_err();
+    let what = "Group \"N15\"".to_string();
+    assert_eq!(e.kind, VrmlErrorKind::Expansion { what, unit: "triangles", projected: 65_535, limit: 50_000 });
     // The defaults are the documented constants.
     let d = Limits::default();
     assert_eq!((d.parsed_nodes, d.scene_nodes, d.shapes, d.triangles), (MAX_PARSED_NODES, MAX_SCENE_NODES, MAX_SHAPES, MAX_TRIANGLES));
+}
+
+/// The PROTO bomb: each PROTO instantiates the previous one twice (2^40 nodes from 2 KB).
+fn proto_bomb() -> String {
+    let mut src = String::from("#VRML V2.0 utf8\nPROTO P0 [] { Shape { geometry Box { } } }\n");
+    for i in 1..40 {
+        src += &format!("PROTO P{i} [] {{ Group {{ children [ P{p} {{ }} P{p} {{ }} ] }} }}\n", p = i - 1);
+    }
+    src + "P39 { }\n"
+}
+
+/// The DEF/USE bomb: each DEF'd group USEs the previous one twice, 30 levels over a Sphere.
+fn use_bomb() -> String {
+    let mut src = String::from("#VRML V2.0 utf8\nDEF N0 Group { children Shape { geometry Sphere { } } }\n");
+    for i in 1..31 {
+        src += &format!("DEF N{i} Group {{ children [ USE N{p} USE N{p} ] }}\n", p = i - 1);
+    }
+    src
+}
+
+/// Expansion bombs are refused where the expansion would pass a limit, with the projected
+/// count, before anything is expanded (parsed-node and scene counts stay at the file's size).
+#[test]
+fn expansion_bombs_are_refused_before_expanding() {
+    let src = proto_bomb();
+    assert!(src.len() < 2500, "{}", src.len());
+    // P0 parses 2 nodes, P_i 1 + 2 (1 + P_{i-1}) = 5 * 2^i - 3, plus the instance itself.
+    assert_eq!(
+        error(&src).to_string(),
+        "main.wrl:42:1: PROTO instance P39 would expand to 2748779069438 parsed nodes (limit 20000000)"
+    );
+    // Each level doubles the Sphere's 528 triangles; every root is expanded, so N0 .. N17
+    // together pass 10^8 at the root N17.
+    let src = use_bomb();
+    assert_eq!(
+        error(&src).to_string(),
+        "main.wrl:19:1: Group \"N17\" would expand to 138411504 triangles (limit 100000000)"
+    );
+    // The same chain kept out of the scene (an empty Switch): a node whose own expansion
+    // passes a limit is refused all the same, at the USE that passes it.
+    let body: String = use_bomb().lines().skip(1).collect::<Vec<_>>().join("\n");
+    let src = format!("#VRML V2.0 utf8\nSwitch {{ choice [\n{body}\n] }}\n");
+    let e = error(&src);
+    assert_eq!(e.to_string(), "main.wrl:21:36: USE N17 would expand to 138412032 triangles (limit 100000000)");
+    // Through IS: a PROTO whose body uses its MFNode field twice, nested 40 deep (linear to
+    // parse), is refused at the node whose expansion passes the limit.
+    let mut src = String::from("PROTO D [ field MFNode c [] ] { Group { children [ Group { children IS c } Group { children IS c } ] } }\n");
+    src += &"D { c ".repeat(40);
+    src += "Shape { geometry Box { } }";
+    src += &" }".repeat(40);
+    let e = error(&src);
+    assert!(matches!(e.kind, VrmlErrorKind::Expansion { unit: "grouping nodes" | "shapes" | "triangles", .. }), "{e}");
+    // Below the limits the same constructs parse, and the counts are exact.
+    let mut src = String::from("DEF N0 Group { children Shape { geometry Sphere { } } }\n");
+    for i in 1..4 {
+        src += &format!("DEF N{i} Group {{ children [ USE N{p} USE N{p} ] }}\n", p = i - 1);
+    }
+    let (s, _) = scene(&src);
+    assert_eq!(s.nodes.len(), 1 + 3 + 7 + 15);
+    assert_eq!(s.triangle_count(), 528 * (1 + 2 + 4 + 8));
+}
+
+/// An Inline's expansion is checked (from its parsed file) before it is expanded.
+#[test]
+fn inline_expansion_is_checked_before_expanding() {
+    let small = Limits { parsed_nodes: 100_000, scene_nodes: 1_000, shapes: 1_000, triangles: 1_000_000 };
+    let part = "Group { children [ ".to_string() + &"Group { } ".repeat(600) + "] }";
+    let main = "Group { children [ Inline { url \"p.wrl\" } Inline { url \"p.wrl\" } ] }";
+    let b = bundle_of(&[("main.wrl", main.as_bytes()), ("p.wrl", part.as_bytes())]);
+    let e = parse_with(&b, "main.wrl", small, &Gunzip::default()).map(|_| ()).unwrap_err();
+    assert_eq!(e.to_string(), "main.wrl:1:43: Inline \"p.wrl\" would expand to 1205 grouping nodes (limit 1000)");
+}
+
+/// `mib` MiB of zeros as concatenated gzip members (one member compressed once, repeated):
+/// a few hundred bytes per MiB.
+fn gzip_bomb(mib: usize) -> Vec<u8> {
+    gzip(&vec![0u8; 1 << 20]).repeat(mib)
+}
+
+/// A golden-test case folder as a bundle, with `extra` files added.
+fn case_bundle(case: &str, extra: &[(&str, Vec<u8>)]) -> Bundle {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/in").join(case);
+    let b = folder_bundle(&dir);
+    let mut files: Vec<(String, Vec<u8>)> = b.paths().map(|p| (p.to_string(), b.get(p).unwrap().to_vec())).collect();
+    files.extend(extra.iter().map(|(p, d)| (p.to_string(), d.clone())));
+    Bundle::from_files(case, files).unwrap()
+}
+
+/// gzip files share one budget for the bundle, and each is decompressed once.
+#[test]
+fn gzip_budget_per_bundle() {
+    let part = gzip(b"#VRML V2.0 utf8\nShape { geometry Box { } }");
+    let main = "#VRML V2.0 utf8\nInline { url \"part.wrz\" }";
+    let b = bundle_of(&[("main.wrl", main.as_bytes()), ("part.wrz", &part)]);
+    let gz = Gunzip::new(1 << 20);
+    assert_eq!(main_files_in(&b, &gz).unwrap(), ["main.wrl"]);
+    let used = gz.used();
+    assert!(used > 0);
+    let (s, _) = parse_in(&b, "main.wrl", &gz).unwrap();
+    assert_eq!(s.triangle_count(), 12);
+    assert_eq!(gz.used(), used, "decompressed again");
+    // Past the budget, with the budget and the file that passed it.
+    let b = bundle_of(&[("main.wrl", main.as_bytes()), ("part.wrz", &part), ("z/bomb.wrz", &gzip_bomb(3))]);
+    let e = main_files_in(&b, &Gunzip::new(2 << 20)).unwrap_err();
+    assert_eq!(e.to_string(), "z/bomb.wrz: the bundle's gzip VRML files decompress to more than 2097152 bytes together");
+    // Two files within the per-file cap but past the budget together.
+    let b = bundle_of(&[("a.wrz", &gzip_bomb(2)), ("b.wrz", &gzip_bomb(2))]);
+    let e = main_files_in(&b, &Gunzip::new(3 << 20)).unwrap_err();
+    assert_eq!((e.file.as_str(), e.kind), ("b.wrz", VrmlErrorKind::GzipBudget { limit: 3 << 20 }));
+}
+
+/// A bundle whose bodies all have STL meshes never reads its VRML: a .wrz that is not gzip
+/// at all (decompressing it would fail) does not stop the conversion.
+#[test]
+fn vrml_is_not_read_when_every_body_has_a_mesh() {
+    let mut bad = vec![0x1f, 0x8b];
+    bad.extend(b"not gzip at all".repeat(1000));
+    let b = case_bundle("pendulum", &[("big.wrz", bad.clone())]);
+    crate::pipeline::analyse(&b, &Default::default()).unwrap_or_else(|e| panic!("{e}"));
+    // A bundle that needs its VRML reads it, and the bad file is an error naming it.
+    let b = case_bundle("vrml_gzip", &[("big.wrz", bad)]);
+    let e = crate::pipeline::analyse(&b, &Default::default()).err().unwrap();
+    assert!(e.to_string().starts_with("big.wrz: corrupt gzip data"), "{e}");
+}
+
+/// A bundle that needs its VRML and whose gzip files decompress past the budget is refused.
+#[test]
+fn gzip_past_the_budget_is_refused() {
+    let mib = (MAX_GZIP_BYTES >> 20) as usize + 1;
+    let b = case_bundle("vrml_gzip", &[("big.wrz", gzip_bomb(mib))]);
+    let e = crate::pipeline::analyse(&b, &Default::default()).err().unwrap();
+    assert_eq!(e.to_string(), "big.wrz: the bundle's gzip VRML files decompress to more than 268435456 bytes together");
 }
 
 /// A deterministic pseudo-random sequence.
@@ -1089,18 +1230,18 @@ fn fixture_set(name: &str) -> Option<(PathBuf, Bundle)> {
 #[test]
 fn fixture_main_files() {
     let Some((_, b)) = fixture_set("choreonoid+choreonoid") else { return };
-    let mains = main_files(&b);
+    let mains = main_files(&b).unwrap();
     assert!(mains.contains(&"PA10/PA10.wrl".to_string()));
     assert!(mains.contains(&"GR001/GR001.wrl".to_string()));
     assert!(mains.contains(&"WRS2018/resource/GrayCarDoorFR-Body.wrl".to_string()));
     assert!(!mains.iter().any(|m| m.contains("/parts/") || m.contains("BodySurface")), "{mains:?}");
     let Some((_, b)) = fixture_set("usnistgov+engineering-design-models") else { return };
     assert_eq!(
-        main_files(&b),
+        main_files(&b).unwrap(),
         ["PTC_V18_boombox/CHAS_PROC_after/step001/chassis_process_a.wrl", "PTC_V18_boombox/CHAS_PROC_after/vrml/motor_shaft__p.wrl"]
     );
     let Some((_, b)) = fixture_set("jumpjack+VRMLviewer") else { return };
-    assert_eq!(main_files(&b), ["lander2.wrl", "pi1246924519_007006045l.wrz", "terrain_full_80k.wrl"]);
+    assert_eq!(main_files(&b).unwrap(), ["lander2.wrl", "pi1246924519_007006045l.wrz", "terrain_full_80k.wrl"]);
 }
 
 /// The OpenHRP PA10: Joint PROTO instances through IS bindings, headerless part files.
