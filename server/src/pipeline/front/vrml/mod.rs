@@ -121,7 +121,7 @@ use crate::pipeline::ir::Warning;
 /// Nesting depth limit (nodes in the text, USE chains, PROTO bodies and Inlines together).
 pub const MAX_DEPTH: u32 = 200;
 /// Limit on nodes parsed, PROTO bodies counted once per instance.
-pub const MAX_PARSED_NODES: u64 = 20_000_000;
+pub const MAX_PARSED_NODES: u64 = 2_000_000;
 /// Limit on grouping nodes in the scene.
 pub const MAX_SCENE_NODES: usize = 2_000_000;
 /// Limit on shapes in the scene.

@@ -1000,7 +1000,7 @@ fn expansion_bombs_are_refused_before_expanding() {
     // P0 parses 2 nodes, P_i 1 + 2 (1 + P_{i-1}) = 5 * 2^i - 3, plus the instance itself.
     assert_eq!(
         error(&src).to_string(),
-        "main.wrl:42:1: PROTO instance P39 would expand to 2748779069438 parsed nodes (limit 20000000)"
+        "main.wrl:42:1: PROTO instance P39 would expand to 2748779069438 parsed nodes (limit 2000000)"
     );
     // Each level doubles the Sphere's 528 triangles; every root is expanded, so N0 .. N17
     // together pass 10^8 at the root N17.
