@@ -345,3 +345,17 @@ fn check_massless_leaves(model: &Model, analysis: &Analysis, warnings: &mut Vec<
         }
     }
 }
+
+#[cfg(test)]
+mod readable_tests {
+    use super::readable;
+
+    #[test]
+    fn numbers_in_messages_are_short() {
+        assert_eq!(readable(12.5), "12.5");
+        assert_eq!(readable(0.0), "0");
+        assert_eq!(readable(5e-324), "4.940656e-324");
+        assert_eq!(readable(-2.5e9), "-2.500000e9");
+        assert_eq!(readable(0.123456789), "0.1234568");
+    }
+}
