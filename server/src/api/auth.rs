@@ -41,15 +41,16 @@ pub async fn guard(State(Guard { state, hosts }): State<Guard>, req: Request, ne
         Some(token) => crate::store::tokens::verify(&state.store, token).await?,
         None => false,
     };
+    // Without a token where one is required, the answer is 401 (what the client lacks), before
+    // the origin and client-header rules: those guard requests that would otherwise be served.
+    if !valid && state.settings.requires_auth() && !is_public(req.method(), req.uri().path()) {
+        return Err(ApiError::Unauthorized);
+    }
     if guard::changes_state(req.method()) && !valid {
         hosts.check_origin(req.headers(), &host).map_err(ApiError::CrossOrigin)?;
         guard::check_client(req.headers()).map_err(ApiError::ClientHeaderRequired)?;
     }
-    if valid || !state.settings.requires_auth() || is_public(req.method(), req.uri().path()) {
-        Ok(next.run(req).await)
-    } else {
-        Err(ApiError::Unauthorized)
-    }
+    Ok(next.run(req).await)
 }
 
 #[cfg(test)]
