@@ -1,8 +1,9 @@
-//! The request guard: the host, origin and client-header rules of [`super::guard`] (safe by
-//! default on loopback), then bearer-token authentication. When the service listens beyond
-//! loopback (or with `--require-auth`), every request needs `Authorization: Bearer <token>`
+//! The request guard: the host rule of [`super::guard`], then bearer-token authentication, then
+//! its origin and client-header rules (safe by default on loopback). When the service listens
+//! beyond loopback (or with `--require-auth`), every request needs `Authorization: Bearer <token>`
 //! (scheme in any case; an expired token is refused) except the health check, the OpenAPI
-//! document, the browser UI's static files and reads of the motor library.
+//! document, the browser UI's static files and reads of the motor library; without one it is a
+//! 401, whatever else it lacks.
 
 use axum::extract::{Request, State};
 use axum::http::{header, HeaderMap, Method};
