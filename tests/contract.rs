@@ -6,7 +6,8 @@
 //! through path parameters from a generated `schemathesis.toml`.
 //!
 //! Bounded: a few examples per operation and a fixed seed (`CAD2MO_CONTRACT_EXAMPLES` and
-//! `CAD2MO_CONTRACT_SEED` override them). Skips with a NOTICE when `schemathesis` is not on PATH, unless
+//! `CAD2MO_CONTRACT_SEED` override them). Skips with a NOTICE when schemathesis is not installed
+//! (neither the `schemathesis` script nor `python3 -m schemathesis.cli` runs), unless
 //! `CAD2MO_REQUIRE_TOOLS=1`.
 
 use std::process::Command;
@@ -19,8 +20,12 @@ use serde_json::{json, Value};
 /// Examples per operation and phase.
 const EXAMPLES: u32 = 15;
 
-fn schemathesis_available() -> bool {
-    Command::new("schemathesis").arg("--version").output().is_ok_and(|o| o.status.success())
+/// The schemathesis command: its script on PATH, else the module of `python3` (pip may install
+/// the script where PATH does not look).
+fn schemathesis() -> Option<Vec<&'static str>> {
+    [vec!["schemathesis"], vec!["python3", "-m", "schemathesis.cli"]].into_iter().find(|cmd| {
+        Command::new(cmd[0]).args(&cmd[1..]).arg("--version").output().is_ok_and(|o| o.status.success())
+    })
 }
 
 /// A client that sends the token (and nothing else the fuzzer would not send).
@@ -59,11 +64,11 @@ fn toml_str(s: &str) -> String {
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn the_service_keeps_its_contract() {
-    if !schemathesis_available() {
+    let Some(schemathesis) = schemathesis() else {
         assert!(!tools_required(), "schemathesis is required (CAD2MO_REQUIRE_TOOLS=1); pip install 'schemathesis>=4,<5'");
-        println!("NOTICE: schemathesis not on PATH; contract fuzzing skipped (pip install 'schemathesis>=4,<5')");
+        println!("NOTICE: schemathesis not installed; contract fuzzing skipped (pip install 'schemathesis>=4,<5')");
         return;
-    }
+    };
     // Tokens required, as beyond loopback. Upload checks never wait long enough to matter: the
     // fuzzer sends one request at a time, and the 503 it could get is in the contract anyway.
     let mut app = TestApp::spawn_with(|s| {
@@ -175,7 +180,8 @@ async fn the_service_keeps_its_contract() {
     let auth = format!("Authorization: Bearer {token}");
     let started = Instant::now();
     let out = tokio::task::spawn_blocking(move || {
-        Command::new("schemathesis")
+        Command::new(schemathesis[0])
+            .args(&schemathesis[1..])
             .arg("--config-file")
             .arg(&config_path)
             .args(["--no-color", "run", &spec_url, "-H", &auth, "--checks", "all", "--no-shrink"])
