@@ -40,6 +40,9 @@ async fn tokens_guard_models_and_writes_when_auth_is_required() {
     assert_eq!(app.get("/api/library/classes").await.status(), 200);
     let r = app.client.post(app.url("/api/library/instances")).json(&serde_json::json!({})).send().await.expect("post");
     assert_eq!(r.status(), 401);
+    // Without a token, 401 comes first: not the 403 for a missing X-Requested-With.
+    let r = reqwest::Client::new().delete(app.url("/api/models/x")).send().await.expect("delete");
+    assert_eq!(problem_of(r, 401).await["type"], "/problems/unauthorized");
     // A wrong token is refused; a created one is accepted.
     let r = app.client.get(app.url("/api/models")).bearer_auth("c2m_wrong").send().await.expect("get");
     assert_eq!(r.status(), 401);

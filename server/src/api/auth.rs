@@ -1,8 +1,9 @@
-//! The request guard: the host, origin and client-header rules of [`super::guard`] (safe by
-//! default on loopback), then bearer-token authentication. When the service listens beyond
-//! loopback (or with `--require-auth`), every request needs `Authorization: Bearer <token>`
+//! The request guard: the host rule of [`super::guard`], then bearer-token authentication, then
+//! its origin and client-header rules (safe by default on loopback). When the service listens
+//! beyond loopback (or with `--require-auth`), every request needs `Authorization: Bearer <token>`
 //! (scheme in any case; an expired token is refused) except the health check, the OpenAPI
-//! document, the browser UI's static files and reads of the motor library.
+//! document, the browser UI's static files and reads of the motor library; without one it is a
+//! 401, whatever else it lacks.
 
 use axum::extract::{Request, State};
 use axum::http::{header, HeaderMap, Method};
@@ -41,15 +42,16 @@ pub async fn guard(State(Guard { state, hosts }): State<Guard>, req: Request, ne
         Some(token) => crate::store::tokens::verify(&state.store, token).await?,
         None => false,
     };
+    // Without a token where one is required, the answer is 401 (what the client lacks), before
+    // the origin and client-header rules: those guard requests that would otherwise be served.
+    if !valid && state.settings.requires_auth() && !is_public(req.method(), req.uri().path()) {
+        return Err(ApiError::Unauthorized);
+    }
     if guard::changes_state(req.method()) && !valid {
         hosts.check_origin(req.headers(), &host).map_err(ApiError::CrossOrigin)?;
         guard::check_client(req.headers()).map_err(ApiError::ClientHeaderRequired)?;
     }
-    if valid || !state.settings.requires_auth() || is_public(req.method(), req.uri().path()) {
-        Ok(next.run(req).await)
-    } else {
-        Err(ApiError::Unauthorized)
-    }
+    Ok(next.run(req).await)
 }
 
 #[cfg(test)]

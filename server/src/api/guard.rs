@@ -18,6 +18,7 @@
 //!    a CORS preflight, which this service never grants. The browser UI sends the header.
 //!
 //! Rules 2 and 3 do not apply to requests with a valid bearer token (a page cannot have it).
+//! Where tokens are required, a request without one is refused (401) before rules 2 and 3.
 
 use std::net::{IpAddr, SocketAddr};
 

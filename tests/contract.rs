@@ -1,0 +1,202 @@
+//! The HTTP contract, fuzzed: schemathesis (PyPI) generates requests from `openapi.yaml` against
+//! the real service and fails on any 5xx or any difference between the contract and the server
+//! (status codes, content types, headers, response schemas, valid requests refused, invalid ones
+//! accepted, auth ignored). The service requires tokens (as beyond loopback), and real resources
+//! exist (a converted model with two versions, a drive, library items) so the fuzzer reaches them
+//! through path parameters from a generated `schemathesis.toml`.
+//!
+//! Bounded: a few examples per operation and a fixed seed (`CAD2MO_CONTRACT_EXAMPLES` and
+//! `CAD2MO_CONTRACT_SEED` override them). Skips with a NOTICE when schemathesis is not installed
+//! (neither the `schemathesis` script nor `python3 -m schemathesis.cli` runs), unless
+//! `CAD2MO_REQUIRE_TOOLS=1`.
+
+use std::process::Command;
+use std::time::Instant;
+
+use cad2mo_tests::app::{zip_dir, TestApp};
+use cad2mo_tests::common::{tools_required, workspace_root};
+use serde_json::{json, Value};
+
+/// Examples per operation and phase.
+const EXAMPLES: u32 = 15;
+
+/// The schemathesis command: its script on PATH, else the module of `python3` (pip may install
+/// the script where PATH does not look).
+fn schemathesis() -> Option<Vec<&'static str>> {
+    [vec!["schemathesis"], vec!["python3", "-m", "schemathesis.cli"]].into_iter().find(|cmd| {
+        Command::new(cmd[0]).args(&cmd[1..]).arg("--version").output().is_ok_and(|o| o.status.success())
+    })
+}
+
+/// A client that sends the token (and nothing else the fuzzer would not send).
+fn token_client(token: &str) -> reqwest::Client {
+    let mut headers = reqwest::header::HeaderMap::new();
+    let value = reqwest::header::HeaderValue::from_str(&format!("Bearer {token}")).expect("header");
+    headers.insert(reqwest::header::AUTHORIZATION, value);
+    reqwest::Client::builder().default_headers(headers).build().expect("client")
+}
+
+async fn json_of(r: reqwest::Response, status: u16) -> Value {
+    let got = r.status().as_u16();
+    let text = r.text().await.expect("body");
+    assert_eq!(got, status, "{text}");
+    serde_json::from_str(&text).expect("json")
+}
+
+/// The id of the first seeded instance of `class_path`.
+async fn seeded_instance(app: &TestApp, class_path: &str) -> String {
+    let classes = json_of(app.get("/api/library/classes").await, 200).await;
+    let class = classes.as_array().expect("classes").iter().find(|c| c["modelica_class"] == class_path).expect("class");
+    let list = json_of(app.get(&format!("/api/library/instances?class_id={}", class["id"].as_str().expect("id"))).await, 200).await;
+    list[0]["id"].as_str().expect("a seeded instance").to_string()
+}
+
+/// An operation of the spec, its parameters (`path.id`, `body.class_id`, ...) and, when a valid
+/// request may still be refused with 422 for a reason JSON Schema cannot state, that reason.
+type Operation<'a> = (&'static str, Vec<(&'static str, &'a String)>, &'static str);
+
+const CLASS_RULES: &str = "min <= max, defaults within the limits, unique parameter names";
+
+/// TOML basic string.
+fn toml_str(s: &str) -> String {
+    serde_json::to_string(s).expect("string")
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn the_service_keeps_its_contract() {
+    let Some(schemathesis) = schemathesis() else {
+        assert!(!tools_required(), "schemathesis is required (CAD2MO_REQUIRE_TOOLS=1); pip install 'schemathesis>=4,<5'");
+        println!("NOTICE: schemathesis not installed; contract fuzzing skipped (pip install 'schemathesis>=4,<5')");
+        return;
+    };
+    // Tokens required, as beyond loopback. Upload checks never wait long enough to matter: the
+    // fuzzer sends one request at a time, and the 503 it could get is in the contract anyway.
+    let mut app = TestApp::spawn_with(|s| {
+        s.force_auth = true;
+        s.max_checks = 4;
+    })
+    .await;
+    let url = format!("sqlite://{}?mode=rwc", app.data_dir().join("cad2mo.db").display());
+    let store = cad2mo::store::Store::open(&url).await.expect("store");
+    let token = cad2mo::store::tokens::create(&store, "contract", None).await.expect("token");
+    app.client = token_client(&token);
+
+    // A converted model with two versions and a drive; a model to delete and one to delete a version of.
+    let bundle = zip_dir(&workspace_root().join("tests/in/rotated_frames"));
+    let (model, _, job) = app.upload_model_ok(bundle.clone(), &[]).await;
+    assert_eq!(app.wait_for_job(&job).await["status"], "succeeded");
+    let (_, version, job2) = app.upload_version_ok(&model, bundle.clone(), &[]).await;
+    assert_eq!(app.wait_for_job(&job2).await["status"], "succeeded");
+    let (spare_model, _, spare_job) = app.upload_model_ok(bundle.clone(), &[("name", "spare")]).await;
+    let (_, spare_version, spare_job2) = app.upload_version_ok(&spare_model, bundle.clone(), &[]).await;
+    assert_eq!(spare_version, version);
+    let (doomed_model, _, doomed_job) = app.upload_model_ok(bundle.clone(), &[("name", "doomed")]).await;
+    for job in [spare_job, spare_job2, doomed_job] {
+        app.wait_for_job(&job).await;
+    }
+    let drives = json_of(app.get(&format!("/api/models/{model}/drives")).await, 200).await;
+    let joint = drives["joints"]
+        .as_array()
+        .expect("joints")
+        .iter()
+        .find(|j| j["kind"] == "revolute")
+        .and_then(|j| j["name"].as_str())
+        .expect("a revolute joint")
+        .to_string();
+    let motor = seeded_instance(&app, "cad2mo.Drives.Motors.DCPermanentMagnet").await;
+    let gear = seeded_instance(&app, "Modelica.Mechanics.Rotational.Components.IdealGear").await;
+    let controller = seeded_instance(&app, "cad2mo.Drives.Controllers.CascadePPI").await;
+    let drive = json!({"motor_instance": motor, "gear_instance": gear, "controller_instance": controller});
+    let r = app.client.put(app.url(&format!("/api/models/{model}/drives/{joint}"))).json(&drive).send().await.expect("put");
+    json_of(r, 200).await;
+
+    // Library items: a class with an instance to read and change, and spares to delete.
+    let class_body = json!({
+        "name": "Contract gear", "domain": "gear", "modelica_class": "Modelica.Mechanics.Rotational.Components.IdealGear",
+        "parameters": [{"name": "ratio", "type": "Real", "min": 1, "max": 1000, "editable": true, "default": 10}]
+    });
+    let r = app.client.post(app.url("/api/library/classes")).json(&class_body).send().await.expect("post");
+    let class = json_of(r, 201).await["id"].as_str().expect("id").to_string();
+    let mut spare_class_body = class_body.clone();
+    spare_class_body["name"] = json!("Contract spare");
+    let r = app.client.post(app.url("/api/library/classes")).json(&spare_class_body).send().await.expect("post");
+    let spare_class = json_of(r, 201).await["id"].as_str().expect("id").to_string();
+    let mut instances = Vec::new();
+    for name in ["Contract instance", "Contract spare instance"] {
+        let body = json!({"class_id": class, "name": name, "values": {"ratio": 50}});
+        let r = app.client.post(app.url("/api/library/instances")).json(&body).send().await.expect("post");
+        instances.push(json_of(r, 201).await["id"].as_str().expect("id").to_string());
+    }
+
+    // Parameters of real resources (deletions get the spares), and the operations whose valid
+    // requests depend on more than JSON Schema can say.
+    // Bundles are sent as application/zip, which schemathesis sends like application/octet-stream.
+    let dir = tempfile::tempdir().expect("tempdir");
+    let hooks = dir.path().join("hooks.py");
+    std::fs::write(&hooks, "import schemathesis\n\nschemathesis.serializer.alias(\"application/zip\", \"application/octet-stream\")\n")
+        .expect("write hooks");
+    let mut config = format!("# Generated by tests/contract.rs\nhooks = {}\n\n[parameters]\n", toml_str(&hooks.to_string_lossy()));
+    for (k, v) in [("path.model_id", &model), ("path.joint", &joint), ("path.job_id", &job)] {
+        config += &format!("{} = {}\n", toml_str(k), toml_str(v));
+    }
+    config += &format!("\"path.version\" = {version}\n\"query.from\" = 1\n\"query.to\" = {version}\n\n");
+    let operations: [Operation; 14] = [
+        ("deleteModel", vec![("path.model_id", &doomed_model)], ""),
+        ("deleteVersion", vec![("path.model_id", &spare_model)], ""),
+        ("getLibraryClass", vec![("path.id", &class)], ""),
+        ("updateLibraryClass", vec![("path.id", &class)], CLASS_RULES),
+        ("deleteLibraryClass", vec![("path.id", &spare_class)], ""),
+        ("getLibraryInstance", vec![("path.id", &instances[0])], ""),
+        ("updateLibraryInstance", vec![("path.id", &instances[0])], "values must fit the class's parameters"),
+        ("deleteLibraryInstance", vec![("path.id", &instances[1])], ""),
+        ("createLibraryClass", vec![], CLASS_RULES),
+        ("createLibraryInstance", vec![("body.class_id", &class)], "values must fit the class's parameters"),
+        (
+            "putDrive",
+            vec![("body.motor_instance", &motor), ("body.gear_instance", &gear), ("body.controller_instance", &controller)],
+            "overrides must fit the classes, the reference's times must not decrease",
+        ),
+        ("createModel", vec![], "the bundle must be a CAD export zip"),
+        ("createVersion", vec![], "the bundle must be a CAD export zip"),
+        ("importLibrary", vec![], "the body must be a library XML file (docs/library-xml.md)"),
+    ];
+    for (id, params, semantic) in operations {
+        config += &format!("[[operations]]\ninclude-operation-id = {}\n", toml_str(id));
+        let list: Vec<String> = params.iter().map(|(k, v)| format!("{} = {}", toml_str(k), toml_str(v))).collect();
+        config += &format!("parameters = {{ {} }}\n", list.join(", "));
+        if !semantic.is_empty() {
+            // Its 422 (documented) says why; every other refusal of a valid request still fails.
+            config += &format!("# 422 for valid JSON/multipart/XML: {semantic}\n[operations.checks.positive_data_acceptance]\n");
+            config += "expected-statuses = [\"2xx\", \"401\", \"403\", \"404\", \"409\", \"422\", \"503\"]\n";
+        }
+        config += "\n";
+    }
+    let config_path = dir.path().join("schemathesis.toml");
+    std::fs::write(&config_path, &config).expect("write config");
+
+    let examples = std::env::var("CAD2MO_CONTRACT_EXAMPLES").ok().and_then(|v| v.parse().ok()).unwrap_or(EXAMPLES);
+    let seed = std::env::var("CAD2MO_CONTRACT_SEED").ok().and_then(|v| v.parse::<u64>().ok()).unwrap_or(1);
+    let spec_url = app.url("/openapi.yaml");
+    let auth = format!("Authorization: Bearer {token}");
+    let started = Instant::now();
+    let out = tokio::task::spawn_blocking(move || {
+        Command::new(schemathesis[0])
+            .args(&schemathesis[1..])
+            .arg("--config-file")
+            .arg(&config_path)
+            .args(["--no-color", "run", &spec_url, "-H", &auth, "--checks", "all", "--no-shrink"])
+            .args(["--seed", &seed.to_string()])
+            .args(["-n", &examples.to_string()])
+            .args(["--generation-database", "none", "--report-dir"])
+            .arg(dir.path().join("report"))
+            .current_dir(dir.path())
+            .output()
+            .expect("run schemathesis")
+    })
+    .await
+    .expect("join");
+    let text = format!("{}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr)).replace(&token, "TOKEN");
+    println!("{text}");
+    println!("schemathesis took {:.1} s", started.elapsed().as_secs_f64());
+    assert!(out.status.success(), "schemathesis found differences between openapi.yaml and the service:\n{text}\nconfig:\n{config}");
+}
