@@ -34,6 +34,15 @@ fn bench(c: &mut Criterion) {
             let bundle = Bundle::from_files("ergocub", [("SIM_ERGOCUB_1-0.xml".to_string(), bytes)]).expect("bundle");
             g.bench_function("ergocub_67_bodies", |b| b.iter(|| pipeline::convert(&bundle, &Options::default()).expect("converts")));
         }
+        // Closed loops: 4 loops (3 rigid, 1 immobile leg cut by Constraints.Spherical).
+        let legs = fx.join("xml/robotology+simmechanics-to-urdf/a83a61f/LEGS_MECHANISM.xml");
+        if let Ok(bytes) = std::fs::read(&legs) {
+            g.throughput(Throughput::Bytes(bytes.len() as u64));
+            let bundle = Bundle::from_files("legs", [("LEGS_MECHANISM.xml".to_string(), bytes)]).expect("bundle");
+            g.bench_function("legs_mechanism_29_bodies_4_loops", |b| {
+                b.iter(|| pipeline::convert(&bundle, &Options::default()).expect("converts"))
+            });
+        }
         let hand = fx.join("stl/robotology+icub-models-generator/25e4033/left_hand_mk3");
         if hand.is_dir() {
             let bundle = bundle_of_dir(&hand);

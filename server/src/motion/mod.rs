@@ -361,9 +361,9 @@ mod tests {
 
     #[test]
     fn bad_limits_are_named() {
-        let e = Ptp2::new(&[0.0, 0.0], &[1.0, 1.0], &[1.0, 0.0], &[1.0, 1.0]).err().expect("refused");
+        let e = Ptp2::new(&[0.0, 0.0], &[1.0, 1.0], &[1.0, 0.0], &[1.0, 1.0]).expect_err("refused");
         assert_eq!(e.to_string(), "axis 1: speed limit must be a finite number greater than 0 (is 0)");
-        let e = Ptp2::new(&[0.0], &[1.0, 1.0], &[1.0], &[1.0]).err().expect("refused");
+        let e = Ptp2::new(&[0.0], &[1.0, 1.0], &[1.0], &[1.0]).expect_err("refused");
         assert!(e.to_string().contains("end position has 2 values for 1 axes"), "{e}");
     }
 }

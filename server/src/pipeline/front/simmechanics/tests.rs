@@ -1366,7 +1366,7 @@ fn error_paths_are_bounded() {
         "N".repeat(100_000),
         (0..200).map(|i| format!("<x{i}>")).collect::<String>()
     );
-    let e = super::parse("deep.xml", xml.as_bytes()).err().expect("refused");
+    let e = super::parse("deep.xml", xml.as_bytes()).expect_err("refused");
     let text = e.to_string();
     assert!(text.len() < 800, "{} bytes: {text}", text.len());
     assert!(text.contains("x199") && text.contains("levels") && text.contains("Body \"NNN"), "{text}");
