@@ -100,7 +100,7 @@ pub fn serial_arm_xml(n: usize) -> String {
             vec!["0,0,1", "0,1,0", "0,1,0", "1,0,0", "0,1,0", "1,0,0"],
         )
     } else {
-        let p = (0..n).map(|i| [0.0, 0.0, 340.0 * ((i + 1) / 2) as f64]).collect();
+        let p = (0..n).map(|i| [0.0, 0.0, 340.0 * i.div_ceil(2) as f64]).collect();
         let a = (0..n).map(|i| if i % 2 == 0 { "0,0,1" } else { "0,1,0" }).collect();
         (p, a)
     };
