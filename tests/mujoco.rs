@@ -4,6 +4,8 @@
 //! `|tau - tau_mujoco| <= 1e-9 * |tau_mujoco| + 1e-9 * max_k |tau_mujoco_k| + 1e-12`.
 //! The second term is the absolute floor: torques that nearly cancel (a joint carrying little
 //! of a large load) keep only the digits of the sample's largest torque.
+//! Body poses (MuJoCo's `xpos`/`xquat` against our FK of each CS1 frame) must agree to 1e-12 m
+//! and 1e-12 rad: MuJoCo's `qpos` is the Modelica coordinate.
 //! Skips with a NOTICE when mujoco cannot be imported, unless CAD2MO_REQUIRE_TOOLS=1.
 
 use std::path::Path;
@@ -57,6 +59,7 @@ fn compare(label: &str, m: &Mechanism, mjcf: &str, samples: usize, seed: u64) ->
     let mut ws = m.workspace();
     let n = m.dof();
     let mut ours = Vec::new();
+    let mut qs = Vec::new();
     let mut spec = Vec::new();
     for _ in 0..samples {
         let q: Vec<f64> = m.q0().iter().map(|q| q + rng.range(-1.0, 1.0)).collect();
@@ -69,6 +72,7 @@ fn compare(label: &str, m: &Mechanism, mjcf: &str, samples: usize, seed: u64) ->
         };
         spec.push(serde_json::json!({"q": by_name(&q), "qd": by_name(&qd), "qdd": by_name(&qdd)}));
         ours.push(tau);
+        qs.push(q);
     }
     let input = dir.path().join("in.json");
     let output = dir.path().join("out.json");
@@ -92,6 +96,22 @@ fn compare(label: &str, m: &Mechanism, mjcf: &str, samples: usize, seed: u64) ->
     let result: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&output).expect("read out")).expect("json");
     assert_eq!(result["nv"].as_u64(), Some(n as u64), "{label}: MuJoCo has a different number of dofs");
     let mut worst_rel = 0.0f64;
+    for (s, q) in qs.iter().enumerate() {
+        let k = m.forward(q).expect("fk");
+        for (b, name) in m.body_names().iter().enumerate() {
+            let (Some(p), Some(r)) = (result["xpos"][s][name].as_array(), result["xquat"][s][name].as_array()) else {
+                return Some(Err(format!("{label}: body {name} not in the MJCF model")));
+            };
+            let f = |v: &serde_json::Value| v.as_f64().unwrap_or(f64::NAN);
+            let pose = m.body_pose(&k, cad2mo::pipeline::ir::BodyId(b as u32)).expect("pose");
+            let dp = (pose.translation.vector - Vector3::new(f(&p[0]), f(&p[1]), f(&p[2]))).norm();
+            let theirs = nalgebra::UnitQuaternion::from_quaternion(nalgebra::Quaternion::new(f(&r[0]), f(&r[1]), f(&r[2]), f(&r[3])));
+            let dr = pose.rotation.angle_to(&theirs);
+            if !(dp < 1e-12 && dr < 1e-12) {
+                return Some(Err(format!("{label}: sample {s}, body {name}: MuJoCo pose off by {dp:e} m, {dr:e} rad")));
+            }
+        }
+    }
     for (s, tau) in ours.iter().enumerate() {
         let theirs: Vec<f64> = m.coordinates().iter().map(|c| result["tau"][s][&c.name].as_f64().unwrap_or(f64::NAN)).collect();
         let scale = theirs.iter().fold(0.0f64, |a, t| a.max(t.abs()));
@@ -108,7 +128,7 @@ fn compare(label: &str, m: &Mechanism, mjcf: &str, samples: usize, seed: u64) ->
             }
         }
     }
-    println!("{label}: {n} coordinates, {samples} samples, MuJoCo {}: worst error {worst_rel:.3e} of the sample's largest torque", result["mujoco"]);
+    println!("{label}: {n} coordinates, {samples} samples, MuJoCo {}: body poses within 1e-12; worst torque error {worst_rel:.3e} of the sample's largest torque", result["mujoco"]);
     Some(Ok(worst_rel))
 }
 

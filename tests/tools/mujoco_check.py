@@ -3,7 +3,8 @@
 
 Usage: mujoco_check.py IN.json OUT.json
 IN: {"model": "<path to .mjcf.xml>", "samples": [{"q": {joint: value}, "qd": {...}, "qdd": {...}}]}
-OUT: {"mujoco": "<version>", "tau": [{joint: qfrc_inverse}]}
+OUT: {"mujoco": "<version>", "nv": n, "tau": [{joint: qfrc_inverse}],
+      "xpos": [{body: [x, y, z]}], "xquat": [{body: [w, x, y, z]}]}  (world poses after mj_inverse)
 Mesh geoms and assets are dropped (inertiafromgeom is false: they only draw); contacts are
 disabled; damping and armature are zero. Exit code 3 when mujoco cannot be imported.
 """
@@ -38,7 +39,7 @@ def main():
     spec = json.load(open(sys.argv[1]))
     model = load(spec["model"])
     data = mujoco.MjData(model)
-    out = []
+    out, xpos, xquat = [], [], []
     for s in spec["samples"]:
         data.qpos[:] = model.qpos0
         data.qvel[:] = 0.0
@@ -56,7 +57,10 @@ def main():
             j = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_JOINT, name)
             tau[name] = float(data.qfrc_inverse[model.jnt_dofadr[j]])
         out.append(tau)
-    json.dump({"mujoco": mujoco.__version__, "nv": int(model.nv), "tau": out}, open(sys.argv[2], "w"))
+        names = [mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_BODY, b) for b in range(1, model.nbody)]
+        xpos.append({n: [float(x) for x in data.xpos[b + 1]] for b, n in enumerate(names)})
+        xquat.append({n: [float(x) for x in data.xquat[b + 1]] for b, n in enumerate(names)})
+    json.dump({"mujoco": mujoco.__version__, "nv": int(model.nv), "tau": out, "xpos": xpos, "xquat": xquat}, open(sys.argv[2], "w"))
 
 
 if __name__ == "__main__":
