@@ -6,6 +6,8 @@
 //! - [`api`]: HTTP (axum); [`store`]: SQLite (sqlx) and the content-addressed file store.
 //! - [`jobs`]: the bounded conversion worker pool; [`export`]: a version's package from its
 //!   bundle; [`diff`]: what changed between two conversions; [`library`]: the motor library's rules.
+//! - [`mechanism`]: motion and inverse dynamics of a validated model (kinematics, loop assembly,
+//!   IK, RNEA), in the emitted Modelica model's joint coordinates.
 
 pub mod api;
 pub mod app;
@@ -16,6 +18,7 @@ pub mod diff;
 pub mod export;
 pub mod jobs;
 pub mod library;
+pub mod mechanism;
 pub mod motion;
 pub mod pipeline;
 pub mod store;

@@ -87,3 +87,59 @@ pub fn tree_xml(n: usize) -> String {
         "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\" ?>\n<PhysicalModelingXMLFile>\n  <formatVersion>\"1.0.4\"</formatVersion>\n  <internalVersion>1</internalVersion>\n  <createdUsing>\"cad2mo benchmark generator\"</createdUsing>\n  <createdFrom>\"generated\"</createdFrom>\n  <createdOn>\"01/01/26||00:00:00\"</createdOn>\n  <createdBy>\"bench\"</createdBy>\n  <name>\"BENCH\"</name>\n  <SimMechanics>\n    <name>\"BENCH\"</name>\n    <nodeID>\"BENCH\"</nodeID>\n    <bodies>\n{bodies}    </bodies>\n    <joints>\n{joints}    </joints>\n    <grounds>\n      <Ground>\n        <name>\"RootGround\"</name>\n        <nodeID>\"RootGround\"</nodeID>\n        <status>\"\"</status>\n        <frame>\n{ground}        </frame>\n      </Ground>\n    </grounds>\n    <subsystems></subsystems>\n    <connectionPorts></connectionPorts>\n    <id>0</id>\n  </SimMechanics>\n</PhysicalModelingXMLFile>\n"
     )
 }
+
+/// A serial arm of `n` revolute joints (6: a PUMA-like arm with a spherical wrist, axes z y y x
+/// y x; otherwise an iiwa-like column, axes alternating z and y), each link's CS3 the next joint's
+/// frame, the last link carrying the tool frame (nodeID `TOOL`), in mm/kg. Links have a
+/// generic inertia tensor (all six entries non-zero) and a CG off every axis.
+pub fn serial_arm_xml(n: usize) -> String {
+    // Joint positions (mm) and axes.
+    let (pos, axes): (Vec<[f64; 3]>, Vec<&str>) = if n == 6 {
+        (
+            vec![[0.0, 0.0, 0.0], [0.0, 0.0, 350.0], [0.0, 60.0, 750.0], [120.0, 0.0, 800.0], [420.0, 0.0, 800.0], [420.0, 0.0, 800.0]],
+            vec!["0,0,1", "0,1,0", "0,1,0", "1,0,0", "0,1,0", "1,0,0"],
+        )
+    } else {
+        let p = (0..n).map(|i| [0.0, 0.0, 340.0 * i.div_ceil(2) as f64]).collect();
+        let a = (0..n).map(|i| if i % 2 == 0 { "0,0,1" } else { "0,1,0" }).collect();
+        (p, a)
+    };
+    let tool = {
+        let last = pos[n - 1];
+        if n == 6 { [last[0] + 100.0, last[1] + 20.0, last[2] - 30.0] } else { [last[0] + 25.0, last[1], last[2] + 130.0] }
+    };
+    let mut bodies = String::new();
+    let mut joints = String::new();
+    // Refs: ground 1; joint i: base ref 10 + 2i, follower ref 11 + 2i.
+    let mut base = String::new();
+    frame(&mut base, "CG", "BASE::CG", None, [0.0, 0.0, -50.0], 0.0);
+    frame(&mut base, "CS1", "BASE::CS1", None, [0.0; 3], 0.0);
+    frame(&mut base, "CS2", "BASE::G", Some(2), [0.0; 3], 0.0);
+    frame(&mut base, "CS3", "BASE::J1", Some(10), pos[0], 0.0);
+    body(&mut bodies, "BASE", "ARM/BASE", 4.0, &base);
+    joint(&mut joints, "Ground--BASE", "G:-:BASE", 1, 2, "weld", "0,0,1");
+    for i in 0..n {
+        let next = if i + 1 < n { pos[i + 1] } else { tool };
+        let mid = [(pos[i][0] + next[0]) / 2.0 + 7.0, (pos[i][1] + next[1]) / 2.0 - 5.0, (pos[i][2] + next[2]) / 2.0 + 3.0];
+        let angle = 0.3 * i as f64;
+        let mut f = String::new();
+        frame(&mut f, "CG", &format!("L{i}::CG"), None, mid, angle + 0.2);
+        frame(&mut f, "CS1", &format!("L{i}::CS1"), None, pos[i], angle);
+        frame(&mut f, "CS2", &format!("L{i}::parent"), Some(11 + 2 * i), pos[i], angle);
+        if i + 1 < n {
+            frame(&mut f, "CS3", &format!("L{i}::child"), Some(12 + 2 * i), next, angle);
+        } else {
+            frame(&mut f, "CS3", "TOOL", None, next, angle);
+        }
+        let mut b = String::new();
+        body(&mut b, &format!("LINK{}", i + 1), &format!("ARM/LINK{}", i + 1), 3.0 - 0.3 * i as f64, &f);
+        bodies.push_str(&b.replace("<inertia>0.001,0,0,0,0.002,0,0,0,0.0025</inertia>", "<inertia>0.021,0.0013,-0.0021,0.0013,0.018,0.0011,-0.0021,0.0011,0.012</inertia>"));
+        let parent = if i == 0 { "BASE".to_string() } else { format!("LINK{i}") };
+        joint(&mut joints, &format!("{parent}--LINK{}", i + 1), &format!("J{}:-:j", i + 1), 10 + 2 * i, 11 + 2 * i, "revolute", axes[i]);
+    }
+    let mut ground = String::new();
+    frame(&mut ground, "CS1", "Ground::CS1", Some(1), [0.0; 3], 0.0);
+    format!(
+        "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\" ?>\n<PhysicalModelingXMLFile>\n  <formatVersion>\"1.0.4\"</formatVersion>\n  <internalVersion>1</internalVersion>\n  <createdUsing>\"cad2mo arm generator\"</createdUsing>\n  <createdFrom>\"generated\"</createdFrom>\n  <createdOn>\"01/01/26||00:00:00\"</createdOn>\n  <createdBy>\"bench\"</createdBy>\n  <name>\"ARM\"</name>\n  <SimMechanics>\n    <name>\"ARM\"</name>\n    <nodeID>\"ARM\"</nodeID>\n    <bodies>\n{bodies}    </bodies>\n    <joints>\n{joints}    </joints>\n    <grounds>\n      <Ground>\n        <name>\"Ground\"</name>\n        <nodeID>\"Ground\"</nodeID>\n        <status>\"\"</status>\n        <frame>\n{ground}        </frame>\n      </Ground>\n    </grounds>\n    <subsystems></subsystems>\n    <connectionPorts></connectionPorts>\n    <id>0</id>\n  </SimMechanics>\n</PhysicalModelingXMLFile>\n"
+    )
+}

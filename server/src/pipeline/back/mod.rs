@@ -2,5 +2,6 @@
 
 pub mod bundle;
 pub mod dxf;
+pub mod mjcf;
 pub mod modelica;
 pub mod stl;

@@ -19,6 +19,9 @@
 //!   `node_id`, never by position.
 
 pub mod dump;
+mod mass;
+
+pub use mass::MassProperties;
 
 use nalgebra::{Isometry3, Matrix3, Vector3};
 use serde::Serialize;

@@ -18,5 +18,5 @@ pub mod mechatronics;
 mod names;
 mod write;
 
-pub use names::{sanitize, Hints, Names, Scope, KEYWORDS};
+pub use names::{assign_with_hints, sanitize, Hints, Names, Scope, KEYWORDS};
 pub use write::{provenance_html as provenance, write, Layout, Options, Package};

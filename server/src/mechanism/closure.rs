@@ -1,0 +1,184 @@
+//! Loop closure: the cut equations the loop pass chose, and assembly by Newton iteration.
+//!
+//! The unknowns are the dependent tree coordinates (those whose Modelica start value is not
+//! fixed) and the coordinates of plainly emitted closing joints; the independent coordinates
+//! are kept. Equations, per cut:
+//! - plain joint: the closing joint's chain from its base frame must reach its follower frame:
+//!   position difference (m) and rotation vector (rad), world axes, 6 equations;
+//! - `RevolutePlanarLoopConstraint`: frame_b's origin, in frame_a, has no component
+//!   perpendicular to the axis `n` (2 equations);
+//! - `Joints.Constraints.*`: the locked components of frame_b's origin in frame_a, and for
+//!   `Revolute` the axis `n` kept (2), for `Prismatic` no relative rotation (3), for `Universal`
+//!   `n_a ⟂ n_b` (1).
+
+use nalgebra::{DMatrix, DVector, Vector3};
+
+use super::{element_motion, ClosureForm, ConstraintClass, Kinematics, Mechanism, MechanismError};
+
+/// Closure residuals below this (max-norm, m or rad) count as assembled.
+pub const ASSEMBLY_TOL: f64 = 1e-12;
+/// Newton iterations before giving up.
+pub const MAX_ITERATIONS: usize = 50;
+
+/// How an assembly went.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Assembly {
+    pub iterations: usize,
+    /// Largest closure residual at the end (m or rad).
+    pub residual: f64,
+}
+
+/// Two unit vectors perpendicular to unit `n` and to each other.
+fn perpendiculars(n: &Vector3<f64>) -> (Vector3<f64>, Vector3<f64>) {
+    let t = if n.x.abs() < 0.9 { Vector3::x() } else { Vector3::y() };
+    let e1 = (t - n * t.dot(n)).normalize();
+    (e1, n.cross(&e1))
+}
+
+impl Mechanism {
+    /// Number of closure equations.
+    pub fn closure_equations(&self) -> usize {
+        self.closures
+            .iter()
+            .map(|c| match &c.form {
+                ClosureForm::Plain { .. } => 6,
+                ClosureForm::Planar { .. } => 2,
+                ClosureForm::Constraint { class, locked, .. } => {
+                    locked.iter().filter(|l| **l).count()
+                        + match class {
+                            ConstraintClass::Spherical => 0,
+                            ConstraintClass::Revolute => 2,
+                            ConstraintClass::Prismatic => 3,
+                            ConstraintClass::Universal => 1,
+                        }
+                }
+            })
+            .sum()
+    }
+
+    /// The closure residuals at tree coordinates `q` and cut coordinates `cut`.
+    pub fn closure_residual(&self, q: &[f64], cut: &[f64]) -> Result<Vec<f64>, MechanismError> {
+        self.check_len("coordinates", q)?;
+        if cut.len() != self.cut_coordinates.len() {
+            return Err(MechanismError::Length { what: "cut coordinates", expected: self.cut_coordinates.len(), got: cut.len() });
+        }
+        let k = self.forward(q)?;
+        let mut out = Vec::with_capacity(self.closure_equations());
+        self.residual_into(&k, cut, &mut out);
+        Ok(out)
+    }
+
+    fn residual_into(&self, k: &Kinematics, cut: &[f64], out: &mut Vec<f64>) {
+        out.clear();
+        for c in &self.closures {
+            let a = self.attachment_pose(k, &c.a);
+            let b = self.attachment_pose(k, &c.b);
+            match &c.form {
+                ClosureForm::Plain { elements, residual } => {
+                    let mut x = a;
+                    for (prismatic, axis, i) in elements {
+                        x *= element_motion(*prismatic, axis, cut.get(*i).copied().unwrap_or(0.0));
+                    }
+                    x *= residual;
+                    out.extend((b.translation.vector - x.translation.vector).iter());
+                    out.extend((b.rotation * x.rotation.inverse()).scaled_axis().iter());
+                }
+                ClosureForm::Planar { n } => {
+                    let d = a.rotation.inverse() * (b.translation.vector - a.translation.vector);
+                    let (e1, e2) = perpendiculars(n);
+                    out.push(e1.dot(&d));
+                    out.push(e2.dot(&d));
+                }
+                ClosureForm::Constraint { class, locked, n, n_b } => {
+                    let d = a.rotation.inverse() * (b.translation.vector - a.translation.vector);
+                    out.extend((0..3).filter(|i| locked[*i]).map(|i| d[i]));
+                    let rel = a.rotation.inverse() * b.rotation;
+                    match class {
+                        ConstraintClass::Spherical => {}
+                        ConstraintClass::Revolute => {
+                            let (e1, e2) = perpendiculars(n);
+                            let m = rel * n;
+                            out.push(e1.dot(&m));
+                            out.push(e2.dot(&m));
+                        }
+                        ConstraintClass::Prismatic => out.extend(rel.scaled_axis().iter()),
+                        ConstraintClass::Universal => out.push(n.dot(&(rel * n_b))),
+                    }
+                }
+            }
+        }
+    }
+
+    /// Solves the dependent tree coordinates of `q` and the cut coordinates `cut` (both used as
+    /// the starting guess) so that every loop closes, keeping the independent coordinates.
+    /// Newton iteration with a least-squares step (SVD) and step halving.
+    pub fn assemble(&self, q: &mut [f64], cut: &mut [f64]) -> Result<Assembly, MechanismError> {
+        let mut r = self.closure_residual(q, cut)?;
+        let unknowns: Vec<(bool, usize)> = (0..q.len())
+            .filter(|&i| !self.coordinates[i].independent)
+            .map(|i| (true, i))
+            .chain((0..cut.len()).map(|i| (false, i)))
+            .collect();
+        let norm = |r: &[f64]| r.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        let mut res = norm(&r);
+        let mut k = Kinematics::default();
+        let mut scratch = Vec::new();
+        let eval = |q: &[f64], cut: &[f64], k: &mut Kinematics, out: &mut Vec<f64>| {
+            self.forward_into(q, k);
+            self.residual_into(k, cut, out);
+        };
+        let get = |q: &[f64], cut: &[f64], u: (bool, usize)| if u.0 { q[u.1] } else { cut[u.1] };
+        fn set(q: &mut [f64], cut: &mut [f64], u: (bool, usize), x: f64) {
+            if u.0 {
+                q[u.1] = x;
+            } else {
+                cut[u.1] = x;
+            }
+        }
+        for it in 0..MAX_ITERATIONS {
+            if res <= ASSEMBLY_TOL {
+                return Ok(Assembly { iterations: it, residual: res });
+            }
+            if unknowns.is_empty() {
+                break;
+            }
+            // Jacobian by central differences.
+            let h = 1e-7;
+            let mut jac = DMatrix::<f64>::zeros(r.len(), unknowns.len());
+            for (c, &u) in unknowns.iter().enumerate() {
+                let x = get(q, cut, u);
+                set(q, cut, u, x + h);
+                eval(q, cut, &mut k, &mut scratch);
+                let plus = scratch.clone();
+                set(q, cut, u, x - h);
+                eval(q, cut, &mut k, &mut scratch);
+                set(q, cut, u, x);
+                for (row, (p, m)) in plus.iter().zip(&scratch).enumerate() {
+                    jac[(row, c)] = (p - m) / (2.0 * h);
+                }
+            }
+            let svd = jac.svd(true, true);
+            let eps = svd.singular_values.max() * 1e-10;
+            let step = svd.solve(&(-DVector::from_column_slice(&r)), eps).map_err(|e| MechanismError::Internal(e.to_string()))?;
+            let start: Vec<f64> = unknowns.iter().map(|&u| get(q, cut, u)).collect();
+            let mut t = 1.0;
+            loop {
+                for (c, &u) in unknowns.iter().enumerate() {
+                    set(q, cut, u, start[c] + t * step[c]);
+                }
+                eval(q, cut, &mut k, &mut scratch);
+                let new = norm(&scratch);
+                if new < res || t < 1e-3 {
+                    r.clone_from(&scratch);
+                    res = new;
+                    break;
+                }
+                t *= 0.5;
+            }
+        }
+        if res <= ASSEMBLY_TOL {
+            return Ok(Assembly { iterations: MAX_ITERATIONS, residual: res });
+        }
+        Err(MechanismError::NotAssembled { residual: res, iterations: MAX_ITERATIONS })
+    }
+}

@@ -1,0 +1,163 @@
+//! Cross-check of `mechanism`'s inverse dynamics (RNEA) against MuJoCo's `mj_inverse` on the MJCF
+//! the pipeline writes (`<Pkg>/<Pkg>.mjcf.xml`), for generated trees and arms and the real tree
+//! fixtures. Random states (q, qd, qdd) by joint name; agreement required per coordinate:
+//! `|tau - tau_mujoco| <= 1e-9 * |tau_mujoco| + 1e-9 * max_k |tau_mujoco_k| + 1e-12`.
+//! The second term is the absolute floor: torques that nearly cancel (a joint carrying little
+//! of a large load) keep only the digits of the sample's largest torque.
+//! Body poses (MuJoCo's `xpos`/`xquat` against our FK of each CS1 frame) must agree to 1e-12 m
+//! and 1e-12 rad: MuJoCo's `qpos` is the Modelica coordinate.
+//! Skips with a NOTICE when mujoco cannot be imported, unless CAD2MO_REQUIRE_TOOLS=1.
+
+use std::path::Path;
+use std::process::Command;
+
+use cad2mo::mechanism::{Mechanism, XorShift};
+use cad2mo::pipeline::front::bundle::Bundle;
+use cad2mo::pipeline::{self, Options};
+use cad2mo_tests::common::{files_with_ext, fixtures_dir, tools_required, workspace_root};
+use nalgebra::Vector3;
+
+#[path = "../server/benches/support/gen.rs"]
+#[allow(dead_code)]
+mod gen;
+
+const REL: f64 = 1e-9;
+
+/// The bundle's mechanism (tree only: `None` for loops, free bodies, sphericals) with the
+/// package's names, and the package's MJCF text.
+fn prepare(name: &str, xml: &str) -> Option<(Mechanism, String)> {
+    let bundle = Bundle::from_files("x", [(name.to_string(), xml.as_bytes().to_vec())]).ok()?;
+    let opts = Options { write_shapes: false, ..Options::default() };
+    let a = pipeline::analyse(&bundle, &opts).ok()?;
+    let mut m = Mechanism::from_validated(&a.model, &a.validated).ok()?;
+    if m.has_loops() || m.dof() == 0 {
+        return None;
+    }
+    let out = pipeline::convert(&bundle, &opts).ok()?;
+    let (_, mjcf) = out.files.iter().find(|(p, _)| p.ends_with(".mjcf.xml"))?;
+    let pkg = cad2mo::pipeline::back::modelica::write(
+        &a.model,
+        &a.validated,
+        &cad2mo::pipeline::back::modelica::Options {
+            package_name: out.report.package_name.clone(),
+            gravity: opts.gravity,
+            converter_version: String::new(),
+            name_hints: Default::default(),
+        },
+    );
+    m.use_layout_names(&pkg.layout);
+    Some((m, String::from_utf8(mjcf.clone()).ok()?))
+}
+
+/// Runs the comparison; `Err` with the worst mismatch. `None` when mujoco is unavailable.
+fn compare(label: &str, m: &Mechanism, mjcf: &str, samples: usize, seed: u64) -> Option<Result<f64, String>> {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let model_path = dir.path().join("model.mjcf.xml");
+    std::fs::write(&model_path, mjcf).expect("write mjcf");
+    let g = Vector3::from(Options::default().gravity);
+    let mut rng = XorShift::new(seed);
+    let mut ws = m.workspace();
+    let n = m.dof();
+    let mut ours = Vec::new();
+    let mut qs = Vec::new();
+    let mut spec = Vec::new();
+    for _ in 0..samples {
+        let q: Vec<f64> = m.q0().iter().map(|q| q + rng.range(-1.0, 1.0)).collect();
+        let qd: Vec<f64> = (0..n).map(|_| rng.range(-2.0, 2.0)).collect();
+        let qdd: Vec<f64> = (0..n).map(|_| rng.range(-5.0, 5.0)).collect();
+        let mut tau = vec![0.0; n];
+        m.inverse_dynamics(&q, &qd, &qdd, &g, &mut ws, &mut tau).expect("rnea");
+        let by_name = |v: &[f64]| -> serde_json::Map<String, serde_json::Value> {
+            m.coordinates().iter().zip(v).map(|(c, x)| (c.name.clone(), serde_json::json!(x))).collect()
+        };
+        spec.push(serde_json::json!({"q": by_name(&q), "qd": by_name(&qd), "qdd": by_name(&qdd)}));
+        ours.push(tau);
+        qs.push(q);
+    }
+    let input = dir.path().join("in.json");
+    let output = dir.path().join("out.json");
+    std::fs::write(&input, serde_json::json!({"model": model_path, "samples": spec}).to_string()).expect("write spec");
+    let script = workspace_root().join("tests/tools/mujoco_check.py");
+    let run = Command::new("python3").arg(&script).arg(&input).arg(&output).output();
+    let run = match run {
+        Ok(r) => r,
+        Err(e) => {
+            assert!(!tools_required(), "python3 not runnable: {e}");
+            println!("NOTICE: python3 not runnable ({e}); MuJoCo cross-check skipped");
+            return None;
+        }
+    };
+    if run.status.code() == Some(3) {
+        assert!(!tools_required(), "mujoco not importable: {}", String::from_utf8_lossy(&run.stdout));
+        println!("NOTICE: {}; MuJoCo cross-check skipped (python3 -m pip install mujoco)", String::from_utf8_lossy(&run.stdout).trim());
+        return None;
+    }
+    assert!(run.status.success(), "{label}: mujoco_check.py failed:\n{}{}", String::from_utf8_lossy(&run.stdout), String::from_utf8_lossy(&run.stderr));
+    let result: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&output).expect("read out")).expect("json");
+    assert_eq!(result["nv"].as_u64(), Some(n as u64), "{label}: MuJoCo has a different number of dofs");
+    let mut worst_rel = 0.0f64;
+    for (s, q) in qs.iter().enumerate() {
+        let k = m.forward(q).expect("fk");
+        for (b, name) in m.body_names().iter().enumerate() {
+            let (Some(p), Some(r)) = (result["xpos"][s][name].as_array(), result["xquat"][s][name].as_array()) else {
+                return Some(Err(format!("{label}: body {name} not in the MJCF model")));
+            };
+            let f = |v: &serde_json::Value| v.as_f64().unwrap_or(f64::NAN);
+            let pose = m.body_pose(&k, cad2mo::pipeline::ir::BodyId(b as u32)).expect("pose");
+            let dp = (pose.translation.vector - Vector3::new(f(&p[0]), f(&p[1]), f(&p[2]))).norm();
+            let theirs = nalgebra::UnitQuaternion::from_quaternion(nalgebra::Quaternion::new(f(&r[0]), f(&r[1]), f(&r[2]), f(&r[3])));
+            let dr = pose.rotation.angle_to(&theirs);
+            if !(dp < 1e-12 && dr < 1e-12) {
+                return Some(Err(format!("{label}: sample {s}, body {name}: MuJoCo pose off by {dp:e} m, {dr:e} rad")));
+            }
+        }
+    }
+    for (s, tau) in ours.iter().enumerate() {
+        let theirs: Vec<f64> = m.coordinates().iter().map(|c| result["tau"][s][&c.name].as_f64().unwrap_or(f64::NAN)).collect();
+        let scale = theirs.iter().fold(0.0f64, |a, t| a.max(t.abs()));
+        for (k, (a, b)) in tau.iter().zip(&theirs).enumerate() {
+            let err = (a - b).abs();
+            let allowed = REL * b.abs() + REL * scale + 1e-12;
+            worst_rel = worst_rel.max(err / (scale + 1e-12));
+            if err.is_nan() || err > allowed {
+                return Some(Err(format!(
+                    "{label}: sample {s}, {} ({:?}): ours {a:.15e}, MuJoCo {b:.15e}, error {err:.3e} > {allowed:.3e}",
+                    m.coordinates()[k].name,
+                    m.coordinates()[k].kind
+                )));
+            }
+        }
+    }
+    println!("{label}: {n} coordinates, {samples} samples, MuJoCo {}: body poses within 1e-12; worst torque error {worst_rel:.3e} of the sample's largest torque", result["mujoco"]);
+    Some(Ok(worst_rel))
+}
+
+#[test]
+fn rnea_agrees_with_mujoco_on_generated_and_real_trees() {
+    let mut models: Vec<(String, String)> = vec![
+        ("arm6".into(), gen::serial_arm_xml(6)),
+        ("arm7".into(), gen::serial_arm_xml(7)),
+        ("tree50".into(), gen::tree_xml(50)),
+    ];
+    if let Some(fx) = fixtures_dir("rnea_agrees_with_mujoco") {
+        for xml in files_with_ext(&fx.join("xml"), &[".xml"]) {
+            let text = std::fs::read_to_string(&xml).expect("read");
+            if text.contains("<PhysicalModelingXMLFile") {
+                models.push((xml.strip_prefix(&fx).unwrap_or(&xml).display().to_string(), text));
+            }
+        }
+    }
+    let mut compared = 0;
+    for (label, xml) in &models {
+        let Some((m, mjcf)) = prepare(&format!("{}.xml", Path::new(label).file_stem().map(|s| s.to_string_lossy().to_string()).unwrap_or_default()), xml) else {
+            println!("{label}: not a tree mechanism; skipped");
+            continue;
+        };
+        match compare(label, &m, &mjcf, 20, 11) {
+            None => return,
+            Some(Ok(_)) => compared += 1,
+            Some(Err(e)) => panic!("{e}"),
+        }
+    }
+    assert!(compared >= 3, "only {compared} models compared");
+}
