@@ -129,7 +129,7 @@ fn cube() -> Vec<u8> {
 
 /// Byte offsets of `inf`/`nan` tokens used as values (after `=`, `,`, `{`, `(` or a sign;
 /// not a component reference) outside strings and comments.
-fn non_finite_tokens(mo: &str) -> Vec<usize> {
+pub fn non_finite_tokens(mo: &str) -> Vec<usize> {
     let b = mo.as_bytes();
     let mut out = Vec::new();
     let mut i = 0;

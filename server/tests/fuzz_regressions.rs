@@ -59,3 +59,13 @@ fn fuzz_seeds_replay() {
     }
     assert!(replayed > 50, "only {replayed} seeds under {}", root.display());
 }
+
+/// The `convert` target's check finds non-finite numbers, and only where a number stands.
+#[test]
+fn convert_check_finds_non_finite_numbers() {
+    let bad = "model M\n  B b(r = {inf, 0, -NaN}, m = 1);\n  P p(x = Infinity);\nend M;\n";
+    assert_eq!(targets::non_finite_tokens(bad).len(), 3, "{bad}");
+    let good = "model M \"inf, NaN\"\n  // = inf\n  /* = NaN */\n  Body inf(r = {1e300, 0, 0});\n  \
+                equation\n  connect(inf.frame_a, nan.frame_b);\n  x = f(nan[1]);\nend M;\n";
+    assert_eq!(targets::non_finite_tokens(good), Vec::<usize>::new(), "{good}");
+}
