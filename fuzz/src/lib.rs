@@ -1,0 +1,176 @@
+//! The fuzz targets' bodies, as plain functions: each takes the fuzzer's bytes and panics only on
+//! a bug (a panic in the pipeline, or an output that breaks the target's check). The libFuzzer
+//! binaries in `fuzz_targets/` call them, and `server/tests/fuzz_regressions.rs` includes this
+//! file to replay every input under `fuzz/regressions/<target>/` on a normal `cargo test`.
+
+use cad2mo::pipeline::{
+    self,
+    front::bundle::{Bundle, Limits},
+    front::{simmechanics, stl, vrml},
+};
+
+/// The targets by name, as `fuzz/regressions/<name>/` and `cargo fuzz run <name>` call them.
+pub const TARGETS: [(&str, fn(&[u8])); 5] =
+    [("xml", xml), ("stl", stl), ("vrml", vrml), ("bundle_zip", bundle_zip), ("convert", convert)];
+
+/// First-generation SimMechanics XML bytes -> `front::simmechanics::parse` (and the sniffer).
+pub fn xml(data: &[u8]) {
+    let _ = simmechanics::is_physical_modeling_xml(data);
+    if let Err(e) = simmechanics::parse("fuzz.xml", data) {
+        // Messages are formatted on demand: run that code too.
+        let _ = e.to_string();
+    }
+}
+
+/// STL bytes (ASCII or binary) -> `front::stl::parse`, in mm (the common export unit).
+pub fn stl(data: &[u8]) {
+    let _ = stl::is_binary(data);
+    match stl::parse("fuzz.stl", data, 0.001) {
+        Ok(mesh) => {
+            let _ = format!("{mesh:?}").len();
+        }
+        Err(e) => {
+            let _ = e.to_string();
+        }
+    }
+}
+
+/// One VRML file (VRML 97 or 1.0; gzip when it begins with `1f 8b`, which the front end
+/// decides) as a bundle with one main file -> `front::vrml::parse`. An Inline or EXTERNPROTO can
+/// only name the file itself (a cycle) or nothing.
+pub fn vrml(data: &[u8]) {
+    let _ = vrml::is_vrml(data);
+    let Ok(bundle) = Bundle::from_files("fuzz", [("main.wrl".to_string(), data.to_vec())]) else {
+        return;
+    };
+    let _ = vrml::main_files(&bundle);
+    if let Err(e) = vrml::parse(&bundle, "main.wrl") {
+        let _ = e.to_string();
+    }
+}
+
+/// Zip bytes -> `Bundle::from_zip` with the default limits; when it reads, `pipeline::analyse`
+/// on it: the whole front end (XML, STL, VRML, matching.json) and the passes (lumping, loops,
+/// kinematics, validation). The last byte's low bit turns weld lumping on.
+pub fn bundle_zip(data: &[u8]) {
+    let bundle = match Bundle::from_zip("fuzz.zip", data, &Limits::default()) {
+        Ok(b) => b,
+        Err(e) => {
+            let _ = e.to_string();
+            return;
+        }
+    };
+    let lump_welds = data.last().is_some_and(|b| b & 1 == 1);
+    let opts = pipeline::Options { write_shapes: false, lump_welds, ..Default::default() };
+    if let Err(e) = pipeline::analyse(&bundle, &opts) {
+        let _ = e.diagnostics();
+    }
+}
+
+/// XML bytes -> the whole conversion (`pipeline::convert`, shapes off). Every `.stl` the XML
+/// names is supplied as one 10 mm cube, so bodies get geometry and the geometry checks run. The
+/// conversion must not panic, and when it succeeds every number in `Mechanics.mo` must be
+/// finite: no `inf` or `NaN` token outside strings and comments.
+pub fn convert(data: &[u8]) {
+    // The meshes the XML names (when it parses; otherwise the conversion fails the same way).
+    let names: Vec<String> = match simmechanics::parse("model.xml", data) {
+        Ok((model, _)) => model.bodies.iter().filter_map(|b| b.geometry_file.clone()).collect(),
+        Err(_) => Vec::new(),
+    };
+    let mut files = vec![("model.xml".to_string(), data.to_vec())];
+    let cube = cube();
+    for n in names {
+        if files.iter().any(|(p, _)| p.eq_ignore_ascii_case(&n)) || !n.to_ascii_lowercase().ends_with(".stl") {
+            continue;
+        }
+        files.push((n, cube.clone()));
+    }
+    // Names that are unsafe paths or duplicates after normalisation: no meshes then.
+    let bundle = Bundle::from_files("fuzz", files.clone())
+        .or_else(|_| Bundle::from_files("fuzz", files.into_iter().take(1)));
+    let Ok(bundle) = bundle else { return };
+    let opts = pipeline::Options { write_shapes: false, ..Default::default() };
+    let out = match pipeline::convert(&bundle, &opts) {
+        Ok(out) => out,
+        Err(e) => {
+            let _ = e.diagnostics();
+            return;
+        }
+    };
+    let mechanics = out.files.iter().find(|(p, _)| p.ends_with("/Mechanics.mo"));
+    let (path, bytes) = mechanics.expect("a successful conversion writes Mechanics.mo");
+    let text = std::str::from_utf8(bytes).expect("Mechanics.mo is UTF-8");
+    let bad = non_finite_tokens(text);
+    if let Some(&at) = bad.first() {
+        let line = text[..at].matches('\n').count() + 1;
+        let l = text.lines().nth(line - 1).unwrap_or("");
+        panic!("{path}:{line}: non-finite number in the emitted Modelica: {l}");
+    }
+}
+
+/// A 10 mm cube, ASCII STL (12 facets).
+fn cube() -> Vec<u8> {
+    let v = |i: u32| [(i & 1) as f64 * 10.0, (i >> 1 & 1) as f64 * 10.0, (i >> 2 & 1) as f64 * 10.0];
+    let faces: [[u32; 4]; 6] = [[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]];
+    let mut s = String::from("solid cube\n");
+    for f in faces {
+        for t in [[f[0], f[1], f[2]], [f[0], f[2], f[3]]] {
+            s.push_str(" facet normal 0 0 0\n  outer loop\n");
+            for i in t {
+                let p = v(i);
+                s.push_str(&format!("   vertex {} {} {}\n", p[0], p[1], p[2]));
+            }
+            s.push_str("  endloop\n endfacet\n");
+        }
+    }
+    s.push_str("endsolid cube\n");
+    s.into_bytes()
+}
+
+/// Byte offsets of `inf`/`nan` tokens used as values (after `=`, `,`, `{`, `(` or a sign;
+/// not a component reference) outside strings and comments.
+pub fn non_finite_tokens(mo: &str) -> Vec<usize> {
+    let b = mo.as_bytes();
+    let mut out = Vec::new();
+    let mut i = 0;
+    let mut prev = b' ';
+    while i < b.len() {
+        let c = b[i];
+        if c == b'"' {
+            i += 1;
+            while i < b.len() && b[i] != b'"' {
+                i += if b[i] == b'\\' { 2 } else { 1 };
+            }
+            i += 1;
+            prev = b'"';
+        } else if b[i..].starts_with(b"//") {
+            while i < b.len() && b[i] != b'\n' {
+                i += 1;
+            }
+        } else if b[i..].starts_with(b"/*") {
+            i += 2;
+            while i < b.len() && !b[i..].starts_with(b"*/") {
+                i += 1;
+            }
+            i += 2;
+        } else if c.is_ascii_alphabetic() || c == b'_' {
+            let start = i;
+            while i < b.len() && (b[i].is_ascii_alphanumeric() || b[i] == b'_') {
+                i += 1;
+            }
+            let word = mo[start..i].to_ascii_lowercase();
+            let next = b[i..].iter().copied().find(|c| !c.is_ascii_whitespace()).unwrap_or(b';');
+            let as_value = matches!(prev, b'=' | b',' | b'{' | b'(' | b'-' | b'+' | b'*' | b'/');
+            if matches!(word.as_str(), "inf" | "nan" | "infinity") && as_value && !matches!(next, b'.' | b'(' | b'[') {
+                out.push(start);
+            }
+            prev = b'a';
+        } else {
+            if !c.is_ascii_whitespace() {
+                prev = c;
+            }
+            i += 1;
+        }
+    }
+    out
+}
