@@ -26,13 +26,10 @@ import zlib
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 TESTS_IN = os.path.join(ROOT, "tests", "in")
 SEEDS = os.path.join(ROOT, "fuzz", "seeds")
-# Inputs that still break the smoke run's limits (open bugs, see README "Fuzzing"): kept out of
-# the seeds so the smoke run stays green, replayed by hand (`cargo fuzz run vrml fuzz/known/vrml`).
-KNOWN = os.path.join(ROOT, "fuzz", "known")
 
 
 def write(target, name, data):
-    d = os.path.join(KNOWN, "vrml") if target == "known" else os.path.join(SEEDS, target)
+    d = os.path.join(SEEDS, target)
     os.makedirs(d, exist_ok=True)
     if isinstance(data, str):
         data = data.encode()
@@ -122,33 +119,34 @@ def golden():
 
 # --- bombs: VRML ---------------------------------------------------------------------------
 
-def vrml_bombs(levels, target, fields):
-    """The doubling bombs with `levels` levels, written to `target` (a seeds/ or known/ folder)."""
+def vrml_bombs(levels, target, fields, prefix=""):
+    """The doubling bombs with `levels` levels, written to seeds/`target` with names `prefix...`."""
     lines = ["#VRML V2.0 utf8", "PROTO P0 [] { Shape { geometry Box { size 1 1 1 } } }"]
     for i in range(1, levels + 1):
         lines.append(f"PROTO P{i} [] {{ Group {{ children [ P{i-1} {{}} P{i-1} {{}} ] }} }}")
     lines.append(f"Transform {{ children [ P{levels} {{}} ] }}")
-    write(target, "bomb_proto_doubling.wrl", "\n".join(lines) + "\n")
+    write(target, prefix + "bomb_proto_doubling.wrl", "\n".join(lines) + "\n")
 
     lines = ["#VRML V2.0 utf8", "DEF A0 Shape { geometry Box { size 1 1 1 } }"]
     for i in range(1, levels + 1):
         lines.append(f"DEF A{i} Group {{ children [ USE A{i-1} USE A{i-1} ] }}")
     lines.append(f"Transform {{ children [ USE A{levels} ] }}")
-    write(target, "bomb_def_use_doubling.wrl", "\n".join(lines) + "\n")
+    write(target, prefix + "bomb_def_use_doubling.wrl", "\n".join(lines) + "\n")
     # A PROTO whose IS-bound children field carries the doubling (fields bound at every level).
     lines = ["#VRML V2.0 utf8", "PROTO D [ field MFNode c [] ] { Group { children [ Group { children IS c } Group { children IS c } ] } }"]
     body = "Shape { geometry Box {} }"
     for _ in range(fields):
         body = f"D {{ c [ {body} ] }}"
     lines.append(body)
-    write(target, "bomb_proto_field_doubling.wrl", "\n".join(lines) + "\n")
+    write(target, prefix + "bomb_proto_field_doubling.wrl", "\n".join(lines) + "\n")
     # gzip variant (decided by the magic bytes, not the name); mtime fixed for reproducibility.
-    with open(os.path.join(SEEDS if target != "known" else KNOWN, "vrml", "bomb_proto_doubling.wrl"), "rb") as f:
-        write(target, "bomb_proto_doubling.wrz", gzip.compress(f.read(), mtime=0))
+    with open(os.path.join(SEEDS, target, prefix + "bomb_proto_doubling.wrl"), "rb") as f:
+        write(target, prefix + "bomb_proto_doubling.wrz", gzip.compress(f.read(), mtime=0))
 
 
 def vrml_seeds():
-    # Small enough to fuzz at speed (2^12 boxes); the full 2^30 versions are under fuzz/known/.
+    # Small enough to fuzz at speed (2^12 boxes); the full 2^30 versions follow (refused before
+    # expanding, at no cost).
     vrml_bombs(12, "vrml", 10)
     depth = 1000
     write("vrml", "bomb_deep_nesting.wrl",
@@ -260,13 +258,12 @@ def zip_bombs():
 
 
 def main():
-    for d in (SEEDS, KNOWN):
-        if os.path.isdir(d):
-            shutil.rmtree(d)
+    if os.path.isdir(SEEDS):
+        shutil.rmtree(SEEDS)
     golden()
     vrml_seeds()
     # The ~1.5 KB bombs of the hardening issue: 30 doubling levels (2^30 boxes if expanded).
-    vrml_bombs(30, "known", 20)
+    vrml_bombs(30, "vrml", 20, prefix="full_")
     xml_bombs()
     convert_seeds()
     stl_bombs()
