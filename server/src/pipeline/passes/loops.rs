@@ -525,6 +525,11 @@ fn choose_cuts(
         let closing = model.joint(l.closing);
         let cchain = &chains[l.closing.index()];
         if l.kind == LoopKind::Rigid {
+            warnings.push(omitted(
+                closing,
+                "redundant-weld",
+                format!("weld \"{}\" closes a loop of welds only; it is redundant and not emitted", closing.cad_name),
+            ));
             infos.push(LoopInfo {
                 coordinates: 0,
                 rank: 0,
@@ -573,13 +578,13 @@ fn choose_cuts(
         };
         let chosen = if independent == 0 {
             if !closing.is_weld() {
-                warnings.push(Warning::new(
+                warnings.push(omitted(
+                    closing,
                     "loop-joint-omitted",
                     format!(
                         "joint \"{}\" cannot move: the joints it closes a loop with already fix its two sides to each other, so it is not emitted",
                         closing.cad_name
                     ),
-                    format!("{} (joint nodeID \"{}\")", closing.loc, closing.node_id),
                 ));
             }
             Some(Candidate { cut: Cut::Omitted, wrenches: Vec::new() })
@@ -623,6 +628,11 @@ fn choose_cuts(
     }
     fix_independent(h, chains, &a.rows, &columns);
     (infos, warnings)
+}
+
+/// A warning about a closing joint that is not emitted, located at the joint.
+fn omitted(joint: &crate::pipeline::ir::Joint, code: &'static str, message: String) -> Warning {
+    Warning::new(code, message, format!("{} (joint nodeID \"{}\")", joint.loc, joint.node_id))
 }
 
 /// World orientation of the closing joint's last element frame_a at the CAD pose.

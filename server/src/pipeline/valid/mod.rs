@@ -7,7 +7,7 @@
 use nalgebra::{Matrix3, SymmetricEigen};
 
 use crate::pipeline::ir::{Body, Model, PrimitiveKind, SourceLoc, Warning};
-use crate::pipeline::passes::hierarchy::{self, Hierarchy, LoopKind, Node};
+use crate::pipeline::passes::hierarchy::{self, Hierarchy, Node};
 use crate::pipeline::passes::kinematics::{self, Chain};
 use crate::pipeline::passes::loops::LoopAnalysis;
 
@@ -184,19 +184,6 @@ pub fn validate(model: &Model, analysis: Analysis) -> Result<Validated, Validati
             }
         }
         warnings.extend(kinematics::check(model, joint, &analysis.chains[j], &location));
-    }
-    for l in &analysis.hierarchy.loops {
-        let j = model.joint(l.closing);
-        if l.kind == LoopKind::Rigid {
-            warnings.push(Warning::new(
-                "redundant-weld",
-                format!(
-                    "weld \"{}\" closes a loop of welds only; it is redundant and not emitted",
-                    j.cad_name
-                ),
-                format!("{} (joint nodeID \"{}\")", j.loc, j.node_id),
-            ));
-        }
     }
     check_massless_leaves(model, &analysis, &mut warnings);
     let free = &analysis.hierarchy.free_bodies;

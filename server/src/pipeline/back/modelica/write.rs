@@ -317,29 +317,23 @@ impl Writer<'_> {
                         ConstraintClass::Universal => "constraint-universal",
                     }
                 }
-                (PrimitiveKind::Revolute, _) => {
+                (PrimitiveKind::Revolute | PrimitiveKind::Prismatic, _) => {
+                    // (class, coordinate, its speed)
+                    let (class, q, qd, kind) = if e.kind == PrimitiveKind::Revolute {
+                        ("Revolute", "phi", "w", "revolute")
+                    } else {
+                        ("Prismatic", "s", "v", "prismatic")
+                    };
                     let place = self.place(COL_JOINT);
                     let _ = writeln!(
                         self.decl,
-                        "  {}.Components.Revolute {name}(\n    n={},\n    phi(start={}{fixed}),\n    w(start=0{fixed}))\n    \"{}\" {place};",
+                        "  {}.Components.{class} {name}(\n    n={},\n    {q}(start={}{fixed}),\n    {qd}(start=0{fixed}))\n    \"{}\" {place};",
                         self.pkg,
                         vec3(&e.axis),
                         num_in(e.q0, 1.0),
                         mstr(&desc)
                     );
-                    "revolute"
-                }
-                (PrimitiveKind::Prismatic, _) => {
-                    let place = self.place(COL_JOINT);
-                    let _ = writeln!(
-                        self.decl,
-                        "  {}.Components.Prismatic {name}(\n    n={},\n    s(start={}{fixed}),\n    v(start=0{fixed}))\n    \"{}\" {place};",
-                        self.pkg,
-                        vec3(&e.axis),
-                        num_in(e.q0, 1.0),
-                        mstr(&desc)
-                    );
-                    "prismatic"
+                    kind
                 }
                 _ => {
                     let states = if in_loop || !e.fixed {
@@ -410,12 +404,9 @@ pub fn write(model: &Model, v: &Validated, opts: &Options) -> Package {
     for (i, body) in model.bodies.iter().enumerate() {
         let name = &names.bodies[i];
         let cs1 = model.frame(body.cs1).pose;
-        let cg = model.frame(body.cg).pose;
-        let r_cm = cs1.rotation.inverse() * (cg.translation.vector - cs1.translation.vector);
         let rc = cs1.rotation.to_rotation_matrix().into_inner();
-        let rg = cg.rotation.to_rotation_matrix().into_inner();
-        let sym = (body.inertia_cg + body.inertia_cg.transpose()) * 0.5;
-        let ia: Matrix3<f64> = rc.transpose() * rg * sym * rg.transpose() * rc;
+        let mp = model.mass_properties_cs1(crate::pipeline::ir::BodyId(i as u32));
+        let (r_cm, ia) = (mp.r_cm, mp.inertia);
         let i_scale = ia.amax();
         let anim = if body.mesh.is_some() || body.mass == 0.0 { ",\n    animation=false" } else { "" };
         let initial = if analysis.hierarchy.free_roots.iter().any(|b| b.index() == i) {

@@ -125,15 +125,7 @@ impl Kind {
             }
             Kind::Instance(Some(inner)) => inner.cost,
             Kind::V1Group { kind, children } => {
-                let selected: &[NodeRef] = match *kind {
-                    V1GroupKind::Switch(-3) => children,
-                    V1GroupKind::Switch(w) => match usize::try_from(w) {
-                        Ok(w) if w < children.len() => &children[w..=w],
-                        _ => &[],
-                    },
-                    V1GroupKind::Lod => &children[..children.len().min(1)],
-                    _ => children,
-                };
+                let selected = kind.traversed(children);
                 one.add(Cost::sum(selected))
             }
             Kind::Prim(p) => shape(p.triangles()),
@@ -159,6 +151,21 @@ pub(super) enum V1GroupKind {
     Switch(i32),
     /// Like Group, traversing only the first child (the highest detail).
     Lod,
+}
+
+impl V1GroupKind {
+    /// The children a traversal visits.
+    pub(super) fn traversed(self, children: &[NodeRef]) -> &[NodeRef] {
+        match self {
+            V1GroupKind::Switch(-3) => children,
+            V1GroupKind::Switch(w) => match usize::try_from(w) {
+                Ok(w) if w < children.len() => &children[w..=w],
+                _ => &[],
+            },
+            V1GroupKind::Lod => &children[..children.len().min(1)],
+            _ => children,
+        }
+    }
 }
 
 /// A primitive shape with its VRML parameters.

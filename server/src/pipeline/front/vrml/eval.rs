@@ -333,15 +333,7 @@ impl<'l, 'b> Eval<'l, 'b> {
                 let g = pglobal * st.m * lead;
                 let id = self.add_node(parent, n, g)?;
                 let mut inner = V1State { m: Matrix4::identity(), ..st.clone() };
-                let selected: &[NodeRef] = match *kind {
-                    V1GroupKind::Switch(-3) => children,
-                    V1GroupKind::Switch(w) => match usize::try_from(w) {
-                        Ok(w) if w < children.len() => &children[w..=w],
-                        _ => &[],
-                    },
-                    V1GroupKind::Lod => &children[..children.len().min(1)],
-                    _ => children,
-                };
+                let selected = kind.traversed(children);
                 for (i, c) in selected.iter().enumerate() {
                     if i < skip && matches!(c.kind, Kind::V1Xform(_)) {
                         continue; // already in `lead`

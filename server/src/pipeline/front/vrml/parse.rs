@@ -1167,19 +1167,7 @@ impl<'s> Parser<'_, '_, 's> {
             return Ok(0);
         };
         let before = self.ld.parsed_nodes;
-        let text = body.text.clone();
-        let mut sub = Parser {
-            ld: &mut *self.ld,
-            lx: Lexer::new(&text, body.start, body.line, 0),
-            file: body.file.clone(),
-            version: Version::V2,
-            defs: HashMap::new(),
-            protos: def.scope.clone(),
-            env: None,
-            depth: self.depth,
-            costing: true,
-        };
-        let r = sub.first_node();
+        let r = self.body_first_node(def, body, None, true);
         let cost = self.ld.parsed_nodes.saturating_sub(before);
         self.ld.parsed_nodes = before;
         r?;
@@ -1242,6 +1230,13 @@ impl<'s> Parser<'_, '_, 's> {
                 .unwrap_or_default();
             return Ok(Kind::Group { children, matrix: None });
         };
+        let first = self.body_first_node(def, body, Some(Rc::new(env)), false)?;
+        Ok(Kind::Instance(first))
+    }
+
+    /// The first node of a PROTO body, read by a parser of its own in the PROTO's scope: with the
+    /// instance's fields as `env`, or (`costing`) only to count what one instance parses.
+    fn body_first_node(&mut self, def: &Rc<ProtoDef>, body: &ProtoBody, env: Option<Env>, costing: bool) -> R<Option<NodeRef>> {
         let text = body.text.clone();
         let mut sub = Parser {
             ld: &mut *self.ld,
@@ -1250,12 +1245,11 @@ impl<'s> Parser<'_, '_, 's> {
             version: Version::V2,
             defs: HashMap::new(),
             protos: def.scope.clone(),
-            env: Some(Rc::new(env)),
+            env,
             depth: self.depth,
-            costing: false,
+            costing,
         };
-        let first = sub.first_node()?;
-        Ok(Kind::Instance(first))
+        sub.first_node()
     }
 
     /// The first node of a PROTO body (declarations before it are processed; the rest of the
