@@ -58,6 +58,16 @@ fn num(x: f64) -> String {
 /// [`num`], with values below 1e-12 of `scale` (the size of the quantity they belong to) written
 /// as 0: rounding noise such as `8.6e-24` in an inertia of 1e-3.
 fn num_in(x: f64, scale: f64) -> String {
+    if x == 0.0 || x.abs() < 1e-12 * scale {
+        return "0.0".to_string();
+    }
+    // Most CAD numbers are short already: rounding to 15 digits would give the same value.
+    let shortest = format!("{x:?}");
+    let mantissa = shortest.split(['e', 'E']).next().unwrap_or(&shortest);
+    let digits = mantissa.bytes().filter(u8::is_ascii_digit).skip_while(|d| *d == b'0').count();
+    if digits <= 15 {
+        return shortest;
+    }
     let rounded: f64 = format!("{x:.14e}").parse().unwrap_or(x);
     let x = if rounded == 0.0 || rounded.abs() < 1e-12 * scale { 0.0 } else { rounded };
     format!("{x:?}")
