@@ -2,7 +2,6 @@
 //! binary STL shapes of every golden case and every real export in `../shared/fixtures`.
 //! (Validation refuses non-finite and implausible input; this checks the outputs themselves.)
 
-use std::path::Path;
 
 use cad2mo::pipeline::{Options, Output};
 use cad2mo_tests::common::{convert_path, files_with_ext, fixtures_dir, sorted_dirs, workspace_root};
@@ -115,15 +114,8 @@ fn fixture_outputs_are_finite() {
         if !text.contains("<PhysicalModelingXMLFile") {
             continue;
         }
-        let dir = xml.parent().expect("dir");
-        let tmp = tempfile::tempdir().expect("tmp");
-        let bundle: &Path = if files_with_ext(dir, &[".xml"]).len() == 1 {
-            dir
-        } else {
-            std::fs::copy(&xml, tmp.path().join(xml.file_name().expect("name"))).expect("copy");
-            tmp.path()
-        };
-        let out = convert_path(bundle, &options()).unwrap_or_else(|e| panic!("{}: {e}", xml.display()));
+        let (bundle, _tmp) = cad2mo_tests::common::fixture_bundle(&xml);
+        let out = convert_path(&bundle, &options()).unwrap_or_else(|e| panic!("{}: {e}", xml.display()));
         check(&xml.display().to_string(), &out);
         checked += 1;
     }

@@ -2,12 +2,11 @@
 //! joints match the XML, forward kinematics reproduces every frame, msl-check is clean, STL meshes
 //! are found for every body that names one, and the DXF we write reads back in ezdxf.
 
-use std::path::Path;
 use std::process::Command;
 
 use cad2mo::pipeline::Options;
 use cad2mo_tests::check::fk_check_with_inertia;
-use cad2mo_tests::common::{convert_path, files_with_ext, fixtures_dir, modelica_syntax_errors, msl_check, tools_required, workspace_root, write_output};
+use cad2mo_tests::common::{convert_path, files_with_ext, fixture_bundle, fixtures_dir, modelica_syntax_errors, msl_check, tools_required, workspace_root, write_output};
 use cad2mo_tests::truth::{xml_cgs, xml_frames, xml_mass_properties};
 
 fn is_first_generation(text: &str) -> bool {
@@ -21,18 +20,8 @@ fn every_fixture_xml_converts_and_reproduces_the_cad_pose() {
     for xml in files_with_ext(&fx, &[".xml"]) {
         let text = std::fs::read_to_string(&xml).expect("read xml");
         let rel = xml.strip_prefix(&fx).expect("under fixtures").display().to_string();
-        let bundle_dir = xml.parent().expect("folder");
-        // A folder holding one XML is the bundle; the XML alone otherwise.
-        let siblings = files_with_ext(bundle_dir, &[".xml"]).len();
-        let tmp = tempfile::tempdir().expect("tempdir");
-        let bundle: &Path = if siblings == 1 {
-            bundle_dir
-        } else {
-            let p = tmp.path().join(xml.file_name().expect("name"));
-            std::fs::copy(&xml, &p).expect("copy");
-            tmp.path()
-        };
-        let result = convert_path(bundle, &Options::default());
+        let (bundle, _tmp) = fixture_bundle(&xml);
+        let result = convert_path(&bundle, &Options::default());
         if !is_first_generation(&text) {
             let err = result.expect_err("second-generation XML must be refused");
             assert!(err.contains("second-generation") || err.contains("SimMechanicsImportXML") || err.contains("no first-generation"), "{rel}: {err}");

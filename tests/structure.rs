@@ -84,17 +84,8 @@ fn every_fixture_xml_has_no_redundant_equations() {
             continue;
         }
         let rel = xml.strip_prefix(&fx).expect("under fixtures").display().to_string();
-        // Like tests/fixtures.rs: a folder holding one XML is the bundle; the XML alone otherwise.
-        let bundle_dir = xml.parent().expect("folder");
-        let tmp = tempfile::tempdir().expect("tempdir");
-        let bundle: &Path = if files_with_ext(bundle_dir, &[".xml"]).len() == 1 {
-            bundle_dir
-        } else {
-            let p = tmp.path().join(xml.file_name().expect("name"));
-            std::fs::copy(&xml, &p).expect("copy");
-            tmp.path()
-        };
-        let out = match convert_path(bundle, &Options { write_shapes: false, ..Options::default() }) {
+        let (bundle, _tmp) = cad2mo_tests::common::fixture_bundle(&xml);
+        let out = match convert_path(&bundle, &Options { write_shapes: false, ..Options::default() }) {
             Ok(out) => out,
             Err(e) => {
                 failures.push(format!("{rel}: conversion failed: {e}"));

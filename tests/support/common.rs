@@ -122,3 +122,15 @@ pub fn modelica_syntax_errors(dir: &Path) -> Option<Vec<String>> {
     println!("NOTICE: rumoca-lint not installed; Modelica syntax check skipped");
     None
 }
+
+/// The bundle a fixture XML converts from: its folder when the XML is alone there, else a
+/// temporary folder holding only the XML. Keep the returned guard alive while the path is used.
+pub fn fixture_bundle(xml: &Path) -> (PathBuf, Option<tempfile::TempDir>) {
+    let dir = xml.parent().expect("folder");
+    if files_with_ext(dir, &[".xml"]).len() == 1 {
+        return (dir.to_path_buf(), None);
+    }
+    let tmp = tempfile::tempdir().expect("tempdir");
+    std::fs::copy(xml, tmp.path().join(xml.file_name().expect("name"))).expect("copy");
+    (tmp.path().to_path_buf(), Some(tmp))
+}
