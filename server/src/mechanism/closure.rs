@@ -30,8 +30,7 @@ pub struct Assembly {
 
 /// Two unit vectors perpendicular to unit `n` and to each other.
 fn perpendiculars(n: &Vector3<f64>) -> (Vector3<f64>, Vector3<f64>) {
-    let t = if n.x.abs() < 0.9 { Vector3::x() } else { Vector3::y() };
-    let e1 = (t - n * t.dot(n)).normalize();
+    let e1 = crate::pipeline::passes::loops::perpendicular(n);
     (e1, n.cross(&e1))
 }
 
@@ -44,13 +43,7 @@ impl Mechanism {
                 ClosureForm::Plain { .. } => 6,
                 ClosureForm::Planar { .. } => 2,
                 ClosureForm::Constraint { class, locked, .. } => {
-                    locked.iter().filter(|l| **l).count()
-                        + match class {
-                            ConstraintClass::Spherical => 0,
-                            ConstraintClass::Revolute => 2,
-                            ConstraintClass::Prismatic => 3,
-                            ConstraintClass::Universal => 1,
-                        }
+                    locked.iter().filter(|l| **l).count() + class.rotation_equations()
                 }
             })
             .sum()

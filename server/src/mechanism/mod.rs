@@ -36,7 +36,7 @@ mod rng;
 
 use std::collections::BTreeMap;
 
-use nalgebra::{Isometry3, Matrix3, UnitQuaternion, Vector3};
+use nalgebra::{Isometry3, Matrix3, Vector3};
 
 use crate::pipeline::back::modelica::{assign_with_hints, Hints, Layout};
 use crate::pipeline::ir::{BodyId, FrameId, FrameOwner, JointId, Model, PrimitiveKind};
@@ -156,12 +156,10 @@ pub struct Mechanism {
     pub(crate) closures: Vec<Closure>,
 }
 
+/// A tree link's motion at coordinate `q` (see [`crate::pipeline::passes::kinematics::element_motion`]).
 fn element_motion(prismatic: bool, axis: &Vector3<f64>, q: f64) -> Isometry3<f64> {
-    if prismatic {
-        Isometry3::translation(axis.x * q, axis.y * q, axis.z * q)
-    } else {
-        Isometry3::from_parts(nalgebra::Translation3::identity(), UnitQuaternion::from_scaled_axis(axis * q))
-    }
+    let kind = if prismatic { PrimitiveKind::Prismatic } else { PrimitiveKind::Revolute };
+    crate::pipeline::passes::kinematics::element_motion(kind, axis, q)
 }
 
 impl Mechanism {
@@ -323,7 +321,7 @@ impl Mechanism {
                 Cut::Constraint(cc) => {
                     let e = single()?;
                     let axes = Isometry3::from_parts(nalgebra::Translation3::identity(), cc.axes);
-                    let motion = element_motion(e.kind == PrimitiveKind::Prismatic, &e.axis, e.q0);
+                    let motion = e.motion(e.q0);
                     let offset = axes.inverse() * motion * chain.residual;
                     let a_at = Attachment { link: base.link, offset: base.offset * axes };
                     let b_at = Attachment { link: follower.link, offset: follower.offset * offset.inverse() };

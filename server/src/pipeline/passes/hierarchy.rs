@@ -74,17 +74,24 @@ pub fn node_of(model: &Model, f: FrameId) -> Node {
     }
 }
 
-struct Dsu(Vec<usize>);
+/// Union-find over `0..n` (path halving; the smaller root wins, so results do not depend on
+/// the order of unions).
+pub(super) struct Dsu(Vec<usize>);
 
 impl Dsu {
-    fn find(&mut self, mut x: usize) -> usize {
+    pub(super) fn new(n: usize) -> Dsu {
+        Dsu((0..n).collect())
+    }
+
+    pub(super) fn find(&mut self, mut x: usize) -> usize {
         while self.0[x] != x {
             self.0[x] = self.0[self.0[x]];
             x = self.0[x];
         }
         x
     }
-    fn union(&mut self, a: usize, b: usize) -> bool {
+    /// Joins the sets of `a` and `b`; false when they were one already.
+    pub(super) fn union(&mut self, a: usize, b: usize) -> bool {
         let (ra, rb) = (self.find(a), self.find(b));
         if ra == rb {
             return false;
@@ -111,7 +118,7 @@ pub fn build_with(model: &Model, cut_last: &BTreeSet<JointId>) -> Hierarchy {
         Node::Body(b) => b.index(),
         Node::Ground(g) => nb + g.index(),
     };
-    let mut dsu = Dsu((0..=world).collect());
+    let mut dsu = Dsu::new(world + 1);
     for g in 0..ng {
         dsu.union(nb + g, world);
     }

@@ -48,6 +48,23 @@ pub struct Chain {
     pub residual: Isometry3<f64>,
 }
 
+/// The motion of one element at coordinate `q`: a rotation about its unit `axis` by `q` rad
+/// (revolute) or a translation along it by `q` m (prismatic); the identity for the others.
+pub fn element_motion(kind: PrimitiveKind, axis: &Vector3<f64>, q: f64) -> Isometry3<f64> {
+    match kind {
+        PrimitiveKind::Revolute => Isometry3::from_parts(Translation3::identity(), UnitQuaternion::from_axis_angle(&Unit::new_unchecked(*axis), q)),
+        PrimitiveKind::Prismatic => Isometry3::translation(axis.x * q, axis.y * q, axis.z * q),
+        PrimitiveKind::Spherical | PrimitiveKind::Weld => Isometry3::identity(),
+    }
+}
+
+impl Element {
+    /// This element's motion at coordinate `q` ([`element_motion`]).
+    pub fn motion(&self, q: f64) -> Isometry3<f64> {
+        element_motion(self.kind, &self.axis, q)
+    }
+}
+
 /// Smallest residual translation (m) and rotation (rad) still emitted; below this the chain
 /// connects straight to the follower frame.
 pub const IDENTITY_TOL: f64 = 1e-12;

@@ -59,6 +59,16 @@ pub enum ConstraintClass {
 }
 
 impl ConstraintClass {
+    /// Rotational equations the class imposes (its translational ones are its locked axes).
+    pub fn rotation_equations(self) -> usize {
+        match self {
+            ConstraintClass::Spherical => 0,
+            ConstraintClass::Revolute => 2,
+            ConstraintClass::Prismatic => 3,
+            ConstraintClass::Universal => 1,
+        }
+    }
+
     pub fn name(self) -> &'static str {
         match self {
             ConstraintClass::Spherical => "Spherical",
@@ -226,14 +236,7 @@ fn snap_planar(model: &Model, h: &Hierarchy, chains: &mut [Chain]) -> Vec<Option
         .map(|l| if l.kind == LoopKind::Kinematic { planar_normal(&loop_joints(l), chains) } else { None })
         .collect();
     // Groups of planar loops sharing a joint, merged by union-find over loop indices.
-    let mut group: Vec<usize> = (0..normals.len()).collect();
-    fn find(g: &mut [usize], mut x: usize) -> usize {
-        while g[x] != x {
-            g[x] = g[g[x]];
-            x = g[x];
-        }
-        x
-    }
+    let mut group = hierarchy::Dsu::new(normals.len());
     let mut owner = vec![None; model.joints.len()];
     for (i, l) in h.loops.iter().enumerate() {
         let Some(n) = normals[i] else { continue };
@@ -241,8 +244,7 @@ fn snap_planar(model: &Model, h: &Hierarchy, chains: &mut [Chain]) -> Vec<Option
             match owner[j.index()] {
                 None => owner[j.index()] = Some(i),
                 Some(o) if normals[o].is_some_and(|m: Vector3<f64>| m.cross(&n).norm() <= PARALLEL_TOL) => {
-                    let (a, b) = (find(&mut group, o), find(&mut group, i));
-                    group[a.max(b)] = a.min(b);
+                    group.union(o, i);
                 }
                 Some(_) => {}
             }
@@ -251,7 +253,7 @@ fn snap_planar(model: &Model, h: &Hierarchy, chains: &mut [Chain]) -> Vec<Option
     let mut common: Vec<Vector3<f64>> = vec![Vector3::zeros(); normals.len()];
     for (i, normal) in normals.iter().enumerate() {
         if let Some(n) = *normal {
-            let r = find(&mut group, i);
+            let r = group.find(i);
             let n = if common[r].dot(&n) < 0.0 { -n } else { n };
             common[r] += n;
         }
@@ -261,7 +263,7 @@ fn snap_planar(model: &Model, h: &Hierarchy, chains: &mut [Chain]) -> Vec<Option
         if normals[i].is_none() {
             continue;
         }
-        let Some(n) = common[find(&mut group, i)].try_normalize(1e-12) else { continue };
+        let Some(n) = common[group.find(i)].try_normalize(1e-12) else { continue };
         out[i] = Some(n);
         for j in loop_joints(l) {
             if owner[j.index()] != Some(i) {
@@ -289,15 +291,21 @@ fn snap_planar(model: &Model, h: &Hierarchy, chains: &mut [Chain]) -> Vec<Option
 /// Twists of a chain's elements at the CAD pose, lengths relative to `c` and scaled by `1/len`:
 /// `[omega; v]` with `v` the velocity of the point at `c`.
 fn twists(chain: &Chain, c: &Vector3<f64>, len: f64) -> Vec<Vector6<f64>> {
+    element_twists(chain, c, len).into_iter().map(|(_, t)| t).collect()
+}
+
+/// [`twists`], each with the index of the chain element it belongs to (a spherical element has
+/// three).
+fn element_twists(chain: &Chain, c: &Vector3<f64>, len: f64) -> Vec<(usize, Vector6<f64>)> {
     let mut out = Vec::new();
-    for e in &chain.elements {
+    for (k, e) in chain.elements.iter().enumerate() {
         let p = (e.origin_world - c) / len;
         match e.kind {
-            PrimitiveKind::Revolute => out.push(stack(&e.axis_world, &p.cross(&e.axis_world))),
-            PrimitiveKind::Prismatic => out.push(stack(&Vector3::zeros(), &e.axis_world)),
+            PrimitiveKind::Revolute => out.push((k, stack(&e.axis_world, &p.cross(&e.axis_world)))),
+            PrimitiveKind::Prismatic => out.push((k, stack(&Vector3::zeros(), &e.axis_world))),
             PrimitiveKind::Spherical => {
                 for u in [Vector3::x(), Vector3::y(), Vector3::z()] {
-                    out.push(stack(&u, &p.cross(&u)));
+                    out.push((k, stack(&u, &p.cross(&u))));
                 }
             }
             PrimitiveKind::Weld => {}
@@ -386,6 +394,17 @@ impl RowBasis {
     }
 }
 
+/// One tree coordinate on some loop: a column of the cut equations.
+struct Column {
+    joint: JointId,
+    /// The chain element it moves.
+    element: usize,
+    /// Its place among the joint's columns (a spherical element has three).
+    index: usize,
+    /// Its unit twist (scaled like every twist here).
+    twist: Vector6<f64>,
+}
+
 /// A candidate cut: the form and its constraint wrenches (world, scaled).
 struct Candidate {
     cut: Cut,
@@ -402,7 +421,8 @@ fn cut_frame(frame: &Matrix3<f64>, axis: &Vector3<f64>, turn: f64) -> Matrix3<f6
     Matrix3::from_columns(&[x, z.cross(&x), z])
 }
 
-fn perpendicular(z: &Vector3<f64>) -> Vector3<f64> {
+/// A unit vector perpendicular to unit `z` (from world x, or y when `z` is near x).
+pub(crate) fn perpendicular(z: &Vector3<f64>) -> Vector3<f64> {
     let t = if z.x.abs() < 0.9 { Vector3::x() } else { Vector3::y() };
     (t - z * t.dot(z)).normalize()
 }
@@ -506,13 +526,13 @@ fn choose_cuts(
 
     // Columns: the elements of every tree joint on some loop.
     let mut column_of: Vec<Option<usize>> = vec![None; model.joints.len()];
-    let mut columns: Vec<(JointId, usize, Vector6<f64>)> = Vec::new();
+    let mut columns: Vec<Column> = Vec::new();
     for &i in &kinematic {
         for &j in &h.loops[i].path {
             if column_of[j.index()].is_none() {
                 column_of[j.index()] = Some(columns.len());
-                for (k, t) in twists(&chains[j.index()], &c, len).into_iter().enumerate() {
-                    columns.push((j, k, t));
+                for (k, (element, twist)) in element_twists(&chains[j.index()], &c, len).into_iter().enumerate() {
+                    columns.push(Column { joint: j, element, index: k, twist });
                 }
             }
         }
@@ -550,8 +570,7 @@ fn choose_cuts(
             let Some(start) = column_of[j.index()] else { continue };
             let n = dof(&chains[j.index()]);
             for k in 0..n {
-                let col = columns[start + k].2 * sign;
-                m.set_column(start + k, &(m.column(start + k) + col));
+                m.set_column(start + k, &(columns[start + k].twist * sign));
             }
         }
         // The loop alone: its twists' rank and mobility.
@@ -639,9 +658,7 @@ fn omitted(joint: &crate::pipeline::ir::Joint, code: &'static str, message: Stri
 fn element_frame(model: &Model, joint: &crate::pipeline::ir::Joint, chain: &Chain) -> Matrix3<f64> {
     let mut r = model.frame(joint.base).pose.rotation;
     for e in chain.elements.iter().take(chain.elements.len().saturating_sub(1)) {
-        if e.kind == PrimitiveKind::Revolute {
-            r *= UnitQuaternion::from_axis_angle(&nalgebra::Unit::new_normalize(e.axis), e.q0);
-        }
+        r *= e.motion(e.q0).rotation;
     }
     r.to_rotation_matrix().into_inner()
 }
@@ -680,7 +697,7 @@ fn explain(cut: &Cut, plain: &str, equations: usize, k: usize, planar: bool) -> 
 /// Marks the start values of loop coordinates: the dependent ones (a set of columns on which the
 /// cut equations have full rank, chosen far from the ground first, spherical elements always) get
 /// only a guess, the independent ones stay fixed. Closing joints are never fixed.
-fn fix_independent(h: &Hierarchy, chains: &mut [Chain], rows: &[DVector<f64>], columns: &[(JointId, usize, Vector6<f64>)]) {
+fn fix_independent(h: &Hierarchy, chains: &mut [Chain], rows: &[DVector<f64>], columns: &[Column]) {
     for l in h.loops.iter().filter(|l| l.kind == LoopKind::Kinematic) {
         for e in &mut chains[l.closing.index()].elements {
             e.fixed = false;
@@ -698,22 +715,12 @@ fn fix_independent(h: &Hierarchy, chains: &mut [Chain], rows: &[DVector<f64>], c
     if needed == 0 {
         return;
     }
-    // Column `c` of the equations, and the chain element it moves.
+    // Column `c` of the equations.
     let column = |c: usize| DVector::from_iterator(rows.len(), rows.iter().map(|r| r[c]));
-    let element_of = |j: JointId, col: usize| {
-        let mut seen = 0;
-        for (i, e) in chains[j.index()].elements.iter().enumerate() {
-            seen += if e.kind == PrimitiveKind::Spherical { 3 } else { 1 };
-            if col < seen {
-                return i;
-            }
-        }
-        0
-    };
     let bfs_rank = |j: JointId| h.tree.iter().position(|t| *t == j).unwrap_or(usize::MAX);
-    let spherical = |c: usize| chains[columns[c].0.index()].elements[element_of(columns[c].0, columns[c].1)].kind == PrimitiveKind::Spherical;
+    let spherical = |c: &Column| chains[c.joint.index()].elements[c.element].kind == PrimitiveKind::Spherical;
     let mut order: Vec<usize> = (0..columns.len()).collect();
-    order.sort_by_key(|&c| (!spherical(c), std::cmp::Reverse(bfs_rank(columns[c].0)), std::cmp::Reverse(columns[c].1)));
+    order.sort_by_key(|&c| (!spherical(&columns[c]), std::cmp::Reverse(bfs_rank(columns[c].joint)), std::cmp::Reverse(columns[c].index)));
     // Greedy: a column is dependent when it adds to the rank of the dependent columns so far.
     let mut basis: Vec<DVector<f64>> = Vec::new();
     let mut free = Vec::new();
@@ -728,7 +735,7 @@ fn fix_independent(h: &Hierarchy, chains: &mut [Chain], rows: &[DVector<f64>], c
         let norm = p.norm();
         if norm > RANK_TOL {
             basis.push(p / norm);
-            free.push((columns[c].0, element_of(columns[c].0, columns[c].1)));
+            free.push((columns[c].joint, columns[c].element));
         }
     }
     for (j, k) in free {

@@ -40,14 +40,7 @@ pub struct Absorbed {
 pub fn lump(model: &Model, h: &Hierarchy) -> Lumped {
     // Union-find over bodies through tree welds between two bodies.
     let nb = model.bodies.len();
-    let mut group: Vec<usize> = (0..nb).collect();
-    fn find(g: &mut [usize], mut x: usize) -> usize {
-        while g[x] != x {
-            g[x] = g[g[x]];
-            x = g[x];
-        }
-        x
-    }
+    let mut group = hierarchy::Dsu::new(nb);
     let mut internal: Vec<JointId> = Vec::new();
     for &j in &h.tree {
         let joint = model.joint(j);
@@ -57,10 +50,7 @@ pub fn lump(model: &Model, h: &Hierarchy) -> Lumped {
         if let (Node::Body(a), Node::Body(b)) =
             (hierarchy::node_of(model, joint.base), hierarchy::node_of(model, joint.follower))
         {
-            let (ra, rb) = (find(&mut group, a.index()), find(&mut group, b.index()));
-            if ra != rb {
-                group[ra.max(rb)] = ra.min(rb);
-            }
+            group.union(a.index(), b.index());
             internal.push(j);
         }
     }
@@ -72,7 +62,7 @@ pub fn lump(model: &Model, h: &Hierarchy) -> Lumped {
     }
     let mut members: BTreeMap<usize, Vec<BodyId>> = BTreeMap::new();
     for i in 0..nb {
-        let r = find(&mut group, i);
+        let r = group.find(i);
         members.entry(r).or_default().push(BodyId(i as u32));
     }
     let mut rep_of = vec![BodyId(0); nb];

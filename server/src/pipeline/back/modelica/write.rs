@@ -3,7 +3,7 @@
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 
-use nalgebra::{Isometry3, Matrix3, Translation3, Unit, UnitQuaternion, Vector3};
+use nalgebra::{Isometry3, Matrix3, Translation3, Vector3};
 
 use super::names::{self, sanitize, Names, Scope};
 use crate::pipeline::ir::{FrameId, FrameOwner, JointId, Model, PrimitiveKind};
@@ -311,15 +311,7 @@ impl Writer<'_> {
                     );
                     // The constraint's frame_b starts where its frame_a is: the element's own
                     // start motion moves into the offset.
-                    let motion = match e.kind {
-                        PrimitiveKind::Revolute => Isometry3::from_parts(
-                            Translation3::identity(),
-                            UnitQuaternion::from_axis_angle(&Unit::new_normalize(e.axis), e.q0),
-                        ),
-                        PrimitiveKind::Prismatic => Isometry3::translation(e.axis.x * e.q0, e.axis.y * e.q0, e.axis.z * e.q0),
-                        _ => Isometry3::identity(),
-                    };
-                    offset = axes.inverse() * motion * chain.residual;
+                    offset = axes.inverse() * e.motion(e.q0) * chain.residual;
                     match cc.class {
                         ConstraintClass::Spherical => "constraint-spherical",
                         ConstraintClass::Revolute => "constraint-revolute",
