@@ -9,8 +9,11 @@ use cad2mo::pipeline::{
     front::{simmechanics, stl, vrml},
 };
 
+/// A target's name and body.
+pub type Target = (&'static str, fn(&[u8]));
+
 /// The targets by name, as `fuzz/regressions/<name>/` and `cargo fuzz run <name>` call them.
-pub const TARGETS: [(&str, fn(&[u8])); 5] =
+pub const TARGETS: [Target; 5] =
     [("xml", xml), ("stl", stl), ("vrml", vrml), ("bundle_zip", bundle_zip), ("convert", convert)];
 
 /// First-generation SimMechanics XML bytes -> `front::simmechanics::parse` (and the sniffer).
