@@ -60,15 +60,18 @@ impl App {
         &self.state
     }
 
-    /// Serves until Ctrl-C (or the task is dropped).
+    /// Serves until Ctrl-C (or the task is dropped), then halts the workers: running jobs stay
+    /// `running` and the next start redoes them.
     pub async fn run_until_stopped(self) -> anyhow::Result<()> {
         let router = crate::api::router(self.state.clone())
             .layer(tower_http::trace::TraceLayer::new_for_http());
-        axum::serve(self.listener, router)
+        let served = axum::serve(self.listener, router)
             .with_graceful_shutdown(async {
                 let _ = tokio::signal::ctrl_c().await;
             })
             .await
-            .context("serving")
+            .context("serving");
+        self.state.jobs.halt().await;
+        served
     }
 }

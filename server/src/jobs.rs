@@ -28,7 +28,10 @@
 //! it never touches the database.
 //!
 //! Shutdown: the dispatcher stops when the last [`Jobs`] handle is dropped (the app's state);
-//! queued jobs wait in the table for the next start.
+//! queued jobs wait in the table for the next start. [`Jobs::halt`] stops it at once, like a
+//! kill: running jobs are abandoned (still `running` in the table, re-queued by the next start)
+//! and none of them records anything afterwards. The server halts on Ctrl-C; tests halt the
+//! server they stop, so that its jobs cannot finish behind the back of the next one.
 
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex};
@@ -36,7 +39,8 @@ use std::time::Duration;
 
 use serde::Serialize;
 
-use tokio::sync::{mpsc, Semaphore};
+use tokio::sync::{mpsc, watch, Semaphore};
+use tokio::task::{JoinHandle, JoinSet};
 use tracing::Instrument;
 
 use crate::api::ApiError;
@@ -55,6 +59,14 @@ pub const MAX_ATTEMPTS: i64 = 3;
 pub struct Jobs {
     wake: mpsc::Sender<()>,
     board: ProgressBoard,
+    halt: Arc<Halt>,
+}
+
+/// Stops the dispatcher: the signal, and the dispatcher's task to wait for.
+#[derive(Debug)]
+struct Halt {
+    signal: watch::Sender<bool>,
+    dispatcher: Mutex<Option<JoinHandle<()>>>,
 }
 
 #[derive(Clone)]
@@ -152,8 +164,10 @@ impl Jobs {
         let (wake, rx) = mpsc::channel(1);
         let board = ProgressBoard::default();
         let ctx = Ctx { store, blobs, board: board.clone() };
-        tokio::spawn(dispatch(ctx, workers.max(1), rx).instrument(tracing::info_span!("jobs")));
-        let jobs = Jobs { wake, board };
+        let (signal, halted) = watch::channel(false);
+        let dispatcher = tokio::spawn(dispatch(ctx, workers.max(1), rx, halted).instrument(tracing::info_span!("jobs")));
+        let halt = Arc::new(Halt { signal, dispatcher: Mutex::new(Some(dispatcher)) });
+        let jobs = Jobs { wake, board, halt };
         jobs.notify(); // pick up what is already queued
         Ok(jobs)
     }
@@ -168,19 +182,38 @@ impl Jobs {
     pub fn progress(&self, job_id: &str) -> Option<JobProgress> {
         self.board.get(job_id)
     }
+
+    /// Stops claiming and abandons the running jobs (see the module doc); returns once no job
+    /// of this pool can touch the database any more. Later calls return at once.
+    pub async fn halt(&self) {
+        let _ = self.halt.signal.send(true);
+        let dispatcher = self.halt.dispatcher.lock().unwrap_or_else(|p| p.into_inner()).take();
+        if let Some(d) = dispatcher {
+            let _ = d.await;
+        }
+    }
 }
 
 /// Claims queued jobs while permits are free; sleeps until notified when nothing is queued.
-async fn dispatch(ctx: Ctx, workers: usize, mut wake: mpsc::Receiver<()>) {
+/// Running jobs live in a [`JoinSet`] so that a halt can abandon them.
+async fn dispatch(ctx: Ctx, workers: usize, mut wake: mpsc::Receiver<()>, mut halted: watch::Receiver<bool>) {
     let permits = Arc::new(Semaphore::new(workers));
+    let mut running = JoinSet::new();
     tracing::info!(workers, "job workers started");
     loop {
-        let Ok(permit) = permits.clone().acquire_owned().await else { return };
+        while running.try_join_next().is_some() {}
+        let permit = tokio::select! {
+            p = permits.clone().acquire_owned() => match p { Ok(p) => p, Err(_) => break },
+            () = halt_requested(&mut halted) => break,
+        };
+        if halted_now(&halted) {
+            break;
+        }
         match models::claim_next_job(&ctx.store.pool).await {
             Ok(Some(job)) => {
                 let span = tracing::info_span!("job", job_id = %job.id, kind = %job.kind, model_id = %job.model_id, version = job.version);
                 let ctx = ctx.clone();
-                tokio::spawn(
+                running.spawn(
                     async move {
                         run(&ctx, job).await;
                         drop(permit);
@@ -195,8 +228,11 @@ async fn dispatch(ctx: Ctx, workers: usize, mut wake: mpsc::Receiver<()>) {
                 tokio::select! {
                     w = wake.recv() => if w.is_none() {
                         tracing::info!("job workers stopped");
+                        // The last handle is gone, but jobs already running finish.
+                        while running.join_next().await.is_some() {}
                         return;
                     },
+                    () = halt_requested(&mut halted) => break,
                     () = tokio::time::sleep(Duration::from_millis(100)) => {}
                 }
             }
@@ -205,11 +241,34 @@ async fn dispatch(ctx: Ctx, workers: usize, mut wake: mpsc::Receiver<()>) {
                 tracing::error!(error = %e, "claiming a job failed; retrying");
                 tokio::select! {
                     () = tokio::time::sleep(Duration::from_secs(1)) => {}
-                    w = wake.recv() => if w.is_none() { return },
+                    w = wake.recv() => if w.is_none() {
+                        while running.join_next().await.is_some() {}
+                        return;
+                    },
+                    () = halt_requested(&mut halted) => break,
                 }
             }
         }
     }
+    let abandoned = running.len();
+    running.shutdown().await;
+    tracing::info!(abandoned, "job workers halted");
+}
+
+/// Resolves once a halt is requested (never when the sender is gone without one).
+async fn halt_requested(halted: &mut watch::Receiver<bool>) {
+    loop {
+        if halted_now(halted) {
+            return;
+        }
+        if halted.changed().await.is_err() {
+            std::future::pending::<()>().await;
+        }
+    }
+}
+
+fn halted_now(halted: &watch::Receiver<bool>) -> bool {
+    *halted.borrow()
 }
 
 /// Runs one claimed job to `succeeded` or `failed`.

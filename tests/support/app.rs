@@ -14,6 +14,7 @@ pub struct TestApp {
     pub client: reqwest::Client,
     dir: Option<tempfile::TempDir>,
     handle: Option<tokio::task::JoinHandle<()>>,
+    jobs: cad2mo::jobs::Jobs,
 }
 
 impl Drop for TestApp {
@@ -42,10 +43,11 @@ impl TestApp {
         tweak(&mut settings);
         let app = App::build(settings).await.expect("app builds");
         let address = format!("http://{}", app.local_addr());
+        let jobs = app.state().jobs.clone();
         let handle = tokio::spawn(async move {
             let _ = app.run_until_stopped().await;
         });
-        TestApp { address, client: ui_client(), dir: Some(dir), handle: Some(handle) }
+        TestApp { address, client: ui_client(), dir: Some(dir), handle: Some(handle), jobs }
     }
 
     /// The data folder (database and blobs).
@@ -53,12 +55,14 @@ impl TestApp {
         self.dir.as_ref().expect("data folder").path()
     }
 
-    /// Stops the server abruptly (like a kill) and hands back its data folder.
+    /// Stops the server abruptly (like a kill: its running jobs are abandoned, never recorded)
+    /// and hands back its data folder.
     pub async fn stop(mut self) -> tempfile::TempDir {
         if let Some(h) = self.handle.take() {
             h.abort();
             let _ = h.await;
         }
+        self.jobs.halt().await;
         self.dir.take().expect("data folder")
     }
 
