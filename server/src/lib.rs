@@ -20,6 +20,7 @@ pub mod jobs;
 pub mod library;
 pub mod mechanism;
 pub mod motion;
+pub mod motions;
 pub mod pipeline;
 pub mod store;
 pub mod telemetry;
