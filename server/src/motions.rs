@@ -99,7 +99,9 @@ impl Kinematic {
 
 /// A few analysed versions, most recently used last (analysis of a large bundle takes seconds).
 #[derive(Clone, Default)]
-pub struct Cache(Arc<Mutex<Vec<(String, Arc<Kinematic>)>>>);
+pub struct Cache(Arc<Mutex<Vec<CacheEntry>>>);
+
+type CacheEntry = (String, Arc<Kinematic>);
 
 impl Cache {
     const SIZE: usize = 8;

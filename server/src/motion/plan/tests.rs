@@ -5,9 +5,7 @@ use super::*;
 use crate::pipeline::front::bundle::Bundle;
 use crate::pipeline::{self, Options};
 
-#[path = "../../../benches/support/gen.rs"]
-#[allow(dead_code)]
-mod gen;
+use crate::testgen as gen;
 
 fn arm() -> Mechanism {
     let bundle = Bundle::from_files("gen", [("arm.xml".to_string(), gen::serial_arm_xml(6).into_bytes())]).expect("bundle");
