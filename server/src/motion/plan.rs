@@ -696,6 +696,7 @@ pub fn inverse_dynamics(
 
 /// [`inverse_dynamics`] of a loop mechanism from [`Planned::closed_samples`]: the driven joints'
 /// torques (followers 0) and the inertia each driven joint sees.
+#[allow(clippy::needless_range_loop)] // samples index every axis's column
 fn driven_dynamics(
     mech: &Mechanism,
     s: &Samples,
