@@ -100,6 +100,7 @@ pub fn check_slots(instances: &[(&str, &Instance, &Class)], overrides: &Map<Stri
 }
 
 /// The class path and values of one slot: the instance's values with the overrides applied.
+/// Datasheet values are not Modelica parameters and are left out.
 pub fn choice(class: &Class, inst: &Instance, overrides: Option<&Json>) -> Result<ClassChoice, Vec<Issue>> {
     let over = match overrides.and_then(Json::as_object) {
         Some(map) => crate::library::validate_overrides(class, map)?,
@@ -108,6 +109,7 @@ pub fn choice(class: &Class, inst: &Instance, overrides: Option<&Json>) -> Resul
     let params = inst
         .values
         .iter()
+        .filter(|(name, _)| !class.parameter(name).is_some_and(|p| p.datasheet))
         .map(|(name, v)| {
             let v = over.iter().find(|(n, _)| n == name).map(|(_, o)| o).unwrap_or(v);
             (name.clone(), to_param(v))
