@@ -226,6 +226,18 @@ mod tests {
     use super::*;
     use crate::pipeline::front::bundle::Limits;
 
+    /// Datasheet values are no Modelica parameters: a drive's class choice leaves them out.
+    #[test]
+    fn datasheet_values_are_not_modifiers() {
+        let lib = crate::library::seed::library().expect("seed");
+        let re40 = lib.instances.iter().find(|i| i.id == crate::library::seed::MAXON_RE40).expect("RE 40");
+        let class = lib.class(&re40.class_id).expect("class");
+        assert!(re40.value("T_nom").is_some());
+        let c = choice(class, re40, None).expect("choice");
+        let names: Vec<&str> = c.params.iter().map(|(n, _)| n.as_str()).collect();
+        assert_eq!(names, ["R", "L", "k", "J", "d", "V_max", "I_max", "Tc"]);
+    }
+
     /// Loop cuts emitted as constraints have no drive flange, so they are never offered.
     #[test]
     fn loop_cuts_are_not_drivable() {
