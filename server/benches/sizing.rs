@@ -30,7 +30,8 @@ fn axes(t: &[f64]) -> Vec<Axis> {
             let (amp, period) = if prismatic { (0.2, 4.0) } else { (1.0 + 0.2 * k as f64, 2.5 + 0.5 * k as f64) };
             let w = 2.0 * PI / period;
             // Link inertia (kg·m²) and gravity moment (N·m); the slide's mass (kg) and weight (N).
-            let (j, mgl, visc) = if prismatic { (8.0, 8.0 * 9.81, 20.0) } else { (2.0 / (1.0 + k as f64), 30.0 / (1.0 + k as f64), 0.5) };
+            let (j, mgl, visc) =
+                if prismatic { (8.0, 8.0 * 9.81, 20.0) } else { (2.0 / (1.0 + k as f64), 30.0 / (1.0 + k as f64), 0.5) };
             let (mut qd, mut qdd, mut tau) = (Vec::new(), Vec::new(), Vec::new());
             for &x in t {
                 let q = amp * (w * x).sin();
@@ -41,7 +42,14 @@ fn axes(t: &[f64]) -> Vec<Axis> {
                 qdd.push(a);
                 tau.push(j * a + g + visc * v);
             }
-            Axis { name: format!("J{}", k + 1), kind: if prismatic { JointKind::Prismatic } else { JointKind::Revolute }, qd, qdd, tau, inertia: j }
+            Axis {
+                name: format!("J{}", k + 1),
+                kind: if prismatic { JointKind::Prismatic } else { JointKind::Revolute },
+                qd,
+                qdd,
+                tau,
+                inertia: j,
+            }
         })
         .collect()
 }
@@ -70,8 +78,7 @@ fn bench(c: &mut Criterion) {
     let motor = sizing::parts::motor(&mc, &mi, &[]).expect("motor");
     let gear = sizing::parts::gear(&gc, &gi, &[]).expect("gear");
     let screw = sizing::parts::gear(&sc, &si, &[]).expect("screw");
-    let drives: Vec<(Motor, Gear)> =
-        (0..6).map(|k| (motor.clone(), if k == 5 { screw.clone() } else { gear.clone() })).collect();
+    let drives: Vec<(Motor, Gear)> = (0..6).map(|k| (motor.clone(), if k == 5 { screw.clone() } else { gear.clone() })).collect();
     let t: Vec<f64> = (0..=10_000).map(|i| i as f64 * 1e-3).collect();
     let axes = axes(&t);
     let combos: usize = catalog.gears.iter().map(|g| sizing::ratios(g).len()).sum::<usize>() * catalog.motors.len();

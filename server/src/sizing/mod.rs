@@ -351,7 +351,13 @@ impl Outcome {
     ) {
         match limit {
             Some(limit) => {
-                let margin = if limit > 0.0 { (limit - value) / limit } else if value > 0.0 { f64::NEG_INFINITY } else { 0.0 };
+                let margin = if limit > 0.0 {
+                    (limit - value) / limit
+                } else if value > 0.0 {
+                    f64::NEG_INFINITY
+                } else {
+                    0.0
+                };
                 // An infinite margin cannot be written as JSON: clamp to the worst finite one.
                 let margin = margin.max(-f64::MAX);
                 self.checks.push(Check {
@@ -399,15 +405,7 @@ fn evaluate(axis: &Axis, motor: &Motor, gear: &Gear, ratio: f64) -> Outcome {
         format!("over the cycle of {} s; limit: nominal (continuous) torque", short(axis.cycle)),
     );
     o.limit("motor_speed", "Maximum motor speed", s.max_w.0, motor.w_max, "motor.w_max", "rad/s", axis.at(s.max_w.1));
-    o.limit(
-        "voltage",
-        "Motor voltage U = R·T/k + k·ω",
-        s.max_u.0,
-        motor.v_max,
-        "motor.V_max",
-        "V",
-        axis.at(s.max_u.1),
-    );
+    o.limit("voltage", "Motor voltage U = R·T/k + k·ω", s.max_u.0, motor.v_max, "motor.V_max", "V", axis.at(s.max_u.1));
     o.limit("gear_input_speed", "Gear input speed", s.max_w.0, gear.w_in_max, "gear.w_in_max", "rad/s", axis.at(s.max_w.1));
     let missing_peak = format!("gear.{}", gear.out_peak_name());
     o.limit(
