@@ -5,6 +5,11 @@
 //!
 //! Ids are fixed, so every installation has the same seed ids and an exported seed library is
 //! the same file everywhere.
+//!
+//! Motor and gear classes also declare datasheet parameters (`T_nom`, `T_peak`, `w_max`;
+//! `T_rated`, `T_peak`, `w_in_max`, `J_in`; a screw's `F_peak`) for the drive sizing. An instance
+//! carries only the ones its source prints and we could verify; its `source` says which, and why
+//! the others are left out. Migration 0005 brings installations seeded before them to this seed.
 
 use serde_json::{json, Map, Value as Json};
 

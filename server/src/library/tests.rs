@@ -360,6 +360,16 @@ fn the_seed_is_valid_and_ids_are_unique() {
     assert!((w - 6940.0 * std::f64::consts::PI / 30.0).abs() < 1e-9, "{w}");
     let gp42 = lib.instances.iter().find(|i| i.id == seed::MAXON_GP42C_74).expect("GP 42 C");
     assert_eq!(gp42.value("eta"), Some(&Value::Real(0.72)));
+    assert_eq!(gp42.value("T_peak"), Some(&Value::Real(22.5)));
+    // Datasheet values: CSF-17-100 ratings, in SI units.
+    let csf = lib.instances.iter().find(|i| i.id == seed::GEAR_100).expect("CSF-17-100");
+    assert_eq!(csf.value("T_rated"), Some(&Value::Real(31.0)));
+    assert_eq!(csf.value("T_peak"), Some(&Value::Real(70.0)));
+    assert_eq!(csf.value("J_in"), Some(&Value::Real(7.9e-6)));
+    let w = csf.value("w_in_max").and_then(Value::as_f64).expect("w_in_max");
+    assert!((w - 7300.0 * std::f64::consts::PI / 30.0).abs() < 1e-9, "{w}");
+    assert_eq!(re40.value("T_nom"), Some(&Value::Real(0.17)));
+    assert_eq!(re40.value("T_peak"), None, "maxon prints no peak torque");
     // Gear ratios, efficiencies and controller gains are editable; motor values are not.
     for c in &lib.classes {
         for p in &c.parameters {
