@@ -104,5 +104,58 @@ fn bench(c: &mut Criterion) {
     });
 }
 
-criterion_group!(benches, bench);
+/// The service's whole path for one motion on a real mechanism: plan a 10 s motion of the
+/// generated 6-DoF arm (PTP segments through four keyframes and dwells), sample it at 1 kHz,
+/// run the inverse dynamics with gravity at every sample, and size a drive on every joint
+/// against the seed library (what `GET .../motions/{id}/sizing` computes).
+fn bench_full(c: &mut Criterion) {
+    use cad2mo::mechanism::Mechanism;
+    use cad2mo::motion::plan::{self as mplan, Interpolation, Keyframe, MotionSpec, Target};
+    use cad2mo::pipeline::front::bundle::Bundle;
+    let bundle = Bundle::from_files("gen", [("arm.xml".to_string(), gen::serial_arm_xml(6).into_bytes())]).expect("bundle");
+    let a = cad2mo::pipeline::analyse(&bundle, &cad2mo::pipeline::Options::default()).expect("analyses");
+    let mech = Mechanism::from_validated(&a.model, &a.validated).expect("mechanism");
+    let axes = mplan::axes(&mech, &Default::default());
+    let key = |f: f64| Keyframe {
+        target: Target::Joints { values: axes.iter().enumerate().map(|(i, ax)| (ax.name.clone(), ax.q0 + f * (0.3 + 0.1 * i as f64))).collect() },
+        interpolation: Interpolation::Ptp,
+        duration: Some(2.0),
+        dwell: Some(0.5),
+    };
+    let spec = MotionSpec { name: "cycle".into(), keyframes: vec![key(0.0), key(1.0), key(-1.0), key(0.5), key(0.0)] };
+    let lib = seed::library().expect("seed");
+    let catalog = Catalog::from_library(&lib);
+    let (mc, mi) = part(&lib, seed::MAXON_RE40);
+    let (gc, gi) = part(&lib, seed::GEAR_100);
+    let motor = sizing::parts::motor(&mc, &mi, &[]).expect("motor");
+    let gear = sizing::parts::gear(&gc, &gi, &[]).expect("gear");
+    let g = nalgebra::Vector3::new(0.0, 0.0, -9.81);
+    let full = || {
+        let p = mplan::plan(&mech, &axes, &spec).expect("plans");
+        let s = p.closed_samples(&mech, 1000.0).expect("samples");
+        let (tau, inertia) = mplan::inverse_dynamics(&mech, &s, &g, 10).expect("inverse dynamics");
+        let out: Vec<DriveSizing> = axes
+            .iter()
+            .enumerate()
+            .map(|(i, ax)| {
+                let load = AxisLoad { joint: &ax.name, kind: JointKind::Revolute, t: &s.t, qd: &s.qd[i], qdd: &s.qdd[i], tau: &tau[i], load_inertia: inertia[i] };
+                sizing::size_drive(load, &motor, &gear, Some(&catalog), sizing::TOP).expect("sizes")
+            })
+            .collect();
+        (s.t.len(), out)
+    };
+    let (n, _) = full();
+    let start = Instant::now();
+    for _ in 0..5 {
+        black_box(full());
+    }
+    println!("sizing (full path): plan + {n} samples + inverse dynamics + 6 drives against the seed library: {:.1} ms", start.elapsed().as_secs_f64() / 5.0 * 1e3);
+    c.bench_function("sizing/full path, 6-DoF arm, 10 s at 1 kHz", |b| b.iter(|| black_box(full())));
+}
+
+#[path = "support/gen.rs"]
+#[allow(dead_code)]
+mod gen;
+
+criterion_group!(benches, bench, bench_full);
 criterion_main!(benches);
