@@ -16,6 +16,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { launch, waitForModel, checkModelPixels, checkLabels } from './lib.mjs';
+import { motionSteps } from './motion.mjs';
 
 const url = process.env.CAD2MO_URL;
 const bundle = process.env.CAD2MO_BUNDLE;
@@ -169,6 +170,10 @@ try {
   const packagePath = join(downloads, pkg.suggestedFilename());
   await pkg.saveAs(packagePath);
 
+  // ---- Motion (issue 12): editor, IK gizmo, player, plots, sizing, limits, the motion in the package.
+  const motion = await motionSteps(page, { joint, step, shot, downloads, strictExport: true });
+  await checkLabels(page, 'the motion tab');
+
   // ---- Motor library: an invalid value is refused, a valid edit sticks; export and re-import.
   step('library');
   await page.getByRole('link', { name: 'Motor library' }).click();
@@ -307,7 +312,7 @@ try {
   assert.ok(overflowLib <= 1, `the library is ${overflowLib}px wider than a narrow window`);
 
   assert.deepEqual(consoleErrors, [], 'the page logged errors');
-  console.log(JSON.stringify({ joint, package: packagePath, library: libraryPath }));
+  console.log(JSON.stringify({ joint, package: packagePath, library: libraryPath, motion }));
 } finally {
   await browser.close();
 }
