@@ -118,20 +118,25 @@ export async function renderViewer(main, id, v, initialTab) {
     { id: 'structure', label: 'Structure', render: (p) => renderStructure(p) },
     { id: 'report', label: 'Report', render: (p) => renderReport(p) },
     { id: 'drives', label: 'Drives', render: (p) => renderDrives(p, { modelId: id, version, report, select, selected: () => selection, onSelect: (f) => listeners.add(f) }) },
-    { id: 'motion', label: 'Motion', render: (p) => (motion = renderMotion(p, { modelId: id, version, report, viewer, setJoints, currentJoints, say })) },
+    { id: 'motion', label: 'Motion', render: (p) => (motion = renderMotion(p, { modelId: id, version, report, viewer, setJoints, currentJoints, say, stage: motionStage })) },
   ];
   let motion = null;
+  // The motion's player, plots and sizing go under the 3D view, shown with the Motion tab.
+  const motionStage = h('div', { class: 'motion-stage', hidden: true });
   const t = tabs(tabSpec, {
     initial: tabSpec.some((x) => x.id === initialTab) ? initialTab : 'structure',
     label: 'Model details',
-    onChange: (tab) => history.replaceState(null, '', `#/models/${enc(id)}/versions/${v}${tab === 'structure' ? '' : '/' + tab}`),
+    onChange: (tab) => {
+      motionStage.hidden = tab !== 'motion';
+      history.replaceState(null, '', `#/models/${enc(id)}/versions/${v}${tab === 'structure' ? '' : '/' + tab}`);
+    },
   });
 
   fill(
     main,
     h('p', { class: 'crumbs' }, h('a', { href: '#/models' }, 'Models'), ' / ', h('a', { href: `#/models/${enc(id)}` }, model.name), ' / ', `v${v}`),
     h('h1', {}, `${model.name} `, h('small', { class: 'muted' }, `v${v} · package ${report.package_name}`)),
-    h('div', { class: 'model-layout' }, h('section', { class: 'view3d', 'aria-label': '3D view' }, toolbar, stage, info, details), h('section', { class: 'side' }, t.el)),
+    h('div', { class: 'model-layout' }, h('section', { class: 'view3d', 'aria-label': '3D view' }, toolbar, stage, info, details, motionStage), h('section', { class: 'side' }, t.el)),
   );
 
 

@@ -45,18 +45,10 @@ export function renderMotion(panel, ctx) {
   const plotsBox = h('div', { class: 'plots-box' });
   const sizingBox = h('div', { class: 'sizing-box' });
   const limitsBox = h('div', { class: 'limits-box' });
-  fill(
-    panel,
-    h('h2', {}, 'Motions'),
-    listBox,
-    editorBox,
-    gizmoBox,
-    playerBox,
-    plotsBox,
-    sizingBox,
-    h('h2', {}, 'Joint limits'),
-    limitsBox,
-  );
+  fill(panel, h('h2', {}, 'Motions'), listBox, editorBox, gizmoBox, h('h2', {}, 'Joint limits'), limitsBox);
+  // Under the 3D view (wider), or in the tab where there is no such place.
+  if (ctx.stage) fill(ctx.stage, playerBox, plotsBox, sizingBox);
+  else panel.append(playerBox, plotsBox, sizingBox);
 
   const jointInfo = (name) => joints?.joints.find((j) => j.name === name);
   const scaleOf = (name) => displayScale(jointInfo(name)?.unit || 'rad');
