@@ -26,6 +26,8 @@ pub struct AppState {
     pub jobs: Jobs,
     /// Permits for upload checks (`settings.max_checks`): bounds the bundles analysed at once.
     pub checks: Arc<tokio::sync::Semaphore>,
+    /// Analysed versions for motions (a few, most recently used).
+    pub kinematics: crate::motions::Cache,
     /// The address actually bound (port 0 resolved): the `Host` the service answers to.
     pub addr: SocketAddr,
 }
@@ -48,7 +50,7 @@ impl App {
             .context("starting the conversion workers")?;
         let addr = listener.local_addr().unwrap_or(settings.bind);
         let checks = Arc::new(tokio::sync::Semaphore::new(settings.max_checks.max(1)));
-        let state = AppState { settings: Arc::new(settings), store, blobs, jobs, checks, addr };
+        let state = AppState { settings: Arc::new(settings), store, blobs, jobs, checks, addr, kinematics: Default::default() };
         Ok(App { listener, state })
     }
 

@@ -20,6 +20,13 @@ pub mod jobs;
 pub mod library;
 pub mod mechanism;
 pub mod motion;
+pub mod motions;
 pub mod pipeline;
 pub mod store;
 pub mod telemetry;
+
+/// Generated test models (shared with the benchmarks).
+#[cfg(test)]
+#[path = "../benches/support/gen.rs"]
+#[allow(dead_code)]
+pub(crate) mod testgen;

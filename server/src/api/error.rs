@@ -26,6 +26,9 @@ pub enum ApiError {
     BadRequest(String),
     #[error("{detail}")]
     Invalid { detail: String, errors: Vec<FieldError> },
+    /// A motion that cannot be planned (IK failed, limits violated, unknown joint, ...).
+    #[error("{detail}")]
+    MotionInvalid { detail: String, errors: Vec<FieldError> },
     #[error("{0}")]
     Conflict(String),
     #[error("the upload exceeds the limit of {limit} bytes")]
@@ -100,6 +103,7 @@ impl ApiError {
             ApiError::NotFound(_) => (StatusCode::NOT_FOUND, "not-found", "Not found"),
             ApiError::BadRequest(_) => (StatusCode::BAD_REQUEST, "bad-request", "Bad request"),
             ApiError::Invalid { .. } => (StatusCode::UNPROCESSABLE_ENTITY, "invalid", "Invalid input"),
+            ApiError::MotionInvalid { .. } => (StatusCode::UNPROCESSABLE_ENTITY, "motion-invalid", "Motion cannot be planned"),
             ApiError::Conflict(_) => (StatusCode::CONFLICT, "conflict", "Conflict"),
             ApiError::PayloadTooLarge { .. } => (StatusCode::PAYLOAD_TOO_LARGE, "payload-too-large", "Upload too large"),
             ApiError::Unauthorized => (StatusCode::UNAUTHORIZED, "unauthorized", "Unauthorized"),
@@ -119,7 +123,7 @@ impl ApiError {
     pub fn problem_json(&self) -> serde_json::Value {
         let (status, slug, title) = self.parts();
         let (errors, diagnostics) = match self {
-            ApiError::Invalid { errors, .. } => (errors.clone(), Vec::new()),
+            ApiError::Invalid { errors, .. } | ApiError::MotionInvalid { errors, .. } => (errors.clone(), Vec::new()),
             ApiError::Conversion(e) => (Vec::new(), e.diagnostics()),
             _ => (Vec::new(), Vec::new()),
         };

@@ -11,6 +11,7 @@ mod health;
 mod jobs;
 mod library;
 mod models;
+mod motions;
 mod openapi;
 mod web;
 
@@ -29,6 +30,7 @@ pub fn router(state: AppState) -> Router {
         .merge(jobs::router())
         .merge(library::router())
         .merge(drives::router())
+        .merge(motions::router())
         .merge(web::router())
         .layer(axum::middleware::from_fn_with_state(cache::LibraryCache::default(), cache::library_cache))
         .layer(axum::middleware::from_fn_with_state(

@@ -10,9 +10,7 @@ use super::*;
 use crate::pipeline::front::bundle::{Bundle, Limits};
 use crate::pipeline::{self, Analysed, Options};
 
-#[path = "../../benches/support/gen.rs"]
-#[allow(dead_code)]
-mod gen;
+use crate::testgen as gen;
 
 fn analyse_dir(dir: &Path) -> Option<Analysed> {
     let bundle = crate::cli::read_bundle(dir, &Limits::default()).ok()?;

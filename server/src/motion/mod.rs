@@ -17,6 +17,11 @@
 //!
 //! A [`Profile`] answers `sample(t) -> (q, qd, qdd)` for any `t` (held at the ends outside
 //! `[0, duration]`).
+//!
+//! [`plan`] turns a user's motion (keyframes, with inverse kinematics for tool poses) into one
+//! timed joint trajectory of a [`crate::mechanism::Mechanism`] from these profiles.
+
+pub mod plan;
 
 use serde::{Deserialize, Serialize};
 
@@ -228,7 +233,18 @@ pub struct Limits {
 
 impl JerkLimited {
     pub fn new(q_begin: &[f64], q_end: &[f64], limits: &Limits) -> Result<JerkLimited, ProfileError> {
+        Self::at_least(q_begin, q_end, limits, None)
+    }
+
+    /// [`JerkLimited::new`], taking at least `min_duration` seconds when given (Ruckig's
+    /// minimum duration: the profile is slowed, not padded with a hold).
+    pub fn at_least(q_begin: &[f64], q_end: &[f64], limits: &Limits, min_duration: Option<f64>) -> Result<JerkLimited, ProfileError> {
         let n = q_begin.len();
+        if let Some(d) = min_duration {
+            if !(d.is_finite() && d >= 0.0) {
+                return Err(ProfileError::BadDuration(d));
+            }
+        }
         check_positions("start position", q_begin, n)?;
         check_positions("end position", q_end, n)?;
         check_limits("speed limit", &limits.qd_max, n)?;
@@ -252,6 +268,7 @@ impl JerkLimited {
             input.max_acceleration[i] = limits.qdd_max[i];
             input.max_jerk[i] = limits.qddd_max[i];
         }
+        input.minimum_duration = min_duration;
         let mut trajectory = Trajectory::<0>::new(Some(n));
         otg.calculate(&input, &mut trajectory).map_err(|e| ProfileError::Ruckig(e.to_string()))?;
         let duration = trajectory.get_duration();

@@ -5,6 +5,7 @@ pub mod blobs;
 pub mod drives;
 pub mod library;
 pub mod models;
+pub mod motions;
 pub mod tokens;
 
 use std::str::FromStr;

@@ -1,0 +1,257 @@
+//! Motions on a converted version: the glue between stored data (limits, motion specs, the
+//! version's bundle and names) and the computation modules ([`crate::mechanism`],
+//! [`crate::motion`], `crate::sizing`). No HTTP, no SQL: the API and the job worker call it.
+//!
+//! [`Kinematic::load`] analyses a version's bundle again (front ends, passes, validation; no
+//! shapes) and names every coordinate exactly as the version's package does (its report's names
+//! are the hints, so the same names come back); the API keeps a few of these in a [`Cache`].
+
+use std::collections::BTreeMap;
+use std::sync::{Arc, Mutex};
+
+use nalgebra::Vector3;
+use serde::Serialize;
+
+use crate::api::error::{ApiError, FieldError};
+use crate::export::{self, ExportOptions};
+use crate::library::Issue;
+use crate::mechanism::{CoordKind, Mechanism};
+use crate::motion::plan::{self, Axis, AxisLimits, LimitsEdit, MotionSpec, Planned, Samples};
+use crate::pipeline;
+use crate::pipeline::ir::{FrameId, FrameOwner};
+
+/// Highest sampling rate of a trajectory request, Hz.
+pub const MAX_RATE: f64 = 10_000.0;
+/// The rate of inverse dynamics and sizing, Hz (the issue's 1 kHz).
+pub const SIZING_RATE: f64 = 1000.0;
+/// The rate of the tables written into `Mechatronics.mo`, Hz (linear interpolation between
+/// samples; a 10 s motion of 6 axes is 3 x 6 x 1001 numbers).
+pub const TABLE_RATE: f64 = 100.0;
+
+/// A CAD frame a tool can be (a frame on a body), with its pose at the CAD pose.
+#[derive(Clone, Debug, Serialize)]
+pub struct FrameInfo {
+    pub node_id: String,
+    /// The Modelica name of its body.
+    pub body: String,
+    /// `CS2`, or the frame's display name.
+    pub name: String,
+    pub position: [f64; 3],
+    /// Rows of the rotation frame -> world.
+    pub rotation: [[f64; 3]; 3],
+}
+
+/// A version's mechanism, named as its package.
+pub struct Kinematic {
+    pub mech: Mechanism,
+    /// The CAD node ID of each coordinate's joint.
+    pub joint_node_ids: Vec<String>,
+    pub frames: Vec<FrameInfo>,
+    pub gravity: Vector3<f64>,
+}
+
+fn unsupported(what: String) -> ApiError {
+    ApiError::Invalid {
+        detail: format!("the motion analysis cannot handle this model: {what}"),
+        errors: vec![FieldError { field: "model".into(), message: what }],
+    }
+}
+
+impl Kinematic {
+    /// Analyses `bundle` (as stored with the version) with its options; `report` is the version's
+    /// report.json (its names are kept).
+    pub fn load(bundle: &[u8], bundle_name: &str, options: &ExportOptions, report: &serde_json::Value) -> Result<Kinematic, ApiError> {
+        let b = export::read_bundle(bundle, bundle_name).map_err(export::ExportError::from)?;
+        let mut opts = options.pipeline();
+        opts.write_shapes = false;
+        let a = pipeline::analyse(&b, &opts)?;
+        let pkg = pipeline::back::modelica::write(
+            &a.model,
+            &a.validated,
+            &pipeline::back::modelica::Options {
+                package_name: "P".into(),
+                gravity: options.gravity,
+                converter_version: pipeline::VERSION.to_string(),
+                name_hints: pipeline::name_hints(report),
+            },
+        );
+        let mut mech = Mechanism::from_validated(&a.model, &a.validated).map_err(|e| unsupported(e.to_string()))?;
+        mech.use_layout_names(&pkg.layout);
+        let joint_node_ids = mech.coordinates().iter().map(|c| a.model.joints[c.joint.index()].node_id.clone()).collect();
+        let k = mech.forward(&mech.q0()).map_err(|e| unsupported(e.to_string()))?;
+        let mut frames = Vec::new();
+        for (i, f) in a.model.frames.iter().enumerate() {
+            let FrameOwner::Body(b) = f.owner else { continue };
+            let Ok(pose) = mech.frame_pose(&k, FrameId(i as u32)) else { continue };
+            let r = pose.rotation.to_rotation_matrix();
+            let p = pose.translation.vector;
+            frames.push(FrameInfo {
+                node_id: f.node_id.clone(),
+                body: mech.body_names().get(b.index()).cloned().unwrap_or_default(),
+                name: if f.display_name.is_empty() { f.name.clone() } else { f.display_name.clone() },
+                position: [p.x, p.y, p.z],
+                rotation: [0, 1, 2].map(|i| [0, 1, 2].map(|j| r[(i, j)])),
+            });
+        }
+        Ok(Kinematic { mech, joint_node_ids, frames, gravity: Vector3::from(options.gravity) })
+    }
+}
+
+/// A few analysed versions, most recently used last (analysis of a large bundle takes seconds).
+#[derive(Clone, Default)]
+pub struct Cache(Arc<Mutex<Vec<CacheEntry>>>);
+
+type CacheEntry = (String, Arc<Kinematic>);
+
+impl Cache {
+    const SIZE: usize = 8;
+
+    pub fn get(&self, key: &str) -> Option<Arc<Kinematic>> {
+        let mut v = self.0.lock().unwrap_or_else(|p| p.into_inner());
+        let i = v.iter().position(|(k, _)| k == key)?;
+        let e = v.remove(i);
+        let out = e.1.clone();
+        v.push(e);
+        Some(out)
+    }
+
+    pub fn put(&self, key: String, k: Arc<Kinematic>) {
+        let mut v = self.0.lock().unwrap_or_else(|p| p.into_inner());
+        v.retain(|(x, _)| *x != key);
+        if v.len() >= Self::SIZE {
+            v.remove(0);
+        }
+        v.push((key, k));
+    }
+}
+
+/// A joint of the joints view.
+#[derive(Clone, Debug, Serialize)]
+pub struct JointView {
+    pub name: String,
+    pub joint_node_id: String,
+    pub kind: &'static str,
+    pub unit: &'static str,
+    pub q0: f64,
+    pub independent: bool,
+    pub limits: AxisLimits,
+    pub defaults: AxisLimits,
+    pub custom: bool,
+}
+
+/// Limits stored for a joint the version does not have.
+#[derive(Clone, Debug, Serialize)]
+pub struct OrphanLimits {
+    pub joint: String,
+    pub limits: LimitsEdit,
+}
+
+#[derive(Clone, Debug, Serialize)]
+pub struct JointsView {
+    pub version: i64,
+    pub joints: Vec<JointView>,
+    pub frames: Vec<FrameInfo>,
+    pub orphans: Vec<OrphanLimits>,
+}
+
+fn kind_unit(k: CoordKind) -> (&'static str, &'static str) {
+    match k {
+        CoordKind::Revolute => ("revolute", "rad"),
+        CoordKind::Prismatic => ("prismatic", "m"),
+    }
+}
+
+/// The joints of a version with their limits (stored edits applied), its tool frames, and the
+/// edits whose joint it lacks.
+pub fn joints_view(k: &Kinematic, version: i64, edits: &BTreeMap<String, LimitsEdit>) -> JointsView {
+    let axes = plan::axes(&k.mech, edits);
+    let joints = k
+        .mech
+        .coordinates()
+        .iter()
+        .zip(&axes)
+        .zip(&k.joint_node_ids)
+        .map(|((c, a), node)| {
+            let (kind, unit) = kind_unit(c.kind);
+            JointView {
+                name: c.name.clone(),
+                joint_node_id: node.clone(),
+                kind,
+                unit,
+                q0: c.q0,
+                independent: c.independent,
+                limits: a.limits,
+                defaults: AxisLimits::defaults(c.kind, c.q0),
+                custom: edits.contains_key(&c.name),
+            }
+        })
+        .collect();
+    let orphans = edits
+        .iter()
+        .filter(|(j, _)| !k.mech.coordinates().iter().any(|c| &c.name == *j))
+        .map(|(j, e)| OrphanLimits { joint: j.clone(), limits: *e })
+        .collect();
+    JointsView { version, joints, frames: k.frames.clone(), orphans }
+}
+
+/// Issues as a 422 problem.
+pub fn invalid(what: &str, issues: Vec<Issue>) -> ApiError {
+    let detail = match issues.first() {
+        Some(i) if issues.len() == 1 => format!("{what}: {}", i.message),
+        Some(i) => format!("{what}: {} (and {} more problems)", i.message, issues.len() - 1),
+        None => what.to_string(),
+    };
+    ApiError::MotionInvalid {
+        detail,
+        errors: issues.into_iter().map(|i| FieldError { field: i.field, message: i.message }).collect(),
+    }
+}
+
+/// Plans a stored motion on a version.
+pub fn plan_motion(k: &Kinematic, edits: &BTreeMap<String, LimitsEdit>, spec: &MotionSpec) -> Result<Planned, ApiError> {
+    let axes: Vec<Axis> = plan::axes(&k.mech, edits);
+    plan::plan(&k.mech, &axes, spec).map_err(|i| invalid(&format!("motion \"{}\" cannot be planned", spec.name), i))
+}
+
+/// A sampled trajectory with its torques.
+#[derive(Clone, Debug, Serialize)]
+pub struct TrajectoryView {
+    pub motion: String,
+    pub version: i64,
+    pub duration: f64,
+    pub rate: f64,
+    pub joints: Vec<String>,
+    pub units: Vec<&'static str>,
+    #[serde(flatten)]
+    pub samples: Samples,
+    pub tau: Vec<Vec<f64>>,
+    pub keyframes: Vec<plan::PlannedKeyframe>,
+}
+
+/// Samples a planned motion at `rate` with the inverse dynamics along it.
+pub fn trajectory(k: &Kinematic, version: i64, name: &str, p: &Planned, rate: f64) -> Result<TrajectoryView, ApiError> {
+    if !(rate.is_finite() && (1.0..=MAX_RATE).contains(&rate)) {
+        return Err(ApiError::BadRequest(format!("rate must be between 1 and {MAX_RATE} Hz (is {rate})")));
+    }
+    if p.sample_count(rate) > plan::MAX_SAMPLES {
+        return Err(ApiError::BadRequest(format!(
+            "{} samples is more than {}: lower the rate",
+            p.sample_count(rate),
+            plan::MAX_SAMPLES
+        )));
+    }
+    let samples = p.samples(rate);
+    let (tau, _) = plan::inverse_dynamics(&k.mech, &samples, &k.gravity, usize::MAX)
+        .map_err(|e| ApiError::Internal(anyhow::anyhow!("inverse dynamics: {e}")))?;
+    Ok(TrajectoryView {
+        motion: name.to_string(),
+        version,
+        duration: p.duration,
+        rate,
+        joints: p.axes.iter().map(|a| a.name.clone()).collect(),
+        units: p.axes.iter().map(|a| kind_unit(a.kind).1).collect(),
+        samples,
+        tau,
+        keyframes: p.keyframes.clone(),
+    })
+}

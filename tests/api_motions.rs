@@ -1,0 +1,119 @@
+//! Joint limits, motions, trajectories and live IK through the REST API on a generated 6-axis arm
+//! (and a second CAD version with one joint fewer: limits orphaned, the motion refused by name).
+
+use cad2mo_tests::app::TestApp;
+use serde_json::{json, Value};
+
+#[path = "../server/benches/support/gen.rs"]
+#[allow(dead_code)]
+mod gen;
+
+fn arm_zip(n: usize) -> Vec<u8> {
+    cad2mo::pipeline::back::bundle::write_zip(&[("arm.xml".to_string(), gen::serial_arm_xml(n).into_bytes())]).expect("zip")
+}
+
+async fn json_of(r: reqwest::Response, status: u16) -> Value {
+    let s = r.status().as_u16();
+    let v: Value = r.json().await.expect("json body");
+    assert_eq!(s, status, "{v:#}");
+    v
+}
+
+
+#[tokio::test]
+async fn limits_motions_trajectories_and_ik() {
+    let app = TestApp::spawn().await;
+    let (id, _, job) = app.upload_model_ok(arm_zip(6), &[("gravity", "0,0,-9.81")]).await;
+    assert_eq!(app.wait_for_job(&job).await["status"], "succeeded");
+    let base = format!("/api/models/{id}");
+
+    // Joints with default limits, and the tool frame at the CAD pose.
+    let j = json_of(app.get(&format!("{base}/joints")).await, 200).await;
+    let joints = j["joints"].as_array().expect("joints");
+    assert_eq!(joints.len(), 6, "{j:#}");
+    let names: Vec<String> = joints.iter().map(|x| x["name"].as_str().expect("name").to_string()).collect();
+    assert_eq!(joints[0]["limits"], joints[0]["defaults"]);
+    assert_eq!(joints[0]["limits"]["speed"], 3.0);
+    assert_eq!(joints[0]["custom"], false);
+    let tool = j["frames"].as_array().expect("frames").iter().find(|f| f["node_id"] == "TOOL").expect("tool frame").clone();
+    let p0: Vec<f64> = tool["position"].as_array().expect("p").iter().map(|v| v.as_f64().expect("f")).collect();
+
+    // Limits: edited, refused when impossible, unknown joints 404.
+    let url = |j: &str| app.url(&format!("{base}/joints/{j}/limits"));
+    let r = app.client.put(url(&names[1])).json(&json!({"position": [-2.0, 2.0], "speed": 1.5})).send().await.expect("put");
+    let v = json_of(r, 200).await;
+    assert_eq!((v["custom"].clone(), v["limits"]["speed"].clone(), v["limits"]["acceleration"].clone()), (json!(true), json!(1.5), json!(15.0)));
+    let r = app.client.put(url(&names[1])).json(&json!({"position": [1.0, -1.0], "jerk": 0})).send().await.expect("put");
+    let p = json_of(r, 422).await;
+    let fields: Vec<&str> = p["errors"].as_array().expect("errors").iter().map(|e| e["field"].as_str().expect("f")).collect();
+    assert_eq!(fields, ["position", "jerk"], "{p:#}");
+    json_of(app.client.put(url("NOPE")).json(&json!({"speed": 1})).send().await.expect("put"), 404).await;
+
+    // A motion: start, a PTP joint keyframe, a tool keyframe 5 cm away solved by IK.
+    let motion = json!({"name": "pick", "keyframes": [
+        {"kind": "joints", "values": {}},
+        {"kind": "joints", "values": {names[0].clone(): 0.5}, "interpolation": "ptp", "dwell": 0.1},
+        {"kind": "tool", "frame": "TOOL", "position": [p0[0], p0[1] + 0.05, p0[2] - 0.05], "rotation": null, "interpolation": "jerk"}
+    ]});
+    let created = json_of(app.client.post(app.url(&format!("{base}/motions"))).json(&motion).send().await.expect("post"), 201).await;
+    let mid = created["id"].as_str().expect("id").to_string();
+    assert_eq!(created["spec"]["keyframes"][1]["interpolation"], "ptp");
+    json_of(app.client.post(app.url(&format!("{base}/motions"))).json(&motion).send().await.expect("post"), 409).await;
+    let t = json_of(app.get(&format!("{base}/motions/{mid}/trajectory?rate=200")).await, 200).await;
+    let n = t["t"].as_array().expect("t").len();
+    let duration = t["duration"].as_f64().expect("duration");
+    assert_eq!(n, (duration * 200.0 - 1e-9).ceil() as usize + 1);
+    assert_eq!(t["joints"].as_array().expect("joints").len(), 6);
+    for key in ["q", "qd", "qdd", "tau"] {
+        assert!(t[key].as_array().expect(key).iter().all(|a| a.as_array().expect("axis").len() == n), "{key}");
+    }
+    let ik = &t["keyframes"][2]["ik"];
+    assert!(ik["position_error"].as_f64().expect("err") < 1e-6, "{ik}");
+    // The first joint's motion respects the edited speed limit of the second joint? Its own: 3.
+    let qd0_max = t["qd"][0].as_array().expect("qd").iter().map(|v| v.as_f64().expect("f").abs()).fold(0.0, f64::max);
+    assert!(qd0_max <= 3.0 + 1e-9, "{qd0_max}");
+    let qd1_max = t["qd"][1].as_array().expect("qd").iter().map(|v| v.as_f64().expect("f").abs()).fold(0.0, f64::max);
+    assert!(qd1_max <= 1.5 + 1e-6, "{qd1_max}");
+    // Gravity (-z, the upload's) loads the shoulder joint (axis y) while the arm rests at the start.
+    assert!(t["tau"][1][0].as_f64().expect("tau").abs() > 1e-3, "{}", t["tau"][1][0]);
+    json_of(app.get(&format!("{base}/motions/{mid}/trajectory?rate=0")).await, 400).await;
+
+    // Live IK.
+    let r = app.client.post(app.url(&format!("{base}/ik"))).json(&json!({"frame": "TOOL", "position": [p0[0], p0[1], p0[2] - 0.02]})).send().await.expect("ik");
+    let v = json_of(r, 200).await;
+    assert_eq!(v["success"], true, "{v:#}");
+    let r = app.client.post(app.url(&format!("{base}/ik"))).json(&json!({"frame": "NOPE", "position": [0, 0, 0]})).send().await.expect("ik");
+    assert_eq!(json_of(r, 422).await["errors"][0]["field"], "frame");
+
+    // Problems: unreachable target, form errors.
+    let far = json!({"name": "far", "keyframes": [{"kind": "joints", "values": {}}, {"kind": "tool", "frame": "TOOL", "position": [40.0, 0, 0]}]});
+    let f = json_of(app.client.post(app.url(&format!("{base}/motions"))).json(&far).send().await.expect("post"), 201).await;
+    let p = json_of(app.get(&format!("{base}/motions/{}/trajectory", f["id"].as_str().expect("id"))).await, 422).await;
+    assert_eq!(p["type"], "/problems/motion-invalid");
+    assert_eq!(p["errors"][0]["field"], "keyframes[1]");
+    assert!(p["detail"].as_str().expect("detail").contains("inverse kinematics failed for frame \"TOOL\""), "{p:#}");
+    let bad = json!({"name": "", "keyframes": [{"kind": "joints", "values": {"J1": 1}, "duration": -1}]});
+    let p = json_of(app.client.post(app.url(&format!("{base}/motions"))).json(&bad).send().await.expect("post"), 422).await;
+    assert_eq!(p["errors"].as_array().expect("errors").len(), 3, "{p:#}");
+
+    // A new CAD version with five joints: the sixth's limits are orphaned; a motion naming it is
+    // refused, naming the keyframe and the joint.
+    json_of(app.client.put(url(&names[5])).json(&json!({"speed": 2})).send().await.expect("put"), 200).await;
+    let six = json!({"name": "wrist", "keyframes": [{"kind": "joints", "values": {}}, {"kind": "joints", "values": {names[5].clone(): 0.2}}]});
+    let w = json_of(app.client.post(app.url(&format!("{base}/motions"))).json(&six).send().await.expect("post"), 201).await;
+    let (_, _, job2) = app.upload_version_ok(&id, arm_zip(5), &[]).await;
+    assert_eq!(app.wait_for_job(&job2).await["status"], "succeeded");
+    let j = json_of(app.get(&format!("{base}/joints")).await, 200).await;
+    assert_eq!(j["version"], 2);
+    assert_eq!(j["joints"].as_array().expect("joints").len(), 5);
+    assert!(j["orphans"].as_array().expect("orphans").iter().any(|o| o["joint"] == names[5].as_str()), "{j:#}");
+    let p = json_of(app.get(&format!("{base}/motions/{}/trajectory", w["id"].as_str().expect("id"))).await, 422).await;
+    assert_eq!(p["errors"][0]["field"], format!("keyframes[1].values.{}", names[5]));
+
+    // Delete.
+    assert_eq!(app.client.delete(app.url(&format!("{base}/motions/{mid}"))).send().await.expect("del").status(), 204);
+    json_of(app.get(&format!("{base}/motions/{mid}")).await, 404).await;
+    assert_eq!(app.client.delete(url(&names[5])).send().await.expect("del").status(), 204);
+    let list = json_of(app.get(&format!("{base}/motions")).await, 200).await;
+    assert_eq!(list.as_array().expect("list").len(), 2);
+}
