@@ -26,10 +26,11 @@ async function plotPixels(page) {
 
 /**
  * @param {import('playwright-core').Page} page  on the model view, version 1 of the arm
- * @param {{joint: string, step: Function, shot: Function, downloads: string, strictExport: boolean}} o
+ * @param {{joint: string, step: Function, shot: Function, downloads: string, strict: boolean}} o
+ *   strict: false tolerates a service that cannot size drives yet (409) or exports no motions
  * @returns {Promise<{motion: string, package: string, exported: boolean}>}
  */
-export async function motionSteps(page, { joint, step, shot, downloads, strictExport }) {
+export async function motionSteps(page, { joint, step, shot, downloads, strict }) {
   const name = 'pick';
   // ---- A pose away from the CAD pose: every joint slider moved by keyboard.
   step('motion: pose by the sliders');
@@ -140,10 +141,17 @@ export async function motionSteps(page, { joint, step, shot, downloads, strictEx
 
   // ---- Plots: q, qd, qdd, torque and the drive's torque–speed plane, drawn.
   step('motion: plots');
-  await page.locator(`.plot[data-plot="ts-${joint}"] .uplot`).waitFor({ timeout: 60_000 });
+  const sized = page.locator(`.plot[data-plot="ts-${joint}"] .uplot, .sizing-unavailable, .sizing-box .error`).first();
+  await sized.waitFor({ timeout: 60_000 });
+  const sizingAvailable = !(await page.locator('.sizing-unavailable').count());
+  if (!sizingAvailable) {
+    assert.ok(!strict, `sizing: ${await page.locator('.sizing-unavailable').textContent()}`);
+    step(`motion: NOTE ${await page.locator('.sizing-unavailable').textContent()}; the torque–speed plot and the sizing steps are skipped`);
+  }
+  assert.equal(await page.locator('.sizing-box .error').count(), 0, 'no sizing error');
   const pixels = await plotPixels(page);
   step(`plot pixels ${JSON.stringify(pixels)}`);
-  for (const key of ['q', 'qd', 'qdd', 'tau', `ts-${joint}`]) {
+  for (const key of ['q', 'qd', 'qdd', 'tau', ...(sizingAvailable ? [`ts-${joint}`] : [])]) {
     const p = pixels.find((x) => x.plot === key);
     assert.ok(p, `a ${key} plot: ${JSON.stringify(pixels)}`);
     assert.ok(p.drawn > 500, `the ${key} plot has drawn: ${JSON.stringify(p)}`);
@@ -157,27 +165,7 @@ export async function motionSteps(page, { joint, step, shot, downloads, strictEx
   await shot(page, '18-motion-plots');
 
   // ---- Sizing: the drive's checks and a ranked alternative applied.
-  step('motion: sizing');
-  const sizing = page.locator(`section.sizing[data-joint="${joint}"]`);
-  await sizing.waitFor();
-  assert.ok((await sizing.locator('table.checks tbody tr').count()) > 0, 'the drive has checks');
-  for (const v of await sizing.locator('td.verdict').allTextContents()) assert.match(v, /^(pass|FAIL)$/);
-  const apply = sizing.getByRole('button', { name: /^Apply / }).first();
-  await apply.waitFor();
-  const label = await apply.getAttribute('aria-label');
-  await shot(page, '19-motion-sizing');
-  await apply.click();
-  await page.locator('.sizing-out .applied').waitFor();
-  const applied = /^Apply (.*) with (.*) to /.exec(label);
-  const after = await page.evaluate(async (j) => {
-    const id = location.hash.split('/')[2];
-    const r = await fetch(`/api/models/${id}/drives`, { headers: { 'X-Requested-With': 'cad2mo' } });
-    return (await r.json()).drives.find((d) => d.joint === j);
-  }, joint);
-  const lib = await page.evaluate(async () => (await (await fetch('/api/library/instances')).json()).map((i) => [i.id, i.name]));
-  const names = new Map(lib);
-  assert.equal(names.get(after.motor_instance), applied[1], `the drive's motor is the alternative's: ${JSON.stringify(after)}`);
-  assert.equal(names.get(after.gear_instance), applied[2], `the drive's gear is the alternative's: ${JSON.stringify(after)}`);
+  if (sizingAvailable) await sizingSteps(page, { joint, step, shot });
 
   // ---- Joint limits: defaults greyed as placeholders; a custom speed, then back to defaults.
   step('motion: limits');
@@ -202,7 +190,7 @@ export async function motionSteps(page, { joint, step, shot, downloads, strictEx
   const mech = strFromU8(Object.values(files)[0] || new Uint8Array());
   assert.ok(mech.length > 0, 'the package has a Mechatronics.mo');
   const exported = /package Motions\b/.test(mech);
-  if (exported || strictExport) {
+  if (exported || strict) {
     assert.ok(exported, 'Mechatronics.mo has a package Motions');
     assert.match(mech, new RegExp(`\\b${name}\\b`), `Mechatronics.mo names the motion ${name}`);
   } else {
@@ -218,4 +206,30 @@ export async function motionSteps(page, { joint, step, shot, downloads, strictEx
   assert.equal(await page.locator(`.motion-list li[data-motion="${name}"]`).count(), 0);
   await page.getByRole('tab', { name: 'Drives' }).click();
   return { motion: name, package: path, exported };
+}
+
+/** The drive's sizing: checks with verdicts, a ranked alternative applied to the drive. */
+async function sizingSteps(page, { joint, step, shot }) {
+  step('motion: sizing');
+  const sizing = page.locator(`section.sizing[data-joint="${joint}"]`);
+  await sizing.waitFor();
+  assert.ok((await sizing.locator('table.checks tbody tr').count()) > 0, 'the drive has checks');
+  for (const v of await sizing.locator('td.verdict').allTextContents()) assert.match(v, /^(pass|FAIL)$/);
+  const apply = sizing.getByRole('button', { name: /^Apply / }).first();
+  await apply.waitFor();
+  const label = await apply.getAttribute('aria-label');
+  await shot(page, '19-motion-sizing');
+  await apply.click();
+  await page.locator('.sizing-out .applied').waitFor();
+  const applied = /^Apply (.*) with (.*) to /.exec(label);
+  const after = await page.evaluate(async (j) => {
+    const id = location.hash.split('/')[2];
+    const r = await fetch(`/api/models/${id}/drives`, { headers: { 'X-Requested-With': 'cad2mo' } });
+    return (await r.json()).drives.find((d) => d.joint === j);
+  }, joint);
+  const lib = await page.evaluate(async () => (await (await fetch('/api/library/instances')).json()).map((i) => [i.id, i.name]));
+  const names = new Map(lib);
+  assert.equal(names.get(after.motor_instance), applied[1], `the drive's motor is the alternative's: ${JSON.stringify(after)}`);
+  assert.equal(names.get(after.gear_instance), applied[2], `the drive's gear is the alternative's: ${JSON.stringify(after)}`);
+
 }

@@ -426,7 +426,8 @@ export function renderMotion(panel, ctx) {
     try {
       sizing = await api(`${base}/motions/${enc(current.id)}/sizing`);
     } catch (e) {
-      fill(sizingBox, errorBox(e, 'The drives could not be sized'));
+      // 409: the service cannot size (yet, or while the model converts): a note, not an error.
+      fill(sizingBox, e.status === 409 ? h('p', { class: 'muted sizing-unavailable' }, `Drive sizing is not available: ${e.message}`) : errorBox(e, 'The drives could not be sized'));
       return;
     }
     if (disposed) return;
