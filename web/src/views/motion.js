@@ -343,7 +343,19 @@ export function renderMotion(panel, ctx) {
   /** Shows keyframe k: joint values as planned (trajectory) or as given. */
   function goTo(k) {
     const at = traj?.keyframes?.find((x) => x.index === k);
-    if (at) return seek(at.time);
+    if (at && !dirty) return seek(at.time);
+    const kf = spec.keyframes[k];
+    if (kf.kind === 'tool') {
+      // Not planned yet: solve the pose here, from the current pose.
+      api(`${base}/ik`, { method: 'POST', body: { frame: kf.frame, position: kf.position, rotation: kf.rotation ?? null, seed: ctx.currentJoints() } })
+        .then((r) => {
+          ctx.setJoints(r.q);
+          poseChanged();
+          if (!r.success) ctx.say(`Keyframe ${k}: the tool pose is out of reach (${num(r.position_error * 1000)} mm off)`, 'error');
+        })
+        .catch((e) => ctx.say(e.message, 'error'));
+      return;
+    }
     const values = {};
     for (const j of joints?.joints || []) values[j.name] = j.q0;
     for (let i = 0; i <= k; i++) if (spec.keyframes[i].kind === 'joints') Object.assign(values, spec.keyframes[i].values || {});

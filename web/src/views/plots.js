@@ -52,7 +52,7 @@ export function timePlot(box, { title, t, series, names, units, onSeek }) {
   const opts = {
     title,
     width: widthOf(box),
-    height: 170,
+    height: 200,
     scales: { x: { time: false } },
     cursor: { drag: { x: false, y: false } },
     series: [{ label: 't [s]' }, ...names.map((n, i) => ({ label: `${n} [${units[i]}]`, stroke: COLORS[i % COLORS.length], width: 1.5 }))],
