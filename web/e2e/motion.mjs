@@ -46,10 +46,17 @@ export async function motionSteps(page, { joint, step, shot, downloads, strict }
   // ---- Create the motion: CAD pose → the slider pose.
   step('motion: create');
   await page.getByRole('tab', { name: 'Motion' }).click();
-  await page.getByLabel('New motion name').fill(name);
+  await page.getByLabel('New motion name').fill(`${name} draft`);
   await page.getByRole('button', { name: 'New motion', exact: true }).click();
+  await page.locator(`form[aria-label="Motion ${name} draft"]`).waitFor();
+  await page.locator('#motion-play').waitFor({ timeout: 60_000 });
+  // Renamed.
+  await page.getByLabel('Motion name', { exact: true }).fill(name);
+  await page.getByRole('button', { name: 'Save motion' }).click();
   const editor = page.locator(`form[aria-label="Motion ${name}"]`);
   await editor.waitFor();
+  await page.locator(`.motion-list li[data-motion="${name}"]`).waitFor();
+  assert.equal(await page.locator('.motion-list li').count(), 1);
   assert.equal(await editor.locator('li.keyframe').count(), 2);
   // The sliders' pose was captured into keyframe 1 (joint values, in degrees).
   const kf1 = editor.locator('li[data-keyframe="1"]');
@@ -104,6 +111,7 @@ export async function motionSteps(page, { joint, step, shot, downloads, strict }
   const problem = page.locator('li[data-keyframe="1"] .kf-problem');
   await problem.waitFor();
   assert.match(await problem.textContent(), /limit/i);
+  await problem.scrollIntoViewIfNeeded();
   await shot(page, '17-motion-problem');
   await page.locator('li[data-keyframe="1"] .joint-values input').first().fill(captured);
   await page.locator('li[data-keyframe="1"] .joint-values input').first().press('Tab');

@@ -309,6 +309,11 @@ try {
   await page.getByRole('tab', { name: 'Drives' }).click();
   await page.locator('table.drives').waitFor();
   await shot(page, '13-narrow-drives');
+  await page.getByRole('tab', { name: 'Motion' }).click();
+  await page.locator('table.limits').waitFor();
+  await shot(page, '13b-narrow-motion');
+  const overflowMotion = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
+  assert.ok(overflowMotion <= 1, `the motion tab is ${overflowMotion}px wider than a narrow window`);
   await page.getByRole('link', { name: 'Motor library' }).click();
   await page.locator('[data-instance-name="RobotR3 axis controller"]').waitFor();
   await shot(page, '14-narrow-library');

@@ -118,7 +118,7 @@ export async function renderViewer(main, id, v, initialTab) {
     { id: 'structure', label: 'Structure', render: (p) => renderStructure(p) },
     { id: 'report', label: 'Report', render: (p) => renderReport(p) },
     { id: 'drives', label: 'Drives', render: (p) => renderDrives(p, { modelId: id, version, report, select, selected: () => selection, onSelect: (f) => listeners.add(f) }) },
-    { id: 'motion', label: 'Motion', render: (p) => (motion = renderMotion(p, { modelId: id, version, report, viewer, setJoints, currentJoints, say, stage: motionStage })) },
+    { id: 'motion', label: 'Motion', render: (p) => (motion = renderMotion(p, { modelId: id, version, versionNumber: v, report, viewer, setJoints, currentJoints, say, stage: motionStage })) },
   ];
   let motion = null;
   // The motion's player, plots and sizing go under the 3D view, shown with the Motion tab.

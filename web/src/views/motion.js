@@ -485,6 +485,9 @@ export function renderMotion(panel, ctx) {
     fill(
       playerBox,
       h('h3', {}, `Play ${traj.motion} `, h('small', { class: 'muted' }, `${num(d)} s, planned on v${traj.version}`)),
+      ctx.versionNumber && traj.version !== ctx.versionNumber
+        ? h('p', { class: 'warning' }, `Motions are planned on the latest version (v${traj.version}); this page shows v${ctx.versionNumber}, whose joints may differ.`)
+        : null,
       h('div', { class: 'timeline', role: 'group', 'aria-label': 'Keyframe times' }, marks, timelineCursor),
       h('div', { class: 'player row' }, playBtn, h('label', { for: scrub.id, class: 'visually-hidden' }, 'Motion time'), scrub, clock),
     );
