@@ -173,3 +173,47 @@ export function freshName(base, taken) {
   if (!set.has(base)) return base;
   for (let i = 2; ; i++) if (!set.has(`${base} ${i}`)) return `${base} ${i}`;
 }
+
+/**
+ * How many movable joint coordinates lie between the ground and each body (tree joints of the
+ * report): the tool frame is likely on the deepest body.
+ */
+export function bodyDepths(report) {
+  const bodies = new Set(report.bodies.map((b) => b.modelica_name));
+  const adj = new Map();
+  const link = (a, b, w) => {
+    if (!adj.has(a)) adj.set(a, []);
+    adj.get(a).push([b, w]);
+  };
+  const grounds = new Set();
+  for (const j of report.joints) {
+    for (const n of [j.base_body, j.follower_body]) if (!bodies.has(n)) grounds.add(n);
+    if (!j.in_tree) continue;
+    const w = j.elements.filter((e) => e.kind === 'revolute' || e.kind === 'prismatic').length;
+    link(j.base_body, j.follower_body, w);
+    link(j.follower_body, j.base_body, w);
+  }
+  const depth = new Map();
+  const queue = [...grounds];
+  for (const g of grounds) depth.set(g, 0);
+  while (queue.length) {
+    const u = queue.shift();
+    for (const [v, w] of adj.get(u) || []) {
+      if (depth.has(v)) continue;
+      depth.set(v, depth.get(u) + w);
+      queue.push(v);
+    }
+  }
+  return depth;
+}
+
+/** The frame a tool most likely is: on the deepest body; a user's frame before CG before CSn. */
+export function defaultToolFrame(frames, depths) {
+  const rank = (f) => (/^CS\d+$/.test(f.name) ? 0 : f.name === 'CG' ? 1 : 2);
+  let best = null;
+  for (const f of frames) {
+    const d = depths.get(f.body) ?? -1;
+    if (!best || d > best.d || (d === best.d && rank(f) > best.r)) best = { f, d, r: rank(f) };
+  }
+  return best?.f || null;
+}

@@ -65,3 +65,25 @@ test('freshName', () => {
   assert.equal(freshName('motion', []), 'motion');
   assert.equal(freshName('motion', ['motion', 'motion 2']), 'motion 3');
 });
+
+test('bodyDepths and defaultToolFrame pick the end of the chain', async () => {
+  const { bodyDepths, defaultToolFrame } = await import('./motion-data.js');
+  const rev = { kind: 'revolute' };
+  const report = {
+    bodies: [{ modelica_name: 'A' }, { modelica_name: 'B' }, { modelica_name: 'C' }],
+    joints: [
+      { base_body: 'world', follower_body: 'A', in_tree: true, elements: [] },
+      { base_body: 'A', follower_body: 'B', in_tree: true, elements: [rev] },
+      { base_body: 'C', follower_body: 'B', in_tree: true, elements: [rev, rev] },
+    ],
+  };
+  const d = bodyDepths(report);
+  assert.deepEqual([d.get('A'), d.get('B'), d.get('C')], [0, 1, 3]);
+  const frames = [
+    { node_id: '1', body: 'B', name: 'TIP' },
+    { node_id: '2', body: 'C', name: 'CS1' },
+    { node_id: '3', body: 'C', name: 'CG' },
+  ];
+  assert.equal(defaultToolFrame(frames, d).node_id, '3');
+  assert.equal(defaultToolFrame([], d), null);
+});

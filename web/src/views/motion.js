@@ -6,7 +6,7 @@
 
 import { api, enc } from '../api.js';
 import { h, fill, errorBox, num, field, confirmAction, newId } from '../ui.js';
-import { displayScale, displayUnit, sampleAt, keyframeProblems, throttle, applyAlternative, rotationRows, freshName } from './motion-data.js';
+import { displayScale, displayUnit, sampleAt, keyframeProblems, throttle, applyAlternative, rotationRows, freshName, bodyDepths, defaultToolFrame } from './motion-data.js';
 
 const INTERPOLATIONS = [
   ['ptp', 'Point to point (speed/acceleration limits)'],
@@ -669,7 +669,8 @@ export function renderMotion(panel, ctx) {
       fill(gizmoBox, h('p', { class: 'muted' }, 'The model has no CAD frames for a tool gizmo.'));
       return;
     }
-    gizmoFrameSel = h('select', { id: 'gizmo-frame' }, frames.map((f) => h('option', { value: f.node_id }, frameLabel(f))));
+    const preferred = defaultToolFrame(frames, bodyDepths(ctx.report));
+    gizmoFrameSel = h('select', { id: 'gizmo-frame' }, frames.map((f) => h('option', { value: f.node_id, selected: f === preferred }, frameLabel(f))));
     gizmoOn = h('input', { type: 'checkbox', id: 'gizmo-on' });
     gizmoOrient = h('input', { type: 'checkbox', id: 'gizmo-orient' });
     gizmoMode = h('select', { id: 'gizmo-mode' }, h('option', { value: 'translate' }, 'Move'), h('option', { value: 'rotate' }, 'Rotate'));
