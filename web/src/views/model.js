@@ -93,6 +93,7 @@ export async function renderViewer(main, id, v, initialTab) {
   const resetPose = () => {
     viewer.resetPose();
     for (const [, s] of sliders) s.reset();
+    motion?.poseChanged?.();
   };
   // Joint values by the joint coordinate's Modelica name (as the drives and motions API name
   // them): the sliders' own code path, for the motion player and the IK gizmo.
