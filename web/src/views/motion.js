@@ -724,7 +724,6 @@ export function renderMotion(panel, ctx) {
     delete window.cad2moGizmo;
   }
 
-  let ikBusy = Promise.resolve();
   async function solve(mat) {
     const f = gizmoFrame();
     const e = mat.elements;
@@ -744,7 +743,6 @@ export function renderMotion(panel, ctx) {
         if (ikOut && seq === ikSeq) ikOut.textContent = `IK failed: ${err.message}`;
       }
     })();
-    ikBusy = run;
     return run;
   }
   const ikLive = throttle((mat) => solve(mat), 80);
