@@ -12,6 +12,13 @@ fn arm_zip(n: usize) -> Vec<u8> {
     cad2mo::pipeline::back::bundle::write_zip(&[("arm.xml".to_string(), gen::serial_arm_xml(n).into_bytes())]).expect("zip")
 }
 
+async fn seeded_instance(app: &TestApp, class_path: &str) -> String {
+    let classes = json_of(app.get("/api/library/classes").await, 200).await;
+    let class = classes.as_array().expect("classes").iter().find(|c| c["modelica_class"] == class_path).expect("class");
+    let list = json_of(app.get(&format!("/api/library/instances?class_id={}", class["id"].as_str().expect("id"))).await, 200).await;
+    list[0]["id"].as_str().expect("a seeded instance").to_string()
+}
+
 async fn json_of(r: reqwest::Response, status: u16) -> Value {
     let s = r.status().as_u16();
     let v: Value = r.json().await.expect("json body");
@@ -95,6 +102,37 @@ async fn limits_motions_trajectories_and_ik() {
     let bad = json!({"name": "", "keyframes": [{"kind": "joints", "values": {"J1": 1}, "duration": -1}]});
     let p = json_of(app.client.post(app.url(&format!("{base}/motions"))).json(&bad).send().await.expect("post"), 422).await;
     assert_eq!(p["errors"].as_array().expect("errors").len(), 3, "{p:#}");
+
+    // A drive on the first joint and a re-export: Mechatronics.mo follows the motions (the one
+    // this version cannot plan is skipped and reported), the report lists them.
+    let motor = seeded_instance(&app, "cad2mo.Drives.Motors.DCPermanentMagnet").await;
+    let gear = seeded_instance(&app, "Modelica.Mechanics.Rotational.Components.IdealGear").await;
+    let controller = seeded_instance(&app, "cad2mo.Drives.Controllers.CascadePPI").await;
+    let drive = json!({"motor_instance": motor, "gear_instance": gear, "controller_instance": controller});
+    json_of(app.client.put(app.url(&format!("{base}/drives/{}", names[0]))).json(&drive).send().await.expect("put"), 200).await;
+    let r = app.client.post(app.url(&format!("{base}/reexport"))).send().await.expect("reexport");
+    let queued = json_of(r, 202).await;
+    assert_eq!(app.wait_for_job(queued["job_id"].as_str().expect("job")).await["status"], "succeeded");
+    let zip = app.package(&id, 1).await.bytes().await.expect("zip");
+    let mut z = zip::ZipArchive::new(std::io::Cursor::new(zip.to_vec())).expect("zip");
+    let read = |z: &mut zip::ZipArchive<std::io::Cursor<Vec<u8>>>, suffix: &str| -> String {
+        let name = z.file_names().find(|n| n.ends_with(suffix)).unwrap_or_else(|| panic!("no {suffix}")).to_string();
+        let mut s = String::new();
+        std::io::Read::read_to_string(&mut z.by_name(&name).expect("entry"), &mut s).expect("utf-8");
+        s
+    };
+    let mech = read(&mut z, "/Mechatronics.mo");
+    assert!(mech.contains("Motions.pick motion_pick \"Motion pick\""), "{mech}");
+    assert!(mech.contains(&format!("drive_{0}.q_motion = motion_pick.y[1];", names[0])), "{mech}");
+    assert!(mech.contains(&format!("drive_{0}.qd_motion = motion_pick.y[7];", names[0])), "{mech}");
+    let table = read(&mut z, "/Motions/pick.mo");
+    let rows = table.matches(";\n      ").count() + 1;
+    assert_eq!(rows, (duration * 100.0 - 1e-9).ceil() as usize + 1, "100 Hz table rows");
+    assert!(read(&mut z, "/package.order").lines().any(|l| l == "Motions"));
+    let report: Value = app.report(&id, 1).await.json().await.expect("report");
+    assert_eq!(report["motions"]["written"], json!(["pick"]));
+    assert_eq!(report["motions"]["skipped"][0]["motion"], "far");
+    assert!(report["motions"]["skipped"][0]["problem"].as_str().expect("problem").contains("inverse kinematics failed"));
 
     // A new CAD version with five joints: the sixth's limits are orphaned; a motion naming it is
     // refused, naming the keyframe and the joint.

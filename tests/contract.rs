@@ -17,6 +17,9 @@ use cad2mo_tests::app::{zip_dir, TestApp};
 use cad2mo_tests::common::{tools_required, workspace_root};
 use serde_json::{json, Value};
 
+/// What a motion's JSON Schema cannot say.
+const MOTION_RULES: &str = "a unique printable name, at least 2 keyframes, durations and dwells between 0 and 3600 s, rotation matrices";
+
 /// Examples per operation and phase.
 const EXAMPLES: u32 = 15;
 
@@ -109,6 +112,13 @@ async fn the_service_keeps_its_contract() {
     let drive = json!({"motor_instance": motor, "gear_instance": gear, "controller_instance": controller});
     let r = app.client.put(app.url(&format!("/api/models/{model}/drives/{joint}"))).json(&drive).send().await.expect("put");
     json_of(r, 200).await;
+    // Motions: one to read and change, a spare to delete.
+    let mut motion_ids = Vec::new();
+    for name in ["Contract motion", "Contract spare motion"] {
+        let body = json!({"name": name, "keyframes": [{"kind": "joints", "values": {}}, {"kind": "joints", "values": {joint.clone(): 0.1}}]});
+        let r = app.client.post(app.url(&format!("/api/models/{model}/motions"))).json(&body).send().await.expect("post");
+        motion_ids.push(json_of(r, 201).await["id"].as_str().expect("id").to_string());
+    }
 
     // Library items: a class with an instance to read and change, and spares to delete.
     let class_body = json!({
@@ -140,7 +150,14 @@ async fn the_service_keeps_its_contract() {
         config += &format!("{} = {}\n", toml_str(k), toml_str(v));
     }
     config += &format!("\"path.version\" = {version}\n\"query.from\" = 1\n\"query.to\" = {version}\n\n");
-    let operations: [Operation; 14] = [
+    let operations: [Operation; 22] = [
+        ("getMotion", vec![("path.motion_id", &motion_ids[0])], ""),
+        ("putMotion", vec![("path.motion_id", &motion_ids[0])], MOTION_RULES),
+        ("deleteMotion", vec![("path.motion_id", &motion_ids[1])], ""),
+        ("getTrajectory", vec![("path.motion_id", &motion_ids[0])], ""),
+        ("getSizing", vec![("path.motion_id", &motion_ids[0])], ""),
+        ("createMotion", vec![], MOTION_RULES),
+        ("putJointLimits", vec![], "position limits must contain the CAD pose, rates must be > 0"),
         ("deleteModel", vec![("path.model_id", &doomed_model)], ""),
         ("deleteVersion", vec![("path.model_id", &spare_model)], ""),
         ("getLibraryClass", vec![("path.id", &class)], ""),
@@ -159,6 +176,7 @@ async fn the_service_keeps_its_contract() {
         ("createModel", vec![], "the bundle must be a CAD export zip"),
         ("createVersion", vec![], "the bundle must be a CAD export zip"),
         ("importLibrary", vec![], "the body must be a library XML file (docs/library-xml.md)"),
+        ("solveIk", vec![], "the frame must be a CAD frame of the model, the rotation a rotation matrix, seeds its joints"),
     ];
     for (id, params, semantic) in operations {
         config += &format!("[[operations]]\ninclude-operation-id = {}\n", toml_str(id));

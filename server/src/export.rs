@@ -168,21 +168,34 @@ pub fn build_package(
     bundle_name: &str,
     options: &ExportOptions,
     drives: &[crate::drives::ResolvedDrive],
+    motions: &MotionsInput,
     name_hints: &pipeline::back::modelica::Hints,
     progress: &mut dyn FnMut(BuildStep),
 ) -> Result<Built, ExportError> {
     let bundle = read_bundle(bundle_bytes, bundle_name)?;
     let mut opts = options.pipeline();
     opts.name_hints = name_hints.clone();
-    let mut obs = BuildObserver { drives, active: Vec::new(), orphaned: Vec::new(), failed: None, progress };
+    let mut obs = BuildObserver {
+        drives,
+        motions,
+        active: Vec::new(),
+        orphaned: Vec::new(),
+        written: Vec::new(),
+        skipped: Vec::new(),
+        failed: None,
+        progress,
+    };
     let out = pipeline::convert_observed(&bundle, &opts, &mut obs)?;
-    let BuildObserver { active, orphaned, failed, progress, .. } = obs;
+    let BuildObserver { active, orphaned, written, skipped, failed, progress, .. } = obs;
     if let Some(e) = failed {
         return Err(ExportError::Zip(std::io::Error::other(e)));
     }
     let mut files = out.files;
     let mut report = serde_json::to_value(&out.report).map_err(|e| ExportError::Zip(std::io::Error::other(e)))?;
     report["drives"] = serde_json::json!({ "active": active, "orphaned": orphaned });
+    if !motions.specs.is_empty() {
+        report["motions"] = serde_json::json!({ "written": written, "skipped": skipped });
+    }
     let report_json = serde_json::to_vec_pretty(&report).map_err(|e| ExportError::Zip(std::io::Error::other(e)))?;
     match files.iter_mut().find(|(path, _)| path == "report.json") {
         Some((_, bytes)) => *bytes = report_json.clone(),
@@ -193,11 +206,23 @@ pub fn build_package(
     Ok(Built { package_zip, report_json, summary: Summary::of(&out.report) })
 }
 
-/// Passes the conversion's stages on and plans the drives from its report.
+/// The model's motions and joint limits, for the package's `Motions` and sizing files.
+#[derive(Clone, Debug, Default)]
+pub struct MotionsInput {
+    pub specs: Vec<crate::motion::plan::MotionSpec>,
+    pub limits: std::collections::BTreeMap<String, crate::motion::plan::LimitsEdit>,
+}
+
+/// Passes the conversion's stages on, plans the drives from its report and the motions on the
+/// named model.
 struct BuildObserver<'a> {
     drives: &'a [crate::drives::ResolvedDrive],
+    motions: &'a MotionsInput,
     active: Vec<String>,
     orphaned: Vec<String>,
+    /// Motions written into `Mechatronics.mo`, and those this version cannot plan.
+    written: Vec<String>,
+    skipped: Vec<crate::motions::Skipped>,
     /// The report could not be read for planning (then no drive is planned and the build fails).
     failed: Option<serde_json::Error>,
     progress: &'a mut dyn FnMut(BuildStep),
@@ -224,6 +249,13 @@ impl Observer for BuildObserver<'_> {
         self.orphaned = orphans;
         plans
     }
+
+    fn extras(&mut self, view: &pipeline::observe::ModelView<'_>, _drives: &[DrivePlan]) -> pipeline::observe::Extras {
+        let (_, planned, skipped) = crate::motions::for_package(view, &self.motions.specs, &self.motions.limits);
+        self.written = planned.iter().map(|p| p.table.label.clone()).collect();
+        self.skipped = skipped;
+        pipeline::observe::Extras { motions: planned.into_iter().map(|p| p.table).collect(), files: Vec::new() }
+    }
 }
 
 #[cfg(test)]
@@ -244,8 +276,8 @@ mod tests {
     fn builds_deterministically() {
         let zip = pendulum_zip();
         let opts = ExportOptions::default();
-        let a = build_package(&zip, "p.zip", &opts, &[], &Default::default(), &mut |_| {}).unwrap();
-        let b = build_package(&zip, "p.zip", &opts, &[], &Default::default(), &mut |_| {}).unwrap();
+        let a = build_package(&zip, "p.zip", &opts, &[], &MotionsInput::default(), &Default::default(), &mut |_| {}).unwrap();
+        let b = build_package(&zip, "p.zip", &opts, &[], &MotionsInput::default(), &Default::default(), &mut |_| {}).unwrap();
         assert_eq!(a.package_zip, b.package_zip);
         assert_eq!(a.summary.package_name, "PENDULUM");
         assert_eq!((a.summary.bodies, a.summary.joints), (2, 2));

@@ -345,6 +345,10 @@ async fn convert(ctx: &Ctx, job: &ClaimedJob) -> Result<Stored, ApiError> {
         return Err(ApiError::NotFound(format!("version {} of model {}", job.version, job.model_id)));
     };
     let drives = crate::drives::resolve_for_model(&ctx.store, &job.model_id).await?;
+    let motions = export::MotionsInput {
+        specs: crate::store::motions::list(&ctx.store, &job.model_id).await?.into_iter().map(|m| m.spec).collect(),
+        limits: crate::store::motions::limits(&ctx.store, &job.model_id).await?,
+    };
     let hints = previous_names(ctx, job).await?;
     let blobs = ctx.blobs.clone();
     let board = ctx.board.clone();
@@ -359,7 +363,7 @@ async fn convert(ctx: &Ctx, job: &ClaimedJob) -> Result<Stored, ApiError> {
                     ApiError::Internal(anyhow::anyhow!("bundle blob {} is missing", source.bundle_sha256))
                 })?;
             let mut last = 0.0;
-            let built = export::build_package(&bundle, &source.bundle_name, &options, &drives, &hints, &mut |step| {
+            let built = export::build_package(&bundle, &source.bundle_name, &options, &drives, &motions, &hints, &mut |step| {
                 let p = JobProgress::at(step);
                 // Never backwards, and not every one of 10,000 bodies: a new stage or 1 % more.
                 if p.fraction >= last + 0.01 || (p.done == 0 && p.fraction >= last) {

@@ -255,3 +255,63 @@ pub fn trajectory(k: &Kinematic, version: i64, name: &str, p: &Planned, rate: f6
         keyframes: p.keyframes.clone(),
     })
 }
+
+/// A motion left out of a package, and why.
+#[derive(Clone, Debug, Serialize)]
+pub struct Skipped {
+    pub motion: String,
+    pub problem: String,
+}
+
+/// A motion planned for a package: its table, and what the sizing needs.
+pub struct ForPackage {
+    pub table: pipeline::back::modelica::mechatronics::MotionTable,
+    pub planned: Planned,
+}
+
+/// Plans the model's motions on a converted model (the package being written): tables at
+/// [`TABLE_RATE`] for `Mechatronics.mo`; motions that cannot be planned on this version are
+/// skipped with their problem (the package is still written).
+pub fn for_package(
+    view: &pipeline::observe::ModelView<'_>,
+    specs: &[MotionSpec],
+    edits: &BTreeMap<String, LimitsEdit>,
+) -> (Option<Mechanism>, Vec<ForPackage>, Vec<Skipped>) {
+    let mut skipped = Vec::new();
+    if specs.is_empty() {
+        return (None, Vec::new(), skipped);
+    }
+    let mut mech = match Mechanism::from_validated(view.model, view.validated) {
+        Ok(m) => m,
+        Err(e) => {
+            let problem = format!("the motion analysis cannot handle this model: {e}");
+            skipped.extend(specs.iter().map(|s| Skipped { motion: s.name.clone(), problem: problem.clone() }));
+            return (None, Vec::new(), skipped);
+        }
+    };
+    mech.use_layout_names(view.layout);
+    let axes = plan::axes(&mech, edits);
+    let mut out = Vec::new();
+    for spec in specs {
+        match plan::plan(&mech, &axes, spec) {
+            Ok(p) if p.sample_count(TABLE_RATE) <= plan::MAX_SAMPLES => {
+                let s = p.samples(TABLE_RATE);
+                let table = pipeline::back::modelica::mechatronics::MotionTable {
+                    label: spec.name.clone(),
+                    axes: axes.iter().map(|a| a.name.clone()).collect(),
+                    t: s.t,
+                    q: s.q,
+                    qd: s.qd,
+                    qdd: s.qdd,
+                };
+                out.push(ForPackage { table, planned: p });
+            }
+            Ok(_) => skipped.push(Skipped { motion: spec.name.clone(), problem: "too long for a table".into() }),
+            Err(issues) => {
+                let problem = issues.iter().map(|i| i.message.clone()).collect::<Vec<_>>().join("; ");
+                skipped.push(Skipped { motion: spec.name.clone(), problem: pipeline::ir::clip(&problem, 1000) });
+            }
+        }
+    }
+    (Some(mech), out, skipped)
+}

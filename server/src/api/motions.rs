@@ -80,8 +80,13 @@ async fn joints(State(state): State<AppState>, Path(model_id): Path<String>) -> 
     Ok(Json(motions::joints_view(&k, version, &edits)))
 }
 
-fn body<T>(what: &str, b: Result<Json<T>, JsonRejection>) -> Result<T, ApiError> {
-    b.map(|Json(v)| v).map_err(|e| ApiError::BadRequest(format!("invalid {what}: {}", e.body_text())))
+/// A JSON object body as `T` (serde would also take an array for a struct: refused here).
+fn body<T: serde::de::DeserializeOwned>(what: &str, b: Result<Json<serde_json::Value>, JsonRejection>) -> Result<T, ApiError> {
+    let v = b.map(|Json(v)| v).map_err(|e| ApiError::BadRequest(format!("invalid {what}: {}", e.body_text())))?;
+    if !v.is_object() {
+        return Err(ApiError::BadRequest(format!("invalid {what}: expected a JSON object")));
+    }
+    serde_json::from_value(v).map_err(|e| ApiError::BadRequest(format!("invalid {what}: {e}")))
 }
 
 fn issues_invalid(what: String, issues: Vec<crate::library::Issue>) -> ApiError {
@@ -98,9 +103,9 @@ fn issues_invalid(what: String, issues: Vec<crate::library::Issue>) -> ApiError 
 async fn put_limits(
     State(state): State<AppState>,
     Path((model_id, joint)): Path<(String, String)>,
-    b: Result<Json<LimitsEdit>, JsonRejection>,
+    b: Result<Json<serde_json::Value>, JsonRejection>,
 ) -> Result<Json<motions::JointView>, ApiError> {
-    let edit = body("joint limits", b)?;
+    let edit: LimitsEdit = body("joint limits", b)?;
     let (version, k) = kinematic(&state, &model_id).await?;
     let Some(c) = k.mech.coordinates().iter().find(|c| c.name == joint) else {
         let names: Vec<&str> = k.mech.coordinates().iter().map(|c| c.name.as_str()).collect();
@@ -164,9 +169,9 @@ async fn list(State(state): State<AppState>, Path(model_id): Path<String>) -> Re
 async fn create(
     State(state): State<AppState>,
     Path(model_id): Path<String>,
-    b: Result<Json<MotionSpec>, JsonRejection>,
+    b: Result<Json<serde_json::Value>, JsonRejection>,
 ) -> Result<(StatusCode, Json<MotionDto>), ApiError> {
-    let spec = body("motion", b)?;
+    let spec: MotionSpec = body("motion", b)?;
     model_exists(&state, &model_id).await?;
     check_form(&spec)?;
     let motion = store::motions::create(&state.store, &model_id, &spec).await.map_err(|e| {
@@ -191,9 +196,9 @@ async fn get_one(State(state): State<AppState>, Path((model_id, motion_id)): Pat
 async fn update(
     State(state): State<AppState>,
     Path((model_id, motion_id)): Path<(String, String)>,
-    b: Result<Json<MotionSpec>, JsonRejection>,
+    b: Result<Json<serde_json::Value>, JsonRejection>,
 ) -> Result<Json<MotionDto>, ApiError> {
-    let spec = body("motion", b)?;
+    let spec: MotionSpec = body("motion", b)?;
     model_exists(&state, &model_id).await?;
     check_form(&spec)?;
     let motion = store::motions::update(&state.store, &model_id, &motion_id, &spec)
@@ -272,9 +277,9 @@ struct IkDto {
 async fn ik(
     State(state): State<AppState>,
     Path(model_id): Path<String>,
-    b: Result<Json<IkBody>, JsonRejection>,
+    b: Result<Json<serde_json::Value>, JsonRejection>,
 ) -> Result<Json<IkDto>, ApiError> {
-    let b = body("inverse kinematics request", b)?;
+    let b: IkBody = body("inverse kinematics request", b)?;
     let (_, k) = kinematic(&state, &model_id).await?;
     let edits = store::motions::limits(&state.store, &model_id).await?;
     let out = blocking(move || {

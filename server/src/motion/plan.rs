@@ -72,6 +72,7 @@ pub struct Keyframe {
 
 /// A named motion: what users store.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct MotionSpec {
     pub name: String,
     pub keyframes: Vec<Keyframe>,

@@ -297,7 +297,22 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
     let drives = obs.drives(&report, &opts.drives);
     let mut files = pkg.files;
     files.extend(back::modelica::mechatronics::components(&package_name));
-    files.extend(back::modelica::mechatronics::mechatronics(&package_name, &drives, &back::modelica::provenance(&a.model, VERSION))?);
+    let extras = obs.extras(
+        &observe::ModelView { model: &a.model, validated: &a.validated, layout: &pkg.layout, package_name: &package_name },
+        &drives,
+    );
+    files.extend(back::modelica::mechatronics::mechatronics(
+        &package_name,
+        &drives,
+        &extras.motions,
+        &back::modelica::provenance(&a.model, VERSION),
+    )?);
+    if !extras.motions.is_empty() {
+        if let Some((_, order)) = files.iter_mut().find(|(p, _)| *p == format!("{package_name}/package.order")) {
+            order.extend_from_slice(b"Motions\n");
+        }
+    }
+    files.extend(extras.files);
     if opts.write_shapes {
         let shapes: Vec<usize> = (0..pkg.layout.shapes.len())
             .filter(|&i| pkg.layout.shapes[i].is_some() && a.model.bodies.get(i).is_some_and(|b| b.mesh.is_some()))

@@ -5,8 +5,11 @@
 //! The pipeline still performs no IO: an observer is a plain callback object, and the default
 //! one ([`Quiet`]) does nothing and takes `Options::drives` as they are.
 
-use super::back::modelica::mechatronics::DrivePlan;
+use super::back::modelica::mechatronics::{DrivePlan, MotionTable};
+use super::back::modelica::Layout;
+use super::ir::Model;
 use super::report::Report;
+use super::valid::Validated;
 
 /// A step of a conversion, in the order they run. Not every conversion passes every stage (no
 /// VRML, no shapes), and a stage may report progress several times (`done` of `total`).
@@ -44,6 +47,28 @@ pub trait Observer {
     fn drives(&mut self, _report: &Report, planned: &[DrivePlan]) -> Vec<DrivePlan> {
         planned.to_vec()
     }
+
+    /// The motions for `Mechatronics.mo` and extra files for the package (paths in the zip),
+    /// decided once the model is analysed and named (the service plans its users' motions
+    /// here). The default adds nothing.
+    fn extras(&mut self, _view: &ModelView<'_>, _drives: &[DrivePlan]) -> Extras {
+        Extras::default()
+    }
+}
+
+/// The converted model as the back ends see it.
+pub struct ModelView<'a> {
+    pub model: &'a Model,
+    pub validated: &'a Validated,
+    pub layout: &'a Layout,
+    pub package_name: &'a str,
+}
+
+/// What an observer adds to a package.
+#[derive(Default)]
+pub struct Extras {
+    pub motions: Vec<MotionTable>,
+    pub files: Vec<(String, Vec<u8>)>,
 }
 
 /// The observer that watches nothing and keeps the planned drives.

@@ -98,6 +98,23 @@ pub enum Reference {
     Table(Vec<(f64, f64)>),
 }
 
+/// A motion's reference trajectory, sampled: the `Motions` sub-package of `Mechatronics.mo` gets
+/// one table per motion (columns: time, then q, qd and qdd of every axis), and every drive whose
+/// joint is an axis follows the selected motion's position with its speed fed forward.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MotionTable {
+    /// The user's name (shown in the selection and the documentation).
+    pub label: String,
+    /// Joint names (Modelica component names), one per axis.
+    pub axes: Vec<String>,
+    /// Sample times from 0, increasing, s.
+    pub t: Vec<f64>,
+    /// Per axis, per sample: rad or m, and their derivatives.
+    pub q: Vec<Vec<f64>>,
+    pub qd: Vec<Vec<f64>>,
+    pub qdd: Vec<Vec<f64>>,
+}
+
 /// One joint's drive, as assigned in the service.
 #[derive(Clone, Debug, PartialEq)]
 pub struct DrivePlan {
@@ -147,6 +164,8 @@ pub enum MechatronicsError {
     OutOfRange { joint: String, class: String, param: String, value: String, rule: &'static str },
     #[error("drive of joint {joint}: reference: {reason}")]
     BadReference { joint: String, reason: String },
+    #[error("motion \"{motion}\": {reason}")]
+    BadMotion { motion: String, reason: String },
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -383,6 +402,20 @@ pub fn known_classes() -> Vec<KnownClass> {
 fn num(x: f64) -> String {
     let x = if x == 0.0 { 0.0 } else { x };
     format!("{x:?}")
+}
+
+/// A trajectory sample: 12 significant digits (far below any controller's resolution), the
+/// shortest decimal that reads back to that, `1` for `1.0`; tables of thousands of rows stay small.
+fn tnum(x: f64) -> String {
+    if x == 0.0 {
+        return "0".to_string();
+    }
+    let rounded: f64 = format!("{x:.11e}").parse().unwrap_or(x);
+    let s = format!("{rounded:?}");
+    match s.strip_suffix(".0") {
+        Some(whole) => whole.to_string(),
+        None => s,
+    }
 }
 
 /// Escapes text for a Modelica string literal.
@@ -624,16 +657,22 @@ fn reference_html(r: &Ref, kind: JointKind, start: f64) -> String {
 pub fn mechatronics(
     pkg: &str,
     drives: &[DrivePlan],
+    motions: &[MotionTable],
     provenance_html: &str,
 ) -> Result<Vec<(String, Vec<u8>)>, MechatronicsError> {
     if !is_identifier(pkg) {
         return Err(MechatronicsError::BadPackageName(pkg.to_string()));
     }
     let drives = validate(drives)?;
+    let motion_names = check_motions(motions)?;
     let mut decl = String::new();
     let mut conn = String::new();
     let mut rows = String::new();
     let mut stop_time: f64 = 1.0;
+    if let Some(first) = motions.first() {
+        // As RobotR3's fullRobot: the motion, then half a second to settle.
+        stop_time = first.t.last().copied().unwrap_or(0.0) + 0.5;
+    }
     for (i, d) in drives.iter().enumerate() {
         let p = d.plan;
         let joint = &p.joint;
@@ -642,7 +681,9 @@ pub fn mechatronics(
             JointKind::Revolute => "JointDrive",
             JointKind::Prismatic => "LinearJointDrive",
         };
+        let follows = !motions.is_empty() && motions.iter().all(|m| m.axes.iter().any(|a| a == joint));
         let reference = match &d.reference {
+            _ if follows => "    useMotion=true".to_string(),
             Ref::Constant(c) => format!("    useTable=false,\n    q_constant={}", num(*c)),
             Ref::Table(t) => {
                 if let Some(last) = t.last() {
@@ -663,6 +704,23 @@ pub fn mechatronics(
             mstr(&label)
         );
         let _ = writeln!(conn, "  connect({name}.flange, {joint}.drive);");
+        if follows {
+            let pick = |col: usize| -> String {
+                let mut e = String::new();
+                for (k, (m, mname)) in motions.iter().zip(&motion_names).enumerate() {
+                    let a = m.axes.iter().position(|x| x == joint).unwrap_or(0);
+                    let y = format!("motion_{mname}.y[{}]", col * m.axes.len() + a + 1);
+                    if k + 1 == motions.len() {
+                        e.push_str(&y);
+                    } else {
+                        let _ = write!(e, "if motion == {} then {y} else ", k + 1);
+                    }
+                }
+                e
+            };
+            let _ = writeln!(conn, "  {name}.q_motion = {};", pick(0));
+            let _ = writeln!(conn, "  {name}.qd_motion = {};", pick(1));
+        }
         let _ = write!(
             rows,
             "\n<tr><td><code>{}</code></td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>",
@@ -671,8 +729,35 @@ pub fn mechatronics(
             slot_html(&d.motor),
             slot_html(&d.gear),
             slot_html(&d.controller),
-            html(&reference_html(&d.reference, p.kind, p.start))
+            html(&if follows { "the selected motion (position, speed fed forward)".to_string() } else { reference_html(&d.reference, p.kind, p.start) })
         );
+    }
+    let mut motion_decl = String::new();
+    let mut motion_rows = String::new();
+    if !motions.is_empty() {
+        let choices: Vec<String> =
+            motion_names.iter().zip(motions).enumerate().map(|(k, (_, m))| format!("choice={} \"{}\"", k + 1, mstr(&m.label))).collect();
+        let _ = writeln!(
+            motion_decl,
+            "\n  // Motions: the drives follow the selected one (Motions package)\n  parameter Integer motion(min=1, max={}) = 1 \"The motion the drives follow\"\n    annotation (choices({}));",
+            motions.len(),
+            choices.join(", ")
+        );
+        for (k, (m, mname)) in motions.iter().zip(&motion_names).enumerate() {
+            let _ = writeln!(
+                motion_decl,
+                "  Motions.{mname} motion_{mname} \"Motion {}\"\n    annotation (Placement(transformation(extent={{{{-10,-10}},{{10,10}}}}, origin={{-140,{}}})));",
+                mstr(&m.label),
+                -(k as i64) * 30
+            );
+            let _ = write!(
+                motion_rows,
+                "\n<tr><td>{}</td><td><code>Motions.{mname}</code></td><td>{}</td><td>{}</td></tr>",
+                k + 1,
+                html(&m.label),
+                num(m.t.last().copied().unwrap_or(0.0))
+            );
+        }
     }
     let body = if drives.is_empty() {
         "<p>No drive is assigned: every joint is free, as in <code>Mechanics</code>. Assign motors, gears and controllers to joints in the motor library and regenerate this model.</p>".to_string()
@@ -691,6 +776,14 @@ pub fn mechatronics(
     } else {
         format!("\n  // Drives: reference -> controller -> motor -> gear -> joint drive flange\n{}", decl.trim_end_matches('\n'))
     };
+    let decl = format!("{}{decl}", motion_decl.trim_end_matches('\n'));
+    let body = if motions.is_empty() {
+        body
+    } else {
+        format!(
+            "{body}\n<p>Motions (parameter <code>motion</code> selects the one the drives follow; tables in <code>Motions</code>: time, then the position, speed and acceleration of every joint):</p>\n<table border='1' cellspacing='0' cellpadding='2'>\n<tr><th>motion</th><th>Table</th><th>Name</th><th>Duration, s</th></tr>{motion_rows}\n</table>"
+        )
+    };
     let text = format!(
         "within {pkg};\nmodel Mechatronics \"Mechatronic model of {pkg}: Mechanics with {count}\"\n  extends {pkg}.Mechanics;\n{decl}\nequation\n{conn}  annotation (\n    experiment(StopTime={}),\n    Documentation(info=\"<html>\n{}\n<p><code>Mechatronics</code> extends <code>Mechanics</code> and refers to joints by name only: a <code>Mechanics</code> regenerated after a CAD change slots under it unchanged. Generated by cad2mo {}.</p>\n{}\n</html>\"));\nend Mechatronics;\n",
         num(stop_time),
@@ -698,7 +791,93 @@ pub fn mechatronics(
         html(crate::pipeline::VERSION),
         body
     );
-    Ok(vec![(format!("{pkg}/Mechatronics.mo"), text.into_bytes())])
+    let mut files = vec![(format!("{pkg}/Mechatronics.mo"), text.into_bytes())];
+    if !motions.is_empty() {
+        files.extend(motions_package(pkg, motions, &motion_names));
+    }
+    Ok(files)
+}
+
+/// Checks the tables (sizes, finite numbers, increasing times, joint names) and gives each motion
+/// a distinct Modelica class name.
+fn check_motions(motions: &[MotionTable]) -> Result<Vec<String>, MechatronicsError> {
+    let mut names: Vec<String> = Vec::with_capacity(motions.len());
+    for m in motions {
+        let bad = |reason: String| MechatronicsError::BadMotion { motion: m.label.clone(), reason };
+        let n = m.t.len();
+        if n == 0 {
+            return Err(bad("the table has no samples".into()));
+        }
+        if m.axes.is_empty() || m.axes.iter().any(|a| !is_identifier(a)) {
+            return Err(bad("every axis must be a joint's Modelica name".into()));
+        }
+        for (what, cols) in [("q", &m.q), ("qd", &m.qd), ("qdd", &m.qdd)] {
+            if cols.len() != m.axes.len() || cols.iter().any(|c| c.len() != n) {
+                return Err(bad(format!("{what} must have {} samples for each of {} axes", n, m.axes.len())));
+            }
+            if cols.iter().flatten().any(|v| !v.is_finite()) {
+                return Err(bad(format!("{what} has a number that is not finite")));
+            }
+        }
+        if m.t.iter().any(|t| !t.is_finite()) || m.t[0] != 0.0 || m.t.windows(2).any(|w| w[1] <= w[0]) {
+            return Err(bad("times must start at 0 and increase".into()));
+        }
+        let base = super::sanitize(&m.label, "Motion");
+        let base = if base.is_empty() { "Motion".to_string() } else { base };
+        let base = if is_identifier(&base) { base } else { format!("Motion_{base}") };
+        let mut name = base.clone();
+        let mut k = 2;
+        while names.contains(&name) {
+            name = format!("{base}_{k}");
+            k += 1;
+        }
+        names.push(name);
+    }
+    Ok(names)
+}
+
+/// `<pkg>/Motions/`: one `CombiTimeTable` block per motion, its data inline.
+fn motions_package(pkg: &str, motions: &[MotionTable], names: &[String]) -> Vec<(String, Vec<u8>)> {
+    let mut files = Vec::new();
+    let mut order = String::new();
+    for (m, name) in motions.iter().zip(names) {
+        let n = m.axes.len();
+        let mut table = String::new();
+        for i in 0..m.t.len() {
+            if i > 0 {
+                table.push_str(";\n      ");
+            }
+            table.push_str(&tnum(m.t[i]));
+            for cols in [&m.q, &m.qd, &m.qdd] {
+                for c in cols.iter() {
+                    table.push_str(", ");
+                    table.push_str(&tnum(c[i]));
+                }
+            }
+        }
+        let columns: Vec<String> = ["q", "qd", "qdd"]
+            .iter()
+            .enumerate()
+            .flat_map(|(k, what)| m.axes.iter().enumerate().map(move |(a, j)| format!("y[{}] = {what} of {j}", k * n + a + 1)))
+            .collect();
+        let text = format!(
+            "within {pkg}.Motions;\nblock {name} \"Motion {}: {} s, {n} joints\"\n  extends Modelica.Blocks.Sources.CombiTimeTable(\n    final tableOnFile=false,\n    final table=[{table}],\n    final smoothness=Modelica.Blocks.Types.Smoothness.LinearSegments,\n    final extrapolation=Modelica.Blocks.Types.Extrapolation.HoldLastPoint);\n  annotation (Documentation(info=\"<html>\n<p>The motion <b>{}</b> sampled at {} points from t = 0 to {} s (linear interpolation, last values held). Outputs: {}.</p>\n</html>\"));\nend {name};\n",
+            mstr(&m.label),
+            num(m.t[m.t.len() - 1]),
+            html(&m.label),
+            m.t.len(),
+            num(m.t[m.t.len() - 1]),
+            html(&columns.join(", "))
+        );
+        files.push((format!("{pkg}/Motions/{name}.mo"), text.into_bytes()));
+        let _ = writeln!(order, "{name}");
+    }
+    let package = format!(
+        "within {pkg};\npackage Motions \"Reference trajectories of the model's motions (from cad2mo)\"\n  extends Modelica.Icons.Package;\n  annotation (Documentation(info=\"<html>\n<p>One table per motion defined in cad2mo: column 1 is the time in s, then the position (rad or m), speed and acceleration of every joint of the motion. <code>Mechatronics</code> instantiates each and its drives follow the one its parameter <code>motion</code> selects.</p>\n</html>\"));\nend Motions;\n"
+    );
+    files.push((format!("{pkg}/Motions/package.mo"), package.into_bytes()));
+    files.push((format!("{pkg}/Motions/package.order"), order.into_bytes()));
+    files
 }
 
 /// The drive library, `<pkg>/Components/Drives/...`: written into every package (the line

@@ -236,6 +236,8 @@ partial block Controller "Joint controller: reference and measured motor angle a
   parameter Real ratio = 1 "Motor angle per unit of the joint coordinate: gear ratio (rad/rad) or transmission (rad/m), set by the drive";
   Modelica.Blocks.Interfaces.RealInput q_ref "Reference joint coordinate: angle in rad or position in m"
     annotation (Placement(transformation(extent={{-140,-20},{-100,20}})));
+  Modelica.Blocks.Interfaces.RealInput qd_ref "Reference joint speed (feed-forward): rad/s or m/s"
+    annotation (Placement(transformation(extent={{-140,40},{-100,80}})));
   Modelica.Blocks.Interfaces.RealInput phi_motor "Measured motor angle, rad"
     annotation (Placement(transformation(extent={{-20,-20},{20,20}}, rotation=90, origin={-60,-120})));
   Modelica.Blocks.Interfaces.RealInput w_motor "Measured motor speed, rad/s"
@@ -244,7 +246,8 @@ partial block Controller "Joint controller: reference and measured motor angle a
     annotation (Placement(transformation(extent={{100,-10},{120,10}})));
   annotation ($ICON, Documentation(info="<html>
 <p>Interface of a joint controller. Inputs: the reference joint coordinate <code>q_ref</code>
-(rad for a revolute joint, m for a prismatic one), the measured motor angle
+(rad for a revolute joint, m for a prismatic one), its speed <code>qd_ref</code> for feed-forward
+(0 for a constant or table reference), the measured motor angle
 <code>phi_motor</code> (rad) and speed <code>w_motor</code> (rad/s). Output: the armature current
 command <code>i_ref</code> (A). <code>ratio</code> (motor angle per unit of the joint coordinate)
 is set by the drive from its gear, so <code>ratio*q_ref</code> is the motor angle at which the
@@ -432,8 +435,12 @@ $PARAMS
     annotation (Placement(transformation(extent={{-90,-10},{-70,10}})));
   Modelica.Blocks.Math.Feedback positionError "Motor angle error, rad"
     annotation (Placement(transformation(extent={{-60,-10},{-40,10}})));
-  Modelica.Blocks.Math.Gain positionController(k=kp) "Speed command, rad/s"
+  Modelica.Blocks.Math.Gain positionController(k=kp) "Speed command of the position loop, rad/s"
     annotation (Placement(transformation(extent={{-30,-10},{-10,10}})));
+  Modelica.Blocks.Math.Gain toMotorSpeed(k=ratio) "Reference joint speed to motor speed, rad/s"
+    annotation (Placement(transformation(extent={{-60,50},{-40,70}})));
+  Modelica.Blocks.Math.Add speedCommand "Speed command with feed-forward, rad/s"
+    annotation (Placement(transformation(extent={{-10,30},{10,50}})));
   Modelica.Blocks.Math.Feedback speedError "Motor speed error, rad/s"
     annotation (Placement(transformation(extent={{0,-10},{20,10}})));
   Modelica.Blocks.Continuous.PI speedController(
@@ -447,15 +454,18 @@ equation
   connect(toMotorAngle.y, positionError.u1);
   connect(phi_motor, positionError.u2);
   connect(positionError.y, positionController.u);
-  connect(positionController.y, speedError.u1);
+  connect(qd_ref, toMotorSpeed.u);
+  connect(positionController.y, speedCommand.u1);
+  connect(toMotorSpeed.y, speedCommand.u2);
+  connect(speedCommand.y, speedError.u1);
   connect(w_motor, speedError.u2);
   connect(speedError.y, speedController.u);
   connect(speedController.y, i_ref);
   annotation (Documentation(info="<html>
 <p>The controller of <code>Modelica.Mechanics.MultiBody.Examples.Systems.RobotR3.Components.Controller</code>
-without speed feed-forward, in motor coordinates:</p>
+with its speed feed-forward, in motor coordinates:</p>
 <pre>
-w_cmd = kp*(ratio*q_ref - phi_motor)                        position loop (P)
+w_cmd = kp*(ratio*q_ref - phi_motor) + ratio*qd_ref         position loop (P) + feed-forward
 i_ref = ks*(e + x/Ts),  der(x) = e,  e = w_cmd - w_motor    speed loop (PI), x(0) = 0
 </pre>
 <p><code>ratio</code> (set by the drive to the gear's transmission) turns the joint reference into
@@ -474,6 +484,15 @@ partial model PartialJointDrive "Reference table, controller, motor and motor se
   parameter Real table[:, 2] = [0, 0; 1, 0] "Reference joint coordinate over time: [time in s, value; ...]"
     annotation (Dialog(enable=useTable));
   parameter Real motorPerJoint "Motor angle per unit of joint coordinate (the gear's ratio or transmission)";
+  parameter Boolean useMotion = false
+    "= true: reference position and speed come from the inputs q_motion and qd_motion (a motion of Mechatronics)"
+    annotation (Evaluate=true, choices(checkBox=true));
+  Modelica.Blocks.Interfaces.RealInput q_motion if useMotion "Reference joint coordinate of a motion"
+    annotation (Placement(transformation(extent={{-140,40},{-100,80}})));
+  Modelica.Blocks.Interfaces.RealInput qd_motion if useMotion "Reference joint speed of a motion (feed-forward)"
+    annotation (Placement(transformation(extent={{-140,-80},{-100,-40}})));
+  Modelica.Blocks.Sources.Constant noSpeed(k=0) if not useMotion "No speed feed-forward for a constant or table reference"
+    annotation (Placement(transformation(extent={{-90,-60},{-70,-40}})));
 
   replaceable $P.Components.Drives.Controllers.CascadePPI controller
     constrainedby $P.Components.Drives.Interfaces.Controller(final ratio=motorPerJoint)
@@ -486,7 +505,7 @@ partial model PartialJointDrive "Reference table, controller, motor and motor se
   Modelica.Blocks.Sources.CombiTimeTable tableReference(
     table=table,
     smoothness=Modelica.Blocks.Types.Smoothness.LinearSegments,
-    extrapolation=Modelica.Blocks.Types.Extrapolation.HoldLastPoint) if useTable
+    extrapolation=Modelica.Blocks.Types.Extrapolation.HoldLastPoint) if useTable and not useMotion
     "Reference joint coordinate over time"
     annotation (Placement(transformation(extent={{-90,-30},{-70,-10}})));
   Modelica.Mechanics.Rotational.Sensors.AngleSensor motorAngle "Motor angle, rad"
@@ -495,6 +514,9 @@ partial model PartialJointDrive "Reference table, controller, motor and motor se
     annotation (Placement(transformation(extent={{10,-70},{-10,-50}})));
 equation
   connect(tableReference.y[1], controller.q_ref);
+  connect(q_motion, controller.q_ref);
+  connect(qd_motion, controller.qd_ref);
+  connect(noSpeed.y, controller.qd_ref);
   connect(controller.i_ref, motor.i_ref);
   connect(motor.flange, motorAngle.flange);
   connect(motor.flange, motorSpeed.flange);
@@ -503,7 +525,9 @@ equation
   annotation (Documentation(info="<html>
 <p>What the joint drives share: the reference (a constant, declared with its unit by the
 extending drive, or with <code>useTable=true</code> the table <code>table</code> = [time in s,
-value; ...], linear interpolation, last value held), the controller, the motor and the sensors on
+value; ...], linear interpolation, last value held; or, with <code>useMotion=true</code>, the
+position and speed of a motion from the inputs <code>q_motion</code> and <code>qd_motion</code>,
+the speed fed forward as in RobotR3), the controller, the motor and the sensors on
 the motor shaft. The extending drive adds the gear, the flange to the joint and the constant
 reference, and sets <code>motorPerJoint</code> (motor angle per unit of joint coordinate) from its
 gear, so the controller works in motor radians and drives the joint coordinate to the reference.
@@ -523,7 +547,7 @@ model JointDrive "Drive of a revolute joint: reference, controller, motor and ge
     constrainedby $P.Components.Drives.Interfaces.Gear
     "Gear: ratio = motor speed / joint speed"
     annotation (choicesAllMatching=true, Placement(transformation(extent={{30,-10},{50,10}})));
-  Modelica.Blocks.Sources.Constant constantReference(k=q_constant) if not useTable
+  Modelica.Blocks.Sources.Constant constantReference(k=q_constant) if not useTable and not useMotion
     "Constant reference angle, rad"
     annotation (Placement(transformation(extent={{-90,10},{-70,30}})));
   Modelica.Mechanics.Rotational.Interfaces.Flange_b flange "Connect to the revolute joint's drive flange"
@@ -557,7 +581,7 @@ model LinearJointDrive "Drive of a prismatic joint: reference, controller, motor
     constrainedby $P.Components.Drives.Interfaces.LinearGear
     "Gearbox and screw: transmission = motor angle / joint displacement, rad/m"
     annotation (choicesAllMatching=true, Placement(transformation(extent={{30,-10},{50,10}})));
-  Modelica.Blocks.Sources.Constant constantReference(k=q_constant) if not useTable
+  Modelica.Blocks.Sources.Constant constantReference(k=q_constant) if not useTable and not useMotion
     "Constant reference position, m"
     annotation (Placement(transformation(extent={{-90,10},{-70,30}})));
   Modelica.Mechanics.Translational.Interfaces.Flange_b flange "Connect to the prismatic joint's drive flange"

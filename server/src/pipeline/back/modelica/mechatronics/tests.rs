@@ -46,7 +46,7 @@ fn text(files: &[(String, Vec<u8>)], path: &str) -> String {
 }
 
 fn mechatronics_text(drives: &[DrivePlan]) -> String {
-    let files = mechatronics("P", drives, "<p>From \"x.xml\".</p>").expect("mechatronics");
+    let files = mechatronics("P", drives, &[], "<p>From \"x.xml\".</p>").expect("mechatronics");
     assert_eq!(files.len(), 1);
     text(&files, "P/Mechatronics.mo")
 }
@@ -210,7 +210,7 @@ fn split_strings(s: &str) -> (String, Vec<String>) {
 #[test]
 fn html_stays_inside_string_literals() {
     let mut files = components("P");
-    files.extend(mechatronics("P", &[plan("J")], "<p class=\"x\">a \\ b</p>").expect("mechatronics"));
+    files.extend(mechatronics("P", &[plan("J")], &[], "<p class=\"x\">a \\ b</p>").expect("mechatronics"));
     for (path, bytes) in files.iter().filter(|(p, _)| p.ends_with(".mo")) {
         let (code, literals) = split_strings(&String::from_utf8(bytes.clone()).expect("utf-8"));
         for tag in ["<p", "</", "<html", "<code", "<tr", "<pre", "<table", "<li", "cellspacing"] {
@@ -308,7 +308,7 @@ fn prismatic_drive_and_tables() {
 
 #[test]
 fn errors() {
-    let err = |plans: &[DrivePlan]| mechatronics("P", plans, "").expect_err("must fail");
+    let err = |plans: &[DrivePlan]| mechatronics("P", plans, &[], "").expect_err("must fail");
 
     let mut p = plan("J");
     p.motor = choice(IDEAL, &[("ratio", r(2.0))]);
@@ -376,7 +376,7 @@ fn errors() {
     p.start = f64::NAN;
     assert!(matches!(err(&[p]), MechatronicsError::BadReference { .. }));
 
-    assert!(matches!(mechatronics("1P", &[], ""), Err(MechatronicsError::BadPackageName(_))));
+    assert!(matches!(mechatronics("1P", &[], &[], ""), Err(MechatronicsError::BadPackageName(_))));
 }
 
 #[test]
@@ -452,9 +452,18 @@ fn convert_case(case: &str) -> (Vec<(String, Vec<u8>)>, crate::pipeline::report:
 /// Writes a converted package plus the drive library and `Mechatronics.mo` to a temporary folder
 /// (adding `Drives` to `Components/package.order`, as the lead will in `write.rs`).
 fn write_package(files: Vec<(String, Vec<u8>)>, pkg: &str, drives: &[DrivePlan]) -> (tempfile::TempDir, String) {
+    write_package_with(files, pkg, drives, &[])
+}
+
+fn write_package_with(
+    files: Vec<(String, Vec<u8>)>,
+    pkg: &str,
+    drives: &[DrivePlan],
+    motions: &[MotionTable],
+) -> (tempfile::TempDir, String) {
     let mut all = files;
     all.extend(components(pkg));
-    let mech = mechatronics(pkg, drives, "<p>Converted by cad2mo for a test.</p>").expect("mechatronics");
+    let mech = mechatronics(pkg, drives, motions, "<p>Converted by cad2mo for a test.</p>").expect("mechatronics");
     let text = String::from_utf8(mech[0].1.clone()).expect("utf-8");
     all.extend(mech);
     let tmp = tempfile::tempdir().expect("tempdir");
@@ -469,6 +478,9 @@ fn write_package(files: Vec<(String, Vec<u8>)>, pkg: &str, drives: &[DrivePlan])
             let s = String::from_utf8_lossy(bytes).into_owned();
             if !s.lines().any(|l| l == "Mechatronics") {
                 *bytes = s.replace("Mechanics\n", "Mechanics\nMechatronics\n").into_bytes();
+            }
+            if !motions.is_empty() {
+                bytes.extend_from_slice(b"Motions\n");
             }
         }
         let p = tmp.path().join(&*path);
@@ -540,6 +552,59 @@ fn revolute_and_prismatic_drives_pass_the_tools() {
     assert!(text.contains("LinearJointDrive"), "{text}");
     assert!(text.contains("Motors.MSL_DC_PermanentMagnet"), "{text}");
     check_with_tools(&tmp.path().join(&pkg));
+}
+
+/// A sampled motion of `axes` (a ramp of `amp` over 1 s, its speed and acceleration).
+fn ramp(label: &str, axes: &[&str], amp: f64) -> MotionTable {
+    let t: Vec<f64> = (0..=10).map(|i| f64::from(i) / 10.0).collect();
+    let col = |f: &dyn Fn(f64) -> f64| -> Vec<Vec<f64>> { axes.iter().map(|_| t.iter().map(|x| f(*x)).collect()).collect() };
+    MotionTable {
+        label: label.into(),
+        axes: axes.iter().map(|a| a.to_string()).collect(),
+        q: col(&|x| amp * x * x),
+        qd: col(&|x| 2.0 * amp * x),
+        qdd: col(&|_| 2.0 * amp),
+        t,
+    }
+}
+
+#[test]
+fn drives_following_motions_pass_the_tools() {
+    let (files, report) = convert_case("rotated_frames");
+    let pkg = report.package_name.clone();
+    let plans = plans_for(&report);
+    let axes: Vec<&str> = plans.iter().map(|p| p.joint.as_str()).collect();
+    // The second motion lists the axes the other way round: each drive picks its own column.
+    let reversed: Vec<&str> = axes.iter().rev().copied().collect();
+    let motions = [ramp("pick & place", &axes, 0.1), ramp("pick & place", &reversed, 0.05)];
+    let (tmp, text) = write_package_with(files, &pkg, &plans, &motions);
+    assert!(text.contains("parameter Integer motion(min=1, max=2) = 1"), "{text}");
+    assert!(text.contains("choices(choice=1 \"pick & place\", choice=2 \"pick & place\")"), "{text}");
+    assert!(text.contains("Motions.pick_place motion_pick_place"), "{text}");
+    assert!(text.contains("Motions.pick_place_2 motion_pick_place_2"), "{text}");
+    let n = axes.len();
+    let first = &plans[0].joint;
+    assert!(
+        text.contains(&format!("drive_{first}.q_motion = if motion == 1 then motion_pick_place.y[1] else motion_pick_place_2.y[{n}];")),
+        "{text}"
+    );
+    assert!(
+        text.contains(&format!("drive_{first}.qd_motion = if motion == 1 then motion_pick_place.y[{}] else motion_pick_place_2.y[{}];", n + 1, 2 * n)),
+        "{text}"
+    );
+    assert!(text.contains("useMotion=true") && !text.contains("useTable"), "{text}");
+    let table = std::fs::read_to_string(tmp.path().join(&pkg).join("Motions/pick_place.mo")).expect("table");
+    assert!(table.contains("extends Modelica.Blocks.Sources.CombiTimeTable("), "{table}");
+    // 11 rows of 1 + 3n columns: the last row is t = 1, q = 0.1, qd = 0.2, qdd = 0.2.
+    let last = std::iter::once("1".to_string()).chain(std::iter::repeat_n("0.1".to_string(), n)).chain(std::iter::repeat_n("0.2".to_string(), 2 * n));
+    assert!(table.contains(&format!("{}]", last.collect::<Vec<_>>().join(", "))), "{table}");
+    assert!(text.contains("experiment(StopTime=1.5)"), "{text}");
+    check_with_tools(&tmp.path().join(&pkg));
+    // Bad tables are refused, naming the motion.
+    let mut bad = ramp("jumpy", &axes, 0.1);
+    bad.t[3] = bad.t[2];
+    let e = mechatronics(&pkg, &plans, &[bad], "").expect_err("times must increase");
+    assert!(e.to_string().contains("motion \"jumpy\": times must start at 0 and increase"), "{e}");
 }
 
 #[test]
