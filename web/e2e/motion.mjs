@@ -2,7 +2,7 @@
 // made in the UI from a moved slider pose and a tool keyframe placed by dragging the IK gizmo,
 // a keyframe problem shown at its keyframe, playing and scrubbing, the uPlot charts drawn, the
 // sizing with a ranked alternative applied to the drive, joint limits with their defaults, and
-// the regenerated package's Mechatronics.mo naming the motion.
+// the regenerated package's Mechatronics.mo instantiating the motion's table (Motions sub-package).
 
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
@@ -27,7 +27,7 @@ async function plotPixels(page) {
 /**
  * @param {import('playwright-core').Page} page  on the model view, version 1 of the arm
  * @param {{joint: string, step: Function, shot: Function, downloads: string, strict: boolean}} o
- *   strict: false tolerates a service that cannot size drives yet (409) or exports no motions
+ *   strict: false tolerates a service that cannot size drives yet (409)
  * @returns {Promise<{motion: string, package: string, exported: boolean}>}
  */
 export async function motionSteps(page, { joint, step, shot, downloads, strict }) {
@@ -194,16 +194,20 @@ export async function motionSteps(page, { joint, step, shot, downloads, strict }
   const [pkg] = await Promise.all([page.waitForEvent('download', { timeout: 60_000 }), page.getByRole('button', { name: 'Regenerate and download package' }).click()]);
   const path = join(downloads, `motion-${pkg.suggestedFilename()}`);
   await pkg.saveAs(path);
-  const files = unzipSync(new Uint8Array(readFileSync(path)), { filter: (f) => f.name.endsWith('/Mechatronics.mo') });
-  const mech = strFromU8(Object.values(files)[0] || new Uint8Array());
+  const files = unzipSync(new Uint8Array(readFileSync(path)), { filter: (f) => /\/(Mechatronics\.mo|Motions\/[^/]+\.mo)$/.test(f.name) });
+  const text = (re) => {
+    const k = Object.keys(files).find((f) => re.test(f));
+    return k ? strFromU8(files[k]) : '';
+  };
+  const mech = text(/\/Mechatronics\.mo$/);
   assert.ok(mech.length > 0, 'the package has a Mechatronics.mo');
-  const exported = /package Motions\b/.test(mech);
-  if (exported || strict) {
-    assert.ok(exported, 'Mechatronics.mo has a package Motions');
-    assert.match(mech, new RegExp(`\\b${name}\\b`), `Mechatronics.mo names the motion ${name}`);
-  } else {
-    step('motion: NOTE this server exports no package Motions yet; the package check is skipped');
-  }
+  // Mechatronics.mo instantiates the motion's table from the Motions sub-package; its drives follow it.
+  assert.match(mech, new RegExp(`\\bMotions\\.${name} motion_${name}\\b`), `Mechatronics.mo instantiates Motions.${name}`);
+  assert.match(mech, /parameter Integer motion\b/, 'Mechatronics.mo selects the motion by a parameter');
+  assert.match(text(/\/Motions\/package\.mo$/), /package Motions\b/, 'the package has a Motions sub-package');
+  const table = text(new RegExp(`/Motions/${name}\\.mo$`));
+  assert.match(table, new RegExp(`block ${name}\\b[\\s\\S]*CombiTimeTable[\\s\\S]*end ${name};`), `Motions/${name}.mo is the motion's table`);
+  const exported = true;
 
   // ---- Delete the motion (the later steps change the model's joints).
   step('motion: delete');
