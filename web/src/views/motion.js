@@ -51,6 +51,14 @@ export function renderMotion(panel, ctx) {
   else panel.append(playerBox, plotsBox, sizingBox);
 
   const jointInfo = (name) => joints?.joints.find((j) => j.name === name);
+  // Keyframes set the independent joints; in a closed loop the others follow.
+  const driven = () => (joints?.joints || []).filter((j) => j.independent !== false);
+  const captured = () => {
+    const now = ctx.currentJoints();
+    const out = {};
+    for (const j of driven()) if (Number.isFinite(now[j.name])) out[j.name] = now[j.name];
+    return out;
+  };
   const scaleOf = (name) => displayScale(jointInfo(name)?.unit || 'rad');
   const unitOf = (name) => displayUnit(jointInfo(name)?.unit || 'rad');
 
@@ -99,7 +107,7 @@ export function renderMotion(panel, ctx) {
       name,
       keyframes: [
         { kind: 'joints', values: {} },
-        { kind: 'joints', values: ctx.currentJoints(), interpolation: 'ptp', duration: null, dwell: null },
+        { kind: 'joints', values: captured(), interpolation: 'ptp', duration: null, dwell: null },
       ],
     };
     try {
@@ -203,7 +211,7 @@ export function renderMotion(panel, ctx) {
     );
     kind.addEventListener('change', () => {
       if (kind.value === 'tool') Object.assign(kf, toolKeyframeNow(), { kind: 'tool', values: undefined });
-      else Object.assign(kf, { kind: 'joints', values: ctx.currentJoints(), frame: undefined, position: undefined, rotation: undefined });
+      else Object.assign(kf, { kind: 'joints', values: captured(), frame: undefined, position: undefined, rotation: undefined });
       markDirty();
       renderEditor();
     });
@@ -231,7 +239,8 @@ export function renderMotion(panel, ctx) {
         h('span', { class: 'check' }, orient, h('label', { for: orient.id }, 'Orientation too (else position only)')),
       ];
     } else {
-      const rows = (joints?.joints || []).map((j) =>
+      const followers = (joints?.joints || []).filter((j) => j.independent === false);
+      const rows = driven().map((j) =>
         h(
           'label',
           { class: 'jv' },
@@ -243,7 +252,10 @@ export function renderMotion(panel, ctx) {
           }, { placeholder: k === 0 ? 'CAD pose' : 'previous' }),
         ),
       );
-      body = [h('div', { class: 'joint-values' }, rows)];
+      body = [
+        h('div', { class: 'joint-values' }, rows),
+        followers.length ? h('p', { class: 'muted' }, `${followers.map((j) => j.name).join(', ')} follow the loops.`) : null,
+      ];
     }
     const timing =
       k === 0
@@ -292,7 +304,7 @@ export function renderMotion(panel, ctx) {
 
   function capture(k) {
     const kf = spec.keyframes[k];
-    Object.assign(kf, { kind: 'joints', values: ctx.currentJoints() });
+    Object.assign(kf, { kind: 'joints', values: captured() });
     delete kf.frame;
     delete kf.position;
     delete kf.rotation;
@@ -316,7 +328,7 @@ export function renderMotion(panel, ctx) {
   }
 
   function addCaptured() {
-    spec.keyframes.push({ kind: 'joints', values: ctx.currentJoints(), interpolation: 'ptp', duration: null, dwell: null });
+    spec.keyframes.push({ kind: 'joints', values: captured(), interpolation: 'ptp', duration: null, dwell: null });
     markDirty();
     renderEditor();
   }
