@@ -240,7 +240,9 @@ pub fn trajectory(k: &Kinematic, version: i64, name: &str, p: &Planned, rate: f6
             plan::MAX_SAMPLES
         )));
     }
-    let samples = p.samples(rate);
+    let samples = p
+        .closed_samples(&k.mech, rate)
+        .map_err(|i| invalid(&format!("motion \"{name}\" cannot be planned"), i))?;
     let (tau, _) = plan::inverse_dynamics(&k.mech, &samples, &k.gravity, usize::MAX)
         .map_err(|e| ApiError::Internal(anyhow::anyhow!("inverse dynamics: {e}")))?;
     Ok(TrajectoryView {
@@ -295,7 +297,14 @@ pub fn for_package(
     for spec in specs {
         match plan::plan(&mech, &axes, spec) {
             Ok(p) if p.sample_count(TABLE_RATE) <= plan::MAX_SAMPLES => {
-                let s = p.samples(TABLE_RATE);
+                let s = match p.closed_samples(&mech, TABLE_RATE) {
+                    Ok(s) => s,
+                    Err(issues) => {
+                        let problem = issues.iter().map(|i| i.message.clone()).collect::<Vec<_>>().join("; ");
+                        skipped.push(Skipped { motion: spec.name.clone(), problem: pipeline::ir::clip(&problem, 1000) });
+                        continue;
+                    }
+                };
                 let table = pipeline::back::modelica::mechatronics::MotionTable {
                     label: spec.name.clone(),
                     axes: axes.iter().map(|a| a.name.clone()).collect(),

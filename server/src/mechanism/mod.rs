@@ -29,6 +29,7 @@
 //! - Inverse kinematics works on tree mechanisms (no loop closures).
 
 mod closure;
+mod driven;
 mod dynamics;
 mod ik;
 mod kinematics;
@@ -45,6 +46,7 @@ use crate::pipeline::passes::loops::{ConstraintClass, Cut};
 use crate::pipeline::valid::Validated;
 
 pub use closure::Assembly;
+pub use driven::ClosedState;
 pub use dynamics::Workspace;
 pub use ik::{IkOptions, IkResult, IkTarget};
 pub use kinematics::Kinematics;

@@ -273,3 +273,83 @@ fn lengths_are_checked() {
     let (_, m) = arm(6);
     assert!(matches!(m.forward(&[0.0; 3]), Err(MechanismError::Length { expected: 6, got: 3, .. })));
 }
+
+/// Loops driven at their independent coordinates: the driven torques are the gradient of the
+/// potential energy along the closed mechanism (statics), and their power is the rate of change
+/// of the total energy (dynamics), on every loop case.
+#[test]
+fn driven_loop_torques_balance_energy() {
+    for name in ["fourbar", "crank_rocker_noise", "slider_crank", "sixbar_6digit"] {
+        let (a, m) = case(name);
+        assert!(m.has_loops(), "{name}");
+        let n = m.dof();
+        let driven = m.driven();
+        assert!(!driven.is_empty() && driven.len() < n, "{name}: driven {driven:?}");
+        let g = Vector3::new(0.3, -9.81, 0.7);
+        let mut ws = m.workspace();
+        let potential = |q: &[f64]| -> f64 {
+            let k = m.forward(q).expect("fk");
+            (0..a.model.bodies.len())
+                .map(|b| {
+                    let mp = a.model.mass_properties_cs1(BodyId(b as u32));
+                    let c = m.body_pose(&k, BodyId(b as u32)).expect("pose") * nalgebra::Point3::from(mp.r_cm);
+                    -mp.mass * g.dot(&c.coords)
+                })
+                .sum()
+        };
+        let kinetic = |s: &ClosedState, ws: &mut Workspace| -> f64 {
+            // ½ q̇ᵀ M q̇ = ½ q̇ · τ(q, 0, q̇) with gravity off.
+            let mut tau = vec![0.0; n];
+            m.inverse_dynamics(&s.q, &vec![0.0; n], &s.qd, &Vector3::zeros(), ws, &mut tau).expect("rnea");
+            0.5 * s.qd.iter().zip(&tau).map(|(a, b)| a * b).sum::<f64>()
+        };
+        let closed = |t: f64, qd_i: &[f64], qdd_i: &[f64]| -> ClosedState {
+            let mut s = ClosedState { q: m.q0(), qd: vec![0.0; n], qdd: vec![0.0; n], cut: m.cut_q0() };
+            for (k, &i) in driven.iter().enumerate() {
+                s.q[i] += qd_i[k] * t + 0.5 * qdd_i[k] * t * t;
+                s.qd[i] = qd_i[k] + qdd_i[k] * t;
+                s.qdd[i] = qdd_i[k];
+            }
+            m.close(&mut s).expect("closes");
+            s
+        };
+        let mut rng = XorShift::new(11);
+        let qd_i: Vec<f64> = driven.iter().map(|_| rng.range(-0.5, 0.5)).collect();
+        let qdd_i: Vec<f64> = driven.iter().map(|_| rng.range(-1.0, 1.0)).collect();
+        // Statics: at rest, τ_i = ∂V/∂q_i on the closed mechanism.
+        let zero = vec![0.0; driven.len()];
+        let rest = closed(0.0, &zero, &zero);
+        let mut tree = vec![0.0; n];
+        let tau = m.driven_torques(&rest, &g, &mut ws, &mut tree).expect("torques");
+        for (k, &i) in driven.iter().enumerate() {
+            let h = 1e-5;
+            let mut dir = zero.clone();
+            dir[k] = 1.0;
+            let vp = potential(&closed(h, &dir, &zero).q);
+            let vm = potential(&closed(-h, &dir, &zero).q);
+            let dv = (vp - vm) / (2.0 * h);
+            assert!((dv - tau[k]).abs() < 1e-5 * dv.abs().max(1e-3), "{name}: gravity at {i}: dV/dq {dv} vs {}", tau[k]);
+        }
+        // Dynamics: τ·q̇ = d(T + V)/dt along the closed motion.
+        let s0 = closed(0.0, &qd_i, &qdd_i);
+        let tau = m.driven_torques(&s0, &g, &mut ws, &mut tree).expect("torques");
+        let power: f64 = tau.iter().zip(&qd_i).map(|(a, b)| a * b).sum();
+        let dt = 1e-4;
+        let e = |t: f64, ws: &mut Workspace| {
+            let s = closed(t, &qd_i, &qdd_i);
+            kinetic(&s, ws) + potential(&s.q)
+        };
+        let de = (e(dt, &mut ws) - e(-dt, &mut ws)) / (2.0 * dt);
+        assert!((power - de).abs() < 1e-5 * de.abs().max(power.abs()).max(1e-3), "{name}: power {power} vs dE/dt {de}");
+        // Followers move consistently: their speeds are the time derivative of their positions.
+        let (p, mm) = (closed(dt, &qd_i, &qdd_i), closed(-dt, &qd_i, &qdd_i));
+        for i in 0..n {
+            let fd = (p.q[i] - mm.q[i]) / (2.0 * dt);
+            assert!((fd - s0.qd[i]).abs() < 1e-6 * fd.abs().max(1.0), "{name}: speed of {i}: {fd} vs {}", s0.qd[i]);
+            let fdd = (p.qd[i] - mm.qd[i]) / (2.0 * dt);
+            assert!((fdd - s0.qdd[i]).abs() < 1e-4 * fdd.abs().max(1.0), "{name}: acceleration of {i}: {fdd} vs {}", s0.qdd[i]);
+        }
+        let inertia = m.driven_inertia(&s0, &mut ws).expect("inertia");
+        assert!(inertia.iter().all(|x| *x > 0.0), "{name}: {inertia:?}");
+    }
+}

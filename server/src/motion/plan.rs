@@ -15,8 +15,10 @@
 //! - Every problem is an [`Issue`] naming the keyframe (`keyframes[2]`) and joint: nothing is
 //!   planned half-way.
 //!
-//! Mechanisms with closed loops are refused for now (their dependent coordinates would have to
-//! follow by assembly, and inverse kinematics does not handle closures yet).
+//! Mechanisms with closed loops are driven at their independent coordinates
+//! ([`Mechanism::driven`]): keyframes set those only, the other joints follow the loop closure at
+//! every sample ([`Planned::closed_samples`]), and the torques are those of the driven joints
+//! (the followers carry none). Inverse kinematics does not handle closures yet.
 
 use std::collections::BTreeMap;
 
@@ -25,7 +27,7 @@ use serde::{Deserialize, Serialize};
 
 use super::{JerkLimited, Limits, Profile, Ptp2, Quintic, State};
 use crate::library::Issue;
-use crate::mechanism::{CoordKind, IkOptions, IkTarget, Mechanism, XorShift};
+use crate::mechanism::{ClosedState, CoordKind, IkOptions, IkTarget, Mechanism, XorShift};
 
 /// Most keyframes in one motion.
 pub const MAX_KEYFRAMES: usize = 1000;
@@ -236,6 +238,9 @@ pub struct Samples {
     pub q: Vec<Vec<f64>>,
     pub qd: Vec<Vec<f64>>,
     pub qdd: Vec<Vec<f64>>,
+    /// Per sample, the coordinates of plainly emitted closing joints (loop mechanisms only).
+    #[serde(skip)]
+    pub cut: Vec<Vec<f64>>,
 }
 
 impl Planned {
@@ -256,7 +261,42 @@ impl Planned {
         (self.duration * rate - 1e-9).ceil().max(0.0) as usize + 1
     }
 
-    /// Samples at `t = i / rate` for `i = 0, 1, ...`, the last one at the end of the motion.
+    /// [`Planned::samples`] with every loop closed: the followers' positions, speeds and
+    /// accelerations come from the closure at each sample (the profile's values of the driven
+    /// joints are kept). For a tree, the samples as they are.
+    pub fn closed_samples(&self, mech: &Mechanism, rate: f64) -> Result<Samples, Vec<Issue>> {
+        let mut s = self.samples(rate);
+        if !mech.has_loops() {
+            return Ok(s);
+        }
+        let n = self.axes.len();
+        let mut state = ClosedState { q: mech.q0(), qd: vec![0.0; n], qdd: vec![0.0; n], cut: mech.cut_q0() };
+        let driven = mech.driven();
+        for i in 0..s.t.len() {
+            for &a in &driven {
+                state.q[a] = s.q[a][i];
+                state.qd[a] = s.qd[a][i];
+                state.qdd[a] = s.qdd[a][i];
+            }
+            if let Err(e) = mech.close(&mut state) {
+                let k = self.keyframes.iter().position(|kf| kf.time >= s.t[i]).unwrap_or(0);
+                return Err(vec![Issue::new(
+                    format!("keyframes[{k}]"),
+                    format!("the loops cannot be closed at t = {} s on the way to keyframe {k}: {e}", fmt(s.t[i])),
+                )]);
+            }
+            for a in 0..n {
+                s.q[a][i] = state.q[a];
+                s.qd[a][i] = state.qd[a];
+                s.qdd[a][i] = state.qdd[a];
+            }
+            s.cut.push(state.cut.clone());
+        }
+        Ok(s)
+    }
+
+    /// Samples at `t = i / rate` for `i = 0, 1, ...`, the last one at the end of the motion
+    /// (the profiles only: see [`Planned::closed_samples`] for loop mechanisms).
     pub fn samples(&self, rate: f64) -> Samples {
         let n = self.sample_count(rate);
         let axes = self.axes.len();
@@ -265,6 +305,7 @@ impl Planned {
             q: vec![Vec::with_capacity(n); axes],
             qd: vec![Vec::with_capacity(n); axes],
             qdd: vec![Vec::with_capacity(n); axes],
+            cut: Vec::new(),
         };
         for i in 0..n {
             let t = ((i as f64) / rate).min(self.duration);
@@ -391,12 +432,10 @@ pub fn plan(mech: &Mechanism, axes: &[Axis], spec: &MotionSpec) -> Result<Planne
     if !issues.is_empty() {
         return Err(issues);
     }
-    if mech.has_loops() {
-        return Err(vec![Issue::new(
-            "keyframes",
-            "motions on mechanisms with closed kinematic loops are not supported yet (their dependent joints would have to follow the loop closure)",
-        )]);
-    }
+    let loops = mech.has_loops();
+    let driven_names = || -> String {
+        mech.driven().iter().map(|&i| axes.get(i).map_or("", |a| a.name.as_str())).collect::<Vec<_>>().join(", ")
+    };
     let index: BTreeMap<&str, usize> = axes.iter().enumerate().map(|(i, a)| (a.name.as_str(), i)).collect();
     let n = axes.len();
     let mut prev: Vec<f64> = axes.iter().map(|a| a.q0).collect();
@@ -409,6 +448,13 @@ pub fn plan(mech: &Mechanism, axes: &[Axis], spec: &MotionSpec) -> Result<Planne
             Target::Joints { values } => {
                 for (name, v) in values {
                     match index.get(name.as_str()) {
+                        Some(&i) if loops && !mech.coordinates().get(i).is_some_and(|c| c.independent) => issues.push(Issue::new(
+                            format!("{at}.values.{name}"),
+                            format!(
+                                "keyframe {k}: joint \"{name}\" follows the closure of a kinematic loop; set the driven joints instead: {}",
+                                driven_names()
+                            ),
+                        )),
                         Some(&i) => q[i] = *v,
                         None => issues.push(Issue::new(
                             format!("{at}.values.{name}"),
@@ -453,6 +499,13 @@ pub fn plan(mech: &Mechanism, axes: &[Axis], spec: &MotionSpec) -> Result<Planne
                         fmt(hi)
                     ),
                 ));
+            }
+        }
+        if loops && issues.is_empty() {
+            let mut st = ClosedState { q: q.clone(), qd: vec![0.0; n], qdd: vec![0.0; n], cut: mech.cut_q0() };
+            match mech.close(&mut st) {
+                Ok(()) => q = st.q,
+                Err(e) => issues.push(Issue::new(at.clone(), format!("keyframe {k}: the loops cannot be closed at these joint values: {e}"))),
             }
         }
         prev = q.clone();
@@ -609,6 +662,9 @@ pub fn inverse_dynamics(
     gravity: &Vector3<f64>,
     stride: usize,
 ) -> Result<(Vec<Vec<f64>>, Vec<f64>), crate::mechanism::MechanismError> {
+    if mech.has_loops() {
+        return driven_dynamics(mech, s, gravity, stride);
+    }
     let n = mech.dof();
     let mut ws = mech.workspace();
     let mut tau = vec![Vec::with_capacity(s.t.len()); n];
@@ -632,6 +688,42 @@ pub fn inverse_dynamics(
                 mech.inverse_dynamics(&q, &zero, &e, &Vector3::zeros(), &mut ws, &mut out)?;
                 inertia[a] = inertia[a].max(out[a]);
                 e[a] = 0.0;
+            }
+        }
+    }
+    Ok((tau, inertia))
+}
+
+/// [`inverse_dynamics`] of a loop mechanism from [`Planned::closed_samples`]: the driven joints'
+/// torques (followers 0) and the inertia each driven joint sees.
+#[allow(clippy::needless_range_loop)] // samples index every axis's column
+fn driven_dynamics(
+    mech: &Mechanism,
+    s: &Samples,
+    gravity: &Vector3<f64>,
+    stride: usize,
+) -> Result<(Vec<Vec<f64>>, Vec<f64>), crate::mechanism::MechanismError> {
+    let n = mech.dof();
+    let driven = mech.driven();
+    let mut ws = mech.workspace();
+    let mut tau = vec![vec![0.0; s.t.len()]; n];
+    let mut inertia = vec![0.0_f64; n];
+    let mut tree = vec![0.0; n];
+    let mut state = ClosedState { q: vec![0.0; n], qd: vec![0.0; n], qdd: vec![0.0; n], cut: Vec::new() };
+    for i in 0..s.t.len() {
+        for a in 0..n {
+            state.q[a] = s.q[a][i];
+            state.qd[a] = s.qd[a][i];
+            state.qdd[a] = s.qdd[a][i];
+        }
+        state.cut = s.cut.get(i).cloned().unwrap_or_else(|| mech.cut_q0());
+        let t = mech.driven_torques(&state, gravity, &mut ws, &mut tree)?;
+        for (k, &a) in driven.iter().enumerate() {
+            tau[a][i] = t[k];
+        }
+        if i % stride.max(1) == 0 || i + 1 == s.t.len() {
+            for (k, m) in mech.driven_inertia(&state, &mut ws)?.into_iter().enumerate() {
+                inertia[driven[k]] = inertia[driven[k]].max(m);
             }
         }
     }

@@ -173,3 +173,37 @@ fn gravity_torques_along_a_motion_match_a_static_solve() {
         assert!(inertia[a] > 0.0, "axis {a}");
     }
 }
+
+#[test]
+fn loop_mechanisms_are_driven_at_their_independent_joints() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/in/fourbar");
+    let bundle = crate::cli::read_bundle(&dir, &Default::default()).expect("bundle");
+    let a = pipeline::analyse(&bundle, &Options::default()).expect("analyses");
+    let m = Mechanism::from_validated(&a.model, &a.validated).expect("mechanism");
+    let axes = axes(&m, &BTreeMap::new());
+    let driven = m.driven();
+    assert_eq!(driven.len(), 1, "a four-bar has one degree of freedom");
+    let d = axes[driven[0]].name.clone();
+    let follower = axes.iter().enumerate().find(|(i, _)| !driven.contains(i)).map(|(_, a)| a.name.clone()).expect("a follower");
+    let spec = MotionSpec {
+        name: "crank".into(),
+        keyframes: vec![joints(&[], Interpolation::Ptp, None), joints(&[(&d, axes[driven[0]].q0 + 0.3)], Interpolation::Quintic, Some(1.0))],
+    };
+    let p = plan(&m, &axes, &spec).expect("plans");
+    let s = p.closed_samples(&m, 100.0).expect("closes");
+    for i in 0..s.t.len() {
+        let q: Vec<f64> = (0..m.dof()).map(|a| s.q[a][i]).collect();
+        let r = m.closure_residual(&q, &s.cut[i]).expect("residual");
+        assert!(r.iter().all(|x| x.abs() < 1e-9), "t = {}: {r:?}", s.t[i]);
+    }
+    // The followers move; the torques sit at the driven joint only.
+    let f = axes.iter().position(|a| a.name == follower).expect("index");
+    assert!((s.q[f][s.t.len() - 1] - s.q[f][0]).abs() > 1e-3);
+    let (tau, inertia) = inverse_dynamics(&m, &s, &Vector3::new(0.0, -9.81, 0.0), 10).expect("id");
+    assert!(tau[f].iter().all(|t| *t == 0.0));
+    assert!(tau[driven[0]].iter().any(|t| t.abs() > 0.0) && inertia[driven[0]] > 0.0);
+    // A keyframe on a follower is refused, naming the driven joints.
+    let bad = MotionSpec { name: "x".into(), keyframes: vec![joints(&[], Interpolation::Ptp, None), joints(&[(&follower, 0.1)], Interpolation::Ptp, None)] };
+    let e = plan(&m, &axes, &bad).err().expect("refused");
+    assert!(e[0].message.contains("follows the closure of a kinematic loop") && e[0].message.contains(&d), "{e:?}");
+}
