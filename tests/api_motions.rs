@@ -19,6 +19,12 @@ async fn seeded_instance(app: &TestApp, class_path: &str) -> String {
     list[0]["id"].as_str().expect("a seeded instance").to_string()
 }
 
+async fn instance_named(app: &TestApp, name: &str) -> String {
+    let list = json_of(app.get("/api/library/instances").await, 200).await;
+    let i = list.as_array().expect("instances").iter().find(|i| i["name"] == name).unwrap_or_else(|| panic!("no instance {name}"));
+    i["id"].as_str().expect("id").to_string()
+}
+
 async fn json_of(r: reqwest::Response, status: u16) -> Value {
     let s = r.status().as_u16();
     let v: Value = r.json().await.expect("json body");
@@ -105,11 +111,37 @@ async fn limits_motions_trajectories_and_ik() {
 
     // A drive on the first joint and a re-export: Mechatronics.mo follows the motions (the one
     // this version cannot plan is skipped and reported), the report lists them.
-    let motor = seeded_instance(&app, "cad2mo.Drives.Motors.DCPermanentMagnet").await;
-    let gear = seeded_instance(&app, "Modelica.Mechanics.Rotational.Components.IdealGear").await;
+    // The maxon RE 40 and the 100:1 strain-wave gear carry the datasheet values every check needs.
+    let motor = instance_named(&app, "maxon RE 40 148877 (24 V)").await;
+    let gear = instance_named(&app, "Ideal gear 100:1").await;
     let controller = seeded_instance(&app, "cad2mo.Drives.Controllers.CascadePPI").await;
     let drive = json!({"motor_instance": motor, "gear_instance": gear, "controller_instance": controller});
     json_of(app.client.put(app.url(&format!("{base}/drives/{}", names[0]))).json(&drive).send().await.expect("put"), 200).await;
+    // Sizing at 1 kHz: the drive's checks against its motor and gear, ranked alternatives, and
+    // what the other joints ask of a drive.
+    let sz = json_of(app.get(&format!("{base}/motions/{mid}/sizing")).await, 200).await;
+    assert_eq!(sz["rate"], 1000.0);
+    let d = &sz["drives"][0];
+    assert_eq!(d["joint"], names[0].as_str(), "{sz:#}");
+    let checks: Vec<&str> = d["checks"].as_array().expect("checks").iter().map(|c| c["check"].as_str().expect("check")).collect();
+    assert_eq!(d["missing"], json!([]), "{d:#}");
+    for c in ["peak_torque", "rms_torque", "voltage", "inertia_ratio"] {
+        assert!(checks.contains(&c), "{c} in {checks:?}");
+    }
+    for c in d["checks"].as_array().expect("checks") {
+        if let (Some(v), Some(l)) = (c["value"].as_f64(), c["limit"].as_f64()) {
+            assert!((c["margin"].as_f64().expect("margin") - (l - v) / l).abs() < 1e-12, "{c}");
+        }
+    }
+    // The gear's output torque is the joint torque of the trajectory at the same rate.
+    let t1k = json_of(app.get(&format!("{base}/motions/{mid}/trajectory?rate=1000")).await, 200).await;
+    let peak = t1k["tau"][0].as_array().expect("tau").iter().map(|v| v.as_f64().expect("f").abs()).fold(0.0, f64::max);
+    let gear_peak = d["checks"].as_array().expect("checks").iter().find(|c| c["check"] == "gear_peak_torque").expect("gear check");
+    assert!((gear_peak["value"].as_f64().expect("value") - peak).abs() < 1e-9 * peak, "{gear_peak} vs {peak}");
+    let points = d["operating_points"]["speed"].as_array().expect("points").len();
+    assert!(points > 10 && points <= 2000, "{points}");
+    assert_eq!(sz["undriven"].as_array().expect("undriven").len(), 5);
+    assert!(sz["ranking"].as_str().expect("ranking").contains("smallest motor"));
     let r = app.client.post(app.url(&format!("{base}/reexport"))).send().await.expect("reexport");
     let queued = json_of(r, 202).await;
     assert_eq!(app.wait_for_job(queued["job_id"].as_str().expect("job")).await["status"], "succeeded");
@@ -129,6 +161,9 @@ async fn limits_motions_trajectories_and_ik() {
     let rows = table.matches(";\n      ").count() + 1;
     assert_eq!(rows, (duration * 100.0 - 1e-9).ceil() as usize + 1, "100 Hz table rows");
     assert!(read(&mut z, "/package.order").lines().any(|l| l == "Motions"));
+    let sizing: Value = serde_json::from_str(&read(&mut z, "/Resources/Sizing/pick.json")).expect("sizing json");
+    assert_eq!(sizing["drives"][0]["joint"], names[0].as_str());
+    assert_eq!(sizing["drives"][0]["checks"], sz["drives"][0]["checks"], "the package's sizing is the API's");
     let report: Value = app.report(&id, 1).await.json().await.expect("report");
     assert_eq!(report["motions"]["written"], json!(["pick"]));
     assert_eq!(report["motions"]["skipped"][0]["motion"], "far");

@@ -17,14 +17,24 @@ fn non_test_source(path: &Path) -> String {
 /// panics on input (no unwrap/expect) and never prints (warnings are returned, not logged).
 #[test]
 fn pipeline_has_no_io_and_no_panics() {
-    let root = workspace_root().join("server/src/pipeline");
+    no_io_and_no_panics("pipeline", 10);
+}
+
+/// The drive sizing follows the pipeline's rules.
+#[test]
+fn sizing_has_no_io_and_no_panics() {
+    no_io_and_no_panics("sizing", 1);
+}
+
+fn no_io_and_no_panics(module: &str, min_files: usize) {
+    let root = workspace_root().join("server/src").join(module);
     let forbidden = [
         "std::fs", "std::net", "std::process", "std::env", "File::", "tokio", "axum", "sqlx", "hyper",
         "println!", "eprintln!", "print!(", "dbg!", ".unwrap()", ".expect(", "todo!", "unimplemented!",
     ];
     let mut problems = Vec::new();
     let files = files_with_ext(&root, &[".rs"]);
-    assert!(files.len() > 10, "pipeline sources not found under {}", root.display());
+    assert!(files.len() > min_files, "{module} sources not found under {}", root.display());
     for f in files {
         // Unit tests kept in their own `tests.rs` and the shared `testutil.rs` (both declared under
         // `#[cfg(test)]`) may do anything.
@@ -36,12 +46,12 @@ fn pipeline_has_no_io_and_no_panics() {
             let code = line.split("//").next().unwrap_or("");
             for word in forbidden {
                 if code.contains(word) {
-                    problems.push(format!("{}:{}: `{word}` in pipeline code: {}", f.display(), n + 1, line.trim()));
+                    problems.push(format!("{}:{}: `{word}` in {module} code: {}", f.display(), n + 1, line.trim()));
                 }
             }
         }
     }
-    assert!(problems.is_empty(), "pipeline tidy violations:\n{}", problems.join("\n"));
+    assert!(problems.is_empty(), "{module} tidy violations:\n{}", problems.join("\n"));
 }
 
 /// Only `store` (when it exists) speaks SQL; nothing else mentions sqlx.

@@ -100,6 +100,7 @@ pub fn check_slots(instances: &[(&str, &Instance, &Class)], overrides: &Map<Stri
 }
 
 /// The class path and values of one slot: the instance's values with the overrides applied.
+/// Datasheet values are not Modelica parameters and are left out.
 pub fn choice(class: &Class, inst: &Instance, overrides: Option<&Json>) -> Result<ClassChoice, Vec<Issue>> {
     let over = match overrides.and_then(Json::as_object) {
         Some(map) => crate::library::validate_overrides(class, map)?,
@@ -108,6 +109,7 @@ pub fn choice(class: &Class, inst: &Instance, overrides: Option<&Json>) -> Resul
     let params = inst
         .values
         .iter()
+        .filter(|(name, _)| !class.parameter(name).is_some_and(|p| p.datasheet))
         .map(|(name, v)| {
             let v = over.iter().find(|(n, _)| n == name).map(|(_, o)| o).unwrap_or(v);
             (name.clone(), to_param(v))
@@ -223,6 +225,18 @@ pub async fn resolve_for_model(store: &crate::store::Store, model_id: &str) -> R
 mod tests {
     use super::*;
     use crate::pipeline::front::bundle::Limits;
+
+    /// Datasheet values are no Modelica parameters: a drive's class choice leaves them out.
+    #[test]
+    fn datasheet_values_are_not_modifiers() {
+        let lib = crate::library::seed::library().expect("seed");
+        let re40 = lib.instances.iter().find(|i| i.id == crate::library::seed::MAXON_RE40).expect("RE 40");
+        let class = lib.class(&re40.class_id).expect("class");
+        assert!(re40.value("T_nom").is_some());
+        let c = choice(class, re40, None).expect("choice");
+        let names: Vec<&str> = c.params.iter().map(|(n, _)| n.as_str()).collect();
+        assert_eq!(names, ["R", "L", "k", "J", "d", "V_max", "I_max", "Tc"]);
+    }
 
     /// Loop cuts emitted as constraints have no drive flange, so they are never offered.
     #[test]

@@ -178,6 +178,7 @@ pub fn build_package(
     let mut obs = BuildObserver {
         drives,
         motions,
+        gravity: options.gravity,
         active: Vec::new(),
         orphaned: Vec::new(),
         written: Vec::new(),
@@ -211,6 +212,11 @@ pub fn build_package(
 pub struct MotionsInput {
     pub specs: Vec<crate::motion::plan::MotionSpec>,
     pub limits: std::collections::BTreeMap<String, crate::motion::plan::LimitsEdit>,
+    /// The version being built (named in the sizing files).
+    pub version: i64,
+    /// The model's drives and the library, for `Resources/Sizing/<motion>.json`.
+    pub drives: Vec<crate::motions::DriveParts>,
+    pub catalog: crate::sizing::Catalog,
 }
 
 /// Passes the conversion's stages on, plans the drives from its report and the motions on the
@@ -218,6 +224,7 @@ pub struct MotionsInput {
 struct BuildObserver<'a> {
     drives: &'a [crate::drives::ResolvedDrive],
     motions: &'a MotionsInput,
+    gravity: [f64; 3],
     active: Vec<String>,
     orphaned: Vec<String>,
     /// Motions written into `Mechatronics.mo`, and those this version cannot plan.
@@ -251,10 +258,24 @@ impl Observer for BuildObserver<'_> {
     }
 
     fn extras(&mut self, view: &pipeline::observe::ModelView<'_>, _drives: &[DrivePlan]) -> pipeline::observe::Extras {
-        let (_, planned, skipped) = crate::motions::for_package(view, &self.motions.specs, &self.motions.limits);
+        let (mech, planned, skipped) = crate::motions::for_package(view, &self.motions.specs, &self.motions.limits);
         self.written = planned.iter().map(|p| p.table.label.clone()).collect();
         self.skipped = skipped;
-        pipeline::observe::Extras { motions: planned.into_iter().map(|p| p.table).collect(), files: Vec::new() }
+        let tables: Vec<_> = planned.iter().map(|p| p.table.clone()).collect();
+        let files = match (mech, pipeline::back::modelica::mechatronics::motion_class_names(&tables)) {
+            (Some(mech), Ok(names)) => crate::motions::sizing_files(
+                &mech,
+                &nalgebra::Vector3::from(self.gravity),
+                self.motions.version,
+                view.package_name,
+                &planned,
+                &names,
+                &self.motions.drives,
+                &self.motions.catalog,
+            ),
+            _ => Vec::new(),
+        };
+        pipeline::observe::Extras { motions: tables, files }
     }
 }
 

@@ -348,6 +348,9 @@ async fn convert(ctx: &Ctx, job: &ClaimedJob) -> Result<Stored, ApiError> {
     let motions = export::MotionsInput {
         specs: crate::store::motions::list(&ctx.store, &job.model_id).await?.into_iter().map(|m| m.spec).collect(),
         limits: crate::store::motions::limits(&ctx.store, &job.model_id).await?,
+        version: job.version,
+        drives: crate::motions::drive_parts(&ctx.store, &job.model_id).await?,
+        catalog: crate::sizing::Catalog::from_library(&crate::store::library::export(&ctx.store).await?),
     };
     let hints = previous_names(ctx, job).await?;
     let blobs = ctx.blobs.clone();

@@ -8,6 +8,8 @@
 //!   bundle; [`diff`]: what changed between two conversions; [`library`]: the motor library's rules.
 //! - [`mechanism`]: motion and inverse dynamics of a validated model (kinematics, loop assembly,
 //!   IK, RNEA), in the emitted Modelica model's joint coordinates.
+//! - [`sizing`]: drive sizing of a motion's joint loads against the motor library (checks,
+//!   operating points, ranked alternatives).
 
 pub mod api;
 pub mod app;
@@ -22,6 +24,7 @@ pub mod mechanism;
 pub mod motion;
 pub mod motions;
 pub mod pipeline;
+pub mod sizing;
 pub mod store;
 pub mod telemetry;
 

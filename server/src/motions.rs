@@ -324,3 +324,166 @@ pub fn for_package(
     }
     (Some(mech), out, skipped)
 }
+
+/// A drive as stored, with its library parts (for sizing).
+#[derive(Clone, Debug)]
+pub struct DriveParts {
+    pub joint: String,
+    pub motor: (crate::library::Instance, crate::library::Class),
+    pub gear: (crate::library::Instance, crate::library::Class),
+    pub overrides: serde_json::Map<String, serde_json::Value>,
+}
+
+/// A drive that cannot be sized, and why.
+#[derive(Clone, Debug, Serialize)]
+pub struct NotSized {
+    pub joint: String,
+    pub problem: String,
+}
+
+/// The sizing report of one motion: every drive's checks and ranked alternatives, what the
+/// joints without a drive ask of one, and the drives that cannot be sized.
+#[derive(Clone, Debug, Serialize)]
+pub struct SizingReport {
+    pub motion: String,
+    pub version: i64,
+    pub duration: f64,
+    pub rate: f64,
+    /// How the alternatives are ranked.
+    pub ranking: &'static str,
+    pub drives: Vec<crate::sizing::DriveSizing>,
+    pub undriven: Vec<crate::sizing::Undriven>,
+    pub not_sized: Vec<NotSized>,
+    /// Drives of joints this version does not have.
+    pub orphaned: Vec<String>,
+}
+
+const RANKING: &str = "combinations that pass every evaluated check: those with every datasheet value first, then the smallest motor (rotor inertia ascending), then the largest minimum margin";
+
+fn kind_of(k: CoordKind) -> pipeline::back::modelica::mechatronics::JointKind {
+    match k {
+        CoordKind::Revolute => pipeline::back::modelica::mechatronics::JointKind::Revolute,
+        CoordKind::Prismatic => pipeline::back::modelica::mechatronics::JointKind::Prismatic,
+    }
+}
+
+/// Sizes every drive of a planned motion at [`SIZING_RATE`] against its motor and gear and ranks
+/// the catalog's alternatives; joints without a drive get their own load. Loops: only the
+/// driven joints carry torque.
+pub fn sizing(
+    mech: &Mechanism,
+    gravity: &Vector3<f64>,
+    version: i64,
+    name: &str,
+    p: &Planned,
+    drives: &[DriveParts],
+    catalog: &crate::sizing::Catalog,
+) -> Result<SizingReport, ApiError> {
+    let samples = p.closed_samples(mech, SIZING_RATE).map_err(|i| invalid(&format!("motion \"{name}\" cannot be planned"), i))?;
+    let (tau, inertia) = plan::inverse_dynamics(mech, &samples, gravity, 10)
+        .map_err(|e| ApiError::Internal(anyhow::anyhow!("inverse dynamics: {e}")))?;
+    let mut report = SizingReport {
+        motion: name.to_string(),
+        version,
+        duration: p.duration,
+        rate: SIZING_RATE,
+        ranking: RANKING,
+        drives: Vec::new(),
+        undriven: Vec::new(),
+        not_sized: Vec::new(),
+        orphaned: Vec::new(),
+    };
+    let driven: Vec<usize> = if mech.has_loops() { mech.driven() } else { (0..mech.dof()).collect() };
+    for d in drives {
+        if !p.axes.iter().any(|a| a.name == d.joint) {
+            report.orphaned.push(d.joint.clone());
+        }
+    }
+    for (i, axis) in p.axes.iter().enumerate() {
+        if !driven.contains(&i) {
+            continue;
+        }
+        let load = crate::sizing::AxisLoad {
+            joint: &axis.name,
+            kind: kind_of(axis.kind),
+            t: &samples.t,
+            qd: &samples.qd[i],
+            qdd: &samples.qdd[i],
+            tau: &tau[i],
+            load_inertia: inertia[i],
+        };
+        let Some(d) = drives.iter().find(|d| d.joint == axis.name) else {
+            match crate::sizing::undriven(load) {
+                Ok(u) => report.undriven.push(u),
+                Err(e) => report.not_sized.push(NotSized { joint: axis.name.clone(), problem: e.to_string() }),
+            }
+            continue;
+        };
+        let overrides = |slot: &str, class: &crate::library::Class| -> Result<Vec<(String, crate::library::Value)>, String> {
+            match d.overrides.get(slot).and_then(serde_json::Value::as_object) {
+                Some(map) => crate::library::validate_overrides(class, map).map_err(|issues| {
+                    issues.iter().map(|i| format!("{slot} {}: {}", i.field, i.message)).collect::<Vec<_>>().join("; ")
+                }),
+                None => Ok(Vec::new()),
+            }
+        };
+        let sized = overrides("motor", &d.motor.1)
+            .and_then(|mo| {
+                crate::sizing::parts::motor(&d.motor.1, &d.motor.0, &mo).map_err(|e| e.to_string())
+            })
+            .and_then(|motor| {
+                let go = overrides("gear", &d.gear.1)?;
+                let gear = crate::sizing::parts::gear(&d.gear.1, &d.gear.0, &go).map_err(|e| e.to_string())?;
+                crate::sizing::size_drive(load, &motor, &gear, Some(catalog), crate::sizing::TOP).map_err(|e| e.to_string())
+            });
+        match sized {
+            Ok(s) => report.drives.push(s),
+            Err(problem) => report.not_sized.push(NotSized { joint: axis.name.clone(), problem }),
+        }
+    }
+    Ok(report)
+}
+
+/// The model's drives with their motor and gear instances.
+pub async fn drive_parts(store: &crate::store::Store, model_id: &str) -> Result<Vec<DriveParts>, ApiError> {
+    let mut out = Vec::new();
+    for a in crate::store::drives::list(store, model_id).await? {
+        let mut parts = Vec::new();
+        for id in [&a.motor_instance, &a.gear_instance] {
+            let p = crate::store::library::get_instance(store, id)
+                .await?
+                .ok_or_else(|| ApiError::Conflict(format!("drive of joint {}: library instance {id} is gone", a.joint)))?;
+            parts.push(p);
+        }
+        let mut it = parts.into_iter();
+        let (Some(motor), Some(gear)) = (it.next(), it.next()) else { continue };
+        out.push(DriveParts { joint: a.joint, motor, gear, overrides: a.overrides });
+    }
+    Ok(out)
+}
+
+/// The sizing files of a package: `<pkg>/Resources/Sizing/<motion>.json` for each planned motion
+/// (named like its table in `Motions`), when the model has drives or joints to size.
+#[allow(clippy::too_many_arguments)]
+pub fn sizing_files(
+    mech: &Mechanism,
+    gravity: &Vector3<f64>,
+    version: i64,
+    package_name: &str,
+    planned: &[ForPackage],
+    class_names: &[String],
+    drives: &[DriveParts],
+    catalog: &crate::sizing::Catalog,
+) -> Vec<(String, Vec<u8>)> {
+    let mut files = Vec::new();
+    for (p, file) in planned.iter().zip(class_names) {
+        let json = match sizing(mech, gravity, version, &p.table.label, &p.planned, drives, catalog) {
+            Ok(r) => serde_json::to_vec_pretty(&r),
+            Err(e) => serde_json::to_vec_pretty(&serde_json::json!({ "motion": p.table.label, "error": e.to_string() })),
+        };
+        if let Ok(bytes) = json {
+            files.push((format!("{package_name}/Resources/Sizing/{file}.json"), bytes));
+        }
+    }
+    files
+}

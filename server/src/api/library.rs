@@ -66,6 +66,8 @@ struct ParameterIn {
     #[serde(default)]
     editable: bool,
     #[serde(default)]
+    datasheet: bool,
+    #[serde(default)]
     default: Option<Json_>,
     #[serde(default)]
     comment: String,
@@ -99,6 +101,7 @@ impl ClassIn {
                     min: p.min,
                     max: p.max,
                     editable: p.editable,
+                    datasheet: p.datasheet,
                     default: p.default,
                     comment: p.comment,
                 })
@@ -143,6 +146,7 @@ struct ParameterOut<'a> {
     min: Option<f64>,
     max: Option<f64>,
     editable: bool,
+    datasheet: bool,
     default: Option<&'a library::Value>,
     comment: &'a str,
 }
@@ -174,6 +178,7 @@ fn class_out(c: &library::Class) -> ClassOut<'_> {
                 min: p.min,
                 max: p.max,
                 editable: p.editable,
+                datasheet: p.datasheet,
                 default: p.default.as_ref(),
                 comment: &p.comment,
             })

@@ -249,9 +249,19 @@ async fn trajectory(
 async fn sizing(
     State(state): State<AppState>,
     Path((model_id, motion_id)): Path<(String, String)>,
-) -> Result<Json<serde_json::Value>, ApiError> {
-    let _ = find(&state, &model_id, &motion_id).await?;
-    Err(ApiError::Conflict("sizing is not available yet".into()))
+) -> Result<Json<motions::SizingReport>, ApiError> {
+    let m = find(&state, &model_id, &motion_id).await?;
+    let (version, k) = kinematic(&state, &model_id).await?;
+    let edits = store::motions::limits(&state.store, &model_id).await?;
+    let drives = motions::drive_parts(&state.store, &model_id).await?;
+    let library = store::library::export(&state.store).await?;
+    let report = blocking(move || {
+        let catalog = crate::sizing::Catalog::from_library(&library);
+        let p = motions::plan_motion(&k, &edits, &m.spec)?;
+        motions::sizing(&k.mech, &k.gravity, version, &m.name, &p, &drives, &catalog)
+    })
+    .await?;
+    Ok(Json(report))
 }
 
 #[derive(Deserialize)]

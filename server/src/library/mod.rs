@@ -4,8 +4,14 @@
 //!   own class, generated into each package's `Components/`; `Modelica.` paths are MSL models)
 //!   and declares typed [`Parameter`]s: the Modelica parameters it sets, each with an SI unit,
 //!   inclusive limits, an editable flag and an optional default.
-//! - An [`Instance`] is a class with a value for every parameter, e.g. one motor from its
-//!   datasheet; `source` says where the values come from.
+//! - A *datasheet* parameter ([`Parameter::datasheet`]) is not a Modelica parameter of the class:
+//!   a catalog value that only the drive sizing reads (a motor's nominal torque, a gear's rated
+//!   output torque). It is stored, checked, shown and exchanged like the others, but never
+//!   becomes a Modelica modifier, and an instance may lack it (the sizing then names it as
+//!   missing).
+//! - An [`Instance`] is a class with a value for every Modelica parameter (and for the datasheet
+//!   parameters it knows), e.g. one motor from its datasheet; `source` says where the values
+//!   come from.
 //! - Values arrive as JSON ([`check_value`]): a number, boolean or string in the parameter's unit,
 //!   or `{"value": 82, "unit": "uH"}`, converted to the parameter's SI unit by the table in
 //!   [`units`]. Every check returns *all* the problems it finds as [`Issue`]s.
@@ -143,7 +149,7 @@ impl Serialize for Value {
     }
 }
 
-/// A parameter of a class: the Modelica parameter it sets.
+/// A parameter of a class: the Modelica parameter it sets, or a datasheet value.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Parameter {
     /// The Modelica parameter name; unique in its class.
@@ -157,6 +163,9 @@ pub struct Parameter {
     /// Editable parameters may change on an existing instance and be overridden per drive;
     /// the others are nameplate values.
     pub editable: bool,
+    /// A datasheet value, not a Modelica parameter: optional per instance, never written into
+    /// the generated model (read by [`crate::sizing`]).
+    pub datasheet: bool,
     pub default: Option<Value>,
     pub comment: String,
 }
@@ -182,7 +191,8 @@ impl Class {
     }
 }
 
-/// A library instance: a class with a value for every parameter.
+/// A library instance: a class with a value for every Modelica parameter and for the datasheet
+/// parameters it knows.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Instance {
     pub id: String,
@@ -191,7 +201,8 @@ pub struct Instance {
     pub name: String,
     /// Where the values come from (datasheet, catalog page, measurement).
     pub source: String,
-    /// In the class's parameter order, each in its parameter's unit.
+    /// In the class's parameter order, each in its parameter's unit; datasheet parameters may be
+    /// absent.
     pub values: Vec<(String, Value)>,
 }
 

@@ -5,6 +5,11 @@
 //!
 //! Ids are fixed, so every installation has the same seed ids and an exported seed library is
 //! the same file everywhere.
+//!
+//! Motor and gear classes also declare datasheet parameters (`T_nom`, `T_peak`, `w_max`;
+//! `T_rated`, `T_peak`, `w_in_max`, `J_in`; a screw's `F_peak`) for the drive sizing. An instance
+//! carries only the ones its source prints and we could verify; its `source` says which, and why
+//! the others are left out. Migration 0005 brings installations seeded before them to this seed.
 
 use serde_json::{json, Map, Value as Json};
 
@@ -45,6 +50,7 @@ fn real(
         min,
         max,
         editable,
+        datasheet: false,
         default: default.map(|d| json!(d)),
         comment: comment.to_string(),
     }
@@ -53,6 +59,31 @@ fn real(
 /// A nameplate value: not editable, no default, >= 0.
 fn nameplate(name: &str, unit: &str, comment: &str) -> ParameterDraft {
     real(name, unit, Some(0.0), None, false, None, comment)
+}
+
+/// A datasheet value (not a Modelica parameter; read by the drive sizing): not editable, no
+/// default, >= 0, optional per instance.
+fn datasheet(name: &str, unit: &str, comment: &str) -> ParameterDraft {
+    ParameterDraft { datasheet: true, ..nameplate(name, unit, comment) }
+}
+
+/// The datasheet values of every motor class (`crate::sizing` reads them by these names).
+fn motor_datasheet() -> [ParameterDraft; 3] {
+    [
+        datasheet("T_nom", "N.m", "Datasheet: nominal torque (max. continuous torque, S1)"),
+        datasheet("T_peak", "N.m", "Datasheet: peak torque allowed for short times (intermittent operation)"),
+        datasheet("w_max", "rad/s", "Datasheet: maximum permissible speed"),
+    ]
+}
+
+/// The datasheet values of the rotary gear classes.
+fn gear_datasheet() -> [ParameterDraft; 4] {
+    [
+        datasheet("T_rated", "N.m", "Datasheet: rated (max. continuous) output torque"),
+        datasheet("T_peak", "N.m", "Datasheet: limit for repeated peak output torque (intermittent)"),
+        datasheet("w_in_max", "rad/s", "Datasheet: maximum input speed"),
+        datasheet("J_in", "kg.m2", "Datasheet: moment of inertia of the gear referred to its input (motor) shaft"),
+    ]
 }
 
 fn class(name: &str, domain: &str, modelica_class: &str, description: &str, parameters: Vec<ParameterDraft>) -> ClassDraft {
@@ -97,7 +128,10 @@ fn classes() -> Vec<(&'static str, ClassDraft)> {
                     nameplate("V_max", "V", "Nominal (supply) voltage: limit of the armature voltage"),
                     nameplate("I_max", "A", "Current limit: the nominal (max. continuous) current"),
                     real("Tc", "s", Some(0.0), None, true, Some(0.001), "Time constant of the inner current loop (a drive setting, not a motor value)"),
-                ],
+                ]
+                .into_iter()
+                .chain(motor_datasheet())
+                .collect(),
             ),
         ),
         (
@@ -119,7 +153,10 @@ fn classes() -> Vec<(&'static str, ClassDraft)> {
                     nameplate("Jr", "kg.m2", "Rotor inertia"),
                     nameplate("Js", "kg.m2", "Stator inertia (the stator is fixed in the drive)"),
                     real("TaOperational", "K", Some(0.0), None, true, Some(293.15), "Operational armature temperature"),
-                ],
+                ]
+                .into_iter()
+                .chain(motor_datasheet())
+                .collect(),
             ),
         ),
         (
@@ -129,7 +166,7 @@ fn classes() -> Vec<(&'static str, ClassDraft)> {
                 "gear",
                 "Modelica.Mechanics.Rotational.Components.IdealGear",
                 "Lossless gear of the MSL (flange_a.phi = ratio * flange_b.phi), for revolute joints.",
-                vec![ratio()],
+                std::iter::once(ratio()).chain(gear_datasheet()).collect(),
             ),
         ),
         (
@@ -142,7 +179,10 @@ fn classes() -> Vec<(&'static str, ClassDraft)> {
                 vec![
                     ratio(),
                     real("eta", "1", Some(0.0), Some(1.0), true, Some(1.0), "Efficiency, 0 < eta <= 1 (the generator refuses 0)"),
-                ],
+                ]
+                .into_iter()
+                .chain(gear_datasheet())
+                .collect(),
             ),
         ),
         (
@@ -155,6 +195,9 @@ fn classes() -> Vec<(&'static str, ClassDraft)> {
                 vec![
                     ratio(),
                     real("lead", "m", None, None, false, None, "Screw lead: travel per screw revolution (negative: left-hand thread; must not be 0)"),
+                    datasheet("F_peak", "N", "Datasheet: maximum axial force of screw, nut and bearings"),
+                    datasheet("w_in_max", "rad/s", "Datasheet: maximum input (screw or gearbox input) speed"),
+                    datasheet("J_in", "kg.m2", "Datasheet: moment of inertia referred to the input (motor) shaft"),
                 ],
             ),
         ),
@@ -191,7 +234,7 @@ fn instances() -> Vec<SeedInstance> {
             MAXON_RE40,
             DC_MOTOR,
             "maxon RE 40 148877 (24 V)",
-            "maxon RE 40 Ø40 mm, graphite brushes, 150 W, order number 148877 (24 V winding), maxon catalog motor data, nominal values at 24 V and 25 °C: terminal resistance 0.317 Ω, terminal inductance 0.0823 mH, torque constant 30.2 mNm/A, rotor inertia 134 gcm², nominal voltage 24 V, nominal (max. continuous) current 5.77 A. d is estimated from the no-load current 137 mA at the no-load speed 7580 rpm (d = I0·k/ω0).",
+            "maxon RE 40 Ø40 mm, graphite brushes, 150 W, order number 148877 (24 V winding), maxon catalog motor data, nominal values at 24 V and 25 °C: terminal resistance 0.317 Ω, terminal inductance 0.0823 mH, torque constant 30.2 mNm/A, rotor inertia 134 gcm², nominal voltage 24 V, nominal (max. continuous) current 5.77 A. d is estimated from the no-load current 137 mA at the no-load speed 7580 rpm (d = I0·k/ω0). Datasheet values for the drive sizing (same catalog): nominal torque (max. continuous torque) 170 mNm (= 30.2 mNm/A · (5.77 A - 0.137 A)), max. permissible speed 12000 rpm. maxon prints no peak torque besides the stall torque 2280 mNm at 24 V (the sizing's voltage check covers the speed-torque line), so T_peak is left empty: the peak check then uses k·I_max, the current limit of the generated drive.",
             values(json!({
                 "R": {"value": 0.317, "unit": "Ohm"},
                 "L": {"value": 0.0823, "unit": "mH"},
@@ -200,14 +243,16 @@ fn instances() -> Vec<SeedInstance> {
                 "d": 5.21e-6,
                 "V_max": 24,
                 "I_max": 5.77,
-                "Tc": 0.001
+                "Tc": 0.001,
+                "T_nom": {"value": 170, "unit": "mNm"},
+                "w_max": {"value": 12000, "unit": "rpm"}
             })),
         ),
         (
             MAXON_EC45_FLAT,
             DC_MOTOR,
             "maxon EC 45 flat 70 W (24 V)",
-            "maxon EC 45 flat Ø43.5 mm, brushless, 70 W, 24 V winding with Hall sensors, maxon catalog motor data (values at nominal voltage): terminal resistance phase to phase 0.573 Ω, terminal inductance phase to phase 0.301 mH, torque constant 40.4 mNm/A, rotor inertia 181 gcm², nominal current 3.29 A. A block-commutated brushless motor behaves as a DC motor with the phase-to-phase values. d is estimated from the no-load current 270 mA at the no-load speed 5600 rpm.",
+            "maxon EC 45 flat Ø43.5 mm, brushless, 70 W, 24 V winding with Hall sensors, maxon catalog motor data (values at nominal voltage): terminal resistance phase to phase 0.573 Ω, terminal inductance phase to phase 0.301 mH, torque constant 40.4 mNm/A, rotor inertia 181 gcm², nominal current 3.29 A. A block-commutated brushless motor behaves as a DC motor with the phase-to-phase values. d is estimated from the no-load current 270 mA at the no-load speed 5600 rpm. Datasheet values for the drive sizing (nominal torque, peak torque, max. speed) are not entered: not verified against the catalog.",
             values(json!({
                 "R": 0.573,
                 "L": {"value": 0.301, "unit": "mH"},
@@ -223,7 +268,7 @@ fn instances() -> Vec<SeedInstance> {
             FAULHABER_1331,
             DC_MOTOR,
             "Faulhaber 1331 T 024 SR",
-            "FAULHABER DC-Micromotor series 1331 T ... SR (precious metal commutation), type 1331 T 024 SR, data sheet values at nominal voltage 24 V: terminal resistance 52.9 Ω, rotor inductance 1100 µH, torque constant 21.8 mNm/A, rotor inertia 0.63 gcm², current up to 0.19 A (thermal limit). d is estimated from the no-load current 0.0055 A at the no-load speed 10400 rpm.",
+            "FAULHABER DC-Micromotor series 1331 T ... SR (precious metal commutation), type 1331 T 024 SR, data sheet values at nominal voltage 24 V: terminal resistance 52.9 Ω, rotor inductance 1100 µH, torque constant 21.8 mNm/A, rotor inertia 0.63 gcm², current up to 0.19 A (thermal limit). d is estimated from the no-load current 0.0055 A at the no-load speed 10400 rpm. Datasheet values for the drive sizing (rated torque, peak torque, max. speed) are not entered: not verified against the data sheet.",
             values(json!({
                 "R": 52.9,
                 "L": {"value": 1100, "unit": "uH"},
@@ -239,7 +284,7 @@ fn instances() -> Vec<SeedInstance> {
             FAULHABER_3564,
             DC_MOTOR,
             "Faulhaber 3564 K 024 B",
-            "FAULHABER Brushless DC-Servomotor series 3564 K ... B, type 3564 K 024 B, data sheet values at nominal voltage 24 V: terminal resistance phase-phase 1.2 Ω, terminal inductance phase-phase 194 µH, torque constant 20.12 mNm/A, rotor inertia 34 gcm², dynamic friction torque 2.4·10⁻⁴ mNm/rpm (d), current up to 2.50 A (thermal limit).",
+            "FAULHABER Brushless DC-Servomotor series 3564 K ... B, type 3564 K 024 B, data sheet values at nominal voltage 24 V: terminal resistance phase-phase 1.2 Ω, terminal inductance phase-phase 194 µH, torque constant 20.12 mNm/A, rotor inertia 34 gcm², dynamic friction torque 2.4·10⁻⁴ mNm/rpm (d), current up to 2.50 A (thermal limit). Datasheet values for the drive sizing (rated torque, peak torque, max. speed) are not entered: not verified against the data sheet.",
             values(json!({
                 "R": 1.2,
                 "L": {"value": 194, "unit": "uH"},
@@ -255,7 +300,7 @@ fn instances() -> Vec<SeedInstance> {
             MAXON_RE40_MSL,
             MSL_DC_MACHINE,
             "maxon RE 40 148877 (24 V), nominal point",
-            "maxon RE 40 Ø40 mm, graphite brushes, 150 W, order number 148877 (24 V winding), maxon catalog motor data at the nominal operating point: 24 V, nominal current 5.77 A, nominal speed 6940 rpm; terminal resistance 0.317 Ω and inductance 0.0823 mH, rotor inertia 134 gcm², all at 25 °C (temperature dependence off). The MSL machine derives its EMF constant (24 - 0.317·5.77)/726.7 rad/s = 0.0305 V·s/rad from this point (datasheet torque constant 30.2 mNm/A; the difference is the no-load loss). The stator inertia is set equal to the rotor's (the stator is fixed).",
+            "maxon RE 40 Ø40 mm, graphite brushes, 150 W, order number 148877 (24 V winding), maxon catalog motor data at the nominal operating point: 24 V, nominal current 5.77 A, nominal speed 6940 rpm; terminal resistance 0.317 Ω and inductance 0.0823 mH, rotor inertia 134 gcm², all at 25 °C (temperature dependence off). The MSL machine derives its EMF constant (24 - 0.317·5.77)/726.7 rad/s = 0.0305 V·s/rad from this point (datasheet torque constant 30.2 mNm/A; the difference is the no-load loss). The stator inertia is set equal to the rotor's (the stator is fixed). Datasheet values for the drive sizing (same catalog): nominal torque (max. continuous torque) 170 mNm, max. permissible speed 12000 rpm; no peak torque (maxon prints only the stall torque 2280 mNm at 24 V), so T_peak is left empty.",
             values(json!({
                 "VaNominal": 24,
                 "IaNominal": 5.77,
@@ -267,28 +312,42 @@ fn instances() -> Vec<SeedInstance> {
                 "La": {"value": 0.0823, "unit": "mH"},
                 "Jr": {"value": 134, "unit": "g.cm2"},
                 "Js": {"value": 134, "unit": "g.cm2"},
-                "TaOperational": {"value": 25, "unit": "degC"}
+                "TaOperational": {"value": 25, "unit": "degC"},
+                "T_nom": {"value": 170, "unit": "mNm"},
+                "w_max": {"value": 12000, "unit": "rpm"}
             })),
         ),
         (
             GEAR_100,
             IDEAL_GEAR,
             "Ideal gear 100:1",
-            "Reduction 100:1 as of a strain-wave gear Harmonic Drive CSF-17-100 (catalog reduction ratio 100), modelled without losses.",
-            values(json!({"ratio": 100})),
+            "Reduction 100:1 as of a strain-wave gear Harmonic Drive CSF-17-100 (catalog reduction ratio 100), modelled without losses. Datasheet values for the drive sizing, Harmonic Drive CSF component set catalog, size 17, ratio 100: rated torque at 2000 rpm input 31 Nm, limit for repeated peak torque 70 Nm, maximum input speed 7300 rpm (grease lubrication), moment of inertia 0.079·10⁻⁴ kg·m² (input side). Not used: limit for average torque 51 Nm, momentary peak torque 143 Nm, limit for average input speed 3500 rpm (grease). The ratings hold for ratio 100; at other ratios they differ.",
+            values(json!({
+                "ratio": 100,
+                "T_rated": 31,
+                "T_peak": 70,
+                "w_in_max": {"value": 7300, "unit": "rpm"},
+                "J_in": {"value": 0.079, "unit": "kg.cm2"}
+            })),
         ),
         (
             MAXON_GP42C_74,
             EFFICIENCY_GEAR,
             "maxon GP 42 C 74:1",
-            "maxon planetary gearhead GP 42 C Ø42 mm, 3.0-15.0 Nm, ceramic version, 3 stages, reduction 74:1 (nominal; the catalog also lists the exact absolute reduction), max. efficiency 72 % (catalog value for 3 stages).",
-            values(json!({"ratio": 74, "eta": {"value": 72, "unit": "%"}})),
+            "maxon planetary gearhead GP 42 C Ø42 mm, 3.0-15.0 Nm, ceramic version, 3 stages, reduction 74:1 (nominal; the catalog also lists the exact absolute reduction), max. efficiency 72 % (catalog value for 3 stages). Datasheet values for the drive sizing (same catalog, 3 stages): max. continuous torque 15 Nm, intermittently permissible torque at the gear output 22.5 Nm, max. motor shaft (input) speed 8000 rpm. The mass inertia is not entered (not verified).",
+            values(json!({
+                "ratio": 74,
+                "eta": {"value": 72, "unit": "%"},
+                "T_rated": 15,
+                "T_peak": 22.5,
+                "w_in_max": {"value": 8000, "unit": "rpm"}
+            })),
         ),
         (
             BALL_SCREW_16X5,
             LEAD_SCREW,
             "Ball screw 16x5, direct drive",
-            "Ball screw of 16 mm nominal diameter and 5 mm lead (standard size of ISO 3408, e.g. Bosch Rexroth FEM-E-S 16x5), motor coupled directly (ratio 1; set the ratio for a belt or gearbox in between).",
+            "Ball screw of 16 mm nominal diameter and 5 mm lead (standard size of ISO 3408, e.g. Bosch Rexroth FEM-E-S 16x5), motor coupled directly (ratio 1; set the ratio for a belt or gearbox in between). No datasheet values for the drive sizing: axial load ratings, critical speed and inertia depend on the length, nut and bearings.",
             values(json!({"ratio": 1, "lead": {"value": 5, "unit": "mm"}})),
         ),
         (

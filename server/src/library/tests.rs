@@ -21,6 +21,7 @@ fn param(name: &str, ty: ParamType, unit: &str, min: Option<f64>, max: Option<f6
         min,
         max,
         editable,
+        datasheet: false,
         default: None,
         comment: String::new(),
     }
@@ -234,6 +235,56 @@ fn nameplate_values_cannot_change_editable_ones_can() {
     assert!(issues[0].message.contains("new instance"), "{}", issues[0].message);
 }
 
+/// Datasheet parameters: optional per instance, checked when given, never editable, kept once
+/// given, and left out of a migration when new and without default.
+#[test]
+fn datasheet_values_are_optional_but_checked() {
+    let mut c = Class { id: "6f0c0f5e-3a57-4d7e-9a38-1c1b1e8f6d01".into(), ..motor_class() };
+    c.parameters.push(Parameter {
+        datasheet: true,
+        ..param("T_nom", ParamType::Real, "N.m", Some(0.0), None, false)
+    });
+    let without = instance(&c);
+    assert_eq!(without.value("T_nom"), None);
+    let mut v = good_values();
+    v.insert("T_nom".into(), json!({"value": 170, "unit": "mNm"}));
+    let d = InstanceDraft { name: "RE 40".into(), source: String::new(), values: v.clone() };
+    let with = check_instance("2a7b9a3c-58f4-4b7a-b5a5-0c7b8f3e9d02", &c, &d).expect("valid");
+    assert_eq!(with.value("T_nom"), Some(&Value::Real(0.17)));
+    v.insert("T_nom".into(), json!(-1));
+    let issues = check_instance("i3", &c, &InstanceDraft { values: v, ..d.clone() }).expect_err("below min");
+    assert_eq!(fields(&issues), ["values.T_nom"]);
+    // An update may add a datasheet value, not change or remove it.
+    assert!(check_instance_update(&c, &without, &d).is_ok());
+    let removed = InstanceDraft { values: good_values(), ..d.clone() };
+    let issues = check_instance_update(&c, &with, &removed).expect_err("removed");
+    assert_eq!(fields(&issues), ["values.T_nom"]);
+    // Not overridable per drive (never editable).
+    assert!(validate_overrides(&c, &obj(json!({"T_nom": 1}))).is_err());
+    // A datasheet parameter cannot be editable.
+    let draft = ClassDraft {
+        name: "m".into(),
+        domain: "motor".into(),
+        modelica_class: "cad2mo.Drives.Motors.DCPermanentMagnet".into(),
+        description: String::new(),
+        parameters: vec![ParameterDraft { datasheet: true, editable: true, ..draft_param("T_nom", "Real", "N.m") }],
+    };
+    let issues = check_class("c", &draft).expect_err("editable datasheet");
+    assert_eq!(fields(&issues), ["parameters[0].editable"]);
+    // A class gaining a datasheet parameter without default carries its instances over as they are.
+    let old = Class { id: c.id.clone(), ..motor_class() };
+    let inst = instance(&old);
+    let migrated = migrate_instance(&old, &c, &inst).expect("migrates");
+    assert_eq!(migrated.values, inst.values);
+    // And the XML says which parameters are datasheet values.
+    let lib = Library { classes: vec![c.clone()], instances: vec![with.clone()] };
+    let text = xml::write(&lib);
+    assert!(text.contains(r#"name="T_nom" type="Real" unit="N.m" min="0" editable="false" datasheet="true""#), "{text}");
+    let back = import_into_empty(&text);
+    assert_eq!(back.classes[0].parameters, c.parameters);
+    assert_eq!(back.instances[0].values, with.values);
+}
+
 #[test]
 fn overrides_touch_editable_parameters_only() {
     let c = motor_class();
@@ -295,7 +346,9 @@ fn the_seed_is_valid_and_ids_are_unique() {
     for i in &lib.instances {
         assert!(!i.source.is_empty(), "{} has a source", i.name);
         let class = lib.class(&i.class_id).expect("class");
-        assert_eq!(i.values.len(), class.parameters.len(), "{} has every value", i.name);
+        for p in class.parameters.iter().filter(|p| !p.datasheet) {
+            assert!(i.value(&p.name).is_some(), "{} has a value for {}", i.name, p.name);
+        }
     }
     let re40 = lib.instances.iter().find(|i| i.id == seed::MAXON_RE40).expect("RE 40");
     assert_eq!(re40.value("L"), Some(&Value::Real(8.23e-5)));
@@ -307,6 +360,16 @@ fn the_seed_is_valid_and_ids_are_unique() {
     assert!((w - 6940.0 * std::f64::consts::PI / 30.0).abs() < 1e-9, "{w}");
     let gp42 = lib.instances.iter().find(|i| i.id == seed::MAXON_GP42C_74).expect("GP 42 C");
     assert_eq!(gp42.value("eta"), Some(&Value::Real(0.72)));
+    assert_eq!(gp42.value("T_peak"), Some(&Value::Real(22.5)));
+    // Datasheet values: CSF-17-100 ratings, in SI units.
+    let csf = lib.instances.iter().find(|i| i.id == seed::GEAR_100).expect("CSF-17-100");
+    assert_eq!(csf.value("T_rated"), Some(&Value::Real(31.0)));
+    assert_eq!(csf.value("T_peak"), Some(&Value::Real(70.0)));
+    assert_eq!(csf.value("J_in"), Some(&Value::Real(7.9e-6)));
+    let w = csf.value("w_in_max").and_then(Value::as_f64).expect("w_in_max");
+    assert!((w - 7300.0 * std::f64::consts::PI / 30.0).abs() < 1e-9, "{w}");
+    assert_eq!(re40.value("T_nom"), Some(&Value::Real(0.17)));
+    assert_eq!(re40.value("T_peak"), None, "maxon prints no peak torque");
     // Gear ratios, efficiencies and controller gains are editable; motor values are not.
     for c in &lib.classes {
         for p in &c.parameters {
@@ -329,8 +392,12 @@ fn seeded_classes_match_the_generator() {
             .find(|k| k.modelica_class == c.modelica_class)
             .unwrap_or_else(|| panic!("{} is not a class of known_classes()", c.modelica_class));
         assert_eq!(k.domain, c.domain, "{}", c.modelica_class);
-        let ours: Vec<(&str, &str, &str)> =
-            c.parameters.iter().map(|p| (p.name.as_str(), p.ty.as_str(), p.unit.as_str())).collect();
+        let ours: Vec<(&str, &str, &str)> = c
+            .parameters
+            .iter()
+            .filter(|p| !p.datasheet)
+            .map(|p| (p.name.as_str(), p.ty.as_str(), p.unit.as_str()))
+            .collect();
         let mut theirs: Vec<(&str, &str, &str)> = k.params.to_vec();
         let mut ours_sorted = ours.clone();
         ours_sorted.sort();

@@ -25,6 +25,8 @@ pub struct ParameterDraft {
     pub min: Option<f64>,
     pub max: Option<f64>,
     pub editable: bool,
+    /// A datasheet value (not a Modelica parameter; optional per instance; never editable).
+    pub datasheet: bool,
     /// A value as [`check_value`] accepts it.
     pub default: Option<Json>,
     pub comment: String,
@@ -268,6 +270,12 @@ pub fn check_class(id: &str, d: &ClassDraft) -> Result<Class, Vec<Issue>> {
                 }
             }
         }
+        if pd.datasheet && pd.editable {
+            issues.push(Issue::new(
+                field("editable"),
+                format!("parameter {}: a datasheet value belongs to the item and cannot be editable", pd.name),
+            ));
+        }
         check_text(&field("comment"), "the comment", &pd.comment, &mut issues);
         let Some(ty) = ty else { continue };
         if issues.len() > before {
@@ -280,6 +288,7 @@ pub fn check_class(id: &str, d: &ClassDraft) -> Result<Class, Vec<Issue>> {
             min: pd.min,
             max: pd.max,
             editable: pd.editable,
+            datasheet: pd.datasheet,
             default: None,
             comment: pd.comment.clone(),
         };
@@ -305,7 +314,8 @@ pub fn check_class(id: &str, d: &ClassDraft) -> Result<Class, Vec<Issue>> {
 }
 
 /// Checks every value of `values` against `class`, under `prefix` (`values`, `overrides`):
-/// the good values (in class order) and the problems.
+/// the good values (in class order) and the problems. Every Modelica parameter needs a value;
+/// datasheet parameters may be absent.
 fn check_map(class: &Class, values: &Map<String, Json>, prefix: &str) -> (Vec<(String, Value)>, Vec<Issue>) {
     let mut good = Vec::new();
     let mut issues = Vec::new();
@@ -316,6 +326,7 @@ fn check_map(class: &Class, values: &Map<String, Json>, prefix: &str) -> (Vec<(S
                 Ok(v) => good.push((p.name.clone(), v)),
                 Err(m) => issues.push(Issue::new(field, m)),
             },
+            None if p.datasheet => {}
             None => {
                 let hint = match &p.default {
                     Some(d) => format!(" (the class default is {})", d.describe(&p.unit)),
@@ -346,8 +357,8 @@ fn param_list(class: &Class) -> String {
     class.parameters.iter().map(|p| p.name.as_str()).collect::<Vec<_>>().join(", ")
 }
 
-/// Checks a complete set of values for `class`: every parameter needs one, unknown names are
-/// errors. Fields are `values.<param>`.
+/// Checks a complete set of values for `class`: every Modelica parameter needs one (datasheet
+/// parameters may be absent), unknown names are errors. Fields are `values.<param>`.
 pub fn check_values(class: &Class, values: &Map<String, Json>) -> Result<Vec<(String, Value)>, Vec<Issue>> {
     let (good, issues) = check_map(class, values, "values");
     if issues.is_empty() {
@@ -378,7 +389,8 @@ pub fn check_instance(id: &str, class: &Class, d: &InstanceDraft) -> Result<Inst
 
 /// Checks a change of an existing instance: its name, source and editable values may change;
 /// a nameplate (non-editable) value must stay as it is (given again in any unit is fine; it is
-/// kept bit for bit). A different motor is a new instance.
+/// kept bit for bit). A datasheet value the instance lacks may be added, one it has may not be
+/// removed. A different motor is a new instance.
 pub fn check_instance_update(class: &Class, old: &Instance, d: &InstanceDraft) -> Result<Instance, Vec<Issue>> {
     let mut issues = Vec::new();
     check_name("name", "the instance name", &d.name, &mut issues);
@@ -402,6 +414,19 @@ pub fn check_instance_update(class: &Class, old: &Instance, d: &InstanceDraft) -
                 ),
             )),
             None => {}
+        }
+    }
+    for p in class.parameters.iter().filter(|p| p.datasheet && !p.editable) {
+        if let (Some(was), None) = (old.value(&p.name), d.values.get(&p.name)) {
+            issues.push(Issue::new(
+                format!("values.{}", p.name),
+                format!(
+                    "{} is a nameplate value of \"{}\" (not editable): it stays {}; give it again",
+                    p.name,
+                    old.name,
+                    was.describe(&p.unit)
+                ),
+            ));
         }
     }
     if !issues.is_empty() {
@@ -471,7 +496,8 @@ pub fn resolved_values(class: &Class, instance: &Instance, overrides: &[(String,
 
 /// Carries an instance over to a changed class: values of kept parameters are converted to the
 /// new unit and re-checked against the new type and limits, removed parameters are dropped, new
-/// parameters take their default (or are a problem). Fields are `instances."<name>".<param>`.
+/// parameters take their default (or are a problem; a new datasheet parameter without default is
+/// left out). Fields are `instances."<name>".<param>`.
 pub fn migrate_instance(old_class: &Class, new_class: &Class, inst: &Instance) -> Result<Instance, Vec<Issue>> {
     let mut values = Vec::new();
     let mut issues = Vec::new();
@@ -493,6 +519,7 @@ pub fn migrate_instance(old_class: &Class, new_class: &Class, inst: &Instance) -
             }
             None => match &p.default {
                 Some(d) => values.push((p.name.clone(), d.clone())),
+                None if p.datasheet => {}
                 None => issues.push(Issue::new(
                     field,
                     format!(

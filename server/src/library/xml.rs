@@ -6,6 +6,7 @@
 //!   <class id="…" name="…" domain="motor" modelicaClass="cad2mo.Drives.Motors.DCPermanentMagnet">
 //!     <description>…</description>
 //!     <parameter name="L" type="Real" unit="H" min="0" editable="false" default="8.2e-5">Armature inductance</parameter>
+//!     <parameter name="T_nom" type="Real" unit="N.m" min="0" editable="false" datasheet="true">Nominal torque</parameter>
 //!   </class>
 //!   <instance id="…" class="…" name="…" source="…">
 //!     <value param="L">8.23e-5</value>
@@ -119,6 +120,9 @@ fn parameter_attrs(p: &Parameter) -> Vec<(&'static str, String)> {
         a.push(("max", Value::Real(x).to_text()));
     }
     a.push(("editable", p.editable.to_string()));
+    if p.datasheet {
+        a.push(("datasheet", "true".to_string()));
+    }
     if let Some(d) = &p.default {
         a.push(("default", d.to_text()));
     }
@@ -343,7 +347,7 @@ impl Open {
 
 fn parse_parameter(e: &BytesStart<'_>, at: At, issues: &mut Vec<Issue>) -> Open {
     let before = issues.len();
-    let mut a = attributes(e, &at, &["name", "type", "unit", "min", "max", "editable", "default"], issues);
+    let mut a = attributes(e, &at, &["name", "type", "unit", "min", "max", "editable", "datasheet", "default"], issues);
     let name = required(&mut a, "name", &at, issues);
     let ty = required(&mut a, "type", &at, issues);
     let unit = take(&mut a, "unit").unwrap_or_default();
@@ -365,9 +369,16 @@ fn parse_parameter(e: &BytesStart<'_>, at: At, issues: &mut Vec<Issue>) -> Open 
             false
         }),
     };
+    let datasheet = match take(&mut a, "datasheet") {
+        None => false,
+        Some(t) => parse_bool(&t).unwrap_or_else(|| {
+            issues.push(Issue::new(at.field(), format!("datasheet \"{t}\" must be true or false")));
+            false
+        }),
+    };
     let default = take(&mut a, "default");
     let ok = issues.len() == before;
-    let draft = ParameterDraft { name, ty, unit, min, max, editable, default: None, comment: String::new() };
+    let draft = ParameterDraft { name, ty, unit, min, max, editable, datasheet, default: None, comment: String::new() };
     Open::Parameter { text: String::new(), at, draft, default, ok }
 }
 

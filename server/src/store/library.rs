@@ -76,11 +76,11 @@ fn decode_values(class: &Class, instance: &str, json: &str) -> Result<Vec<(Strin
 }
 
 type ClassRow = (String, String, String, String, String);
-type ParamRow = (String, String, String, String, Option<f64>, Option<f64>, i64, Option<String>, String);
+type ParamRow = (String, String, String, String, Option<f64>, Option<f64>, i64, i64, Option<String>, String);
 type InstanceRow = (String, String, String, String, String);
 
 fn decode_param(row: ParamRow) -> Result<(String, Parameter), StoreError> {
-    let (class_id, name, ty, unit, min, max, editable, default_json, comment) = row;
+    let (class_id, name, ty, unit, min, max, editable, datasheet, default_json, comment) = row;
     let ty = ParamType::parse(&ty).ok_or_else(|| corrupt(format!("parameter {name} of class {class_id}: type {ty}")))?;
     let default = match default_json {
         None => None,
@@ -88,7 +88,7 @@ fn decode_param(row: ParamRow) -> Result<(String, Parameter), StoreError> {
             decode_value(ty, &j).ok_or_else(|| corrupt(format!("default of parameter {name} of class {class_id}: {j}")))?,
         ),
     };
-    Ok((class_id, Parameter { name, ty, unit, min, max, editable: editable != 0, default, comment }))
+    Ok((class_id, Parameter { name, ty, unit, min, max, editable: editable != 0, datasheet: datasheet != 0, default, comment }))
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -104,7 +104,7 @@ async fn load_classes(conn: &mut SqliteConnection, id: Option<&str>) -> Result<V
     .fetch_all(&mut *conn)
     .await?;
     let params: Vec<ParamRow> = sqlx::query_as(
-        "SELECT class_id, name, type, unit, min_value, max_value, editable, default_json, comment
+        "SELECT class_id, name, type, unit, min_value, max_value, editable, datasheet, default_json, comment
          FROM library_parameters WHERE ?1 IS NULL OR class_id = ?1 ORDER BY class_id, position, name",
     )
     .bind(id)
@@ -221,8 +221,8 @@ async fn write_class(conn: &mut SqliteConnection, c: &Class) -> Result<(), Store
     for (position, p) in c.parameters.iter().enumerate() {
         sqlx::query(
             "INSERT INTO library_parameters
-                 (class_id, name, position, type, unit, min_value, max_value, editable, default_json, comment)
-             VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10)",
+                 (class_id, name, position, type, unit, min_value, max_value, editable, datasheet, default_json, comment)
+             VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11)",
         )
         .bind(&c.id)
         .bind(&p.name)
@@ -232,6 +232,7 @@ async fn write_class(conn: &mut SqliteConnection, c: &Class) -> Result<(), Store
         .bind(p.min)
         .bind(p.max)
         .bind(i64::from(p.editable))
+        .bind(i64::from(p.datasheet))
         .bind(p.default.as_ref().map(|d| d.to_json().to_string()))
         .bind(&p.comment)
         .execute(&mut *conn)
@@ -511,6 +512,44 @@ mod tests {
         assert!(get_instance(&store, seed::GEAR_100).await.expect("get").is_some());
         assert_eq!(delete_instance(&store, seed::FAULHABER_1331).await.expect("delete"), Removal::Deleted);
         assert_eq!(delete_instance(&store, seed::FAULHABER_1331).await.expect("delete"), Removal::NotFound);
+    }
+
+    /// An installation seeded before migration 0005 (the seed without datasheet parameters,
+    /// values and source sentences) ends up with exactly the new seed once 0005 ran.
+    #[tokio::test]
+    async fn migration_0005_brings_an_old_seed_to_the_new_one() {
+        let (_dir, store) = store().await;
+        seed_if_empty(&store).await.expect("seed");
+        let new = export(&store).await.expect("export");
+        // Back to the old seed.
+        sqlx::query("DELETE FROM library_parameters WHERE datasheet = 1").execute(&store.pool).await.expect("params");
+        for i in &new.instances {
+            // Controllers have no datasheet values.
+            let Some(cut) = ["Datasheet values for the drive sizing", "No datasheet values for the drive sizing"]
+                .iter()
+                .filter_map(|m| i.source.find(m))
+                .min()
+            else {
+                continue;
+            };
+            sqlx::query(
+                "UPDATE library_instances SET source = ?2, values_json = json_remove(values_json,
+                     '$.T_nom', '$.T_peak', '$.w_max', '$.T_rated', '$.w_in_max', '$.J_in', '$.F_peak') WHERE id = ?1",
+            )
+            .bind(&i.id)
+            .bind(i.source[..cut].trim_end())
+            .execute(&store.pool)
+            .await
+            .expect("instance");
+        }
+        let old = export(&store).await.expect("old");
+        assert!(old.classes.iter().all(|c| c.parameters.iter().all(|p| !p.datasheet)));
+        assert_ne!(old, new);
+        // The migration again, without the column it adds.
+        let sql = include_str!("../../../migrations/0005_library_datasheet.sql");
+        let data = sql.split_once("DEFAULT 0;").expect("the ALTER TABLE").1;
+        sqlx::raw_sql(data).execute(&store.pool).await.expect("migrate");
+        assert_eq!(export(&store).await.expect("export"), new);
     }
 
     #[tokio::test]

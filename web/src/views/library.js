@@ -450,13 +450,17 @@ export async function renderLibrary(main) {
   function paramField(p, value, creating, controls, readers) {
     const unit = unitLabel(p.unit);
     const numeric = p.type === 'Real' || p.type === 'Integer';
-    const fixed = !creating && !p.editable; // a nameplate value cannot change after creation
+    // A nameplate value cannot change after creation; a datasheet value the instance lacks may
+    // still be added (datasheet values are optional: left empty, none is sent).
+    const absent = value === null || value === undefined;
+    const fixed = !creating && !p.editable && !(p.datasheet && absent);
     const start = creating ? p.default : value;
     const lim = limits(p);
     const hint = [
       p.comment,
       numeric ? `limits ${lim}${unit && lim !== 'any' ? ` ${unit}` : ''}` : null,
       p.editable ? 'editable' : fixed ? 'nameplate value, fixed for this instance' : 'nameplate value (fixed once created)',
+      p.datasheet ? 'datasheet value for the drive sizing, optional, not a Modelica parameter' : null,
     ]
       .filter(Boolean)
       .join(' · ');
@@ -495,10 +499,11 @@ export async function renderLibrary(main) {
     f.classList.add(...cls.split(' '));
     const msg = f.querySelector('.field-msg');
     if (numeric) {
-      const check = () => showMsg(input, msg, checkValue(p, input.value));
+      const empty = () => p.datasheet && input.value.trim() === '';
+      const check = () => showMsg(input, msg, empty() ? null : checkValue(p, input.value));
       input.addEventListener('input', check);
       controls.push({ name: `values.${p.name}`, input, msg, check });
-      readers.set(p.name, () => Number(input.value.trim()));
+      readers.set(p.name, () => (empty() ? undefined : Number(input.value.trim())));
     } else {
       // Strings: anything goes here; a server message is cleared once the text changes.
       const clear = () => showMsg(input, msg, null);

@@ -798,6 +798,11 @@ pub fn mechatronics(
     Ok(files)
 }
 
+/// The Modelica class names `Motions` gives the motions (distinct, from their labels).
+pub fn motion_class_names(motions: &[MotionTable]) -> Result<Vec<String>, MechatronicsError> {
+    check_motions(motions)
+}
+
 /// Checks the tables (sizes, finite numbers, increasing times, joint names) and gives each motion
 /// a distinct Modelica class name.
 fn check_motions(motions: &[MotionTable]) -> Result<Vec<String>, MechatronicsError> {
