@@ -27,8 +27,6 @@ const shots = process.env.CAD2MO_SCREENSHOTS;
 const downloads = process.env.CAD2MO_DOWNLOADS;
 for (const [k, v] of Object.entries({ url, bundle, bundleV2, broken, heavy, shots, downloads })) assert.ok(v, `missing setting ${k}`);
 
-// 1: the motion steps require drive sizing and the motion in the package (see e2e/motion.mjs).
-const motionStrict = process.env.CAD2MO_MOTION_STRICT === '1';
 const step = (s) => console.error(`e2e: ${s}`);
 const shot = (page, name) => page.screenshot({ path: join(shots, `${name}.png`), fullPage: true });
 
@@ -39,9 +37,7 @@ try {
   const page = await context.newPage();
   // Chromium logs every 4xx response as a console error; the refusals this test provokes on
   // purpose are 422s, anything else is a real error.
-  // Until the service can size drives, its 409 for the sizing is expected too (see e2e/motion.mjs).
-  const expected = motionStrict ? /status of 422/ : /status of (422|409)/;
-  page.on('console', (m) => m.type() === 'error' && !expected.test(m.text()) && consoleErrors.push(m.text()));
+  page.on('console', (m) => m.type() === 'error' && !/status of 422/.test(m.text()) && consoleErrors.push(m.text()));
   page.on('pageerror', (e) => consoleErrors.push(String(e)));
   page.setDefaultTimeout(30_000);
 
@@ -175,7 +171,7 @@ try {
   await pkg.saveAs(packagePath);
 
   // ---- Motion (issue 12): editor, IK gizmo, player, plots, sizing, limits, the motion in the package.
-  const motion = await motionSteps(page, { joint, step, shot, downloads, strict: motionStrict });
+  const motion = await motionSteps(page, { joint, step, shot, downloads, strict: true });
   await checkLabels(page, 'the motion tab');
 
   // ---- Motor library: an invalid value is refused, a valid edit sticks; export and re-import.

@@ -120,12 +120,13 @@ export function throttle(fn, ms, { now = () => Date.now(), later = (f, d) => set
 /**
  * The PUT body of the drives API that applies a sizing alternative to an existing drive: the
  * alternative's motor and gear, the same controller (and its overrides) and reference, and the
- * gear ratio override when the alternative gives a ratio.
+ * gear ratio override when the alternative's ratio is not the gear's own (`gearRatio`).
  */
-export function applyAlternative(drive, alt) {
+export function applyAlternative(drive, alt, gearRatio) {
   const overrides = {};
   if (drive?.overrides?.controller) overrides.controller = { ...drive.overrides.controller };
-  if (alt.ratio !== null && alt.ratio !== undefined) overrides.gear = { ratio: alt.ratio };
+  // An override only where the gear's own ratio differs (fixed-ratio gears refuse overrides).
+  if (alt.ratio !== null && alt.ratio !== undefined && alt.ratio !== gearRatio) overrides.gear = { ratio: alt.ratio };
   const body = {
     motor_instance: alt.motor.id,
     gear_instance: alt.gear.id,

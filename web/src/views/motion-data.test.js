@@ -48,6 +48,8 @@ test('applyAlternative keeps the controller and reference, sets the ratio', () =
   const drive = { joint: 'J1', motor_instance: 'm', gear_instance: 'g', controller_instance: 'c', overrides: { gear: { ratio: 5 }, controller: { kp: 3 } }, reference: { kind: 'constant', value: 1 } };
   const body = applyAlternative(drive, { motor: { id: 'm2' }, gear: { id: 'g2' }, ratio: 100 });
   assert.deepEqual(body, { motor_instance: 'm2', gear_instance: 'g2', controller_instance: 'c', overrides: { controller: { kp: 3 }, gear: { ratio: 100 } }, reference: { kind: 'constant', value: 1 } });
+  const same = applyAlternative(drive, { motor: { id: 'm2' }, gear: { id: 'g2' }, ratio: 74 }, 74);
+  assert.deepEqual(same.overrides, { controller: { kp: 3 } });
   const plain = applyAlternative({ ...drive, overrides: {}, reference: undefined }, { motor: { id: 'm2' }, gear: { id: 'g2' }, ratio: null });
   assert.deepEqual(plain, { motor_instance: 'm2', gear_instance: 'g2', controller_instance: 'c', overrides: {} });
 });

@@ -591,12 +591,12 @@ export function renderMotion(panel, ctx) {
       const rows = d.checks.map((c) =>
         h(
           'tr',
-          { class: c.pass ? 'pass' : 'fail', dataset: { check: c.check } },
+          { class: c.limit === null || c.limit === undefined ? 'info' : c.pass ? 'pass' : 'fail', dataset: { check: c.check } },
           h('th', { scope: 'row' }, c.label || c.check, c.detail ? h('small', { class: 'muted' }, ` ${c.detail}`) : null),
           h('td', { class: 'num' }, `${num(c.value)} ${c.unit || ''}`),
-          h('td', { class: 'num' }, `${num(c.limit)} ${c.unit || ''}`),
+          h('td', { class: 'num' }, c.limit === null || c.limit === undefined ? '—' : `${num(c.limit)} ${c.unit || ''}`),
           h('td', { class: 'num' }, c.margin === null || c.margin === undefined ? '—' : `${num(Math.round(c.margin * 1000) / 10)} %`),
-          h('td', { class: 'verdict' }, c.pass ? 'pass' : 'FAIL'),
+          h('td', { class: 'verdict' }, c.limit === null || c.limit === undefined ? 'info' : c.pass ? 'pass' : 'FAIL'),
         ),
       );
       const alts = (d.alternatives || []).map((a) =>
@@ -606,13 +606,14 @@ export function renderMotion(panel, ctx) {
           `${a.motor.name} + ${a.gear.name}`,
           a.ratio !== null && a.ratio !== undefined ? ` · ratio ${num(a.ratio)}` : '',
           ` · margin ${num(Math.round(a.margin * 1000) / 10)} % `,
+          a.missing?.length ? h('small', { class: 'muted' }, `(not checked: ${a.missing.join(', ')}) `) : null,
           h('button', { type: 'button', onclick: (e) => apply(d, a, e.currentTarget), 'aria-label': `Apply ${a.motor.name} with ${a.gear.name} to ${d.joint}` }, 'Apply'),
         ),
       );
       return h(
         'section',
         { class: `sizing card ${d.pass ? 'pass' : 'fail'}`, dataset: { joint: d.joint }, 'aria-label': `Sizing of the drive of ${d.joint}` },
-        h('h4', {}, `${d.joint}: ${d.motor?.name || '—'} + ${d.gear?.name || '—'} `, h('span', { class: `badge ${d.pass ? 'badge-succeeded' : 'badge-failed'}` }, d.pass ? 'pass' : 'fail')),
+        h('h4', {}, `${d.joint}: ${d.motor?.name || '—'} + ${d.gear?.name || '—'}${d.ratio ? ` (ratio ${num(d.ratio)})` : ''} `, h('span', { class: `badge ${d.pass ? 'badge-succeeded' : 'badge-failed'}` }, d.pass ? 'pass' : 'fail')),
         h(
           'div',
           { class: 'scroll' },
@@ -624,7 +625,9 @@ export function renderMotion(panel, ctx) {
           ),
         ),
         d.missing?.length ? h('div', { class: 'warning missing' }, h('strong', {}, 'Not checked, missing data: '), d.missing.join(', ')) : null,
-        alts.length ? [h('h5', {}, 'Ranked alternatives'), h('ol', { class: 'alternatives' }, alts)] : h('p', { class: 'muted' }, 'No alternatives.'),
+        alts.length
+          ? [h('h5', {}, 'Ranked alternatives'), sizing.ranking ? h('p', { class: 'muted ranking' }, `Ranked by ${sizing.ranking}.`) : null, h('ol', { class: 'alternatives' }, alts)]
+          : h('p', { class: 'muted' }, 'No combination in the library passes.'),
       );
     });
     const undriven = sizing.undriven || [];
@@ -632,6 +635,10 @@ export function renderMotion(panel, ctx) {
       sizingBox,
       h('h3', {}, 'Drive sizing ', h('small', { class: 'muted' }, `at ${sizing.rate} Hz over ${num(sizing.duration)} s`)),
       drives.length ? drives : h('p', { class: 'muted' }, 'No joint has a drive: add one under Drives to size it.'),
+      sizing.not_sized?.length
+        ? h('div', { class: 'warning not-sized' }, h('strong', {}, 'Drives not sized: '), h('ul', {}, sizing.not_sized.map((x) => h('li', {}, `${x.joint}: ${x.problem}`))))
+        : null,
+      sizing.orphaned?.length ? h('p', { class: 'muted' }, `Drives of joints this version lacks (not sized): ${sizing.orphaned.join(', ')}.`) : null,
       undriven.length
         ? [
             h('h4', {}, 'Joints without a drive'),
@@ -651,10 +658,11 @@ export function renderMotion(panel, ctx) {
     const out = sizingBox.querySelector('.sizing-out');
     button.disabled = true;
     try {
-      const data = await api(`${base}/drives`);
+      const [data, instances] = await Promise.all([api(`${base}/drives`), api('/api/library/instances')]);
       const drive = data.drives.find((x) => x.joint === d.joint);
       if (!drive) throw new Error(`${d.joint} has no drive any more`);
-      await api(`${base}/drives/${enc(d.joint)}`, { method: 'PUT', body: applyAlternative(drive, alt) });
+      const gearRatio = instances.find((i) => i.id === alt.gear.id)?.values?.ratio;
+      await api(`${base}/drives/${enc(d.joint)}`, { method: 'PUT', body: applyAlternative(drive, alt, gearRatio) });
       ctx.say(`Applied ${alt.motor.name} with ${alt.gear.name} to ${d.joint}`, 'ok');
       await loadSizing();
       fill(sizingBox.querySelector('.sizing-out'), h('p', { class: 'ok applied' }, `Applied ${alt.motor.name} with ${alt.gear.name} to ${d.joint}.`));
