@@ -173,7 +173,7 @@ export async function motionSteps(page, { joint, step, shot, downloads, strict }
   await shot(page, '18-motion-plots');
 
   // ---- Sizing: the drive's checks and a ranked alternative applied.
-  if (sizingAvailable) await sizingSteps(page, { joint, step, shot });
+  const appliedRatio = sizingAvailable ? await sizingSteps(page, { joint, step, shot }) : null;
 
   // ---- Joint limits: defaults greyed as placeholders; a custom speed, then back to defaults.
   step('motion: limits');
@@ -191,6 +191,10 @@ export async function motionSteps(page, { joint, step, shot, downloads, strict }
   // ---- The regenerated package carries the motion.
   step('motion: package');
   await page.getByRole('tab', { name: 'Drives' }).click();
+  if (appliedRatio !== null) {
+    // The Drives tab shows the applied drive.
+    await page.locator(`table.drives tr[data-joint="${joint}"] td.num`).filter({ hasText: new RegExp(`^${appliedRatio}$`) }).waitFor();
+  }
   const [pkg] = await Promise.all([page.waitForEvent('download', { timeout: 60_000 }), page.getByRole('button', { name: 'Regenerate and download package' }).click()]);
   const path = join(downloads, `motion-${pkg.suggestedFilename()}`);
   await pkg.saveAs(path);
@@ -230,6 +234,7 @@ async function sizingSteps(page, { joint, step, shot }) {
   const apply = sizing.getByRole('button', { name: /^Apply / }).first();
   await apply.waitFor();
   const label = await apply.getAttribute('aria-label');
+  const ratio = /· ratio ([\d.e+-]+) ·/.exec(await sizing.locator('ol.alternatives li').first().textContent())[1];
   await shot(page, '19-motion-sizing');
   await apply.click();
   await page.locator('.sizing-out .applied').waitFor();
@@ -243,5 +248,5 @@ async function sizingSteps(page, { joint, step, shot }) {
   const names = new Map(lib);
   assert.equal(names.get(after.motor_instance), applied[1], `the drive's motor is the alternative's: ${JSON.stringify(after)}`);
   assert.equal(names.get(after.gear_instance), applied[2], `the drive's gear is the alternative's: ${JSON.stringify(after)}`);
-
+  return ratio;
 }

@@ -119,9 +119,11 @@ export async function renderViewer(main, id, v, initialTab) {
     { id: 'structure', label: 'Structure', render: (p) => renderStructure(p) },
     { id: 'report', label: 'Report', render: (p) => renderReport(p) },
     { id: 'drives', label: 'Drives', render: (p) => renderDrives(p, { modelId: id, version, report, select, selected: () => selection, onSelect: (f) => listeners.add(f) }) },
-    { id: 'motion', label: 'Motion', render: (p) => (motion = renderMotion(p, { modelId: id, version, versionNumber: v, report, viewer, setJoints, currentJoints, say, stage: motionStage })) },
+    { id: 'motion', label: 'Motion', render: (p) => (motion = renderMotion(p, { modelId: id, version, versionNumber: v, report, viewer, setJoints, currentJoints, say, stage: motionStage, drivesChanged })) },
   ];
   let motion = null;
+  // A drive changed elsewhere (the motion's sizing): the Drives tab renders afresh when shown.
+  const drivesChanged = () => delete t.panel('drives').dataset.rendered;
   // The motion's player, plots and sizing go under the 3D view, shown with the Motion tab.
   const motionStage = h('div', { class: 'motion-stage', hidden: true });
   const t = tabs(tabSpec, {

@@ -5,7 +5,7 @@
 // ranked alternatives one can apply), and the joints' limits.
 
 import { api, enc } from '../api.js';
-import { h, fill, errorBox, num, field, confirmAction, newId } from '../ui.js';
+import { h, fill, errorBox, num, field, confirmAction, newId, unitLabel } from '../ui.js';
 import { displayScale, displayUnit, sampleAt, keyframeProblems, throttle, applyAlternative, rotationRows, freshName, bodyDepths, defaultToolFrame } from './motion-data.js';
 
 const INTERPOLATIONS = [
@@ -593,8 +593,8 @@ export function renderMotion(panel, ctx) {
           'tr',
           { class: c.limit === null || c.limit === undefined ? 'info' : c.pass ? 'pass' : 'fail', dataset: { check: c.check } },
           h('th', { scope: 'row' }, c.label || c.check, c.detail ? h('small', { class: 'muted' }, ` ${c.detail}`) : null),
-          h('td', { class: 'num' }, `${num(c.value)} ${c.unit || ''}`),
-          h('td', { class: 'num' }, c.limit === null || c.limit === undefined ? '—' : `${num(c.limit)} ${c.unit || ''}`),
+          h('td', { class: 'num' }, `${num(c.value)} ${unitLabel(c.unit)}`),
+          h('td', { class: 'num' }, c.limit === null || c.limit === undefined ? '—' : `${num(c.limit)} ${unitLabel(c.unit)}`),
           h('td', { class: 'num' }, c.margin === null || c.margin === undefined ? '—' : `${num(Math.round(c.margin * 1000) / 10)} %`),
           h('td', { class: 'verdict' }, c.limit === null || c.limit === undefined ? 'info' : c.pass ? 'pass' : 'FAIL'),
         ),
@@ -663,6 +663,7 @@ export function renderMotion(panel, ctx) {
       if (!drive) throw new Error(`${d.joint} has no drive any more`);
       const gearRatio = instances.find((i) => i.id === alt.gear.id)?.values?.ratio;
       await api(`${base}/drives/${enc(d.joint)}`, { method: 'PUT', body: applyAlternative(drive, alt, gearRatio) });
+      ctx.drivesChanged?.();
       ctx.say(`Applied ${alt.motor.name} with ${alt.gear.name} to ${d.joint}`, 'ok');
       await loadSizing();
       fill(sizingBox.querySelector('.sizing-out'), h('p', { class: 'ok applied' }, `Applied ${alt.motor.name} with ${alt.gear.name} to ${d.joint}.`));
