@@ -17,6 +17,9 @@ use cad2mo_tests::app::{zip_dir, TestApp};
 use cad2mo_tests::common::{tools_required, workspace_root};
 use serde_json::{json, Value};
 
+/// Why a stored motion may not plan (the stateful phase stores motions with made-up joints).
+const PLANNABLE: &str = "the stored motion must be plannable on the latest version (its joints exist, its targets are reachable)";
+
 /// What a motion's JSON Schema cannot say.
 const MOTION_RULES: &str = "a unique printable name, at least 2 keyframes, durations and dwells between 0 and 3600 s, rotation matrices";
 
@@ -154,8 +157,8 @@ async fn the_service_keeps_its_contract() {
         ("getMotion", vec![("path.motion_id", &motion_ids[0])], ""),
         ("putMotion", vec![("path.motion_id", &motion_ids[0])], MOTION_RULES),
         ("deleteMotion", vec![("path.motion_id", &motion_ids[1])], ""),
-        ("getTrajectory", vec![("path.motion_id", &motion_ids[0])], ""),
-        ("getSizing", vec![("path.motion_id", &motion_ids[0])], ""),
+        ("getTrajectory", vec![("path.motion_id", &motion_ids[0])], PLANNABLE),
+        ("getSizing", vec![("path.motion_id", &motion_ids[0])], PLANNABLE),
         ("createMotion", vec![], MOTION_RULES),
         ("putJointLimits", vec![], "position limits must contain the CAD pose, rates must be > 0"),
         ("deleteModel", vec![("path.model_id", &doomed_model)], ""),
