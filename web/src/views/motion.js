@@ -210,7 +210,12 @@ export function renderMotion(panel, ctx) {
       h('option', { value: 'tool', selected: kf.kind === 'tool' }, 'Tool pose (inverse kinematics)'),
     );
     kind.addEventListener('change', () => {
-      if (kind.value === 'tool') Object.assign(kf, toolKeyframeNow(), { kind: 'tool', values: undefined });
+      const tool = kind.value === 'tool' && toolKeyframeNow(kf.frame);
+      if (kind.value === 'tool' && !tool) {
+        kind.value = 'joints';
+        return ctx.say('A tool keyframe needs a CAD frame and the 3D view', 'error');
+      }
+      if (tool) Object.assign(kf, tool, { kind: 'tool', values: undefined });
       else Object.assign(kf, { kind: 'joints', values: captured(), frame: undefined, position: undefined, rotation: undefined });
       markDirty();
       renderEditor();
@@ -230,7 +235,7 @@ export function renderMotion(panel, ctx) {
       );
       const orient = h('input', { type: 'checkbox', id: `${id}-rot`, checked: !!kf.rotation });
       orient.addEventListener('change', () => {
-        kf.rotation = orient.checked ? toolKeyframeNow(kf.frame).rotation : null;
+        kf.rotation = orient.checked ? toolKeyframeNow(kf.frame, true)?.rotation ?? null : null;
         markDirty();
       });
       body = [
@@ -334,12 +339,12 @@ export function renderMotion(panel, ctx) {
   }
 
   /** A tool keyframe at the gizmo's pose (or the chosen frame's pose now). */
-  function toolKeyframeNow(frameId) {
+  function toolKeyframeNow(frameId, withRotation = !!gizmoOrient?.checked) {
     const f = frameById(frameId || gizmoFrame());
     if (!f) return null;
     const m = gizmo && gizmoFrame() === f.node_id ? gizmo.matrix() : viewer.frameNow(f);
+    if (!m) return null; // no 3D view
     const e = m.elements;
-    const withRotation = !!gizmoOrient?.checked;
     return { kind: 'tool', frame: f.node_id, position: [e[12], e[13], e[14]], rotation: withRotation ? rotationRows(e) : null };
   }
 
