@@ -78,6 +78,8 @@ export async function motionSteps(page, { joint, step, shot, downloads, strict }
     const p = window.cad2moGizmo.target.position;
     return window.cad2moViewer.toScreen([p.x, p.y, p.z]);
   });
+  const camera = () => page.evaluate(() => window.cad2moViewer.camera.position.toArray());
+  const cameraBefore = await camera();
   const box = await page.locator('.stage canvas').boundingBox();
   const x0 = box.x + at.x;
   const y0 = box.y + at.y;
@@ -92,6 +94,7 @@ export async function motionSteps(page, { joint, step, shot, downloads, strict }
   assert.match(await ik.textContent(), /^IK (reached|closest pose): /);
   await page.waitForTimeout(200);
   assert.notEqual(await canvasImage(page), before, 'dragging the gizmo moves the arm (IK)');
+  assert.deepEqual(await camera(), cameraBefore, 'dragging the gizmo does not orbit the camera');
   await shot(page, '16-motion-gizmo');
   await editor.getByRole('button', { name: 'Add tool keyframe from the gizmo' }).click();
   const kf2 = editor.locator('li[data-keyframe="2"]');
