@@ -16,6 +16,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { launch, waitForModel, checkModelPixels, checkLabels } from './lib.mjs';
+import { motionSteps } from './motion.mjs';
 
 const url = process.env.CAD2MO_URL;
 const bundle = process.env.CAD2MO_BUNDLE;
@@ -169,6 +170,10 @@ try {
   const packagePath = join(downloads, pkg.suggestedFilename());
   await pkg.saveAs(packagePath);
 
+  // ---- Motion (issue 12): editor, IK gizmo, player, plots, sizing, limits, the motion in the package.
+  const motion = await motionSteps(page, { joint, step, shot, downloads, strict: true });
+  await checkLabels(page, 'the motion tab');
+
   // ---- Motor library: an invalid value is refused, a valid edit sticks; export and re-import.
   step('library');
   await page.getByRole('link', { name: 'Motor library' }).click();
@@ -300,6 +305,11 @@ try {
   await page.getByRole('tab', { name: 'Drives' }).click();
   await page.locator('table.drives').waitFor();
   await shot(page, '13-narrow-drives');
+  await page.getByRole('tab', { name: 'Motion' }).click();
+  await page.locator('table.limits').waitFor();
+  await shot(page, '13b-narrow-motion');
+  const overflowMotion = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
+  assert.ok(overflowMotion <= 1, `the motion tab is ${overflowMotion}px wider than a narrow window`);
   await page.getByRole('link', { name: 'Motor library' }).click();
   await page.locator('[data-instance-name="RobotR3 axis controller"]').waitFor();
   await shot(page, '14-narrow-library');
@@ -307,7 +317,7 @@ try {
   assert.ok(overflowLib <= 1, `the library is ${overflowLib}px wider than a narrow window`);
 
   assert.deepEqual(consoleErrors, [], 'the page logged errors');
-  console.log(JSON.stringify({ joint, package: packagePath, library: libraryPath }));
+  console.log(JSON.stringify({ joint, package: packagePath, library: libraryPath, motion }));
 } finally {
   await browser.close();
 }

@@ -5,6 +5,7 @@
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { AnaglyphEffect } from 'three/addons/effects/AnaglyphEffect.js';
+import { TransformControls } from 'three/addons/controls/TransformControls.js';
 import { bodyDeltas, frameMatrix } from './kinematics.js';
 
 export const BACKGROUND = 0xf3f5f8;
@@ -168,6 +169,7 @@ export class Viewer {
   /** Poses every body and joint arrow for the current joint values. */
   applyPose() {
     const deltas = bodyDeltas(this.report, this.q);
+    this.deltas = deltas;
     for (const [name, b] of this.bodies) {
       const d = deltas.get(name) || new THREE.Matrix4();
       b.group.matrix.multiplyMatrices(d, b.cad);
@@ -185,9 +187,93 @@ export class Viewer {
     this.applyPose();
   }
 
+  /** Sets several coordinates (Map or [key, value] pairs) and poses once. */
+  setCoordinates(entries) {
+    for (const [k, v] of entries) this.q.set(k, v);
+    this.applyPose();
+  }
+
   resetPose() {
     this.q.clear();
     this.applyPose();
+  }
+
+  /**
+   * The world matrix now of a frame given at the CAD pose (`position`, row-major `rotation`
+   * frame → world) on body `body`: the body's delta times the CAD-pose matrix.
+   */
+  frameNow(frame) {
+    const m0 = new THREE.Matrix4();
+    const r = frame.rotation || [[1, 0, 0], [0, 1, 0], [0, 0, 1]];
+    m0.set(r[0][0], r[0][1], r[0][2], frame.position[0], r[1][0], r[1][1], r[1][2], frame.position[1], r[2][0], r[2][1], r[2][2], frame.position[2], 0, 0, 0, 1);
+    const d = this.deltas?.get(frame.body) || new THREE.Matrix4();
+    return d.clone().multiply(m0);
+  }
+
+  /**
+   * A translate/rotate gizmo (three.js TransformControls) at world matrix `m`. `onDrag(matrix)`
+   * runs while it is dragged, `onEnd(matrix)` when released. Returns the gizmo's handle
+   * {setPose(m), setMode(mode), matrix(), dispose()}.
+   */
+  showGizmo(m, { onDrag, onEnd } = {}) {
+    this.hideGizmo();
+    const target = new THREE.Object3D();
+    m.decompose(target.position, target.quaternion, target.scale);
+    target.scale.set(1, 1, 1);
+    this.scene.add(target);
+    const tc = new TransformControls(this.camera, this.renderer.domElement);
+    tc.setSize(0.9);
+    tc.attach(target);
+    const helper = tc.getHelper();
+    this.scene.add(helper);
+    const matrix = () => {
+      target.updateMatrix();
+      return target.matrix.clone();
+    };
+    tc.addEventListener('change', () => this.invalidate());
+    tc.addEventListener('dragging-changed', (e) => {
+      this.controls.enabled = !e.value;
+      if (!e.value) onEnd?.(matrix());
+    });
+    tc.addEventListener('objectChange', () => onDrag?.(matrix()));
+    const handle = {
+      controls: tc,
+      target,
+      setPose: (p) => {
+        if (tc.dragging) return;
+        p.decompose(target.position, target.quaternion, target.scale);
+        target.scale.set(1, 1, 1);
+        this.invalidate();
+      },
+      setMode: (mode) => {
+        tc.setMode(mode);
+        this.invalidate();
+      },
+      matrix,
+      dispose: () => {
+        tc.detach();
+        this.scene.remove(helper);
+        this.scene.remove(target);
+        tc.dispose();
+        this.controls.enabled = true;
+        if (this.gizmo === handle) this.gizmo = null;
+        this.invalidate();
+      },
+    };
+    this.gizmo = handle;
+    this.invalidate();
+    return handle;
+  }
+
+  hideGizmo() {
+    this.gizmo?.dispose();
+  }
+
+  /** Where a world point is on the canvas, in CSS pixels (for tests and overlays). */
+  toScreen(p) {
+    const v = new THREE.Vector3(...p).project(this.camera);
+    const c = this.renderer.domElement;
+    return { x: ((v.x + 1) / 2) * c.clientWidth, y: ((1 - v.y) / 2) * c.clientHeight };
   }
 
   /** Frames the whole model from an oblique direction. */
@@ -313,6 +399,7 @@ export class Viewer {
   }
 
   dispose() {
+    this.hideGizmo();
     cancelAnimationFrame(this.frame);
     this.resize.disconnect();
     this.controls.dispose();

@@ -8,6 +8,7 @@ import { h, fill, errorBox, say, tabs, num, plural } from '../ui.js';
 import { Viewer, niceStep } from '../viewer/viewer.js';
 import { coordinates } from '../viewer/kinematics.js';
 import { renderDrives } from './drives.js';
+import { renderMotion } from './motion.js';
 
 const DEG = 180 / Math.PI;
 
@@ -92,24 +93,53 @@ export async function renderViewer(main, id, v, initialTab) {
   const resetPose = () => {
     viewer.resetPose();
     for (const [, s] of sliders) s.reset();
+    motion?.poseChanged?.();
+  };
+  // Joint values by the joint coordinate's Modelica name (as the drives and motions API name
+  // them): the sliders' own code path, for the motion player and the IK gizmo.
+  const coords = coordinates(report);
+  const byElement = new Map(coords.filter((c) => c.inTree).map((c) => [c.element, c]));
+  const setJoints = (values) => {
+    const entries = [];
+    for (const [name, value] of Object.entries(values)) {
+      const c = byElement.get(name);
+      if (!c || !Number.isFinite(value)) continue;
+      entries.push([c.key, value]);
+    }
+    viewer.setCoordinates(entries);
+    for (const [key, value] of entries) sliders.get(key)?.set(value);
+  };
+  const currentJoints = () => {
+    const out = {};
+    for (const [name, c] of byElement) out[name] = viewer.q?.get(c.key) ?? c.q0;
+    return out;
   };
 
   const tabSpec = [
     { id: 'structure', label: 'Structure', render: (p) => renderStructure(p) },
     { id: 'report', label: 'Report', render: (p) => renderReport(p) },
     { id: 'drives', label: 'Drives', render: (p) => renderDrives(p, { modelId: id, version, report, select, selected: () => selection, onSelect: (f) => listeners.add(f) }) },
+    { id: 'motion', label: 'Motion', render: (p) => (motion = renderMotion(p, { modelId: id, version, versionNumber: v, report, viewer, setJoints, currentJoints, say, stage: motionStage, drivesChanged })) },
   ];
+  let motion = null;
+  // A drive changed elsewhere (the motion's sizing): the Drives tab renders afresh when shown.
+  const drivesChanged = () => delete t.panel('drives').dataset.rendered;
+  // The motion's player, plots and sizing go under the 3D view, shown with the Motion tab.
+  const motionStage = h('div', { class: 'motion-stage', hidden: true });
   const t = tabs(tabSpec, {
     initial: tabSpec.some((x) => x.id === initialTab) ? initialTab : 'structure',
     label: 'Model details',
-    onChange: (tab) => history.replaceState(null, '', `#/models/${enc(id)}/versions/${v}${tab === 'structure' ? '' : '/' + tab}`),
+    onChange: (tab) => {
+      motionStage.hidden = tab !== 'motion';
+      history.replaceState(null, '', `#/models/${enc(id)}/versions/${v}${tab === 'structure' ? '' : '/' + tab}`);
+    },
   });
 
   fill(
     main,
     h('p', { class: 'crumbs' }, h('a', { href: '#/models' }, 'Models'), ' / ', h('a', { href: `#/models/${enc(id)}` }, model.name), ' / ', `v${v}`),
     h('h1', {}, `${model.name} `, h('small', { class: 'muted' }, `v${v} · package ${report.package_name}`)),
-    h('div', { class: 'model-layout' }, h('section', { class: 'view3d', 'aria-label': '3D view' }, toolbar, stage, info, details), h('section', { class: 'side' }, t.el)),
+    h('div', { class: 'model-layout' }, h('section', { class: 'view3d', 'aria-label': '3D view' }, toolbar, stage, info, details, motionStage), h('section', { class: 'side' }, t.el)),
   );
 
 
@@ -172,14 +202,22 @@ export async function renderViewer(main, id, v, initialTab) {
       dataset: { coordinate: c.key },
     });
     const out = h('output', { for: input.id });
-    const show = () => (out.textContent = `${num(Number(input.value))} ${rot ? '°' : 'mm'}`);
+    const show = (x = Number(input.value)) => (out.textContent = `${num(x)} ${rot ? '°' : 'mm'}`);
     input.addEventListener('input', () => {
       viewer.setCoordinate(c.key, Number(input.value) / scale);
       show();
+      motion?.poseChanged?.();
     });
     input.addEventListener('focus', () => select({ kind: 'joint', name: c.joint }, { scroll: false }));
     show();
-    sliders.set(c.key, { reset: () => ((input.value = String(start)), show()) });
+    sliders.set(c.key, {
+      reset: () => ((input.value = String(start)), show()),
+      set: (value) => {
+        const x = Math.round(value * scale * 1e6) / 1e6;
+        input.value = String(x);
+        show(x);
+      },
+    });
     return h('div', { class: 'slider' }, h('label', { for: input.id }, `${c.element} (${c.kind}, start ${num(start)} ${rot ? '°' : 'mm'})`), input, out);
   }
 
@@ -250,6 +288,7 @@ export async function renderViewer(main, id, v, initialTab) {
   }
 
   return () => {
+    motion?.dispose?.();
     viewer.dispose();
     if (window.cad2moViewer === viewer) delete window.cad2moViewer;
   };
@@ -258,7 +297,7 @@ export async function renderViewer(main, id, v, initialTab) {
 /** Stands in for the 3D view where WebGL is missing. */
 function blindViewer() {
   const noop = () => {};
-  return { size: 1, select: noop, setCoordinate: noop, resetPose: noop, resetView: noop, setAnaglyph: noop, setGrid: noop, dispose: noop };
+  return { size: 1, q: new Map(), select: noop, setCoordinate: noop, setCoordinates: noop, frameNow: () => null, showGizmo: () => null, hideGizmo: noop, resetPose: noop, resetView: noop, setAnaglyph: noop, setGrid: noop, dispose: noop };
 }
 
 const mm = (v) => v.map((x) => num(x * 1000)).join(', ');

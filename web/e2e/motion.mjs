@@ -1,0 +1,255 @@
+// The Motion tab, end to end (part of ui.mjs, on the model view of the uploaded arm): a motion
+// made in the UI from a moved slider pose and a tool keyframe placed by dragging the IK gizmo,
+// a keyframe problem shown at its keyframe, playing and scrubbing, the uPlot charts drawn, the
+// sizing with a ranked alternative applied to the drive, joint limits with their defaults, and
+// the regenerated package's Mechatronics.mo instantiating the motion's table (Motions sub-package).
+
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
+import { unzipSync, strFromU8 } from 'fflate';
+
+const canvasImage = (page) => page.evaluate(() => window.cad2moViewer.renderer.domElement.toDataURL());
+
+/** How many pixels each uPlot canvas has drawn (non-transparent, not white). */
+async function plotPixels(page) {
+  return page.evaluate(() =>
+    [...document.querySelectorAll('.plots-box .uplot')].map((root) => {
+      const c = root.querySelector('canvas');
+      const img = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+      let drawn = 0;
+      for (let i = 0; i < img.length; i += 4) if (img[i + 3] > 0 && img[i] + img[i + 1] + img[i + 2] < 740) drawn++;
+      return { plot: root.parentElement.dataset.plot, w: c.width, h: c.height, drawn };
+    }),
+  );
+}
+
+/**
+ * @param {import('playwright-core').Page} page  on the model view, version 1 of the arm
+ * @param {{joint: string, step: Function, shot: Function, downloads: string, strict: boolean}} o
+ *   strict: false tolerates a service that cannot size drives yet (409)
+ * @returns {Promise<{motion: string, package: string, exported: boolean}>}
+ */
+export async function motionSteps(page, { joint, step, shot, downloads, strict }) {
+  const name = 'pick';
+  // ---- A pose away from the CAD pose: every joint slider moved by keyboard.
+  step('motion: pose by the sliders');
+  await page.getByRole('tab', { name: 'Structure' }).click();
+  const sliders = page.locator('.slider input[type=range]');
+  const n = await sliders.count();
+  assert.ok(n >= 2, `the arm has two revolute joints (${n} sliders)`);
+  for (let i = 0; i < n; i++) {
+    await sliders.nth(i).focus();
+    for (let k = 0; k < 30; k++) await page.keyboard.press(i % 2 ? 'ArrowLeft' : 'ArrowRight');
+  }
+
+  // ---- Create the motion: CAD pose → the slider pose.
+  step('motion: create');
+  await page.getByRole('tab', { name: 'Motion' }).click();
+  await page.getByLabel('New motion name').fill(`${name} draft`);
+  await page.getByRole('button', { name: 'New motion', exact: true }).click();
+  await page.locator(`form[aria-label="Motion ${name} draft"]`).waitFor();
+  await page.locator('#motion-play').waitFor({ timeout: 60_000 });
+  // Renamed.
+  await page.getByLabel('Motion name', { exact: true }).fill(name);
+  await page.getByRole('button', { name: 'Save motion' }).click();
+  const editor = page.locator(`form[aria-label="Motion ${name}"]`);
+  await editor.waitFor();
+  await page.locator(`.motion-list li[data-motion="${name}"]`).waitFor();
+  assert.equal(await page.locator('.motion-list li').count(), 1);
+  assert.equal(await editor.locator('li.keyframe').count(), 2);
+  // The sliders' pose was captured into keyframe 1 (joint values, in degrees).
+  const kf1 = editor.locator('li[data-keyframe="1"]');
+  const captured = await kf1.locator('.joint-values input').first().inputValue();
+  assert.ok(Math.abs(Number(captured)) > 1, `keyframe 1 holds the moved pose: ${captured}`);
+  await page.locator('#motion-play').waitFor({ timeout: 60_000 });
+
+  // ---- The tool gizmo on the fore link: drag it, IK moves the arm live; add the pose as a keyframe.
+  step('motion: IK gizmo');
+  const frameSel = page.locator('#gizmo-frame');
+  const options = await frameSel.locator('option').allTextContents();
+  const fore = options.find((o) => /^LINK_FORE · CG/.test(o)) || options.find((o) => /^LINK_FORE/.test(o));
+  assert.ok(fore, `a frame on the fore link: ${options.join(', ')}`);
+  await frameSel.selectOption({ label: fore });
+  await page.getByLabel('Show the gizmo in 3D').check();
+  await page.waitForFunction(() => window.cad2moGizmo);
+  const before = await canvasImage(page);
+  const at = await page.evaluate(() => {
+    const p = window.cad2moGizmo.target.position;
+    return window.cad2moViewer.toScreen([p.x, p.y, p.z]);
+  });
+  const camera = () => page.evaluate(() => window.cad2moViewer.camera.position.toArray());
+  const cameraBefore = await camera();
+  const box = await page.locator('.stage canvas').boundingBox();
+  const x0 = box.x + at.x;
+  const y0 = box.y + at.y;
+  await page.mouse.move(x0, y0);
+  await page.mouse.down();
+  await page.mouse.move(x0 + 25, y0 + 20, { steps: 8 });
+  await page.waitForTimeout(300);
+  await page.mouse.move(x0 + 45, y0 + 35, { steps: 8 });
+  await page.mouse.up();
+  const ik = page.locator('.ik-out');
+  await page.waitForFunction(() => Number(document.querySelector('.ik-out')?.dataset.count) >= 2);
+  assert.match(await ik.textContent(), /^IK (reached|closest pose): /);
+  await page.waitForTimeout(200);
+  assert.notEqual(await canvasImage(page), before, 'dragging the gizmo moves the arm (IK)');
+  assert.deepEqual(await camera(), cameraBefore, 'dragging the gizmo does not orbit the camera');
+  await shot(page, '16-motion-gizmo');
+  await editor.getByRole('button', { name: 'Add tool keyframe from the gizmo' }).click();
+  const kf2 = editor.locator('li[data-keyframe="2"]');
+  await kf2.waitFor();
+  assert.equal(await kf2.getByLabel('Kind').inputValue(), 'tool');
+  await kf2.getByLabel('Interpolation').selectOption('jerk');
+  await kf2.getByLabel('Dwell [s]').fill('0.2');
+  await kf2.getByLabel('Dwell [s]').press('Tab');
+  await page.getByLabel('Show the gizmo in 3D').uncheck();
+
+  // ---- A keyframe the planner refuses: the problem shows at that keyframe; then fixed.
+  step('motion: keyframe problem');
+  const first = kf1.locator('.joint-values input').first();
+  await first.fill('400');
+  await first.press('Tab');
+  await editor.getByRole('button', { name: 'Save motion' }).click();
+  const problem = page.locator('li[data-keyframe="1"] .kf-problem');
+  await problem.waitFor();
+  assert.match(await problem.textContent(), /limit/i);
+  await problem.scrollIntoViewIfNeeded();
+  await shot(page, '17-motion-problem');
+  await page.locator('li[data-keyframe="1"] .joint-values input').first().fill(captured);
+  await page.locator('li[data-keyframe="1"] .joint-values input').first().press('Tab');
+  await editor.getByRole('button', { name: 'Save motion' }).click();
+  await page.locator('#motion-play').waitFor();
+  assert.equal(await page.locator('.kf-problem').count(), 0, 'no problem left');
+  const marks = await page.locator('.timeline-mark').count();
+  assert.equal(marks, 3, 'the timeline shows the three keyframes');
+  assert.match(await page.locator('li[data-keyframe="2"] .kf-time').textContent(), /at [\d.]+ s · IK/);
+
+  // ---- Play at real speed, pause, scrub.
+  step('motion: play');
+  const player = page.locator('.player-box');
+  const still = await canvasImage(page);
+  const t0 = Date.now();
+  await page.getByRole('button', { name: 'Play' }).click();
+  await page.waitForTimeout(400);
+  assert.equal(await player.getAttribute('data-playing'), 'true');
+  const tPlay = Number(await player.getAttribute('data-time'));
+  const wall = (Date.now() - t0) / 1000; // measured after the time was read: an upper bound
+  assert.ok(tPlay > 0.1 && tPlay <= wall + 0.05, `plays at real speed: motion time ${tPlay} s after ${wall} s`);
+  assert.notEqual(await canvasImage(page), still, 'playing moves the arm');
+  await page.getByRole('button', { name: 'Pause' }).click();
+  const paused = await player.getAttribute('data-time');
+  await page.waitForTimeout(250);
+  assert.equal(await player.getAttribute('data-time'), paused, 'paused');
+  const duration = Number(await page.locator('#motion-scrub').getAttribute('max'));
+  assert.ok(duration > 0, 'the motion takes time');
+  await page.locator('#motion-scrub').fill(String(duration / 2));
+  assert.ok(Math.abs(Number(await player.getAttribute('data-time')) - duration / 2) < 0.02, 'the scrub slider sets the time');
+  // To the end, by playing.
+  await page.getByRole('button', { name: 'Play' }).click();
+  await page.waitForFunction(() => document.querySelector('.player-box').dataset.playing === 'false', null, { timeout: 30_000 });
+  assert.ok(Math.abs(Number(await player.getAttribute('data-time')) - duration) < 1e-3, 'played to the end');
+
+  // ---- Plots: q, qd, qdd, torque and the drive's torque–speed plane, drawn.
+  step('motion: plots');
+  const sized = page.locator(`.plot[data-plot="ts-${joint}"] .uplot, .sizing-unavailable, .sizing-box .error`).first();
+  await sized.waitFor({ timeout: 60_000 });
+  const sizingAvailable = !(await page.locator('.sizing-unavailable').count());
+  if (!sizingAvailable) {
+    assert.ok(!strict, `sizing: ${await page.locator('.sizing-unavailable').textContent()}`);
+    step(`motion: NOTE ${await page.locator('.sizing-unavailable').textContent()}; the torque–speed plot and the sizing steps are skipped`);
+  }
+  assert.equal(await page.locator('.sizing-box .error').count(), 0, 'no sizing error');
+  const pixels = await plotPixels(page);
+  step(`plot pixels ${JSON.stringify(pixels)}`);
+  for (const key of ['q', 'qd', 'qdd', 'tau', ...(sizingAvailable ? [`ts-${joint}`] : [])]) {
+    const p = pixels.find((x) => x.plot === key);
+    assert.ok(p, `a ${key} plot: ${JSON.stringify(pixels)}`);
+    assert.ok(p.drawn > 500, `the ${key} plot has drawn: ${JSON.stringify(p)}`);
+  }
+  // Clicking a chart seeks: the 3D time follows.
+  const q = page.locator('.plot[data-plot="q"] .u-over');
+  const qb = await q.boundingBox();
+  await page.mouse.click(qb.x + qb.width * 0.25, qb.y + qb.height / 2);
+  const seeked = Number(await player.getAttribute('data-time'));
+  assert.ok(Math.abs(seeked - duration * 0.25) < duration * 0.05, `a click on the plot seeks to ${seeked} of ${duration}`);
+  await shot(page, '18-motion-plots');
+
+  // ---- Sizing: the drive's checks and a ranked alternative applied.
+  const appliedRatio = sizingAvailable ? await sizingSteps(page, { joint, step, shot }) : null;
+
+  // ---- Joint limits: defaults greyed as placeholders; a custom speed, then back to defaults.
+  step('motion: limits');
+  const row = page.locator(`table.limits tr[data-joint="${joint}"]`);
+  const speed = row.locator('input[name=speed]');
+  assert.equal(await speed.inputValue(), '', 'no custom speed: empty, the default as placeholder');
+  assert.match(await speed.getAttribute('placeholder'), /^171\.8/, 'default 3 rad/s shown in °/s');
+  await speed.fill('90');
+  await row.getByRole('button', { name: `Save the limits of ${joint}` }).click();
+  await page.locator(`table.limits tr.custom[data-joint="${joint}"]`).waitFor();
+  assert.equal(await page.locator(`table.limits tr[data-joint="${joint}"] input[name=speed]`).inputValue(), '90');
+  await page.getByRole('button', { name: `Reset the limits of ${joint} to the defaults` }).click();
+  await page.locator(`table.limits tr.custom[data-joint="${joint}"]`).waitFor({ state: 'detached' });
+
+  // ---- The regenerated package carries the motion.
+  step('motion: package');
+  await page.getByRole('tab', { name: 'Drives' }).click();
+  if (appliedRatio !== null) {
+    // The Drives tab shows the applied drive.
+    await page.locator(`table.drives tr[data-joint="${joint}"] td.num`).filter({ hasText: new RegExp(`^${appliedRatio}$`) }).waitFor();
+  }
+  const [pkg] = await Promise.all([page.waitForEvent('download', { timeout: 60_000 }), page.getByRole('button', { name: 'Regenerate and download package' }).click()]);
+  const path = join(downloads, `motion-${pkg.suggestedFilename()}`);
+  await pkg.saveAs(path);
+  const files = unzipSync(new Uint8Array(readFileSync(path)), { filter: (f) => /\/(Mechatronics\.mo|Motions\/[^/]+\.mo)$/.test(f.name) });
+  const text = (re) => {
+    const k = Object.keys(files).find((f) => re.test(f));
+    return k ? strFromU8(files[k]) : '';
+  };
+  const mech = text(/\/Mechatronics\.mo$/);
+  assert.ok(mech.length > 0, 'the package has a Mechatronics.mo');
+  // Mechatronics.mo instantiates the motion's table from the Motions sub-package; its drives follow it.
+  assert.match(mech, new RegExp(`\\bMotions\\.${name} motion_${name}\\b`), `Mechatronics.mo instantiates Motions.${name}`);
+  assert.match(mech, /parameter Integer motion\b/, 'Mechatronics.mo selects the motion by a parameter');
+  assert.match(text(/\/Motions\/package\.mo$/), /package Motions\b/, 'the package has a Motions sub-package');
+  const table = text(new RegExp(`/Motions/${name}\\.mo$`));
+  assert.match(table, new RegExp(`block ${name}\\b[\\s\\S]*CombiTimeTable[\\s\\S]*end ${name};`), `Motions/${name}.mo is the motion's table`);
+  const exported = true;
+
+  // ---- Delete the motion (the later steps change the model's joints).
+  step('motion: delete');
+  await page.getByRole('tab', { name: 'Motion' }).click();
+  await editor.getByRole('button', { name: 'Delete motion' }).click();
+  await page.getByRole('dialog').getByRole('button', { name: 'Delete' }).click();
+  await editor.waitFor({ state: 'detached' });
+  assert.equal(await page.locator(`.motion-list li[data-motion="${name}"]`).count(), 0);
+  await page.getByRole('tab', { name: 'Drives' }).click();
+  return { motion: name, package: path, exported };
+}
+
+/** The drive's sizing: checks with verdicts, a ranked alternative applied to the drive. */
+async function sizingSteps(page, { joint, step, shot }) {
+  step('motion: sizing');
+  const sizing = page.locator(`section.sizing[data-joint="${joint}"]`);
+  await sizing.waitFor();
+  assert.ok((await sizing.locator('table.checks tbody tr').count()) > 0, 'the drive has checks');
+  for (const v of await sizing.locator('td.verdict').allTextContents()) assert.match(v, /^(pass|FAIL|info)$/);
+  const apply = sizing.getByRole('button', { name: /^Apply / }).first();
+  await apply.waitFor();
+  const label = await apply.getAttribute('aria-label');
+  const ratio = /· ratio ([\d.e+-]+) ·/.exec(await sizing.locator('ol.alternatives li').first().textContent())[1];
+  await shot(page, '19-motion-sizing');
+  await apply.click();
+  await page.locator('.sizing-out .applied').waitFor();
+  const applied = /^Apply (.*) with (.*) to /.exec(label);
+  const after = await page.evaluate(async (j) => {
+    const id = location.hash.split('/')[2];
+    const r = await fetch(`/api/models/${id}/drives`, { headers: { 'X-Requested-With': 'cad2mo' } });
+    return (await r.json()).drives.find((d) => d.joint === j);
+  }, joint);
+  const lib = await page.evaluate(async () => (await (await fetch('/api/library/instances')).json()).map((i) => [i.id, i.name]));
+  const names = new Map(lib);
+  assert.equal(names.get(after.motor_instance), applied[1], `the drive's motor is the alternative's: ${JSON.stringify(after)}`);
+  assert.equal(names.get(after.gear_instance), applied[2], `the drive's gear is the alternative's: ${JSON.stringify(after)}`);
+  return ratio;
+}

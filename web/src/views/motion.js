@@ -1,0 +1,922 @@
+// Motion: the model's motions (create, rename, delete) and their keyframes (joint values,
+// captured from the sliders, or a tool pose reached by inverse kinematics, with a gizmo that
+// solves IK live while it is dragged), played in 3D at real speed with a scrub slider, plotted
+// (q, qd, qdd, torque; motor operating points against each drive's envelope), sized (checks and
+// ranked alternatives one can apply), and the joints' limits.
+
+import { api, enc } from '../api.js';
+import { h, fill, errorBox, num, field, confirmAction, newId, unitLabel } from '../ui.js';
+import { displayScale, displayUnit, sampleAt, keyframeProblems, throttle, applyAlternative, rotationRows, freshName, bodyDepths, defaultToolFrame } from './motion-data.js';
+
+const INTERPOLATIONS = [
+  ['ptp', 'Point to point (speed/acceleration limits)'],
+  ['quintic', 'Quintic polynomial'],
+  ['jerk', 'Jerk-limited, time-optimal'],
+];
+const RATE = 100; // Hz of the trajectory the player and plots use
+
+/**
+ * @param {HTMLElement} panel
+ * @param {{modelId: string, report: object, viewer: object, setJoints: Function, currentJoints: Function, say: Function}} ctx
+ * @returns {{poseChanged(): void, dispose(): void}}
+ */
+export function renderMotion(panel, ctx) {
+  const { modelId, viewer } = ctx;
+  const base = `/api/models/${enc(modelId)}`;
+  let joints = null; // GET /joints
+  let motions = [];
+  let current = null; // the stored motion being edited
+  let spec = null; // its editable spec
+  let dirty = false;
+  let traj = null;
+  let sizing = null;
+  let problems = new Map();
+  let time = 0;
+  let playing = false;
+  let raf = 0;
+  let plots = [];
+  let gizmo = null;
+  let disposed = false;
+
+  const listBox = h('div', { class: 'motion-list-box' });
+  const editorBox = h('div', { class: 'motion-editor-box' });
+  const gizmoBox = h('div', { class: 'gizmo-box' });
+  const playerBox = h('div', { class: 'player-box' });
+  const plotsBox = h('div', { class: 'plots-box' });
+  const sizingBox = h('div', { class: 'sizing-box' });
+  const limitsBox = h('div', { class: 'limits-box' });
+  fill(panel, h('h2', {}, 'Motions'), listBox, editorBox, gizmoBox, h('h2', {}, 'Joint limits'), limitsBox);
+  // Under the 3D view (wider), or in the tab where there is no such place.
+  if (ctx.stage) fill(ctx.stage, playerBox, plotsBox, sizingBox);
+  else panel.append(playerBox, plotsBox, sizingBox);
+
+  const jointInfo = (name) => joints?.joints.find((j) => j.name === name);
+  // Keyframes set the independent joints; in a closed loop the others follow.
+  const driven = () => (joints?.joints || []).filter((j) => j.independent !== false);
+  const captured = () => {
+    const now = ctx.currentJoints();
+    const out = {};
+    for (const j of driven()) if (Number.isFinite(now[j.name])) out[j.name] = now[j.name];
+    return out;
+  };
+  const scaleOf = (name) => displayScale(jointInfo(name)?.unit || 'rad');
+  const unitOf = (name) => displayUnit(jointInfo(name)?.unit || 'rad');
+
+  // ---------------------------------------------------------------- loading
+  async function load() {
+    fill(listBox, h('p', {}, 'Loading motions…'));
+    try {
+      [joints, motions] = await Promise.all([api(`${base}/joints`), api(`${base}/motions`)]);
+    } catch (e) {
+      fill(listBox, errorBox(e, 'Motions are not available for this model'));
+      return;
+    }
+    if (disposed) return;
+    renderList();
+    renderGizmo();
+    renderLimits();
+    renderEditor();
+  }
+
+  // ---------------------------------------------------------------- motion list
+  function renderList() {
+    const name = h('input', { type: 'text', id: 'motion-new-name', value: freshName('motion', motions.map((m) => m.name)), autocomplete: 'off' });
+    const items = motions.map((m) =>
+      h(
+        'li',
+        { dataset: { motion: m.name }, class: current?.id === m.id ? 'selected' : '' },
+        h('button', { type: 'button', class: 'pick', 'aria-pressed': String(current?.id === m.id), onclick: () => open(m.id) }, m.name),
+      ),
+    );
+    fill(
+      listBox,
+      items.length ? h('ul', { class: 'picklist motion-list', 'aria-label': 'Motions of this model' }, items) : h('p', { class: 'muted' }, 'No motions yet.'),
+      h(
+        'form',
+        { class: 'row new-motion', onsubmit: (e) => (e.preventDefault(), create(name.value.trim())) },
+        field('New motion name', name),
+        h('button', { type: 'submit' }, 'New motion'),
+      ),
+    );
+  }
+
+  async function create(name) {
+    if (!name) return ctx.say('A motion needs a name', 'error');
+    // From the CAD pose to the pose the sliders show now.
+    const body = {
+      name,
+      keyframes: [
+        { kind: 'joints', values: {} },
+        { kind: 'joints', values: captured(), interpolation: 'ptp', duration: null, dwell: null },
+      ],
+    };
+    try {
+      const m = await api(`${base}/motions`, { method: 'POST', body });
+      motions.push(m);
+      ctx.say(`Created the motion ${m.name}`, 'ok');
+      await open(m.id, m);
+    } catch (e) {
+      listBox.append(errorBox(e, 'The motion was not created'));
+    }
+  }
+
+  async function open(id, known) {
+    if (dirty && current && current.id !== id && !(await confirmAction(`Discard the unsaved changes to ${current.name}?`, 'Discard'))) return;
+    stop();
+    try {
+      current = known || (await api(`${base}/motions/${enc(id)}`));
+    } catch (e) {
+      fill(editorBox, errorBox(e, 'Could not open the motion'));
+      return;
+    }
+    spec = structuredClone(current.spec);
+    spec.name = current.name;
+    dirty = false;
+    traj = null;
+    sizing = null;
+    problems = new Map();
+    time = 0;
+    renderList();
+    renderEditor();
+    await plan();
+  }
+
+  // ---------------------------------------------------------------- keyframe editor
+  function markDirty() {
+    dirty = true;
+    editorBox.querySelector('.motion-dirty')?.removeAttribute('hidden');
+  }
+
+  function renderEditor() {
+    if (!current) {
+      fill(editorBox, joints ? h('p', { class: 'muted' }, 'Choose a motion or create one: it starts at the CAD pose and goes to the pose the joint sliders show.') : null);
+      return;
+    }
+    const name = h('input', { type: 'text', id: 'motion-name', value: spec.name, autocomplete: 'off', oninput: () => ((spec.name = name.value), markDirty()) });
+    const kfs = spec.keyframes.map((kf, k) => keyframeItem(kf, k));
+    fill(
+      editorBox,
+      h(
+        'form',
+        { class: 'card motion-editor', 'aria-label': `Motion ${current.name}`, novalidate: true, onsubmit: (e) => (e.preventDefault(), save()) },
+        field('Motion name', name),
+        h('h3', {}, `Keyframes (${spec.keyframes.length})`),
+        h('ol', { class: 'keyframes', start: '0' }, kfs),
+        h(
+          'div',
+          { class: 'row' },
+          h('button', { type: 'button', onclick: addCaptured }, 'Add keyframe from the current pose'),
+          h('button', { type: 'button', onclick: addToolKeyframe }, 'Add tool keyframe from the gizmo'),
+        ),
+        h(
+          'div',
+          { class: 'row' },
+          h('button', { type: 'submit', id: 'motion-save' }, 'Save motion'),
+          h('button', { type: 'button', class: 'danger', onclick: remove }, 'Delete motion'),
+          h('span', { class: 'motion-dirty warn', hidden: !dirty }, 'Unsaved changes'),
+        ),
+        h('div', { class: 'motion-out', 'aria-live': 'polite' }),
+      ),
+    );
+  }
+
+  function numberInput(id, value, scale, onValue, { placeholder, label } = {}) {
+    const input = h('input', {
+      type: 'text',
+      inputmode: 'decimal',
+      id,
+      value: value === null || value === undefined ? '' : String(num(value * scale)),
+      placeholder: placeholder ?? '',
+      autocomplete: 'off',
+      'aria-label': label,
+    });
+    input.addEventListener('change', () => {
+      const t = input.value.trim();
+      const x = t === '' ? null : Number(t);
+      const bad = t !== '' && !Number.isFinite(x);
+      input.setAttribute('aria-invalid', String(bad));
+      if (!bad) onValue(x === null ? null : x / scale);
+      markDirty();
+    });
+    return input;
+  }
+
+  function keyframeItem(kf, k) {
+    const id = newId('kf');
+    const kind = h(
+      'select',
+      { id: `${id}-kind` },
+      h('option', { value: 'joints', selected: kf.kind === 'joints' }, 'Joint values'),
+      h('option', { value: 'tool', selected: kf.kind === 'tool' }, 'Tool pose (inverse kinematics)'),
+    );
+    kind.addEventListener('change', () => {
+      const tool = kind.value === 'tool' && toolKeyframeNow(kf.frame);
+      if (kind.value === 'tool' && !tool) {
+        kind.value = 'joints';
+        return ctx.say('A tool keyframe needs a CAD frame and the 3D view', 'error');
+      }
+      if (tool) Object.assign(kf, tool, { kind: 'tool', values: undefined });
+      else Object.assign(kf, { kind: 'joints', values: captured(), frame: undefined, position: undefined, rotation: undefined });
+      markDirty();
+      renderEditor();
+    });
+    let body;
+    if (kf.kind === 'tool') {
+      const frames = joints?.frames || [];
+      const sel = h(
+        'select',
+        { id: `${id}-frame` },
+        frames.map((f) => h('option', { value: f.node_id, selected: f.node_id === kf.frame }, frameLabel(f))),
+        frames.some((f) => f.node_id === kf.frame) ? null : h('option', { value: kf.frame, selected: true }, `${kf.frame} (not in the model)`),
+      );
+      sel.addEventListener('change', () => ((kf.frame = sel.value), markDirty()));
+      const pos = [0, 1, 2].map((i) =>
+        numberInput(`${id}-p${i}`, kf.position?.[i], 1000, (v) => (kf.position[i] = v ?? 0), { label: `Keyframe ${k} tool ${'xyz'[i]} [mm]` }),
+      );
+      const orient = h('input', { type: 'checkbox', id: `${id}-rot`, checked: !!kf.rotation });
+      orient.addEventListener('change', () => {
+        kf.rotation = orient.checked ? toolKeyframeNow(kf.frame, true)?.rotation ?? null : null;
+        markDirty();
+      });
+      body = [
+        field('Tool frame', sel),
+        h('div', { class: 'xyz' }, h('span', { class: 'muted' }, 'Position [mm]'), pos),
+        h('span', { class: 'check' }, orient, h('label', { for: orient.id }, 'Orientation too (else position only)')),
+      ];
+    } else {
+      const followers = (joints?.joints || []).filter((j) => j.independent === false);
+      const rows = driven().map((j) =>
+        h(
+          'label',
+          { class: 'jv' },
+          h('span', {}, `${j.name} [${unitOf(j.name)}]`),
+          numberInput(`${id}-${j.name}`, kf.values?.[j.name], scaleOf(j.name), (v) => {
+            kf.values ??= {};
+            if (v === null) delete kf.values[j.name];
+            else kf.values[j.name] = v;
+          }, { placeholder: k === 0 ? 'CAD pose' : 'previous' }),
+        ),
+      );
+      body = [
+        h('div', { class: 'joint-values' }, rows),
+        followers.length ? h('p', { class: 'muted' }, `${followers.map((j) => j.name).join(', ')} follow the loops.`) : null,
+      ];
+    }
+    const timing =
+      k === 0
+        ? [field('Dwell [s]', numberInput(`${id}-dwell`, kf.dwell, 1, (v) => (kf.dwell = v), { placeholder: '0' }))]
+        : [
+            field(
+              'Interpolation',
+              (() => {
+                const s = h('select', { id: `${id}-interp` }, INTERPOLATIONS.map(([v, l]) => h('option', { value: v, selected: (kf.interpolation || 'ptp') === v }, l)));
+                s.addEventListener('change', () => ((kf.interpolation = s.value), markDirty()));
+                return s;
+              })(),
+            ),
+            field('Duration [s]', numberInput(`${id}-duration`, kf.duration, 1, (v) => (kf.duration = v), { placeholder: 'fastest' })),
+            field('Dwell [s]', numberInput(`${id}-dwell`, kf.dwell, 1, (v) => (kf.dwell = v), { placeholder: '0' })),
+          ];
+    const at = traj?.keyframes?.find((x) => x.index === k);
+    const issue = problems.get(k);
+    return h(
+      'li',
+      { class: `keyframe${issue ? ' invalid' : ''}`, dataset: { keyframe: String(k) }, 'aria-label': `Keyframe ${k}` },
+      h(
+        'div',
+        { class: 'kf-head' },
+        h('strong', {}, `Keyframe ${k}`),
+        at ? h('small', { class: 'muted kf-time' }, ` at ${num(at.time)} s${at.ik ? ` · IK ${at.ik.iterations} it., ${num(at.ik.position_error * 1000)} mm` : ''}`) : null,
+        k === 0 ? h('small', { class: 'muted' }, ' (start pose)') : null,
+      ),
+      field('Kind', kind),
+      body,
+      h('div', { class: 'timing' }, timing),
+      issue ? h('div', { class: 'error kf-problem', role: 'alert' }, issue.map((m) => h('p', {}, m))) : null,
+      h(
+        'div',
+        { class: 'row kf-actions' },
+        h('button', { type: 'button', onclick: () => goTo(k), 'aria-label': `Show keyframe ${k} in 3D` }, 'Show'),
+        h('button', { type: 'button', onclick: () => capture(k), 'aria-label': `Capture the current pose into keyframe ${k}` }, 'Capture current pose'),
+        h('button', { type: 'button', disabled: k === 0, onclick: () => move(k, -1), 'aria-label': `Move keyframe ${k} up` }, '↑'),
+        h('button', { type: 'button', disabled: k === spec.keyframes.length - 1, onclick: () => move(k, 1), 'aria-label': `Move keyframe ${k} down` }, '↓'),
+        h('button', { type: 'button', class: 'danger', disabled: spec.keyframes.length <= 2, onclick: () => removeKf(k), 'aria-label': `Remove keyframe ${k}` }, 'Remove'),
+      ),
+    );
+  }
+
+  const frameLabel = (f) => `${f.body} · ${f.name}`;
+
+  function capture(k) {
+    const kf = spec.keyframes[k];
+    Object.assign(kf, { kind: 'joints', values: captured() });
+    delete kf.frame;
+    delete kf.position;
+    delete kf.rotation;
+    markDirty();
+    renderEditor();
+  }
+
+  function move(k, d) {
+    const ks = spec.keyframes;
+    [ks[k], ks[k + d]] = [ks[k + d], ks[k]];
+    problems = new Map();
+    markDirty();
+    renderEditor();
+  }
+
+  function removeKf(k) {
+    spec.keyframes.splice(k, 1);
+    problems = new Map();
+    markDirty();
+    renderEditor();
+  }
+
+  function addCaptured() {
+    spec.keyframes.push({ kind: 'joints', values: captured(), interpolation: 'ptp', duration: null, dwell: null });
+    markDirty();
+    renderEditor();
+  }
+
+  /** A tool keyframe at the gizmo's pose (or the chosen frame's pose now). */
+  function toolKeyframeNow(frameId, withRotation = !!gizmoOrient?.checked) {
+    const f = frameById(frameId || gizmoFrame());
+    if (!f) return null;
+    const m = gizmo && gizmoFrame() === f.node_id ? gizmo.matrix() : viewer.frameNow(f);
+    if (!m) return null; // no 3D view
+    const e = m.elements;
+    return { kind: 'tool', frame: f.node_id, position: [e[12], e[13], e[14]], rotation: withRotation ? rotationRows(e) : null };
+  }
+
+  function addToolKeyframe() {
+    const kf = toolKeyframeNow();
+    if (!kf) return ctx.say('This model has no CAD frames for a tool keyframe', 'error');
+    spec.keyframes.push({ ...kf, interpolation: 'ptp', duration: null, dwell: null });
+    markDirty();
+    renderEditor();
+    ctx.say(`Added a tool keyframe for ${frameLabel(frameById(kf.frame))}`, 'ok');
+  }
+
+  /** Shows keyframe k: joint values as planned (trajectory) or as given. */
+  function goTo(k) {
+    const at = traj?.keyframes?.find((x) => x.index === k);
+    if (at && !dirty) return seek(at.time);
+    const kf = spec.keyframes[k];
+    if (kf.kind === 'tool') {
+      // Not planned yet: solve the pose here, from the current pose.
+      api(`${base}/ik`, { method: 'POST', body: { frame: kf.frame, position: kf.position, rotation: kf.rotation ?? null, seed: ctx.currentJoints() } })
+        .then((r) => {
+          ctx.setJoints(r.q);
+          poseChanged();
+          if (!r.success) ctx.say(`Keyframe ${k}: the tool pose is out of reach (${num(r.position_error * 1000)} mm off)`, 'error');
+        })
+        .catch((e) => ctx.say(e.message, 'error'));
+      return;
+    }
+    const values = {};
+    for (const j of joints?.joints || []) values[j.name] = j.q0;
+    for (let i = 0; i <= k; i++) if (spec.keyframes[i].kind === 'joints') Object.assign(values, spec.keyframes[i].values || {});
+    ctx.setJoints(values);
+    poseChanged();
+  }
+
+  async function save() {
+    const out = editorBox.querySelector('.motion-out');
+    if (editorBox.querySelector('[aria-invalid="true"]')) {
+      fill(out, h('div', { class: 'error', role: 'alert' }, h('strong', {}, 'Not saved'), h('p', {}, 'Some values are not numbers.')));
+      return;
+    }
+    try {
+      const stored = await api(`${base}/motions/${enc(current.id)}`, { method: 'PUT', body: spec });
+      current = { ...current, ...stored };
+      motions = motions.map((m) => (m.id === current.id ? current : m));
+      dirty = false;
+      renderList();
+      ctx.say(`Saved the motion ${current.name}`, 'ok');
+      await plan();
+    } catch (e) {
+      problems = keyframeProblems(e);
+      renderEditor();
+      fill(editorBox.querySelector('.motion-out'), errorBox(e, 'The motion was not saved'));
+    }
+  }
+
+  async function remove() {
+    if (!(await confirmAction(`Delete the motion ${current.name}?`))) return;
+    try {
+      await api(`${base}/motions/${enc(current.id)}`, { method: 'DELETE' });
+      ctx.say(`Deleted the motion ${current.name}`, 'ok');
+      motions = motions.filter((m) => m.id !== current.id);
+      current = null;
+      spec = null;
+      dirty = false;
+      traj = null;
+      sizing = null;
+      stop();
+      renderList();
+      renderEditor();
+      renderPlayer();
+      renderPlots();
+      renderSizing();
+    } catch (e) {
+      fill(editorBox.querySelector('.motion-out'), errorBox(e));
+    }
+  }
+
+  // ---------------------------------------------------------------- planning: trajectory and sizing
+  async function plan() {
+    stop();
+    traj = null;
+    sizing = null;
+    problems = new Map();
+    fill(playerBox, h('p', { role: 'status' }, 'Planning the trajectory…'));
+    fill(plotsBox);
+    fill(sizingBox);
+    try {
+      traj = await api(`${base}/motions/${enc(current.id)}/trajectory?rate=${RATE}`);
+    } catch (e) {
+      problems = keyframeProblems(e);
+      renderEditor();
+      fill(playerBox, errorBox(e, 'The motion cannot be planned'));
+      if (problems.size) editorBox.querySelector('.kf-problem')?.scrollIntoView({ block: 'nearest' });
+      return;
+    }
+    if (disposed) return;
+    time = 0;
+    renderEditor();
+    renderPlayer();
+    renderPlots();
+    seek(0);
+    await loadSizing();
+  }
+
+  async function loadSizing() {
+    fill(sizingBox, h('p', { role: 'status' }, 'Sizing the drives…'));
+    try {
+      sizing = await api(`${base}/motions/${enc(current.id)}/sizing`);
+    } catch (e) {
+      // 409: the service cannot size (yet, or while the model converts): a note, not an error.
+      fill(sizingBox, e.status === 409 ? h('p', { class: 'muted sizing-unavailable' }, `Drive sizing is not available: ${e.message}`) : errorBox(e, 'The drives could not be sized'));
+      return;
+    }
+    if (disposed) return;
+    renderSizing();
+    renderPlots();
+    setTime(time);
+  }
+
+  // ---------------------------------------------------------------- player
+  let scrub = null;
+  let clock = null;
+  let playBtn = null;
+  let timelineCursor = null;
+
+  function renderPlayer() {
+    if (!traj) {
+      fill(playerBox);
+      return;
+    }
+    const d = traj.duration;
+    scrub = h('input', { type: 'range', id: 'motion-scrub', min: '0', max: String(d), step: String(1 / traj.rate), value: '0' });
+    scrub.addEventListener('input', () => {
+      stop();
+      setTime(Number(scrub.value));
+    });
+    clock = h('output', { for: scrub.id, class: 'motion-clock' });
+    playBtn = h('button', { type: 'button', id: 'motion-play', onclick: () => (playing ? stop() : play()) }, 'Play');
+    timelineCursor = h('div', { class: 'timeline-cursor', 'aria-hidden': 'true' });
+    const marks = traj.keyframes.map((k) =>
+      h(
+        'button',
+        {
+          type: 'button',
+          class: `timeline-mark${problems.has(k.index) ? ' invalid' : ''}`,
+          style: `left: ${d > 0 ? (k.time / d) * 100 : 0}%`,
+          title: `Keyframe ${k.index} at ${num(k.time)} s`,
+          'aria-label': `Keyframe ${k.index} at ${num(k.time)} s`,
+          onclick: () => seek(k.time),
+        },
+        String(k.index),
+      ),
+    );
+    fill(
+      playerBox,
+      h('h3', {}, `Play ${traj.motion} `, h('small', { class: 'muted' }, `${num(d)} s, planned on v${traj.version}`)),
+      ctx.versionNumber && traj.version !== ctx.versionNumber
+        ? h('p', { class: 'warning' }, `Motions are planned on the latest version (v${traj.version}); this page shows v${ctx.versionNumber}, whose joints may differ.`)
+        : null,
+      h('div', { class: 'timeline', role: 'group', 'aria-label': 'Keyframe times' }, marks, timelineCursor),
+      h('div', { class: 'player row' }, playBtn, h('label', { for: scrub.id, class: 'visually-hidden' }, 'Motion time'), scrub, clock),
+    );
+  }
+
+  function setTime(t) {
+    if (!traj) return;
+    time = Math.max(0, Math.min(t, traj.duration));
+    ctx.setJoints(sampleAt(traj, time));
+    if (scrub) scrub.value = String(time);
+    if (clock) clock.textContent = `${time.toFixed(2)} s / ${num(traj.duration)} s`;
+    if (timelineCursor) timelineCursor.style.left = `${traj.duration > 0 ? (time / traj.duration) * 100 : 0}%`;
+    playerBox.dataset.time = time.toFixed(3);
+    for (const p of plots) p.setTime(time);
+    poseChanged();
+  }
+
+  function seek(t) {
+    stop();
+    setTime(t);
+  }
+
+  function play() {
+    if (!traj) return;
+    if (time >= traj.duration) time = 0;
+    playing = true;
+    playerBox.dataset.playing = 'true';
+    if (playBtn) playBtn.textContent = 'Pause';
+    const t0 = performance.now() - time * 1000;
+    const tick = (now) => {
+      if (!playing) return;
+      const t = (now - t0) / 1000;
+      setTime(t);
+      if (t >= traj.duration) return stop();
+      raf = requestAnimationFrame(tick);
+    };
+    raf = requestAnimationFrame(tick);
+  }
+
+  function stop() {
+    playing = false;
+    cancelAnimationFrame(raf);
+    playerBox.dataset.playing = 'false';
+    if (playBtn) playBtn.textContent = 'Play';
+  }
+
+  // ---------------------------------------------------------------- plots
+  async function renderPlots() {
+    for (const p of plots) p.destroy();
+    plots = [];
+    fill(plotsBox);
+    if (!traj) return;
+    const { timePlot, torqueSpeedPlot } = await import('./plots.js');
+    if (disposed || !traj) return;
+    for (const p of plots) p.destroy();
+    plots = [];
+    fill(plotsBox, h('h3', {}, 'Plots'));
+    const names = traj.joints;
+    const units = (suffix) => traj.units.map((u) => `${u}${suffix}`);
+    const tauUnits = traj.units.map((u) => (u === 'rad' ? 'N·m' : 'N'));
+    const seekTo = (t) => seek(t);
+    for (const [key, title, us] of [
+      ['q', 'Position q', units('')],
+      ['qd', 'Speed qd', units('/s')],
+      ['qdd', 'Acceleration qdd', units('/s²')],
+      ['tau', 'Torque / force', tauUnits],
+    ]) {
+      if (!traj[key]) continue;
+      const box = h('div', { class: 'plot', dataset: { plot: key } });
+      plotsBox.append(box);
+      plots.push(timePlot(box, { title, t: traj.t, series: traj[key], names, units: us, onSeek: seekTo }));
+    }
+    for (const d of sizing?.drives || []) {
+      if (!d.operating_points?.speed?.length) continue;
+      const box = h('div', { class: 'plot', dataset: { plot: `ts-${d.joint}` } });
+      plotsBox.append(box);
+      plots.push(torqueSpeedPlot(box, { title: `${d.joint}: ${d.motor?.name || 'motor'} torque–speed`, op: d.operating_points, envelope: d.envelope }));
+    }
+    for (const p of plots) p.setTime(time);
+  }
+
+  // ---------------------------------------------------------------- sizing
+  function renderSizing() {
+    if (!sizing) {
+      fill(sizingBox);
+      return;
+    }
+    const drives = sizing.drives.map((d) => {
+      const rows = d.checks.map((c) =>
+        h(
+          'tr',
+          { class: c.limit === null || c.limit === undefined ? 'info' : c.pass ? 'pass' : 'fail', dataset: { check: c.check } },
+          h('th', { scope: 'row' }, c.label || c.check, c.detail ? h('small', { class: 'muted' }, ` ${c.detail}`) : null),
+          h('td', { class: 'num' }, `${num(c.value)} ${unitLabel(c.unit)}`),
+          h('td', { class: 'num' }, c.limit === null || c.limit === undefined ? '—' : `${num(c.limit)} ${unitLabel(c.unit)}`),
+          h('td', { class: 'num' }, c.margin === null || c.margin === undefined ? '—' : `${num(Math.round(c.margin * 1000) / 10)} %`),
+          h('td', { class: 'verdict' }, c.limit === null || c.limit === undefined ? 'info' : c.pass ? 'pass' : 'FAIL'),
+        ),
+      );
+      const alts = (d.alternatives || []).map((a) =>
+        h(
+          'li',
+          { dataset: { rank: String(a.rank) } },
+          `${a.motor.name} + ${a.gear.name}`,
+          a.ratio !== null && a.ratio !== undefined ? ` · ratio ${num(a.ratio)}` : '',
+          ` · margin ${num(Math.round(a.margin * 1000) / 10)} % `,
+          a.missing?.length ? h('small', { class: 'muted' }, `(not checked: ${a.missing.join(', ')}) `) : null,
+          h('button', { type: 'button', onclick: (e) => apply(d, a, e.currentTarget), 'aria-label': `Apply ${a.motor.name} with ${a.gear.name} to ${d.joint}` }, 'Apply'),
+        ),
+      );
+      return h(
+        'section',
+        { class: `sizing card ${d.pass ? 'pass' : 'fail'}`, dataset: { joint: d.joint }, 'aria-label': `Sizing of the drive of ${d.joint}` },
+        h('h4', {}, `${d.joint}: ${d.motor?.name || '—'} + ${d.gear?.name || '—'}${d.ratio ? ` (ratio ${num(d.ratio)})` : ''} `, h('span', { class: `badge ${d.pass ? 'badge-succeeded' : 'badge-failed'}` }, d.pass ? 'pass' : 'fail')),
+        h(
+          'div',
+          { class: 'scroll' },
+          h(
+            'table',
+            { class: 'checks' },
+            h('thead', {}, h('tr', {}, ['Check', 'Value', 'Limit', 'Margin', 'Result'].map((c) => h('th', { scope: 'col' }, c)))),
+            h('tbody', {}, rows),
+          ),
+        ),
+        d.missing?.length ? h('div', { class: 'warning missing' }, h('strong', {}, 'Not checked, missing data: '), d.missing.join(', ')) : null,
+        alts.length
+          ? [h('h5', {}, 'Ranked alternatives'), sizing.ranking ? h('p', { class: 'muted ranking' }, `Ranked by ${sizing.ranking}.`) : null, h('ol', { class: 'alternatives' }, alts)]
+          : h('p', { class: 'muted' }, 'No combination in the library passes.'),
+      );
+    });
+    const undriven = sizing.undriven || [];
+    fill(
+      sizingBox,
+      h('h3', {}, 'Drive sizing ', h('small', { class: 'muted' }, `at ${sizing.rate} Hz over ${num(sizing.duration)} s`)),
+      drives.length ? drives : h('p', { class: 'muted' }, 'No joint has a drive: add one under Drives to size it.'),
+      sizing.not_sized?.length
+        ? h('div', { class: 'warning not-sized' }, h('strong', {}, 'Drives not sized: '), h('ul', {}, sizing.not_sized.map((x) => h('li', {}, `${x.joint}: ${x.problem}`))))
+        : null,
+      sizing.orphaned?.length ? h('p', { class: 'muted' }, `Drives of joints this version lacks (not sized): ${sizing.orphaned.join(', ')}.`) : null,
+      undriven.length
+        ? [
+            h('h4', {}, 'Joints without a drive'),
+            h(
+              'table',
+              { class: 'undriven' },
+              h('thead', {}, h('tr', {}, ['Joint', 'Peak torque', 'RMS torque', 'Max speed'].map((c) => h('th', { scope: 'col' }, c)))),
+              h('tbody', {}, undriven.map((u) => h('tr', {}, h('th', { scope: 'row' }, u.joint), h('td', { class: 'num' }, num(u.peak_torque)), h('td', { class: 'num' }, num(u.rms_torque)), h('td', { class: 'num' }, num(u.max_speed))))),
+            ),
+          ]
+        : null,
+      h('div', { class: 'sizing-out', 'aria-live': 'polite' }),
+    );
+  }
+
+  async function apply(d, alt, button) {
+    const out = sizingBox.querySelector('.sizing-out');
+    button.disabled = true;
+    try {
+      const [data, instances] = await Promise.all([api(`${base}/drives`), api('/api/library/instances')]);
+      const drive = data.drives.find((x) => x.joint === d.joint);
+      if (!drive) throw new Error(`${d.joint} has no drive any more`);
+      const gearRatio = instances.find((i) => i.id === alt.gear.id)?.values?.ratio;
+      await api(`${base}/drives/${enc(d.joint)}`, { method: 'PUT', body: applyAlternative(drive, alt, gearRatio) });
+      ctx.drivesChanged?.();
+      ctx.say(`Applied ${alt.motor.name} with ${alt.gear.name} to ${d.joint}`, 'ok');
+      await loadSizing();
+      fill(sizingBox.querySelector('.sizing-out'), h('p', { class: 'ok applied' }, `Applied ${alt.motor.name} with ${alt.gear.name} to ${d.joint}.`));
+    } catch (e) {
+      fill(out, errorBox(e, 'Could not apply the alternative'));
+      button.disabled = false;
+    }
+  }
+
+  // ---------------------------------------------------------------- gizmo and live IK
+  let gizmoFrameSel = null;
+  let gizmoOrient = null;
+  let gizmoMode = null;
+  let gizmoOn = null;
+  let ikOut = null;
+  let ikSeq = 0;
+
+  const frameById = (id) => joints?.frames?.find((f) => f.node_id === id);
+  const gizmoFrame = () => gizmoFrameSel?.value || joints?.frames?.[0]?.node_id;
+
+  function renderGizmo() {
+    const frames = joints?.frames || [];
+    if (!frames.length) {
+      fill(gizmoBox, h('p', { class: 'muted' }, 'The model has no CAD frames for a tool gizmo.'));
+      return;
+    }
+    const preferred = defaultToolFrame(frames, bodyDepths(ctx.report));
+    gizmoFrameSel = h('select', { id: 'gizmo-frame' }, frames.map((f) => h('option', { value: f.node_id, selected: f === preferred }, frameLabel(f))));
+    gizmoOn = h('input', { type: 'checkbox', id: 'gizmo-on' });
+    gizmoOrient = h('input', { type: 'checkbox', id: 'gizmo-orient' });
+    gizmoMode = h('select', { id: 'gizmo-mode' }, h('option', { value: 'translate' }, 'Move'), h('option', { value: 'rotate' }, 'Rotate'));
+    ikOut = h('output', { class: 'ik-out', 'aria-live': 'polite' });
+    gizmoOn.addEventListener('change', () => (gizmoOn.checked ? showGizmo() : hideGizmo()));
+    gizmoFrameSel.addEventListener('change', () => gizmoOn.checked && showGizmo());
+    gizmoMode.addEventListener('change', () => {
+      gizmo?.setMode(gizmoMode.value);
+      if (gizmoMode.value === 'rotate') gizmoOrient.checked = true;
+    });
+    fill(
+      gizmoBox,
+      h(
+        'fieldset',
+        { class: 'gizmo card' },
+        h('legend', {}, 'Tool gizmo'),
+        field('Tool frame', gizmoFrameSel),
+        h('div', { class: 'row' }, h('span', { class: 'check' }, gizmoOn, h('label', { for: 'gizmo-on' }, 'Show the gizmo in 3D')), field('Gizmo mode', gizmoMode)),
+        h('span', { class: 'check' }, gizmoOrient, h('label', { for: 'gizmo-orient' }, 'Solve for orientation too')),
+        h('p', { class: 'muted' }, 'Drag the gizmo: inverse kinematics moves the model live; on release the gizmo snaps to the pose reached.'),
+        ikOut,
+      ),
+    );
+  }
+
+  function showGizmo() {
+    const f = frameById(gizmoFrame());
+    if (!f) return;
+    hideGizmo();
+    const m = viewer.frameNow(f);
+    if (!m) return;
+    gizmo = viewer.showGizmo(m, {
+      onDrag: (mat) => {
+        stop();
+        ikLive(mat);
+      },
+      onEnd: async (mat) => {
+        await ikLive.flush?.();
+        await solve(mat);
+        gizmo?.setPose(viewer.frameNow(f));
+      },
+    });
+    gizmo?.setMode(gizmoMode.value);
+    if (gizmoOn) gizmoOn.checked = true;
+    window.cad2moGizmo = gizmo;
+  }
+
+  function hideGizmo() {
+    viewer.hideGizmo();
+    gizmo = null;
+    delete window.cad2moGizmo;
+  }
+
+  async function solve(mat) {
+    const f = gizmoFrame();
+    const e = mat.elements;
+    const body = { frame: f, position: [e[12], e[13], e[14]], rotation: gizmoOrient?.checked ? rotationRows(e) : null, seed: ctx.currentJoints() };
+    const seq = ++ikSeq;
+    const run = (async () => {
+      try {
+        const r = await api(`${base}/ik`, { method: 'POST', body });
+        if (disposed) return;
+        ctx.setJoints(r.q);
+        if (ikOut) {
+          ikOut.textContent = `IK ${r.success ? 'reached' : 'closest pose'}: ${num(r.position_error * 1000)} mm, ${num((r.rotation_error * 180) / Math.PI)}°, ${r.iterations} iterations`;
+          ikOut.dataset.count = String((Number(ikOut.dataset.count) || 0) + 1);
+          ikOut.dataset.success = String(!!r.success);
+        }
+      } catch (err) {
+        if (ikOut && seq === ikSeq) ikOut.textContent = `IK failed: ${err.message}`;
+      }
+    })();
+    return run;
+  }
+  const ikLive = throttle((mat) => solve(mat), 80);
+
+  /** The sliders or the player moved the model: the gizmo follows its frame. */
+  function poseChanged() {
+    if (!gizmo || gizmo.controls?.dragging) return;
+    const f = frameById(gizmoFrame());
+    const m = f && viewer.frameNow(f);
+    if (m) gizmo.setPose(m);
+  }
+
+  // ---------------------------------------------------------------- joint limits
+  const LIMIT_FIELDS = [
+    ['lo', 'Lower position', (l) => l.position?.[0], ''],
+    ['hi', 'Upper position', (l) => l.position?.[1], ''],
+    ['speed', 'Speed', (l) => l.speed, '/s'],
+    ['acceleration', 'Acceleration', (l) => l.acceleration, '/s²'],
+    ['jerk', 'Jerk', (l) => l.jerk, '/s³'],
+  ];
+
+  function renderLimits() {
+    if (!joints) return;
+    const rows = joints.joints.map((j) => {
+      const s = displayScale(j.unit);
+      const u = displayUnit(j.unit);
+      const inputs = {};
+      const cells = LIMIT_FIELDS.map(([key, label, get, suffix]) => {
+        const def = get(j.defaults);
+        const eff = get(j.limits);
+        const custom = j.custom && eff !== undefined && eff !== null && Math.abs(eff - def) > 1e-12 * Math.max(1, Math.abs(def));
+        const input = h('input', {
+          type: 'text',
+          inputmode: 'decimal',
+          name: key,
+          value: custom ? String(num(eff * s)) : '',
+          placeholder: def === undefined || def === null ? '' : String(num(def * s)),
+          'aria-label': `${j.name} ${label.toLowerCase()} [${u}${suffix}] (empty: default ${num(def * s)})`,
+          autocomplete: 'off',
+          class: 'limit',
+        });
+        inputs[key] = input;
+        return h('td', {}, input);
+      });
+      const msg = h('div', { class: 'field-msg' });
+      const saveLimits = async () => {
+        const body = {};
+        const val = (k) => {
+          const t = inputs[k].value.trim();
+          if (t === '') return null;
+          const x = Number(t);
+          inputs[k].setAttribute('aria-invalid', String(!Number.isFinite(x)));
+          if (!Number.isFinite(x)) throw new Error(`${j.name}: "${t}" is not a number`);
+          return x / s;
+        };
+        try {
+          const lo = val('lo');
+          const hi = val('hi');
+          if (lo !== null || hi !== null) body.position = [lo ?? j.defaults.position[0], hi ?? j.defaults.position[1]];
+          for (const k of ['speed', 'acceleration', 'jerk']) {
+            const x = val(k);
+            if (x !== null) body[k] = x;
+          }
+          const stored = await api(`${base}/joints/${enc(j.name)}/limits`, { method: 'PUT', body });
+          Object.assign(j, stored && stored.name ? stored : { limits: { ...j.defaults, ...body }, custom: true });
+          fill(msg, h('span', { class: 'ok' }, 'Saved'));
+          ctx.say(`Saved the limits of ${j.name}`, 'ok');
+          renderLimits();
+        } catch (e) {
+          fill(msg, errorBox(e, `The limits of ${j.name} were not saved`));
+        }
+      };
+      const reset = async () => {
+        try {
+          await api(`${base}/joints/${enc(j.name)}/limits`, { method: 'DELETE' });
+          Object.assign(j, { limits: structuredClone(j.defaults), custom: false });
+          ctx.say(`The limits of ${j.name} are the defaults again`, 'ok');
+          renderLimits();
+        } catch (e) {
+          fill(msg, errorBox(e));
+        }
+      };
+      return h(
+        'tr',
+        { dataset: { joint: j.name }, class: j.custom ? 'custom' : '' },
+        h('th', { scope: 'row' }, j.name, h('small', { class: 'muted' }, ` ${j.kind} [${u}]`), j.custom ? h('small', { class: 'badge' }, 'custom') : null, msg),
+        cells,
+        h(
+          'td',
+          { class: 'limit-actions' },
+          h('button', { type: 'button', onclick: saveLimits, 'aria-label': `Save the limits of ${j.name}` }, 'Save'),
+          j.custom ? h('button', { type: 'button', class: 'danger', onclick: reset, 'aria-label': `Reset the limits of ${j.name} to the defaults` }, 'Defaults') : null,
+        ),
+      );
+    });
+    const orphans = (joints.orphans || []).map((o) =>
+      h(
+        'li',
+        { dataset: { joint: o.joint } },
+        `${o.joint}: `,
+        h('code', {}, JSON.stringify(o.limits)),
+        ' ',
+        h(
+          'button',
+          {
+            type: 'button',
+            class: 'danger',
+            'aria-label': `Remove the orphaned limits of ${o.joint}`,
+            onclick: async () => {
+              try {
+                await api(`${base}/joints/${enc(o.joint)}/limits`, { method: 'DELETE' });
+                joints.orphans = joints.orphans.filter((x) => x.joint !== o.joint);
+                renderLimits();
+              } catch (e) {
+                ctx.say(e.message, 'error');
+              }
+            },
+          },
+          'Remove',
+        ),
+      ),
+    );
+    fill(
+      limitsBox,
+      h('p', { class: 'muted' }, `Joints of v${joints.version}. Empty fields use the default shown greyed; units are degrees or millimetres.`),
+      h(
+        'div',
+        { class: 'scroll' },
+        h(
+          'table',
+          { class: 'limits' },
+          h('thead', {}, h('tr', {}, ['Joint', 'Min', 'Max', 'Speed', 'Accel.', 'Jerk', ''].map((c) => h('th', { scope: 'col' }, c)))),
+          h('tbody', {}, rows),
+        ),
+      ),
+      orphans.length ? h('div', { class: 'warning orphans' }, h('strong', {}, 'Limits of joints gone from the model: '), h('ul', { class: 'orphaned-limits' }, orphans)) : null,
+    );
+  }
+
+  load();
+  return {
+    poseChanged,
+    dispose() {
+      disposed = true;
+      stop();
+      hideGizmo();
+      for (const p of plots) p.destroy();
+      plots = [];
+    },
+  };
+}

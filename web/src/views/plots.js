@@ -1,0 +1,158 @@
+// uPlot charts of a motion: joint quantities against time with a time cursor the 3D view
+// drives (a click on a chart seeks there), and a drive's motor operating points in the
+// torque–speed plane with its envelope and the operating point at the cursor's time.
+
+import uPlot from 'uplot';
+import 'uplot/dist/uPlot.min.css';
+import { torqueSpeedData, nearestIndex } from './motion-data.js';
+
+const COLORS = ['#1f5fa8', '#d03030', '#1e7b34', '#8a5a00', '#7030c0', '#0a8a8a', '#c04080', '#555'];
+const CURSOR = '#f0a030';
+
+function widthOf(el) {
+  return Math.max(240, Math.floor(el.clientWidth || el.parentElement?.clientWidth || 400) - 4);
+}
+
+/** Keeps a chart as wide as its box. */
+function follow(box, u) {
+  const ro = new ResizeObserver(() => {
+    const w = widthOf(box);
+    if (Math.abs(w - u.width) > 2) u.setSize({ width: w, height: u.height });
+  });
+  ro.observe(box);
+  return () => ro.disconnect();
+}
+
+/** A vertical line at time `getT()` (x scale) over the plotting area. */
+function cursorLine(getT) {
+  return (u) => {
+    const t = getT();
+    if (t === null || t === undefined) return;
+    const x = u.valToPos(t, 'x', true);
+    const { top, height, left, width } = u.bbox;
+    if (x < left - 1 || x > left + width + 1) return;
+    const ctx = u.ctx;
+    ctx.save();
+    ctx.strokeStyle = CURSOR;
+    ctx.lineWidth = 2 * uPlot.pxRatio;
+    ctx.beginPath();
+    ctx.moveTo(x, top);
+    ctx.lineTo(x, top + height);
+    ctx.stroke();
+    ctx.restore();
+  };
+}
+
+/**
+ * One chart of `series` (arrays over traj.t), one line per joint. Returns {setTime(t), destroy()}.
+ * @param {HTMLElement} box
+ */
+export function timePlot(box, { title, t, series, names, units, onSeek }) {
+  let time = 0;
+  const opts = {
+    title,
+    width: widthOf(box),
+    height: 200,
+    scales: { x: { time: false } },
+    cursor: { drag: { x: false, y: false } },
+    series: [{ label: 't [s]' }, ...names.map((n, i) => ({ label: `${n} [${units[i]}]`, stroke: COLORS[i % COLORS.length], width: 1.5 }))],
+    axes: [{ label: 't [s]' }, { size: 56 }],
+    hooks: { draw: [cursorLine(() => time)] },
+  };
+  const u = new uPlot(opts, [t, ...series], box);
+  u.root.setAttribute('role', 'img');
+  u.root.setAttribute('aria-label', `${title} against time`);
+  u.over.addEventListener('click', (e) => onSeek?.(u.posToVal(e.offsetX, 'x')));
+  const unfollow = follow(box, u);
+  return {
+    u,
+    setTime(x) {
+      time = x;
+      u.redraw(false, false);
+    },
+    destroy() {
+      unfollow();
+      u.destroy();
+    },
+  };
+}
+
+/**
+ * The torque–speed plane of one drive: operating points, ±continuous and ±peak torque lines,
+ * ±max speed lines, and the point at the cursor's time. Returns {setTime(t), destroy()}.
+ */
+export function torqueSpeedPlot(box, { title, op, envelope }) {
+  const { data, order } = torqueSpeedData(op, envelope);
+  let marker = null; // index into op at the cursor's time
+  const env = envelope || {};
+  const line = (label, stroke, dash) => ({ label, stroke, width: 1.5, dash, points: { show: false }, spanGaps: true });
+  const opts = {
+    title,
+    width: widthOf(box),
+    height: 220,
+    scales: { x: { time: false } },
+    cursor: { drag: { x: false, y: false } },
+    series: [
+      { label: 'motor speed [rad/s]' },
+      { label: 'operating points [N·m]', stroke: '#1f5fa8', paths: () => null, points: { show: true, size: 4, fill: '#1f5fa8' } },
+      line('continuous torque', '#1e7b34', [6, 4]),
+      line('−continuous torque', '#1e7b34', [6, 4]),
+      line('peak torque', '#b3261e', []),
+      line('−peak torque', '#b3261e', []),
+    ],
+    axes: [{ label: 'motor speed [rad/s]' }, { label: 'torque [N·m]', size: 56 }],
+    hooks: {
+      draw: [
+        (u) => {
+          const ctx = u.ctx;
+          const { top, height } = u.bbox;
+          ctx.save();
+          ctx.strokeStyle = '#7030c0';
+          ctx.setLineDash([4, 4]);
+          ctx.lineWidth = 1.5 * uPlot.pxRatio;
+          for (const v of [env.max_speed, env.max_speed == null ? null : -env.max_speed]) {
+            if (v === null || v === undefined) continue;
+            const x = u.valToPos(v, 'x', true);
+            ctx.beginPath();
+            ctx.moveTo(x, top);
+            ctx.lineTo(x, top + height);
+            ctx.stroke();
+          }
+          ctx.setLineDash([]);
+          if (marker !== null && marker >= 0) {
+            const x = u.valToPos(op.speed[marker], 'x', true);
+            const y = u.valToPos(op.torque[marker], 'y', true);
+            ctx.fillStyle = CURSOR;
+            ctx.strokeStyle = '#000';
+            ctx.lineWidth = 1;
+            ctx.beginPath();
+            ctx.arc(x, y, 6 * uPlot.pxRatio, 0, 2 * Math.PI);
+            ctx.fill();
+            ctx.stroke();
+          }
+          ctx.restore();
+        },
+      ],
+    },
+  };
+  // The y range includes the envelope's lines.
+  const ys = [...op.torque, env.peak_torque, env.continuous_torque].filter((v) => Number.isFinite(v)).map(Math.abs);
+  const ymax = Math.max(...ys, 1e-9) * 1.15;
+  opts.scales.y = { range: [-ymax, ymax] };
+  const u = new uPlot(opts, data, box);
+  u.root.setAttribute('role', 'img');
+  u.root.setAttribute('aria-label', `${title}: operating points in the torque–speed plane`);
+  u.root.dataset.points = String(order.length);
+  const unfollow = follow(box, u);
+  return {
+    u,
+    setTime(t) {
+      marker = op.t?.length ? nearestIndex(op.t, t) : null;
+      u.redraw(false, false);
+    },
+    destroy() {
+      unfollow();
+      u.destroy();
+    },
+  };
+}
