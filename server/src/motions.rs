@@ -265,6 +265,12 @@ pub struct Skipped {
     pub problem: String,
 }
 
+/// Issues in one line for a report, clipped.
+fn one_line(issues: &[Issue]) -> String {
+    let text = issues.iter().map(|i| i.message.as_str()).collect::<Vec<_>>().join("; ");
+    pipeline::ir::clip(&text, 1000)
+}
+
 /// A motion planned for a package: its table, and what the sizing needs.
 pub struct ForPackage {
     pub table: pipeline::back::modelica::mechatronics::MotionTable,
@@ -300,8 +306,7 @@ pub fn for_package(
                 let s = match p.closed_samples(&mech, TABLE_RATE) {
                     Ok(s) => s,
                     Err(issues) => {
-                        let problem = issues.iter().map(|i| i.message.clone()).collect::<Vec<_>>().join("; ");
-                        skipped.push(Skipped { motion: spec.name.clone(), problem: pipeline::ir::clip(&problem, 1000) });
+                        skipped.push(Skipped { motion: spec.name.clone(), problem: one_line(&issues) });
                         continue;
                     }
                 };
@@ -316,10 +321,7 @@ pub fn for_package(
                 out.push(ForPackage { table, planned: p });
             }
             Ok(_) => skipped.push(Skipped { motion: spec.name.clone(), problem: "too long for a table".into() }),
-            Err(issues) => {
-                let problem = issues.iter().map(|i| i.message.clone()).collect::<Vec<_>>().join("; ");
-                skipped.push(Skipped { motion: spec.name.clone(), problem: pipeline::ir::clip(&problem, 1000) });
-            }
+            Err(issues) => skipped.push(Skipped { motion: spec.name.clone(), problem: one_line(&issues) }),
         }
     }
     (Some(mech), out, skipped)

@@ -174,14 +174,17 @@ async fn create(
     let spec: MotionSpec = body("motion", b)?;
     model_exists(&state, &model_id).await?;
     check_form(&spec)?;
-    let motion = store::motions::create(&state.store, &model_id, &spec).await.map_err(|e| {
-        if e.is_unique_violation() {
-            ApiError::Conflict(format!("model {model_id} already has a motion named \"{}\"", spec.name))
-        } else {
-            e.into()
-        }
-    })?;
+    let motion = store::motions::create(&state.store, &model_id, &spec).await.map_err(|e| name_taken(e, &model_id, &spec))?;
     Ok((StatusCode::CREATED, Json(MotionDto { motion })))
+}
+
+/// A store error, the unique name saying which name is taken.
+fn name_taken(e: store::StoreError, model_id: &str, spec: &MotionSpec) -> ApiError {
+    if e.is_unique_violation() {
+        ApiError::Conflict(format!("model {model_id} already has a motion named \"{}\"", spec.name))
+    } else {
+        e.into()
+    }
 }
 
 async fn find(state: &AppState, model_id: &str, motion_id: &str) -> Result<store::motions::Motion, ApiError> {
@@ -203,13 +206,7 @@ async fn update(
     check_form(&spec)?;
     let motion = store::motions::update(&state.store, &model_id, &motion_id, &spec)
         .await
-        .map_err(|e| {
-            if e.is_unique_violation() {
-                ApiError::Conflict(format!("model {model_id} already has a motion named \"{}\"", spec.name))
-            } else {
-                e.into()
-            }
-        })?
+        .map_err(|e| name_taken(e, &model_id, &spec))?
         .ok_or_else(|| ApiError::NotFound(format!("motion {motion_id}")))?;
     Ok(Json(MotionDto { motion }))
 }

@@ -206,6 +206,18 @@ fn ik_reaches_random_reachable_targets() {
     }
 }
 
+/// The potential energy `V = -Σ m g·c` of every body at coordinates `q`.
+fn potential_energy(a: &Analysed, m: &Mechanism, g: &Vector3<f64>, q: &[f64]) -> f64 {
+    let k = m.forward(q).expect("fk");
+    (0..a.model.bodies.len())
+        .map(|b| {
+            let mp = a.model.mass_properties_cs1(BodyId(b as u32));
+            let c = m.body_pose(&k, BodyId(b as u32)).expect("pose") * nalgebra::Point3::from(mp.r_cm);
+            -mp.mass * g.dot(&c.coords)
+        })
+        .sum()
+}
+
 /// Gravity torques are the gradient of the potential energy `V = -Σ m g·c`; with gravity off,
 /// `qd·tau = dT/dt` for the kinetic energy `T = ½ qd·M qd` (M from the same RNEA, columns at zero
 /// speed), which checks the velocity-product terms.
@@ -220,16 +232,7 @@ fn inverse_dynamics_is_consistent_with_energy() {
     let zero = vec![0.0; n];
     let mut tau = vec![0.0; n];
     m.inverse_dynamics(&q, &zero, &zero, &g, &mut ws, &mut tau).expect("rnea");
-    let potential = |q: &[f64]| -> f64 {
-        let k = m.forward(q).expect("fk");
-        (0..a.model.bodies.len())
-            .map(|b| {
-                let mp = a.model.mass_properties_cs1(BodyId(b as u32));
-                let c = m.body_pose(&k, BodyId(b as u32)).expect("pose") * nalgebra::Point3::from(mp.r_cm);
-                -mp.mass * g.dot(&c.coords)
-            })
-            .sum()
-    };
+    let potential = |q: &[f64]| potential_energy(&a, &m, &g, q);
     for i in 0..n {
         let h = 1e-6;
         let (mut qp, mut qm) = (q.clone(), q.clone());
@@ -287,16 +290,7 @@ fn driven_loop_torques_balance_energy() {
         assert!(!driven.is_empty() && driven.len() < n, "{name}: driven {driven:?}");
         let g = Vector3::new(0.3, -9.81, 0.7);
         let mut ws = m.workspace();
-        let potential = |q: &[f64]| -> f64 {
-            let k = m.forward(q).expect("fk");
-            (0..a.model.bodies.len())
-                .map(|b| {
-                    let mp = a.model.mass_properties_cs1(BodyId(b as u32));
-                    let c = m.body_pose(&k, BodyId(b as u32)).expect("pose") * nalgebra::Point3::from(mp.r_cm);
-                    -mp.mass * g.dot(&c.coords)
-                })
-                .sum()
-        };
+        let potential = |q: &[f64]| potential_energy(&a, &m, &g, q);
         let kinetic = |s: &ClosedState, ws: &mut Workspace| -> f64 {
             // ½ q̇ᵀ M q̇ = ½ q̇ · τ(q, 0, q̇) with gravity off.
             let mut tau = vec![0.0; n];
