@@ -24,6 +24,7 @@ pub mod mechanism;
 pub mod motion;
 pub mod motions;
 pub mod pipeline;
+pub mod results;
 pub mod sizing;
 pub mod store;
 pub mod telemetry;
