@@ -49,8 +49,11 @@ pub struct Poses {
     pub data: Vec<f32>,
 }
 
+/// The variable indices of a frame's `r_0` and `R.T`.
+type FrameVars = ([usize; 3], [[usize; 3]; 3]);
+
 /// The variable indices of a frame's `r_0` and `R.T`, when all twelve are in the file.
-fn frame_vars(t: &Trajectory, frame: &str) -> Option<([usize; 3], [[usize; 3]; 3])> {
+fn frame_vars(t: &Trajectory, frame: &str) -> Option<FrameVars> {
     let r = [1, 2, 3].map(|i| t.find(&format!("{frame}.r_0[{i}]")));
     let m = [1, 2, 3].map(|i| [1, 2, 3].map(|j| t.find(&format!("{frame}.R.T[{i},{j}]"))));
     let r = [r[0]?, r[1]?, r[2]?];
@@ -58,7 +61,7 @@ fn frame_vars(t: &Trajectory, frame: &str) -> Option<([usize; 3], [[usize; 3]; 3
     Some((r, [row(0)?, row(1)?, row(2)?]))
 }
 
-fn frame_at(t: &Trajectory, v: &([usize; 3], [[usize; 3]; 3]), i: usize) -> (Vector3<f64>, Matrix3<f64>) {
+fn frame_at(t: &Trajectory, v: &FrameVars, i: usize) -> (Vector3<f64>, Matrix3<f64>) {
     let r = Vector3::new(t.value(v.0[0], i), t.value(v.0[1], i), t.value(v.0[2], i));
     let m = Matrix3::from_fn(|a, b| t.value(v.1[a][b], i));
     (r, m)
@@ -90,7 +93,7 @@ pub fn extract(t: &Trajectory, mech: &Mechanism) -> Poses {
     };
     // Bodies with an attachment (every body the mechanism places), in order.
     let placed: Vec<usize> = (0..names.len()).filter(|&b| mech.body_attachment(BodyId(b as u32)).is_some()).collect();
-    let frames: Vec<Option<([usize; 3], [[usize; 3]; 3])>> = placed.iter().map(|&b| frame_vars(t, &format!("{}.frame_a", names[b]))).collect();
+    let frames: Vec<Option<FrameVars>> = placed.iter().map(|&b| frame_vars(t, &format!("{}.frame_a", names[b]))).collect();
     let mut stream: Vec<(usize, Option<usize>)> = Vec::new(); // (body, index into frames when from the file)
     for (k, &b) in placed.iter().enumerate() {
         if frames[k].is_some() {
