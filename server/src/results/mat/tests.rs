@@ -15,7 +15,7 @@ fn fixture(name: &str) -> Option<Vec<u8>> {
     }
 }
 
-use crate::results::testmat::{matrix, text_cols, text_rows};
+use crate::results::write::{matrix, text_cols, text_rows};
 
 /// A small binTrans file: time, x (series), k (constant), y = -x (negated alias), `a.der(b)`.
 fn small() -> Vec<u8> {

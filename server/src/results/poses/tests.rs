@@ -4,7 +4,7 @@
 use super::*;
 use crate::pipeline::front::bundle::Bundle;
 use crate::pipeline::{self, Options};
-use crate::results::testmat::trajectory;
+use crate::results::write::trajectory;
 use crate::testgen as gen;
 
 fn arm() -> Mechanism {

@@ -1,4 +1,6 @@
-//! A MAT v4 trajectory writer for tests (binTrans, as Dymola and OpenModelica write it).
+//! Writes MAT v4 trajectory files (binTrans, as Dymola and OpenModelica write them): results
+//! made by us (e.g. a motion's samples) that any tool reading simulation results opens, and
+//! test inputs. The reader is [`super::mat`].
 
 /// One matrix, little-endian: `p` element type (0 f64, 1 f32, 2 i32, 5 u8), `text` flag.
 pub fn matrix(out: &mut Vec<u8>, name: &str, p: i32, text: bool, rows: usize, cols: usize, data: &[f64]) {
