@@ -70,8 +70,11 @@ fn frame_at(t: &Trajectory, v: &FrameVars, i: usize) -> (Vector3<f64>, Matrix3<f
 /// The pose (frame -> world) of a frame given by `r_0` and `R.T`, and its orthonormality residual.
 fn pose_of(r: Vector3<f64>, t: Matrix3<f64>) -> (Isometry3<f64>, f64) {
     let residual = (t * t.transpose() - Matrix3::identity()).amax();
-    let rot = Rotation3::from_matrix(&t.transpose());
-    (Isometry3::from_parts(Translation3::from(r), UnitQuaternion::from_rotation_matrix(&rot)), residual)
+    // Float32 rotations are orthonormal to ~1e-7: the quaternion of the matrix (Shepperd's
+    // method), normalised, is the nearest rotation to that order, without an iteration.
+    let q = UnitQuaternion::from_rotation_matrix(&Rotation3::from_matrix_unchecked(t.transpose()));
+    let q = UnitQuaternion::new_normalize(q.into_inner());
+    (Isometry3::from_parts(Translation3::from(r), q), residual)
 }
 
 /// Poses of every body of `mech` (named as in its package) at every instant of `t`.
