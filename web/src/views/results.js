@@ -231,9 +231,13 @@ export function renderResults(panel, ctx) {
     row('Poses from joint coordinates', bodyList(r.from_joints || [], 'from-joints'));
     row('Bodies missing', r.missing?.length ? h('span', { class: 'warn' }, bodyList(r.missing, 'missing')) : h('span', { class: 'ok' }, 'none'));
     row('Joints found', r.joints_found?.length ? r.joints_found.join(', ') : h('span', { class: 'muted' }, 'none'));
+    // Self-checks: null when the file has nothing to check them on.
     const c = r.checks || {};
-    row('Orthonormality', c.orthonormality === undefined || c.orthonormality === null ? '—' : `largest |R·Rᵀ − I| = ${num(c.orthonormality)}`);
-    row('Rigidity', c.rigidity === undefined || c.rigidity === null ? '—' : `fixed translations stay within ${num(c.rigidity * 1000)} mm`);
+    const check = (label, v, text) => row(label, v === undefined || v === null ? h('span', { class: 'muted' }, 'not checked') : text(v));
+    check('Orthonormality', c.orthonormality, (v) => `largest |R·Rᵀ − I| = ${num(v)}`);
+    check('Rigidity', c.rigidity, (v) => `fixed translations stay within ${num(v * 1000)} mm`);
+    check('Kinematics', c.kinematics, (v) => `frames within ${num(v * 1000)} mm of our kinematics of the file’s joint values`);
+    for (const [k, v] of Object.entries(c)) if (!['orthonormality', 'rigidity', 'kinematics'].includes(k)) row(k, typeof v === 'number' ? num(v) : JSON.stringify(v));
     fill(
       summaryBox,
       h('h3', {}, `Result ${r.name}`),
