@@ -12,6 +12,7 @@ mod jobs;
 mod library;
 mod models;
 mod motions;
+mod results;
 mod openapi;
 mod web;
 
@@ -31,6 +32,7 @@ pub fn router(state: AppState) -> Router {
         .merge(library::router())
         .merge(drives::router())
         .merge(motions::router())
+        .merge(results::router())
         .merge(web::router())
         .layer(axum::middleware::from_fn_with_state(cache::LibraryCache::default(), cache::library_cache))
         .layer(axum::middleware::from_fn_with_state(

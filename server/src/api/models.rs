@@ -222,7 +222,7 @@ struct Upload {
     options: ExportOptions,
 }
 
-fn invalid(field: &str, message: impl Into<String>) -> ApiError {
+pub(super) fn invalid(field: &str, message: impl Into<String>) -> ApiError {
     let message = message.into();
     ApiError::Invalid {
         detail: format!("{field}: {message}"),
@@ -230,7 +230,7 @@ fn invalid(field: &str, message: impl Into<String>) -> ApiError {
     }
 }
 
-fn multipart_error(e: axum::extract::multipart::MultipartError, limit: u64) -> ApiError {
+pub(super) fn multipart_error(e: axum::extract::multipart::MultipartError, limit: u64) -> ApiError {
     if e.status() == StatusCode::PAYLOAD_TOO_LARGE {
         ApiError::PayloadTooLarge { limit }
     } else {
@@ -328,7 +328,7 @@ fn parse_gravity(s: &str) -> Result<[f64; 3], String> {
 
 /// A file name safe for storing and for a `Content-Disposition` header: the last path segment,
 /// ASCII letters, digits and `._-+()` kept, anything else `_`; `bundle.zip` when empty.
-fn safe_file_name(raw: &str) -> String {
+pub(super) fn safe_file_name(raw: &str) -> String {
     let last = raw.rsplit(['/', '\\']).next().unwrap_or_default();
     let cleaned: String = last
         .chars()

@@ -47,9 +47,25 @@ async fn model_exists(state: &AppState, model_id: &str) -> Result<(), ApiError> 
 
 /// The latest converted version of a model, analysed (cached by its bundle, options and report).
 pub(super) async fn kinematic(state: &AppState, model_id: &str) -> Result<(i64, Arc<Kinematic>), ApiError> {
+    kinematic_at(state, model_id, None).await
+}
+
+/// [`kinematic`] of a given version (`None`: the latest converted one); 404 for an unknown
+/// version, 409 while it converts.
+pub(super) async fn kinematic_at(state: &AppState, model_id: &str, version: Option<i64>) -> Result<(i64, Arc<Kinematic>), ApiError> {
     model_exists(state, model_id).await?;
     let versions = store::models::list_versions(&state.store.pool, model_id).await?;
-    let Some(v) = versions.iter().filter(|v| v.report_sha256.is_some()).max_by_key(|v| v.version) else {
+    let v = match version {
+        None => versions.iter().filter(|v| v.report_sha256.is_some()).max_by_key(|v| v.version),
+        Some(n) => {
+            let v = versions.iter().find(|v| v.version == n).ok_or_else(|| ApiError::NotFound(format!("version {n} of model {model_id}")))?;
+            if v.report_sha256.is_none() {
+                return Err(ApiError::Conflict(format!("version {n} of model {model_id} is not converted (yet)")));
+            }
+            Some(v)
+        }
+    };
+    let Some(v) = v else {
         return Err(ApiError::Conflict(format!("model {model_id} has no converted version yet: its joints are unknown")));
     };
     let report_sha = v.report_sha256.clone().unwrap_or_default();

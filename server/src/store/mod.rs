@@ -6,6 +6,7 @@ pub mod drives;
 pub mod library;
 pub mod models;
 pub mod motions;
+pub mod results;
 pub mod tokens;
 
 use std::str::FromStr;

@@ -15,47 +15,7 @@ fn fixture(name: &str) -> Option<Vec<u8>> {
     }
 }
 
-/// One MAT v4 matrix, little-endian.
-fn matrix(out: &mut Vec<u8>, name: &str, p: i32, text: bool, rows: usize, cols: usize, data: &[f64]) {
-    let ty = p * 10 + i32::from(text);
-    for w in [ty, rows as i32, cols as i32, 0, name.len() as i32 + 1] {
-        out.extend_from_slice(&w.to_le_bytes());
-    }
-    out.extend_from_slice(name.as_bytes());
-    out.push(0);
-    for x in data {
-        match p {
-            0 => out.extend_from_slice(&x.to_le_bytes()),
-            1 => out.extend_from_slice(&(*x as f32).to_le_bytes()),
-            2 => out.extend_from_slice(&(*x as i32).to_le_bytes()),
-            _ => out.push(*x as u8),
-        }
-    }
-}
-
-/// Text as a column-per-string (binTrans) u8 matrix.
-fn text_cols(out: &mut Vec<u8>, name: &str, strings: &[&str]) {
-    let len = strings.iter().map(|s| s.len()).max().unwrap_or(0);
-    let mut data = Vec::new();
-    for s in strings {
-        let mut b: Vec<f64> = s.bytes().map(f64::from).collect();
-        b.resize(len, 0.0);
-        data.extend(b);
-    }
-    matrix(out, name, 5, true, len, strings.len(), &data);
-}
-
-/// Text as a row-per-string u8 matrix (how Aclass is stored).
-fn text_rows(out: &mut Vec<u8>, name: &str, strings: &[&str]) {
-    let len = strings.iter().map(|s| s.len()).max().unwrap_or(0);
-    let mut data = vec![0.0; len * strings.len()];
-    for (r, s) in strings.iter().enumerate() {
-        for (c, b) in s.bytes().enumerate() {
-            data[c * strings.len() + r] = f64::from(b);
-        }
-    }
-    matrix(out, name, 5, true, strings.len(), len, &data);
-}
+use crate::results::write::{matrix, text_cols, text_rows};
 
 /// A small binTrans file: time, x (series), k (constant), y = -x (negated alias), `a.der(b)`.
 fn small() -> Vec<u8> {

@@ -1,0 +1,16 @@
+-- Issue 13: simulation result files uploaded to a model version (MAT v4 from Dymola or
+-- OpenModelica). The file is a blob; its summary (variables, time span, where each body's pose
+-- comes from, the self-checks) is kept with it.
+
+CREATE TABLE results (
+    id             TEXT PRIMARY KEY,
+    model_id       TEXT NOT NULL,
+    version        INTEGER NOT NULL,
+    name           TEXT NOT NULL,                -- the uploaded file's (safe) name
+    size           INTEGER NOT NULL,
+    blob_sha256    TEXT NOT NULL,
+    summary_json   TEXT NOT NULL,
+    created_at     TEXT NOT NULL,
+    FOREIGN KEY (model_id, version) REFERENCES versions(model_id, version) ON DELETE CASCADE
+);
+CREATE INDEX results_by_version ON results(model_id, version, created_at);

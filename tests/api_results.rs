@@ -1,0 +1,118 @@
+//! Simulation results through the REST API: a result of the generated 6-axis arm (joint angles
+//! only, as filtered result files are) uploaded to its version; poses from our kinematics, at the
+//! CAD pose where the file's joints are at their start values; variables, series, refusals.
+
+use cad2mo::results::write::trajectory;
+use cad2mo_tests::app::TestApp;
+use serde_json::Value;
+
+#[path = "../server/benches/support/gen.rs"]
+#[allow(dead_code)]
+mod gen;
+
+async fn json_of(r: reqwest::Response, status: u16) -> Value {
+    let s = r.status().as_u16();
+    let v: Value = r.json().await.expect("json body");
+    assert_eq!(s, status, "{v:#}");
+    v
+}
+
+async fn upload(app: &TestApp, path: &str, name: &str, bytes: Vec<u8>) -> reqwest::Response {
+    let part = reqwest::multipart::Part::bytes(bytes).file_name(name.to_string());
+    let form = reqwest::multipart::Form::new().part("file", part);
+    app.client.post(app.url(path)).multipart(form).send().await.expect("upload")
+}
+
+fn f32_at(b: &[u8], k: usize) -> f64 {
+    f64::from(f32::from_le_bytes([b[k], b[k + 1], b[k + 2], b[k + 3]]))
+}
+
+#[tokio::test]
+async fn results_upload_poses_series_and_refusals() {
+    let app = TestApp::spawn().await;
+    let zip = cad2mo::pipeline::back::bundle::write_zip(&[("arm.xml".to_string(), gen::serial_arm_xml(6).into_bytes())]).expect("zip");
+    let (id, _, job) = app.upload_model_ok(zip, &[]).await;
+    assert_eq!(app.wait_for_job(&job).await["status"], "succeeded");
+    let joints = json_of(app.get(&format!("/api/models/{id}/joints")).await, 200).await;
+    let names: Vec<(String, f64)> = joints["joints"]
+        .as_array()
+        .expect("joints")
+        .iter()
+        .map(|j| (j["name"].as_str().expect("name").to_string(), j["q0"].as_f64().expect("q0")))
+        .collect();
+
+    // Joint angles over 2 s: at t = 0 every joint is at its start value (the CAD pose), then
+    // joint 1 turns at 0.5 rad/s.
+    let time: Vec<f64> = (0..=200).map(|i| f64::from(i) * 0.01).collect();
+    let series: Vec<(String, Vec<f64>)> = names
+        .iter()
+        .enumerate()
+        .map(|(k, (n, q0))| (format!("{n}.phi"), time.iter().map(|t| if k == 0 { q0 + 0.5 * t } else { *q0 }).collect()))
+        .collect();
+    let base = format!("/api/models/{id}/versions/1/results");
+    let r = upload(&app, &base, "arm_res.mat", trajectory(&time, &series, false)).await;
+    let res = json_of(r, 201).await;
+    let rid = res["id"].as_str().expect("id").to_string();
+    assert_eq!((res["variables"].as_u64(), res["instants"].as_u64()), (Some(7), Some(201)));
+    assert_eq!((res["start"].as_f64(), res["stop"].as_f64(), res["precision"].as_str()), (Some(0.0), Some(2.0), Some("float64")));
+    assert_eq!(res["from_frames"].as_array().map(Vec::len), Some(0));
+    let bodies: Vec<String> = res["bodies"].as_array().expect("bodies").iter().map(|b| b.as_str().expect("b").to_string()).collect();
+    assert_eq!(res["from_joints"].as_array().map(Vec::len), Some(bodies.len()));
+    assert_eq!(json_of(app.get(&base).await, 200).await.as_array().map(Vec::len), Some(1));
+
+    // Poses: at t = 0 each body's frame is its CAD CS1 frame.
+    let r = app.get(&format!("/api/results/{rid}/poses")).await;
+    assert_eq!(r.status(), 200);
+    assert_eq!(r.headers()["content-type"], "application/octet-stream");
+    let b = r.bytes().await.expect("bytes");
+    assert_eq!(&b[..4], b"C2MP");
+    let nb = u32::from_le_bytes([b[8], b[9], b[10], b[11]]) as usize;
+    let steps = u32::from_le_bytes([b[12], b[13], b[14], b[15]]) as usize;
+    assert_eq!((nb, steps), (bodies.len(), 201));
+    assert_eq!(b.len(), 16 + steps * (4 + 28 * nb));
+    let frames = joints["frames"].as_array().expect("frames");
+    let mut checked = 0;
+    for (k, body) in bodies.iter().enumerate() {
+        let Some(cs1) = frames.iter().find(|f| f["body"] == body.as_str() && f["name"] == "CS1") else { continue };
+        let at = 16 + 4 + 28 * k;
+        for c in 0..3 {
+            let want = cs1["position"][c].as_f64().expect("p");
+            assert!((f32_at(&b, at + 4 * c) - want).abs() < 1e-5, "{body}: {c}");
+        }
+        checked += 1;
+    }
+    assert!(checked >= 5, "{checked} bodies checked");
+    // At t = 2 s the first joint has turned 1 rad: a body beyond it has moved.
+    let last = 16 + (steps - 1) * (4 + 28 * nb) + 4 + 28 * (nb - 1);
+    let first = 16 + 4 + 28 * (nb - 1);
+    assert!((f32_at(&b, last) - f32_at(&b, first)).abs() + (f32_at(&b, last + 4) - f32_at(&b, first + 4)).abs() > 1e-2);
+
+    // Variables and decimated series.
+    let v = json_of(app.get(&format!("/api/results/{rid}/variables?search=PHI&limit=3")).await, 200).await;
+    assert_eq!((v["total"].as_u64(), v["variables"].as_array().map(Vec::len)), (Some(6), Some(3)));
+    let n0 = format!("{}.phi", names[0].0);
+    let s = json_of(app.get(&format!("/api/results/{rid}/series?name={n0}&width=20")).await, 200).await;
+    let ys = s["variables"][0]["y"].as_array().expect("y");
+    assert!(ys.len() <= 40 && ys.len() >= 20, "{}", ys.len());
+    assert!((ys.last().and_then(Value::as_f64).expect("y") - (names[0].1 + 1.0)).abs() < 1e-12);
+    json_of(app.get(&format!("/api/results/{rid}/series?name=nope")).await, 404).await;
+    json_of(app.get(&format!("/api/results/{rid}/series?name={n0}&width=1")).await, 400).await;
+
+    // Refusals name the file; nothing is stored.
+    let p = json_of(upload(&app, &base, "noise.mat", (0..100u8).collect()).await, 422).await;
+    assert!(p["detail"].as_str().expect("detail").contains("noise.mat"), "{p:#}");
+    let other = trajectory(&[0.0, 1.0], &[("robot.axis1.phi".into(), vec![0.0, 1.0])], true);
+    let p = json_of(upload(&app, &base, "robot.mat", other).await, 422).await;
+    let d = p["detail"].as_str().expect("detail");
+    assert!(d.contains("robot.mat") && d.contains("another model") && d.contains("robot"), "{d}");
+    let mut v5 = b"MATLAB 5.0 MAT-file, Platform: GLNXA64, Created on: Tue Nov 24 2026".to_vec();
+    v5.resize(200, b' ');
+    let p = json_of(upload(&app, &base, "v5.mat", v5).await, 422).await;
+    assert!(p["detail"].as_str().expect("detail").contains("MATLAB v5"), "{p:#}");
+    json_of(upload(&app, &format!("/api/models/{id}/versions/9/results"), "x.mat", vec![1]).await, 404).await;
+    assert_eq!(json_of(app.get(&base).await, 200).await.as_array().map(Vec::len), Some(1));
+
+    // Delete.
+    assert_eq!(app.client.delete(app.url(&format!("/api/results/{rid}"))).send().await.expect("del").status(), 204);
+    json_of(app.get(&format!("/api/results/{rid}")).await, 404).await;
+}
