@@ -105,10 +105,13 @@ export function renderResults(panel, ctx) {
 
   /** The service's problem, or words for a refusal that came without one (a proxy's 413). */
   function refusal(e, file) {
-    if (e instanceof ApiError && e.status === 413 && !e.detail) {
+    if (!(e instanceof ApiError)) return e;
+    if (e.status === 413 && !e.detail) {
       return new ApiError(413, { title: 'File too large', detail: `${file.name} (${bytes(file.size)}) is larger than the service accepts.` });
     }
-    return e;
+    // The file's field error repeats the detail: shown once.
+    const errors = e.errors.filter((x) => !(x.field === 'file' && e.detail && x.message.endsWith(e.detail)));
+    return new ApiError(e.status, { title: e.title, detail: e.detail, errors, diagnostics: e.diagnostics });
   }
 
   // ---------------------------------------------------------------- list
