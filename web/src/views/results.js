@@ -138,7 +138,7 @@ export function renderResults(panel, ctx) {
         { dataset: { resultId: r.id }, class: current?.id === r.id ? 'selected' : null, 'aria-current': current?.id === r.id ? 'true' : null },
         h('th', { scope: 'row' }, h('button', { type: 'button', class: 'link', 'aria-label': `Open result ${r.name}`, onclick: () => open(r) }, r.name)),
         h('td', { class: 'num' }, String(r.instants)),
-        h('td', {}, `${num(r.start)} … ${num(r.stop)} s`),
+        h('td', { class: 'nowrap' }, `${num(r.start)} … ${num(r.stop)} s`),
         h('td', { class: 'num' }, bytes(r.size)),
         h('td', {}, h('small', {}, when(r.created_at))),
         h('td', { class: 'actions' }, h('button', { type: 'button', class: 'danger', 'aria-label': `Delete result ${r.name}`, onclick: () => remove(r) }, 'Delete')),
@@ -393,7 +393,14 @@ export function renderResults(panel, ctx) {
               {},
               h(
                 'button',
-                { type: 'button', class: 'var-pick', dataset: { var: v.name }, 'aria-label': `Plot ${v.name} on chart ${n}`, onclick: () => addSignal(c, v) },
+                {
+                  type: 'button',
+                  class: 'var-pick',
+                  dataset: { var: v.name },
+                  disabled: c.signals.some((s) => s.name === v.name),
+                  'aria-label': `Plot ${v.name} on chart ${n}`,
+                  onclick: () => addSignal(c, v),
+                },
                 h('code', {}, v.name),
                 unitLabel(v.unit) ? ` [${v.unit}]` : '',
                 v.constant ? h('small', { class: 'muted' }, ' constant') : null,
@@ -460,6 +467,12 @@ export function renderResults(panel, ctx) {
   function drawChart(c) {
     c.plot?.destroy();
     c.plot = null;
+    // Variables already on the chart cannot be added twice.
+    for (const b of c.matches.querySelectorAll('button.var-pick')) {
+      const on = c.signals.some((s) => s.name === b.dataset.var);
+      b.disabled = on;
+      b.title = on ? 'Plotted on this chart' : '';
+    }
     fill(
       c.chips,
       c.signals.map((s) =>
