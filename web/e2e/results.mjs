@@ -270,7 +270,19 @@ export async function resultsSteps(page, { step, shot, downloads }) {
 
   // ---- Joints only: the service's forward kinematics places the bodies.
   step('results: poses from joint angles');
-  await input.setInputFiles(jointsPath);
+  // This time by drag and drop: a real drop event carrying the file.
+  const dataTransfer = await page.evaluateHandle(
+    ([b64, name]) => {
+      const dt = new DataTransfer();
+      dt.items.add(new File([Uint8Array.from(atob(b64), (c) => c.charCodeAt(0))], name));
+      return dt;
+    },
+    [readFileSync(jointsPath).toString('base64'), 'arm-joints.mat'],
+  );
+  const zone = page.locator('section.results-upload .dropzone');
+  await zone.dispatchEvent('dragover', { dataTransfer });
+  assert.match(await zone.getAttribute('class'), /\bover\b/);
+  await zone.dispatchEvent('drop', { dataTransfer });
   const summary2 = page.getByRole('table', { name: 'Summary of result arm-joints.mat' });
   await summary2.waitFor();
   await page.locator('#results-play').waitFor();
