@@ -308,5 +308,14 @@ export async function resultsSteps(page, { step, shot, downloads }) {
   await page.getByRole('dialog').getByRole('button', { name: 'Delete' }).click();
   await page.locator('table.results tr[data-result-id]').nth(1).waitFor({ state: 'detached' });
   assert.equal(await page.locator('table.results tr[data-result-id]').count(), 1);
+
+  // The tab has its own address: a reload comes back to it.
+  assert.match(page.url(), /\/versions\/1\/results$/);
+  await page.reload();
+  await page.locator('table.results tr[data-result-id]').first().waitFor();
+  assert.equal(await page.getByRole('tab', { name: 'Results' }).getAttribute('aria-selected'), 'true');
+  await page.getByRole('button', { name: 'Open result arm-frames.mat' }).click();
+  await page.locator('#results-play').waitFor();
+  await page.getByRole('tab', { name: 'Drives' }).click();
   return { results: 1, csv: csvPath };
 }
