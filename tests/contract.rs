@@ -123,6 +123,26 @@ async fn the_service_keeps_its_contract() {
         motion_ids.push(json_of(r, 201).await["id"].as_str().expect("id").to_string());
     }
 
+    // Results: one to read, a spare to delete (joint coordinates only).
+    let joints = json_of(app.get(&format!("/api/models/{model}/joints")).await, 200).await;
+    let series: Vec<(String, Vec<f64>)> = joints["joints"]
+        .as_array()
+        .expect("joints")
+        .iter()
+        .map(|j| {
+            let field = if j["kind"] == "prismatic" { "s" } else { "phi" };
+            let q0 = j["q0"].as_f64().expect("q0");
+            (format!("{}.{field}", j["name"].as_str().expect("name")), vec![q0, q0 + 0.01])
+        })
+        .collect();
+    let mat = cad2mo::results::write::trajectory(&[0.0, 1.0], &series, false);
+    let mut result_ids = Vec::new();
+    for _ in 0..2 {
+        let form = reqwest::multipart::Form::new().part("file", reqwest::multipart::Part::bytes(mat.clone()).file_name("r.mat"));
+        let r = app.client.post(app.url(&format!("/api/models/{model}/versions/1/results"))).multipart(form).send().await.expect("post");
+        result_ids.push(json_of(r, 201).await["id"].as_str().expect("id").to_string());
+    }
+
     // Library items: a class with an instance to read and change, and spares to delete.
     let class_body = json!({
         "name": "Contract gear", "domain": "gear", "modelica_class": "Modelica.Mechanics.Rotational.Components.IdealGear",
@@ -153,7 +173,13 @@ async fn the_service_keeps_its_contract() {
         config += &format!("{} = {}\n", toml_str(k), toml_str(v));
     }
     config += &format!("\"path.version\" = {version}\n\"query.from\" = 1\n\"query.to\" = {version}\n\n");
-    let operations: [Operation; 22] = [
+    let operations: [Operation; 28] = [
+        ("getResult", vec![("path.result_id", &result_ids[0])], ""),
+        ("deleteResult", vec![("path.result_id", &result_ids[1])], ""),
+        ("listResultVariables", vec![("path.result_id", &result_ids[0])], ""),
+        ("getResultSeries", vec![("path.result_id", &result_ids[0])], ""),
+        ("getResultPoses", vec![("path.result_id", &result_ids[0])], ""),
+        ("uploadResult", vec![], "the file must be a MAT v4 result whose variables name the version's bodies or joints"),
         ("getMotion", vec![("path.motion_id", &motion_ids[0])], ""),
         ("putMotion", vec![("path.motion_id", &motion_ids[0])], MOTION_RULES),
         ("deleteMotion", vec![("path.motion_id", &motion_ids[1])], ""),
