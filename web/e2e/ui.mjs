@@ -17,6 +17,7 @@ import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { launch, waitForModel, checkModelPixels, checkLabels } from './lib.mjs';
 import { motionSteps } from './motion.mjs';
+import { resultsSteps } from './results.mjs';
 
 const url = process.env.CAD2MO_URL;
 const bundle = process.env.CAD2MO_BUNDLE;
@@ -174,6 +175,10 @@ try {
   const motion = await motionSteps(page, { joint, step, shot, downloads, strict: true });
   await checkLabels(page, 'the motion tab');
 
+  // ---- Results (issue 13): a simulation result animated in 3D, plotted, exported.
+  const results = await resultsSteps(page, { step, shot, downloads });
+  await checkLabels(page, 'the results tab');
+
   // ---- Motor library: an invalid value is refused, a valid edit sticks; export and re-import.
   step('library');
   await page.getByRole('link', { name: 'Motor library' }).click();
@@ -310,6 +315,13 @@ try {
   await shot(page, '13b-narrow-motion');
   const overflowMotion = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
   assert.ok(overflowMotion <= 1, `the motion tab is ${overflowMotion}px wider than a narrow window`);
+  await page.getByRole('tab', { name: 'Results' }).click();
+  await page.locator('table.results').waitFor();
+  await page.getByRole('button', { name: /^Open result / }).first().click();
+  await page.locator('#results-play').waitFor();
+  await shot(page, '13c-narrow-results');
+  const overflowResults = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
+  assert.ok(overflowResults <= 1, `the results tab is ${overflowResults}px wider than a narrow window`);
   await page.getByRole('link', { name: 'Motor library' }).click();
   await page.locator('[data-instance-name="RobotR3 axis controller"]').waitFor();
   await shot(page, '14-narrow-library');
@@ -317,7 +329,7 @@ try {
   assert.ok(overflowLib <= 1, `the library is ${overflowLib}px wider than a narrow window`);
 
   assert.deepEqual(consoleErrors, [], 'the page logged errors');
-  console.log(JSON.stringify({ joint, package: packagePath, library: libraryPath, motion }));
+  console.log(JSON.stringify({ joint, package: packagePath, library: libraryPath, motion, results }));
 } finally {
   await browser.close();
 }

@@ -169,10 +169,17 @@ export class Viewer {
   /** Poses every body and joint arrow for the current joint values. */
   applyPose() {
     const deltas = bodyDeltas(this.report, this.q);
+    // Bodies posed by a result (setBodyPoses) override the joints' pose: their delta is then
+    // pose · cad⁻¹, which also carries the joint arrows on them.
+    for (const [name, m] of this.posed || []) {
+      const b = this.bodies.get(name);
+      if (b) deltas.set(name, m.clone().multiply(b.cad.clone().invert()));
+    }
     this.deltas = deltas;
     for (const [name, b] of this.bodies) {
-      const d = deltas.get(name) || new THREE.Matrix4();
-      b.group.matrix.multiplyMatrices(d, b.cad);
+      const m = this.posed?.get(name);
+      if (m) b.group.matrix.copy(m);
+      else b.group.matrix.multiplyMatrices(deltas.get(name) || new THREE.Matrix4(), b.cad);
       b.group.matrixWorldNeedsUpdate = true;
     }
     for (const [, j] of this.joints) {
@@ -180,6 +187,33 @@ export class Viewer {
       j.group.matrixWorldNeedsUpdate = true;
     }
     this.invalidate();
+  }
+
+  /**
+   * Places bodies at world poses of a simulation result: `names[k]`'s CS1 frame at position
+   * poses[7k..7k+2], rotation quaternion (x, y, z, w) poses[7k+3..7k+6] (body → world). Bodies
+   * not named stay where the joint values put them. `null` hands every body back to the joints.
+   */
+  setBodyPoses(names, poses) {
+    if (!names) {
+      this.posed = null;
+      this.applyPose();
+      return;
+    }
+    this.posed ||= new Map();
+    const p = new THREE.Vector3();
+    const q = new THREE.Quaternion();
+    const one = new THREE.Vector3(1, 1, 1);
+    names.forEach((name, k) => {
+      if (!this.bodies.has(name)) return;
+      const o = 7 * k;
+      p.set(poses[o], poses[o + 1], poses[o + 2]);
+      q.set(poses[o + 3], poses[o + 4], poses[o + 5], poses[o + 6]).normalize();
+      let m = this.posed.get(name);
+      if (!m) this.posed.set(name, (m = new THREE.Matrix4()));
+      m.compose(p, q, one);
+    });
+    this.applyPose();
   }
 
   setCoordinate(key, value) {

@@ -156,3 +156,43 @@ export function torqueSpeedPlot(box, { title, op, envelope }) {
     },
   };
 }
+
+/**
+ * A chart of result signals [{name, unit, t, y}], each with its own instants (joined on one
+ * time axis, gaps spanned), with the time cursor; a click seeks there. Returns {setTime(t), destroy()}.
+ */
+export function signalPlot(box, { title, signals, onSeek }) {
+  let time = null;
+  const data = signals.length ? uPlot.join(signals.map((s) => [s.t, s.y])) : [[], []];
+  const opts = {
+    title,
+    width: widthOf(box),
+    height: 220,
+    scales: { x: { time: false } },
+    cursor: { drag: { x: false, y: false } },
+    series: [
+      { label: 't [s]' },
+      ...(signals.length
+        ? signals.map((s, i) => ({ label: s.unit && s.unit !== '1' ? `${s.name} [${s.unit}]` : s.name, stroke: COLORS[i % COLORS.length], width: 1.5, spanGaps: true, points: { show: false } }))
+        : [{ label: '(no variables)' }]),
+    ],
+    axes: [{ label: 't [s]' }, { size: 64 }],
+    hooks: { draw: [cursorLine(() => time)] },
+  };
+  const u = new uPlot(opts, data, box);
+  u.root.setAttribute('role', 'img');
+  u.root.setAttribute('aria-label', `${title}: ${signals.map((s) => s.name).join(', ') || 'no variables'} against time`);
+  u.over.addEventListener('click', (e) => onSeek?.(u.posToVal(e.offsetX, 'x')));
+  const unfollow = follow(box, u);
+  return {
+    u,
+    setTime(x) {
+      time = x;
+      u.redraw(false, false);
+    },
+    destroy() {
+      unfollow();
+      u.destroy();
+    },
+  };
+}
