@@ -230,6 +230,21 @@ pub(super) fn invalid(field: &str, message: impl Into<String>) -> ApiError {
     }
 }
 
+/// A multipart upload within `--max-upload` (413 beyond it, from the declared length when there
+/// is one); `part` names the file part for the error message. Returns the reader and the limit.
+pub(super) async fn multipart_upload(mut req: Request, state: &AppState, part: &str) -> Result<(Multipart, u64), ApiError> {
+    let limit = state.settings.max_upload;
+    let declared = req.headers().get(header::CONTENT_LENGTH).and_then(|v| v.to_str().ok()).and_then(|v| v.parse::<u64>().ok());
+    if declared.is_some_and(|n| n > limit) {
+        return Err(ApiError::PayloadTooLarge { limit });
+    }
+    DefaultBodyLimit::max(usize::try_from(limit).unwrap_or(usize::MAX)).apply(&mut req);
+    let multipart = Multipart::from_request(req, state).await.map_err(|e| {
+        ApiError::BadRequest(format!("expected a multipart/form-data upload with a `{part}` part: {}", e.body_text()))
+    })?;
+    Ok((multipart, limit))
+}
+
 pub(super) fn multipart_error(e: axum::extract::multipart::MultipartError, limit: u64) -> ApiError {
     if e.status() == StatusCode::PAYLOAD_TOO_LARGE {
         ApiError::PayloadTooLarge { limit }
@@ -241,20 +256,8 @@ pub(super) fn multipart_error(e: axum::extract::multipart::MultipartError, limit
 impl FromRequest<AppState> for Upload {
     type Rejection = ApiError;
 
-    async fn from_request(mut req: Request, state: &AppState) -> Result<Self, ApiError> {
-        let limit = state.settings.max_upload;
-        let declared =
-            req.headers().get(header::CONTENT_LENGTH).and_then(|v| v.to_str().ok()).and_then(|v| v.parse::<u64>().ok());
-        if declared.is_some_and(|n| n > limit) {
-            return Err(ApiError::PayloadTooLarge { limit });
-        }
-        DefaultBodyLimit::max(usize::try_from(limit).unwrap_or(usize::MAX)).apply(&mut req);
-        let mut multipart = Multipart::from_request(req, state).await.map_err(|e| {
-            ApiError::BadRequest(format!(
-                "expected a multipart/form-data upload with a `bundle` part: {}",
-                e.body_text()
-            ))
-        })?;
+    async fn from_request(req: Request, state: &AppState) -> Result<Self, ApiError> {
+        let (mut multipart, limit) = multipart_upload(req, state, "bundle").await?;
         let mut bundle: Option<(Bytes, String)> = None;
         let mut name = None;
         let mut options = ExportOptions::default();

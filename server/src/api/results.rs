@@ -8,7 +8,7 @@
 //! the file; beyond `--max-upload` a 413.
 
 use axum::body::Bytes;
-use axum::extract::{DefaultBodyLimit, FromRequest, Multipart, Request, State};
+use axum::extract::{FromRequest, Request, State};
 use axum::http::{header, StatusCode};
 use axum::response::{IntoResponse, Response};
 use axum::routing::get;
@@ -17,7 +17,7 @@ use serde::{Deserialize, Serialize};
 
 use super::error::{blocking, FieldError};
 use super::extract::{Path, Query};
-use super::models::{invalid, multipart_error, safe_file_name};
+use super::models::{invalid, multipart_error, multipart_upload, safe_file_name};
 use super::ApiError;
 use crate::app::AppState;
 use crate::results::{self, mat::Trajectory};
@@ -59,17 +59,8 @@ struct ResultUpload {
 impl FromRequest<AppState> for ResultUpload {
     type Rejection = ApiError;
 
-    async fn from_request(mut req: Request, state: &AppState) -> Result<Self, ApiError> {
-        let limit = state.settings.max_upload;
-        let declared =
-            req.headers().get(header::CONTENT_LENGTH).and_then(|v| v.to_str().ok()).and_then(|v| v.parse::<u64>().ok());
-        if declared.is_some_and(|n| n > limit) {
-            return Err(ApiError::PayloadTooLarge { limit });
-        }
-        DefaultBodyLimit::max(usize::try_from(limit).unwrap_or(usize::MAX)).apply(&mut req);
-        let mut multipart = Multipart::from_request(req, state).await.map_err(|e| {
-            ApiError::BadRequest(format!("expected a multipart/form-data upload with a `file` part: {}", e.body_text()))
-        })?;
+    async fn from_request(req: Request, state: &AppState) -> Result<Self, ApiError> {
+        let (mut multipart, limit) = multipart_upload(req, state, "file").await?;
         let (mut file, mut name): (Option<(Bytes, String)>, Option<String>) = (None, None);
         while let Some(field) = multipart.next_field().await.map_err(|e| multipart_error(e, limit))? {
             let part = field.name().unwrap_or_default().to_string();

@@ -44,6 +44,29 @@ function cursorLine(getT) {
 }
 
 /**
+ * A uPlot chart over time in `box`, described for screen readers by `label`; a click seeks there.
+ * `keepTime(t)` stores the cursor time its draw hook reads. Returns {u, setTime(t), destroy()}.
+ */
+function timeChart(box, opts, data, label, onSeek, keepTime) {
+  const u = new uPlot(opts, data, box);
+  u.root.setAttribute('role', 'img');
+  u.root.setAttribute('aria-label', label);
+  u.over.addEventListener('click', (e) => onSeek?.(u.posToVal(e.offsetX, 'x')));
+  const unfollow = follow(box, u);
+  return {
+    u,
+    setTime(x) {
+      keepTime(x);
+      u.redraw(false, false);
+    },
+    destroy() {
+      unfollow();
+      u.destroy();
+    },
+  };
+}
+
+/**
  * One chart of `series` (arrays over traj.t), one line per joint. Returns {setTime(t), destroy()}.
  * @param {HTMLElement} box
  */
@@ -59,22 +82,7 @@ export function timePlot(box, { title, t, series, names, units, onSeek }) {
     axes: [{ label: 't [s]' }, { size: 56 }],
     hooks: { draw: [cursorLine(() => time)] },
   };
-  const u = new uPlot(opts, [t, ...series], box);
-  u.root.setAttribute('role', 'img');
-  u.root.setAttribute('aria-label', `${title} against time`);
-  u.over.addEventListener('click', (e) => onSeek?.(u.posToVal(e.offsetX, 'x')));
-  const unfollow = follow(box, u);
-  return {
-    u,
-    setTime(x) {
-      time = x;
-      u.redraw(false, false);
-    },
-    destroy() {
-      unfollow();
-      u.destroy();
-    },
-  };
+  return timeChart(box, opts, [t, ...series], `${title} against time`, onSeek, (x) => (time = x));
 }
 
 /**
@@ -179,20 +187,5 @@ export function signalPlot(box, { title, signals, onSeek }) {
     axes: [{ label: 't [s]' }, { size: 64 }],
     hooks: { draw: [cursorLine(() => time)] },
   };
-  const u = new uPlot(opts, data, box);
-  u.root.setAttribute('role', 'img');
-  u.root.setAttribute('aria-label', `${title}: ${signals.map((s) => s.name).join(', ') || 'no variables'} against time`);
-  u.over.addEventListener('click', (e) => onSeek?.(u.posToVal(e.offsetX, 'x')));
-  const unfollow = follow(box, u);
-  return {
-    u,
-    setTime(x) {
-      time = x;
-      u.redraw(false, false);
-    },
-    destroy() {
-      unfollow();
-      u.destroy();
-    },
-  };
+  return timeChart(box, opts, data, `${title}: ${signals.map((s) => s.name).join(', ') || 'no variables'} against time`, onSeek, (x) => (time = x));
 }
