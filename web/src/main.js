@@ -1,4 +1,4 @@
-// The single-page app: a hash router over four screens. Every screen gets its data from the API.
+// The single-page app: a hash router over five screens. Every screen gets its data from the API.
 
 import './style.css';
 import { h, fill, errorBox } from './ui.js';
@@ -14,6 +14,11 @@ const routes = [
     // three.js and the viewer load only when a model is opened.
     const { renderViewer } = await import('./views/model.js');
     return renderViewer(main, decodeURIComponent(m[1]), Number(m[2]), m[3]);
+  }],
+  [/^#\/results(?:\/([^/]+))?\/?$/, (m) => async (main) => {
+    // three.js loads only when the page is opened.
+    const { renderStandalone } = await import('./views/standalone.js');
+    return renderStandalone(main, m[1] ? decodeURIComponent(m[1]) : undefined);
   }],
   [/^#\/library\/?$/, () => renderLibrary],
   [/^#\/settings\/?$/, () => renderSettings],

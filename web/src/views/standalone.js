@@ -1,0 +1,204 @@
+// The Results page (top navigation): simulation results of any Modelica model, not only the ones
+// converted here (MSL's RobotR3 simulated in Dymola, say). Upload a .mat, list, open and delete
+// the standalone results; an open result shows its summary, its Dymola visual shapes and frames
+// in 3D animated from the shape stream with the timeline player, and the charts of searched
+// variables with the CSV export (the player and charts are the Results tab's, result-kit.js).
+
+import { api, enc } from '../api.js';
+import { h, fill, errorBox, confirmAction, num, bytes, when, plural, say } from '../ui.js';
+import { resultUpload, resultTable, resultPlayer, resultCharts } from './result-kit.js';
+import { parseShapePoses, shapesAt } from './shapes-data.js';
+import { ShapeView } from '../viewer/shapes.js';
+
+const LIST = '/api/results';
+
+/**
+ * @param {HTMLElement} main
+ * @param {string|undefined} initialId  a result to open (#/results/ID)
+ */
+export async function renderStandalone(main, initialId) {
+  let results = [];
+  let current = null;
+  let stream = null;
+  let state = null;
+  let view = null;
+  let disposed = false;
+  let opening = 0;
+
+  const uploadBox = h('section', { class: 'results-upload', 'aria-label': 'Upload a result' });
+  const listBox = h('div', { class: 'results-list-box' });
+  const summaryBox = h('div', { class: 'result-summary-box' });
+  const stage = h('div', { class: 'stage shapes-stage' });
+  const grid = h('input', { type: 'checkbox', id: 'shapes-grid', checked: true });
+  grid.addEventListener('change', () => view?.setGrid(grid.checked));
+  const toolbar = h(
+    'div',
+    { class: 'toolbar', role: 'toolbar', 'aria-label': '3D view' },
+    h('button', { type: 'button', onclick: () => view?.resetView() }, 'Reset view'),
+    h('span', { class: 'check' }, grid, h('label', { for: grid.id }, 'Grid and world frame')),
+  );
+  const playerBox = h('div', { class: 'player-box results-player' });
+  const plotsBox = h('div', { class: 'result-plots' });
+  const view3d = h('section', { class: 'view3d results-stage', 'aria-label': '3D view', hidden: true }, toolbar, stage, playerBox);
+
+  fill(
+    main,
+    h('h1', {}, 'Results'),
+    h('p', { class: 'muted' }, 'Simulation results of any Modelica model: the Dymola visual shapes (MSL Visualizers, the bodies’ shapes) and frames drawn in 3D, any variable plotted.'),
+    h('div', { class: 'model-layout' }, view3d, h('section', { class: 'side' }, uploadBox, listBox, summaryBox)),
+    plotsBox,
+  );
+
+  const player = resultPlayer(playerBox, {
+    onTime(t) {
+      if (view && stream) {
+        state = shapesAt(stream, t, state);
+        view.setState(state);
+      }
+      plots.update();
+    },
+  });
+  const plots = resultCharts(plotsBox, { result: () => current, time: () => player.time, seek: (t) => player.seek(t), say });
+
+  resultUpload(uploadBox, {
+    url: LIST,
+    hint: 'Drop a .mat file here, or press to choose one: a Dymola or OpenModelica result of any model.',
+    say,
+    done(created) {
+      results = [...results.filter((r) => r.id !== created.id), created];
+      renderList();
+      open(created);
+      return `${created.name}: ${plural(created.variables, 'variable')}, ${plural(created.instants, 'instant')}, ${plural(created.shapes || 0, 'shape')}, ${plural(created.frames || 0, 'frame')}.`;
+    },
+  });
+
+  function renderList() {
+    if (!results.length) {
+      fill(listBox, h('p', { class: 'muted' }, 'No results yet.'));
+      return;
+    }
+    fill(listBox, resultTable(results, { current, open, remove }));
+  }
+
+  async function remove(r) {
+    if (!(await confirmAction(`Delete the result ${r.name}?`))) return;
+    try {
+      await api(`/api/results/${enc(r.id)}`, { method: 'DELETE' });
+    } catch (e) {
+      say(e.message, 'error');
+      return;
+    }
+    results = results.filter((x) => x.id !== r.id);
+    if (current?.id === r.id) close();
+    renderList();
+    say(`Deleted the result ${r.name}.`, 'ok');
+  }
+
+  function renderSummary(r, def) {
+    const rows = [];
+    const row = (k, ...v) => rows.push(h('tr', {}, h('th', { scope: 'row' }, k), h('td', {}, ...v)));
+    row('Variables', String(r.variables));
+    row('Instants', String(r.instants));
+    row('Time span', `${num(r.start)} … ${num(r.stop)} s`);
+    row('Precision', r.precision);
+    row('File', `${bytes(r.size)}, uploaded ${when(r.created_at)}`);
+    const kinds = new Map();
+    for (const s of def?.shapes || []) kinds.set(s.kind, (kinds.get(s.kind) || 0) + 1);
+    const kindText = kinds.size ? ` (${[...kinds].map(([k, n]) => `${n} ${k}`).join(', ')})` : '';
+    row('Shapes', `${r.shapes ?? def?.shapes.length ?? 0}${kindText}`);
+    row('Frames', String(r.frames ?? def?.frames.length ?? 0));
+    fill(
+      summaryBox,
+      h('h2', {}, `Result ${r.name}`),
+      h('table', { class: 'details-table result-summary', 'aria-label': `Summary of result ${r.name}` }, h('tbody', {}, rows)),
+    );
+  }
+
+  function dropView() {
+    view?.dispose();
+    if (window.cad2moShapes === view) delete window.cad2moShapes;
+    view = null;
+    delete stage.dataset.rendered;
+    fill(stage);
+  }
+
+  async function open(r) {
+    const mine = ++opening;
+    current = r;
+    stream = null;
+    state = null;
+    dropView();
+    history.replaceState(null, '', `#/results/${enc(r.id)}`);
+    renderList();
+    renderSummary(r, null);
+    view3d.hidden = false;
+    plots.clear();
+    player.clear(h('p', { role: 'status' }, `Loading the shapes of ${r.name}…`));
+    let def;
+    let s;
+    try {
+      const [d, buf] = await Promise.all([
+        api(`/api/results/${enc(r.id)}/shapes`),
+        api(`/api/results/${enc(r.id)}/shape-poses`, { accept: 'application/octet-stream' }),
+      ]);
+      def = d;
+      s = parseShapePoses(buf);
+      if (s.shapes !== def.shapes.length || s.frames !== def.frames.length) {
+        throw new Error(`the shape stream has ${s.shapes} shapes and ${s.frames} frames, the result lists ${def.shapes.length} and ${def.frames.length}`);
+      }
+    } catch (e) {
+      if (mine === opening) player.clear(errorBox(e, 'The shapes could not be loaded'));
+      return;
+    }
+    if (mine !== opening || disposed) return;
+    renderSummary(r, def);
+    stream = s;
+    if (s.shapes + s.frames > 0) {
+      try {
+        view = new ShapeView(stage, def, r.name);
+        window.cad2moShapes = view; // for the end-to-end tests and the console
+      } catch (e) {
+        fill(stage, errorBox(e, 'The 3D view needs WebGL, which this browser does not offer'));
+      }
+    } else {
+      fill(stage, h('p', { class: 'warning stage-note' }, 'This result has no visual shapes or frames to draw.'));
+    }
+    plots.show();
+    player.show(r, h('h3', {}, `Play ${r.name} `, h('small', { class: 'muted' }, `${num(r.stop - r.start)} s, ${plural(s.shapes, 'shape')} and ${plural(s.frames, 'frame')} drawn`)));
+  }
+
+  function close() {
+    opening += 1;
+    current = null;
+    stream = null;
+    player.clear();
+    plots.clear();
+    dropView();
+    fill(summaryBox);
+    view3d.hidden = true;
+    history.replaceState(null, '', '#/results');
+  }
+
+  fill(listBox, h('p', { class: 'muted' }, 'Loading the results…'));
+  let listed = true;
+  try {
+    results = await api(LIST);
+  } catch (e) {
+    fill(listBox, errorBox(e, 'The results could not be listed'));
+    results = [];
+    listed = false;
+  }
+  if (listed) {
+    renderList();
+    const first = initialId && results.find((r) => r.id === initialId);
+    if (first) open(first);
+    else if (initialId) say(`There is no result ${initialId}.`, 'error');
+  }
+
+  return () => {
+    disposed = true;
+    player.stop();
+    plots.dispose();
+    dropView();
+  };
+}
