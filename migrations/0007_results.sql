@@ -1,11 +1,12 @@
--- Issue 13: simulation result files uploaded to a model version (MAT v4 from Dymola or
--- OpenModelica). The file is a blob; its summary (variables, time span, where each body's pose
--- comes from, the self-checks) is kept with it.
+-- Issue 13: simulation result files (MAT v4 from Dymola or OpenModelica), uploaded to a model
+-- version or standalone (model_id and version NULL: a result of any Modelica model). The file
+-- is a blob; its summary (variables, time span, where each body's pose comes from, the
+-- self-checks, visual shapes) is kept with it.
 
 CREATE TABLE results (
     id             TEXT PRIMARY KEY,
-    model_id       TEXT NOT NULL,
-    version        INTEGER NOT NULL,
+    model_id       TEXT,
+    version        INTEGER,
     name           TEXT NOT NULL,                -- the uploaded file's (safe) name
     size           INTEGER NOT NULL,
     blob_sha256    TEXT NOT NULL,
@@ -14,3 +15,4 @@ CREATE TABLE results (
     FOREIGN KEY (model_id, version) REFERENCES versions(model_id, version) ON DELETE CASCADE
 );
 CREATE INDEX results_by_version ON results(model_id, version, created_at);
+

@@ -116,3 +116,44 @@ async fn results_upload_poses_series_and_refusals() {
     assert_eq!(app.client.delete(app.url(&format!("/api/results/{rid}"))).send().await.expect("del").status(), 204);
     json_of(app.get(&format!("/api/results/{rid}")).await, 404).await;
 }
+
+/// A result of any Modelica model: Dymola's visual shapes (here a box moving along x, and MSL's
+/// RobotR3 from the fixtures when present) and its frames.
+#[tokio::test]
+async fn standalone_results_show_dymola_shapes() {
+    let app = TestApp::spawn().await;
+    let time = [0.0, 1.0, 2.0];
+    let c = |v: f64| vec![v; 3];
+    let mut series: Vec<(String, Vec<f64>)> = vec![("b.shape.Form".into(), c((987_000.0 + 103.0) * 1e20))];
+    for (what, v) in [("rxvisobj", [1.0, 0.0, 0.0]), ("ryvisobj", [0.0, 1.0, 0.0]), ("size", [0.4, 0.1, 0.1])] {
+        for (k, x) in v.iter().enumerate() {
+            series.push((format!("b.shape.{what}[{}]", k + 1), c(*x)));
+        }
+    }
+    series.push(("b.shape.rvisobj[1]".into(), vec![0.0, 1.0, 2.0]));
+    series.push(("b.shape.rvisobj[2]".into(), c(0.0)));
+    series.push(("b.shape.rvisobj[3]".into(), c(0.0)));
+    series.push(("b.shape.Material".into(), c(((99.0 * 100.0 + 99.0) * 100.0) * 10.0)));
+    let r = upload(&app, "/api/results", "box.mat", trajectory(&time, &series, true)).await;
+    let res = json_of(r, 201).await;
+    assert_eq!((res["model_id"].clone(), res["shapes"].as_u64(), res["frames"].as_u64()), (Value::Null, Some(1), Some(0)));
+    let rid = res["id"].as_str().expect("id").to_string();
+    let s = json_of(app.get(&format!("/api/results/{rid}/shapes")).await, 200).await;
+    assert_eq!(s["shapes"][0]["kind"], "cylinder");
+    assert_eq!(s["shapes"][0]["color"], serde_json::json!([255, 255, 0]));
+    let b = app.get(&format!("/api/results/{rid}/shape-poses")).await.bytes().await.expect("bytes");
+    assert_eq!(&b[..4], b"C2MS");
+    assert_eq!(f32_at(&b, 20 + 2 * (4 + 48) + 4), 2.0, "origin x at t = 2");
+    json_of(app.get(&format!("/api/results/{rid}/poses")).await, 409).await;
+    let p = json_of(upload(&app, "/api/results", "noise.mat", (0..100u8).collect()).await, 422).await;
+    assert!(p["detail"].as_str().expect("detail").contains("noise.mat"));
+    if let Some(dir) = cad2mo_tests::common::fixtures_dir("standalone_results_show_dymola_shapes") {
+        if let Ok(bytes) = std::fs::read(dir.join("mat/lbl-srg+BuildingsPy/fullRobot.mat")) {
+            let res = json_of(upload(&app, "/api/results", "fullRobot.mat", bytes).await, 201).await;
+            assert_eq!((res["variables"].as_u64(), res["instants"].as_u64()), (Some(5902), Some(97)));
+            assert!(res["shapes"].as_u64().expect("shapes") >= 7, "{res:#}");
+        }
+    }
+    let list = json_of(app.get("/api/results").await, 200).await;
+    assert!(!list.as_array().expect("list").is_empty());
+}

@@ -173,12 +173,15 @@ async fn the_service_keeps_its_contract() {
         config += &format!("{} = {}\n", toml_str(k), toml_str(v));
     }
     config += &format!("\"path.version\" = {version}\n\"query.from\" = 1\n\"query.to\" = {version}\n\n");
-    let operations: [Operation; 28] = [
+    let operations: [Operation; 31] = [
         ("getResult", vec![("path.result_id", &result_ids[0])], ""),
         ("deleteResult", vec![("path.result_id", &result_ids[1])], ""),
         ("listResultVariables", vec![("path.result_id", &result_ids[0])], ""),
         ("getResultSeries", vec![("path.result_id", &result_ids[0])], ""),
         ("getResultPoses", vec![("path.result_id", &result_ids[0])], ""),
+        ("getResultShapes", vec![("path.result_id", &result_ids[0])], ""),
+        ("getResultShapePoses", vec![("path.result_id", &result_ids[0])], ""),
+        ("uploadStandaloneResult", vec![], "the file must be a MAT v4 result"),
         ("uploadResult", vec![], "the file must be a MAT v4 result whose variables name the version's bodies or joints"),
         ("getMotion", vec![("path.motion_id", &motion_ids[0])], ""),
         ("putMotion", vec![("path.motion_id", &motion_ids[0])], MOTION_RULES),

@@ -26,7 +26,10 @@ use crate::store;
 pub fn router() -> Router<AppState> {
     Router::new()
         .route("/api/models/{model_id}/versions/{version}/results", get(list).post(upload))
+        .route("/api/results", get(list_standalone).post(upload_standalone))
         .route("/api/results/{result_id}", get(get_one).delete(delete))
+        .route("/api/results/{result_id}/shapes", get(shapes))
+        .route("/api/results/{result_id}/shape-poses", get(shape_poses))
         .route("/api/results/{result_id}/variables", get(variables))
         .route("/api/results/{result_id}/series", get(series))
         .route("/api/results/{result_id}/poses", get(poses))
@@ -35,8 +38,9 @@ pub fn router() -> Router<AppState> {
 #[derive(Serialize)]
 struct ResultDto {
     id: String,
-    model_id: String,
-    version: i64,
+    /// `None` for a standalone result.
+    model_id: Option<String>,
+    version: Option<i64>,
     name: String,
     size: i64,
     created_at: String,
@@ -112,9 +116,35 @@ async fn upload(
     let (blobs, bytes) = (state.blobs.clone(), up.bytes.clone());
     let sha = blocking(move || blobs.put(&bytes).map_err(|e| ApiError::Internal(e.into()))).await?;
     let summary_json = serde_json::to_string(&summary).map_err(|e| ApiError::Internal(e.into()))?;
-    let row = store::results::insert(&state.store, &model_id, version, &up.name, up.bytes.len() as i64, &sha, &summary_json).await?;
+    let row =
+        store::results::insert(&state.store, Some(&model_id), Some(version), &up.name, up.bytes.len() as i64, &sha, &summary_json).await?;
     let location = format!("/api/results/{}", row.id);
     Ok((StatusCode::CREATED, [(header::LOCATION, location)], Json(dto(row)?)))
+}
+
+/// A result of any Modelica model: read, summarised (its shapes and frames), stored.
+async fn upload_standalone(
+    State(state): State<AppState>,
+    up: ResultUpload,
+) -> Result<(StatusCode, [(header::HeaderName, String); 1], Json<ResultDto>), ApiError> {
+    let name = up.name.clone();
+    let bytes = up.bytes.clone();
+    let summary = blocking(move || {
+        let t = Trajectory::read(&bytes, &name).map_err(|e| unreadable(&name, e.to_string()))?;
+        Ok(results::standalone(&t))
+    })
+    .await?;
+    let (blobs, bytes) = (state.blobs.clone(), up.bytes.clone());
+    let sha = blocking(move || blobs.put(&bytes).map_err(|e| ApiError::Internal(e.into()))).await?;
+    let summary_json = serde_json::to_string(&summary).map_err(|e| ApiError::Internal(e.into()))?;
+    let row = store::results::insert(&state.store, None, None, &up.name, up.bytes.len() as i64, &sha, &summary_json).await?;
+    let location = format!("/api/results/{}", row.id);
+    Ok((StatusCode::CREATED, [(header::LOCATION, location)], Json(dto(row)?)))
+}
+
+async fn list_standalone(State(state): State<AppState>) -> Result<Json<Vec<ResultDto>>, ApiError> {
+    let rows = store::results::list_standalone(&state.store).await?;
+    Ok(Json(rows.into_iter().map(dto).collect::<Result<_, _>>()?))
 }
 
 async fn list(State(state): State<AppState>, Path((model_id, version)): Path<(String, i64)>) -> Result<Json<Vec<ResultDto>>, ApiError> {
@@ -246,7 +276,32 @@ fn url_pairs(q: &str) -> Vec<(String, String)> {
 
 async fn poses(State(state): State<AppState>, Path(id): Path<String>) -> Result<Response, ApiError> {
     let row = find(&state, &id).await?;
-    let (_, k) = super::motions::kinematic_at(&state, &row.model_id, Some(row.version)).await?;
+    let (Some(model_id), Some(version)) = (row.model_id.clone(), row.version) else {
+        return Err(ApiError::Conflict(format!("result {id} belongs to no model: its bodies are unknown (see /shapes and /shape-poses)")));
+    };
+    let (_, k) = super::motions::kinematic_at(&state, &model_id, Some(version)).await?;
     let bytes = with_file(&state, row, move |t| Ok(results::poses::stream(&results::poses::extract(t, &k.mech)))).await?;
+    Ok(([(header::CONTENT_TYPE, "application/octet-stream")], bytes).into_response())
+}
+
+#[derive(Serialize)]
+struct ShapesDto {
+    shapes: Vec<results::shapes::Shape>,
+    frames: Vec<String>,
+}
+
+async fn shapes(State(state): State<AppState>, Path(id): Path<String>) -> Result<Json<ShapesDto>, ApiError> {
+    let row = find(&state, &id).await?;
+    let out = with_file(&state, row, |t| {
+        let s = results::shapes::Scene::find(t);
+        Ok(ShapesDto { shapes: s.shapes, frames: s.frames })
+    })
+    .await?;
+    Ok(Json(out))
+}
+
+async fn shape_poses(State(state): State<AppState>, Path(id): Path<String>) -> Result<Response, ApiError> {
+    let row = find(&state, &id).await?;
+    let bytes = with_file(&state, row, |t| Ok(results::shapes::Scene::find(t).stream(t))).await?;
     Ok(([(header::CONTENT_TYPE, "application/octet-stream")], bytes).into_response())
 }

@@ -3,6 +3,7 @@
 
 pub mod mat;
 pub mod poses;
+pub mod shapes;
 pub mod write;
 
 use serde::Serialize;
@@ -25,6 +26,11 @@ pub struct Summary {
     pub missing: Vec<String>,
     pub joints_found: Vec<String>,
     pub checks: Checks,
+    /// Dymola visual shapes and frames with `r_0`/`R.T` in the file ([`shapes`]).
+    #[serde(default)]
+    pub shapes: usize,
+    #[serde(default)]
+    pub frames: usize,
 }
 
 /// The self-checks of [`poses::PoseChecks`], stored.
@@ -68,8 +74,30 @@ pub fn summarise(t: &Trajectory, mech: &Mechanism, file: &str) -> Result<(Summar
             rigidity: p.summary.checks.rigidity,
             kinematics: p.summary.checks.kinematics,
         },
+        ..standalone(t)
     };
     Ok((s, p))
+}
+
+/// The summary of a result of any model (no bodies of ours): its size, span and shapes.
+pub fn standalone(t: &Trajectory) -> Summary {
+    let scene = shapes::Scene::find(t);
+    let time = t.time();
+    Summary {
+        variables: t.variables.len(),
+        instants: t.len(),
+        start: time.first().copied().unwrap_or(0.0),
+        stop: time.last().copied().unwrap_or(0.0),
+        precision: if t.precision_bytes == 4 { "float32".into() } else { "float64".into() },
+        bodies: Vec::new(),
+        from_frames: Vec::new(),
+        from_joints: Vec::new(),
+        missing: Vec::new(),
+        joints_found: Vec::new(),
+        checks: Checks::default(),
+        shapes: scene.shapes.len(),
+        frames: scene.frames.len(),
+    }
 }
 
 /// A variable for listings.

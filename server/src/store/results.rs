@@ -6,8 +6,9 @@ use super::{now, Store, StoreError};
 #[derive(Clone, Debug, PartialEq)]
 pub struct ResultRow {
     pub id: String,
-    pub model_id: String,
-    pub version: i64,
+    /// `None` for a standalone result.
+    pub model_id: Option<String>,
+    pub version: Option<i64>,
     pub name: String,
     pub size: i64,
     pub blob_sha256: String,
@@ -15,7 +16,7 @@ pub struct ResultRow {
     pub created_at: String,
 }
 
-type Row = (String, String, i64, String, i64, String, String, String);
+type Row = (String, Option<String>, Option<i64>, String, i64, String, String, String);
 const COLUMNS: &str = "id, model_id, version, name, size, blob_sha256, summary_json, created_at";
 
 fn from_row((id, model_id, version, name, size, blob_sha256, summary_json, created_at): Row) -> ResultRow {
@@ -25,8 +26,8 @@ fn from_row((id, model_id, version, name, size, blob_sha256, summary_json, creat
 /// Stores a result (the blob is already written); returns its row.
 pub async fn insert(
     store: &Store,
-    model_id: &str,
-    version: i64,
+    model_id: Option<&str>,
+    version: Option<i64>,
     name: &str,
     size: i64,
     blob_sha256: &str,
@@ -47,7 +48,7 @@ pub async fn insert(
         .await?;
     Ok(ResultRow {
         id,
-        model_id: model_id.into(),
+        model_id: model_id.map(str::to_string),
         version,
         name: name.into(),
         size,
@@ -65,6 +66,14 @@ pub async fn list(store: &Store, model_id: &str, version: i64) -> Result<Vec<Res
             .bind(version)
             .fetch_all(&store.pool)
             .await?;
+    Ok(rows.into_iter().map(from_row).collect())
+}
+
+/// The standalone results (no model), oldest first.
+pub async fn list_standalone(store: &Store) -> Result<Vec<ResultRow>, StoreError> {
+    let rows: Vec<Row> = sqlx::query_as(&format!("SELECT {COLUMNS} FROM results WHERE model_id IS NULL ORDER BY created_at, rowid"))
+        .fetch_all(&store.pool)
+        .await?;
     Ok(rows.into_iter().map(from_row).collect())
 }
 
