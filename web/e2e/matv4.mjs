@@ -77,3 +77,54 @@ export function writeMat({ time, series, constants = [], precision = 'f32' }) {
   }
   return out;
 }
+
+/**
+ * Dymola's pack of a visual shape's colour and specular coefficient (its `Material` variable):
+ * ((⌊99r/255⌋·100 + ⌊99g/255⌋)·100 + ⌊99b/255⌋)·10 + ⌊9·specular⌋.
+ */
+export function packMaterial([r, g, b], specular = 0) {
+  const c = (x) => Math.floor((99 * x) / 255);
+  return ((c(r) * 100 + c(g)) * 100 + c(b)) * 10 + Math.floor(9 * specular);
+}
+
+/**
+ * The variables Dymola writes for a visual shape (MultiBody.Visualizers.Advanced.Shape) named
+ * `p`: `p.Form` = (987000 + code)·1e20, `p.rxvisobj[1..3]`, `p.ryvisobj[1..3]`, `p.rvisobj[1..3]`,
+ * `p.size[1..3]`, `p.Material`. Vectors are functions of time (or constant arrays).
+ * @param {string} p
+ * @param {{code: number, color: number[], specular?: number, r: Function|number[], rx: Function|number[],
+ *   ry: Function|number[], size: Function|number[], file?: string}} s
+ * @param {number[]} time
+ * @returns {{name: string, description?: string, values: number[]}[]}  series for writeMat
+ */
+export function shapeSeries(p, s, time) {
+  const at = (v) => (typeof v === 'function' ? time.map(v) : time.map(() => v));
+  const vec = (name, v, description) => {
+    const rows = at(v);
+    return [0, 1, 2].map((i) => ({ name: `${p}.${name}[${i + 1}]`, description, values: rows.map((x) => x[i]) }));
+  };
+  return [
+    { name: `${p}.Form`, description: s.file || 'Value of shapeType as Integer, for Dymola', values: time.map(() => (987000 + s.code) * 1e20) },
+    ...vec('rxvisobj', s.rx, 'x-axis unit vector of shape, resolved in world frame'),
+    ...vec('ryvisobj', s.ry, 'y-axis unit vector of shape, resolved in world frame'),
+    ...vec('rvisobj', s.r, 'position vector from world frame to shape frame, resolved in world frame [m]'),
+    ...vec('size', s.size, 'Length, width and height of shape [m]'),
+    { name: `${p}.Material`, description: 'Material properties', values: time.map(() => packMaterial(s.color, s.specular)) },
+  ];
+}
+
+/**
+ * A frame's `f.r_0[1..3]` and `f.R.T[i, j]` (world → frame) from its position and its
+ * frame → world rotation matrix M (rows), both functions of time: R.T[i, j] = M[j][i].
+ */
+export function frameSeries(f, { r, M }, time) {
+  const pos = time.map(r);
+  const rot = time.map(M);
+  const out = [0, 1, 2].map((i) => ({ name: `${f}.r_0[${i + 1}]`, description: 'Position vector from world frame to the connector frame origin, resolved in world frame [m]', values: pos.map((x) => x[i]) }));
+  for (let i = 0; i < 3; i++) {
+    for (let j = 0; j < 3; j++) {
+      out.push({ name: `${f}.R.T[${i + 1}, ${j + 1}]`, description: 'Transformation matrix from world frame to local frame', values: rot.map((m) => m[j][i]) });
+    }
+  }
+  return out;
+}

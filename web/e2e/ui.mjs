@@ -18,6 +18,7 @@ import { join } from 'node:path';
 import { launch, waitForModel, checkModelPixels, checkLabels } from './lib.mjs';
 import { motionSteps } from './motion.mjs';
 import { resultsSteps } from './results.mjs';
+import { standaloneSteps } from './standalone.mjs';
 
 const url = process.env.CAD2MO_URL;
 const bundle = process.env.CAD2MO_BUNDLE;
@@ -179,6 +180,9 @@ try {
   const results = await resultsSteps(page, { step, shot, downloads });
   await checkLabels(page, 'the results tab');
 
+  // ---- The Results page: a result of any Modelica model, its Dymola visual shapes in 3D.
+  const standalone = await standaloneSteps(page, { step, shot, downloads, checkLabels });
+
   // ---- Motor library: an invalid value is refused, a valid edit sticks; export and re-import.
   step('library');
   await page.getByRole('link', { name: 'Motor library' }).click();
@@ -329,7 +333,7 @@ try {
   assert.ok(overflowLib <= 1, `the library is ${overflowLib}px wider than a narrow window`);
 
   assert.deepEqual(consoleErrors, [], 'the page logged errors');
-  console.log(JSON.stringify({ joint, package: packagePath, library: libraryPath, motion, results }));
+  console.log(JSON.stringify({ joint, package: packagePath, library: libraryPath, motion, results, standalone }));
 } finally {
   await browser.close();
 }
