@@ -61,7 +61,7 @@ export async function standaloneSteps(page, { step, shot, downloads, checkLabels
   const noisePath = join(downloads, 'noise.mat');
   writeFileSync(shapesPath, shapesFile());
   writeFileSync(noisePath, Uint8Array.from({ length: 300 }, (_, i) => (i * 31 + 7) % 256));
-  assert.equal(packMaterial([255, 0, 0], 0.7), 99000006, 'the Material packing');
+  assert.equal(packMaterial([255, 0, 0], 0.7), 9900006, 'the Material packing');
 
   step('standalone results: the page');
   await page.getByRole('link', { name: 'Results', exact: true }).click();
@@ -187,7 +187,7 @@ export async function standaloneSteps(page, { step, shot, downloads, checkLabels
 
   step('standalone results: delete');
   const count = await page.locator('table.results tr[data-result-id]').count();
-  await page.getByRole('button', { name: 'Delete result shapes.mat' }).click();
+  await page.locator('table.results tr[aria-current="true"]').getByRole('button', { name: 'Delete result shapes.mat' }).click();
   await page.getByRole('dialog').getByRole('button', { name: 'Delete' }).click();
   await page.getByRole('table', { name: 'Summary of result shapes.mat' }).waitFor({ state: 'detached' });
   assert.equal(await page.locator('table.results tr[data-result-id]').count(), count - 1);

@@ -153,6 +153,7 @@ export async function renderStandalone(main, initialId) {
     if (mine !== opening || disposed) return;
     renderSummary(r, def);
     stream = s;
+    state = new Float64Array(s.stride);
     if (s.shapes + s.frames > 0) {
       try {
         view = new ShapeView(stage, def, r.name);
