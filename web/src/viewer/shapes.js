@@ -45,8 +45,10 @@ export class ShapeView {
    * @param {HTMLElement} host  element the canvas goes into (sized by CSS)
    * @param {{shapes: object[], frames: string[]}} def  GET /api/results/{id}/shapes
    * @param {string} title  for the canvas's accessible name
+   * @param {{min: number[], max: number[]}|null} bounds  what the whole result occupies (streamBounds)
    */
-  constructor(host, def, title) {
+  constructor(host, def, title, bounds) {
+    this.bounds = bounds;
     this.host = host;
     this.def = def;
     this.renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
@@ -136,6 +138,7 @@ export class ShapeView {
     this.framed = true;
     this.scene.updateMatrixWorld(true);
     const box = new THREE.Box3();
+    if (this.bounds) box.set(new THREE.Vector3(...this.bounds.min), new THREE.Vector3(...this.bounds.max));
     for (const s of this.shapes) box.expandByObject(s.mesh);
     for (const f of this.frames) box.expandByPoint(f.axes.position);
     if (box.isEmpty() || !Number.isFinite(box.min.x)) box.set(new THREE.Vector3(-0.5, -0.5, -0.5), new THREE.Vector3(0.5, 0.5, 0.5));
@@ -165,7 +168,7 @@ export class ShapeView {
   resetView() {
     const box = this.box || new THREE.Box3(new THREE.Vector3(-0.5, -0.5, -0.5), new THREE.Vector3(0.5, 0.5, 0.5));
     const centre = box.getCenter(new THREE.Vector3());
-    const d = (this.size || 1) * 1.4;
+    const d = (this.size || 1) * 1.2;
     this.controls.target.copy(centre);
     this.camera.position.copy(centre).add(new THREE.Vector3(0.9, 0.6, 1.3).normalize().multiplyScalar(d));
     this.camera.updateProjectionMatrix();

@@ -117,3 +117,45 @@ export function shortName(name) {
   const parts = String(name).split('.');
   return parts.length > 1 ? parts.slice(-2).join('.') : name;
 }
+
+/**
+ * The world box everything in the stream occupies over the whole result (the shapes' origins and
+ * far ends, grown by their largest size; the frames' origins), from at most `samples` steps:
+ * the 3D view frames it once, so moving shapes stay in sight.
+ * @returns {{min: number[], max: number[]} | null}  null for an empty stream
+ */
+export function streamBounds(stream, samples = 200) {
+  const n = stream.times.length;
+  if (!n || stream.shapes + stream.frames === 0) return null;
+  const min = [Infinity, Infinity, Infinity];
+  const max = [-Infinity, -Infinity, -Infinity];
+  const grow = (p, pad) => {
+    for (let c = 0; c < 3; c++) {
+      if (!Number.isFinite(p[c])) return;
+    }
+    for (let c = 0; c < 3; c++) {
+      min[c] = Math.min(min[c], p[c] - pad);
+      max[c] = Math.max(max[c], p[c] + pad);
+    }
+  };
+  const every = Math.max(1, Math.floor(n / samples));
+  for (let i = 0; ; i = Math.min(i + every, n - 1)) {
+    const o = i * stream.stride;
+    const d = stream.data;
+    for (let k = 0; k < stream.shapes; k++) {
+      const s = o + SHAPE_FLOATS * k;
+      const r = [d[s], d[s + 1], d[s + 2]];
+      const { ex } = shapeAxes([d[s + 3], d[s + 4], d[s + 5]], [d[s + 6], d[s + 7], d[s + 8]]);
+      const l = d[s + 9];
+      const pad = Math.max(Math.abs(d[s + 10]), Math.abs(d[s + 11])) / 2;
+      grow(r, pad);
+      grow([r[0] + ex[0] * l, r[1] + ex[1] * l, r[2] + ex[2] * l], pad);
+    }
+    for (let f = 0; f < stream.frames; f++) {
+      const s = o + SHAPE_FLOATS * stream.shapes + FRAME_FLOATS * f;
+      grow([d[s], d[s + 1], d[s + 2]], 0);
+    }
+    if (i === n - 1) break;
+  }
+  return min[0] === Infinity ? null : { min, max };
+}

@@ -1,6 +1,6 @@
 import test from 'node:test';
 import assert from 'node:assert/strict';
-import { parseShapePoses, shapesAt, shapeAxes, shapeMatrix, shortName } from './shapes-data.js';
+import { parseShapePoses, shapesAt, shapeAxes, shapeMatrix, shortName, streamBounds } from './shapes-data.js';
 
 /** A stream as the service writes it: steps [{t, shapes: [[12]], frames: [[7]]}]. */
 function stream(steps, S, F) {
@@ -80,4 +80,13 @@ test('shape matrix scales the unit primitive per kind', () => {
 test('short names', () => {
   assert.equal(shortName('robot.mechanics.b1.shape'), 'b1.shape');
   assert.equal(shortName('shape'), 'shape');
+});
+
+test('stream bounds cover the whole motion', () => {
+  const steps = [0, 1, 2].map((t) => ({ t, shapes: [box(t)], frames: [[-1, 0, t, 0, 0, 0, 1]] }));
+  const b = streamBounds(parseShapePoses(stream(steps, 1, 1)));
+  // The box runs from x = 0 to 2 + 0.4, padded by half its largest cross size (0.1).
+  assert.deepEqual(b.min.map((x) => Math.round(x * 1e6) / 1e6), [-1, -0.1, -0.1]);
+  assert.deepEqual(b.max.map((x) => Math.round(x * 1e6) / 1e6), [2.5, 0.1, 2]);
+  assert.equal(streamBounds(parseShapePoses(stream([{ t: 0, shapes: [], frames: [] }], 0, 0))), null);
 });

@@ -7,7 +7,7 @@
 import { api, enc } from '../api.js';
 import { h, fill, errorBox, confirmAction, num, bytes, when, plural, say } from '../ui.js';
 import { resultUpload, resultTable, resultPlayer, resultCharts } from './result-kit.js';
-import { parseShapePoses, shapesAt } from './shapes-data.js';
+import { parseShapePoses, shapesAt, streamBounds } from './shapes-data.js';
 import { ShapeView } from '../viewer/shapes.js';
 
 const LIST = '/api/results';
@@ -156,7 +156,7 @@ export async function renderStandalone(main, initialId) {
     state = new Float64Array(s.stride);
     if (s.shapes + s.frames > 0) {
       try {
-        view = new ShapeView(stage, def, r.name);
+        view = new ShapeView(stage, def, r.name, streamBounds(s));
         window.cad2moShapes = view; // for the end-to-end tests and the console
       } catch (e) {
         fill(stage, errorBox(e, 'The 3D view needs WebGL, which this browser does not offer'));
