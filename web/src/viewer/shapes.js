@@ -121,7 +121,6 @@ export class ShapeView {
       const entry = this.shapes[k];
       entry.mesh.matrix.copy(m);
       entry.mesh.matrixWorldNeedsUpdate = true;
-      if (entry.label) entry.label.position.set(v[12 * k], v[12 * k + 1], v[12 * k + 2]);
     });
     const base = 12 * this.shapes.length;
     this.frames.forEach((f, k) => {
@@ -130,6 +129,7 @@ export class ShapeView {
       f.axes.quaternion.set(v[o + 3], v[o + 4], v[o + 5], v[o + 6]);
     });
     if (!this.framed) this.frameAll();
+    this.shapes.forEach((entry, k) => entry.label?.position.set(v[12 * k], v[12 * k + 1], v[12 * k + 2]));
     this.invalidate();
   }
 
