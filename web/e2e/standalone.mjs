@@ -185,7 +185,10 @@ export async function standaloneSteps(page, { step, shot, downloads, checkLabels
     step(`standalone results: no ${fixture}, RobotR3 skipped`);
   }
 
-  step('standalone results: delete');
+  step('standalone results: open, delete');
+  await page.locator('table.results tr[data-result-id]').filter({ hasText: 'shapes.mat' }).last().getByRole('button', { name: 'Open result shapes.mat' }).click();
+  await page.getByRole('table', { name: 'Summary of result shapes.mat' }).waitFor();
+  await page.waitForFunction(() => window.cad2moShapes?.shapes.length === 2);
   const count = await page.locator('table.results tr[data-result-id]').count();
   await page.locator('table.results tr[aria-current="true"]').getByRole('button', { name: 'Delete result shapes.mat' }).click();
   await page.getByRole('dialog').getByRole('button', { name: 'Delete' }).click();

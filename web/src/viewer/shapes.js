@@ -7,7 +7,7 @@
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { BACKGROUND, niceStep } from './viewer.js';
-import { shapeMatrix, shortName } from '../views/shapes-data.js';
+import { shapeMatrix, shortName, fileLabel } from '../views/shapes-data.js';
 
 /** Unit primitives along +x from 0 to 1 (see shapeMatrix). */
 function unitGeometries() {
@@ -148,7 +148,7 @@ export class ShapeView {
     for (const f of this.frames) f.axes.scale.setScalar(size * 0.06);
     this.shapes.forEach((s) => {
       if (s.kind !== 'file' && s.kind !== 'other') return;
-      s.label = label(s.file ? s.file.split(/[\\/]/).pop() : shortName(s.name), size * 0.03);
+      s.label = label(s.file ? fileLabel(s.file) : shortName(s.name), size * 0.03);
       s.label.center.set(0, 0);
       this.scene.add(s.label);
     });

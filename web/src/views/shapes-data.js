@@ -159,3 +159,9 @@ export function streamBounds(stream, samples = 200) {
   }
   return min[0] === Infinity ? null : { min, max };
 }
+
+/** The file name of a file shape's path (quotes and brackets of its description left out). */
+export function fileLabel(path) {
+  const name = String(path).replace(/["'\])\s]+$/, '').split(/[\\/]/).pop();
+  return name.replace(/^["'[(\s]+/, '') || String(path);
+}

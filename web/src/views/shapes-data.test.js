@@ -1,6 +1,6 @@
 import test from 'node:test';
 import assert from 'node:assert/strict';
-import { parseShapePoses, shapesAt, shapeAxes, shapeMatrix, shortName, streamBounds } from './shapes-data.js';
+import { parseShapePoses, shapesAt, shapeAxes, shapeMatrix, shortName, streamBounds, fileLabel } from './shapes-data.js';
 
 /** A stream as the service writes it: steps [{t, shapes: [[12]], frames: [[7]]}]. */
 function stream(steps, S, F) {
@@ -89,4 +89,10 @@ test('stream bounds cover the whole motion', () => {
   assert.deepEqual(b.min.map((x) => Math.round(x * 1e6) / 1e6), [-1, -0.1, -0.1]);
   assert.deepEqual(b.max.map((x) => Math.round(x * 1e6) / 1e6), [2.5, 0.1, 2]);
   assert.equal(streamBounds(parseShapePoses(stream([{ t: 0, shapes: [], frames: [] }], 0, 0))), null);
+});
+
+test('file shape labels', () => {
+  assert.equal(fileLabel('modelica://Modelica/Resources/Data/Shapes/RobotR3/b0.dxf"]'), 'b0.dxf');
+  assert.equal(fileLabel('C:\\shapes\\a.stl'), 'a.stl');
+  assert.equal(fileLabel('"part.stl"'), 'part.stl');
 });
