@@ -326,6 +326,12 @@ try {
   await shot(page, '13c-narrow-results');
   const overflowResults = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
   assert.ok(overflowResults <= 1, `the results tab is ${overflowResults}px wider than a narrow window`);
+  await page.getByRole('link', { name: 'Results', exact: true }).click();
+  await page.getByRole('heading', { name: 'Results', exact: true, level: 1 }).waitFor();
+  await page.locator('.results-list-box table.results, .results-list-box p:not(:empty)').first().waitFor();
+  await shot(page, '13d-narrow-results-page');
+  const overflowResultsPage = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
+  assert.ok(overflowResultsPage <= 1, `the results page is ${overflowResultsPage}px wider than a narrow window`);
   await page.getByRole('link', { name: 'Motor library' }).click();
   await page.locator('[data-instance-name="RobotR3 axis controller"]').waitFor();
   await shot(page, '14-narrow-library');

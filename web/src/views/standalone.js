@@ -45,7 +45,8 @@ export async function renderStandalone(main, initialId) {
     main,
     h('h1', {}, 'Results'),
     h('p', { class: 'muted' }, 'Simulation results of any Modelica model: the Dymola visual shapes (MSL Visualizers, the bodies’ shapes) and frames drawn in 3D, any variable plotted.'),
-    h('div', { class: 'model-layout' }, view3d, h('section', { class: 'side' }, uploadBox, listBox, summaryBox)),
+    h('div', { class: 'results-top' }, uploadBox, listBox),
+    h('div', { class: 'model-layout' }, view3d, h('section', { class: 'side' }, summaryBox)),
     plotsBox,
   );
 
