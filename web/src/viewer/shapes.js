@@ -6,7 +6,7 @@
 
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
-import { BACKGROUND, niceStep } from './viewer.js';
+import { BACKGROUND, niceStep, litScene } from './viewer.js';
 import { shapeMatrix, shortName, fileLabel } from '../views/shapes-data.js';
 
 /** Unit primitives along +x from 0 to 1 (see shapeMatrix). */
@@ -61,14 +61,7 @@ export class ShapeView {
     canvas.classList.add('viewer-canvas');
     host.append(canvas);
 
-    this.scene = new THREE.Scene();
-    this.scene.add(new THREE.HemisphereLight(0xffffff, 0x667788, 2.2));
-    const sun = new THREE.DirectionalLight(0xffffff, 1.6);
-    sun.position.set(1, 2, 1.5);
-    this.scene.add(sun);
-    const fillLight = new THREE.DirectionalLight(0xffffff, 0.6);
-    fillLight.position.set(-1.5, -0.5, -1);
-    this.scene.add(fillLight);
+    this.scene = litScene();
     this.up = new THREE.Vector3(0, 1, 0);
 
     const geo = unitGeometries();

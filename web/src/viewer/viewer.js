@@ -8,6 +8,19 @@ import { AnaglyphEffect } from 'three/addons/effects/AnaglyphEffect.js';
 import { TransformControls } from 'three/addons/controls/TransformControls.js';
 import { bodyDeltas, frameMatrix } from './kinematics.js';
 
+/** A scene with the viewers' lights: sky and ground, a sun, a fill light from below behind. */
+export function litScene() {
+  const scene = new THREE.Scene();
+  scene.add(new THREE.HemisphereLight(0xffffff, 0x667788, 2.2));
+  const sun = new THREE.DirectionalLight(0xffffff, 1.6);
+  sun.position.set(1, 2, 1.5);
+  scene.add(sun);
+  const fill = new THREE.DirectionalLight(0xffffff, 0.6);
+  fill.position.set(-1.5, -0.5, -1);
+  scene.add(fill);
+  return scene;
+}
+
 export const BACKGROUND = 0xf3f5f8;
 const HIGHLIGHT = new THREE.Color(0xff9900);
 const JOINT_COLORS = { revolute: 0xd03030, prismatic: 0x7030c0 };
@@ -37,14 +50,7 @@ export class Viewer {
     canvas.classList.add('viewer-canvas');
     host.append(canvas);
 
-    this.scene = new THREE.Scene();
-    this.scene.add(new THREE.HemisphereLight(0xffffff, 0x667788, 2.2));
-    const sun = new THREE.DirectionalLight(0xffffff, 1.6);
-    sun.position.set(1, 2, 1.5);
-    this.scene.add(sun);
-    const fill = new THREE.DirectionalLight(0xffffff, 0.6);
-    fill.position.set(-1.5, -0.5, -1);
-    this.scene.add(fill);
+    this.scene = litScene();
 
     this.bodies = new Map(); // name → {group, cad: Matrix4, materials}
     this.joints = new Map(); // name → {group, arrows}

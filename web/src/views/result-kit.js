@@ -454,3 +454,19 @@ export function resultCharts(box, { result, time, seek, say }) {
     },
   };
 }
+
+/**
+ * Deletes result `r` after asking; false when the user declined or the service refused (said).
+ * @returns {Promise<boolean>}
+ */
+export async function deleteResult(r, say, confirmAction) {
+  if (!(await confirmAction(`Delete the result ${r.name}?`))) return false;
+  try {
+    await api(`/api/results/${enc(r.id)}`, { method: 'DELETE' });
+  } catch (e) {
+    say(e.message, 'error');
+    return false;
+  }
+  say(`Deleted the result ${r.name}.`, 'ok');
+  return true;
+}

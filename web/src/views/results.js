@@ -7,7 +7,7 @@
 import { api, enc } from '../api.js';
 import { h, fill, errorBox, confirmAction, num, bytes, when, plural } from '../ui.js';
 import { parsePoses, posesAt } from './results-data.js';
-import { resultUpload, resultTable, resultPlayer, resultCharts } from './result-kit.js';
+import { resultUpload, resultTable, resultPlayer, resultCharts, deleteResult } from './result-kit.js';
 
 /**
  * @param {HTMLElement} panel  the tab panel
@@ -75,17 +75,10 @@ export function renderResults(panel, ctx) {
   }
 
   async function remove(r) {
-    if (!(await confirmAction(`Delete the result ${r.name}?`))) return;
-    try {
-      await api(`/api/results/${enc(r.id)}`, { method: 'DELETE' });
-    } catch (e) {
-      ctx.say(e.message, 'error');
-      return;
-    }
+    if (!(await deleteResult(r, ctx.say, confirmAction))) return;
     results = results.filter((x) => x.id !== r.id);
     if (current?.id === r.id) close();
     renderList();
-    ctx.say(`Deleted the result ${r.name}.`, 'ok');
   }
 
   // ---------------------------------------------------------------- open / summary

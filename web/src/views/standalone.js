@@ -6,7 +6,7 @@
 
 import { api, enc } from '../api.js';
 import { h, fill, errorBox, confirmAction, num, bytes, when, plural, say } from '../ui.js';
-import { resultUpload, resultTable, resultPlayer, resultCharts } from './result-kit.js';
+import { resultUpload, resultTable, resultPlayer, resultCharts, deleteResult } from './result-kit.js';
 import { parseShapePoses, shapesAt, streamBounds } from './shapes-data.js';
 import { ShapeView } from '../viewer/shapes.js';
 
@@ -82,17 +82,10 @@ export async function renderStandalone(main, initialId) {
   }
 
   async function remove(r) {
-    if (!(await confirmAction(`Delete the result ${r.name}?`))) return;
-    try {
-      await api(`/api/results/${enc(r.id)}`, { method: 'DELETE' });
-    } catch (e) {
-      say(e.message, 'error');
-      return;
-    }
+    if (!(await deleteResult(r, say, confirmAction))) return;
     results = results.filter((x) => x.id !== r.id);
     if (current?.id === r.id) close();
     renderList();
-    say(`Deleted the result ${r.name}.`, 'ok');
   }
 
   function renderSummary(r, def) {
