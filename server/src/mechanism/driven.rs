@@ -30,6 +30,14 @@ pub struct ClosedState {
     pub cut: Vec<f64>,
 }
 
+/// See [`Mechanism::linearise`].
+struct Linearised {
+    g: DMatrix<f64>,
+    phi_i: DMatrix<f64>,
+    svd: nalgebra::SVD<f64, nalgebra::Dyn, nalgebra::Dyn>,
+    eps: f64,
+}
+
 impl Mechanism {
     /// Indices of the driven (independent) tree coordinates.
     pub fn driven(&self) -> Vec<usize> {
@@ -64,14 +72,15 @@ impl Mechanism {
         Ok(jac)
     }
 
-    /// `G = ∂x/∂x_i` (columns: driven coordinates) at `x`.
-    fn follower_map(&self, x: &[f64], driven: &[usize], follow: &[usize]) -> Result<DMatrix<f64>, MechanismError> {
+    /// The closure linearised at `x`: `G = ∂x/∂x_i` (columns: driven coordinates), and `Φ_i` and
+    /// the SVD of `Φ_u` for solving the followers' accelerations.
+    fn linearise(&self, x: &[f64], driven: &[usize], follow: &[usize]) -> Result<Linearised, MechanismError> {
         let jac = self.closure_jacobian(x)?;
         let phi_u = jac.select_columns(follow);
         let phi_i = jac.select_columns(driven);
         let svd = phi_u.svd(true, true);
         let eps = svd.singular_values.max() * 1e-10;
-        let sol = svd.solve(&(-phi_i), eps).map_err(|e| MechanismError::Internal(e.to_string()))?;
+        let sol = svd.solve(&(-&phi_i), eps).map_err(|e| MechanismError::Internal(e.to_string()))?;
         let mut g = DMatrix::zeros(x.len(), driven.len());
         for (k, &i) in driven.iter().enumerate() {
             g[(i, k)] = 1.0;
@@ -81,7 +90,7 @@ impl Mechanism {
                 g[(u, k)] = sol[(r, k)];
             }
         }
-        Ok(g)
+        Ok(Linearised { g, phi_i, svd, eps })
     }
 
     /// Completes a state from its driven coordinates: `state.q`, `qd`, `qdd` hold the driven
@@ -98,9 +107,9 @@ impl Mechanism {
         let n = self.coordinates.len();
         let (driven, follow) = self.x_split();
         let x: Vec<f64> = state.q.iter().chain(&state.cut).copied().collect();
-        let g = self.follower_map(&x, &driven, &follow)?;
+        let lin = self.linearise(&x, &driven, &follow)?;
         let qd_i = DVector::from_iterator(driven.len(), driven.iter().map(|&i| state.qd[i]));
-        let xd = &g * &qd_i;
+        let xd = &lin.g * &qd_i;
         // (Φ_x ẋ)_x ẋ: the second difference of Φ along ẋ.
         let h = 1e-4;
         let shifted = |s: f64| -> Result<DVector<f64>, MechanismError> {
@@ -108,14 +117,9 @@ impl Mechanism {
             self.residual_x(&xs)
         };
         let curv = (shifted(h)? - shifted(0.0)? * 2.0 + shifted(-h)?) / (h * h);
-        let jac = self.closure_jacobian(&x)?;
-        let phi_u = jac.select_columns(&follow);
-        let phi_i = jac.select_columns(&driven);
         let qdd_i = DVector::from_iterator(driven.len(), driven.iter().map(|&i| state.qdd[i]));
-        let rhs = -(phi_i * qdd_i) - curv;
-        let svd = phi_u.svd(true, true);
-        let eps = svd.singular_values.max() * 1e-10;
-        let xdd_u = svd.solve(&rhs, eps).map_err(|e| MechanismError::Internal(e.to_string()))?;
+        let rhs = -(&lin.phi_i * qdd_i) - curv;
+        let xdd_u = lin.svd.solve(&rhs, lin.eps).map_err(|e| MechanismError::Internal(e.to_string()))?;
         for (r, &u) in follow.iter().enumerate() {
             if u < n {
                 state.qd[u] = xd[u];
@@ -145,7 +149,7 @@ impl Mechanism {
             return Ok(driven.iter().map(|&i| tau[i]).collect());
         }
         let x: Vec<f64> = state.q.iter().chain(&state.cut).copied().collect();
-        let g = self.follower_map(&x, &driven, &follow)?;
+        let g = self.linearise(&x, &driven, &follow)?.g;
         let mut full = DVector::zeros(x.len());
         for (i, t) in tau.iter().enumerate() {
             full[i] = *t;
@@ -166,7 +170,7 @@ impl Mechanism {
             }
             g
         } else {
-            self.follower_map(&x, &driven, &follow)?
+            self.linearise(&x, &driven, &follow)?.g
         };
         let zero = vec![0.0; n];
         let mut tau = vec![0.0; n];
