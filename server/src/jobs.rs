@@ -345,12 +345,18 @@ async fn convert(ctx: &Ctx, job: &ClaimedJob) -> Result<Stored, ApiError> {
         return Err(ApiError::NotFound(format!("version {} of model {}", job.version, job.model_id)));
     };
     let drives = crate::drives::resolve_for_model(&ctx.store, &job.model_id).await?;
-    let motions = export::MotionsInput {
-        specs: crate::store::motions::list(&ctx.store, &job.model_id).await?.into_iter().map(|m| m.spec).collect(),
-        limits: crate::store::motions::limits(&ctx.store, &job.model_id).await?,
-        version: job.version,
-        drives: crate::motions::drive_parts(&ctx.store, &job.model_id).await?,
-        catalog: crate::sizing::Catalog::from_library(&crate::store::library::export(&ctx.store).await?),
+    let specs: Vec<_> = crate::store::motions::list(&ctx.store, &job.model_id).await?.into_iter().map(|m| m.spec).collect();
+    // Limits, drives and the library matter only for motions (their tables and sizing files).
+    let motions = if specs.is_empty() {
+        export::MotionsInput::default()
+    } else {
+        export::MotionsInput {
+            specs,
+            limits: crate::store::motions::limits(&ctx.store, &job.model_id).await?,
+            version: job.version,
+            drives: crate::motions::drive_parts(&ctx.store, &job.model_id).await?,
+            catalog: crate::sizing::Catalog::from_library(&crate::store::library::export(&ctx.store).await?),
+        }
     };
     let hints = previous_names(ctx, job).await?;
     let blobs = ctx.blobs.clone();

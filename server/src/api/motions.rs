@@ -161,12 +161,6 @@ async fn delete_limits(
     }
 }
 
-#[derive(Serialize)]
-struct MotionDto {
-    #[serde(flatten)]
-    motion: store::motions::Motion,
-}
-
 fn check_form(spec: &MotionSpec) -> Result<(), ApiError> {
     let issues = plan::check_spec(spec);
     if issues.is_empty() {
@@ -176,22 +170,22 @@ fn check_form(spec: &MotionSpec) -> Result<(), ApiError> {
     }
 }
 
-async fn list(State(state): State<AppState>, Path(model_id): Path<String>) -> Result<Json<Vec<MotionDto>>, ApiError> {
+async fn list(State(state): State<AppState>, Path(model_id): Path<String>) -> Result<Json<Vec<store::motions::Motion>>, ApiError> {
     model_exists(&state, &model_id).await?;
     let all = store::motions::list(&state.store, &model_id).await?;
-    Ok(Json(all.into_iter().map(|motion| MotionDto { motion }).collect()))
+    Ok(Json(all))
 }
 
 async fn create(
     State(state): State<AppState>,
     Path(model_id): Path<String>,
     b: Result<Json<serde_json::Value>, JsonRejection>,
-) -> Result<(StatusCode, Json<MotionDto>), ApiError> {
+) -> Result<(StatusCode, Json<store::motions::Motion>), ApiError> {
     let spec: MotionSpec = body("motion", b)?;
     model_exists(&state, &model_id).await?;
     check_form(&spec)?;
     let motion = store::motions::create(&state.store, &model_id, &spec).await.map_err(|e| name_taken(e, &model_id, &spec))?;
-    Ok((StatusCode::CREATED, Json(MotionDto { motion })))
+    Ok((StatusCode::CREATED, Json(motion)))
 }
 
 /// A store error, the unique name saying which name is taken.
@@ -208,15 +202,15 @@ async fn find(state: &AppState, model_id: &str, motion_id: &str) -> Result<store
     store::motions::get(&state.store, model_id, motion_id).await?.ok_or_else(|| ApiError::NotFound(format!("motion {motion_id}")))
 }
 
-async fn get_one(State(state): State<AppState>, Path((model_id, motion_id)): Path<(String, String)>) -> Result<Json<MotionDto>, ApiError> {
-    Ok(Json(MotionDto { motion: find(&state, &model_id, &motion_id).await? }))
+async fn get_one(State(state): State<AppState>, Path((model_id, motion_id)): Path<(String, String)>) -> Result<Json<store::motions::Motion>, ApiError> {
+    Ok(Json(find(&state, &model_id, &motion_id).await?))
 }
 
 async fn update(
     State(state): State<AppState>,
     Path((model_id, motion_id)): Path<(String, String)>,
     b: Result<Json<serde_json::Value>, JsonRejection>,
-) -> Result<Json<MotionDto>, ApiError> {
+) -> Result<Json<store::motions::Motion>, ApiError> {
     let spec: MotionSpec = body("motion", b)?;
     model_exists(&state, &model_id).await?;
     check_form(&spec)?;
@@ -224,7 +218,7 @@ async fn update(
         .await
         .map_err(|e| name_taken(e, &model_id, &spec))?
         .ok_or_else(|| ApiError::NotFound(format!("motion {motion_id}")))?;
-    Ok(Json(MotionDto { motion }))
+    Ok(Json(motion))
 }
 
 async fn delete(State(state): State<AppState>, Path((model_id, motion_id)): Path<(String, String)>) -> Result<StatusCode, ApiError> {

@@ -99,45 +99,40 @@ fn unreadable(name: &str, message: String) -> ApiError {
     ApiError::Invalid { detail: message.clone(), errors: vec![FieldError { field: "file".into(), message: format!("{name}: {message}") }] }
 }
 
-async fn upload(
-    State(state): State<AppState>,
-    Path((model_id, version)): Path<(String, i64)>,
-    up: ResultUpload,
-) -> Result<(StatusCode, [(header::HeaderName, String); 1], Json<ResultDto>), ApiError> {
+type Created = (StatusCode, [(header::HeaderName, String); 1], Json<ResultDto>);
+
+async fn upload(State(state): State<AppState>, Path((model_id, version)): Path<(String, i64)>, up: ResultUpload) -> Result<Created, ApiError> {
     let (version, k) = super::motions::kinematic_at(&state, &model_id, Some(version)).await?;
-    let name = up.name.clone();
-    let bytes = up.bytes.clone();
-    let summary = blocking(move || {
-        let t = Trajectory::read(&bytes, &name).map_err(|e| unreadable(&name, e.to_string()))?;
-        let (summary, _) = results::summarise(&t, &k.mech, &name).map_err(|m| unreadable(&name, m))?;
-        Ok(summary)
+    store_upload(&state, up, Some((&model_id, version)), move |t, name| {
+        results::summarise(t, &k.mech, name).map(|(summary, _)| summary).map_err(|m| unreadable(name, m))
     })
-    .await?;
-    let (blobs, bytes) = (state.blobs.clone(), up.bytes.clone());
-    let sha = blocking(move || blobs.put(&bytes).map_err(|e| ApiError::Internal(e.into()))).await?;
-    let summary_json = serde_json::to_string(&summary).map_err(|e| ApiError::Internal(e.into()))?;
-    let row =
-        store::results::insert(&state.store, Some(&model_id), Some(version), &up.name, up.bytes.len() as i64, &sha, &summary_json).await?;
-    let location = format!("/api/results/{}", row.id);
-    Ok((StatusCode::CREATED, [(header::LOCATION, location)], Json(dto(row)?)))
+    .await
 }
 
 /// A result of any Modelica model: read, summarised (its shapes and frames), stored.
-async fn upload_standalone(
-    State(state): State<AppState>,
+async fn upload_standalone(State(state): State<AppState>, up: ResultUpload) -> Result<Created, ApiError> {
+    store_upload(&state, up, None, |t, _| Ok(results::standalone(t))).await
+}
+
+/// Reads an upload (a 422 naming the file when it is not a result), summarises it with
+/// `summarise`, then stores the file and its row: nothing is stored for a refused file.
+async fn store_upload(
+    state: &AppState,
     up: ResultUpload,
-) -> Result<(StatusCode, [(header::HeaderName, String); 1], Json<ResultDto>), ApiError> {
-    let name = up.name.clone();
-    let bytes = up.bytes.clone();
+    owner: Option<(&str, i64)>,
+    summarise: impl FnOnce(&Trajectory, &str) -> Result<results::Summary, ApiError> + Send + 'static,
+) -> Result<Created, ApiError> {
+    let (name, bytes) = (up.name.clone(), up.bytes.clone());
     let summary = blocking(move || {
         let t = Trajectory::read(&bytes, &name).map_err(|e| unreadable(&name, e.to_string()))?;
-        Ok(results::standalone(&t))
+        summarise(&t, &name)
     })
     .await?;
     let (blobs, bytes) = (state.blobs.clone(), up.bytes.clone());
     let sha = blocking(move || blobs.put(&bytes).map_err(|e| ApiError::Internal(e.into()))).await?;
     let summary_json = serde_json::to_string(&summary).map_err(|e| ApiError::Internal(e.into()))?;
-    let row = store::results::insert(&state.store, None, None, &up.name, up.bytes.len() as i64, &sha, &summary_json).await?;
+    let (model_id, version) = (owner.map(|o| o.0), owner.map(|o| o.1));
+    let row = store::results::insert(&state.store, model_id, version, &up.name, up.bytes.len() as i64, &sha, &summary_json).await?;
     let location = format!("/api/results/{}", row.id);
     Ok((StatusCode::CREATED, [(header::LOCATION, location)], Json(dto(row)?)))
 }

@@ -25,20 +25,12 @@ pub struct Summary {
     pub from_joints: Vec<String>,
     pub missing: Vec<String>,
     pub joints_found: Vec<String>,
-    pub checks: Checks,
+    pub checks: poses::PoseChecks,
     /// Dymola visual shapes and frames with `r_0`/`R.T` in the file ([`shapes`]).
     #[serde(default)]
     pub shapes: usize,
     #[serde(default)]
     pub frames: usize,
-}
-
-/// The self-checks of [`poses::PoseChecks`], stored.
-#[derive(Clone, Debug, Default, PartialEq, Serialize, serde::Deserialize)]
-pub struct Checks {
-    pub orthonormality: Option<f64>,
-    pub rigidity: Option<f64>,
-    pub kinematics: Option<f64>,
 }
 
 /// Reads a result against a version's mechanism. `Err` when the file matches nothing of the
@@ -57,23 +49,13 @@ pub fn summarise(t: &Trajectory, mech: &Mechanism, file: &str) -> Result<(Summar
             some.join(", ")
         ));
     }
-    let time = &p.t;
     let s = Summary {
-        variables: t.variables.len(),
-        instants: t.len(),
-        start: time.first().copied().unwrap_or(0.0),
-        stop: time.last().copied().unwrap_or(0.0),
-        precision: if t.precision_bytes == 4 { "float32".into() } else { "float64".into() },
         bodies: p.summary.bodies.clone(),
         from_frames: p.summary.from_frames.clone(),
         from_joints: p.summary.from_joints.clone(),
         missing: p.summary.missing.clone(),
         joints_found: p.summary.joints_found.clone(),
-        checks: Checks {
-            orthonormality: p.summary.checks.orthonormality,
-            rigidity: p.summary.checks.rigidity,
-            kinematics: p.summary.checks.kinematics,
-        },
+        checks: p.summary.checks.clone(),
         ..standalone(t)
     };
     Ok((s, p))
@@ -94,7 +76,7 @@ pub fn standalone(t: &Trajectory) -> Summary {
         from_joints: Vec::new(),
         missing: Vec::new(),
         joints_found: Vec::new(),
-        checks: Checks::default(),
+        checks: poses::PoseChecks::default(),
         shapes: scene.shapes.len(),
         frames: scene.frames.len(),
     }

@@ -30,7 +30,7 @@ pub struct PoseSummary {
 }
 
 /// Self-checks of the poses (each `None` when nothing could be checked).
-#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+#[derive(Clone, Debug, Default, PartialEq, Serialize, serde::Deserialize)]
 pub struct PoseChecks {
     /// Largest `|R·Rᵀ - I|` of the stored rotations.
     pub orthonormality: Option<f64>,
