@@ -153,6 +153,16 @@ async fn limits_motions_trajectories_and_ik() {
         std::io::Read::read_to_string(&mut z.by_name(&name).expect("entry"), &mut s).expect("utf-8");
         s
     };
+    // The package with its Motions passes the Modelica checks.
+    let dir = tempfile::tempdir().expect("tempdir");
+    z.extract(dir.path()).expect("extract");
+    if let Some(out) = cad2mo_tests::common::msl_check(dir.path()) {
+        let text = out.unwrap_or_else(|e| panic!("msl-check: {e}"));
+        assert!(text.contains(" 0 problems"), "msl-check: {text}");
+    }
+    if let Some(errors) = cad2mo_tests::common::modelica_syntax_errors(dir.path()) {
+        assert!(errors.is_empty(), "{errors:?}");
+    }
     let mech = read(&mut z, "/Mechatronics.mo");
     assert!(mech.contains("Motions.pick motion_pick \"Motion pick\""), "{mech}");
     assert!(mech.contains(&format!("drive_{0}.q_motion = motion_pick.y[1];", names[0])), "{mech}");
