@@ -25,7 +25,10 @@
 //! - Free bodies (no path to a ground) and spherical joint elements are refused with an error
 //!   naming the body or joint.
 //! - Inverse dynamics ([`Mechanism::inverse_dynamics`]) is that of the spanning tree: loop
-//!   closures contribute no constraint forces.
+//!   closures contribute no constraint forces there. Mechanisms with loops driven at their
+//!   independent coordinates are handled by [`Mechanism::close`] and
+//!   [`Mechanism::driven_torques`] (`driven.rs`), which project the tree's torques onto the
+//!   driven joints.
 //! - Inverse kinematics works on tree mechanisms (no loop closures).
 
 mod closure;
