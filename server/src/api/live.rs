@@ -1,6 +1,7 @@
 //! The live view over HTTP (docs/live-protocol.md): the relay's state, a version's live streams,
 //! and the WebSocket that carries a version's frames to a browser.
 
+use axum::extract::ws::rejection::WebSocketUpgradeRejection;
 use axum::extract::ws::{Message as WsMessage, WebSocket, WebSocketUpgrade};
 use axum::extract::State;
 use axum::response::Response;
@@ -60,8 +61,9 @@ struct VersionLive {
     streams: Vec<RunView>,
 }
 
-fn version_of(v: i64) -> Result<u32, ApiError> {
-    u32::try_from(v).ok().filter(|v| *v >= 1).ok_or_else(|| ApiError::BadRequest(format!("invalid path parameter: version {v} is not a version number")))
+/// A version number as frames carry it (u32); anything else has no live view (404).
+fn version_of(model_id: &str, v: i64) -> Result<u32, ApiError> {
+    u32::try_from(v).ok().filter(|v| *v >= 1).ok_or_else(|| ApiError::NotFound(format!("converted version {v} of model {model_id}")))
 }
 
 async fn bodies(state: &AppState, model_id: &str, version: u32) -> Result<std::sync::Arc<crate::relay::VersionBodies>, ApiError> {
@@ -73,7 +75,7 @@ async fn bodies(state: &AppState, model_id: &str, version: u32) -> Result<std::s
 }
 
 async fn version_info(State(state): State<AppState>, Path((model_id, version)): Path<(String, i64)>) -> Result<Json<VersionLive>, ApiError> {
-    let version = version_of(version)?;
+    let version = version_of(&model_id, version)?;
     let b = bodies(&state, &model_id, version).await?;
     Ok(Json(VersionLive {
         streams: state.relay.runs(&model_id, version),
@@ -89,10 +91,16 @@ async fn version_info(State(state): State<AppState>, Path((model_id, version)): 
 async fn watch(
     State(state): State<AppState>,
     Path((model_id, version)): Path<(String, i64)>,
-    ws: WebSocketUpgrade,
+    ws: Result<WebSocketUpgrade, WebSocketUpgradeRejection>,
 ) -> Result<Response, ApiError> {
-    let version = version_of(version)?;
+    let version = version_of(&model_id, version)?;
     let b = bodies(&state, &model_id, version).await?;
+    let ws = ws.map_err(|e| {
+        ApiError::BadRequest(format!(
+            "this is a WebSocket endpoint: open it with the sub-protocol {PROTOCOL} ({})",
+            e.body_text()
+        ))
+    })?;
     let rx = state.relay.subscribe(&model_id, version);
     let hello = serde_json::json!({ "type": "hello", "model": model_id, "version": version, "bodies": b.bodies }).to_string();
     Ok(ws.protocols([PROTOCOL]).on_upgrade(move |socket| relay_to(socket, hello, rx)))
