@@ -13,6 +13,9 @@ import { liveUrl, liveProtocols, newFrame, decodeFrame, copyFrame, parseMessage,
 
 const POLL_MS = 2000;
 
+/** `x` to `digits` decimals (null stays null). */
+const round = (x, digits) => (Number.isFinite(x) ? Math.round(x * 10 ** digits) / 10 ** digits : null);
+
 /**
  * @param {HTMLElement} panel  the tab panel
  * @param {{modelId: string, versionNumber: number, viewer: object, stage: HTMLElement, say: Function}} ctx
@@ -213,10 +216,10 @@ export function renderLive(panel, ctx) {
       stream: runs.run === null ? 'waiting for a stream' : `run ${runs.run}${runs.ended ? ', ended' : ''}`,
       time: held.n ? num(held.time) : '—',
       frames: String(runs.frames),
-      fps: runs.run === null ? '—' : num(Math.round(rate.rate(now) * 10) / 10),
+      fps: runs.run === null ? '—' : num(round(rate.rate(now), 1)),
       lost: s ? String(s.lost ?? '—') : '—',
       stale: s ? String(s.stale ?? '—') : '—',
-      rtf: s && Number.isFinite(s.realtime_factor) ? num(Math.round(s.realtime_factor * 1000) / 1000) : '—',
+      rtf: s && Number.isFinite(s.realtime_factor) ? num(round(s.realtime_factor, 3)) : '—',
     };
     for (const [k, v] of Object.entries(text)) if (cells[k].textContent !== v) cells[k].textContent = v;
     const d = status.dataset;
@@ -289,7 +292,7 @@ export function renderLive(panel, ctx) {
       h(
         'ul',
         { class: 'report-list' },
-        h('li', {}, 'Frames go by UDP to ', h('strong', { class: 'live-udp' }, info.udp || '—'), addr ? ` (liveHost, livePort = ${addr.port}).` : '.'),
+        h('li', {}, 'Frames go by UDP to ', h('strong', { class: 'live-udp' }, info.udp || '—'), addr ? `: livePort = ${addr.port}, liveHost this service’s host.` : '.'),
         info.auth_required
           ? h('li', { class: 'live-auth' }, h('strong', {}, 'A token is needed: '), 'set ', h('code', {}, 'liveToken'), ' to one of your API tokens (Settings). Frames are signed with its hash; the token itself is never sent.')
           : h('li', { class: 'live-auth' }, h('strong', {}, 'No token needed'), ' on this service (it listens on loopback only); ', h('code', {}, 'liveToken'), ' may stay empty.'),
@@ -313,10 +316,9 @@ export function renderLive(panel, ctx) {
         h('td', { class: 'num' }, String(s.lost)),
         h('td', { class: 'num' }, String(s.stale)),
         h('td', { class: 'num' }, num(s.time)),
-        h('td', { class: 'num' }, num(s.rate_hz)),
-        h('td', { class: 'num' }, num(s.realtime_factor)),
-        h('td', { class: 'num' }, num(s.last_seen_s)),
-        h('td', {}, s.ended ? 'ended' : 'live'),
+        h('td', { class: 'num' }, num(round(s.rate_hz, 1))),
+        h('td', { class: 'num' }, num(round(s.realtime_factor, 3))),
+        h('td', {}, s.ended ? 'ended' : `live, seen ${num(round(s.last_seen_s, 1))} s ago`),
       ),
     );
     fill(
@@ -328,7 +330,7 @@ export function renderLive(panel, ctx) {
         h(
           'table',
           { class: 'live-runs-table' },
-          h('thead', {}, h('tr', {}, ['Run', 'Frames', 'Lost', 'Stale', 'Time (s)', 'Rate (Hz)', 'Real time ×', 'Last seen (s ago)', 'State'].map((c) => h('th', { scope: 'col' }, c)))),
+          h('thead', {}, h('tr', {}, ['Run', 'Frames', 'Lost', 'Stale', 'Time (s)', 'Rate (Hz)', 'Real time ×', 'State'].map((c) => h('th', { scope: 'col' }, c)))),
           h('tbody', {}, rows),
         ),
       ),
@@ -374,6 +376,7 @@ export function renderLive(panel, ctx) {
         raf = 0;
         disconnect();
         viewer.setBodyPoses(null);
+        showNumbers(); // hidden, but its numbers say the socket is closed
       }
     },
     dispose() {
