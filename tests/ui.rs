@@ -161,6 +161,10 @@ async fn end_to_end_in_chromium() {
     let downloads = work.path().join("downloads");
     std::fs::create_dir_all(&downloads).expect("downloads");
 
+    // The live view's sender: the C source packages ship, compiled into the test harness.
+    let harness = cad2mo_tests::live::build_harness(cad2mo::pipeline::back::modelica::mechatronics::live::C_SOURCE, work.path())
+        .map(|p| p.display().to_string())
+        .unwrap_or_default();
     let url = app.url("");
     let (bundle_s, shots_s, downloads_s) = (bundle.clone(), shots.clone(), downloads.clone());
     let out = tokio::task::spawn_blocking(move || {
@@ -174,6 +178,7 @@ async fn end_to_end_in_chromium() {
             .env("CAD2MO_BUNDLE_HEAVY", heavy)
             .env("CAD2MO_SCREENSHOTS", shots_s)
             .env("CAD2MO_DOWNLOADS", downloads_s)
+            .env("CAD2MO_LIVE_HARNESS", harness)
             .output()
             .expect("node e2e/ui.mjs")
     })

@@ -30,6 +30,8 @@ pub struct AppState {
     pub kinematics: crate::motions::Cache,
     /// The address actually bound (port 0 resolved): the `Host` the service answers to.
     pub addr: SocketAddr,
+    /// The live view: frames from running simulations, relayed to browsers.
+    pub relay: crate::relay::Relay,
 }
 
 pub struct App {
@@ -45,12 +47,15 @@ impl App {
         crate::store::library::seed_if_empty(&store).await.context("seeding the motor library")?;
         let blobs = Blobs::new(&settings.data_dir).context("opening the file store")?;
         let listener = TcpListener::bind(settings.bind).await.with_context(|| format!("binding {}", settings.bind))?;
-        let jobs = Jobs::start(store.clone(), blobs.clone(), settings.workers)
+        let relay = crate::relay::Relay::start(settings.live_bind, settings.requires_auth(), store.clone(), blobs.clone()).await;
+        let live = relay.addr().map(|a| (settings.live_host(), a.port()));
+        let jobs = Jobs::start(store.clone(), blobs.clone(), settings.workers, live)
             .await
             .context("starting the conversion workers")?;
         let addr = listener.local_addr().unwrap_or(settings.bind);
         let checks = Arc::new(tokio::sync::Semaphore::new(settings.max_checks.max(1)));
-        let state = AppState { settings: Arc::new(settings), store, blobs, jobs, checks, addr, kinematics: Default::default() };
+        let state =
+            AppState { settings: Arc::new(settings), store, blobs, jobs, checks, addr, kinematics: Default::default(), relay };
         Ok(App { listener, state })
     }
 

@@ -437,7 +437,8 @@ fn reexport(settings: crate::config::Settings, model: Option<String>) -> ExitCod
                     None => failed.push(format!("{name} ({id}): no version to re-export")),
                 }
             }
-            let pool = crate::jobs::Jobs::start(store.clone(), blobs, settings.workers).await?;
+            let live = settings.live_bind.map(|a| (settings.live_host(), a.port()));
+            let pool = crate::jobs::Jobs::start(store.clone(), blobs, settings.workers, live).await?;
             pool.notify();
             let total = jobs.len();
             let mut done = 0;

@@ -38,6 +38,24 @@ pub struct ServeArgs {
     /// a reverse proxy; repeat or separate by commas. Others get 421.
     #[arg(long = "allowed-host", env = "CAD2MO_ALLOWED_HOSTS", value_delimiter = ',')]
     pub allowed_hosts: Vec<String>,
+    /// UDP address the live view listens on for running simulations (`off` to turn it off).
+    #[arg(long, env = "CAD2MO_LIVE_BIND", default_value = "127.0.0.1:7878", value_parser = parse_live_bind)]
+    pub live_bind: LiveBind,
+    /// Host name that packages' live views send to (default: the live bind address, or the first
+    /// --allowed-host when that is a wildcard).
+    #[arg(long, env = "CAD2MO_LIVE_HOST")]
+    pub live_host: Option<String>,
+}
+
+/// `--live-bind`: an address, or off.
+#[derive(Clone, Copy, Debug)]
+pub struct LiveBind(pub Option<SocketAddr>);
+
+fn parse_live_bind(s: &str) -> Result<LiveBind, String> {
+    if s.eq_ignore_ascii_case("off") {
+        return Ok(LiveBind(None));
+    }
+    s.parse::<SocketAddr>().map(|a| LiveBind(Some(a))).map_err(|e| format!("{s}: {e} (an address such as 127.0.0.1:7878, or off)"))
 }
 
 /// The service's settings.
@@ -56,6 +74,10 @@ pub struct Settings {
     pub check_wait: std::time::Duration,
     /// Extra `Host` names (`name` or `name:port`), beyond the bound address.
     pub allowed_hosts: Vec<String>,
+    /// Where the live view receives frames (`None`: off).
+    pub live_bind: Option<SocketAddr>,
+    /// The host name packages' live views send to (see [`Settings::live_host`]).
+    pub live_host: Option<String>,
 }
 
 impl Settings {
@@ -77,6 +99,8 @@ impl Settings {
             max_checks: a.max_checks.filter(|n| *n > 0).unwrap_or(workers),
             check_wait: std::time::Duration::try_from_secs_f64(a.check_wait.clamp(0.0, 600.0)).unwrap_or_default(),
             allowed_hosts: a.allowed_hosts.into_iter().map(|h| h.trim().to_string()).filter(|h| !h.is_empty()).collect(),
+            live_bind: a.live_bind.0,
+            live_host: a.live_host.map(|h| h.trim().to_string()).filter(|h| !h.is_empty()),
         }
     }
 
@@ -92,6 +116,24 @@ impl Settings {
             max_checks: 2,
             check_wait: std::time::Duration::from_secs(10),
             allowed_hosts: Vec::new(),
+            live_bind: Some(SocketAddr::from(([127, 0, 0, 1], 0))),
+            live_host: None,
+        }
+    }
+
+    /// The host that packages' live views send to: `--live-host`, else the live bind address,
+    /// else (bound to a wildcard) the first `--allowed-host`'s name, else 127.0.0.1.
+    pub fn live_host(&self) -> String {
+        if let Some(h) = &self.live_host {
+            return h.clone();
+        }
+        match self.live_bind {
+            Some(a) if !a.ip().is_unspecified() => a.ip().to_string(),
+            _ => self
+                .allowed_hosts
+                .first()
+                .map(|h| h.rsplit_once(':').filter(|(_, p)| p.parse::<u16>().is_ok()).map_or(h.as_str(), |(n, _)| n).to_string())
+                .unwrap_or_else(|| "127.0.0.1".to_string()),
         }
     }
 

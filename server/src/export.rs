@@ -158,8 +158,8 @@ pub struct BuildStep {
     pub total: usize,
 }
 
-/// Builds a version's package from its bundle, keeping the Modelica names of `name_hints` (the
-/// previous version's) for unchanged node IDs, with `Mechatronics.mo` driving the joints of
+/// Builds a version's package from its bundle, keeping the Modelica names of the context's
+/// `name_hints` (the previous version's) for unchanged node IDs, with `Mechatronics.mo` driving the joints of
 /// `drives` that the converted model has. The report gains a `drives` section listing the
 /// active and the orphaned assignments (joints the model no longer has). `progress` hears every
 /// step.
@@ -169,12 +169,13 @@ pub fn build_package(
     options: &ExportOptions,
     drives: &[crate::drives::ResolvedDrive],
     motions: &MotionsInput,
-    name_hints: &pipeline::back::modelica::Hints,
+    context: &Context,
     progress: &mut dyn FnMut(BuildStep),
 ) -> Result<Built, ExportError> {
     let bundle = read_bundle(bundle_bytes, bundle_name)?;
     let mut opts = options.pipeline();
-    opts.name_hints = name_hints.clone();
+    opts.name_hints = context.name_hints.clone();
+    opts.live = context.live.clone();
     let mut obs = BuildObserver {
         drives,
         motions,
@@ -205,6 +206,14 @@ pub fn build_package(
     let package_zip = write_zip_observed(&files, &mut |done, total| progress(BuildStep { stage: BuildStage::Package, done, total }))
         .map_err(ExportError::Zip)?;
     Ok(Built { package_zip, report_json, summary: Summary::of(&out.report) })
+}
+
+/// What a version's package is written for beyond its bundle and options: the Modelica names of
+/// the version before it (kept for unchanged node IDs) and the service's live view.
+#[derive(Clone, Debug, Default)]
+pub struct Context {
+    pub name_hints: pipeline::back::modelica::Hints,
+    pub live: Option<pipeline::back::modelica::mechatronics::live::LiveTarget>,
 }
 
 /// The model's motions and joint limits, for the package's `Motions` and sizing files.
@@ -297,8 +306,8 @@ mod tests {
     fn builds_deterministically() {
         let zip = pendulum_zip();
         let opts = ExportOptions::default();
-        let a = build_package(&zip, "p.zip", &opts, &[], &MotionsInput::default(), &Default::default(), &mut |_| {}).unwrap();
-        let b = build_package(&zip, "p.zip", &opts, &[], &MotionsInput::default(), &Default::default(), &mut |_| {}).unwrap();
+        let a = build_package(&zip, "p.zip", &opts, &[], &MotionsInput::default(), &Context::default(), &mut |_| {}).unwrap();
+        let b = build_package(&zip, "p.zip", &opts, &[], &MotionsInput::default(), &Context::default(), &mut |_| {}).unwrap();
         assert_eq!(a.package_zip, b.package_zip);
         assert_eq!(a.summary.package_name, "PENDULUM");
         assert_eq!((a.summary.bodies, a.summary.joints), (2, 2));

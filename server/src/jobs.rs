@@ -74,6 +74,8 @@ struct Ctx {
     store: Store,
     blobs: Blobs,
     board: ProgressBoard,
+    /// Where packages' live views send to (host, UDP port), when the service receives them.
+    live: Option<(String, u16)>,
 }
 
 /// Where a running job is.
@@ -155,15 +157,16 @@ impl ProgressBoard {
 
 impl Jobs {
     /// Re-queues unfinished jobs, then starts the dispatcher with `workers` workers (at least one).
+    /// Packages get a live view sending to `live` (host, UDP port) when it is given.
     /// Must be called inside a tokio runtime.
-    pub async fn start(store: Store, blobs: Blobs, workers: usize) -> Result<Jobs, StoreError> {
+    pub async fn start(store: Store, blobs: Blobs, workers: usize, live: Option<(String, u16)>) -> Result<Jobs, StoreError> {
         let requeued = models::requeue_unfinished(&store.pool).await?;
         if requeued > 0 {
             tracing::warn!(requeued, "jobs interrupted by a stop were re-queued");
         }
         let (wake, rx) = mpsc::channel(1);
         let board = ProgressBoard::default();
-        let ctx = Ctx { store, blobs, board: board.clone() };
+        let ctx = Ctx { store, blobs, board: board.clone(), live };
         let (signal, halted) = watch::channel(false);
         let dispatcher = tokio::spawn(dispatch(ctx, workers.max(1), rx, halted).instrument(tracing::info_span!("jobs")));
         let halt = Arc::new(Halt { signal, dispatcher: Mutex::new(Some(dispatcher)) });
@@ -359,6 +362,16 @@ async fn convert(ctx: &Ctx, job: &ClaimedJob) -> Result<Stored, ApiError> {
         }
     };
     let hints = previous_names(ctx, job).await?;
+    let live = match (&ctx.live, u32::try_from(job.version)) {
+        (Some((host, port)), Ok(version)) => Some(crate::pipeline::back::modelica::mechatronics::live::LiveTarget {
+            model_id: job.model_id.clone(),
+            version,
+            host: host.clone(),
+            port: *port,
+        }),
+        _ => None,
+    };
+    let context = export::Context { name_hints: hints, live };
     let blobs = ctx.blobs.clone();
     let board = ctx.board.clone();
     let job_id = job.id.clone();
@@ -372,7 +385,7 @@ async fn convert(ctx: &Ctx, job: &ClaimedJob) -> Result<Stored, ApiError> {
                     ApiError::Internal(anyhow::anyhow!("bundle blob {} is missing", source.bundle_sha256))
                 })?;
             let mut last = 0.0;
-            let built = export::build_package(&bundle, &source.bundle_name, &options, &drives, &motions, &hints, &mut |step| {
+            let built = export::build_package(&bundle, &source.bundle_name, &options, &drives, &motions, &context, &mut |step| {
                 let p = JobProgress::at(step);
                 // Never backwards, and not every one of 10,000 bodies: a new stage or 1 % more.
                 if p.fraction >= last + 0.01 || (p.done == 0 && p.fraction >= last) {

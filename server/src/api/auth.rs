@@ -19,12 +19,26 @@ fn is_public(method: &Method, path: &str) -> bool {
     path == "/api/health" || path == "/openapi.yaml" || !path.starts_with("/api/") || (read && path.starts_with("/api/library/"))
 }
 
-/// The token of an `Authorization: Bearer <token>` header (scheme case-insensitive).
+/// The token of an `Authorization: Bearer <token>` header (scheme case-insensitive), or, since
+/// browsers cannot set headers on a WebSocket, of a `bearer.<token>` WebSocket sub-protocol.
 fn bearer(headers: &HeaderMap) -> Option<&str> {
-    let value = headers.get(header::AUTHORIZATION)?.to_str().ok()?.trim();
-    let (scheme, token) = value.split_once(' ')?;
-    let token = token.trim();
-    (scheme.eq_ignore_ascii_case("bearer") && !token.is_empty()).then_some(token)
+    if let Some(value) = headers.get(header::AUTHORIZATION) {
+        let value = value.to_str().ok()?.trim();
+        let (scheme, token) = value.split_once(' ')?;
+        let token = token.trim();
+        return (scheme.eq_ignore_ascii_case("bearer") && !token.is_empty()).then_some(token);
+    }
+    headers
+        .get_all(header::SEC_WEBSOCKET_PROTOCOL)
+        .iter()
+        .filter_map(|v| v.to_str().ok())
+        .flat_map(|v| v.split(','))
+        .find_map(|p| p.trim().strip_prefix("bearer.").filter(|t| !t.is_empty()))
+}
+
+/// Whether the request asks to become a WebSocket (which a page of any origin may open).
+fn is_websocket(headers: &HeaderMap) -> bool {
+    headers.get(header::UPGRADE).and_then(|v| v.to_str().ok()).is_some_and(|v| v.eq_ignore_ascii_case("websocket"))
 }
 
 /// What the guard layer needs: the app (settings, tokens) and the names it answers to.
@@ -51,6 +65,11 @@ pub async fn guard(State(Guard { state, hosts }): State<Guard>, req: Request, ne
         hosts.check_origin(req.headers(), &host).map_err(ApiError::CrossOrigin)?;
         guard::check_client(req.headers()).map_err(ApiError::ClientHeaderRequired)?;
     }
+    // A WebSocket is opened by a GET that any page may send, and what it carries is read by
+    // that page: only our own pages may open one.
+    if is_websocket(req.headers()) {
+        hosts.check_origin(req.headers(), &host).map_err(ApiError::CrossOrigin)?;
+    }
     Ok(next.run(req).await)
 }
 
@@ -73,6 +92,11 @@ mod tests {
         for (v, want) in [("Bearer abc", Some("abc")), ("bearer abc", Some("abc")), ("BEARER  abc ", Some("abc")), ("Basic abc", None), ("Bearer", None), ("Bearer ", None)] {
             h.insert(header::AUTHORIZATION, v.parse().unwrap());
             assert_eq!(bearer(&h), want, "{v}");
+        }
+        let mut w = HeaderMap::new();
+        for (v, want) in [("cad2mo.live, bearer.c2m_x", Some("c2m_x")), ("cad2mo.live", None), ("bearer.", None)] {
+            w.insert(header::SEC_WEBSOCKET_PROTOCOL, v.parse().unwrap());
+            assert_eq!(bearer(&w), want, "{v}");
         }
     }
 }

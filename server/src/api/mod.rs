@@ -9,6 +9,7 @@ mod extract;
 mod guard;
 mod health;
 mod jobs;
+mod live;
 mod library;
 mod models;
 mod motions;
@@ -33,6 +34,7 @@ pub fn router(state: AppState) -> Router {
         .merge(drives::router())
         .merge(motions::router())
         .merge(results::router())
+        .merge(live::router())
         .merge(web::router())
         .layer(axum::middleware::from_fn_with_state(cache::LibraryCache::default(), cache::library_cache))
         .layer(axum::middleware::from_fn_with_state(

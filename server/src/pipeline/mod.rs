@@ -52,6 +52,9 @@ pub struct Options {
     pub matching: passes::geometry_match::MatchOptions,
     /// Modelica names an earlier version used, by node ID (see [`name_hints`]).
     pub name_hints: back::modelica::Hints,
+    /// The model in the service that the package is written for: `Mechatronics` gets a live
+    /// view sending to it (`None`: no live view, e.g. from the command line).
+    pub live: Option<back::modelica::mechatronics::live::LiveTarget>,
 }
 
 impl Default for Options {
@@ -64,6 +67,7 @@ impl Default for Options {
             drives: Vec::new(),
             matching: Default::default(),
             name_hints: Default::default(),
+            live: None,
         }
     }
 }
@@ -301,15 +305,28 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
         &observe::ModelView { model: &a.model, validated: &a.validated, layout: &pkg.layout, package_name: &package_name },
         &drives,
     );
+    // A live view frame carries at most MAX_BODIES bodies: larger models are written without one.
+    let bodies: &[String] = pkg.layout.names.as_ref().map(|n| n.bodies.as_slice()).unwrap_or_default();
+    let live = opts
+        .live
+        .as_ref()
+        .filter(|_| (1..=back::modelica::mechatronics::live::MAX_BODIES).contains(&bodies.len()))
+        .map(|t| (t, bodies));
     files.extend(back::modelica::mechatronics::mechatronics(
         &package_name,
         &drives,
         &extras.motions,
+        live,
         &back::modelica::provenance(&a.model, VERSION),
     )?);
     if !extras.motions.is_empty() {
         if let Some((_, order)) = files.iter_mut().find(|(p, _)| *p == format!("{package_name}/package.order")) {
             order.extend_from_slice(b"Motions\n");
+        }
+    }
+    if live.is_some() {
+        if let Some((_, order)) = files.iter_mut().find(|(p, _)| *p == format!("{package_name}/Components/package.order")) {
+            order.extend_from_slice(b"Visualization\n");
         }
     }
     files.extend(extras.files);

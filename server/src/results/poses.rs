@@ -68,7 +68,7 @@ fn frame_at(t: &Trajectory, v: &FrameVars, i: usize) -> (Vector3<f64>, Matrix3<f
 }
 
 /// The pose (frame -> world) of a frame given by `r_0` and `R.T`, and its orthonormality residual.
-fn pose_of(r: Vector3<f64>, t: Matrix3<f64>) -> (Isometry3<f64>, f64) {
+pub(crate) fn pose_of(r: Vector3<f64>, t: Matrix3<f64>) -> (Isometry3<f64>, f64) {
     let residual = (t * t.transpose() - Matrix3::identity()).amax();
     // Float32 rotations are orthonormal to ~1e-7: the quaternion of the matrix (Shepperd's
     // method), normalised, is the nearest rotation to that order, without an iteration.

@@ -91,6 +91,13 @@ pub async fn revoke(store: &Store, name_or_id: &str) -> Result<Revoked, StoreErr
     }
 }
 
+/// The SHA-256 (hex) of every token that has not expired: the keys live view frames are signed with.
+pub async fn live_hashes(store: &Store) -> Result<Vec<String>, StoreError> {
+    let rows: Vec<(String,)> =
+        sqlx::query_as(&format!("SELECT sha256 FROM tokens WHERE expires_at IS NULL OR expires_at > {NOW}")).fetch_all(&store.pool).await?;
+    Ok(rows.into_iter().map(|(h,)| h).collect())
+}
+
 /// The stored hashes (for tests and audits).
 pub async fn hashes(store: &Store) -> Result<Vec<String>, StoreError> {
     let rows: Vec<(String,)> = sqlx::query_as("SELECT sha256 FROM tokens ORDER BY created_at").fetch_all(&store.pool).await?;

@@ -26,6 +26,8 @@
 //!
 //! Plain data in, files out: no IO, no panics.
 
+pub mod live;
+
 use std::collections::BTreeSet;
 use std::fmt::Write as _;
 use std::sync::OnceLock;
@@ -166,6 +168,8 @@ pub enum MechatronicsError {
     BadReference { joint: String, reason: String },
     #[error("motion \"{motion}\": {reason}")]
     BadMotion { motion: String, reason: String },
+    #[error("live view: {0}")]
+    LiveView(String),
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -658,6 +662,7 @@ pub fn mechatronics(
     pkg: &str,
     drives: &[DrivePlan],
     motions: &[MotionTable],
+    live: Option<(&live::LiveTarget, &[String])>,
     provenance_html: &str,
 ) -> Result<Vec<(String, Vec<u8>)>, MechatronicsError> {
     if !is_identifier(pkg) {
@@ -776,7 +781,17 @@ pub fn mechatronics(
     } else {
         format!("\n  // Drives: reference -> controller -> motor -> gear -> joint drive flange\n{}", decl.trim_end_matches('\n'))
     };
-    let decl = format!("{}{decl}", motion_decl.trim_end_matches('\n'));
+    let mut decl = format!("{}{decl}", motion_decl.trim_end_matches('\n'));
+    if let Some((target, bodies)) = live {
+        if bodies.is_empty() || bodies.len() > live::MAX_BODIES {
+            return Err(MechatronicsError::LiveView(format!(
+                "{} bodies: a live view frame carries 1 to {}",
+                bodies.len(),
+                live::MAX_BODIES
+            )));
+        }
+        decl.push_str(live::declarations(pkg, target, bodies).trim_end_matches('\n'));
+    }
     let body = if motions.is_empty() {
         body
     } else {
@@ -794,6 +809,9 @@ pub fn mechatronics(
     let mut files = vec![(format!("{pkg}/Mechatronics.mo"), text.into_bytes())];
     if !motions.is_empty() {
         files.extend(motions_package(pkg, motions, &motion_names));
+    }
+    if live.is_some() {
+        files.extend(live::files(pkg));
     }
     Ok(files)
 }
