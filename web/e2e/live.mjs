@@ -118,6 +118,7 @@ function runHarness(harness, args, input) {
  */
 export async function liveSteps(page, { step, shot, harness }) {
   if (!harness) {
+    assert.notEqual(process.env.CAD2MO_REQUIRE_TOOLS, '1', 'the live view test needs its C sender (CAD2MO_LIVE_HARNESS): is a C compiler installed?');
     step('live: skipped (no CAD2MO_LIVE_HARNESS)');
     return { skipped: true };
   }

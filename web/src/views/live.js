@@ -292,7 +292,7 @@ export function renderLive(panel, ctx) {
       h(
         'ul',
         { class: 'report-list' },
-        h('li', {}, 'Frames go by UDP to ', h('strong', { class: 'live-udp' }, info.udp || '—'), addr ? `: livePort = ${addr.port}, liveHost this service’s host.` : '.'),
+        h('li', {}, 'Frames go by UDP to ', h('strong', { class: 'live-udp' }, info.udp || '—'), addr ? ` (livePort = ${addr.port}; liveHost is this service’s host as the simulation reaches it).` : '.'),
         info.auth_required
           ? h('li', { class: 'live-auth' }, h('strong', {}, 'A token is needed: '), 'set ', h('code', {}, 'liveToken'), ' to one of your API tokens (Settings). Frames are signed with its hash; the token itself is never sent.')
           : h('li', { class: 'live-auth' }, h('strong', {}, 'No token needed'), ' on this service (it listens on loopback only); ', h('code', {}, 'liveToken'), ' may stay empty.'),
