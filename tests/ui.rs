@@ -211,6 +211,18 @@ async fn end_to_end_in_chromium() {
     // The exported library is the XML the UI downloaded, with the edited gain.
     let xml = std::fs::read_to_string(result["library"].as_str().expect("library path")).expect("library");
     assert!(xml.contains("RobotR3 axis controller"));
+    // The Live tab followed the C sender's known motion (web/e2e/live.mjs checked the meshes'
+    // poses against it, mid-stream and after the end).
+    let live = &result["live"];
+    println!("live view: {live}");
+    if live.get("skipped").is_none() {
+        assert_eq!(live["sent"], 151, "the harness sent 3 s at 50 Hz: {live}");
+        assert!(live["frames"].as_u64().is_some_and(|n| n > 0), "the page received frames: {live}");
+        assert!(live["worst"].as_f64().is_some_and(|d| d < 1e-4), "the meshes followed the motion: {live}");
+        for png in ["24-live-frozen", "25-live-ended"] {
+            assert!(shots.join(format!("{png}.png")).exists(), "screenshot {png}");
+        }
+    }
     for png in ["1-models-empty", "2-model-3d", "6-drives-refused", "7-drives-saved", "8-library", "10-model-versions", "12-narrow-model", "15-job-progress"] {
         assert!(shots.join(format!("{png}.png")).exists(), "screenshot {png}");
     }

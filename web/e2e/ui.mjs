@@ -8,6 +8,8 @@
 //   CAD2MO_BUNDLE_HEAVY a bundle whose conversion takes seconds (its progress is watched)
 //   CAD2MO_SCREENSHOTS  folder for a screenshot of each main screen
 //   CAD2MO_DOWNLOADS    folder for the downloaded package and library
+//   CAD2MO_LIVE_HARNESS the live view's C test sender (tests/live/harness.c, compiled); without
+//                       it the Live tab's stream is not tested
 //
 // Prints one JSON line at the end ({joint, package, library}) for the Rust side to check the
 // downloaded package. Any failed expectation throws: exit code 1 with the reason.
@@ -18,6 +20,7 @@ import { join } from 'node:path';
 import { launch, waitForModel, checkModelPixels, checkLabels } from './lib.mjs';
 import { motionSteps } from './motion.mjs';
 import { resultsSteps } from './results.mjs';
+import { liveSteps } from './live.mjs';
 import { standaloneSteps } from './standalone.mjs';
 
 const url = process.env.CAD2MO_URL;
@@ -180,6 +183,10 @@ try {
   const results = await resultsSteps(page, { step, shot, downloads });
   await checkLabels(page, 'the results tab');
 
+  // ---- Live: a running simulation's poses relayed to the 3D view (the C sender, a known motion).
+  const live = await liveSteps(page, { step, shot, harness: process.env.CAD2MO_LIVE_HARNESS });
+  await checkLabels(page, 'the live tab');
+
   // ---- The Results page: a result of any Modelica model, its Dymola visual shapes in 3D.
   const standalone = await standaloneSteps(page, { step, shot, downloads, checkLabels });
 
@@ -326,6 +333,11 @@ try {
   await shot(page, '13c-narrow-results');
   const overflowResults = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
   assert.ok(overflowResults <= 1, `the results tab is ${overflowResults}px wider than a narrow window`);
+  await page.getByRole('tab', { name: 'Live' }).click();
+  await page.locator('section.live-how h3').waitFor();
+  await shot(page, '13e-narrow-live');
+  const overflowLive = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
+  assert.ok(overflowLive <= 1, `the live tab is ${overflowLive}px wider than a narrow window`);
   await page.getByRole('link', { name: 'Results', exact: true }).click();
   await page.getByRole('heading', { name: 'Results', exact: true, level: 1 }).waitFor();
   await page.locator('.results-list-box table.results, .results-list-box p:not(:empty)').first().waitFor();
@@ -339,7 +351,7 @@ try {
   assert.ok(overflowLib <= 1, `the library is ${overflowLib}px wider than a narrow window`);
 
   assert.deepEqual(consoleErrors, [], 'the page logged errors');
-  console.log(JSON.stringify({ joint, package: packagePath, library: libraryPath, motion, results, standalone }));
+  console.log(JSON.stringify({ joint, package: packagePath, library: libraryPath, motion, results, live, standalone }));
 } finally {
   await browser.close();
 }

@@ -1,5 +1,5 @@
-// One converted version: the 3D view beside five tabs (Structure with joint sliders, Report,
-// Drives, Motion, Results). Selecting a body or joint anywhere highlights it in the 3D view and in the lists.
+// One converted version: the 3D view beside six tabs (Structure with joint sliders, Report,
+// Drives, Motion, Results, Live). Selecting a body or joint anywhere highlights it in the 3D view and in the lists.
 
 import { unzipSync } from 'fflate';
 import { STLLoader } from 'three/addons/loaders/STLLoader.js';
@@ -10,6 +10,7 @@ import { coordinates } from '../viewer/kinematics.js';
 import { renderDrives } from './drives.js';
 import { renderMotion } from './motion.js';
 import { renderResults } from './results.js';
+import { renderLive } from './live.js';
 
 const DEG = 180 / Math.PI;
 
@@ -122,22 +123,31 @@ export async function renderViewer(main, id, v, initialTab) {
     { id: 'drives', label: 'Drives', render: (p) => renderDrives(p, { modelId: id, version, report, select, selected: () => selection, onSelect: (f) => listeners.add(f) }) },
     { id: 'motion', label: 'Motion', render: (p) => (motion = renderMotion(p, { modelId: id, version, versionNumber: v, report, viewer, setJoints, currentJoints, say, stage: motionStage, drivesChanged })) },
     { id: 'results', label: 'Results', render: (p) => (results = renderResults(p, { modelId: id, versionNumber: v, viewer, say, select, stage: resultsStage })) },
+    { id: 'live', label: 'Live', render: (p) => (live = renderLive(p, { modelId: id, versionNumber: v, viewer, say, stage: liveStage })) },
   ];
   let motion = null;
   let results = null;
+  let live = null;
   // A drive changed elsewhere (the motion's sizing): the Drives tab renders afresh when shown.
   const drivesChanged = () => delete t.panel('drives').dataset.rendered;
   // The motion's player, plots and sizing go under the 3D view, shown with the Motion tab.
   const motionStage = h('div', { class: 'motion-stage', hidden: true });
   // A result's player and plots likewise, shown with the Results tab (whose poses apply only then).
   const resultsStage = h('div', { class: 'motion-stage results-stage', hidden: true });
+  // The live stream's numbers likewise, shown with the Live tab (whose poses apply only then).
+  const liveStage = h('div', { class: 'motion-stage live-stage', hidden: true });
   const t = tabs(tabSpec, {
     initial: tabSpec.some((x) => x.id === initialTab) ? initialTab : 'structure',
     label: 'Model details',
     onChange: (tab) => {
       motionStage.hidden = tab !== 'motion';
       resultsStage.hidden = tab !== 'results';
-      results?.shown(tab === 'results');
+      liveStage.hidden = tab !== 'live';
+      // Hide before show: both tabs pose the bodies, and hiding one hands them back to the joints.
+      if (tab !== 'results') results?.shown(false);
+      if (tab !== 'live') live?.shown(false);
+      if (tab === 'results') results?.shown(true);
+      if (tab === 'live') live?.shown(true);
       history.replaceState(null, '', `#/models/${enc(id)}/versions/${v}${tab === 'structure' ? '' : '/' + tab}`);
     },
   });
@@ -146,7 +156,7 @@ export async function renderViewer(main, id, v, initialTab) {
     main,
     h('p', { class: 'crumbs' }, h('a', { href: '#/models' }, 'Models'), ' / ', h('a', { href: `#/models/${enc(id)}` }, model.name), ' / ', `v${v}`),
     h('h1', {}, `${model.name} `, h('small', { class: 'muted' }, `v${v} · package ${report.package_name}`)),
-    h('div', { class: 'model-layout' }, h('section', { class: 'view3d', 'aria-label': '3D view' }, toolbar, stage, info, details, motionStage, resultsStage), h('section', { class: 'side' }, t.el)),
+    h('div', { class: 'model-layout' }, h('section', { class: 'view3d', 'aria-label': '3D view' }, toolbar, stage, info, details, motionStage, resultsStage, liveStage), h('section', { class: 'side' }, t.el)),
   );
 
 
@@ -297,6 +307,7 @@ export async function renderViewer(main, id, v, initialTab) {
   return () => {
     motion?.dispose?.();
     results?.dispose();
+    live?.dispose();
     viewer.dispose();
     if (window.cad2moViewer === viewer) delete window.cad2moViewer;
   };
