@@ -7,7 +7,10 @@ Two kinds of seeds:
 - hand-made bombs: a VRML PROTO doubling file and a DEF/USE doubling file (2^30 shapes if
   expanded naively), deep VRML nesting, a self-inlining VRML file, an XML of many tiny nested
   elements, STL files that lie about their triangle count or hold NaN/huge numbers, zips whose
-  headers lie about their sizes, and XML numbers at the edge of f64 for `convert`.
+  headers lie about their sizes, and XML numbers at the edge of f64 for `convert`;
+- simulation results (MAT v4, written here: binTrans float32 and float64 with a body's frame and a
+  Dymola visual shape, binNormal, the 1.0 names/data variant, a matrix whose size lies) for
+  `mat`, and live view frames (plain, signed, final, lying about their body count) for `live`.
 
 The real fixtures in ../shared/fixtures are NOT copied (their licences): scripts/fuzz-smoke adds
 them to the corpus at run time when that folder exists.
@@ -257,6 +260,98 @@ def zip_bombs():
     write("bundle_zip", "vrml_bomb_bundle.zip", deterministic_zip([("VASM.xml", vasm), ("asm.wrl", bomb)]))
 
 
+# --- results: MAT v4 ------------------------------------------------------------------------
+
+def mat_matrix(name, ptype, text, rows, cols, data):
+    """One MAT v4 matrix, little-endian; ptype 0 f64, 1 f32, 2 i32, 5 u8."""
+    out = struct.pack("<5i", ptype * 10 + (1 if text else 0), rows, cols, 0, len(name) + 1) + name.encode() + b"\0"
+    fmt = {0: "d", 1: "f", 2: "i", 5: "B"}[ptype]
+    return out + struct.pack("<%d%s" % (len(data), fmt), *data)
+
+
+def mat_text(name, strings, by_rows):
+    n = max(len(x) for x in strings)
+    if by_rows:
+        data = [0] * (n * len(strings))
+        for r, x in enumerate(strings):
+            for c, ch in enumerate(x.encode()):
+                data[c * len(strings) + r] = ch
+        return mat_matrix(name, 5, True, len(strings), n, data)
+    data = []
+    for x in strings:
+        data += list(x.encode()) + [0] * (n - len(x))
+    return mat_matrix(name, 5, True, n, len(strings), data)
+
+
+def mat_result(ptype, trans=True):
+    names = ["time", "B.frame_a.r_0[1]", "B.frame_a.r_0[2]", "B.frame_a.r_0[3]"]
+    names += ["B.frame_a.R.T[%d, %d]" % (i, j) for i in (1, 2, 3) for j in (1, 2, 3)]
+    names += ["S.shapeType", "S.rxvisobj[1]", "S.ryvisobj[2]", "S.rvisobj[1]", "S.size[1]", "S.Form", "S.Material", "der(B.phi)"]
+    steps = 5
+    series = []
+    for k in range(steps):
+        t = 0.25 * k
+        c, s_ = __import__("math").cos(t), __import__("math").sin(t)
+        row = [t, t, 0.0, 0.1, c, s_, 0.0, -s_, c, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 1.0, 0.5, 0.2, 987000.0, 255255000.0, 1.0]
+        series.append(row)
+    info = [0, 1, 0, -1]
+    for i in range(1, len(names)):
+        info += [2, -(i + 1) if names[i] == "der(B.phi)" else i + 1, 0, -1]
+    f = mat_text("Aclass", ["Atrajectory", "1.1", "", "binTrans" if trans else "binNormal"], True)
+    f += mat_text("name", names, not trans)
+    f += mat_text("description", ["Time in [s]"] + ["" for _ in names[1:]], not trans)
+    f += mat_matrix("dataInfo", 2, False, 4, len(names), info)
+    f += mat_matrix("data_1", 0, False, 1, 2, [0.0, 1.0])
+    flat = [x for row in series for x in row]
+    if trans:
+        f += mat_matrix("data_2", ptype, False, len(names), steps, flat)
+    else:
+        col = [series[k][v] for v in range(len(names)) for k in range(steps)]
+        f += mat_matrix("data_2", ptype, False, steps, len(names), col)
+    return f
+
+
+def mat_seeds():
+    write("mat", "bintrans_f32.mat", mat_result(1))
+    write("mat", "bintrans_f64.mat", mat_result(0))
+    write("mat", "binnormal_f64.mat", mat_result(0, trans=False))
+    old = mat_text("Aclass", ["Atrajectory", "1.0", "", ""], True)
+    old += mat_text("names", ["time", "x"], True)
+    old += mat_matrix("data", 0, False, 3, 2, [0.0, 0.5, 1.0, 1.0, 2.0, 3.0])
+    write("mat", "save_as_plotted.mat", old)
+    lie = bytearray(mat_result(1))
+    # data_2 claims a billion columns.
+    at = bytes(lie).rfind(b"data_2") - 20 + 8
+    lie[at:at + 4] = struct.pack("<i", 1_000_000_000)
+    write("mat", "lying_columns.mat", bytes(lie))
+
+
+# --- live view frames ----------------------------------------------------------------------
+
+def live_frame(n, seq, token=None, last=False):
+    import hashlib
+    import hmac
+    key = hashlib.sha256(token.encode()).digest() if token else None
+    flags = (1 if key else 0) | (2 if last else 0)
+    head = b"C2ML" + struct.pack("<BBH", 1, flags, 64) + bytes(range(16)) + struct.pack("<I", 3)
+    head += bytes(8) + struct.pack("<IdII", seq, 0.02 * seq, n, 42)
+    head += hashlib.sha256(key).digest()[:8] if key else bytes(8)
+    body = b"".join(struct.pack("<12f", float(i), 0.0, 0.0, 1, 0, 0, 0, 1, 0, 0, 0, 1) for i in range(n))
+    frame = head + body
+    if key:
+        frame += hmac.new(key, frame, hashlib.sha256).digest()
+    return frame
+
+
+def live_seeds():
+    write("live", "plain.bin", live_frame(2, 0))
+    write("live", "signed.bin", live_frame(3, 7, token="c2m_fuzz"))
+    write("live", "final.bin", live_frame(1, 9, last=True))
+    lie = bytearray(live_frame(2, 1))
+    lie[48:52] = struct.pack("<I", 0xFFFFFFFF)
+    write("live", "lying_count.bin", bytes(lie))
+
+
 def main():
     if os.path.isdir(SEEDS):
         shutil.rmtree(SEEDS)
@@ -268,6 +363,8 @@ def main():
     convert_seeds()
     stl_bombs()
     zip_bombs()
+    mat_seeds()
+    live_seeds()
     for t in sorted(os.listdir(SEEDS)):
         files = os.listdir(os.path.join(SEEDS, t))
         size = sum(os.path.getsize(os.path.join(SEEDS, t, f)) for f in files)

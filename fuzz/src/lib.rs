@@ -13,8 +13,55 @@ use cad2mo::pipeline::{
 pub type Target = (&'static str, fn(&[u8]));
 
 /// The targets by name, as `fuzz/regressions/<name>/` and `cargo fuzz run <name>` call them.
-pub const TARGETS: [Target; 5] =
-    [("xml", xml), ("stl", stl), ("vrml", vrml), ("bundle_zip", bundle_zip), ("convert", convert)];
+pub const TARGETS: [Target; 7] = [
+    ("xml", xml),
+    ("stl", stl),
+    ("vrml", vrml),
+    ("bundle_zip", bundle_zip),
+    ("convert", convert),
+    ("mat", mat),
+    ("live", live),
+];
+
+/// A simulation result (MAT v4 bytes) -> `results::mat::Trajectory::read`; when it reads, what
+/// the service does with it: the summary, variable search, every series (of the first 64
+/// variables) thinned for a plot, and Dymola's visual shapes with their pose stream.
+pub fn mat(data: &[u8]) {
+    use cad2mo::results::{self, mat::Trajectory, shapes::Scene};
+    let t = match Trajectory::read(data, "fuzz.mat") {
+        Ok(t) => t,
+        Err(e) => {
+            let _ = e.to_string();
+            return;
+        }
+    };
+    let _ = results::standalone(&t);
+    let _ = results::search(&t, "frame_a", 20);
+    let time = t.time();
+    for v in 0..t.variables.len().min(64) {
+        let y = t.series(v);
+        let _ = results::decimate(&time, &y, 100);
+    }
+    let scene = Scene::find(&t);
+    let _ = scene.stream(&t);
+}
+
+/// A live view datagram -> `live::decode`, then the signature check and the poses, as the relay
+/// does (with a fixed key: a random frame's tag must not verify, and nothing may panic).
+pub fn live(data: &[u8]) {
+    use cad2mo::live;
+    let Ok(f) = live::decode(data) else { return };
+    let _ = f.model_id();
+    let key = [7u8; 32];
+    let _ = live::verify(&f, &key);
+    let mut poses = Vec::new();
+    if live::poses_into(&f, &mut poses).is_ok() {
+        assert_eq!(poses.len(), 7 * f.body_count());
+        assert!(poses.iter().all(|x| x.is_finite()), "a relayed pose is not finite");
+    }
+    let mut run = live::RunStats::new(f.run);
+    let _ = run.accept(f.seq, f.time, f.is_final(), 0.0);
+}
 
 /// First-generation SimMechanics XML bytes -> `front::simmechanics::parse` (and the sniffer).
 pub fn xml(data: &[u8]) {
