@@ -157,3 +157,36 @@ async fn standalone_results_show_dymola_shapes() {
     let list = json_of(app.get("/api/results").await, 200).await;
     assert!(!list.as_array().expect("list").is_empty());
 }
+
+/// A result upload beyond `--max-upload` is a 413 problem saying the limit, before the body is
+/// read (a declared 2 GB answers at once) or while it is read; nothing is stored.
+#[tokio::test]
+async fn oversized_result_uploads_are_413() {
+    let limit = 64 * 1024;
+    let app = TestApp::spawn_with(|s| s.max_upload = limit).await;
+    let r = upload(&app, "/api/results", "big.mat", vec![0u8; limit as usize * 2]).await;
+    assert_eq!(r.status(), 413);
+    assert_eq!(r.headers()["content-type"], "application/problem+json");
+    let p: Value = r.json().await.expect("problem");
+    assert!(p["detail"].as_str().expect("detail").contains(&limit.to_string()), "{p}");
+
+    // A declared 2 GB: refused from the headers, without waiting for a byte of the body.
+    let addr = app.address.trim_start_matches("http://").to_string();
+    let answer = tokio::task::spawn_blocking(move || {
+        use std::io::{Read, Write};
+        let mut s = std::net::TcpStream::connect(&addr).expect("connect");
+        s.set_read_timeout(Some(std::time::Duration::from_secs(10))).expect("timeout");
+        let head = format!(
+            "POST /api/results HTTP/1.1\r\nHost: {addr}\r\nX-Requested-With: cad2mo\r\nContent-Type: multipart/form-data; boundary=b\r\nContent-Length: 2147483648\r\n\r\n"
+        );
+        s.write_all(head.as_bytes()).expect("send");
+        let mut buf = vec![0u8; 4096];
+        let n = s.read(&mut buf).expect("an answer before the body");
+        String::from_utf8_lossy(&buf[..n]).to_string()
+    })
+    .await
+    .expect("join");
+    assert!(answer.starts_with("HTTP/1.1 413"), "{answer}");
+    assert!(answer.contains("application/problem+json"), "{answer}");
+    assert_eq!(json_of(app.get("/api/results").await, 200).await, serde_json::json!([]), "nothing stored");
+}
