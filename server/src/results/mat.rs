@@ -102,6 +102,11 @@ impl Matrix {
     /// a Latin-1 fallback, trailing NULs and spaces removed.
     fn strings(&self, bytes: &[u8], by_columns: bool) -> Vec<String> {
         let (count, len) = if by_columns { (self.cols, self.rows) } else { (self.rows, self.cols) };
+        // A matrix without elements holds no text, whatever count its other dimension claims
+        // (with elements, the count is bounded by the bytes the file holds).
+        if count == 0 || len == 0 {
+            return Vec::new();
+        }
         (0..count)
             .map(|k| {
                 let raw: Vec<u8> = (0..len)
