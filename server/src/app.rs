@@ -32,6 +32,8 @@ pub struct AppState {
     pub addr: SocketAddr,
     /// The live view: frames from running simulations, relayed to browsers.
     pub relay: crate::relay::Relay,
+    /// Collision shapes of a few versions (read back from their packages).
+    pub collisions: crate::collisions::Cache,
 }
 
 pub struct App {
@@ -55,7 +57,7 @@ impl App {
         let addr = listener.local_addr().unwrap_or(settings.bind);
         let checks = Arc::new(tokio::sync::Semaphore::new(settings.max_checks.max(1)));
         let state =
-            AppState { settings: Arc::new(settings), store, blobs, jobs, checks, addr, kinematics: Default::default(), relay };
+            AppState { settings: Arc::new(settings), store, blobs, jobs, checks, addr, kinematics: Default::default(), relay, collisions: Default::default() };
         Ok(App { listener, state })
     }
 

@@ -176,6 +176,7 @@ pub fn build_package(
     let mut opts = options.pipeline();
     opts.name_hints = context.name_hints.clone();
     opts.live = context.live.clone();
+    opts.collision_edits = context.collision_edits.clone();
     let mut obs = BuildObserver {
         drives,
         motions,
@@ -209,11 +210,14 @@ pub fn build_package(
 }
 
 /// What a version's package is written for beyond its bundle and options: the Modelica names of
-/// the version before it (kept for unchanged node IDs) and the service's live view.
+/// the version before it (kept for unchanged node IDs), the service's live view, and the
+/// model's allowed-collision edits.
 #[derive(Clone, Debug, Default)]
 pub struct Context {
     pub name_hints: pipeline::back::modelica::Hints,
     pub live: Option<pipeline::back::modelica::mechatronics::live::LiveTarget>,
+    /// The model's allowed-collision edits.
+    pub collision_edits: pipeline::back::collision_shapes::AllowedEdits,
 }
 
 /// The model's motions and joint limits, for the package's `Motions` and sizing files.

@@ -81,7 +81,7 @@ struct Ctx {
 /// Where a running job is.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct JobProgress {
-    /// `xml`, `meshes`, `vrml`, `analysis`, `modelica`, `shapes`, `report`, `package` (zipping)
+    /// `xml`, `meshes`, `vrml`, `analysis`, `modelica`, `collision`, `shapes`, `report`, `package` (zipping)
     /// or `storing`, in that order; a job may skip some.
     pub stage: &'static str,
     /// The stage for people, e.g. "Writing shapes".
@@ -96,13 +96,14 @@ pub struct JobProgress {
 
 /// The stages of a job in order: the conversion's ([`Stage::ALL`], row `Stage::X as usize`),
 /// then zipping and storing; with their weights in the overall fraction (they add up to 100).
-const STAGES: [(&str, &str, f64); 9] = [
+const STAGES: [(&str, &str, f64); 10] = [
     ("xml", "Reading the XML", 5.0),
     ("meshes", "Reading STL meshes", 20.0),
     ("vrml", "Reading and matching VRML", 20.0),
     ("analysis", "Analysing joints and loops", 4.0),
     ("modelica", "Writing Modelica", 4.0),
-    ("shapes", "Writing shapes", 30.0),
+    ("collision", "Making collision shapes", 10.0),
+    ("shapes", "Writing shapes", 20.0),
     ("report", "Writing the report", 2.0),
     ("package", "Zipping the package", 12.0),
     ("storing", "Storing the package", 3.0),
@@ -371,7 +372,8 @@ async fn convert(ctx: &Ctx, job: &ClaimedJob) -> Result<Stored, ApiError> {
         }),
         _ => None,
     };
-    let context = export::Context { name_hints: hints, live };
+    let collision_edits = crate::store::collision::edits(&ctx.store, &job.model_id).await?.into_iter().map(|(a, b, x)| ((a, b), x)).collect();
+    let context = export::Context { name_hints: hints, live, collision_edits };
     let blobs = ctx.blobs.clone();
     let board = ctx.board.clone();
     let job_id = job.id.clone();

@@ -15,6 +15,7 @@ pub mod api;
 pub mod app;
 pub mod cli;
 pub mod collision;
+pub mod collisions;
 pub mod config;
 pub mod drives;
 pub mod diff;

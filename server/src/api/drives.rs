@@ -209,7 +209,7 @@ async fn put(
         if let (Ok(motor), Ok(gear), Ok(controller)) = (choice("motor"), choice("gear"), choice("controller")) {
             let resolved = drives::ResolvedDrive { joint: joint.clone(), motor, gear, controller, reference: reference.clone() };
             let (plans, _) = drives::plans(&report, &[resolved]);
-            if let Err(e) = crate::pipeline::back::modelica::mechatronics::mechatronics("Check", &plans, &[], None, "") {
+            if let Err(e) = crate::pipeline::back::modelica::mechatronics::mechatronics("Check", &plans, &[], &Default::default(), "") {
                 errors.push(FieldError { field: "drive".into(), message: e.to_string() });
             }
         }

@@ -3,6 +3,7 @@
 
 mod auth;
 mod cache;
+mod collision;
 mod drives;
 pub mod error;
 mod extract;
@@ -35,6 +36,7 @@ pub fn router(state: AppState) -> Router {
         .merge(motions::router())
         .merge(results::router())
         .merge(live::router())
+        .merge(collision::router())
         .merge(web::router())
         .layer(axum::middleware::from_fn_with_state(cache::LibraryCache::default(), cache::library_cache))
         .layer(axum::middleware::from_fn_with_state(

@@ -38,7 +38,7 @@ pub fn router() -> Router<AppState> {
         .route("/api/models/{model_id}/ik", post(ik))
 }
 
-async fn model_exists(state: &AppState, model_id: &str) -> Result<(), ApiError> {
+pub(super) async fn model_exists(state: &AppState, model_id: &str) -> Result<(), ApiError> {
     match store::models::get_model(&state.store.pool, model_id).await? {
         Some(_) => Ok(()),
         None => Err(ApiError::NotFound(format!("model {model_id}"))),
@@ -197,7 +197,7 @@ fn name_taken(e: store::StoreError, model_id: &str, spec: &MotionSpec) -> ApiErr
     }
 }
 
-async fn find(state: &AppState, model_id: &str, motion_id: &str) -> Result<store::motions::Motion, ApiError> {
+pub(super) async fn find(state: &AppState, model_id: &str, motion_id: &str) -> Result<store::motions::Motion, ApiError> {
     model_exists(state, model_id).await?;
     store::motions::get(&state.store, model_id, motion_id).await?.ok_or_else(|| ApiError::NotFound(format!("motion {motion_id}")))
 }

@@ -55,6 +55,8 @@ pub struct Options {
     /// The model in the service that the package is written for: `Mechatronics` gets a live
     /// view sending to it (`None`: no live view, e.g. from the command line).
     pub live: Option<back::modelica::mechatronics::live::LiveTarget>,
+    /// The user's allowed-collision edits, by body name (a < b): allowed to touch or not.
+    pub collision_edits: back::collision_shapes::AllowedEdits,
 }
 
 impl Default for Options {
@@ -68,6 +70,7 @@ impl Default for Options {
             matching: Default::default(),
             name_hints: Default::default(),
             live: None,
+            collision_edits: Default::default(),
         }
     }
 }
@@ -286,7 +289,7 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
             name_hints: opts.name_hints.clone(),
         },
     );
-    let report = report::build(report::ReportInput {
+    let mut report = report::build(report::ReportInput {
         model: &a.model,
         validated: &a.validated,
         layout: &pkg.layout,
@@ -298,6 +301,14 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
         warnings: a.warnings,
         version: VERSION,
     });
+    // Collision shapes of every body with a mesh; interferences at the CAD pose are warnings.
+    obs.progress(Stage::Collision, 0, 1);
+    let names: Vec<String> = pkg.layout.names.as_ref().map(|n| n.bodies.clone()).unwrap_or_default();
+    let collision = back::collision_shapes::Collision::new(&a.model, &names, &opts.collision_edits, &Default::default());
+    let (collision_report, collision_warnings) = collision.report(&a.model, &names);
+    obs.progress(Stage::Collision, 1, 1);
+    report.warnings.extend(collision_warnings);
+    report.collision = Some(collision_report);
     let drives = obs.drives(&report, &opts.drives);
     let mut files = pkg.files;
     files.extend(back::modelica::mechatronics::components(&package_name));
@@ -312,11 +323,15 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
         .as_ref()
         .filter(|_| (1..=back::modelica::mechatronics::live::MAX_BODIES).contains(&bodies.len()))
         .map(|t| (t, bodies));
+    let parts = collision.parts();
+    let contacts = parts.iter().any(Option::is_some).then(|| {
+        back::modelica::mechatronics::collision::declarations(&package_name, &names, &parts, &|i, j| collision.checked(i, j))
+    });
     files.extend(back::modelica::mechatronics::mechatronics(
         &package_name,
         &drives,
         &extras.motions,
-        live,
+        &back::modelica::mechatronics::Additions { live, collision: contacts.as_deref() },
         &back::modelica::provenance(&a.model, VERSION),
     )?);
     if !extras.motions.is_empty() {
@@ -324,13 +339,17 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
             order.extend_from_slice(b"Motions\n");
         }
     }
-    if live.is_some() {
-        if let Some((_, order)) = files.iter_mut().find(|(p, _)| *p == format!("{package_name}/Components/package.order")) {
+    if let Some((_, order)) = files.iter_mut().find(|(p, _)| *p == format!("{package_name}/Components/package.order")) {
+        if live.is_some() {
             order.extend_from_slice(b"Visualization\n");
+        }
+        if contacts.is_some() {
+            order.extend_from_slice(b"Collision\n");
         }
     }
     files.extend(extras.files);
     if opts.write_shapes {
+        files.extend(collision.files(&package_name, &names));
         let shapes: Vec<usize> = (0..pkg.layout.shapes.len())
             .filter(|&i| pkg.layout.shapes[i].is_some() && a.model.bodies.get(i).is_some_and(|b| b.mesh.is_some()))
             .collect();

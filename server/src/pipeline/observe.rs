@@ -25,6 +25,8 @@ pub enum Stage {
     Analysis,
     /// The Modelica package text.
     Modelica,
+    /// Collision shapes (hulls, decompositions, primitives) and interferences at the CAD pose.
+    Collision,
     /// DXF and STL shape files, one body at a time.
     Shapes,
     /// `report.json`.
@@ -33,8 +35,8 @@ pub enum Stage {
 
 impl Stage {
     /// Every stage, in the order they run (`Stage::X as usize` is its place here).
-    pub const ALL: [Stage; 7] =
-        [Stage::Xml, Stage::Meshes, Stage::Vrml, Stage::Analysis, Stage::Modelica, Stage::Shapes, Stage::Report];
+    pub const ALL: [Stage; 8] =
+        [Stage::Xml, Stage::Meshes, Stage::Vrml, Stage::Analysis, Stage::Modelica, Stage::Collision, Stage::Shapes, Stage::Report];
 }
 
 /// Receives a conversion's progress and may choose its drives.

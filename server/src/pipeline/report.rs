@@ -28,6 +28,10 @@ pub struct Report {
     /// How VRML geometry was matched (null without VRML).
     pub vrml: Option<crate::pipeline::passes::geometry_match::MatchReport>,
     pub warnings: Vec<Warning>,
+    /// Collision shapes per body and interferences at the CAD pose (set after the report is
+    /// built; absent from reports of earlier versions).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub collision: Option<crate::pipeline::back::collision_shapes::CollisionReport>,
 }
 
 #[derive(Serialize, Debug, Clone)]
@@ -319,5 +323,6 @@ pub fn build(input: ReportInput) -> Report {
         free_bodies: h.free_bodies.iter().map(|b| body_name(b.index())).collect(),
         vrml: vrml.cloned(),
         warnings,
+        collision: None,
     }
 }

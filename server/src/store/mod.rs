@@ -2,6 +2,7 @@
 //! timeout and foreign keys, migrated on open from `migrations/`.
 
 pub mod blobs;
+pub mod collision;
 pub mod drives;
 pub mod library;
 pub mod models;

@@ -1,6 +1,7 @@
 //! Back ends: validated IR (plus the passes' side tables) in, bytes out.
 
 pub mod bundle;
+pub mod collision_shapes;
 pub mod dxf;
 pub mod mjcf;
 pub mod modelica;

@@ -656,15 +656,26 @@ fn reference_html(r: &Ref, kind: JointKind, start: f64) -> String {
     }
 }
 
+/// What `Mechatronics` may declare beyond drives and motions.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Additions<'a> {
+    /// The live view: where it sends, and the bodies in package order.
+    pub live: Option<(&'a live::LiveTarget, &'a [String])>,
+    /// The contact forces' declarations ([`collision::declarations`]); their package files are
+    /// written with them.
+    pub collision: Option<&'a str>,
+}
+
 /// Writes `<pkg>/Mechatronics.mo`: Mechanics plus one drive per plan. `provenance_html` is the
 /// HTML paragraph saying where the model came from (it is escaped for the string literal only).
 pub fn mechatronics(
     pkg: &str,
     drives: &[DrivePlan],
     motions: &[MotionTable],
-    live: Option<(&live::LiveTarget, &[String])>,
+    additions: &Additions<'_>,
     provenance_html: &str,
 ) -> Result<Vec<(String, Vec<u8>)>, MechatronicsError> {
+    let live = additions.live;
     if !is_identifier(pkg) {
         return Err(MechatronicsError::BadPackageName(pkg.to_string()));
     }
@@ -792,6 +803,9 @@ pub fn mechatronics(
         }
         decl.push_str(live::declarations(pkg, target, bodies).trim_end_matches('\n'));
     }
+    if let Some(c) = additions.collision {
+        decl.push_str(c.trim_end_matches('\n'));
+    }
     let body = if motions.is_empty() {
         body
     } else {
@@ -812,6 +826,9 @@ pub fn mechatronics(
     }
     if live.is_some() {
         files.extend(live::files(pkg));
+    }
+    if additions.collision.is_some() {
+        files.extend(collision::files(pkg));
     }
     Ok(files)
 }

@@ -1,0 +1,208 @@
+//! Collision geometry in the package (issue 14): each body's convex shape from its mesh
+//! ([`crate::collision::body_shape`]), written as `Resources/Collision/<body>.obj` (for people
+//! and tools) and `Resources/Collision/shapes.json` (the exact parts, for the service), the
+//! report's `collision` section, and the pairs that interfere at the CAD pose.
+//!
+//! Which pairs are checked: bodies joined by a joint may touch (allowed) unless the user said
+//! otherwise; every other pair is checked unless the user allowed it. Edits are keyed by the
+//! bodies' Modelica names, so they survive CAD changes.
+
+use std::collections::{BTreeMap, BTreeSet};
+
+use nalgebra::Isometry3;
+use serde::Serialize;
+
+use crate::collision::{self, BodyShape, ConvexPart, ShapeOptions};
+use crate::pipeline::ir::{FrameOwner, Model, Warning};
+
+/// The user's edits of the allowed-collision matrix: (a, b) with a < b → allowed.
+pub type AllowedEdits = BTreeMap<(String, String), bool>;
+
+/// The collision geometry of a model and the rule for its pairs.
+pub struct Collision {
+    pub shapes: Vec<Option<BodyShape>>,
+    joined: BTreeSet<(usize, usize)>,
+    edits: BTreeMap<(usize, usize), bool>,
+}
+
+#[derive(Serialize, Debug, Clone)]
+pub struct BodyCollisionReport {
+    pub body: String,
+    /// `box`, `cylinder`, `sphere`, `capsule`, `hull`, `decomposition`, or `none` (no mesh).
+    pub kind: &'static str,
+    pub parts: usize,
+    pub vertices: usize,
+    /// m.
+    pub fit_error: f64,
+    pub volume_ratio: f64,
+    pub source_triangles: usize,
+    pub warnings: Vec<String>,
+}
+
+#[derive(Serialize, Debug, Clone)]
+pub struct InterferenceReport {
+    pub a: String,
+    pub b: String,
+    /// Penetration depth, m (> 0).
+    pub depth: f64,
+    /// Witness points in world coordinates at the CAD pose, m.
+    pub point_a: [f64; 3],
+    pub point_b: [f64; 3],
+    /// Unit normal from a to b.
+    pub normal: [f64; 3],
+}
+
+#[derive(Serialize, Debug, Clone, Default)]
+pub struct CollisionReport {
+    pub bodies: Vec<BodyCollisionReport>,
+    /// Checked pairs that intersect at the CAD pose.
+    pub interferences: Vec<InterferenceReport>,
+    /// How many pairs of bodies with shapes are checked (the others are allowed to touch).
+    pub checked_pairs: usize,
+}
+
+impl Collision {
+    /// Shapes for every body with a mesh; pairs joined by a joint; the user's edits by name.
+    pub fn new(model: &Model, names: &[String], edits: &AllowedEdits, opts: &ShapeOptions) -> Collision {
+        let shapes = model.bodies.iter().map(|b| b.mesh.as_ref().map(|m| collision::body_shape(m, opts))).collect();
+        let body_of = |f| match model.frame(f).owner {
+            FrameOwner::Body(b) => Some(b.index()),
+            FrameOwner::Ground(_) => None,
+        };
+        let mut joined = BTreeSet::new();
+        for j in &model.joints {
+            if let (Some(a), Some(b)) = (body_of(j.base), body_of(j.follower)) {
+                if a != b {
+                    joined.insert((a.min(b), a.max(b)));
+                }
+            }
+        }
+        let index: BTreeMap<&str, usize> = names.iter().enumerate().map(|(i, n)| (n.as_str(), i)).collect();
+        let edits = edits
+            .iter()
+            .filter_map(|((a, b), allowed)| {
+                let (i, j) = (*index.get(a.as_str())?, *index.get(b.as_str())?);
+                Some(((i.min(j), i.max(j)), *allowed))
+            })
+            .collect();
+        Collision { shapes, joined, edits }
+    }
+
+    /// Whether bodies `a` and `b` are joined by a joint (allowed to touch by default).
+    pub fn joined(&self, a: usize, b: usize) -> bool {
+        self.joined.contains(&(a.min(b), a.max(b)))
+    }
+
+    /// Whether the pair is checked (not allowed to touch).
+    pub fn checked(&self, a: usize, b: usize) -> bool {
+        let key = (a.min(b), a.max(b));
+        a != b && !self.edits.get(&key).copied().unwrap_or_else(|| self.joined.contains(&key))
+    }
+
+    /// The convex parts of each body (None: no shape), for the Modelica contact code.
+    pub fn parts(&self) -> Vec<Option<Vec<ConvexPart>>> {
+        self.shapes.iter().map(|s| s.as_ref().map(|s| s.parts.clone())).collect()
+    }
+
+    /// The report section and a warning per interference at `poses` (the CAD pose).
+    pub fn report(&self, model: &Model, names: &[String]) -> (CollisionReport, Vec<Warning>) {
+        let mut r = CollisionReport::default();
+        for (i, s) in self.shapes.iter().enumerate() {
+            let body = names.get(i).cloned().unwrap_or_default();
+            r.bodies.push(match s {
+                Some(s) => BodyCollisionReport {
+                    body,
+                    kind: s.kind.name(),
+                    parts: s.parts.len(),
+                    vertices: s.vertex_count,
+                    fit_error: s.fit_error,
+                    volume_ratio: s.volume_ratio,
+                    source_triangles: s.source_triangles,
+                    warnings: s.warnings.clone(),
+                },
+                None => BodyCollisionReport {
+                    body,
+                    kind: "none",
+                    parts: 0,
+                    vertices: 0,
+                    fit_error: 0.0,
+                    volume_ratio: 0.0,
+                    source_triangles: 0,
+                    warnings: vec!["no mesh: the body has no collision shape".to_string()],
+                },
+            });
+        }
+        let with: Vec<usize> = (0..self.shapes.len()).filter(|&i| self.shapes[i].is_some()).collect();
+        r.checked_pairs = with.iter().enumerate().map(|(k, &a)| with[k + 1..].iter().filter(|&&b| self.checked(a, b)).count()).sum();
+        let world = collision::World::new(&self.shapes);
+        let poses = cad_poses(model);
+        let mut warnings = Vec::new();
+        for c in collision::contacts_at(&world, &poses, &|a, b| self.checked(a, b), 0.0) {
+            if c.distance >= 0.0 {
+                continue;
+            }
+            let (a, b) = (names[c.a].clone(), names[c.b].clone());
+            warnings.push(Warning::new(
+                "interference",
+                format!(
+                    "bodies {a} and {b} intersect at the CAD pose by {} mm (points {} and {} m in world)",
+                    mm(-c.distance),
+                    point(&c.point_a),
+                    point(&c.point_b)
+                ),
+                format!("bodies {a} and {b}"),
+            ));
+            r.interferences.push(InterferenceReport { a, b, depth: -c.distance, point_a: c.point_a, point_b: c.point_b, normal: c.normal });
+        }
+        (r, warnings)
+    }
+
+    /// `Resources/Collision/<body>.obj` per body with a shape, and `shapes.json` (every part's
+    /// vertices and radius, by body name) for the service.
+    pub fn files(&self, pkg: &str, names: &[String]) -> Vec<(String, Vec<u8>)> {
+        let mut files = Vec::new();
+        let mut json = Vec::new();
+        for (i, s) in self.shapes.iter().enumerate() {
+            let (Some(s), Some(name)) = (s, names.get(i)) else { continue };
+            files.push((format!("{pkg}/Resources/Collision/{name}.obj"), collision::obj_text(s, name).into_bytes()));
+            let parts: Vec<serde_json::Value> =
+                s.parts.iter().map(|p| serde_json::json!({ "vertices": p.vertices, "radius": p.radius })).collect();
+            json.push(serde_json::json!({ "body": name, "kind": s.kind.name(), "parts": parts }));
+        }
+        if !json.is_empty() {
+            let text = serde_json::to_vec(&serde_json::json!({ "bodies": json })).unwrap_or_default();
+            files.push((format!("{pkg}/Resources/Collision/shapes.json"), text));
+        }
+        files
+    }
+}
+
+/// The world pose of every body's frame_a (CS1) at the CAD pose.
+pub fn cad_poses(model: &Model) -> Vec<Isometry3<f64>> {
+    model.bodies.iter().map(|b| model.frame(b.cs1).pose).collect()
+}
+
+fn mm(x: f64) -> String {
+    format!("{:.3}", x * 1e3)
+}
+
+fn point(p: &[f64; 3]) -> String {
+    format!("({:.4}, {:.4}, {:.4})", p[0], p[1], p[2])
+}
+
+/// Reads `shapes.json` back (the service's view of a package): body name → parts.
+pub fn read_shapes(json: &[u8]) -> Result<BTreeMap<String, Vec<ConvexPart>>, String> {
+    let v: serde_json::Value = serde_json::from_slice(json).map_err(|e| format!("shapes.json: {e}"))?;
+    let mut out = BTreeMap::new();
+    for b in v["bodies"].as_array().ok_or("shapes.json: no bodies")? {
+        let name = b["body"].as_str().ok_or("shapes.json: a body without a name")?.to_string();
+        let mut parts = Vec::new();
+        for p in b["parts"].as_array().ok_or("shapes.json: a body without parts")? {
+            let vertices: Vec<[f64; 3]> = serde_json::from_value(p["vertices"].clone()).map_err(|e| format!("shapes.json, {name}: {e}"))?;
+            let radius = p["radius"].as_f64().unwrap_or(0.0);
+            parts.push(ConvexPart { vertices, faces: Vec::new(), radius });
+        }
+        out.insert(name, parts);
+    }
+    Ok(out)
+}
