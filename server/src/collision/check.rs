@@ -10,9 +10,12 @@ use parry3d_f64::shape::SharedShape;
 use super::shape::BodyShape;
 use super::ConvexPart;
 
-/// One body's prepared shape.
+/// One body's prepared shape: its convex parts (pose in the body frame, shape, AABB in the body
+/// frame). Parts are queried pairwise here rather than through a parry `Compound`: parry 0.22's
+/// composite-shape `contact` composes the relative pose wrongly (witness points and normal on
+/// the far side).
 struct Prepared {
-    shape: SharedShape,
+    parts: Vec<(Isometry3<f64>, SharedShape, Aabb)>,
     /// AABB in the body frame.
     local_aabb: Aabb,
     /// Largest distance of a shape point from the frame origin (radius included).
@@ -45,19 +48,25 @@ impl World {
             .iter()
             .map(|s| {
                 let s = s.as_ref()?;
-                let mut parts: Vec<(Isometry3<f64>, SharedShape)> = s.parts.iter().filter_map(prepared_part).collect();
+                let parts: Vec<(Isometry3<f64>, SharedShape, Aabb)> = s
+                    .parts
+                    .iter()
+                    .filter_map(prepared_part)
+                    .map(|(iso, sh)| {
+                        let bb = sh.compute_aabb(&iso);
+                        (iso, sh, bb)
+                    })
+                    .collect();
                 let reach = s
                     .parts
                     .iter()
                     .flat_map(|p| p.vertices.iter().map(move |v| nalgebra::Vector3::from(*v).norm() + p.radius.max(0.0)))
                     .fold(0.0, f64::max);
-                let shape = match parts.len() {
-                    0 => return None,
-                    1 if parts[0].0 == Isometry3::identity() => parts.remove(0).1,
-                    _ => SharedShape::compound(parts),
-                };
-                let local_aabb = shape.compute_local_aabb();
-                Some(Prepared { shape, local_aabb, reach })
+                let mut local_aabb = parts.first()?.2;
+                for p in &parts[1..] {
+                    local_aabb.merge(&p.2);
+                }
+                Some(Prepared { parts, local_aabb, reach })
             })
             .collect();
         World { bodies }
@@ -149,7 +158,7 @@ pub fn contacts_at(world: &World, poses: &[Isometry3<f64>], checked: &dyn Fn(usi
             continue;
         }
         let (Some(Some(sa)), Some(Some(sb))) = (world.bodies.get(a), world.bodies.get(b)) else { continue };
-        if let Ok(Some(c)) = query::contact(&poses[a], &*sa.shape, &poses[b], &*sb.shape, margin) {
+        if let Some(c) = pair_contact(sa, &poses[a], sb, &poses[b], margin) {
             if c.dist <= margin {
                 out.push(Contact {
                     a,
@@ -399,13 +408,13 @@ fn first_reaching(bound: &dyn Fn(usize) -> f64, from: usize, n: usize, need: f64
 /// One exact evaluation at a sample; updates the pair's record; returns the distance (0 when
 /// touching or penetrating: the lower bound used for skipping).
 fn evaluate(out: &mut PairSweep, pa: &Prepared, pb: &Prepared, xa: &Isometry3<f64>, xb: &Isometry3<f64>, t: f64) -> f64 {
-    let d = query::distance(xa, &*pa.shape, xb, &*pb.shape).unwrap_or(0.0);
+    let d = pair_distance(pa, xa, pb, xb);
     if d > 0.0 && d >= out.min_distance {
         return d;
     }
     // New minimum or contact: witness points (EPA depth when penetrating).
-    let (dist, p1, p2) = match query::contact(xa, &*pa.shape, xb, &*pb.shape, d.max(0.0) + 1e-9) {
-        Ok(Some(c)) => (c.dist, arr(&c.point1), arr(&c.point2)),
+    let (dist, p1, p2) = match pair_contact(pa, xa, pb, xb, d.max(0.0) + 1e-9) {
+        Some(c) => (c.dist, arr(&c.point1), arr(&c.point2)),
         _ => (d, out.point_a, out.point_b),
     };
     if dist <= 0.0 {
@@ -421,4 +430,61 @@ fn evaluate(out: &mut PairSweep, pa: &Prepared, pb: &Prepared, xa: &Isometry3<f6
         out.point_b = p2;
     }
     d.max(0.0)
+}
+
+/// Distance between two AABBs (0 when they overlap).
+fn aabb_gap(a: &Aabb, b: &Aabb) -> f64 {
+    let g = (a.mins - b.maxs).sup(&(b.mins - a.maxs)).sup(&nalgebra::Vector3::zeros());
+    g.norm()
+}
+
+/// Part pairs of two bodies at their poses, nearest AABBs first, with the AABB gap.
+fn part_pairs(pa: &Prepared, xa: &Isometry3<f64>, pb: &Prepared, xb: &Isometry3<f64>) -> Vec<(f64, usize, usize)> {
+    let wa: Vec<Aabb> = pa.parts.iter().map(|p| p.2.transform_by(xa)).collect();
+    let wb: Vec<Aabb> = pb.parts.iter().map(|p| p.2.transform_by(xb)).collect();
+    let mut v = Vec::with_capacity(wa.len() * wb.len());
+    for (i, a) in wa.iter().enumerate() {
+        for (j, b) in wb.iter().enumerate() {
+            v.push((aabb_gap(a, b), i, j));
+        }
+    }
+    v.sort_by(|x, y| x.0.total_cmp(&y.0));
+    v
+}
+
+/// Distance between two bodies (0 when touching or intersecting).
+fn pair_distance(pa: &Prepared, xa: &Isometry3<f64>, pb: &Prepared, xb: &Isometry3<f64>) -> f64 {
+    if let ([a], [b]) = (&pa.parts[..], &pb.parts[..]) {
+        return query::distance(&(xa * a.0), &*a.1, &(xb * b.0), &*b.1).unwrap_or(0.0);
+    }
+    let mut best = f64::INFINITY;
+    for (gap, i, j) in part_pairs(pa, xa, pb, xb) {
+        if gap >= best {
+            break;
+        }
+        let (a, b) = (&pa.parts[i], &pb.parts[j]);
+        best = best.min(query::distance(&(xa * a.0), &*a.1, &(xb * b.0), &*b.1).unwrap_or(0.0));
+        if best <= 0.0 {
+            break;
+        }
+    }
+    best
+}
+
+/// The contact (deepest or nearest part pair) of two bodies if their distance ≤ `prediction`.
+fn pair_contact(pa: &Prepared, xa: &Isometry3<f64>, pb: &Prepared, xb: &Isometry3<f64>, prediction: f64) -> Option<query::Contact> {
+    let mut best: Option<query::Contact> = None;
+    for (gap, i, j) in part_pairs(pa, xa, pb, xb) {
+        // Sorted by gap: nothing further can be within prediction, or nearer/deeper than best.
+        if gap > prediction || best.as_ref().is_some_and(|c| gap > c.dist.max(0.0)) {
+            break;
+        }
+        let (a, b) = (&pa.parts[i], &pb.parts[j]);
+        if let Ok(Some(c)) = query::contact(&(xa * a.0), &*a.1, &(xb * b.0), &*b.1, prediction) {
+            if best.as_ref().is_none_or(|x| c.dist < x.dist) {
+                best = Some(c);
+            }
+        }
+    }
+    best
 }

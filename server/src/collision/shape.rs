@@ -35,7 +35,7 @@ pub struct ShapeOptions {
     pub cylinder_sides: usize,
     /// A mesh with more triangles (default 100,000) is simplified by vertex clustering first.
     pub max_triangles: usize,
-    /// Clustering grid for simplification: cells per bounding-box diagonal (default 200).
+    /// Clustering grid for simplification: cells per bounding-box diagonal (default 100).
     pub simplify_cells: f64,
     /// Thickness of the fallback shape of a flat mesh, and radius for a line or point (default 1 mm).
     pub thin_thickness: f64,
@@ -52,7 +52,7 @@ impl Default for ShapeOptions {
             vhacd_resolution: 64,
             cylinder_sides: 24,
             max_triangles: 100_000,
-            simplify_cells: 200.0,
+            simplify_cells: 100.0,
             thin_thickness: 1e-3,
         }
     }
@@ -583,7 +583,7 @@ fn box_from_axes(pts: &[P3], axes: &Matrix3<f64>) -> Cand {
 
 /// Frames from the largest hull faces: normal, longest edge, their cross product.
 fn face_frames(hull: &ConvexPart, n: usize) -> Vec<Matrix3<f64>> {
-    let mut faces: Vec<(f64, V3, V3)> = hull
+    let mut faces: Vec<(f64, V3, [V3; 3])> = hull
         .faces
         .iter()
         .filter_map(|f| {
@@ -595,20 +595,22 @@ fn face_frames(hull: &ConvexPart, n: usize) -> Vec<Matrix3<f64>> {
             if area <= 1e-300 {
                 return None;
             }
-            let e = [b - a, c - b, a - c].into_iter().max_by(|x, y| x.norm().total_cmp(&y.norm()))?;
-            Some((area, nrm / area, e.normalize()))
+            Some((area, nrm / area, [b - a, c - b, a - c]))
         })
         .collect();
     faces.sort_by(|a, b| b.0.total_cmp(&a.0));
-    faces
-        .into_iter()
-        .take(n)
-        .map(|(_, z, x)| {
-            let y = z.cross(&x).normalize();
-            let x = y.cross(&z);
-            Matrix3::from_columns(&[x, y, z])
-        })
-        .collect()
+    let mut out = Vec::new();
+    for (_, z, edges) in faces.into_iter().take(n) {
+        for e in edges {
+            let x = e - z * z.dot(&e);
+            if x.norm() <= 1e-300 {
+                continue;
+            }
+            let x = x.normalize();
+            out.push(Matrix3::from_columns(&[x, z.cross(&x), z]));
+        }
+    }
+    out
 }
 
 /// Least-squares sphere through the hull vertices; radius: the largest distance (contains all).
@@ -673,7 +675,8 @@ fn fit_cylinder(hull_pts: &[P3], samples: &[P3], u: &V3, sides: usize) -> Option
     }
     let part = hull_part(&vs)?;
     let vol = part_volume(&part);
-    let err = shape_error(std::slice::from_ref(&part), samples);
+    // One-sided error, and the prism's edges stand off the round mesh by at least rc − r.
+    let err = shape_error(std::slice::from_ref(&part), samples).max(rc - r);
     Some(Cand { kind: ShapeKind::Cylinder, parts: vec![part], err, vol })
 }
 

@@ -204,6 +204,7 @@ fn huge_mesh_is_simplified_fast() {
     let t = std::time::Instant::now();
     let s = body_shape(&m, &opts());
     let el = t.elapsed().as_secs_f64();
+    eprintln!("huge mesh: {} triangles → {} vertices in {el:.2} s (debug build)", m.triangles.len(), s.vertex_count);
     assert!(s.warnings.iter().any(|w| w.contains("simplified")), "{:?}", s.warnings);
     assert!(s.vertex_count > 0);
     assert!(el < 5.0, "{el} s (debug build)");
@@ -238,12 +239,13 @@ fn contacts_match_hand_computed_distances() {
     let c = contacts_at(&w, &poses, &all, 0.0);
     assert_eq!(c.len(), 1, "{c:?}");
     assert_eq!((c[0].a, c[0].b), (0, 3));
-    assert!((c[0].distance + 0.01).abs() < 1e-9, "{}", c[0].distance);
+    // The meshes are f32: 0.05 is 0.05 ± 1.5e-9.
+    assert!((c[0].distance + 0.01).abs() < 1e-8, "{}", c[0].distance);
     assert!((c[0].normal[1] - 1.0).abs() < 1e-9, "{:?}", c[0].normal);
-    assert!((c[0].point_a[1] - 0.05).abs() < 1e-9 && (c[0].point_b[1] - 0.04).abs() < 1e-9, "{:?}", c[0]);
+    assert!((c[0].point_a[1] - 0.05).abs() < 1e-8 && (c[0].point_b[1] - 0.04).abs() < 1e-8, "{:?}", c[0]);
     let c = contacts_at(&w, &poses, &all, 0.025);
     let d01 = c.iter().find(|c| c.b == 1).map(|c| c.distance).unwrap_or(0.0);
-    assert!((d01 - 0.02).abs() < 1e-9, "{d01}");
+    assert!((d01 - 0.02).abs() < 1e-8, "{d01}");
     // Pair (1, 3): x gap 0.02, y ranges overlap → 0.02 as well.
     let near: Vec<_> = c.iter().map(|c| (c.a, c.b)).collect();
     assert_eq!(near, vec![(0, 1), (0, 3), (1, 3)], "{c:?}");
@@ -255,8 +257,8 @@ fn contacts_match_hand_computed_distances() {
     let ws = World::new(&[Some(box_shape(0.05)), Some(sph)]);
     let c = contacts_at(&ws, &[at(0.0, 0.0, 0.0), at(0.2, 0.0, 0.0)], &all, 1.0);
     assert_eq!(c.len(), 1);
-    assert!((c[0].distance - (0.2 - 0.05 - r)).abs() < 1e-9, "{c:?}");
-    assert!((c[0].point_b[0] - (0.2 - r)).abs() < 1e-9, "{c:?}");
+    assert!((c[0].distance - (0.2 - 0.05 - r)).abs() < 1e-8, "{c:?}");
+    assert!((c[0].point_b[0] - (0.2 - r)).abs() < 1e-8, "{c:?}");
 }
 
 #[test]
@@ -304,7 +306,7 @@ fn sweep_min_distance_of_passing_boxes() {
     let p = &s.pairs[0];
     assert_eq!((p.a, p.b), (0, 1));
     assert!(p.first_contact.is_none());
-    assert!(p.min_distance >= 0.03 - 1e-9 && p.min_distance <= 0.03 + o.abs_tolerance.max(0.03 * o.rel_tolerance), "{p:?}");
+    assert!(p.min_distance >= 0.03 - 1e-8 && p.min_distance <= 0.03 + o.abs_tolerance.max(0.03 * o.rel_tolerance), "{p:?}");
     // The far pair: a distance ≥ near_distance.
     assert!(s.pairs[1].min_distance >= o.near_distance);
     // Not checked: left out.
