@@ -96,7 +96,9 @@ static int drop(int argc, char** argv) {
     apex = h;
     while (bounces < 3 && t < 10.0) {
         double a;
-        int touching = cad2mo_collision_eval(world, r_0, R_T, v_0, w_a, checked, 2, force, torque);
+        int touching;
+        cad2mo_collision_eval(world, r_0, R_T, v_0, w_a, checked, 2, force, torque);
+        touching = cad2mo_collision_contacts(world);
         if (touching && !in_contact) {
             in_contact = 1;
             v_in = -v_0[5];

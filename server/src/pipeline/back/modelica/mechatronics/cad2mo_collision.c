@@ -202,7 +202,8 @@ static void c2mc_closest_triangle(const double* a, const double* b, const double
     l[0] = 1.0 - v - w; l[1] = v; l[2] = w;
 }
 
-/* Signed volume sign test: is the origin on the other side of plane (a,b,c) than d? */
+/* Is the origin on the other side of plane (a,b,c) than d? Also when d is (within rounding) in
+ * the plane: a flat tetrahedron encloses nothing, its closest point is on a face. */
 static int c2mc_outside_plane(const double* a, const double* b, const double* c, const double* d) {
     double ab[3], ac[3], n[3], ad[3];
     double sp, sd;
@@ -212,6 +213,9 @@ static int c2mc_outside_plane(const double* a, const double* b, const double* c,
     c2mc_sub(d, a, ad);
     sp = -c2mc_dot(a, n);
     sd = c2mc_dot(ad, n);
+    if (fabs(sd) <= 1e-12 * sqrt(c2mc_dot(n, n) * c2mc_dot(ad, ad))) {
+        return 1;
+    }
     return sp * sd < 0.0;
 }
 
@@ -498,24 +502,41 @@ static int c2mc_epa_run(c2mc_epa* p, const double* A, int na, const double* B, i
             }
         }
         if (gap <= tol || nvtx < 0 || p->nv >= C2MC_EPA_VERTS) {
-            /* converged: the face is a face of A - B (within rounding) */
-            double q[3], l[3], ww[3][3];
-            for (k = 0; k < 3; k++) {
-                c2mc_copy(p->v[f->i[k]].w, ww[k]);
-            }
+            /* converged: the face is in a face of A - B (within rounding). That face may be a
+             * polygon split into several coplanar triangles: the witness points come from the
+             * one holding the origin's projection q (the least residual). */
+            double q[3], l[3], bestres = -1.0;
+            int j, chosen = best;
             q[0] = f->d * f->n[0];
             q[1] = f->d * f->n[1];
             q[2] = f->d * f->n[2];
-            /* barycentric coordinates of q in the face (the closest point of the face to q) */
-            {
-                double a2[3], b2[3], c2[3];
-                c2mc_sub(ww[0], q, a2);
-                c2mc_sub(ww[1], q, b2);
-                c2mc_sub(ww[2], q, c2);
-                c2mc_closest_triangle(a2, b2, c2, l);
+            l[0] = 1.0;
+            l[1] = l[2] = 0.0;
+            for (j = 0; j < p->nf; j++) {
+                c2mc_face* g = &p->f[j];
+                double a2[3], b2[3], c2[3], t[3], res[3], rr;
+                double cr[3];
+                c2mc_cross(g->n, f->n, cr);
+                if (!g->alive || fabs(g->d - f->d) > 16.0 * tol || c2mc_dot(g->n, f->n) < 0.0 || c2mc_dot(cr, cr) > 1e-20) {
+                    continue;
+                }
+                c2mc_sub(p->v[g->i[0]].w, q, a2);
+                c2mc_sub(p->v[g->i[1]].w, q, b2);
+                c2mc_sub(p->v[g->i[2]].w, q, c2);
+                c2mc_closest_triangle(a2, b2, c2, t);
+                for (k = 0; k < 3; k++) {
+                    res[k] = t[0] * a2[k] + t[1] * b2[k] + t[2] * c2[k];
+                }
+                rr = c2mc_dot(res, res);
+                if (bestres < 0.0 || rr < bestres) {
+                    bestres = rr;
+                    chosen = j;
+                    c2mc_copy(t, l);
+                }
             }
             *depth = f->d > 0.0 ? f->d : 0.0;
             c2mc_copy(f->n, n);
+            f = &p->f[chosen];
             for (k = 0; k < 3; k++) {
                 pa[k] = l[0] * p->v[f->i[0]].a[k] + l[1] * p->v[f->i[1]].a[k] + l[2] * p->v[f->i[2]].a[k];
                 pb[k] = l[0] * p->v[f->i[0]].b[k] + l[1] * p->v[f->i[1]].b[k] + l[2] * p->v[f->i[2]].b[k];
@@ -717,6 +738,7 @@ typedef struct {
     double* friction;
     double* chi;       /* [nBodies] damping factor from the body's restitution */
     double exponent, vReg, vImpactMin;
+    int touching;      /* touching part pairs at the last evaluation */
     c2mc_epa* epa;
 } c2mc_world;
 
@@ -863,17 +885,17 @@ static void c2mc_apply(double* force, double* torque, const double* r_0, int i, 
 
 /* Contact forces: for n bodies at r_0[n,3], R_T[n,3,3], v_0[n,3], w_a[n,3] (resolved in frame_a),
  * every pair (i, j) with checked[i,j] or checked[j,i] nonzero; force[n,3] and torque[n,3] on each
- * body about its frame_a origin, resolved in world. Returns the number of touching part pairs. */
-C2MC_API int cad2mo_collision_eval(void* object, const double* r_0, const double* R_T, const double* v_0, const double* w_a,
+ * body about its frame_a origin, resolved in world. */
+C2MC_API void cad2mo_collision_eval(void* object, const double* r_0, const double* R_T, const double* v_0, const double* w_a,
                                  const int* checked, int n, double* force, double* torque) {
     c2mc_world* w = (c2mc_world*)object;
     int p, q, i, k, touching = 0;
     if (w == NULL) {
-        return 0;
+        return;
     }
     if (n != w->nBodies) {
         ModelicaError("cad2mo collision: the number of bodies differs from the world's");
-        return 0;
+        return;
     }
     for (i = 0; i < 3 * n; i++) {
         force[i] = 0.0;
@@ -932,7 +954,12 @@ C2MC_API int cad2mo_collision_eval(void* object, const double* r_0, const double
             c2mc_apply(force, torque, r_0, a, c, fvec, -1.0);
         }
     }
-    return touching;
+    w->touching = touching;
+}
+
+/* The number of touching part pairs at the last evaluation. */
+C2MC_API int cad2mo_collision_contacts(void* object) {
+    return object == NULL ? 0 : ((c2mc_world*)object)->touching;
 }
 
 /* Distance query between two parts (vertices in their bodies' frame_a coordinates) at poses
