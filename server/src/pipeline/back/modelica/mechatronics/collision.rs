@@ -42,9 +42,9 @@ package Collision "Contact forces between the bodies' convex collision shapes"
       annotation (Dialog(group="Contact law"));
     parameter Real friction(min=0) = 0.3 "Coulomb friction coefficient"
       annotation (Dialog(group="Contact law"));
-    parameter Modelica.Units.SI.Velocity vReg(min=1e-9) = 0.01 "Slip speed below which friction grows linearly with it"
+    parameter Modelica.Units.SI.Velocity vReg = 0.01 "Slip speed below which friction grows linearly with it"
       annotation (Dialog(group="Contact law"));
-    parameter Modelica.Units.SI.Velocity vImpactMin(min=1e-9) = 0.01 "Least approach speed the damping is scaled by"
+    parameter Modelica.Units.SI.Velocity vImpactMin = 0.01 "Least approach speed the damping is scaled by"
       annotation (Dialog(group="Contact law"));
     parameter Real bodyStiffness[nBodies](each min=0) = fill(stiffness, nBodies) "Stiffness per body (a pair: in series)"
       annotation (Dialog(group="Materials"));
@@ -56,9 +56,9 @@ package Collision "Contact forces between the bodies' convex collision shapes"
     input Real R_T[nBodies, 3, 3] "Orientations of the bodies' frame_a (R.T: world to frame_a)";
     input Real v_0[nBodies, 3](each final unit="m/s") "Velocities of the frame_a origins, resolved in world";
     input Real w_a[nBodies, 3](each final unit="rad/s") "Angular velocities of the bodies, resolved in frame_a";
-    Modelica.Blocks.Interfaces.RealOutput force[nBodies, 3](each final unit="N") "Contact force on each body at its frame_a origin, resolved in world"
+    Modelica.Blocks.Interfaces.RealOutput force[nBodies, 3] "Contact force on each body at its frame_a origin, resolved in world (N)"
       annotation (Placement(transformation(extent={{{{100,30}},{{120,50}}}})));
-    Modelica.Blocks.Interfaces.RealOutput torque[nBodies, 3](each final unit="N.m") "Contact torque on each body about its frame_a origin, resolved in world"
+    Modelica.Blocks.Interfaces.RealOutput torque[nBodies, 3] "Contact torque on each body about its frame_a origin, resolved in world (N.m)"
       annotation (Placement(transformation(extent={{{{100,-50}},{{120,-30}}}})));
   protected
     Internal.Shapes shapes = Internal.Shapes(nBodies, partBody, partVertices, partRadius, vertices, bodyStiffness, bodyRestitution, bodyFriction, exponent, vReg, vImpactMin) "The shapes and contact law in C";
@@ -211,7 +211,7 @@ pub fn declarations(pkg: &str, bodies: &[String], shapes: &[Option<Vec<ConvexPar
     for (k, &i) in shaped.iter().enumerate() {
         let _ = writeln!(
             s,
-            "  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque {}(resolveInFrame=Modelica.Mechanics.MultiBody.Types.ResolveInFrameB.world) if collisions \"Contact force and torque on {}\"\n    annotation (Placement(transformation(extent={{{{-10,-10}},{{10,10}}}}, origin={{-110,{}}})));",
+            "  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque {} if collisions \"Contact force and torque on {} (resolved in world)\"\n    annotation (Placement(transformation(extent={{{{-10,-10}},{{10,10}}}}, origin={{-110,{}}})));",
             force_name(&bodies[i]),
             bodies[i],
             20 - 30 * k as i64
