@@ -13,3 +13,11 @@ pub struct ConvexPart {
     pub faces: Vec<[u32; 3]>,
     pub radius: f64,
 }
+
+mod check;
+mod shape;
+#[cfg(test)]
+mod tests;
+
+pub use check::{contacts_at, sweep, Contact, PairSweep, Sweep, SweepOptions, World};
+pub use shape::{body_shape, obj_text, BodyShape, ShapeKind, ShapeOptions};

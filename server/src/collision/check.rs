@@ -1,0 +1,490 @@
+//! Distances and penetrations between bodies: at one pose ([`contacts_at`]) and along a sampled
+//! motion ([`sweep`]: BVH broad phase per block of samples, conservative skipping per pair).
+
+use nalgebra::{Isometry3, Point3, Translation3};
+use parry3d_f64::bounding_volume::{Aabb, BoundingVolume};
+use parry3d_f64::partitioning::{Bvh, BvhBuildStrategy};
+use parry3d_f64::query;
+use parry3d_f64::shape::SharedShape;
+
+use super::shape::BodyShape;
+use super::ConvexPart;
+
+/// One body's prepared shape: its convex parts (pose in the body frame, shape, AABB in the body
+/// frame). Parts are queried pairwise here rather than through a parry `Compound`: parry 0.22's
+/// composite-shape `contact` composes the relative pose wrongly (witness points and normal on
+/// the far side).
+struct Prepared {
+    parts: Vec<(Isometry3<f64>, SharedShape, Aabb)>,
+    /// AABB in the body frame.
+    local_aabb: Aabb,
+    /// Largest distance of a shape point from the frame origin (radius included).
+    reach: f64,
+}
+
+/// The prepared parry shapes of every body (None: no shape, or no usable part).
+pub struct World {
+    bodies: Vec<Option<Prepared>>,
+}
+
+fn prepared_part(p: &ConvexPart) -> Option<(Isometry3<f64>, SharedShape)> {
+    let r = p.radius.max(0.0);
+    let pts: Vec<Point3<f64>> = p.vertices.iter().map(|v| Point3::from(*v)).collect();
+    if !pts.iter().all(|q| q.coords.iter().all(|c| c.is_finite())) || !r.is_finite() {
+        return None;
+    }
+    match pts.len() {
+        0 => None,
+        1 => (r > 0.0).then(|| (Isometry3::from(Translation3::from(pts[0].coords)), SharedShape::ball(r))),
+        2 => (r > 0.0).then(|| (Isometry3::identity(), SharedShape::capsule(pts[0], pts[1], r))),
+        _ if r > 0.0 => Some((Isometry3::identity(), SharedShape::round_convex_hull(&pts, r)?)),
+        _ => Some((Isometry3::identity(), SharedShape::convex_hull(&pts)?)),
+    }
+}
+
+impl World {
+    pub fn new(shapes: &[Option<BodyShape>]) -> World {
+        let bodies = shapes
+            .iter()
+            .map(|s| {
+                let s = s.as_ref()?;
+                let parts: Vec<(Isometry3<f64>, SharedShape, Aabb)> = s
+                    .parts
+                    .iter()
+                    .filter_map(prepared_part)
+                    .map(|(iso, sh)| {
+                        let bb = sh.compute_aabb(&iso);
+                        (iso, sh, bb)
+                    })
+                    .collect();
+                let reach = s
+                    .parts
+                    .iter()
+                    .flat_map(|p| p.vertices.iter().map(move |v| nalgebra::Vector3::from(*v).norm() + p.radius.max(0.0)))
+                    .fold(0.0, f64::max);
+                let mut local_aabb = parts.first()?.2;
+                for p in &parts[1..] {
+                    local_aabb.merge(&p.2);
+                }
+                Some(Prepared { parts, local_aabb, reach })
+            })
+            .collect();
+        World { bodies }
+    }
+
+    /// Number of bodies (with or without shapes).
+    pub fn len(&self) -> usize {
+        self.bodies.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.bodies.is_empty()
+    }
+
+    /// Whether body `i` has a collision shape.
+    pub fn has_shape(&self, i: usize) -> bool {
+        self.bodies.get(i).is_some_and(|b| b.is_some())
+    }
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Contact {
+    pub a: usize,
+    pub b: usize,
+    /// Metres; < 0: penetration depth.
+    pub distance: f64,
+    /// Witness points, world.
+    pub point_a: [f64; 3],
+    pub point_b: [f64; 3],
+    /// Unit, from a to b (for a penetration: the direction to move b out of a).
+    pub normal: [f64; 3],
+}
+
+fn arr(p: &Point3<f64>) -> [f64; 3] {
+    [p.x, p.y, p.z]
+}
+
+/// Pairs of bodies whose world AABBs, each grown by `grow`, overlap (a < b, both with shapes).
+fn broad_pairs(aabbs: &[Option<Aabb>], grow: f64, out: &mut Vec<(usize, usize)>, seen: &mut Vec<u64>, stamp: u64) {
+    out.clear();
+    let ids: Vec<usize> = (0..aabbs.len()).filter(|&i| aabbs[i].is_some()).collect();
+    let leaves: Vec<Aabb> = ids.iter().filter_map(|&i| aabbs[i].map(|b| b.loosened(grow))).collect();
+    if leaves.len() < 2 {
+        return;
+    }
+    let n = aabbs.len();
+    if seen.len() < n * n {
+        seen.resize(n * n, 0);
+    }
+    let bvh = Bvh::from_leaves(BvhBuildStrategy::Binned, &leaves);
+    for (i, j) in bvh.leaf_pairs(&bvh, |x, y| x.aabb().intersects(&y.aabb())) {
+        let (i, j) = (ids[i as usize], ids[j as usize]);
+        if i == j {
+            continue;
+        }
+        let (a, b) = (i.min(j), i.max(j));
+        if seen[a * n + b] != stamp && leaves_overlap(&aabbs[a], &aabbs[b], grow) {
+            seen[a * n + b] = stamp;
+            out.push((a, b));
+        }
+    }
+    out.sort_unstable();
+}
+
+fn leaves_overlap(a: &Option<Aabb>, b: &Option<Aabb>, grow: f64) -> bool {
+    match (a, b) {
+        (Some(a), Some(b)) => a.loosened(grow).intersects(&b.loosened(grow)),
+        _ => false,
+    }
+}
+
+/// Pairs (a < b, `checked(a, b)` true, both with shapes) whose distance is ≤ `margin` (0.0:
+/// touching or intersecting) at the world poses of the bodies' frame_a. Broad phase: a BVH over
+/// the bodies' world AABBs grown by margin/2. Distance < 0 is the penetration depth (EPA).
+pub fn contacts_at(world: &World, poses: &[Isometry3<f64>], checked: &dyn Fn(usize, usize) -> bool, margin: f64) -> Vec<Contact> {
+    let margin = if margin.is_finite() { margin.max(0.0) } else { 0.0 };
+    let aabbs: Vec<Option<Aabb>> = world
+        .bodies
+        .iter()
+        .enumerate()
+        .map(|(i, b)| Some(b.as_ref()?.local_aabb.transform_by(poses.get(i)?)))
+        .collect();
+    let mut pairs = Vec::new();
+    let mut seen = Vec::new();
+    broad_pairs(&aabbs, margin / 2.0 + 1e-12, &mut pairs, &mut seen, 1);
+    let mut out = Vec::new();
+    for (a, b) in pairs {
+        if !checked(a, b) {
+            continue;
+        }
+        let (Some(Some(sa)), Some(Some(sb))) = (world.bodies.get(a), world.bodies.get(b)) else { continue };
+        if let Some(c) = pair_contact(sa, &poses[a], sb, &poses[b], margin) {
+            if c.dist <= margin {
+                out.push(Contact {
+                    a,
+                    b,
+                    distance: c.dist,
+                    point_a: arr(&c.point1),
+                    point_b: arr(&c.point2),
+                    normal: [c.normal1.x, c.normal1.y, c.normal1.z],
+                });
+            }
+        }
+    }
+    out
+}
+
+/// Options of [`sweep`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct SweepOptions {
+    /// `min_distance` is computed to within `max(abs_tolerance, rel_tolerance × d)` when it is
+    /// below `near_distance` (defaults 1 mm, 5 %, 0.05 m). Pairs never nearer than
+    /// `near_distance` (by their AABBs) report a distance ≥ `near_distance` that need not be
+    /// the minimum.
+    pub abs_tolerance: f64,
+    pub rel_tolerance: f64,
+    pub near_distance: f64,
+    /// Samples per broad-phase block (default 32).
+    pub block: usize,
+}
+
+impl Default for SweepOptions {
+    fn default() -> Self {
+        SweepOptions { abs_tolerance: 1e-3, rel_tolerance: 0.05, near_distance: 0.05, block: 32 }
+    }
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct PairSweep {
+    pub a: usize,
+    pub b: usize,
+    /// Smallest distance found (< 0: penetration), at time `at`, witness points in world.
+    pub min_distance: f64,
+    pub at: f64,
+    /// First sample time with distance ≤ 0.
+    pub first_contact: Option<f64>,
+    /// Largest penetration depth over the samples (≥ 0).
+    pub max_depth: f64,
+    pub point_a: [f64; 3],
+    pub point_b: [f64; 3],
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Sweep {
+    /// Every checked pair with shapes, a < b, in order.
+    pub pairs: Vec<PairSweep>,
+    pub samples: usize,
+    pub guarantee: String,
+}
+
+/// Per-pair sweep state.
+struct PairState {
+    out: PairSweep,
+    /// Next sample that must be evaluated (earlier ones are proven to be > threshold).
+    next: usize,
+    evaluated: bool,
+}
+
+/// Along a motion: body poses `poses(k)` at `times[k]`.
+///
+/// Guarantee (stated in [`Sweep::guarantee`] with the numbers of the run): let D_i(k) = |Δr| +
+/// θ·reach_i bound how far any point of body i moves from sample k to k+1 (Δr: frame origin
+/// displacement, θ: rotation angle, reach_i: the shape's largest distance from the frame
+/// origin). A pair is evaluated (parry GJK/EPA) at sample k; later samples j are skipped while
+/// d_k − Σ_{k≤m<j}(D_a(m) + D_b(m)) stays above a threshold ≥ 0, so every sample where a checked
+/// pair touches or penetrates is evaluated: `first_contact` and `max_depth` are exact over the
+/// samples. Blocks of samples where the pair's AABBs (swept over the block, grown by the step
+/// bounds and near_distance/2) do not overlap are skipped whole. Between samples, if each body
+/// moves by at most its step bound, no penetration deeper than δ = max_k (D_a(k) + D_b(k)) / 2
+/// is missed.
+pub fn sweep(
+    world: &World,
+    times: &[f64],
+    poses: &dyn Fn(usize) -> Vec<Isometry3<f64>>,
+    checked: &dyn Fn(usize, usize) -> bool,
+    opts: &SweepOptions,
+) -> Sweep {
+    let n = times.len();
+    let nb = world.bodies.len();
+    let mut states: Vec<PairState> = Vec::new();
+    let mut index = vec![usize::MAX; nb * nb];
+    for a in 0..nb {
+        for b in a + 1..nb {
+            if world.has_shape(a) && world.has_shape(b) && checked(a, b) {
+                index[a * nb + b] = states.len();
+                states.push(PairState {
+                    out: PairSweep {
+                        a,
+                        b,
+                        min_distance: f64::INFINITY,
+                        at: times.first().copied().unwrap_or(0.0),
+                        first_contact: None,
+                        max_depth: 0.0,
+                        point_a: [0.0; 3],
+                        point_b: [0.0; 3],
+                    },
+                    next: 0,
+                    evaluated: false,
+                });
+            }
+        }
+    }
+    if n == 0 || states.is_empty() {
+        return Sweep {
+            pairs: states.into_iter().map(|s| s.out).collect(),
+            samples: n,
+            guarantee: format!("{n} samples; nothing to check"),
+        };
+    }
+    // All poses (missing bodies: identity), and per body the prefix sums of the step bounds.
+    let all: Vec<Vec<Isometry3<f64>>> = (0..n)
+        .map(|k| {
+            let mut p = poses(k);
+            p.resize(nb, Isometry3::identity());
+            p
+        })
+        .collect();
+    let reach: Vec<f64> = world.bodies.iter().map(|b| b.as_ref().map_or(0.0, |p| p.reach)).collect();
+    // step[i * n + k] = D_i(k) (k < n-1); prefix[i * (n) + k] = Σ_{m<k} D_i(m).
+    let mut step = vec![0.0; nb * n];
+    let mut prefix = vec![0.0; nb * n];
+    let mut delta = 0.0f64;
+    for k in 0..n.saturating_sub(1) {
+        let (mut d1, mut d2) = (0.0f64, 0.0f64);
+        for i in 0..nb {
+            if !world.has_shape(i) {
+                continue;
+            }
+            let (p, q) = (&all[k][i], &all[k + 1][i]);
+            let dr = (q.translation.vector - p.translation.vector).norm();
+            let th = (p.rotation.inverse() * q.rotation).angle();
+            let d = dr + th * reach[i];
+            step[i * n + k] = d;
+            prefix[i * n + k + 1] = prefix[i * n + k] + d;
+            if d > d1 {
+                d2 = d1;
+                d1 = d;
+            } else if d > d2 {
+                d2 = d;
+            }
+        }
+        delta = delta.max((d1 + d2) / 2.0);
+    }
+    let near = opts.near_distance.max(0.0);
+    let block = opts.block.max(1);
+    let mut aabbs: Vec<Option<Aabb>> = vec![None; nb];
+    let mut pairs = Vec::new();
+    let mut seen = Vec::new();
+    let mut evaluations = 0usize;
+    let mut s0 = 0usize;
+    let mut stamp = 0u64;
+    loop {
+        let s1 = (s0 + block).min(n - 1);
+        // Swept AABBs over [s0, s1], grown by the largest step bound in the block.
+        for (i, slot) in aabbs.iter_mut().enumerate() {
+            *slot = world.bodies[i].as_ref().map(|b| {
+                let mut bb = b.local_aabb.transform_by(&all[s0][i]);
+                let mut grow = 0.0f64;
+                for k in s0 + 1..=s1 {
+                    bb.merge(&b.local_aabb.transform_by(&all[k][i]));
+                    grow = grow.max(step[i * n + k - 1]);
+                }
+                bb.loosened(grow)
+            });
+        }
+        stamp += 1;
+        broad_pairs(&aabbs, near / 2.0 + 1e-12, &mut pairs, &mut seen, stamp);
+        for &(a, b) in &pairs {
+            let si = index[a * nb + b];
+            if si == usize::MAX {
+                continue;
+            }
+            let (Some(pa), Some(pb)) = (&world.bodies[a], &world.bodies[b]) else { continue };
+            let st = &mut states[si];
+            let mut k = st.next.max(s0);
+            while k <= s1 {
+                let d = evaluate(&mut st.out, pa, pb, &all[k][a], &all[k][b], times[k]);
+                evaluations += 1;
+                st.evaluated = true;
+                // Skip while the lower bound stays above thr.
+                let m = st.out.min_distance.min(near);
+                let thr = (m - opts.abs_tolerance.max(opts.rel_tolerance * m)).max(0.0);
+                let need = d - thr; // skip j while B(k, j) < need
+                let base = prefix[a * n + k] + prefix[b * n + k];
+                let bound = |j: usize| prefix[a * n + j] + prefix[b * n + j] - base;
+                k = if need <= 0.0 { k + 1 } else { first_reaching(&bound, k + 1, n, need) };
+            }
+            st.next = k;
+        }
+        if s1 >= n - 1 {
+            break;
+        }
+        s0 = s1;
+    }
+    // Pairs never near: one evaluation at the first sample (a distance ≥ near_distance).
+    for st in states.iter_mut().filter(|s| !s.evaluated) {
+        let (Some(pa), Some(pb)) = (&world.bodies[st.out.a], &world.bodies[st.out.b]) else { continue };
+        let (a, b) = (st.out.a, st.out.b);
+        evaluate(&mut st.out, pa, pb, &all[0][a], &all[0][b], times[0]);
+        evaluations += 1;
+    }
+    let guarantee = format!(
+        "{n} samples, {evaluations} pair evaluations. Conservative sampling: a pair is skipped at a sample only while its last exact distance minus the bound on the relative motion since (per body: frame displacement + rotation angle × the shape's reach) stays positive, so every sample where a checked pair touches or penetrates is found (first_contact, max_depth exact over the samples); between samples no penetration deeper than {delta:.3e} m (half the largest relative step bound) is missed. min_distance below {near} m is the minimum over the samples to within max({} m, {} × d); larger values are only known to be ≥ {near} m.",
+        opts.abs_tolerance, opts.rel_tolerance
+    );
+    Sweep { pairs: states.into_iter().map(|s| s.out).collect(), samples: n, guarantee }
+}
+
+/// The smallest j in [from, n) with bound(j) ≥ need (n if none); bound is nondecreasing.
+fn first_reaching(bound: &dyn Fn(usize) -> f64, from: usize, n: usize, need: f64) -> usize {
+    if from >= n || bound(from) >= need {
+        return from;
+    }
+    // Gallop, then bisect: bound(lo) < need.
+    let mut lo = from;
+    let mut step = 1usize;
+    let mut hi = loop {
+        let j = lo + step;
+        if j >= n {
+            break n;
+        }
+        if bound(j) >= need {
+            break j;
+        }
+        lo = j;
+        step *= 2;
+    };
+    while hi - lo > 1 {
+        let mid = lo + (hi - lo) / 2;
+        if mid < n && bound(mid) >= need {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    hi
+}
+
+/// One exact evaluation at a sample; updates the pair's record; returns the distance (0 when
+/// touching or penetrating: the lower bound used for skipping).
+fn evaluate(out: &mut PairSweep, pa: &Prepared, pb: &Prepared, xa: &Isometry3<f64>, xb: &Isometry3<f64>, t: f64) -> f64 {
+    let d = pair_distance(pa, xa, pb, xb);
+    if d > 0.0 && d >= out.min_distance {
+        return d;
+    }
+    // New minimum or contact: witness points (EPA depth when penetrating).
+    let (dist, p1, p2) = match pair_contact(pa, xa, pb, xb, d.max(0.0) + 1e-9) {
+        Some(c) => (c.dist, arr(&c.point1), arr(&c.point2)),
+        _ => (d, out.point_a, out.point_b),
+    };
+    if dist <= 0.0 {
+        if out.first_contact.is_none() {
+            out.first_contact = Some(t);
+        }
+        out.max_depth = out.max_depth.max(-dist);
+    }
+    if dist < out.min_distance {
+        out.min_distance = dist;
+        out.at = t;
+        out.point_a = p1;
+        out.point_b = p2;
+    }
+    d.max(0.0)
+}
+
+/// Distance between two AABBs (0 when they overlap).
+fn aabb_gap(a: &Aabb, b: &Aabb) -> f64 {
+    let g = (a.mins - b.maxs).sup(&(b.mins - a.maxs)).sup(&nalgebra::Vector3::zeros());
+    g.norm()
+}
+
+/// Part pairs of two bodies at their poses, nearest AABBs first, with the AABB gap.
+fn part_pairs(pa: &Prepared, xa: &Isometry3<f64>, pb: &Prepared, xb: &Isometry3<f64>) -> Vec<(f64, usize, usize)> {
+    let wa: Vec<Aabb> = pa.parts.iter().map(|p| p.2.transform_by(xa)).collect();
+    let wb: Vec<Aabb> = pb.parts.iter().map(|p| p.2.transform_by(xb)).collect();
+    let mut v = Vec::with_capacity(wa.len() * wb.len());
+    for (i, a) in wa.iter().enumerate() {
+        for (j, b) in wb.iter().enumerate() {
+            v.push((aabb_gap(a, b), i, j));
+        }
+    }
+    v.sort_by(|x, y| x.0.total_cmp(&y.0));
+    v
+}
+
+/// Distance between two bodies (0 when touching or intersecting).
+fn pair_distance(pa: &Prepared, xa: &Isometry3<f64>, pb: &Prepared, xb: &Isometry3<f64>) -> f64 {
+    if let ([a], [b]) = (&pa.parts[..], &pb.parts[..]) {
+        return query::distance(&(xa * a.0), &*a.1, &(xb * b.0), &*b.1).unwrap_or(0.0);
+    }
+    let mut best = f64::INFINITY;
+    for (gap, i, j) in part_pairs(pa, xa, pb, xb) {
+        if gap >= best {
+            break;
+        }
+        let (a, b) = (&pa.parts[i], &pb.parts[j]);
+        best = best.min(query::distance(&(xa * a.0), &*a.1, &(xb * b.0), &*b.1).unwrap_or(0.0));
+        if best <= 0.0 {
+            break;
+        }
+    }
+    best
+}
+
+/// The contact (deepest or nearest part pair) of two bodies if their distance ≤ `prediction`.
+fn pair_contact(pa: &Prepared, xa: &Isometry3<f64>, pb: &Prepared, xb: &Isometry3<f64>, prediction: f64) -> Option<query::Contact> {
+    let mut best: Option<query::Contact> = None;
+    for (gap, i, j) in part_pairs(pa, xa, pb, xb) {
+        // Sorted by gap: nothing further can be within prediction, or nearer/deeper than best.
+        if gap > prediction || best.as_ref().is_some_and(|c| gap > c.dist.max(0.0)) {
+            break;
+        }
+        let (a, b) = (&pa.parts[i], &pb.parts[j]);
+        if let Ok(Some(c)) = query::contact(&(xa * a.0), &*a.1, &(xb * b.0), &*b.1, prediction) {
+            if best.as_ref().is_none_or(|x| c.dist < x.dist) {
+                best = Some(c);
+            }
+        }
+    }
+    best
+}

@@ -1,0 +1,136 @@
+/* Test harness of cad2mo_collision.c (tests/collision_c.rs runs it).
+ *
+ *   harness query   reads one pair per line on stdin:
+ *                   na ra va[na*3] r0a[3] RTa[9] nb rb vb[nb*3] r0b[3] RTb[9]
+ *                   and writes per line: ok dist pa[3] pb[3] n[3] (17 significant digits)
+ *   harness drop e stiffness exponent mass radius height dt
+ *                   drops a sphere (one vertex grown by radius) on a fixed box under gravity
+ *                   through the world's contact law, integrated with semi-implicit Euler at
+ *                   the fixed step dt, and writes one line per bounce: v_in v_out apex */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <math.h>
+#include "ModelicaUtilities.h"
+#include "cad2mo_collision.c"
+
+void ModelicaError(const char* string) {
+    fprintf(stderr, "ModelicaError: %s\n", string);
+    exit(2);
+}
+
+static int read_doubles(double* x, int n) {
+    int i;
+    for (i = 0; i < n; i++) {
+        if (scanf("%lf", &x[i]) != 1) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
+static int query(void) {
+    int na, nb;
+    double ra, rb;
+    while (scanf("%d %lf", &na, &ra) == 2) {
+        double *va, *vb, pa_[12], pb_[12], dist, pa[3], pb[3], n[3];
+        int ok;
+        if (na < 1 || na > 100000) {
+            return 1;
+        }
+        va = (double*)malloc(sizeof(double) * 3 * (size_t)na);
+        if (va == NULL || !read_doubles(va, 3 * na) || !read_doubles(pa_, 12)) {
+            return 1;
+        }
+        if (scanf("%d %lf", &nb, &rb) != 2 || nb < 1 || nb > 100000) {
+            return 1;
+        }
+        vb = (double*)malloc(sizeof(double) * 3 * (size_t)nb);
+        if (vb == NULL || !read_doubles(vb, 3 * nb) || !read_doubles(pb_, 12)) {
+            return 1;
+        }
+        ok = cad2mo_collision_query(va, na, ra, pa_, pa_ + 3, vb, nb, rb, pb_, pb_ + 3, &dist, pa, pb, n);
+        printf("%d %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n", ok, dist, pa[0], pa[1], pa[2], pb[0],
+               pb[1], pb[2], n[0], n[1], n[2]);
+        free(va);
+        free(vb);
+    }
+    return 0;
+}
+
+static int drop(int argc, char** argv) {
+    /* body 1: the box [-1,1]x[-1,1]x[-1,0] at rest; body 2: the sphere */
+    static const double box[24] = {-1, -1, -1, 1, -1, -1, -1, 1, -1, 1, 1, -1, -1, -1, 0, 1, -1, 0, -1, 1, 0, 1, 1, 0};
+    double e, K, ne, m, radius, h, dt, t = 0.0, g = 9.81;
+    double vertices[27], radii[2], stiffness[2], restitution[2], friction[2];
+    int partBody[2] = {1, 2}, partVertices[2] = {8, 1}, checked[4] = {0, 1, 1, 0};
+    double r_0[6] = {0, 0, 0, 0, 0, 0}, R_T[18], v_0[6] = {0, 0, 0, 0, 0, 0}, w_a[6] = {0, 0, 0, 0, 0, 0};
+    double force[6], torque[6], v_in = 0.0, apex;
+    int in_contact = 0, bounces = 0, i;
+    void* world;
+    if (argc < 9) {
+        return 1;
+    }
+    e = atof(argv[2]);
+    K = atof(argv[3]);
+    ne = atof(argv[4]);
+    m = atof(argv[5]);
+    radius = atof(argv[6]);
+    h = atof(argv[7]);
+    dt = atof(argv[8]);
+    memcpy(vertices, box, sizeof(box));
+    vertices[24] = vertices[25] = vertices[26] = 0.0;
+    radii[0] = 0.0;
+    radii[1] = radius;
+    for (i = 0; i < 2; i++) {
+        stiffness[i] = K;
+        restitution[i] = e;
+        friction[i] = 0.5;
+    }
+    for (i = 0; i < 18; i++) {
+        R_T[i] = (i % 9 == 0 || i % 9 == 4 || i % 9 == 8) ? 1.0 : 0.0;
+    }
+    world = cad2mo_collision_open(2, 2, partBody, partVertices, radii, 9, vertices, stiffness, restitution, friction, ne,
+                                  1e-3, 1e-3);
+    r_0[5] = radius + h;
+    apex = h;
+    while (bounces < 3 && t < 10.0) {
+        double a;
+        int touching;
+        cad2mo_collision_eval(world, r_0, R_T, v_0, w_a, checked, 2, force, torque);
+        touching = cad2mo_collision_contacts(world);
+        if (touching && !in_contact) {
+            in_contact = 1;
+            v_in = -v_0[5];
+        } else if (!touching && in_contact) {
+            in_contact = 0;
+            apex = 0.0;
+            bounces++;
+            printf("%.17g %.17g ", v_in, v_0[5]);
+        }
+        if (!in_contact && bounces > 0 && v_0[5] <= 0.0 && apex == 0.0) {
+            apex = r_0[5] - radius;
+            printf("%.17g\n", apex);
+        }
+        a = force[5] / m - g;
+        v_0[5] += a * dt;
+        r_0[5] += v_0[5] * dt;
+        t += dt;
+    }
+    if (bounces > 0 && apex == 0.0) {
+        printf("0\n");
+    }
+    cad2mo_collision_close(world);
+    return 0;
+}
+
+int main(int argc, char** argv) {
+    if (argc >= 2 && strcmp(argv[1], "query") == 0) {
+        return query();
+    }
+    if (argc >= 2 && strcmp(argv[1], "drop") == 0) {
+        return drop(argc, argv);
+    }
+    fprintf(stderr, "usage: harness query | harness drop e stiffness exponent mass radius height dt\n");
+    return 1;
+}
