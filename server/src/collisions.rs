@@ -21,7 +21,7 @@ pub struct VersionShapes {
     /// Every body, in report order (the package's).
     pub bodies: Vec<String>,
     pub shapes: Vec<Option<BodyShape>>,
-    /// Pairs joined by a joint (indices into `bodies`, a < b) and the joint's name.
+    /// Pairs allowed to touch by default (indices into `bodies`, a < b), and why.
     pub joined: BTreeMap<(usize, usize), String>,
     /// World pose of each body's frame_a at the CAD pose.
     pub cad: Vec<Isometry3<f64>>,
@@ -46,18 +46,13 @@ impl VersionShapes {
             .map(|a| a.iter().filter_map(|b| b["modelica_name"].as_str().map(str::to_string)).collect())
             .unwrap_or_default();
         let index: BTreeMap<&str, usize> = bodies.iter().enumerate().map(|(i, n)| (n.as_str(), i)).collect();
+        // The pairs allowed by default, as the conversion decided (joints, welded groups).
         let mut joined = BTreeMap::new();
-        for j in report["joints"].as_array().into_iter().flatten() {
-            let (Some(a), Some(b)) = (
-                j["base_body"].as_str().and_then(|n| index.get(n)),
-                j["follower_body"].as_str().and_then(|n| index.get(n)),
-            ) else {
+        for p in report["collision"]["default_allowed"].as_array().into_iter().flatten() {
+            let (Some(&a), Some(&b)) = (p["a"].as_str().and_then(|n| index.get(n)), p["b"].as_str().and_then(|n| index.get(n))) else {
                 continue;
             };
-            if a != b {
-                let name = j["modelica_name"].as_str().filter(|n| !n.is_empty()).or(j["cad_name"].as_str()).unwrap_or("a joint");
-                joined.entry((*a.min(b), *a.max(b))).or_insert_with(|| name.to_string());
-            }
+            joined.insert((a.min(b), a.max(b)), p["why"].as_str().unwrap_or("allowed by default").to_string());
         }
         let mut cad = Vec::with_capacity(bodies.len());
         for b in report["bodies"].as_array().into_iter().flatten() {
@@ -144,7 +139,7 @@ pub fn matrix(v: &VersionShapes, edits: &Edits) -> MatrixView {
             let allowed = edit.unwrap_or(default);
             let why = match (edit, joint) {
                 (Some(_), _) => "set by the user".to_string(),
-                (None, Some(j)) => format!("joined by {j}"),
+                (None, Some(j)) => j.clone(),
                 (None, None) => "not joined: checked".to_string(),
             };
             pairs.push(PairView { a: v.bodies[i].clone(), b: v.bodies[j].clone(), allowed, default, custom: edit.is_some(), why });

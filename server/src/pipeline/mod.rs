@@ -304,7 +304,8 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
     // Collision shapes of every body with a mesh; interferences at the CAD pose are warnings.
     obs.progress(Stage::Collision, 0, 1);
     let names: Vec<String> = pkg.layout.names.as_ref().map(|n| n.bodies.clone()).unwrap_or_default();
-    let collision = back::collision_shapes::Collision::new(&a.model, &names, &opts.collision_edits, &Default::default());
+    let joint_names: Vec<String> = pkg.layout.names.as_ref().map(|n| n.joints.clone()).unwrap_or_default();
+    let collision = back::collision_shapes::Collision::new(&a.model, &names, &joint_names, &opts.collision_edits, &Default::default());
     let (collision_report, collision_warnings) = collision.report(&a.model, &names);
     obs.progress(Stage::Collision, 1, 1);
     report.warnings.extend(collision_warnings);

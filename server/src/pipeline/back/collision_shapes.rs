@@ -7,7 +7,7 @@
 //! otherwise; every other pair is checked unless the user allowed it. Edits are keyed by the
 //! bodies' Modelica names, so they survive CAD changes.
 
-use std::collections::{BTreeMap, BTreeSet};
+use std::collections::BTreeMap;
 
 use nalgebra::Isometry3;
 use serde::Serialize;
@@ -21,8 +21,17 @@ pub type AllowedEdits = BTreeMap<(String, String), bool>;
 /// The collision geometry of a model and the rule for its pairs.
 pub struct Collision {
     pub shapes: Vec<Option<BodyShape>>,
-    joined: BTreeSet<(usize, usize)>,
+    /// Pairs allowed to touch by default, and why: joined by a joint, or welded together.
+    joined: BTreeMap<(usize, usize), String>,
     edits: BTreeMap<(usize, usize), bool>,
+}
+
+/// A pair allowed to touch by default.
+#[derive(Serialize, Debug, Clone)]
+pub struct AllowedPair {
+    pub a: String,
+    pub b: String,
+    pub why: String,
 }
 
 #[derive(Serialize, Debug, Clone)]
@@ -59,21 +68,70 @@ pub struct CollisionReport {
     pub interferences: Vec<InterferenceReport>,
     /// How many pairs of bodies with shapes are checked (the others are allowed to touch).
     pub checked_pairs: usize,
+    /// Pairs of bodies with shapes allowed to touch by default (the user may change them).
+    pub default_allowed: Vec<AllowedPair>,
 }
 
 impl Collision {
     /// Shapes for every body with a mesh; pairs joined by a joint; the user's edits by name.
-    pub fn new(model: &Model, names: &[String], edits: &AllowedEdits, opts: &ShapeOptions) -> Collision {
-        let shapes = model.bodies.iter().map(|b| b.mesh.as_ref().map(|m| collision::body_shape(m, opts))).collect();
+    pub fn new(model: &Model, names: &[String], joint_names: &[String], edits: &AllowedEdits, opts: &ShapeOptions) -> Collision {
+        let shapes = model
+            .bodies
+            .iter()
+            .map(|b| {
+                b.mesh.as_ref().map(|m| {
+                    let mut s = collision::body_shape(m, opts);
+                    // Mesh coordinates are f32: written with the digits they have (0.06, not
+                    // 0.05999999865889549); computed corners move by less than 1e-7 of their size.
+                    for p in &mut s.parts {
+                        for v in &mut p.vertices {
+                            *v = v.map(tidy);
+                        }
+                        p.radius = tidy(p.radius);
+                    }
+                    s
+                })
+            })
+            .collect();
         let body_of = |f| match model.frame(f).owner {
             FrameOwner::Body(b) => Some(b.index()),
             FrameOwner::Ground(_) => None,
         };
-        let mut joined = BTreeSet::new();
-        for j in &model.joints {
+        // Welded bodies move as one: a rigid group. Bodies of one group, and of two groups joined
+        // by a joint, may touch by default.
+        let n = model.bodies.len();
+        let mut group: Vec<usize> = (0..n).collect();
+        fn root(g: &mut [usize], mut i: usize) -> usize {
+            while g[i] != i {
+                g[i] = g[g[i]];
+                i = g[i];
+            }
+            i
+        }
+        for j in model.joints.iter().filter(|j| j.is_weld()) {
             if let (Some(a), Some(b)) = (body_of(j.base), body_of(j.follower)) {
-                if a != b {
-                    joined.insert((a.min(b), a.max(b)));
+                let (ra, rb) = (root(&mut group, a), root(&mut group, b));
+                group[ra] = rb;
+            }
+        }
+        let mut links: BTreeMap<(usize, usize), String> = BTreeMap::new();
+        for (k, j) in model.joints.iter().enumerate().filter(|(_, j)| !j.is_weld()) {
+            if let (Some(a), Some(b)) = (body_of(j.base), body_of(j.follower)) {
+                let (ra, rb) = (root(&mut group, a), root(&mut group, b));
+                if ra != rb {
+                    let name = joint_names.get(k).cloned().unwrap_or_else(|| j.cad_name.clone());
+                    links.entry((ra.min(rb), ra.max(rb))).or_insert(name);
+                }
+            }
+        }
+        let mut joined = BTreeMap::new();
+        for a in 0..n {
+            for b in a + 1..n {
+                let (ra, rb) = (root(&mut group, a), root(&mut group, b));
+                if ra == rb {
+                    joined.insert((a, b), "welded together (one rigid group)".to_string());
+                } else if let Some(j) = links.get(&(ra.min(rb), ra.max(rb))) {
+                    joined.insert((a, b), format!("joined by {j}"));
                 }
             }
         }
@@ -88,15 +146,15 @@ impl Collision {
         Collision { shapes, joined, edits }
     }
 
-    /// Whether bodies `a` and `b` are joined by a joint (allowed to touch by default).
-    pub fn joined(&self, a: usize, b: usize) -> bool {
-        self.joined.contains(&(a.min(b), a.max(b)))
+    /// Why bodies `a` and `b` may touch by default (`None`: they are checked by default).
+    pub fn joined(&self, a: usize, b: usize) -> Option<&str> {
+        self.joined.get(&(a.min(b), a.max(b))).map(String::as_str)
     }
 
     /// Whether the pair is checked (not allowed to touch).
     pub fn checked(&self, a: usize, b: usize) -> bool {
         let key = (a.min(b), a.max(b));
-        a != b && !self.edits.get(&key).copied().unwrap_or_else(|| self.joined.contains(&key))
+        a != b && !self.edits.get(&key).copied().unwrap_or_else(|| self.joined.contains_key(&key))
     }
 
     /// The convex parts of each body (None: no shape), for the Modelica contact code.
@@ -134,6 +192,13 @@ impl Collision {
         }
         let with: Vec<usize> = (0..self.shapes.len()).filter(|&i| self.shapes[i].is_some()).collect();
         r.checked_pairs = with.iter().enumerate().map(|(k, &a)| with[k + 1..].iter().filter(|&&b| self.checked(a, b)).count()).sum();
+        for (k, &a) in with.iter().enumerate() {
+            for &b in &with[k + 1..] {
+                if let Some(why) = self.joined(a, b) {
+                    r.default_allowed.push(AllowedPair { a: names[a].clone(), b: names[b].clone(), why: why.to_string() });
+                }
+            }
+        }
         let world = collision::World::new(&self.shapes);
         let poses = cad_poses(model);
         let mut warnings = Vec::new();
@@ -180,6 +245,11 @@ impl Collision {
 /// The world pose of every body's frame_a (CS1) at the CAD pose.
 pub fn cad_poses(model: &Model) -> Vec<Isometry3<f64>> {
     model.bodies.iter().map(|b| model.frame(b.cs1).pose).collect()
+}
+
+/// `x` rounded to f32 precision, as the shortest decimal of that f32.
+fn tidy(x: f64) -> f64 {
+    (x as f32).to_string().parse().unwrap_or(x)
 }
 
 fn mm(x: f64) -> String {
