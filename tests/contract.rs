@@ -178,7 +178,7 @@ async fn the_service_keeps_its_contract() {
         config += &format!("{} = {}\n", toml_str(k), toml_str(v));
     }
     config += &format!("\"path.version\" = {version}\n\"query.from\" = 1\n\"query.to\" = {version}\n\n");
-    let operations: [Operation; 31] = [
+    let operations: [Operation; 33] = [
         ("getResult", vec![("path.result_id", &result_ids[0])], ""),
         ("deleteResult", vec![("path.result_id", &result_ids[1])], ""),
         ("listResultVariables", vec![("path.result_id", &result_ids[0])], ""),
@@ -193,6 +193,8 @@ async fn the_service_keeps_its_contract() {
         ("deleteMotion", vec![("path.motion_id", &motion_ids[1])], ""),
         ("getTrajectory", vec![("path.motion_id", &motion_ids[0])], PLANNABLE),
         ("getSizing", vec![("path.motion_id", &motion_ids[0])], PLANNABLE),
+        ("getMotionCollisions", vec![("path.motion_id", &motion_ids[0])], PLANNABLE),
+        ("putCollisionMatrix", vec![], "both bodies of a pair must have collision shapes, differ, and appear once"),
         ("createMotion", vec![], MOTION_RULES),
         ("putJointLimits", vec![], "position limits must contain the CAD pose, rates must be > 0"),
         ("deleteModel", vec![("path.model_id", &doomed_model)], ""),
