@@ -202,6 +202,25 @@ impl Collision {
         let world = collision::World::new(&self.shapes);
         let poses = cad_poses(model);
         let mut warnings = Vec::new();
+        // Bodies with mass but no mesh cannot collide (massless root parts are frame hubs).
+        let bare: Vec<&str> = (0..self.shapes.len())
+            .filter(|&i| self.shapes[i].is_none() && model.bodies[i].mass > 0.0)
+            .filter_map(|i| names.get(i).map(String::as_str))
+            .collect();
+        if !bare.is_empty() {
+            let shown: Vec<&str> = bare.iter().copied().take(10).collect();
+            let more = if bare.len() > shown.len() { format!(" and {} more", bare.len() - shown.len()) } else { String::new() };
+            warnings.push(Warning::new(
+                "no-collision-shape",
+                format!("{} bod{} with mass but no mesh ha{} no collision shape and cannot collide: {}{more}", bare.len(), if bare.len() == 1 { "y" } else { "ies" }, if bare.len() == 1 { "s" } else { "ve" }, shown.join(", ")),
+                "collision shapes".to_string(),
+            ));
+        }
+        for (i, s) in self.shapes.iter().enumerate() {
+            for w in s.iter().flat_map(|s| &s.warnings) {
+                warnings.push(Warning::new("collision-shape", w.clone(), format!("body {}", names.get(i).map_or("?", String::as_str))));
+            }
+        }
         for c in collision::contacts_at(&world, &poses, &|a, b| self.checked(a, b), 0.0) {
             if c.distance >= 0.0 {
                 continue;
