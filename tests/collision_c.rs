@@ -238,6 +238,76 @@ fn gjk_epa_agree_with_parry_on_random_pairs() {
 }
 
 #[test]
+fn contact_forces_follow_the_law_and_balance() {
+    let tmp = tempfile::tempdir().expect("tempdir");
+    let Some(exe) = build(tmp.path()) else { return };
+    let mut rng = Rng(0x00F0_12CE_5EED_0002);
+    let (k_pair, mu, v_reg) = (1e5, 0.4, 0.01);
+    let mut cases = Vec::new();
+    let mut input = String::new();
+    while cases.len() < 2000 {
+        let (pa, ra) = random_part(&mut rng, cases.len() % 2 == 1);
+        let (pb, rb) = random_part(&mut rng, cases.len() % 2 == 1);
+        if ConvexPolyhedron::from_convex_hull(&pa).is_none() || ConvexPolyhedron::from_convex_hull(&pb).is_none() {
+            continue;
+        }
+        let pose_a = Isometry3::from_parts(Translation3::from(Vector3::new(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0))), rng.rotation());
+        let offset = rng.unit() * rng.uniform(0.0, 0.8);
+        let pose_b = Isometry3::from_parts(Translation3::from(pose_a.translation.vector + offset), rng.rotation());
+        let vel: Vec<f64> = (0..12).map(|_| rng.uniform(-1.0, 1.0)).collect();
+        part_text(&pa, ra, &pose_a, &mut input);
+        part_text(&pb, rb, &pose_b, &mut input);
+        for v in &vel {
+            input.push_str(&format!("{} ", fmt(*v)));
+        }
+        input.push_str(&format!("{} {} {}\n", fmt(k_pair), fmt(mu), fmt(v_reg)));
+        cases.push((pose_a, pose_b, vel));
+    }
+    let mut child = Command::new(&exe).arg("eval").stdin(Stdio::piped()).stdout(Stdio::piped()).stderr(Stdio::piped()).spawn().expect("start the harness");
+    let mut stdin = child.stdin.take().expect("stdin");
+    let feeder = std::thread::spawn(move || stdin.write_all(input.as_bytes()).expect("feed the harness"));
+    let out = child.wait_with_output().expect("harness");
+    feeder.join().expect("feeder");
+    assert!(out.status.success(), "harness failed: {}", String::from_utf8_lossy(&out.stderr));
+    let text = String::from_utf8(out.stdout).expect("utf-8");
+    let (mut touching, mut max_rel) = (0, 0.0f64);
+    for (k, (line, (pose_a, pose_b, vel))) in text.lines().zip(&cases).enumerate() {
+        let x: Vec<f64> = line.split_whitespace().map(|t| t.parse().expect("number")).collect();
+        assert_eq!(x.len(), 23, "{line}");
+        let v3 = |i: usize| Vector3::new(x[i], x[i + 1], x[i + 2]);
+        let (dist, pa, pb, n) = (x[1], v3(2), v3(5), v3(8));
+        let (fa, fb, ta, tb) = (v3(11), v3(14), v3(17), v3(20));
+        if dist >= 0.0 {
+            assert!(fa.norm() + fb.norm() + ta.norm() + tb.norm() == 0.0, "pair {k}: force while apart: {line}");
+            continue;
+        }
+        touching += 1;
+        // independently: the velocities of both bodies at the contact point, the law at e = 1
+        let c = (pa + pb) / 2.0;
+        let (ra0, rb0) = (pose_a.translation.vector, pose_b.translation.vector);
+        let wa = pose_a.rotation * Vector3::new(vel[3], vel[4], vel[5]);
+        let wb = pose_b.rotation * Vector3::new(vel[9], vel[10], vel[11]);
+        let va = Vector3::new(vel[0], vel[1], vel[2]) + wa.cross(&(c - ra0));
+        let vb = Vector3::new(vel[6], vel[7], vel[8]) + wb.cross(&(c - rb0));
+        let dv = vb - va;
+        let vt = dv - n * dv.dot(&n);
+        let fnorm = k_pair * (-dist).powf(1.5);
+        let f = n * fnorm - vt * (mu * fnorm / (vt.norm_squared() + v_reg * v_reg).sqrt());
+        let scale = f.norm() * (1.0 + (c - ra0).norm() + (c - rb0).norm());
+        let errs = [(fb - f).norm(), (fa + f).norm(), (tb - (c - rb0).cross(&f)).norm(), (ta + (c - ra0).cross(&f)).norm()];
+        // balance: no net force, no net moment about the world origin
+        let net_f = (fa + fb).norm();
+        let net_t = (ta + ra0.cross(&fa) + tb + rb0.cross(&fb)).norm();
+        for e in errs.iter().chain([net_f, net_t].iter()) {
+            max_rel = max_rel.max(e / scale);
+        }
+        assert!(errs.iter().all(|e| *e <= 1e-12 * scale) && net_f <= 1e-12 * scale && net_t <= 1e-12 * scale, "pair {k}: {errs:?} {net_f} {net_t} (scale {scale}): {line}");
+    }
+    println!("contact forces: {touching} touching pairs of {}, largest relative deviation from the law and from balance {max_rel:.3e}", cases.len());
+    assert!(touching > 300, "{touching} touching pairs");
+}
+
+#[test]
 fn drop_test_rebounds_with_the_coefficient_of_restitution() {
     let tmp = tempfile::tempdir().expect("tempdir");
     let Some(exe) = build(tmp.path()) else { return };
