@@ -26,6 +26,7 @@
 //!
 //! Plain data in, files out: no IO, no panics.
 
+pub mod collision;
 pub mod live;
 
 use std::collections::BTreeSet;
