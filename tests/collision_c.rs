@@ -11,7 +11,7 @@ use cad2mo::collision::ConvexPart;
 use cad2mo::pipeline::back::modelica::mechatronics::collision;
 use cad2mo_tests::common::{modelica_syntax_errors, msl_check, tools_required, workspace_root};
 use parry3d_f64::na::{Isometry3, Matrix3, Point3, Quaternion, Translation3, UnitQuaternion, Vector3};
-use parry3d_f64::shape::ConvexPolyhedron;
+use parry3d_f64::shape::{Ball, ConvexPolyhedron, Segment, Shape};
 
 fn compiler() -> String {
     std::env::var("CC").unwrap_or_else(|_| "cc".to_string())
@@ -96,7 +96,12 @@ impl Rng {
 /// A random convex part: the hull of 4..=24 random points in a random box around a random
 /// centre (frame_a coordinates), with a radius or not.
 fn random_part(rng: &mut Rng, with_radius: bool) -> (Vec<Point3<f64>>, f64) {
-    let n = 4 + (rng.next() % 21) as usize;
+    random_part_of(rng, with_radius, 4, 24)
+}
+
+/// [`random_part`] of `min..=max` points.
+fn random_part_of(rng: &mut Rng, with_radius: bool, min: usize, max: usize) -> (Vec<Point3<f64>>, f64) {
+    let n = min + (rng.next() % (max - min + 1) as u64) as usize;
     let size = Vector3::new(rng.uniform(0.05, 0.5), rng.uniform(0.05, 0.5), rng.uniform(0.05, 0.5));
     let centre = Vector3::new(rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3));
     let pts = (0..n)
@@ -146,19 +151,37 @@ fn gjk_epa_agree_with_parry_on_random_pairs() {
     let Some(exe) = build(tmp.path()) else { return };
     let mut rng = Rng(0x00C0_111D_E5EE_D001);
     let mut cases = Vec::new();
-    let mut hulls = Vec::new();
+    // parry's shape for A's core (a hull, a point for a sphere, a segment for a capsule), A's
+    // radius (left out: added exactly), and the hull of B
+    let mut refs: Vec<(Box<dyn Shape>, Isometry3<f64>, f64, ConvexPolyhedron)> = Vec::new();
     while cases.len() < 10_000 {
         let k = cases.len();
         let with_radius = k % 2 == 1;
-        let (pa, ra) = random_part(&mut rng, with_radius);
-        let (pb, rb) = random_part(&mut rng, with_radius);
-        let (Some(ha), Some(hb)) = (ConvexPolyhedron::from_convex_hull(&pa), ConvexPolyhedron::from_convex_hull(&pb)) else { continue };
+        // every tenth pair: A a sphere (k % 10 == 3), a capsule (7); big hulls of 50..=300 points (9)
+        let (pa, ra) = match k % 10 {
+            3 => (random_part_of(&mut rng, false, 1, 1).0, rng.uniform(0.02, 0.2)),
+            7 => (random_part_of(&mut rng, false, 2, 2).0, rng.uniform(0.02, 0.1)),
+            9 => random_part_of(&mut rng, with_radius, 50, 300),
+            _ => random_part(&mut rng, with_radius),
+        };
+        let (pb, rb) = if k % 10 == 9 { random_part_of(&mut rng, with_radius, 50, 300) } else { random_part(&mut rng, with_radius) };
         let pose_a = Isometry3::from_parts(Translation3::from(Vector3::new(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0))), rng.rotation());
         // B near A: from deep inside to well apart (distances from the frame origins).
         let offset = rng.unit() * rng.uniform(0.0, 1.4);
         let pose_b = Isometry3::from_parts(Translation3::from(pose_a.translation.vector + offset), rng.rotation());
+        let Some(hb) = ConvexPolyhedron::from_convex_hull(&pb) else { continue };
+        let (shape_a, at, left_out): (Box<dyn Shape>, Isometry3<f64>, f64) = match pa.len() {
+            // the cores (a point, a segment: parry's GJK converges exactly on polytopes, not on
+            // its curved shapes), the radius added analytically as for hulls
+            1 => (Box::new(Ball::new(0.0)), Isometry3::from_parts(Translation3::from((pose_a * pa[0]).coords), pose_a.rotation), ra),
+            2 => (Box::new(Segment::new(pa[0], pa[1])), pose_a, ra),
+            _ => {
+                let Some(ha) = ConvexPolyhedron::from_convex_hull(&pa) else { continue };
+                (Box::new(ha), pose_a, ra)
+            }
+        };
         cases.push(Case { a: (pa, ra, pose_a), b: (pb, rb, pose_b) });
-        hulls.push((ha, hb));
+        refs.push((shape_a, at, left_out, hb));
     }
     let mut input = String::new();
     for c in &cases {
@@ -185,11 +208,11 @@ fn gjk_epa_agree_with_parry_on_random_pairs() {
         let x: Vec<f64> = line.split_whitespace().map(|t| t.parse().expect("number")).collect();
         assert_eq!(x.len(), 11, "{line}");
         let (dist, pa, pb, n) = (x[1], Vector3::new(x[2], x[3], x[4]), Vector3::new(x[5], x[6], x[7]), Vector3::new(x[8], x[9], x[10]));
-        let (ha, hb) = &hulls[k];
-        // parry on the cores; a radius grows the distance exactly: d - ra - rb along the same normal
-        let contact = parry3d_f64::query::contact(&c.a.2, ha, &c.b.2, hb, 100.0).expect("supported").expect("within the prediction");
-        let core = contact.dist;
-        let d_ref = core - c.a.1 - c.b.1;
+        let (shape_a, at, left_out, hb) = &refs[k];
+        // parry on the hulls; a radius grows the distance exactly: d - ra - rb along the same normal
+        let contact = parry3d_f64::query::contact(at, shape_a.as_ref(), &c.b.2, hb, 100.0).expect("supported").expect("within the prediction");
+        let d_ref = contact.dist - left_out - c.b.1;
+        let core = d_ref + c.a.1 + c.b.1; // between the parts' cores (vertices without radii)
         let n_ref = contact.normal1.into_inner();
         if d_ref < 0.0 {
             penetrating += 1;
@@ -227,7 +250,7 @@ fn gjk_epa_agree_with_parry_on_random_pairs() {
         }
     }
     println!(
-        "collision C vs parry3d on {} pairs ({separated} separated, {penetrating} penetrating, half with radii): max |distance - parry| = {max_d:.3e} m, max normal angle = {max_n:.3e} rad over {normals_checked} pairs, max support certificate = {max_cert:.3e} m, max |pb - pa - dist n| = {max_gap:.3e} m; worst: {worst}",
+        "collision C vs parry3d on {} pairs ({separated} separated, {penetrating} penetrating; half with radii, 10 % sphere-hull, 10 % capsule-hull, 10 % hulls of 50..=300 points): max |distance - parry| = {max_d:.3e} m, max normal angle = {max_n:.3e} rad over {normals_checked} pairs, max support certificate = {max_cert:.3e} m, max |pb - pa - dist n| = {max_gap:.3e} m; worst: {worst}",
         cases.len()
     );
     println!("{} pairs where parry's own answer fails its certificate (C at least as good there):\n{}", parry_off.len(), parry_off.join("\n"));
