@@ -111,6 +111,9 @@ fn random_part_of(rng: &mut Rng, with_radius: bool, min: usize, max: usize) -> (
     (pts, radius)
 }
 
+/// parry's side of a pair: A's core shape at its pose, the radius added to it, B's hull.
+type Reference = (Box<dyn Shape>, Isometry3<f64>, f64, ConvexPolyhedron);
+
 struct Case {
     a: (Vec<Point3<f64>>, f64, Isometry3<f64>),
     b: (Vec<Point3<f64>>, f64, Isometry3<f64>),
@@ -153,7 +156,7 @@ fn gjk_epa_agree_with_parry_on_random_pairs() {
     let mut cases = Vec::new();
     // parry's shape for A's core (a hull, a point for a sphere, a segment for a capsule), A's
     // radius (left out: added exactly), and the hull of B
-    let mut refs: Vec<(Box<dyn Shape>, Isometry3<f64>, f64, ConvexPolyhedron)> = Vec::new();
+    let mut refs: Vec<Reference> = Vec::new();
     while cases.len() < 10_000 {
         let k = cases.len();
         let with_radius = k % 2 == 1;
