@@ -390,6 +390,28 @@ fn collision_package_passes_msl_check_and_rumoca() {
         "within {pkg};\nmodel Mechatronics \"Test model\"\n  inner Modelica.Mechanics.MultiBody.World world;\n  Modelica.Mechanics.MultiBody.Parts.Body B1(m=1, r_CM={{0.05, 0.05, 0.05}});\n  Modelica.Mechanics.MultiBody.Parts.Body B2(m=1, r_CM={{0, 0, 0}});\n  Modelica.Mechanics.MultiBody.Parts.Body B3(m=1, r_CM={{0, 0, 0.1}});\n{}\nequation\n  annotation (experiment(StopTime=1));\nend Mechatronics;\n",
         decl.trim_end_matches('\n')
     );
+    // every modifier of collisionWorld names a component of our World model (msl-check checks
+    // only MSL classes)
+    let collision_mo = String::from_utf8(files.iter().find(|(p, _)| p.ends_with("Components/Collision.mo")).expect("Collision.mo").1.clone()).expect("utf-8");
+    let world_text = &collision_mo[collision_mo.find("model World").expect("World")..collision_mo.find("end World;").expect("end World")];
+    let start = decl.find("collisionWorld(").expect("collisionWorld") + "collisionWorld(".len();
+    let (mut depth, mut names, mut token) = (0i32, Vec::new(), String::new());
+    for ch in decl[start..].chars() {
+        match ch {
+            '(' | '{' | '[' => depth += 1,
+            ')' | '}' | ']' if depth == 0 => break,
+            ')' | '}' | ']' => depth -= 1,
+            '=' if depth == 0 => names.push(token.trim().to_string()),
+            ',' if depth == 0 => token.clear(),
+            _ if depth == 0 => token.push(ch),
+            _ => {}
+        }
+    }
+    assert!(names.len() >= 10, "{names:?}");
+    for n in &names {
+        let declared = [format!(" {n}["), format!(" {n}("), format!(" {n} ="), format!(" {n} \"")].iter().any(|p| world_text.contains(p.as_str()));
+        assert!(declared, "collisionWorld modifier `{n}` is not a component of Components.Collision.World");
+    }
     files.push((format!("{pkg}/Mechatronics.mo"), text.into_bytes()));
     for (p, b) in &files {
         let path = root.join(p);
