@@ -11,7 +11,7 @@ use cad2mo::collision::ConvexPart;
 use cad2mo::pipeline::back::modelica::mechatronics::collision;
 use cad2mo_tests::common::{modelica_syntax_errors, msl_check, tools_required, workspace_root};
 use parry3d_f64::na::{Isometry3, Matrix3, Point3, Quaternion, Translation3, UnitQuaternion, Vector3};
-use parry3d_f64::shape::ConvexPolyhedron;
+use parry3d_f64::shape::{Ball, ConvexPolyhedron, Segment, Shape};
 
 fn compiler() -> String {
     std::env::var("CC").unwrap_or_else(|_| "cc".to_string())
@@ -96,7 +96,12 @@ impl Rng {
 /// A random convex part: the hull of 4..=24 random points in a random box around a random
 /// centre (frame_a coordinates), with a radius or not.
 fn random_part(rng: &mut Rng, with_radius: bool) -> (Vec<Point3<f64>>, f64) {
-    let n = 4 + (rng.next() % 21) as usize;
+    random_part_of(rng, with_radius, 4, 24)
+}
+
+/// [`random_part`] of `min..=max` points.
+fn random_part_of(rng: &mut Rng, with_radius: bool, min: usize, max: usize) -> (Vec<Point3<f64>>, f64) {
+    let n = min + (rng.next() % (max - min + 1) as u64) as usize;
     let size = Vector3::new(rng.uniform(0.05, 0.5), rng.uniform(0.05, 0.5), rng.uniform(0.05, 0.5));
     let centre = Vector3::new(rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3));
     let pts = (0..n)
@@ -105,6 +110,9 @@ fn random_part(rng: &mut Rng, with_radius: bool) -> (Vec<Point3<f64>>, f64) {
     let radius = if with_radius { rng.uniform(0.0, 0.1) } else { 0.0 };
     (pts, radius)
 }
+
+/// parry's side of a pair: A's core shape at its pose, the radius added to it, B's hull.
+type Reference = (Box<dyn Shape>, Isometry3<f64>, f64, ConvexPolyhedron);
 
 struct Case {
     a: (Vec<Point3<f64>>, f64, Isometry3<f64>),
@@ -146,19 +154,37 @@ fn gjk_epa_agree_with_parry_on_random_pairs() {
     let Some(exe) = build(tmp.path()) else { return };
     let mut rng = Rng(0x00C0_111D_E5EE_D001);
     let mut cases = Vec::new();
-    let mut hulls = Vec::new();
+    // parry's shape for A's core (a hull, a point for a sphere, a segment for a capsule), A's
+    // radius (left out: added exactly), and the hull of B
+    let mut refs: Vec<Reference> = Vec::new();
     while cases.len() < 10_000 {
         let k = cases.len();
         let with_radius = k % 2 == 1;
-        let (pa, ra) = random_part(&mut rng, with_radius);
-        let (pb, rb) = random_part(&mut rng, with_radius);
-        let (Some(ha), Some(hb)) = (ConvexPolyhedron::from_convex_hull(&pa), ConvexPolyhedron::from_convex_hull(&pb)) else { continue };
+        // every tenth pair: A a sphere (k % 10 == 3), a capsule (7); big hulls of 50..=300 points (9)
+        let (pa, ra) = match k % 10 {
+            3 => (random_part_of(&mut rng, false, 1, 1).0, rng.uniform(0.02, 0.2)),
+            7 => (random_part_of(&mut rng, false, 2, 2).0, rng.uniform(0.02, 0.1)),
+            9 => random_part_of(&mut rng, with_radius, 50, 300),
+            _ => random_part(&mut rng, with_radius),
+        };
+        let (pb, rb) = if k % 10 == 9 { random_part_of(&mut rng, with_radius, 50, 300) } else { random_part(&mut rng, with_radius) };
         let pose_a = Isometry3::from_parts(Translation3::from(Vector3::new(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0))), rng.rotation());
         // B near A: from deep inside to well apart (distances from the frame origins).
         let offset = rng.unit() * rng.uniform(0.0, 1.4);
         let pose_b = Isometry3::from_parts(Translation3::from(pose_a.translation.vector + offset), rng.rotation());
+        let Some(hb) = ConvexPolyhedron::from_convex_hull(&pb) else { continue };
+        let (shape_a, at, left_out): (Box<dyn Shape>, Isometry3<f64>, f64) = match pa.len() {
+            // the cores (a point, a segment: parry's GJK converges exactly on polytopes, not on
+            // its curved shapes), the radius added analytically as for hulls
+            1 => (Box::new(Ball::new(0.0)), Isometry3::from_parts(Translation3::from((pose_a * pa[0]).coords), pose_a.rotation), ra),
+            2 => (Box::new(Segment::new(pa[0], pa[1])), pose_a, ra),
+            _ => {
+                let Some(ha) = ConvexPolyhedron::from_convex_hull(&pa) else { continue };
+                (Box::new(ha), pose_a, ra)
+            }
+        };
         cases.push(Case { a: (pa, ra, pose_a), b: (pb, rb, pose_b) });
-        hulls.push((ha, hb));
+        refs.push((shape_a, at, left_out, hb));
     }
     let mut input = String::new();
     for c in &cases {
@@ -185,11 +211,11 @@ fn gjk_epa_agree_with_parry_on_random_pairs() {
         let x: Vec<f64> = line.split_whitespace().map(|t| t.parse().expect("number")).collect();
         assert_eq!(x.len(), 11, "{line}");
         let (dist, pa, pb, n) = (x[1], Vector3::new(x[2], x[3], x[4]), Vector3::new(x[5], x[6], x[7]), Vector3::new(x[8], x[9], x[10]));
-        let (ha, hb) = &hulls[k];
-        // parry on the cores; a radius grows the distance exactly: d - ra - rb along the same normal
-        let contact = parry3d_f64::query::contact(&c.a.2, ha, &c.b.2, hb, 100.0).expect("supported").expect("within the prediction");
-        let core = contact.dist;
-        let d_ref = core - c.a.1 - c.b.1;
+        let (shape_a, at, left_out, hb) = &refs[k];
+        // parry on the hulls; a radius grows the distance exactly: d - ra - rb along the same normal
+        let contact = parry3d_f64::query::contact(at, shape_a.as_ref(), &c.b.2, hb, 100.0).expect("supported").expect("within the prediction");
+        let d_ref = contact.dist - left_out - c.b.1;
+        let core = d_ref + c.a.1 + c.b.1; // between the parts' cores (vertices without radii)
         let n_ref = contact.normal1.into_inner();
         if d_ref < 0.0 {
             penetrating += 1;
@@ -227,7 +253,7 @@ fn gjk_epa_agree_with_parry_on_random_pairs() {
         }
     }
     println!(
-        "collision C vs parry3d on {} pairs ({separated} separated, {penetrating} penetrating, half with radii): max |distance - parry| = {max_d:.3e} m, max normal angle = {max_n:.3e} rad over {normals_checked} pairs, max support certificate = {max_cert:.3e} m, max |pb - pa - dist n| = {max_gap:.3e} m; worst: {worst}",
+        "collision C vs parry3d on {} pairs ({separated} separated, {penetrating} penetrating; half with radii, 10 % sphere-hull, 10 % capsule-hull, 10 % hulls of 50..=300 points): max |distance - parry| = {max_d:.3e} m, max normal angle = {max_n:.3e} rad over {normals_checked} pairs, max support certificate = {max_cert:.3e} m, max |pb - pa - dist n| = {max_gap:.3e} m; worst: {worst}",
         cases.len()
     );
     println!("{} pairs where parry's own answer fails its certificate (C at least as good there):\n{}", parry_off.len(), parry_off.join("\n"));
@@ -235,6 +261,76 @@ fn gjk_epa_agree_with_parry_on_random_pairs() {
     assert!(max_cert <= 1e-9, "support certificate {max_cert}");
     assert!(max_gap <= 1e-9, "witness points {max_gap}");
     assert!(parry_off.len() <= 20, "parry is off on {} pairs: too many to call it a reference", parry_off.len());
+}
+
+#[test]
+fn contact_forces_follow_the_law_and_balance() {
+    let tmp = tempfile::tempdir().expect("tempdir");
+    let Some(exe) = build(tmp.path()) else { return };
+    let mut rng = Rng(0x00F0_12CE_5EED_0002);
+    let (k_pair, mu, v_reg) = (1e5, 0.4, 0.01);
+    let mut cases = Vec::new();
+    let mut input = String::new();
+    while cases.len() < 2000 {
+        let (pa, ra) = random_part(&mut rng, cases.len() % 2 == 1);
+        let (pb, rb) = random_part(&mut rng, cases.len() % 2 == 1);
+        if ConvexPolyhedron::from_convex_hull(&pa).is_none() || ConvexPolyhedron::from_convex_hull(&pb).is_none() {
+            continue;
+        }
+        let pose_a = Isometry3::from_parts(Translation3::from(Vector3::new(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0))), rng.rotation());
+        let offset = rng.unit() * rng.uniform(0.0, 0.8);
+        let pose_b = Isometry3::from_parts(Translation3::from(pose_a.translation.vector + offset), rng.rotation());
+        let vel: Vec<f64> = (0..12).map(|_| rng.uniform(-1.0, 1.0)).collect();
+        part_text(&pa, ra, &pose_a, &mut input);
+        part_text(&pb, rb, &pose_b, &mut input);
+        for v in &vel {
+            input.push_str(&format!("{} ", fmt(*v)));
+        }
+        input.push_str(&format!("{} {} {}\n", fmt(k_pair), fmt(mu), fmt(v_reg)));
+        cases.push((pose_a, pose_b, vel));
+    }
+    let mut child = Command::new(&exe).arg("eval").stdin(Stdio::piped()).stdout(Stdio::piped()).stderr(Stdio::piped()).spawn().expect("start the harness");
+    let mut stdin = child.stdin.take().expect("stdin");
+    let feeder = std::thread::spawn(move || stdin.write_all(input.as_bytes()).expect("feed the harness"));
+    let out = child.wait_with_output().expect("harness");
+    feeder.join().expect("feeder");
+    assert!(out.status.success(), "harness failed: {}", String::from_utf8_lossy(&out.stderr));
+    let text = String::from_utf8(out.stdout).expect("utf-8");
+    let (mut touching, mut max_rel) = (0, 0.0f64);
+    for (k, (line, (pose_a, pose_b, vel))) in text.lines().zip(&cases).enumerate() {
+        let x: Vec<f64> = line.split_whitespace().map(|t| t.parse().expect("number")).collect();
+        assert_eq!(x.len(), 23, "{line}");
+        let v3 = |i: usize| Vector3::new(x[i], x[i + 1], x[i + 2]);
+        let (dist, pa, pb, n) = (x[1], v3(2), v3(5), v3(8));
+        let (fa, fb, ta, tb) = (v3(11), v3(14), v3(17), v3(20));
+        if dist >= 0.0 {
+            assert!(fa.norm() + fb.norm() + ta.norm() + tb.norm() == 0.0, "pair {k}: force while apart: {line}");
+            continue;
+        }
+        touching += 1;
+        // independently: the velocities of both bodies at the contact point, the law at e = 1
+        let c = (pa + pb) / 2.0;
+        let (ra0, rb0) = (pose_a.translation.vector, pose_b.translation.vector);
+        let wa = pose_a.rotation * Vector3::new(vel[3], vel[4], vel[5]);
+        let wb = pose_b.rotation * Vector3::new(vel[9], vel[10], vel[11]);
+        let va = Vector3::new(vel[0], vel[1], vel[2]) + wa.cross(&(c - ra0));
+        let vb = Vector3::new(vel[6], vel[7], vel[8]) + wb.cross(&(c - rb0));
+        let dv = vb - va;
+        let vt = dv - n * dv.dot(&n);
+        let fnorm = k_pair * (-dist).powf(1.5);
+        let f = n * fnorm - vt * (mu * fnorm / (vt.norm_squared() + v_reg * v_reg).sqrt());
+        let scale = f.norm() * (1.0 + (c - ra0).norm() + (c - rb0).norm());
+        let errs = [(fb - f).norm(), (fa + f).norm(), (tb - (c - rb0).cross(&f)).norm(), (ta + (c - ra0).cross(&f)).norm()];
+        // balance: no net force, no net moment about the world origin
+        let net_f = (fa + fb).norm();
+        let net_t = (ta + ra0.cross(&fa) + tb + rb0.cross(&fb)).norm();
+        for e in errs.iter().chain([net_f, net_t].iter()) {
+            max_rel = max_rel.max(e / scale);
+        }
+        assert!(errs.iter().all(|e| *e <= 1e-12 * scale) && net_f <= 1e-12 * scale && net_t <= 1e-12 * scale, "pair {k}: {errs:?} {net_f} {net_t} (scale {scale}): {line}");
+    }
+    println!("contact forces: {touching} touching pairs of {}, largest relative deviation from the law and from balance {max_rel:.3e}", cases.len());
+    assert!(touching > 300, "{touching} touching pairs");
 }
 
 #[test]
@@ -294,6 +390,28 @@ fn collision_package_passes_msl_check_and_rumoca() {
         "within {pkg};\nmodel Mechatronics \"Test model\"\n  inner Modelica.Mechanics.MultiBody.World world;\n  Modelica.Mechanics.MultiBody.Parts.Body B1(m=1, r_CM={{0.05, 0.05, 0.05}});\n  Modelica.Mechanics.MultiBody.Parts.Body B2(m=1, r_CM={{0, 0, 0}});\n  Modelica.Mechanics.MultiBody.Parts.Body B3(m=1, r_CM={{0, 0, 0.1}});\n{}\nequation\n  annotation (experiment(StopTime=1));\nend Mechatronics;\n",
         decl.trim_end_matches('\n')
     );
+    // every modifier of collisionWorld names a component of our World model (msl-check checks
+    // only MSL classes)
+    let collision_mo = String::from_utf8(files.iter().find(|(p, _)| p.ends_with("Components/Collision.mo")).expect("Collision.mo").1.clone()).expect("utf-8");
+    let world_text = &collision_mo[collision_mo.find("model World").expect("World")..collision_mo.find("end World;").expect("end World")];
+    let start = decl.find("collisionWorld(").expect("collisionWorld") + "collisionWorld(".len();
+    let (mut depth, mut names, mut token) = (0i32, Vec::new(), String::new());
+    for ch in decl[start..].chars() {
+        match ch {
+            '(' | '{' | '[' => depth += 1,
+            ')' | '}' | ']' if depth == 0 => break,
+            ')' | '}' | ']' => depth -= 1,
+            '=' if depth == 0 => names.push(token.trim().to_string()),
+            ',' if depth == 0 => token.clear(),
+            _ if depth == 0 => token.push(ch),
+            _ => {}
+        }
+    }
+    assert!(names.len() >= 10, "{names:?}");
+    for n in &names {
+        let declared = [format!(" {n}["), format!(" {n}("), format!(" {n} ="), format!(" {n} \"")].iter().any(|p| world_text.contains(p.as_str()));
+        assert!(declared, "collisionWorld modifier `{n}` is not a component of Components.Collision.World");
+    }
     files.push((format!("{pkg}/Mechatronics.mo"), text.into_bytes()));
     for (p, b) in &files {
         let path = root.join(p);

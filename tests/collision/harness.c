@@ -3,6 +3,9 @@
  *   harness query   reads one pair per line on stdin:
  *                   na ra va[na*3] r0a[3] RTa[9] nb rb vb[nb*3] r0b[3] RTb[9]
  *                   and writes per line: ok dist pa[3] pb[3] n[3] (17 significant digits)
+ *   harness eval    reads lines as query, then v_0a[3] w_aa[3] v_0b[3] w_ab[3] stiffness friction
+ *                   vReg, and evaluates the two bodies' contact forces (restitution 1, exponent 1.5)
+ *                   through a world: writes the query's answer, then force[2,3] and torque[2,3]
  *   harness drop e stiffness exponent mass radius height dt
  *                   drops a sphere (one vertex grown by radius) on a fixed box under gravity
  *                   through the world's contact law, integrated with semi-implicit Euler at
@@ -54,6 +57,63 @@ static int query(void) {
                pb[1], pb[2], n[0], n[1], n[2]);
         free(va);
         free(vb);
+    }
+    return 0;
+}
+
+static int eval(void) {
+    int na, nb;
+    double ra, rb;
+    while (scanf("%d %lf", &na, &ra) == 2) {
+        double *v, pa_[12], pb_[12], dist, pa[3], pb[3], n[3], vel[12], law[3];
+        double r_0[6], R_T[18], v_0[6], w_a[6], force[6], torque[6], radii[2], st[2], re[2] = {1.0, 1.0}, fr[2];
+        int ok, i, partBody[2] = {1, 2}, partVertices[2], checked[4] = {0, 1, 0, 0};
+        void* world;
+        if (na < 1 || na > 100000) {
+            return 1;
+        }
+        v = (double*)malloc(sizeof(double) * 3 * (size_t)(na + 100000));
+        if (v == NULL || !read_doubles(v, 3 * na) || !read_doubles(pa_, 12)) {
+            return 1;
+        }
+        if (scanf("%d %lf", &nb, &rb) != 2 || nb < 1 || nb > 100000) {
+            return 1;
+        }
+        if (!read_doubles(v + 3 * na, 3 * nb) || !read_doubles(pb_, 12) || !read_doubles(vel, 12) || !read_doubles(law, 3)) {
+            return 1;
+        }
+        ok = cad2mo_collision_query(v, na, ra, pa_, pa_ + 3, v + 3 * na, nb, rb, pb_, pb_ + 3, &dist, pa, pb, n);
+        for (i = 0; i < 3; i++) {
+            r_0[i] = pa_[i];
+            r_0[3 + i] = pb_[i];
+            v_0[i] = vel[i];
+            w_a[i] = vel[3 + i];
+            v_0[3 + i] = vel[6 + i];
+            w_a[3 + i] = vel[9 + i];
+        }
+        for (i = 0; i < 9; i++) {
+            R_T[i] = pa_[3 + i];
+            R_T[9 + i] = pb_[3 + i];
+        }
+        radii[0] = ra;
+        radii[1] = rb;
+        partVertices[0] = na;
+        partVertices[1] = nb;
+        st[0] = st[1] = law[0] * pow(2.0, 1.5);
+        fr[0] = fr[1] = law[1];
+        world = cad2mo_collision_open(2, 2, partBody, partVertices, radii, na + nb, v, st, re, fr, 1.5, law[2], 1e-3);
+        cad2mo_collision_eval(world, r_0, R_T, v_0, w_a, checked, 2, force, torque);
+        cad2mo_collision_close(world);
+        printf("%d %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g", ok, dist, pa[0], pa[1], pa[2], pb[0], pb[1],
+               pb[2], n[0], n[1], n[2]);
+        for (i = 0; i < 6; i++) {
+            printf(" %.17g", force[i]);
+        }
+        for (i = 0; i < 6; i++) {
+            printf(" %.17g", torque[i]);
+        }
+        printf("\n");
+        free(v);
     }
     return 0;
 }
@@ -128,9 +188,12 @@ int main(int argc, char** argv) {
     if (argc >= 2 && strcmp(argv[1], "query") == 0) {
         return query();
     }
+    if (argc >= 2 && strcmp(argv[1], "eval") == 0) {
+        return eval();
+    }
     if (argc >= 2 && strcmp(argv[1], "drop") == 0) {
         return drop(argc, argv);
     }
-    fprintf(stderr, "usage: harness query | harness drop e stiffness exponent mass radius height dt\n");
+    fprintf(stderr, "usage: harness query | harness eval | harness drop e stiffness exponent mass radius height dt\n");
     return 1;
 }

@@ -737,6 +737,7 @@ typedef struct {
     double* restitution;
     double* friction;
     double* chi;       /* [nBodies] damping factor from the body's restitution */
+    double* sphere;    /* [nParts * 4] bounding sphere of each part: centre (frame_a), radius */
     double exponent, vReg, vImpactMin;
     int touching;      /* touching part pairs at the last evaluation */
     c2mc_epa* epa;
@@ -757,6 +758,7 @@ C2MC_API void cad2mo_collision_close(void* object) {
     free(w->restitution);
     free(w->friction);
     free(w->chi);
+    free(w->sphere);
     free(w->epa);
     free(w);
 }
@@ -825,9 +827,10 @@ C2MC_API void* cad2mo_collision_open(int nBodies, int nParts, const int* partBod
     w->restitution = (double*)malloc(sizeof(double) * (size_t)nBodies);
     w->friction = (double*)malloc(sizeof(double) * (size_t)nBodies);
     w->chi = (double*)malloc(sizeof(double) * (size_t)nBodies);
+    w->sphere = (double*)malloc(sizeof(double) * 4 * (size_t)(nParts > 0 ? nParts : 1));
     w->epa = (c2mc_epa*)malloc(sizeof(c2mc_epa));
     if (!w->partBody || !w->partStart || !w->radius || !w->vertices || !w->scratch || !w->impact || !w->stiffness ||
-        !w->restitution || !w->friction || !w->chi || !w->epa) {
+        !w->restitution || !w->friction || !w->chi || !w->sphere || !w->epa) {
         cad2mo_collision_close(w);
         ModelicaError("cad2mo collision: out of memory");
         return NULL;
@@ -842,6 +845,25 @@ C2MC_API void* cad2mo_collision_open(int nBodies, int nParts, const int* partBod
     w->partStart[nParts] = total;
     if (nVertices > 0) {
         memcpy(w->vertices, vertices, sizeof(double) * 3 * (size_t)nVertices);
+    }
+    for (i = 0; i < nParts; i++) { /* bounding spheres: the broad phase */
+        int j, k, nv = w->partStart[i + 1] - w->partStart[i];
+        const double* v = w->vertices + 3 * w->partStart[i];
+        double* sp = w->sphere + 4 * i;
+        double r2 = 0.0;
+        for (k = 0; k < 3; k++) {
+            sp[k] = 0.0;
+            for (j = 0; j < nv; j++) {
+                sp[k] += v[3 * j + k] / nv;
+            }
+        }
+        for (j = 0; j < nv; j++) {
+            double d[3], q;
+            c2mc_sub(v + 3 * j, sp, d);
+            q = c2mc_dot(d, d);
+            r2 = q > r2 ? q : r2;
+        }
+        sp[3] = sqrt(r2) * (1.0 + 1e-12) + w->radius[i];
     }
     memcpy(w->stiffness, stiffness, sizeof(double) * (size_t)nBodies);
     memcpy(w->restitution, restitution, sizeof(double) * (size_t)nBodies);
@@ -914,6 +936,16 @@ C2MC_API void cad2mo_collision_eval(void* object, const double* r_0, const doubl
             double* imp = &w->impact[p * w->nParts + q];
             if (a == b || !(checked[a * n + b] || checked[b * n + a])) {
                 continue;
+            }
+            {
+                double ca[3], cb[3], d[3];
+                c2mc_to_world(w->sphere + 4 * p, 1, r_0 + 3 * a, R_T + 9 * a, ca);
+                c2mc_to_world(w->sphere + 4 * q, 1, r_0 + 3 * b, R_T + 9 * b, cb);
+                c2mc_sub(cb, ca, d);
+                if (sqrt(c2mc_dot(d, d)) > w->sphere[4 * p + 3] + w->sphere[4 * q + 3]) {
+                    *imp = 0.0; /* bounding spheres apart */
+                    continue;
+                }
             }
             c2mc_pair(w->epa, w->scratch + 3 * w->partStart[p], w->partStart[p + 1] - w->partStart[p], w->radius[p],
                       w->scratch + 3 * w->partStart[q], w->partStart[q + 1] - w->partStart[q], w->radius[q], &r);
