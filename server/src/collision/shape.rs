@@ -460,7 +460,7 @@ fn capped(part: ConvexPart, max: usize, warnings: &mut Vec<String>) -> ConvexPar
     let pts: Vec<P3> = part.vertices.iter().map(|v| P3::from(*v)).collect();
     let (lo, hi) = bounds(&pts);
     let diag = (hi - lo).norm();
-    let mut cells = 64.0;
+    let mut cells = 256.0;
     while cells >= 2.0 {
         let cell = diag / cells;
         let (q, _) = cluster(&pts, &[], cell);
@@ -477,7 +477,7 @@ fn capped(part: ConvexPart, max: usize, warnings: &mut Vec<String>) -> ConvexPar
                 }
             }
         }
-        cells /= 1.5;
+        cells /= 1.25;
     }
     part
 }

@@ -340,3 +340,20 @@ fn sweep_with_rotation_does_not_miss_a_sampled_contact() {
     assert!(brute.is_some());
     assert_eq!(s.pairs[0].first_contact, brute, "{}", s.guarantee);
 }
+
+#[test]
+fn huge_bumpy_mesh_gets_a_simplified_capped_hull() {
+    // Radial bumps of up to 10 %: no primitive fits; more triangles than the (lowered) limit.
+    let mut m = uv_sphere([0.0; 3], 0.1, 100, 100);
+    for (i, v) in m.vertices.iter_mut().enumerate() {
+        let f = 1.0 + 0.1 * ((i * 7919 % 13) as f32 / 13.0);
+        *v = [v[0] * f, v[1] * f, v[2] * f];
+    }
+    let o = ShapeOptions { max_triangles: 10_000, max_hull_vertices: 200, ..ShapeOptions::default() };
+    let s = body_shape(&m, &o);
+    assert_eq!(s.kind, ShapeKind::Hull, "{:?}", s.warnings);
+    assert!(s.vertex_count <= 200 && s.vertex_count >= 8, "{}", s.vertex_count);
+    assert!(s.warnings.iter().any(|w| w.contains("huge mesh")), "{:?}", s.warnings);
+    assert!(s.warnings.iter().any(|w| w.contains("hull of")), "{:?}", s.warnings);
+    assert!(s.fit_error > 0.005 && s.fit_error < 0.03, "{}", s.fit_error);
+}
