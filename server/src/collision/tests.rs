@@ -357,3 +357,66 @@ fn huge_bumpy_mesh_gets_a_simplified_capped_hull() {
     assert!(s.warnings.iter().any(|w| w.contains("hull of")), "{:?}", s.warnings);
     assert!(s.fit_error > 0.005 && s.fit_error < 0.03, "{}", s.fit_error);
 }
+
+#[test]
+fn sweep_matches_brute_force_on_a_tumbling_scene() {
+    // Six bodies (boxes, a sphere, a cylinder, an L decomposition) swinging and spinning so that
+    // several pairs touch: first_contact and max_depth of every pair must equal those of
+    // contacts_at evaluated at every sample; min_distance (when below near) within tolerance.
+    let (vs, ts) = box_mesh([-0.04, -0.03, -0.02], [0.04, 0.03, 0.02]);
+    let shapes = vec![
+        Some(body_shape(&mesh(&vs, &ts), &opts())),
+        Some(body_shape(&uv_sphere([0.0; 3], 0.05, 12, 24), &opts())),
+        Some(body_shape(&cylinder_mesh(0.03, 0.1, 32), &opts())),
+        Some(box_shape(0.04)),
+        Some(body_shape(&l_mesh(), &ShapeOptions::default())),
+        None,
+    ];
+    assert_eq!(shapes[4].as_ref().map(|s| s.kind), Some(ShapeKind::Decomposition));
+    let w = World::new(&shapes);
+    let times: Vec<f64> = (0..=2000).map(|k| k as f64 * 1e-3).collect();
+    let tt = times.clone();
+    let poses = move |k: usize| -> Vec<Isometry3<f64>> {
+        let t = tt[k];
+        (0..6)
+            .map(|i| {
+                let fi = i as f64;
+                let x = 0.12 * fi + 0.05 * (3.0 * t + fi).sin();
+                let y = 0.03 * (2.0 * t + 2.0 * fi).cos();
+                let q = UnitQuaternion::from_euler_angles(0.7 * t * fi, 0.4 * t, 0.2 * fi);
+                Isometry3::from_parts(Translation3::new(x, y, 0.0), q)
+            })
+            .collect()
+    };
+    let o = SweepOptions::default();
+    let checked = |a: usize, b: usize| (a, b) != (0, 3);
+    let s = sweep(&w, &times, &poses, &checked, &o);
+    let mut first = std::collections::HashMap::new();
+    let mut depth: std::collections::HashMap<(usize, usize), f64> = std::collections::HashMap::new();
+    let mut mind: std::collections::HashMap<(usize, usize), f64> = std::collections::HashMap::new();
+    for k in 0..times.len() {
+        for c in contacts_at(&w, &poses(k), &checked, o.near_distance) {
+            let e = mind.entry((c.a, c.b)).or_insert(f64::INFINITY);
+            *e = e.min(c.distance);
+            if c.distance <= 0.0 {
+                first.entry((c.a, c.b)).or_insert(times[k]);
+                let d = depth.entry((c.a, c.b)).or_insert(0.0);
+                *d = d.max(-c.distance);
+            }
+        }
+    }
+    assert!(first.len() >= 2, "the scene should have contacts: {first:?}");
+    assert_eq!(s.pairs.len(), 9); // 5 bodies with shapes: 10 pairs, less (0, 3)
+    for p in &s.pairs {
+        let key = (p.a, p.b);
+        assert_eq!(p.first_contact, first.get(&key).copied(), "{p:?}");
+        let bd = depth.get(&key).copied().unwrap_or(0.0);
+        assert!((p.max_depth - bd).abs() < 1e-9, "{p:?} vs {bd}");
+        if let Some(&m) = mind.get(&key) {
+            let tol = o.abs_tolerance.max(o.rel_tolerance * p.min_distance.abs());
+            assert!(p.min_distance >= m - 1e-9 && p.min_distance <= m + tol, "{p:?} vs {m}");
+        } else {
+            assert!(p.min_distance >= o.near_distance - 1e-9, "{p:?}");
+        }
+    }
+}
