@@ -280,6 +280,9 @@ fn sweep_finds_first_contact_of_approaching_boxes() {
     let fc = p.first_contact.unwrap_or(f64::NAN);
     // Guarantee: the first sample at or after the true contact time.
     assert!(fc >= 0.9 - 1e-9 && fc < 0.9 + dt + 1e-9, "{fc}");
+    // And exactly the first sample where the boxes touch (brute force over every sample).
+    let brute = (0..times.len()).find(|&k| !contacts_at(&w, &poses(k), &|_, _| true, 0.0).is_empty());
+    assert_eq!(Some(fc), brute.map(|k| times[k]), "{}", s.guarantee);
     // The cubes pass through each other: deepest (0.1 m) when the centres meet at t = 1 s.
     assert!(p.max_depth > 0.09, "{}", p.max_depth);
     assert!(p.min_distance < 0.0);
@@ -330,10 +333,10 @@ fn sweep_with_rotation_does_not_miss_a_sampled_contact() {
     };
     let s = sweep(&w, &times, &poses, &|_, _| true, &SweepOptions::default());
     let mut brute = None;
-    for k in 0..times.len() {
+    for (k, &t) in times.iter().enumerate() {
         let c = contacts_at(&w, &poses(k), &|_, _| true, 0.0);
         if !c.is_empty() {
-            brute = Some(times[k]);
+            brute = Some(t);
             break;
         }
     }
@@ -394,12 +397,12 @@ fn sweep_matches_brute_force_on_a_tumbling_scene() {
     let mut first = std::collections::HashMap::new();
     let mut depth: std::collections::HashMap<(usize, usize), f64> = std::collections::HashMap::new();
     let mut mind: std::collections::HashMap<(usize, usize), f64> = std::collections::HashMap::new();
-    for k in 0..times.len() {
+    for (k, &t) in times.iter().enumerate() {
         for c in contacts_at(&w, &poses(k), &checked, o.near_distance) {
             let e = mind.entry((c.a, c.b)).or_insert(f64::INFINITY);
             *e = e.min(c.distance);
             if c.distance <= 0.0 {
-                first.entry((c.a, c.b)).or_insert(times[k]);
+                first.entry((c.a, c.b)).or_insert(t);
                 let d = depth.entry((c.a, c.b)).or_insert(0.0);
                 *d = d.max(-c.distance);
             }
