@@ -423,3 +423,17 @@ fn sweep_matches_brute_force_on_a_tumbling_scene() {
         }
     }
 }
+
+#[test]
+fn non_finite_poses_are_left_out_and_named() {
+    let w = World::new(&[Some(box_shape(0.05)), Some(box_shape(0.05)), Some(box_shape(0.05))]);
+    let times: Vec<f64> = (0..=10).map(|k| k as f64 * 1e-3).collect();
+    let poses = |k: usize| vec![at(0.0, 0.0, 0.0), at(if k == 5 { f64::NAN } else { 0.05 }, 0.0, 0.0), at(0.08, 0.0, 0.0)];
+    let s = sweep(&w, &times, &poses, &|_, _| true, &SweepOptions::default());
+    let pairs: Vec<_> = s.pairs.iter().map(|p| (p.a, p.b)).collect();
+    assert_eq!(pairs, vec![(0, 2)]);
+    assert!(s.guarantee.contains("not checked: [1]"), "{}", s.guarantee);
+    assert_eq!(s.pairs[0].first_contact, Some(0.0));
+    let c = contacts_at(&w, &poses(5), &|_, _| true, 0.0);
+    assert_eq!(c.iter().map(|c| (c.a, c.b)).collect::<Vec<_>>(), vec![(0, 2)]);
+}
