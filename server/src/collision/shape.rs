@@ -116,6 +116,22 @@ struct Cand {
 }
 
 /// The collision shape of a mesh. Never panics: bad meshes give a fallback shape and warnings.
+///
+/// 1. Identical vertices are welded; non-finite vertices and triangles with bad or repeated
+///    indices are dropped (warned). No usable vertex: no parts (warned).
+/// 2. More than `max_triangles`: vertex clustering first (warned, with the vertex counts and how
+///    far vertices moved); no decomposition then.
+/// 3. Flat (thickness ≤ 1e-6 × diagonal) or fewer than 4 points: the points extruded by
+///    ± thin_thickness/2 along the normal (kind hull); a line: a capsule, a point: a sphere of
+///    radius thin_thickness (warned "degenerate").
+/// 4. Candidates: sphere (least squares), boxes (frame axes, principal axes, largest hull faces;
+///    the smallest), cylinders (box edges and principal axes), capsules (principal axes); the
+///    candidate with the smallest fit error among those within the tolerances of
+///    [`ShapeOptions`] wins.
+/// 5. Else the convex hull (parry), at most `max_hull_vertices`; if the mesh is closed and the
+///    hull exceeds `decompose_ratio` × the mesh volume: VHACD (parry) parts, each the hull of the
+///    mesh triangles in a voxel part. A mesh that is not a closed 2-manifold (warned) keeps
+///    the hull: its volume is unknown.
 pub fn body_shape(mesh: &Mesh, opts: &ShapeOptions) -> BodyShape {
     let source_triangles = mesh.triangles.len();
     match std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| shape_inner(mesh, opts))) {
