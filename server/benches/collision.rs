@@ -127,6 +127,36 @@ fn bench(c: &mut Criterion) {
         t0.elapsed().as_secs_f64(),
         hs.warnings
     );
+    // A concave mesh (torus, 20k triangles): hull/mesh volume ratio ≫ 1.25 → VHACD decomposition.
+    let (nu, nv) = (100usize, 100usize);
+    let (big, small) = (0.1, 0.03);
+    let vertices: Vec<[f32; 3]> = (0..nu)
+        .flat_map(|i| (0..nv).map(move |j| (i, j)))
+        .map(|(i, j)| {
+            let (u, v) = (2.0 * PI * i as f64 / nu as f64, 2.0 * PI * j as f64 / nv as f64);
+            let r = big + small * v.cos();
+            [(r * u.cos()) as f32, (r * u.sin()) as f32, (small * v.sin()) as f32]
+        })
+        .collect();
+    let id = |i: usize, j: usize| ((i % nu) * nv + j % nv) as u32;
+    let triangles: Vec<[u32; 3]> = (0..nu)
+        .flat_map(|i| (0..nv).map(move |j| (i, j)))
+        .flat_map(|(i, j)| [[id(i, j), id(i + 1, j), id(i + 1, j + 1)], [id(i, j), id(i + 1, j + 1), id(i, j + 1)]])
+        .collect();
+    let torus = Mesh { vertices, triangles };
+    let t0 = Instant::now();
+    let ts = body_shape(&torus, &ShapeOptions::default());
+    println!(
+        "torus: {} triangles → {} ({} parts, {} vertices, fit error {:.2e} m, volume ratio {:.3}) in {:.3} s; warnings: {:?}",
+        torus.triangles.len(),
+        ts.kind.name(),
+        ts.parts.len(),
+        ts.vertex_count,
+        ts.fit_error,
+        ts.volume_ratio,
+        t0.elapsed().as_secs_f64(),
+        ts.warnings
+    );
     let mut g = c.benchmark_group("collision");
     g.sample_size(10);
     g.bench_function("sweep 50 bodies, 10 s at 1 kHz", |b| {

@@ -260,7 +260,9 @@ fn shape_inner(mesh: &Mesh, opts: &ShapeOptions) -> BodyShape {
         let vol = cand.vol;
         return finish(cand, vol, source_triangles, warnings);
     }
-    let Some(hull) = hull_part(&pts).map(|h| capped(h, opts.max_hull_vertices, &mut warnings)) else {
+    // The hull's simplification warning only matters if the hull is the shape.
+    let mut hull_warnings = Vec::new();
+    let Some(hull) = hull_part(&pts).map(|h| capped(h, opts.max_hull_vertices, &mut hull_warnings)) else {
         warnings.push("convex hull failed: a bounding box instead".into());
         let b = box_from_axes(&pts, &Matrix3::identity());
         let vol = b.vol;
@@ -351,6 +353,7 @@ fn shape_inner(mesh: &Mesh, opts: &ShapeOptions) -> BodyShape {
             }
         }
     }
+    warnings.extend(hull_warnings);
     finish(hull_cand, denom, source_triangles, warnings)
 }
 
