@@ -48,8 +48,8 @@ impl Motion {
     fn new(rng: &mut Lcg, n: usize) -> Motion {
         let mut m = Motion { base: vec![], dir: vec![], freq: vec![], phase: vec![], axis: vec![], spin: vec![] };
         for i in 0..n {
-            // A 5 × 10 grid, 0.22 m apart: neighbours (~0.12–0.16 m across) come close and touch.
-            m.base.push(Vector3::new(0.22 * (i % 10) as f64, 0.22 * (i / 10) as f64, 0.0));
+            // A 5 × 10 grid, 0.17 m apart: neighbours (0.08–0.16 m across, ±0.05 m swings) touch.
+            m.base.push(Vector3::new(0.17 * (i % 10) as f64, 0.17 * (i / 10) as f64, 0.0));
             let d = Vector3::new(rng.next() - 0.5, rng.next() - 0.5, 0.3 * (rng.next() - 0.5));
             m.dir.push(d.normalize() * 0.05);
             m.freq.push(0.2 + 0.5 * rng.next());
@@ -92,6 +92,70 @@ fn bench(c: &mut Criterion) {
         s.pairs.len(),
         el,
         s.guarantee
+    );
+    // A huge mesh (180k triangles, bumpy sphere): shape time per body (issue: ~1 s).
+    let (nu, nv) = (300usize, 300usize);
+    let mut vertices = vec![[0.0f32, 0.0, 0.1], [0.0, 0.0, -0.1]];
+    for i in 1..nu {
+        let th = PI * i as f64 / nu as f64;
+        for j in 0..nv {
+            let ph = 2.0 * PI * j as f64 / nv as f64;
+            let r = 0.1 * (1.0 + 0.05 * (7.0 * th).sin() * (5.0 * ph).cos());
+            vertices.push([(r * th.sin() * ph.cos()) as f32, (r * th.sin() * ph.sin()) as f32, (r * th.cos()) as f32]);
+        }
+    }
+    let ring = |i: usize, j: usize| (2 + (i - 1) * nv + j % nv) as u32;
+    let mut triangles = Vec::new();
+    for j in 0..nv {
+        triangles.push([0, ring(1, j), ring(1, j + 1)]);
+        triangles.push([1, ring(nu - 1, j + 1), ring(nu - 1, j)]);
+    }
+    for i in 1..nu - 1 {
+        for j in 0..nv {
+            triangles.push([ring(i, j), ring(i + 1, j), ring(i + 1, j + 1)]);
+            triangles.push([ring(i, j), ring(i + 1, j + 1), ring(i, j + 1)]);
+        }
+    }
+    let huge = Mesh { vertices, triangles };
+    let t0 = Instant::now();
+    let hs = body_shape(&huge, &ShapeOptions::default());
+    println!(
+        "huge mesh: {} triangles → {} ({} vertices) in {:.3} s; warnings: {:?}",
+        huge.triangles.len(),
+        hs.kind.name(),
+        hs.vertex_count,
+        t0.elapsed().as_secs_f64(),
+        hs.warnings
+    );
+    // A concave mesh (torus, 20k triangles): hull/mesh volume ratio ≫ 1.25 → VHACD decomposition.
+    let (nu, nv) = (100usize, 100usize);
+    let (big, small) = (0.1, 0.03);
+    let vertices: Vec<[f32; 3]> = (0..nu)
+        .flat_map(|i| (0..nv).map(move |j| (i, j)))
+        .map(|(i, j)| {
+            let (u, v) = (2.0 * PI * i as f64 / nu as f64, 2.0 * PI * j as f64 / nv as f64);
+            let r = big + small * v.cos();
+            [(r * u.cos()) as f32, (r * u.sin()) as f32, (small * v.sin()) as f32]
+        })
+        .collect();
+    let id = |i: usize, j: usize| ((i % nu) * nv + j % nv) as u32;
+    let triangles: Vec<[u32; 3]> = (0..nu)
+        .flat_map(|i| (0..nv).map(move |j| (i, j)))
+        .flat_map(|(i, j)| [[id(i, j), id(i + 1, j), id(i + 1, j + 1)], [id(i, j), id(i + 1, j + 1), id(i, j + 1)]])
+        .collect();
+    let torus = Mesh { vertices, triangles };
+    let t0 = Instant::now();
+    let ts = body_shape(&torus, &ShapeOptions::default());
+    println!(
+        "torus: {} triangles → {} ({} parts, {} vertices, fit error {:.2e} m, volume ratio {:.3}) in {:.3} s; warnings: {:?}",
+        torus.triangles.len(),
+        ts.kind.name(),
+        ts.parts.len(),
+        ts.vertex_count,
+        ts.fit_error,
+        ts.volume_ratio,
+        t0.elapsed().as_secs_f64(),
+        ts.warnings
     );
     let mut g = c.benchmark_group("collision");
     g.sample_size(10);

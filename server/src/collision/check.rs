@@ -147,7 +147,10 @@ pub fn contacts_at(world: &World, poses: &[Isometry3<f64>], checked: &dyn Fn(usi
         .bodies
         .iter()
         .enumerate()
-        .map(|(i, b)| Some(b.as_ref()?.local_aabb.transform_by(poses.get(i)?)))
+        .map(|(i, b)| {
+            let x = poses.get(i).filter(|x| x.translation.vector.iter().chain(x.rotation.coords.iter()).all(|c| c.is_finite()))?;
+            Some(b.as_ref()?.local_aabb.transform_by(x))
+        })
         .collect();
     let mut pairs = Vec::new();
     let mut seen = Vec::new();
@@ -246,11 +249,29 @@ pub fn sweep(
 ) -> Sweep {
     let n = times.len();
     let nb = world.bodies.len();
+    // All poses (missing bodies: identity). Bodies with a non-finite pose at any sample are
+    // left out (named in the guarantee), never checked with garbage.
+    let all: Vec<Vec<Isometry3<f64>>> = (0..n)
+        .map(|k| {
+            let mut p = poses(k);
+            p.resize(nb, Isometry3::identity());
+            p
+        })
+        .collect();
+    let mut bad = vec![false; nb];
+    for p in &all {
+        for (i, x) in p.iter().enumerate() {
+            if !(x.translation.vector.iter().all(|c| c.is_finite()) && x.rotation.coords.iter().all(|c| c.is_finite())) {
+                bad[i] = true;
+            }
+        }
+    }
+    let usable = |i: usize| world.has_shape(i) && !bad[i];
     let mut states: Vec<PairState> = Vec::new();
     let mut index = vec![usize::MAX; nb * nb];
     for a in 0..nb {
         for b in a + 1..nb {
-            if world.has_shape(a) && world.has_shape(b) && checked(a, b) {
+            if usable(a) && usable(b) && checked(a, b) {
                 index[a * nb + b] = states.len();
                 states.push(PairState {
                     out: PairSweep {
@@ -276,14 +297,7 @@ pub fn sweep(
             guarantee: format!("{n} samples; nothing to check"),
         };
     }
-    // All poses (missing bodies: identity), and per body the prefix sums of the step bounds.
-    let all: Vec<Vec<Isometry3<f64>>> = (0..n)
-        .map(|k| {
-            let mut p = poses(k);
-            p.resize(nb, Isometry3::identity());
-            p
-        })
-        .collect();
+    // Per body the prefix sums of the step bounds.
     let reach: Vec<f64> = world.bodies.iter().map(|b| b.as_ref().map_or(0.0, |p| p.reach)).collect();
     // step[i * n + k] = D_i(k) (k < n-1); prefix[i * (n) + k] = Σ_{m<k} D_i(m).
     let mut step = vec![0.0; nb * n];
@@ -292,7 +306,7 @@ pub fn sweep(
     for k in 0..n.saturating_sub(1) {
         let (mut d1, mut d2) = (0.0f64, 0.0f64);
         for i in 0..nb {
-            if !world.has_shape(i) {
+            if !usable(i) {
                 continue;
             }
             let (p, q) = (&all[k][i], &all[k + 1][i]);
@@ -322,7 +336,7 @@ pub fn sweep(
         let s1 = (s0 + block).min(n - 1);
         // Swept AABBs over [s0, s1], grown by the largest step bound in the block.
         for (i, slot) in aabbs.iter_mut().enumerate() {
-            *slot = world.bodies[i].as_ref().map(|b| {
+            *slot = world.bodies[i].as_ref().filter(|_| !bad[i]).map(|b| {
                 let mut bb = b.local_aabb.transform_by(&all[s0][i]);
                 let mut grow = 0.0f64;
                 for k in s0 + 1..=s1 {
@@ -372,6 +386,12 @@ pub fn sweep(
         "{n} samples, {evaluations} pair evaluations. Conservative sampling: a pair is skipped at a sample only while its last exact distance minus the bound on the relative motion since (per body: frame displacement + rotation angle × the shape's reach) stays positive, so every sample where a checked pair touches or penetrates is found (first_contact, max_depth exact over the samples); between samples no penetration deeper than {delta:.3e} m (half the largest relative step bound) is missed. min_distance below {near} m is the minimum over the samples to within max({} m, {} × d); larger values are only known to be ≥ {near} m.",
         opts.abs_tolerance, opts.rel_tolerance
     );
+    let skipped: Vec<usize> = (0..nb).filter(|&i| bad[i] && world.has_shape(i)).collect();
+    let guarantee = if skipped.is_empty() {
+        guarantee
+    } else {
+        format!("{guarantee} Bodies with non-finite poses, not checked: {skipped:?}.")
+    };
     Sweep { pairs: states.into_iter().map(|s| s.out).collect(), samples: n, guarantee }
 }
 

@@ -37,6 +37,9 @@ pub struct ShapeOptions {
     pub max_triangles: usize,
     /// Clustering grid for simplification: cells per bounding-box diagonal (default 100).
     pub simplify_cells: f64,
+    /// Most vertices of a hull or decomposition part (default 1000); bigger hulls are rebuilt
+    /// from their vertices clustered on a coarser grid (warned).
+    pub max_hull_vertices: usize,
     /// Thickness of the fallback shape of a flat mesh, and radius for a line or point (default 1 mm).
     pub thin_thickness: f64,
 }
@@ -53,6 +56,7 @@ impl Default for ShapeOptions {
             cylinder_sides: 24,
             max_triangles: 100_000,
             simplify_cells: 100.0,
+            max_hull_vertices: 1000,
             thin_thickness: 1e-3,
         }
     }
@@ -112,6 +116,22 @@ struct Cand {
 }
 
 /// The collision shape of a mesh. Never panics: bad meshes give a fallback shape and warnings.
+///
+/// 1. Identical vertices are welded; non-finite vertices and triangles with bad or repeated
+///    indices are dropped (warned). No usable vertex: no parts (warned).
+/// 2. More than `max_triangles`: vertex clustering first (warned, with the vertex counts and how
+///    far vertices moved); no decomposition then.
+/// 3. Flat (thickness ≤ 1e-6 × diagonal) or fewer than 4 points: the points extruded by
+///    ± thin_thickness/2 along the normal (kind hull); a line: a capsule, a point: a sphere of
+///    radius thin_thickness (warned "degenerate").
+/// 4. Candidates: sphere (least squares), boxes (frame axes, principal axes, largest hull faces;
+///    the smallest), cylinders (box edges and principal axes), capsules (principal axes); the
+///    candidate with the smallest fit error among those within the tolerances of
+///    [`ShapeOptions`] wins.
+/// 5. Else the convex hull (parry), at most `max_hull_vertices`; if the mesh is closed and the
+///    hull exceeds `decompose_ratio` × the mesh volume: VHACD (parry) parts, each the hull of the
+///    mesh triangles in a voxel part. A mesh that is not a closed 2-manifold (warned) keeps
+///    the hull: its volume is unknown.
 pub fn body_shape(mesh: &Mesh, opts: &ShapeOptions) -> BodyShape {
     let source_triangles = mesh.triangles.len();
     match std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| shape_inner(mesh, opts))) {
@@ -240,7 +260,9 @@ fn shape_inner(mesh: &Mesh, opts: &ShapeOptions) -> BodyShape {
         let vol = cand.vol;
         return finish(cand, vol, source_triangles, warnings);
     }
-    let Some(hull) = hull_part(&pts) else {
+    // The hull's simplification warning only matters if the hull is the shape.
+    let mut hull_warnings = Vec::new();
+    let Some(hull) = hull_part(&pts).map(|h| capped(h, opts.max_hull_vertices, &mut hull_warnings)) else {
         warnings.push("convex hull failed: a bounding box instead".into());
         let b = box_from_axes(&pts, &Matrix3::identity());
         let vol = b.vol;
@@ -277,14 +299,14 @@ fn shape_inner(mesh: &Mesh, opts: &ShapeOptions) -> BodyShape {
         }
     }
     if let Some(mut b) = best_box {
-        b.err = shape_error(&b.parts, &samples);
-        // Cylinder axes: the best box's axes and the principal axes.
+        b.err = shape_error_limited(&b.parts, &samples, tol);
+        // Cylinder axes: the best box's edges (corners 1, 2, 4 from corner 0) and the principal axes.
         let mut cyl_axes: Vec<V3> = Vec::new();
         if let Some(part) = b.parts.first() {
             let p0 = P3::from(part.vertices[0]);
-            for i in 1..part.vertices.len() {
+            for i in [1, 2, 4] {
                 let d = P3::from(part.vertices[i]) - p0;
-                if d.norm() > 1e-12 && cyl_axes.iter().all(|a: &V3| a.cross(&d).norm() > 1e-6 * d.norm()) {
+                if d.norm() > 1e-12 {
                     cyl_axes.push(d.normalize());
                 }
             }
@@ -293,7 +315,7 @@ fn shape_inner(mesh: &Mesh, opts: &ShapeOptions) -> BodyShape {
             cyl_axes.push(axes.column(i).into_owned());
         }
         for a in &cyl_axes {
-            if let Some(c) = fit_cylinder(&hull_pts, &samples, a, opts.cylinder_sides.max(6)) {
+            if let Some(c) = fit_cylinder(&hull_pts, &samples, a, opts.cylinder_sides.max(6), tol) {
                 cands.push(c);
             }
         }
@@ -319,6 +341,7 @@ fn shape_inner(mesh: &Mesh, opts: &ShapeOptions) -> BodyShape {
         } else {
             match decompose(&pts, &tris, opts) {
                 Some(parts) if parts.len() >= 2 => {
+                    let parts: Vec<ConvexPart> = parts.into_iter().map(|p| capped(p, opts.max_hull_vertices, &mut warnings)).collect();
                     let vol: f64 = parts.iter().map(part_volume).sum();
                     let err = shape_error(&parts, &samples);
                     return finish(Cand { kind: ShapeKind::Decomposition, parts, err, vol }, denom, source_triangles, warnings);
@@ -330,6 +353,7 @@ fn shape_inner(mesh: &Mesh, opts: &ShapeOptions) -> BodyShape {
             }
         }
     }
+    warnings.extend(hull_warnings);
     finish(hull_cand, denom, source_triangles, warnings)
 }
 
@@ -446,6 +470,37 @@ fn cluster(pts: &[P3], tris: &[[u32; 3]], cell: f64) -> (Vec<P3>, Vec<[u32; 3]>)
     (out, t2)
 }
 
+/// A hull part with at most `max` vertices: rebuilt from its vertices clustered on ever coarser
+/// grids (warned); unchanged when small enough or when rebuilding fails.
+fn capped(part: ConvexPart, max: usize, warnings: &mut Vec<String>) -> ConvexPart {
+    if part.vertices.len() <= max.max(8) {
+        return part;
+    }
+    let pts: Vec<P3> = part.vertices.iter().map(|v| P3::from(*v)).collect();
+    let (lo, hi) = bounds(&pts);
+    let diag = (hi - lo).norm();
+    let mut cells = 256.0;
+    while cells >= 2.0 {
+        let cell = diag / cells;
+        let (q, _) = cluster(&pts, &[], cell);
+        if q.len() <= max.max(8) {
+            if let Some(h) = hull_part(&q) {
+                if h.vertices.len() <= max.max(8) {
+                    warnings.push(format!(
+                        "hull of {} vertices simplified to {} (vertices moved ≤ {:.2e} m)",
+                        part.vertices.len(),
+                        h.vertices.len(),
+                        cell * 3f64.sqrt()
+                    ));
+                    return h;
+                }
+            }
+        }
+        cells /= 1.25;
+    }
+    part
+}
+
 /// Fit samples: every vertex and every triangle centroid.
 fn sample_points(pts: &[P3], tris: &[[u32; 3]]) -> Vec<P3> {
     let mut s = pts.to_vec();
@@ -536,17 +591,26 @@ fn seg_dist(a: &P3, b: &P3, x: &P3) -> f64 {
 
 /// Largest over samples of the distance to the nearest part's surface.
 fn shape_error(parts: &[ConvexPart], samples: &[P3]) -> f64 {
+    shape_error_limited(parts, samples, f64::INFINITY)
+}
+
+/// As [`shape_error`], but stops at the first sample beyond `limit` (returning that sample's
+/// error, > limit): candidates that cannot be accepted are rejected early.
+fn shape_error_limited(parts: &[ConvexPart], samples: &[P3], limit: f64) -> f64 {
     let pls: Vec<Vec<(V3, f64)>> = parts.iter().map(planes).collect();
-    samples
-        .iter()
-        .map(|x| {
-            parts
-                .iter()
-                .zip(&pls)
-                .map(|(p, pl)| part_sd(p, pl, x).abs())
-                .fold(f64::INFINITY, f64::min)
-        })
-        .fold(0.0, f64::max)
+    let mut worst = 0.0f64;
+    for x in samples {
+        let e = parts
+            .iter()
+            .zip(&pls)
+            .map(|(p, pl)| part_sd(p, pl, x).abs())
+            .fold(f64::INFINITY, f64::min);
+        worst = worst.max(e);
+        if worst > limit {
+            break;
+        }
+    }
+    worst
 }
 
 /// The box with the given axes (columns) containing the points.
@@ -652,7 +716,7 @@ fn circle_centre(pts: &[P3], u: &V3) -> Option<(V3, V3, P3)> {
 }
 
 /// Cylinder about axis `u` containing the points, as a circumscribed prism with `sides` sides.
-fn fit_cylinder(hull_pts: &[P3], samples: &[P3], u: &V3, sides: usize) -> Option<Cand> {
+fn fit_cylinder(hull_pts: &[P3], samples: &[P3], u: &V3, sides: usize, limit: f64) -> Option<Cand> {
     let (e1, e2, c) = circle_centre(hull_pts, u)?;
     let (mut h0, mut h1, mut r) = (f64::MAX, f64::MIN, 0.0f64);
     for p in hull_pts {
@@ -676,7 +740,7 @@ fn fit_cylinder(hull_pts: &[P3], samples: &[P3], u: &V3, sides: usize) -> Option
     let part = hull_part(&vs)?;
     let vol = part_volume(&part);
     // One-sided error, and the prism's edges stand off the round mesh by at least rc − r.
-    let err = shape_error(std::slice::from_ref(&part), samples).max(rc - r);
+    let err = shape_error_limited(std::slice::from_ref(&part), samples, limit).max(rc - r);
     Some(Cand { kind: ShapeKind::Cylinder, parts: vec![part], err, vol })
 }
 

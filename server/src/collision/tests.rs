@@ -280,6 +280,9 @@ fn sweep_finds_first_contact_of_approaching_boxes() {
     let fc = p.first_contact.unwrap_or(f64::NAN);
     // Guarantee: the first sample at or after the true contact time.
     assert!(fc >= 0.9 - 1e-9 && fc < 0.9 + dt + 1e-9, "{fc}");
+    // And exactly the first sample where the boxes touch (brute force over every sample).
+    let brute = (0..times.len()).find(|&k| !contacts_at(&w, &poses(k), &|_, _| true, 0.0).is_empty());
+    assert_eq!(Some(fc), brute.map(|k| times[k]), "{}", s.guarantee);
     // The cubes pass through each other: deepest (0.1 m) when the centres meet at t = 1 s.
     assert!(p.max_depth > 0.09, "{}", p.max_depth);
     assert!(p.min_distance < 0.0);
@@ -330,13 +333,107 @@ fn sweep_with_rotation_does_not_miss_a_sampled_contact() {
     };
     let s = sweep(&w, &times, &poses, &|_, _| true, &SweepOptions::default());
     let mut brute = None;
-    for k in 0..times.len() {
+    for (k, &t) in times.iter().enumerate() {
         let c = contacts_at(&w, &poses(k), &|_, _| true, 0.0);
         if !c.is_empty() {
-            brute = Some(times[k]);
+            brute = Some(t);
             break;
         }
     }
     assert!(brute.is_some());
     assert_eq!(s.pairs[0].first_contact, brute, "{}", s.guarantee);
+}
+
+#[test]
+fn huge_bumpy_mesh_gets_a_simplified_capped_hull() {
+    // Radial bumps of up to 10 %: no primitive fits; more triangles than the (lowered) limit.
+    let mut m = uv_sphere([0.0; 3], 0.1, 100, 100);
+    for (i, v) in m.vertices.iter_mut().enumerate() {
+        let f = 1.0 + 0.1 * ((i * 7919 % 13) as f32 / 13.0);
+        *v = [v[0] * f, v[1] * f, v[2] * f];
+    }
+    let o = ShapeOptions { max_triangles: 10_000, max_hull_vertices: 200, ..ShapeOptions::default() };
+    let s = body_shape(&m, &o);
+    assert_eq!(s.kind, ShapeKind::Hull, "{:?}", s.warnings);
+    assert!(s.vertex_count <= 200 && s.vertex_count >= 8, "{}", s.vertex_count);
+    assert!(s.warnings.iter().any(|w| w.contains("huge mesh")), "{:?}", s.warnings);
+    assert!(s.warnings.iter().any(|w| w.contains("hull of")), "{:?}", s.warnings);
+    assert!(s.fit_error > 0.005 && s.fit_error < 0.03, "{}", s.fit_error);
+}
+
+#[test]
+fn sweep_matches_brute_force_on_a_tumbling_scene() {
+    // Six bodies (boxes, a sphere, a cylinder, an L decomposition) swinging and spinning so that
+    // several pairs touch: first_contact and max_depth of every pair must equal those of
+    // contacts_at evaluated at every sample; min_distance (when below near) within tolerance.
+    let (vs, ts) = box_mesh([-0.04, -0.03, -0.02], [0.04, 0.03, 0.02]);
+    let shapes = vec![
+        Some(body_shape(&mesh(&vs, &ts), &opts())),
+        Some(body_shape(&uv_sphere([0.0; 3], 0.05, 12, 24), &opts())),
+        Some(body_shape(&cylinder_mesh(0.03, 0.1, 32), &opts())),
+        Some(box_shape(0.04)),
+        Some(body_shape(&l_mesh(), &ShapeOptions::default())),
+        None,
+    ];
+    assert_eq!(shapes[4].as_ref().map(|s| s.kind), Some(ShapeKind::Decomposition));
+    let w = World::new(&shapes);
+    let times: Vec<f64> = (0..=2000).map(|k| k as f64 * 1e-3).collect();
+    let tt = times.clone();
+    let poses = move |k: usize| -> Vec<Isometry3<f64>> {
+        let t = tt[k];
+        (0..6)
+            .map(|i| {
+                let fi = i as f64;
+                let x = 0.12 * fi + 0.05 * (3.0 * t + fi).sin();
+                let y = 0.03 * (2.0 * t + 2.0 * fi).cos();
+                let q = UnitQuaternion::from_euler_angles(0.7 * t * fi, 0.4 * t, 0.2 * fi);
+                Isometry3::from_parts(Translation3::new(x, y, 0.0), q)
+            })
+            .collect()
+    };
+    let o = SweepOptions::default();
+    let checked = |a: usize, b: usize| (a, b) != (0, 3);
+    let s = sweep(&w, &times, &poses, &checked, &o);
+    let mut first = std::collections::HashMap::new();
+    let mut depth: std::collections::HashMap<(usize, usize), f64> = std::collections::HashMap::new();
+    let mut mind: std::collections::HashMap<(usize, usize), f64> = std::collections::HashMap::new();
+    for (k, &t) in times.iter().enumerate() {
+        for c in contacts_at(&w, &poses(k), &checked, o.near_distance) {
+            let e = mind.entry((c.a, c.b)).or_insert(f64::INFINITY);
+            *e = e.min(c.distance);
+            if c.distance <= 0.0 {
+                first.entry((c.a, c.b)).or_insert(t);
+                let d = depth.entry((c.a, c.b)).or_insert(0.0);
+                *d = d.max(-c.distance);
+            }
+        }
+    }
+    assert!(first.len() >= 2, "the scene should have contacts: {first:?}");
+    assert_eq!(s.pairs.len(), 9); // 5 bodies with shapes: 10 pairs, less (0, 3)
+    for p in &s.pairs {
+        let key = (p.a, p.b);
+        assert_eq!(p.first_contact, first.get(&key).copied(), "{p:?}");
+        let bd = depth.get(&key).copied().unwrap_or(0.0);
+        assert!((p.max_depth - bd).abs() < 1e-9, "{p:?} vs {bd}");
+        if let Some(&m) = mind.get(&key) {
+            let tol = o.abs_tolerance.max(o.rel_tolerance * p.min_distance.abs());
+            assert!(p.min_distance >= m - 1e-9 && p.min_distance <= m + tol, "{p:?} vs {m}");
+        } else {
+            assert!(p.min_distance >= o.near_distance - 1e-9, "{p:?}");
+        }
+    }
+}
+
+#[test]
+fn non_finite_poses_are_left_out_and_named() {
+    let w = World::new(&[Some(box_shape(0.05)), Some(box_shape(0.05)), Some(box_shape(0.05))]);
+    let times: Vec<f64> = (0..=10).map(|k| k as f64 * 1e-3).collect();
+    let poses = |k: usize| vec![at(0.0, 0.0, 0.0), at(if k == 5 { f64::NAN } else { 0.05 }, 0.0, 0.0), at(0.08, 0.0, 0.0)];
+    let s = sweep(&w, &times, &poses, &|_, _| true, &SweepOptions::default());
+    let pairs: Vec<_> = s.pairs.iter().map(|p| (p.a, p.b)).collect();
+    assert_eq!(pairs, vec![(0, 2)]);
+    assert!(s.guarantee.contains("not checked: [1]"), "{}", s.guarantee);
+    assert_eq!(s.pairs[0].first_contact, Some(0.0));
+    let c = contacts_at(&w, &poses(5), &|_, _| true, 0.0);
+    assert_eq!(c.iter().map(|c| (c.a, c.b)).collect::<Vec<_>>(), vec![(0, 2)]);
 }
