@@ -2,6 +2,63 @@ within ARM;
 model Mechatronics "Mechatronic model of ARM: Mechanics with no joint drive"
   extends ARM.Mechanics;
 
+  // Collisions: contact forces between the bodies' collision shapes (see Components.Collision)
+  parameter Boolean collisions = false "Apply contact forces between the bodies' collision shapes"
+    annotation (Dialog(group="Collisions"), choices(checkBox=true));
+  ARM.Components.Collision.World collisionWorld(
+    nBodies=3,
+    nParts=3,
+    partBody={1, 2, 3},
+    partVertices={8, 8, 8},
+    partRadius={0.0, 0.0, 0.0},
+    vertices={
+      {-0.06, 0.0, -0.06},
+      {0.06, 0.0, -0.06},
+      {-0.06, 0.09, -0.06},
+      {0.06, 0.09, -0.06},
+      {-0.06, 0.0, 0.06},
+      {0.06, 0.0, 0.06},
+      {-0.06, 0.09, 0.06},
+      {0.06, 0.09, 0.06},
+      {-0.015, -0.016, -0.012},
+      {0.266, -0.016, -0.012},
+      {-0.015, 0.015, -0.012},
+      {0.266, 0.015, -0.012},
+      {-0.015, -0.016, 0.012},
+      {0.266, -0.016, 0.012},
+      {-0.015, 0.015, 0.012},
+      {0.266, 0.015, 0.012},
+      {-0.012, -0.012, -0.01},
+      {0.212, -0.012, -0.01},
+      {-0.012, 0.013, -0.01},
+      {0.212, 0.013, -0.01},
+      {-0.012, -0.012, 0.011},
+      {0.212, -0.012, 0.011},
+      {-0.012, 0.013, 0.011},
+      {0.212, 0.013, 0.011}},
+    checked={{0, 0, 1}, {0, 0, 0}, {1, 0, 0}},
+    r_0={BASE.frame_a.r_0, LINK_UPPER.frame_a.r_0, LINK_FORE.frame_a.r_0},
+    R_T={BASE.frame_a.R.T, LINK_UPPER.frame_a.R.T, LINK_FORE.frame_a.R.T},
+    v_0={BASE.v_0, LINK_UPPER.v_0, LINK_FORE.v_0},
+    w_a={BASE.w_a, LINK_UPPER.w_a, LINK_FORE.w_a}) if collisions "Contact forces between the collision shapes"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-140,20})));
+  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_BASE if collisions "Contact force and torque on BASE (resolved in world)"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-110,20})));
+  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_LINK_UPPER if collisions "Contact force and torque on LINK_UPPER (resolved in world)"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-110,-10})));
+  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_LINK_FORE if collisions "Contact force and torque on LINK_FORE (resolved in world)"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-110,-40})));
+equation
+  connect(collisionForce_BASE.frame_b, BASE.frame_a);
+  connect(collisionWorld.force[1, :], collisionForce_BASE.force);
+  connect(collisionWorld.torque[1, :], collisionForce_BASE.torque);
+  connect(collisionForce_LINK_UPPER.frame_b, LINK_UPPER.frame_a);
+  connect(collisionWorld.force[2, :], collisionForce_LINK_UPPER.force);
+  connect(collisionWorld.torque[2, :], collisionForce_LINK_UPPER.torque);
+  connect(collisionForce_LINK_FORE.frame_b, LINK_FORE.frame_a);
+  connect(collisionWorld.force[3, :], collisionForce_LINK_FORE.force);
+  connect(collisionWorld.torque[3, :], collisionForce_LINK_FORE.torque);
+public
 equation
   annotation (
     experiment(StopTime=1.0),

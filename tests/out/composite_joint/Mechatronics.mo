@@ -2,6 +2,63 @@ within UJ;
 model Mechatronics "Mechatronic model of UJ: Mechanics with no joint drive"
   extends UJ.Mechanics;
 
+  // Collisions: contact forces between the bodies' collision shapes (see Components.Collision)
+  parameter Boolean collisions = false "Apply contact forces between the bodies' collision shapes"
+    annotation (Dialog(group="Collisions"), choices(checkBox=true));
+  UJ.Components.Collision.World collisionWorld(
+    nBodies=3,
+    nParts=3,
+    partBody={1, 2, 3},
+    partVertices={8, 8, 8},
+    partRadius={0.0, 0.0, 0.0},
+    vertices={
+      {-0.05, 0.0, -0.05},
+      {0.05, 0.0, -0.05},
+      {-0.05, 0.18, -0.05},
+      {0.05, 0.18, -0.05},
+      {-0.05, 0.0, 0.05},
+      {0.05, 0.0, 0.05},
+      {-0.05, 0.18, 0.05},
+      {0.05, 0.18, 0.05},
+      {-0.02, -0.02, -0.02},
+      {0.02, -0.02, -0.02},
+      {-0.02, 0.08, -0.02},
+      {0.02, 0.08, -0.02},
+      {-0.02, -0.02, 0.06},
+      {0.02, -0.02, 0.06},
+      {-0.02, 0.08, 0.06},
+      {0.02, 0.08, 0.06},
+      {-0.03, -0.015, -0.01},
+      {0.03, -0.015, -0.01},
+      {-0.03, 0.015, -0.01},
+      {0.03, 0.015, -0.01},
+      {-0.03, -0.015, 0.01},
+      {0.03, -0.015, 0.01},
+      {-0.03, 0.015, 0.01},
+      {0.03, 0.015, 0.01}},
+    checked={{0, 0, 1}, {0, 0, 0}, {1, 0, 0}},
+    r_0={BASE.frame_a.r_0, CROSS.frame_a.r_0, FLOAT.frame_a.r_0},
+    R_T={BASE.frame_a.R.T, CROSS.frame_a.R.T, FLOAT.frame_a.R.T},
+    v_0={BASE.v_0, CROSS.v_0, FLOAT.v_0},
+    w_a={BASE.w_a, CROSS.w_a, FLOAT.w_a}) if collisions "Contact forces between the collision shapes"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-140,20})));
+  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_BASE if collisions "Contact force and torque on BASE (resolved in world)"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-110,20})));
+  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_CROSS if collisions "Contact force and torque on CROSS (resolved in world)"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-110,-10})));
+  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_FLOAT if collisions "Contact force and torque on FLOAT (resolved in world)"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-110,-40})));
+equation
+  connect(collisionForce_BASE.frame_b, BASE.frame_a);
+  connect(collisionWorld.force[1, :], collisionForce_BASE.force);
+  connect(collisionWorld.torque[1, :], collisionForce_BASE.torque);
+  connect(collisionForce_CROSS.frame_b, CROSS.frame_a);
+  connect(collisionWorld.force[2, :], collisionForce_CROSS.force);
+  connect(collisionWorld.torque[2, :], collisionForce_CROSS.torque);
+  connect(collisionForce_FLOAT.frame_b, FLOAT.frame_a);
+  connect(collisionWorld.force[3, :], collisionForce_FLOAT.force);
+  connect(collisionWorld.torque[3, :], collisionForce_FLOAT.torque);
+public
 equation
   annotation (
     experiment(StopTime=1.0),

@@ -2,6 +2,63 @@ within FOURBAR;
 model Mechatronics "Mechatronic model of FOURBAR: Mechanics with no joint drive"
   extends FOURBAR.Mechanics;
 
+  // Collisions: contact forces between the bodies' collision shapes (see Components.Collision)
+  parameter Boolean collisions = false "Apply contact forces between the bodies' collision shapes"
+    annotation (Dialog(group="Collisions"), choices(checkBox=true));
+  FOURBAR.Components.Collision.World collisionWorld(
+    nBodies=3,
+    nParts=3,
+    partBody={1, 2, 3},
+    partVertices={8, 8, 8},
+    partRadius={0.0, 0.0, 0.0},
+    vertices={
+      {-0.01, -0.01, -0.004},
+      {0.07, -0.01, -0.004},
+      {-0.01, 0.01, -0.004},
+      {0.07, 0.01, -0.004},
+      {-0.01, -0.01, 0.004},
+      {0.07, -0.01, 0.004},
+      {-0.01, 0.01, 0.004},
+      {0.07, 0.01, 0.004},
+      {-0.01, -0.01, -0.004},
+      {0.19, -0.01, -0.004},
+      {-0.01, 0.01, -0.004},
+      {0.19, 0.01, -0.004},
+      {-0.01, -0.01, 0.004},
+      {0.19, -0.01, 0.004},
+      {-0.01, 0.01, 0.004},
+      {0.19, 0.01, 0.004},
+      {-0.01, -0.01, -0.004},
+      {0.16, -0.01, -0.004},
+      {-0.01, 0.01, -0.004},
+      {0.16, 0.01, -0.004},
+      {-0.01, -0.01, 0.004},
+      {0.16, -0.01, 0.004},
+      {-0.01, 0.01, 0.004},
+      {0.16, 0.01, 0.004}},
+    checked={{0, 0, 1}, {0, 0, 0}, {1, 0, 0}},
+    r_0={CRANK.frame_a.r_0, COUPLER.frame_a.r_0, ROCKER.frame_a.r_0},
+    R_T={CRANK.frame_a.R.T, COUPLER.frame_a.R.T, ROCKER.frame_a.R.T},
+    v_0={CRANK.v_0, COUPLER.v_0, ROCKER.v_0},
+    w_a={CRANK.w_a, COUPLER.w_a, ROCKER.w_a}) if collisions "Contact forces between the collision shapes"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-140,20})));
+  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_CRANK if collisions "Contact force and torque on CRANK (resolved in world)"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-110,20})));
+  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_COUPLER if collisions "Contact force and torque on COUPLER (resolved in world)"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-110,-10})));
+  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_ROCKER if collisions "Contact force and torque on ROCKER (resolved in world)"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-110,-40})));
+equation
+  connect(collisionForce_CRANK.frame_b, CRANK.frame_a);
+  connect(collisionWorld.force[1, :], collisionForce_CRANK.force);
+  connect(collisionWorld.torque[1, :], collisionForce_CRANK.torque);
+  connect(collisionForce_COUPLER.frame_b, COUPLER.frame_a);
+  connect(collisionWorld.force[2, :], collisionForce_COUPLER.force);
+  connect(collisionWorld.torque[2, :], collisionForce_COUPLER.torque);
+  connect(collisionForce_ROCKER.frame_b, ROCKER.frame_a);
+  connect(collisionWorld.force[3, :], collisionForce_ROCKER.force);
+  connect(collisionWorld.torque[3, :], collisionForce_ROCKER.torque);
+public
 equation
   annotation (
     experiment(StopTime=1.0),

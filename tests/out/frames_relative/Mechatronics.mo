@@ -2,6 +2,63 @@ within RELFRAMES;
 model Mechatronics "Mechatronic model of RELFRAMES: Mechanics with no joint drive"
   extends RELFRAMES.Mechanics;
 
+  // Collisions: contact forces between the bodies' collision shapes (see Components.Collision)
+  parameter Boolean collisions = false "Apply contact forces between the bodies' collision shapes"
+    annotation (Dialog(group="Collisions"), choices(checkBox=true));
+  RELFRAMES.Components.Collision.World collisionWorld(
+    nBodies=3,
+    nParts=3,
+    partBody={1, 2, 3},
+    partVertices={8, 8, 8},
+    partRadius={0.0, 0.0, 0.0},
+    vertices={
+      {-0.015, -0.016, -0.01},
+      {0.195, -0.016, -0.01},
+      {-0.015, 0.015, -0.01},
+      {0.195, 0.015, -0.01},
+      {-0.015, -0.016, 0.011},
+      {0.195, -0.016, 0.011},
+      {-0.015, 0.015, 0.011},
+      {0.195, 0.015, 0.011},
+      {-0.012, -0.012, -0.01},
+      {0.163, -0.012, -0.01},
+      {-0.012, 0.013, -0.01},
+      {0.163, 0.013, -0.01},
+      {-0.012, -0.012, 0.011},
+      {0.163, -0.012, 0.011},
+      {-0.012, 0.013, 0.011},
+      {0.163, 0.013, 0.011},
+      {-0.021, -0.01, -0.045},
+      {0.01, -0.01, -0.045},
+      {-0.021, 0.059, -0.045},
+      {0.01, 0.059, -0.045},
+      {-0.021, -0.01, 0.01},
+      {0.01, -0.01, 0.01},
+      {-0.021, 0.059, 0.01},
+      {0.01, 0.059, 0.01}},
+    checked={{0, 0, 1}, {0, 0, 0}, {1, 0, 0}},
+    r_0={CRANK.frame_a.r_0, ROD.frame_a.r_0, SLIDER.frame_a.r_0},
+    R_T={CRANK.frame_a.R.T, ROD.frame_a.R.T, SLIDER.frame_a.R.T},
+    v_0={CRANK.v_0, ROD.v_0, SLIDER.v_0},
+    w_a={CRANK.w_a, ROD.w_a, SLIDER.w_a}) if collisions "Contact forces between the collision shapes"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-140,20})));
+  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_CRANK if collisions "Contact force and torque on CRANK (resolved in world)"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-110,20})));
+  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_ROD if collisions "Contact force and torque on ROD (resolved in world)"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-110,-10})));
+  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_SLIDER if collisions "Contact force and torque on SLIDER (resolved in world)"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-110,-40})));
+equation
+  connect(collisionForce_CRANK.frame_b, CRANK.frame_a);
+  connect(collisionWorld.force[1, :], collisionForce_CRANK.force);
+  connect(collisionWorld.torque[1, :], collisionForce_CRANK.torque);
+  connect(collisionForce_ROD.frame_b, ROD.frame_a);
+  connect(collisionWorld.force[2, :], collisionForce_ROD.force);
+  connect(collisionWorld.torque[2, :], collisionForce_ROD.torque);
+  connect(collisionForce_SLIDER.frame_b, SLIDER.frame_a);
+  connect(collisionWorld.force[3, :], collisionForce_SLIDER.force);
+  connect(collisionWorld.torque[3, :], collisionForce_SLIDER.torque);
+public
 equation
   annotation (
     experiment(StopTime=1.0),

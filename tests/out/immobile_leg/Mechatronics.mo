@@ -2,6 +2,63 @@ within LEG;
 model Mechatronics "Mechatronic model of LEG: Mechanics with no joint drive"
   extends LEG.Mechanics;
 
+  // Collisions: contact forces between the bodies' collision shapes (see Components.Collision)
+  parameter Boolean collisions = false "Apply contact forces between the bodies' collision shapes"
+    annotation (Dialog(group="Collisions"), choices(checkBox=true));
+  LEG.Components.Collision.World collisionWorld(
+    nBodies=3,
+    nParts=3,
+    partBody={1, 2, 3},
+    partVertices={8, 8, 8},
+    partRadius={0.0, 0.0, 0.0},
+    vertices={
+      {-0.008, -0.008, -0.004},
+      {0.108, -0.008, -0.004},
+      {-0.008, 0.008, -0.004},
+      {0.108, 0.008, -0.004},
+      {-0.008, -0.008, 0.004},
+      {0.108, -0.008, 0.004},
+      {-0.008, 0.008, 0.004},
+      {0.108, 0.008, 0.004},
+      {-0.008, -0.008, -0.004},
+      {0.21, -0.008, -0.004},
+      {-0.008, 0.008, -0.004},
+      {0.21, 0.008, -0.004},
+      {-0.008, -0.008, 0.005},
+      {0.21, -0.008, 0.005},
+      {-0.008, 0.008, 0.005},
+      {0.21, 0.008, 0.005},
+      {-0.008, -0.008, -0.004},
+      {0.211, -0.008, -0.004},
+      {-0.008, 0.009, -0.004},
+      {0.211, 0.009, -0.004},
+      {-0.008, -0.008, 0.004},
+      {0.211, -0.008, 0.004},
+      {-0.008, 0.009, 0.004},
+      {0.211, 0.009, 0.004}},
+    checked={{0, 0, 1}, {0, 0, 0}, {1, 0, 0}},
+    r_0={HIP.frame_a.r_0, THIGH.frame_a.r_0, SHANK.frame_a.r_0},
+    R_T={HIP.frame_a.R.T, THIGH.frame_a.R.T, SHANK.frame_a.R.T},
+    v_0={HIP.v_0, THIGH.v_0, SHANK.v_0},
+    w_a={HIP.w_a, THIGH.w_a, SHANK.w_a}) if collisions "Contact forces between the collision shapes"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-140,20})));
+  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_HIP if collisions "Contact force and torque on HIP (resolved in world)"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-110,20})));
+  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_THIGH if collisions "Contact force and torque on THIGH (resolved in world)"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-110,-10})));
+  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_SHANK if collisions "Contact force and torque on SHANK (resolved in world)"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-110,-40})));
+equation
+  connect(collisionForce_HIP.frame_b, HIP.frame_a);
+  connect(collisionWorld.force[1, :], collisionForce_HIP.force);
+  connect(collisionWorld.torque[1, :], collisionForce_HIP.torque);
+  connect(collisionForce_THIGH.frame_b, THIGH.frame_a);
+  connect(collisionWorld.force[2, :], collisionForce_THIGH.force);
+  connect(collisionWorld.torque[2, :], collisionForce_THIGH.torque);
+  connect(collisionForce_SHANK.frame_b, SHANK.frame_a);
+  connect(collisionWorld.force[3, :], collisionForce_SHANK.force);
+  connect(collisionWorld.torque[3, :], collisionForce_SHANK.torque);
+public
 equation
   annotation (
     experiment(StopTime=1.0),

@@ -2,6 +2,50 @@ within CHAIN_IN;
 model Mechatronics "Mechatronic model of CHAIN_IN: Mechanics with no joint drive"
   extends CHAIN_IN.Mechanics;
 
+  // Collisions: contact forces between the bodies' collision shapes (see Components.Collision)
+  parameter Boolean collisions = false "Apply contact forces between the bodies' collision shapes"
+    annotation (Dialog(group="Collisions"), choices(checkBox=true));
+  CHAIN_IN.Components.Collision.World collisionWorld(
+    nBodies=2,
+    nParts=2,
+    partBody={1, 2},
+    partVertices={8, 8},
+    partRadius={0.0, 0.0},
+    vertices={
+      {-0.0127, -0.0127, -0.00635},
+      {0.3175, -0.0127, -0.00635},
+      {-0.0127, 0.0127, -0.00635},
+      {0.3175, 0.0127, -0.00635},
+      {-0.0127, -0.0127, 0.00635},
+      {0.3175, -0.0127, 0.00635},
+      {-0.0127, 0.0127, 0.00635},
+      {0.3175, 0.0127, 0.00635},
+      {-0.0127, -0.0127, -0.00635},
+      {0.2159, -0.0127, -0.00635},
+      {-0.0127, 0.0127, -0.00635},
+      {0.2159, 0.0127, -0.00635},
+      {-0.0127, -0.0127, 0.00635},
+      {0.2159, -0.0127, 0.00635},
+      {-0.0127, 0.0127, 0.00635},
+      {0.2159, 0.0127, 0.00635}},
+    checked={{0, 0}, {0, 0}},
+    r_0={LINK1.frame_a.r_0, LINK2.frame_a.r_0},
+    R_T={LINK1.frame_a.R.T, LINK2.frame_a.R.T},
+    v_0={LINK1.v_0, LINK2.v_0},
+    w_a={LINK1.w_a, LINK2.w_a}) if collisions "Contact forces between the collision shapes"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-140,20})));
+  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_LINK1 if collisions "Contact force and torque on LINK1 (resolved in world)"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-110,20})));
+  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_LINK2 if collisions "Contact force and torque on LINK2 (resolved in world)"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-110,-10})));
+equation
+  connect(collisionForce_LINK1.frame_b, LINK1.frame_a);
+  connect(collisionWorld.force[1, :], collisionForce_LINK1.force);
+  connect(collisionWorld.torque[1, :], collisionForce_LINK1.torque);
+  connect(collisionForce_LINK2.frame_b, LINK2.frame_a);
+  connect(collisionWorld.force[2, :], collisionForce_LINK2.force);
+  connect(collisionWorld.torque[2, :], collisionForce_LINK2.torque);
+public
 equation
   annotation (
     experiment(StopTime=1.0),

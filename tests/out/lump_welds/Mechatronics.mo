@@ -2,6 +2,58 @@ within LumpedArm;
 model Mechatronics "Mechatronic model of LumpedArm: Mechanics with no joint drive"
   extends LumpedArm.Mechanics;
 
+  // Collisions: contact forces between the bodies' collision shapes (see Components.Collision)
+  parameter Boolean collisions = false "Apply contact forces between the bodies' collision shapes"
+    annotation (Dialog(group="Collisions"), choices(checkBox=true));
+  LumpedArm.Components.Collision.World collisionWorld(
+    nBodies=2,
+    nParts=2,
+    partBody={1, 2},
+    partVertices={16, 8},
+    partRadius={0.0, 0.0},
+    vertices={
+      {-0.012, -0.013, -0.01},
+      {-0.012, 0.012, -0.01},
+      {0.152, 0.012, -0.01},
+      {0.152, -0.013, -0.01},
+      {-0.012, -0.013, 0.01},
+      {0.152, -0.013, 0.01},
+      {0.152, 0.012, 0.01},
+      {-0.012, 0.012, 0.01},
+      {0.128, 0.011, -0.012},
+      {0.128, 0.011, 0.012},
+      {0.27199998, 0.011, 0.012},
+      {0.27199998, 0.011, -0.012},
+      {0.128, -0.011, -0.012},
+      {0.27199998, -0.011, -0.012},
+      {0.27199998, -0.011, 0.012},
+      {0.128, -0.011, 0.012},
+      {-0.01, -0.01, -0.008},
+      {0.21, -0.01, -0.008},
+      {-0.01, 0.01, -0.008},
+      {0.21, 0.01, -0.008},
+      {-0.01, -0.01, 0.008},
+      {0.21, -0.01, 0.008},
+      {-0.01, 0.01, 0.008},
+      {0.21, 0.01, 0.008}},
+    checked={{0, 0}, {0, 0}},
+    r_0={UPPER_A.frame_a.r_0, FORE.frame_a.r_0},
+    R_T={UPPER_A.frame_a.R.T, FORE.frame_a.R.T},
+    v_0={UPPER_A.v_0, FORE.v_0},
+    w_a={UPPER_A.w_a, FORE.w_a}) if collisions "Contact forces between the collision shapes"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-140,20})));
+  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_UPPER_A if collisions "Contact force and torque on UPPER_A (resolved in world)"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-110,20})));
+  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_FORE if collisions "Contact force and torque on FORE (resolved in world)"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-110,-10})));
+equation
+  connect(collisionForce_UPPER_A.frame_b, UPPER_A.frame_a);
+  connect(collisionWorld.force[1, :], collisionForce_UPPER_A.force);
+  connect(collisionWorld.torque[1, :], collisionForce_UPPER_A.torque);
+  connect(collisionForce_FORE.frame_b, FORE.frame_a);
+  connect(collisionWorld.force[2, :], collisionForce_FORE.force);
+  connect(collisionWorld.torque[2, :], collisionForce_FORE.torque);
+public
 equation
   annotation (
     experiment(StopTime=1.0),

@@ -2,6 +2,37 @@ within PENDULUM;
 model Mechatronics "Mechatronic model of PENDULUM: Mechanics with no joint drive"
   extends PENDULUM.Mechanics;
 
+  // Collisions: contact forces between the bodies' collision shapes (see Components.Collision)
+  parameter Boolean collisions = false "Apply contact forces between the bodies' collision shapes"
+    annotation (Dialog(group="Collisions"), choices(checkBox=true));
+  PENDULUM.Components.Collision.World collisionWorld(
+    nBodies=1,
+    nParts=1,
+    partBody={1},
+    partVertices={8},
+    partRadius={0.0},
+    vertices={
+      {-0.015, -0.015, -0.005},
+      {0.315, -0.015, -0.005},
+      {-0.015, 0.015, -0.005},
+      {0.315, 0.015, -0.005},
+      {-0.015, -0.015, 0.005},
+      {0.315, -0.015, 0.005},
+      {-0.015, 0.015, 0.005},
+      {0.315, 0.015, 0.005}},
+    checked={{0}},
+    r_0={LINK.frame_a.r_0},
+    R_T={LINK.frame_a.R.T},
+    v_0={LINK.v_0},
+    w_a={LINK.w_a}) if collisions "Contact forces between the collision shapes"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-140,20})));
+  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_LINK if collisions "Contact force and torque on LINK (resolved in world)"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-110,20})));
+equation
+  connect(collisionForce_LINK.frame_b, LINK.frame_a);
+  connect(collisionWorld.force[1, :], collisionForce_LINK.force);
+  connect(collisionWorld.torque[1, :], collisionForce_LINK.torque);
+public
 equation
   annotation (
     experiment(StopTime=1.0),

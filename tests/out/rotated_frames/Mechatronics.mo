@@ -2,6 +2,63 @@ within ROT;
 model Mechatronics "Mechatronic model of ROT: Mechanics with no joint drive"
   extends ROT.Mechanics;
 
+  // Collisions: contact forces between the bodies' collision shapes (see Components.Collision)
+  parameter Boolean collisions = false "Apply contact forces between the bodies' collision shapes"
+    annotation (Dialog(group="Collisions"), choices(checkBox=true));
+  ROT.Components.Collision.World collisionWorld(
+    nBodies=3,
+    nParts=3,
+    partBody={1, 2, 3},
+    partVertices={8, 8, 8},
+    partRadius={0.0, 0.0, 0.0},
+    vertices={
+      {-0.002, 0.0, -0.026},
+      {0.078, 0.0, -0.026},
+      {-0.002, 0.145, -0.026},
+      {0.078, 0.145, -0.026},
+      {-0.002, 0.0, 0.013},
+      {0.078, 0.0, 0.013},
+      {-0.002, 0.145, 0.013},
+      {0.078, 0.145, 0.013},
+      {-0.011, -0.004, -0.012},
+      {0.113, -0.004, -0.012},
+      {-0.011, 0.039, -0.012},
+      {0.113, 0.039, -0.012},
+      {-0.011, -0.004, 0.061},
+      {0.113, -0.004, 0.061},
+      {-0.011, 0.039, 0.061},
+      {0.113, 0.039, 0.061},
+      {-0.034, -0.01, -0.01},
+      {0.01, -0.01, -0.01},
+      {-0.034, 0.094, -0.01},
+      {0.01, 0.094, -0.01},
+      {-0.034, -0.01, 0.034},
+      {0.01, -0.01, 0.034},
+      {-0.034, 0.094, 0.034},
+      {0.01, 0.094, 0.034}},
+    checked={{0, 0, 1}, {0, 0, 0}, {1, 0, 0}},
+    r_0={BRACKET.frame_a.r_0, SLIDER.frame_a.r_0, TOOL.frame_a.r_0},
+    R_T={BRACKET.frame_a.R.T, SLIDER.frame_a.R.T, TOOL.frame_a.R.T},
+    v_0={BRACKET.v_0, SLIDER.v_0, TOOL.v_0},
+    w_a={BRACKET.w_a, SLIDER.w_a, TOOL.w_a}) if collisions "Contact forces between the collision shapes"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-140,20})));
+  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_BRACKET if collisions "Contact force and torque on BRACKET (resolved in world)"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-110,20})));
+  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_SLIDER if collisions "Contact force and torque on SLIDER (resolved in world)"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-110,-10})));
+  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_TOOL if collisions "Contact force and torque on TOOL (resolved in world)"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-110,-40})));
+equation
+  connect(collisionForce_BRACKET.frame_b, BRACKET.frame_a);
+  connect(collisionWorld.force[1, :], collisionForce_BRACKET.force);
+  connect(collisionWorld.torque[1, :], collisionForce_BRACKET.torque);
+  connect(collisionForce_SLIDER.frame_b, SLIDER.frame_a);
+  connect(collisionWorld.force[2, :], collisionForce_SLIDER.force);
+  connect(collisionWorld.torque[2, :], collisionForce_SLIDER.torque);
+  connect(collisionForce_TOOL.frame_b, TOOL.frame_a);
+  connect(collisionWorld.force[3, :], collisionForce_TOOL.force);
+  connect(collisionWorld.torque[3, :], collisionForce_TOOL.torque);
+public
 equation
   annotation (
     experiment(StopTime=1.0),

@@ -2,6 +2,50 @@ within VASM;
 model Mechatronics "Mechatronic model of VASM: Mechanics with no joint drive"
   extends VASM.Mechanics;
 
+  // Collisions: contact forces between the bodies' collision shapes (see Components.Collision)
+  parameter Boolean collisions = false "Apply contact forces between the bodies' collision shapes"
+    annotation (Dialog(group="Collisions"), choices(checkBox=true));
+  VASM.Components.Collision.World collisionWorld(
+    nBodies=2,
+    nParts=2,
+    partBody={1, 2},
+    partVertices={8, 8},
+    partRadius={0.0, 0.0},
+    vertices={
+      {-0.005, -0.005, 1.0408341e-17},
+      {0.005, -0.005, 6.938894e-18},
+      {-0.005, 0.005, 8.673617e-18},
+      {0.005, 0.005, 0.0},
+      {0.005, 0.005, 0.06},
+      {-0.005, 0.005, 0.06},
+      {0.005, -0.005, 0.06},
+      {-0.005, -0.005, 0.06},
+      {-0.012, -0.012, 6.938894e-18},
+      {0.012, -0.012, 0.0},
+      {-0.012, 0.012, 5.2041704e-18},
+      {0.012, 0.012, -1.7347235e-18},
+      {0.012, 0.012, 0.01},
+      {-0.012, 0.012, 0.01},
+      {0.012, -0.012, 0.01},
+      {-0.012, -0.012, 0.01}},
+    checked={{0, 1}, {1, 0}},
+    r_0={BOLT.frame_a.r_0, NUT.frame_a.r_0},
+    R_T={BOLT.frame_a.R.T, NUT.frame_a.R.T},
+    v_0={BOLT.v_0, NUT.v_0},
+    w_a={BOLT.w_a, NUT.w_a}) if collisions "Contact forces between the collision shapes"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-140,20})));
+  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_BOLT if collisions "Contact force and torque on BOLT (resolved in world)"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-110,20})));
+  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_NUT if collisions "Contact force and torque on NUT (resolved in world)"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-110,-10})));
+equation
+  connect(collisionForce_BOLT.frame_b, BOLT.frame_a);
+  connect(collisionWorld.force[1, :], collisionForce_BOLT.force);
+  connect(collisionWorld.torque[1, :], collisionForce_BOLT.torque);
+  connect(collisionForce_NUT.frame_b, NUT.frame_a);
+  connect(collisionWorld.force[2, :], collisionForce_NUT.force);
+  connect(collisionWorld.torque[2, :], collisionForce_NUT.torque);
+public
 equation
   annotation (
     experiment(StopTime=1.0),

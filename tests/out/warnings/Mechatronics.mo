@@ -2,6 +2,63 @@ within WARN;
 model Mechatronics "Mechatronic model of WARN: Mechanics with no joint drive"
   extends WARN.Mechanics;
 
+  // Collisions: contact forces between the bodies' collision shapes (see Components.Collision)
+  parameter Boolean collisions = false "Apply contact forces between the bodies' collision shapes"
+    annotation (Dialog(group="Collisions"), choices(checkBox=true));
+  WARN.Components.Collision.World collisionWorld(
+    nBodies=3,
+    nParts=3,
+    partBody={1, 2, 3},
+    partVertices={8, 8, 8},
+    partRadius={0.0, 0.0, 0.0},
+    vertices={
+      {-0.01, -0.01, -0.005},
+      {0.11, -0.01, -0.005},
+      {-0.01, 0.01, -0.005},
+      {0.11, 0.01, -0.005},
+      {-0.01, -0.01, 0.005},
+      {0.11, -0.01, 0.005},
+      {-0.01, 0.01, 0.005},
+      {0.11, 0.01, 0.005},
+      {-0.01, -0.01, -0.005},
+      {0.11, -0.01, -0.005},
+      {-0.01, 0.01, -0.005},
+      {0.11, 0.01, -0.005},
+      {-0.01, -0.01, 0.005},
+      {0.11, -0.01, 0.005},
+      {-0.01, 0.01, 0.005},
+      {0.11, 0.01, 0.005},
+      {-0.0005, -0.0025, -0.00025},
+      {0.0045, -0.0025, -0.00025},
+      {-0.0005, 0.0025, -0.00025},
+      {0.0045, 0.0025, -0.00025},
+      {-0.0005, -0.0025, 0.00025},
+      {0.0045, -0.0025, 0.00025},
+      {-0.0005, 0.0025, 0.00025},
+      {0.0045, 0.0025, 0.00025}},
+    checked={{0, 0, 1}, {0, 0, 1}, {1, 1, 0}},
+    r_0={ASYM.frame_a.r_0, TRI.frame_a.r_0, NOMAT.frame_a.r_0},
+    R_T={ASYM.frame_a.R.T, TRI.frame_a.R.T, NOMAT.frame_a.R.T},
+    v_0={ASYM.v_0, TRI.v_0, NOMAT.v_0},
+    w_a={ASYM.w_a, TRI.w_a, NOMAT.w_a}) if collisions "Contact forces between the collision shapes"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-140,20})));
+  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_ASYM if collisions "Contact force and torque on ASYM (resolved in world)"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-110,20})));
+  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_TRI if collisions "Contact force and torque on TRI (resolved in world)"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-110,-10})));
+  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_NOMAT if collisions "Contact force and torque on NOMAT (resolved in world)"
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-110,-40})));
+equation
+  connect(collisionForce_ASYM.frame_b, ASYM.frame_a);
+  connect(collisionWorld.force[1, :], collisionForce_ASYM.force);
+  connect(collisionWorld.torque[1, :], collisionForce_ASYM.torque);
+  connect(collisionForce_TRI.frame_b, TRI.frame_a);
+  connect(collisionWorld.force[2, :], collisionForce_TRI.force);
+  connect(collisionWorld.torque[2, :], collisionForce_TRI.torque);
+  connect(collisionForce_NOMAT.frame_b, NOMAT.frame_a);
+  connect(collisionWorld.force[3, :], collisionForce_NOMAT.force);
+  connect(collisionWorld.torque[3, :], collisionForce_NOMAT.torque);
+public
 equation
   annotation (
     experiment(StopTime=1.0),
