@@ -68,16 +68,6 @@ export function resetAllEdit(matrix) {
   return { pairs: all.filter((p) => known.has(p.a) && known.has(p.b)).map((p) => ({ a: p.a, b: p.b, allowed: null })) };
 }
 
-/**
- * The matrix as a square grid over `bodies`: cell [i][j] is the pair's row (null on the diagonal
- * and for pairs the service did not list).
- */
-export function matrixGrid(matrix) {
-  const bodies = matrix?.bodies || [];
-  const byKey = new Map(matrixRows(matrix).map((r) => [r.key, r]));
-  return { bodies, cells: bodies.map((a, i) => bodies.map((b, j) => (i === j ? null : byKey.get(pairKey(a, b)) || null))) };
-}
-
 /** The segment between two witness points: its ends (world, m) and length (m). */
 export function witnessLine(p) {
   const from = [...p.point_a];

@@ -7,7 +7,6 @@ import {
   matrixRows,
   pairEdit,
   resetAllEdit,
-  matrixGrid,
   witnessLine,
   interferenceText,
   sweepRows,
@@ -71,15 +70,6 @@ test('pairEdit: a change away from the default is stored, back to the default re
 test('resetAllEdit resets the custom pairs of this version only', () => {
   assert.deepEqual(resetAllEdit(matrix), { pairs: [{ a: 'LINK_UPPER', b: 'LINK_FORE', allowed: null }] });
   assert.deepEqual(resetAllEdit({ bodies: [], pairs: [] }), { pairs: [] });
-});
-
-test('matrixGrid is symmetric with an empty diagonal', () => {
-  const g = matrixGrid(matrix);
-  assert.equal(g.cells.length, 3);
-  assert.equal(g.cells[0][0], null);
-  assert.equal(g.cells[0][2], g.cells[2][0]);
-  assert.equal(g.cells[0][2].state, 'checked (default)');
-  assert.equal(g.cells[1][2].custom, true);
 });
 
 test('witnessLine and interferenceText', () => {
