@@ -223,7 +223,14 @@ async fn end_to_end_in_chromium() {
             assert!(shots.join(format!("{png}.png")).exists(), "screenshot {png}");
         }
     }
-    for png in ["1-models-empty", "2-model-3d", "6-drives-refused", "7-drives-saved", "8-library", "10-model-versions", "12-narrow-model", "15-job-progress"] {
+    // The Collision tab and the motion's check (web/e2e/collision.mjs): an interference made by
+    // checking a joined pair, and the first contact of a motion that swings a link into the base.
+    let collision = &result["collision"];
+    println!("collisions: {collision}");
+    assert!(collision["interference"]["depth"].as_f64().is_some_and(|d| d > 0.0), "an interference with its depth: {collision}");
+    assert!(collision["first_contact"]["time"].as_f64().is_some_and(|t| t > 0.0), "the motion's first contact: {collision}");
+    assert!(collision["min_distance"].as_f64().is_some_and(|d| d < 0.0), "the pair penetrates along the motion: {collision}");
+    for png in ["1-models-empty", "2-model-3d", "6-drives-refused", "7-drives-saved", "8-library", "10-model-versions", "12-narrow-model", "15-job-progress", "26-collision-interference", "27-collision-motion", "13f-narrow-collision"] {
         assert!(shots.join(format!("{png}.png")).exists(), "screenshot {png}");
     }
     app.stop().await;

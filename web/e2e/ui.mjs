@@ -21,6 +21,7 @@ import { launch, waitForModel, checkModelPixels, checkLabels } from './lib.mjs';
 import { motionSteps } from './motion.mjs';
 import { resultsSteps } from './results.mjs';
 import { liveSteps } from './live.mjs';
+import { collisionSteps } from './collision.mjs';
 import { standaloneSteps } from './standalone.mjs';
 
 const url = process.env.CAD2MO_URL;
@@ -187,6 +188,10 @@ try {
   const live = await liveSteps(page, { step, shot, harness: process.env.CAD2MO_LIVE_HARNESS });
   await checkLabels(page, 'the live tab');
 
+  // ---- Collisions (issue 14): shapes, an interference made by the matrix, a motion's first contact.
+  const collision = await collisionSteps(page, { step, shot });
+  await checkLabels(page, 'the collision tab');
+
   // ---- The Results page: a result of any Modelica model, its Dymola visual shapes in 3D.
   const standalone = await standaloneSteps(page, { step, shot, downloads, checkLabels });
 
@@ -338,6 +343,11 @@ try {
   await shot(page, '13e-narrow-live');
   const overflowLive = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
   assert.ok(overflowLive <= 1, `the live tab is ${overflowLive}px wider than a narrow window`);
+  await page.getByRole('tab', { name: 'Collision' }).click();
+  await page.locator('table.collision-shapes-table').waitFor();
+  await shot(page, '13f-narrow-collision');
+  const overflowCollision = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
+  assert.ok(overflowCollision <= 1, `the collision tab is ${overflowCollision}px wider than a narrow window`);
   await page.getByRole('link', { name: 'Results', exact: true }).click();
   await page.getByRole('heading', { name: 'Results', exact: true, level: 1 }).waitFor();
   await page.locator('.results-list-box table.results, .results-list-box p:not(:empty)').first().waitFor();
@@ -351,7 +361,7 @@ try {
   assert.ok(overflowLib <= 1, `the library is ${overflowLib}px wider than a narrow window`);
 
   assert.deepEqual(consoleErrors, [], 'the page logged errors');
-  console.log(JSON.stringify({ joint, package: packagePath, library: libraryPath, motion, results, live, standalone }));
+  console.log(JSON.stringify({ joint, package: packagePath, library: libraryPath, motion, results, live, collision, standalone }));
 } finally {
   await browser.close();
 }

@@ -23,6 +23,8 @@ export function litScene() {
 
 export const BACKGROUND = 0xf3f5f8;
 const HIGHLIGHT = new THREE.Color(0xff9900);
+const CONTACT = new THREE.Color(0xe01010); // bodies of a colliding pair
+const CONTACT_LINE = 0x00b050; // closest-point lines (green: unlike the red tint of the pair)
 const JOINT_COLORS = { revolute: 0xd03030, prismatic: 0x7030c0 };
 
 export class Viewer {
@@ -351,10 +353,8 @@ export class Viewer {
 
   /** Highlights one body or joint (null clears). */
   select(sel) {
-    for (const [name, b] of this.bodies) {
-      const on = sel?.kind === 'body' && sel.name === name;
-      for (const m of b.materials) m.emissive.copy(on ? HIGHLIGHT : new THREE.Color(0)).multiplyScalar(on ? 0.45 : 0);
-    }
+    this.selected = sel;
+    this.paintBodies();
     for (const [name, j] of this.joints) {
       const on = sel?.kind === 'joint' && sel.name === name;
       for (const a of j.arrows) {
@@ -363,6 +363,69 @@ export class Viewer {
       }
     }
     this.invalidate();
+  }
+
+  /** Emissive tint: the selected body orange, bodies of a marked (colliding) pair red. */
+  paintBodies() {
+    const sel = this.selected;
+    for (const [name, b] of this.bodies) {
+      const on = sel?.kind === 'body' && sel.name === name;
+      const marked = this.marked?.has(name);
+      for (const m of b.materials) {
+        if (on) m.emissive.copy(HIGHLIGHT).multiplyScalar(0.45);
+        else if (marked) m.emissive.copy(CONTACT).multiplyScalar(0.55);
+        else m.emissive.setRGB(0, 0, 0);
+      }
+    }
+  }
+
+  /**
+   * Collision overlays: bodies `names` tinted red, and `lines` [{from, to}] (world points, m)
+   * drawn as segments with a dot at each end, over the meshes (no depth test). Empty clears.
+   */
+  setContacts(names = [], lines = []) {
+    this.marked = new Set(names.filter((n) => this.bodies.has(n)));
+    this.paintBodies();
+    if (this.contactGroup) {
+      this.scene.remove(this.contactGroup);
+      this.contactGroup.traverse((o) => {
+        o.geometry?.dispose?.();
+        o.material?.dispose?.();
+      });
+    }
+    this.contactGroup = new THREE.Group();
+    this.contactGroup.name = 'contacts';
+    const dot = this.size * 0.01;
+    for (const l of lines) {
+      const a = new THREE.Vector3(...l.from);
+      const b = new THREE.Vector3(...l.to);
+      const geom = new THREE.BufferGeometry().setFromPoints([a, b]);
+      const line = new THREE.Line(geom, new THREE.LineBasicMaterial({ color: CONTACT_LINE, depthTest: false, transparent: true }));
+      line.renderOrder = 20;
+      line.userData.contact = { from: [...l.from], to: [...l.to] };
+      this.contactGroup.add(line);
+      for (const p of [a, b]) {
+        const s = new THREE.Mesh(new THREE.SphereGeometry(dot, 12, 8), new THREE.MeshBasicMaterial({ color: CONTACT_LINE, depthTest: false, transparent: true }));
+        s.position.copy(p);
+        s.renderOrder = 20;
+        this.contactGroup.add(s);
+      }
+    }
+    this.scene.add(this.contactGroup);
+    this.invalidate();
+  }
+
+  /** The contact lines drawn now, read from the scene: [{from, to}] in world coordinates. */
+  contactLines() {
+    const out = [];
+    this.contactGroup?.traverse((o) => {
+      if (!o.isLine) return;
+      o.updateMatrixWorld(true);
+      const pos = o.geometry.getAttribute('position');
+      const p = (i) => new THREE.Vector3(pos.getX(i), pos.getY(i), pos.getZ(i)).applyMatrix4(o.matrixWorld).toArray();
+      out.push({ from: p(0), to: p(1) });
+    });
+    return out;
   }
 
   fit() {

@@ -1,5 +1,5 @@
-// One converted version: the 3D view beside six tabs (Structure with joint sliders, Report,
-// Drives, Motion, Results, Live). Selecting a body or joint anywhere highlights it in the 3D view and in the lists.
+// One converted version: the 3D view beside seven tabs (Structure with joint sliders, Report,
+// Drives, Motion, Results, Live, Collision). Selecting a body or joint anywhere highlights it in the 3D view and in the lists.
 
 import { unzipSync } from 'fflate';
 import { STLLoader } from 'three/addons/loaders/STLLoader.js';
@@ -11,6 +11,7 @@ import { renderDrives } from './drives.js';
 import { renderMotion } from './motion.js';
 import { renderResults } from './results.js';
 import { renderLive } from './live.js';
+import { renderCollision } from './collision.js';
 
 const DEG = 180 / Math.PI;
 
@@ -124,7 +125,9 @@ export async function renderViewer(main, id, v, initialTab) {
     { id: 'motion', label: 'Motion', render: (p) => (motion = renderMotion(p, { modelId: id, version, versionNumber: v, report, viewer, setJoints, currentJoints, say, stage: motionStage, drivesChanged })) },
     { id: 'results', label: 'Results', render: (p) => (results = renderResults(p, { modelId: id, versionNumber: v, viewer, say, select, stage: resultsStage })) },
     { id: 'live', label: 'Live', render: (p) => (live = renderLive(p, { modelId: id, versionNumber: v, viewer, say, stage: liveStage })) },
+    { id: 'collision', label: 'Collision', render: (p) => (collision = renderCollision(p, { modelId: id, versionNumber: v, viewer, say, resetPose })) },
   ];
+  let collision = null;
   let motion = null;
   let results = null;
   let live = null;
@@ -146,6 +149,9 @@ export async function renderViewer(main, id, v, initialTab) {
       // Hide before show: both tabs pose the bodies, and hiding one hands them back to the joints.
       if (tab !== 'results') results?.shown(false);
       if (tab !== 'live') live?.shown(false);
+      // Collision marks in 3D belong to the tab that drew them.
+      if (tab !== 'collision') collision?.shown(false);
+      if (tab !== 'motion') motion?.shown?.(false);
       if (tab === 'results') results?.shown(true);
       if (tab === 'live') live?.shown(true);
       history.replaceState(null, '', `#/models/${enc(id)}/versions/${v}${tab === 'structure' ? '' : '/' + tab}`);
@@ -308,6 +314,7 @@ export async function renderViewer(main, id, v, initialTab) {
     motion?.dispose?.();
     results?.dispose();
     live?.dispose();
+    collision?.dispose();
     viewer.dispose();
     if (window.cad2moViewer === viewer) delete window.cad2moViewer;
   };
@@ -316,7 +323,7 @@ export async function renderViewer(main, id, v, initialTab) {
 /** Stands in for the 3D view where WebGL is missing. */
 function blindViewer() {
   const noop = () => {};
-  return { size: 1, q: new Map(), select: noop, setCoordinate: noop, setCoordinates: noop, setBodyPoses: noop, frameNow: () => null, showGizmo: () => null, hideGizmo: noop, resetPose: noop, resetView: noop, setAnaglyph: noop, setGrid: noop, dispose: noop };
+  return { size: 1, q: new Map(), select: noop, setCoordinate: noop, setCoordinates: noop, setBodyPoses: noop, frameNow: () => null, showGizmo: () => null, hideGizmo: noop, resetPose: noop, resetView: noop, setAnaglyph: noop, setGrid: noop, setContacts: noop, contactLines: () => [], dispose: noop };
 }
 
 const mm = (v) => v.map((x) => num(x * 1000)).join(', ');

@@ -2,11 +2,13 @@
 // captured from the sliders, or a tool pose reached by inverse kinematics, with a gizmo that
 // solves IK live while it is dragged), played in 3D at real speed with a scrub slider, plotted
 // (q, qd, qdd, torque; motor operating points against each drive's envelope), sized (checks and
-// ranked alternatives one can apply), and the joints' limits.
+// ranked alternatives one can apply), checked for collisions (first contact, per pair minimum
+// distance, markers on the timeline and plots, closest-point lines in 3D), and the joints' limits.
 
 import { api, enc } from '../api.js';
 import { h, fill, errorBox, num, field, confirmAction, newId, unitLabel } from '../ui.js';
 import { displayScale, displayUnit, sampleAt, keyframeProblems, throttle, applyAlternative, rotationRows, freshName, bodyDepths, defaultToolFrame } from './motion-data.js';
+import { sweepRows, firstContactText, contactMarkers, touchedBy, witnessLine, pairKey } from './collision-data.js';
 
 const INTERPOLATIONS = [
   ['ptp', 'Point to point (speed/acceleration limits)'],
@@ -30,6 +32,8 @@ export function renderMotion(panel, ctx) {
   let dirty = false;
   let traj = null;
   let sizing = null;
+  let collisions = null; // GET …/collisions of the current motion
+  let contactPair = null; // the pair whose closest points are drawn (its key)
   let problems = new Map();
   let time = 0;
   let playing = false;
@@ -44,11 +48,12 @@ export function renderMotion(panel, ctx) {
   const playerBox = h('div', { class: 'player-box' });
   const plotsBox = h('div', { class: 'plots-box' });
   const sizingBox = h('div', { class: 'sizing-box' });
+  const collisionBox = h('div', { class: 'motion-collisions', 'aria-live': 'polite' });
   const limitsBox = h('div', { class: 'limits-box' });
   fill(panel, h('h2', {}, 'Motions'), listBox, editorBox, gizmoBox, h('h2', {}, 'Joint limits'), limitsBox);
   // Under the 3D view (wider), or in the tab where there is no such place.
-  if (ctx.stage) fill(ctx.stage, playerBox, plotsBox, sizingBox);
-  else panel.append(playerBox, plotsBox, sizingBox);
+  if (ctx.stage) fill(ctx.stage, playerBox, plotsBox, sizingBox, collisionBox);
+  else panel.append(playerBox, plotsBox, sizingBox, collisionBox);
 
   const jointInfo = (name) => joints?.joints.find((j) => j.name === name);
   // Keyframes set the independent joints; in a closed loop the others follow.
@@ -136,6 +141,7 @@ export function renderMotion(panel, ctx) {
     sizing = null;
     problems = new Map();
     time = 0;
+    resetCollisions();
     renderList();
     renderEditor();
     await plan();
@@ -412,6 +418,7 @@ export function renderMotion(panel, ctx) {
       dirty = false;
       traj = null;
       sizing = null;
+      resetCollisions();
       stop();
       renderList();
       renderEditor();
@@ -432,6 +439,7 @@ export function renderMotion(panel, ctx) {
     fill(playerBox, h('p', { role: 'status' }, 'Planning the trajectory…'));
     fill(plotsBox);
     fill(sizingBox);
+    resetCollisions();
     try {
       traj = await api(`${base}/motions/${enc(current.id)}/trajectory?rate=${RATE}`);
     } catch (e) {
@@ -446,6 +454,7 @@ export function renderMotion(panel, ctx) {
     renderEditor();
     renderPlayer();
     renderPlots();
+    renderCollisions();
     seek(0);
     await loadSizing();
   }
@@ -505,7 +514,7 @@ export function renderMotion(panel, ctx) {
       ctx.versionNumber && traj.version !== ctx.versionNumber
         ? h('p', { class: 'warning' }, `Motions are planned on the latest version (v${traj.version}); this page shows v${ctx.versionNumber}, whose joints may differ.`)
         : null,
-      h('div', { class: 'timeline', role: 'group', 'aria-label': 'Keyframe times' }, marks, timelineCursor),
+      h('div', { class: 'timeline', role: 'group', 'aria-label': 'Keyframe and first-contact times' }, marks, contactMarks(d), timelineCursor),
       h('div', { class: 'player row' }, playBtn, h('label', { for: scrub.id, class: 'visually-hidden' }, 'Motion time'), scrub, clock),
     );
   }
@@ -519,6 +528,7 @@ export function renderMotion(panel, ctx) {
     if (timelineCursor) timelineCursor.style.left = `${traj.duration > 0 ? (time / traj.duration) * 100 : 0}%`;
     playerBox.dataset.time = time.toFixed(3);
     for (const p of plots) p.setTime(time);
+    markTouched();
     poseChanged();
   }
 
@@ -575,7 +585,7 @@ export function renderMotion(panel, ctx) {
       if (!traj[key]) continue;
       const box = h('div', { class: 'plot', dataset: { plot: key } });
       plotsBox.append(box);
-      plots.push(timePlot(box, { title, t: traj.t, series: traj[key], names, units: us, onSeek: seekTo }));
+      plots.push(timePlot(box, { title, t: traj.t, series: traj[key], names, units: us, onSeek: seekTo, marks: () => contactMarkers(collisions, traj?.duration || 0).map((m) => m.time) }));
     }
     for (const d of sizing?.drives || []) {
       if (!d.operating_points?.speed?.length) continue;
@@ -676,6 +686,118 @@ export function renderMotion(panel, ctx) {
       fill(out, errorBox(e, 'Could not apply the alternative'));
       button.disabled = false;
     }
+  }
+
+  // ---------------------------------------------------------------- collisions along the motion
+  function resetCollisions() {
+    collisions = null;
+    if (contactPair) viewer.setContacts?.([], []);
+    contactPair = null;
+    fill(collisionBox);
+  }
+
+  function renderCollisions() {
+    if (!traj) {
+      fill(collisionBox);
+      return;
+    }
+    const check = h('button', { type: 'button', id: 'motion-check-collisions', onclick: (e) => checkCollisions(e.currentTarget) }, collisions ? 'Check collisions again' : 'Check collisions');
+    if (!collisions) {
+      fill(collisionBox, h('h3', {}, 'Collisions'), h('p', { class: 'muted' }, 'Check the checked pairs of the collision matrix along this motion.'), check);
+      return;
+    }
+    const c = collisions;
+    const rows = sweepRows(c).map((r) => {
+      const on = r.key === contactPair;
+      return h(
+        'tr',
+        { dataset: { a: r.a, b: r.b }, class: `${r.touches ? 'fail' : 'pass'}${on ? ' selected' : ''}` },
+        h(
+          'th',
+          { scope: 'row' },
+          h('button', { type: 'button', class: 'link', 'aria-pressed': String(on), onclick: () => showPair(r.pair), 'aria-label': `Show the closest points of ${r.a} and ${r.b} at ${num(r.at)} s` }, `${r.a} — ${r.b}`),
+        ),
+        h('td', { class: 'num' }, `${num(r.minDistanceMm)} mm`),
+        h('td', { class: 'num' }, `${num(r.at)} s`),
+        h('td', { class: 'num' }, r.firstContact === null ? '—' : `${num(r.firstContact)} s`),
+        h('td', { class: 'num' }, r.touches ? `${num(r.maxDepthMm)} mm` : '—'),
+        h('td', { class: 'verdict' }, r.touches ? 'contact' : 'clear'),
+      );
+    });
+    fill(
+      collisionBox,
+      h('h3', {}, 'Collisions ', h('small', { class: 'muted' }, `${c.samples} samples at ${num(c.rate_hz)} Hz, on v${c.version}`)),
+      h('p', { class: `first-contact ${c.first_contact ? 'warning' : 'ok'}` }, firstContactText(c)),
+      rows.length
+        ? h(
+            'div',
+            { class: 'scroll' },
+            h(
+              'table',
+              { class: 'checks motion-collisions-table', 'aria-label': 'Collisions along the motion' },
+              h('thead', {}, h('tr', {}, ['Pair', 'Min distance', 'At', 'First contact', 'Max depth', 'Result'].map((x) => h('th', { scope: 'col' }, x)))),
+              h('tbody', {}, rows),
+            ),
+          )
+        : h('p', { class: 'muted' }, 'No checked pair has shapes on both sides: nothing to check (see the Collision tab).'),
+      h('p', { class: 'muted guarantee' }, h('strong', {}, 'Guarantee: '), c.guarantee),
+      check,
+    );
+    markTouched();
+  }
+
+  async function checkCollisions(button) {
+    if (!current) return;
+    if (button) button.disabled = true;
+    const id = current.id;
+    try {
+      const c = await api(`${base}/motions/${enc(id)}/collisions`);
+      if (disposed || current?.id !== id) return;
+      collisions = c;
+      contactPair = null;
+      viewer.setContacts?.([], []);
+      renderCollisions();
+      renderPlayer();
+      setTime(time);
+      ctx.say(firstContactText(c), c.first_contact ? 'error' : 'ok');
+    } catch (e) {
+      if (button) button.disabled = false;
+      collisionBox.append(errorBox(e, 'The collisions could not be checked'));
+    }
+  }
+
+  /** The pair's closest points: the player goes to the time of its minimum distance. */
+  function showPair(p) {
+    seek(p.at);
+    contactPair = pairKey(p.a, p.b);
+    viewer.setContacts?.([p.a, p.b], [witnessLine(p)]);
+    renderCollisions();
+  }
+
+  function contactMarks(d) {
+    return contactMarkers(collisions, d).map((m) =>
+      h(
+        'button',
+        {
+          type: 'button',
+          class: 'timeline-mark contact-mark',
+          style: `left: ${m.left}%`,
+          dataset: { time: String(m.time), a: m.a, b: m.b },
+          title: `First contact of ${m.a} and ${m.b} at ${num(m.time)} s`,
+          'aria-label': `First contact of ${m.a} and ${m.b} at ${num(m.time)} s`,
+          onclick: () => seek(m.time),
+        },
+        '!',
+      ),
+    );
+  }
+
+  /** Table rows of pairs that have touched by the player's time. */
+  function markTouched() {
+    if (!collisions) return;
+    const now = new Set(touchedBy(collisions, time).map((p) => pairKey(p.a, p.b)));
+    for (const tr of collisionBox.querySelectorAll('tr[data-a]')) tr.classList.toggle('touched', now.has(pairKey(tr.dataset.a, tr.dataset.b)));
+    collisionBox.dataset.touched = String(now.size);
   }
 
   // ---------------------------------------------------------------- gizmo and live IK
@@ -911,6 +1033,14 @@ export function renderMotion(panel, ctx) {
   load();
   return {
     poseChanged,
+    shown(on) {
+      // The closest-point line belongs to this tab.
+      if (!on && contactPair) {
+        contactPair = null;
+        viewer.setContacts?.([], []);
+        renderCollisions();
+      }
+    },
     dispose() {
       disposed = true;
       stop();

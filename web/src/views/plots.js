@@ -8,6 +8,7 @@ import { torqueSpeedData, nearestIndex } from './motion-data.js';
 
 const COLORS = ['#1f5fa8', '#d03030', '#1e7b34', '#8a5a00', '#7030c0', '#0a8a8a', '#c04080', '#555'];
 const CURSOR = '#f0a030';
+const CONTACT = '#e01010';
 
 function widthOf(el) {
   return Math.max(240, Math.floor(el.clientWidth || el.parentElement?.clientWidth || 400) - 4);
@@ -43,6 +44,29 @@ function cursorLine(getT) {
   };
 }
 
+/** Dashed red vertical lines at the times `getTimes()` returns (e.g. first contacts). */
+function markLines(getTimes) {
+  return (u) => {
+    const ts = getTimes?.() || [];
+    if (!ts.length) return;
+    const { top, height, left, width } = u.bbox;
+    const ctx = u.ctx;
+    ctx.save();
+    ctx.strokeStyle = CONTACT;
+    ctx.setLineDash([5 * uPlot.pxRatio, 4 * uPlot.pxRatio]);
+    ctx.lineWidth = 1.5 * uPlot.pxRatio;
+    for (const t of ts) {
+      const x = u.valToPos(t, 'x', true);
+      if (x < left - 1 || x > left + width + 1) continue;
+      ctx.beginPath();
+      ctx.moveTo(x, top);
+      ctx.lineTo(x, top + height);
+      ctx.stroke();
+    }
+    ctx.restore();
+  };
+}
+
 /**
  * A uPlot chart over time in `box`, described for screen readers by `label`; a click seeks there.
  * `keepTime(t)` stores the cursor time its draw hook reads. Returns {u, setTime(t), destroy()}.
@@ -67,10 +91,11 @@ function timeChart(box, opts, data, label, onSeek, keepTime) {
 }
 
 /**
- * One chart of `series` (arrays over traj.t), one line per joint. Returns {setTime(t), destroy()}.
+ * One chart of `series` (arrays over traj.t), one line per joint; `marks()` gives times to mark
+ * (first contacts). Returns {setTime(t), destroy()}.
  * @param {HTMLElement} box
  */
-export function timePlot(box, { title, t, series, names, units, onSeek }) {
+export function timePlot(box, { title, t, series, names, units, onSeek, marks }) {
   let time = 0;
   const opts = {
     title,
@@ -80,7 +105,7 @@ export function timePlot(box, { title, t, series, names, units, onSeek }) {
     cursor: { drag: { x: false, y: false } },
     series: [{ label: 't [s]' }, ...names.map((n, i) => ({ label: `${n} [${units[i]}]`, stroke: COLORS[i % COLORS.length], width: 1.5 }))],
     axes: [{ label: 't [s]' }, { size: 56 }],
-    hooks: { draw: [cursorLine(() => time)] },
+    hooks: { draw: [markLines(marks), cursorLine(() => time)] },
   };
   return timeChart(box, opts, [t, ...series], `${title} against time`, onSeek, (x) => (time = x));
 }
