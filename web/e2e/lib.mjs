@@ -99,3 +99,15 @@ export async function checkLabels(page, where) {
   );
   assert.deepEqual(unlabelled, [], `unlabelled controls on ${where}`);
 }
+
+/** Largest distance between where two column-major poses put a few body-fixed points. */
+export function poseDistance(a, b) {
+  let worst = 0;
+  for (const p of [[0, 0, 0], [0.1, 0, 0], [0, 0.1, 0], [0, 0, 0.1], [0.05, -0.03, 0.08]]) {
+    const at = (e) => [0, 1, 2].map((i) => e[i] * p[0] + e[4 + i] * p[1] + e[8 + i] * p[2] + e[12 + i]);
+    const x = at(a);
+    const y = at(b);
+    worst = Math.max(worst, Math.hypot(x[0] - y[0], x[1] - y[1], x[2] - y[2]));
+  }
+  return worst;
+}

@@ -8,6 +8,7 @@
 // frame counters, the end, the active runs, the service's counters (GET /api/live), and that
 // leaving the tab closes the socket and hands the bodies back to the joints.
 
+import { poseDistance } from './lib.mjs';
 import assert from 'node:assert/strict';
 import { spawn } from 'node:child_process';
 import { Matrix4, Vector3 } from 'three';
@@ -54,17 +55,6 @@ function samples(bodies, at) {
   return lines.join('\n') + '\n';
 }
 
-/** Largest distance between where two column-major poses put a few body-fixed points. */
-function poseDistance(a, b) {
-  let worst = 0;
-  for (const p of [[0, 0, 0], [0.1, 0, 0], [0, 0.1, 0], [0, 0, 0.1], [0.05, -0.03, 0.08]]) {
-    const at = (e) => [0, 1, 2].map((i) => e[i] * p[0] + e[4 + i] * p[1] + e[8 + i] * p[2] + e[12 + i]);
-    const x = at(a);
-    const y = at(b);
-    worst = Math.max(worst, Math.hypot(x[0] - y[0], x[1] - y[1], x[2] - y[2]));
-  }
-  return worst;
-}
 
 /** In one task: the time the page shows, its data-time, and every mesh's world matrix. */
 const observe = (page) =>

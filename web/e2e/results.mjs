@@ -8,6 +8,7 @@
 // loop, charts of searched variables with the value at the cursor, a click on a chart seeking
 // the 3D time, the CSV export, refusals shown at the upload, deleting a result.
 
+import { poseDistance } from './lib.mjs';
 import assert from 'node:assert/strict';
 import { readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
@@ -72,17 +73,6 @@ const viewerPoses = (page) =>
     return out;
   });
 
-/** Largest distance between where two poses put a few body-fixed points. */
-function poseDistance(a, b) {
-  let worst = 0;
-  for (const p of [[0, 0, 0], [0.1, 0, 0], [0, 0.1, 0], [0, 0, 0.1], [0.05, -0.03, 0.08]]) {
-    const at = (e) => [0, 1, 2].map((i) => e[i] * p[0] + e[4 + i] * p[1] + e[8 + i] * p[2] + e[12 + i]);
-    const x = at(a);
-    const y = at(b);
-    worst = Math.max(worst, Math.hypot(x[0] - y[0], x[1] - y[1], x[2] - y[2]));
-  }
-  return worst;
-}
 
 /** The matrix a file's r_0 / R.T (as stored, float32) give: p_world = r_0 + R.Tᵀ · p. */
 function fileMatrix(report, coords, name, k) {
