@@ -492,7 +492,7 @@ async fn jobs_report_queue_position_and_progress() {
     assert_eq!(queued["queue"], serde_json::json!({"ahead": 0, "running": 1}), "{queued:#}");
     assert!(queued.get("progress").is_none());
 
-    let order = ["xml", "meshes", "vrml", "analysis", "modelica", "shapes", "report", "package", "storing"];
+    let order = ["xml", "meshes", "vrml", "analysis", "modelica", "collision", "shapes", "report", "package", "storing"];
     let mut seen: Vec<(usize, f64)> = Vec::new();
     let deadline = std::time::Instant::now() + std::time::Duration::from_secs(120);
     let done = loop {
