@@ -75,7 +75,7 @@ pub struct CollisionReport {
 impl Collision {
     /// Shapes for every body with a mesh; pairs joined by a joint; the user's edits by name.
     pub fn new(model: &Model, names: &[String], joint_names: &[String], edits: &AllowedEdits, opts: &ShapeOptions) -> Collision {
-        let shapes = model
+        let shapes: Vec<Option<BodyShape>> = model
             .bodies
             .iter()
             .map(|b| {
@@ -124,14 +124,27 @@ impl Collision {
                 }
             }
         }
+        // Only bodies with shapes can touch: pairs among them, by group (no n² walk over bodies).
+        let mut members: BTreeMap<usize, Vec<usize>> = BTreeMap::new();
+        for (i, shape) in shapes.iter().enumerate() {
+            if shape.is_some() {
+                let r = root(&mut group, i);
+                members.entry(r).or_default().push(i);
+            }
+        }
         let mut joined = BTreeMap::new();
-        for a in 0..n {
-            for b in a + 1..n {
-                let (ra, rb) = (root(&mut group, a), root(&mut group, b));
-                if ra == rb {
-                    joined.insert((a, b), "welded together (one rigid group)".to_string());
-                } else if let Some(j) = links.get(&(ra.min(rb), ra.max(rb))) {
-                    joined.insert((a, b), format!("joined by {j}"));
+        for m in members.values() {
+            for (k, &a) in m.iter().enumerate() {
+                for &b in &m[k + 1..] {
+                    joined.insert((a.min(b), a.max(b)), "welded together (one rigid group)".to_string());
+                }
+            }
+        }
+        for ((ga, gb), j) in &links {
+            let (Some(ma), Some(mb)) = (members.get(ga), members.get(gb)) else { continue };
+            for &a in ma {
+                for &b in mb {
+                    joined.entry((a.min(b), a.max(b))).or_insert_with(|| format!("joined by {j}"));
                 }
             }
         }
