@@ -33,7 +33,7 @@ pub struct AppState {
     /// The live view: frames from running simulations, relayed to browsers.
     pub relay: crate::relay::Relay,
     /// Collision shapes of a few versions (read back from their packages).
-    pub collisions: crate::collisions::Cache,
+    pub collisions: crate::motions::Cache<crate::collisions::VersionShapes>,
 }
 
 pub struct App {

@@ -4,7 +4,6 @@
 //! the CAD pose under the current matrix, and the check along a motion.
 
 use std::collections::{BTreeMap, BTreeSet};
-use std::sync::Arc;
 
 use nalgebra::{Isometry3, Matrix3, Rotation3, Translation3, UnitQuaternion, Vector3};
 use serde::Serialize;
@@ -181,12 +180,8 @@ pub struct FirstContact {
 pub struct PairSweepView {
     pub a: String,
     pub b: String,
-    pub min_distance: f64,
-    pub at: f64,
-    pub first_contact: Option<f64>,
-    pub max_depth: f64,
-    pub point_a: [f64; 3],
-    pub point_b: [f64; 3],
+    #[serde(flatten)]
+    pub sweep: collision::PairSweep,
 }
 
 #[derive(Clone, Debug, Serialize)]
@@ -231,41 +226,12 @@ pub fn along_motion(mech: &Mechanism, v: &VersionShapes, edits: &Edits, version:
     let mut pairs: Vec<PairSweepView> = sweep
         .pairs
         .iter()
-        .map(|p| PairSweepView {
-            a: v.bodies[p.a].clone(),
-            b: v.bodies[p.b].clone(),
-            min_distance: p.min_distance,
-            at: p.at,
-            first_contact: p.first_contact,
-            max_depth: p.max_depth,
-            point_a: p.point_a,
-            point_b: p.point_b,
-        })
+        .map(|p| PairSweepView { a: v.bodies[p.a].clone(), b: v.bodies[p.b].clone(), sweep: p.clone() })
         .collect();
-    pairs.sort_by(|x, y| x.min_distance.total_cmp(&y.min_distance));
+    pairs.sort_by(|x, y| x.sweep.min_distance.total_cmp(&y.sweep.min_distance));
     let first_contact = pairs
         .iter()
-        .filter_map(|p| p.first_contact.map(|t| FirstContact { a: p.a.clone(), b: p.b.clone(), time: t }))
+        .filter_map(|p| p.sweep.first_contact.map(|t| FirstContact { a: p.a.clone(), b: p.b.clone(), time: t }))
         .min_by(|x, y| x.time.total_cmp(&y.time));
     Ok(MotionCollisions { motion: name.to_string(), version, samples: sweep.samples, rate_hz: SWEEP_RATE, guarantee: sweep.guarantee, first_contact, pairs })
-}
-
-/// A small cache of versions' shapes, keyed by package hash.
-#[derive(Clone, Default)]
-pub struct Cache(Arc<std::sync::Mutex<Vec<(String, Arc<VersionShapes>)>>>);
-
-impl Cache {
-    pub fn get(&self, key: &str) -> Option<Arc<VersionShapes>> {
-        let v = self.0.lock().unwrap_or_else(|p| p.into_inner());
-        v.iter().find(|(k, _)| k == key).map(|(_, s)| s.clone())
-    }
-
-    pub fn put(&self, key: String, s: Arc<VersionShapes>) {
-        let mut v = self.0.lock().unwrap_or_else(|p| p.into_inner());
-        v.retain(|(k, _)| *k != key);
-        if v.len() >= 8 {
-            v.remove(0);
-        }
-        v.push((key, s));
-    }
 }

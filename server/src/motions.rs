@@ -97,16 +97,28 @@ impl Kinematic {
     }
 }
 
-/// A few analysed versions, most recently used last (analysis of a large bundle takes seconds).
-#[derive(Clone, Default)]
-pub struct Cache(Arc<Mutex<Vec<CacheEntry>>>);
+/// A few entries (analysed versions, a version's collision shapes), most recently used last:
+/// making one takes seconds for a large bundle.
+pub struct Cache<T = Kinematic>(Arc<Mutex<Vec<CacheEntry<T>>>>);
 
-type CacheEntry = (String, Arc<Kinematic>);
+type CacheEntry<T> = (String, Arc<T>);
 
-impl Cache {
+impl<T> Clone for Cache<T> {
+    fn clone(&self) -> Self {
+        Cache(self.0.clone())
+    }
+}
+
+impl<T> Default for Cache<T> {
+    fn default() -> Self {
+        Cache(Arc::new(Mutex::new(Vec::new())))
+    }
+}
+
+impl<T> Cache<T> {
     const SIZE: usize = 8;
 
-    pub fn get(&self, key: &str) -> Option<Arc<Kinematic>> {
+    pub fn get(&self, key: &str) -> Option<Arc<T>> {
         let mut v = self.0.lock().unwrap_or_else(|p| p.into_inner());
         let i = v.iter().position(|(k, _)| k == key)?;
         let e = v.remove(i);
@@ -115,7 +127,7 @@ impl Cache {
         Some(out)
     }
 
-    pub fn put(&self, key: String, k: Arc<Kinematic>) {
+    pub fn put(&self, key: String, k: Arc<T>) {
         let mut v = self.0.lock().unwrap_or_else(|p| p.into_inner());
         v.retain(|(x, _)| *x != key);
         if v.len() >= Self::SIZE {

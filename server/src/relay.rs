@@ -247,7 +247,7 @@ impl Relay {
                 let keys: HashMap<[u8; 8], [u8; 32]> = hashes
                     .iter()
                     .filter_map(|h| <[u8; 32]>::try_from(hex::decode(h).ok()?).ok())
-                    .map(live::key_of_hash)
+                    .map(|k| (live::key_id(&k), k))
                     .collect();
                 let mut st = self.lock();
                 st.keys = keys;

@@ -12,7 +12,7 @@ use serde::{Deserialize, Serialize};
 
 use super::error::{blocking, FieldError};
 use super::extract::Path;
-use super::motions::{find as find_motion, kinematic, model_exists};
+use super::motions::{converted_version, find as find_motion, kinematic};
 use super::ApiError;
 use crate::app::AppState;
 use crate::collisions::{self, Edits, VersionShapes};
@@ -28,21 +28,7 @@ pub fn router() -> Router<AppState> {
 
 /// The shapes of a version (`None`: the latest converted one), cached by package.
 async fn shapes(state: &AppState, model_id: &str, version: Option<i64>) -> Result<(i64, Arc<VersionShapes>), ApiError> {
-    model_exists(state, model_id).await?;
-    let versions = store::models::list_versions(&state.store.pool, model_id).await?;
-    let v = match version {
-        None => versions.iter().filter(|v| v.package_sha256.is_some() && v.report_sha256.is_some()).max_by_key(|v| v.version),
-        Some(n) => {
-            let v = versions.iter().find(|v| v.version == n).ok_or_else(|| ApiError::NotFound(format!("version {n} of model {model_id}")))?;
-            if v.package_sha256.is_none() || v.report_sha256.is_none() {
-                return Err(ApiError::Conflict(format!("version {n} of model {model_id} is not converted (yet)")));
-            }
-            Some(v)
-        }
-    };
-    let Some(v) = v else {
-        return Err(ApiError::Conflict(format!("model {model_id} has no converted version yet")));
-    };
+    let v = converted_version(state, model_id, version, "its collision shapes are unknown").await?;
     let (package, report) = (v.package_sha256.clone().unwrap_or_default(), v.report_sha256.clone().unwrap_or_default());
     if let Some(s) = state.collisions.get(&package) {
         return Ok((v.version, s));

@@ -50,24 +50,34 @@ pub(super) async fn kinematic(state: &AppState, model_id: &str) -> Result<(i64, 
     kinematic_at(state, model_id, None).await
 }
 
-/// [`kinematic`] of a given version (`None`: the latest converted one); 404 for an unknown
-/// version, 409 while it converts.
-pub(super) async fn kinematic_at(state: &AppState, model_id: &str, version: Option<i64>) -> Result<(i64, Arc<Kinematic>), ApiError> {
+/// A converted version of a model (`None`: the latest converted one): 404 for an unknown model
+/// or version, 409 while it converts or when none has converted (`lacking` says what is unknown
+/// then, e.g. "its joints are unknown").
+pub(super) async fn converted_version(
+    state: &AppState,
+    model_id: &str,
+    version: Option<i64>,
+    lacking: &str,
+) -> Result<store::models::VersionRow, ApiError> {
     model_exists(state, model_id).await?;
     let versions = store::models::list_versions(&state.store.pool, model_id).await?;
     let v = match version {
-        None => versions.iter().filter(|v| v.report_sha256.is_some()).max_by_key(|v| v.version),
+        None => versions.into_iter().filter(|v| v.report_sha256.is_some()).max_by_key(|v| v.version),
         Some(n) => {
-            let v = versions.iter().find(|v| v.version == n).ok_or_else(|| ApiError::NotFound(format!("version {n} of model {model_id}")))?;
+            let v = versions.into_iter().find(|v| v.version == n).ok_or_else(|| ApiError::NotFound(format!("version {n} of model {model_id}")))?;
             if v.report_sha256.is_none() {
                 return Err(ApiError::Conflict(format!("version {n} of model {model_id} is not converted (yet)")));
             }
             Some(v)
         }
     };
-    let Some(v) = v else {
-        return Err(ApiError::Conflict(format!("model {model_id} has no converted version yet: its joints are unknown")));
-    };
+    v.ok_or_else(|| ApiError::Conflict(format!("model {model_id} has no converted version yet: {lacking}")))
+}
+
+/// [`kinematic`] of a given version (`None`: the latest converted one); 404 for an unknown
+/// version, 409 while it converts.
+pub(super) async fn kinematic_at(state: &AppState, model_id: &str, version: Option<i64>) -> Result<(i64, Arc<Kinematic>), ApiError> {
+    let v = converted_version(state, model_id, version, "its joints are unknown").await?;
     let report_sha = v.report_sha256.clone().unwrap_or_default();
     let key = format!("{}/{}/{}", v.bundle_sha256, report_sha, v.options_json);
     if let Some(k) = state.kinematics.get(&key) {

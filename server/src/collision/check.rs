@@ -197,9 +197,12 @@ impl Default for SweepOptions {
     }
 }
 
-#[derive(Clone, Debug, PartialEq)]
+/// Serialised without its body indices (the service names the bodies).
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct PairSweep {
+    #[serde(skip)]
     pub a: usize,
+    #[serde(skip)]
     pub b: usize,
     /// Smallest distance found (< 0: penetration), at time `at`, witness points in world.
     pub min_distance: f64,

@@ -126,12 +126,13 @@ pub fn decode(d: &[u8]) -> Result<Frame<'_>, Drop> {
     })
 }
 
-/// The key a token signs with (SHA-256 of the token: what the store keeps of it) and its id.
-pub fn key_of_hash(token_sha256: [u8; 32]) -> ([u8; 8], [u8; 32]) {
-    let id = Sha256::digest(token_sha256);
-    let mut key_id = [0u8; 8];
-    key_id.copy_from_slice(&id[..8]);
-    (key_id, token_sha256)
+/// The id frames name a key by: the first 8 bytes of SHA-256 of the key (the key being SHA-256
+/// of the token, what the store keeps of it).
+pub fn key_id(key: &[u8; 32]) -> [u8; 8] {
+    let id = Sha256::digest(key);
+    let mut out = [0u8; 8];
+    out.copy_from_slice(&id[..8]);
+    out
 }
 
 /// Whether the frame's tag is the HMAC-SHA256 of its signed bytes under `key` (constant time).
@@ -193,7 +194,7 @@ pub fn encode(h: &Header, bodies: &[[f64; 12]], token: Option<&str>) -> Vec<u8> 
     d.extend_from_slice(&run.to_le_bytes());
     let key: Option<[u8; 32]> = token.map(|t| Sha256::digest(t.as_bytes()).into());
     match key {
-        Some(k) => d.extend_from_slice(&key_of_hash(k).0),
+        Some(k) => d.extend_from_slice(&key_id(&k)),
         None => d.extend_from_slice(&[0u8; 8]),
     }
     for b in bodies {

@@ -85,7 +85,7 @@ fn poses_are_frame_a_to_world() {
 fn signatures_match_an_independent_hmac() {
     // Python: key = sha256(b"c2m_test"); hmac.new(key, b"hello", sha256), sha256(key)[:8].
     let key: [u8; 32] = Sha256::digest(b"c2m_test").into();
-    let (id, k) = key_of_hash(key);
+    let (id, k) = (key_id(&key), key);
     assert_eq!(hex::encode(id), "862c1e6f79235283");
     let f = Frame {
         flags: FLAG_AUTH,

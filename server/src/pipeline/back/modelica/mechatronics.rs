@@ -423,6 +423,12 @@ fn tnum(x: f64) -> String {
     }
 }
 
+/// The external-function annotation body that compiles `<Pkg>/Resources/Include/<file>` into
+/// the simulation (the C sources the live view and the contact forces ship).
+fn include_annotation(pkg: &str, file: &str) -> String {
+    format!("Include=\"#include \\\"{file}\\\"\", IncludeDirectory=\"modelica://{pkg}/Resources/Include\"")
+}
+
 /// Escapes text for a Modelica string literal.
 fn mstr(s: &str) -> String {
     s.replace('\\', "\\\\").replace('"', "\\\"")

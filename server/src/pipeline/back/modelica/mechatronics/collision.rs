@@ -17,9 +17,7 @@ pub const C_SOURCE: &str = include_str!("cad2mo_collision.c");
 
 /// `<Pkg>/Components/Collision.mo` and `<Pkg>/Resources/Include/cad2mo_collision.c`.
 pub fn files(pkg: &str) -> Vec<(String, Vec<u8>)> {
-    let include = format!(
-        "Include=\"#include \\\"cad2mo_collision.c\\\"\", IncludeDirectory=\"modelica://{pkg}/Resources/Include\""
-    );
+    let include = super::include_annotation(pkg, "cad2mo_collision.c");
     let text = format!(
         r#"within {pkg}.Components;
 package Collision "Contact forces between the bodies' convex collision shapes"

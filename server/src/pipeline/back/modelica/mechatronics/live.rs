@@ -48,9 +48,7 @@ pub fn layout_hex(names: &[String]) -> String {
 
 /// `<Pkg>/Components/Visualization.mo` and `<Pkg>/Resources/Include/cad2mo_live.c`.
 pub fn files(pkg: &str) -> Vec<(String, Vec<u8>)> {
-    let include = format!(
-        "Include=\"#include \\\"cad2mo_live.c\\\"\", IncludeDirectory=\"modelica://{pkg}/Resources/Include\""
-    );
+    let include = super::include_annotation(pkg, "cad2mo_live.c");
     let text = format!(
         r#"within {pkg}.Components;
 package Visualization "Live view of a running simulation in cad2mo"
