@@ -111,8 +111,12 @@ pub struct SourceInfo {
     pub created_from: String,
     pub created_on: String,
     pub created_by: String,
-    /// `SimMechanics` or `SimscapeMultibody` (the container element's name).
+    /// `SimMechanics` or `SimscapeMultibody` (the container element's name; the root element's
+    /// for the other formats).
     pub container: String,
+    /// Which front end read it: `simmechanics` (first generation), `simscape2` (second
+    /// generation) or `urdf`.
+    pub format: String,
 }
 
 /// A whole converted assembly.
@@ -128,6 +132,8 @@ pub struct Model {
     /// Length unit of the export, in metres per unit (1e-3 for `mm`). Meshes named by the XML are
     /// in this unit.
     pub length_scale: f64,
+    /// Joints whose coordinate follows another joint's (URDF `<mimic>`), in file order.
+    pub couplings: Vec<Coupling>,
 }
 
 impl Model {
@@ -269,6 +275,31 @@ pub struct Joint {
     pub follower: FrameId,
     /// In XML order; never empty.
     pub primitives: Vec<Primitive>,
+    /// Limits the source states for the joint's (single) coordinate (URDF `<limit>`), SI units.
+    pub limits: Option<JointLimits>,
+    pub loc: SourceLoc,
+}
+
+/// A joint's limits as the source states them: position range (rad or m, in the source's joint
+/// coordinate, zero at the source's zero configuration), speed (rad/s or m/s) and effort (N·m or
+/// N). Absent values are `None`.
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+pub struct JointLimits {
+    pub lower: Option<f64>,
+    pub upper: Option<f64>,
+    pub velocity: Option<f64>,
+    pub effort: Option<f64>,
+}
+
+/// `follower`'s coordinate = `multiplier` × `leader`'s + `offset` (URDF `<mimic>`; both joints
+/// have exactly one revolute or prismatic primitive; coordinates in the source's convention, zero
+/// at the source's zero configuration).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Coupling {
+    pub follower: JointId,
+    pub leader: JointId,
+    pub multiplier: f64,
+    pub offset: f64,
     pub loc: SourceLoc,
 }
 

@@ -270,6 +270,7 @@ mod tests {
                 .iter()
                 .map(|(k, a)| Primitive { kind: *k, axis_world: Vector3::from(*a), loc: SourceLoc::default() })
                 .collect(),
+            limits: None,
             loc: SourceLoc::default(),
         };
         (m, j)

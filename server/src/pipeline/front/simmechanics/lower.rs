@@ -107,6 +107,7 @@ impl<'a> Lower<'_, 'a> {
         let root = doc.root();
         let mut source = SourceInfo {
             file: self.file.to_owned(),
+            format: "simmechanics".into(),
             ..SourceInfo::default()
         };
         let mut container = None;
@@ -550,6 +551,7 @@ impl<'a> Lower<'_, 'a> {
                 base,
                 follower,
                 primitives: j.primitives,
+                limits: None,
                 loc: SourceLoc::default(),
             });
         }
