@@ -12,6 +12,7 @@
 //! | `GET /api/models/{id}/versions/{v}` | 200 version (status, job, bundle, options, error, summary) |
 //! | `DELETE /api/models/{id}/versions/{v}` | 204 |
 //! | `GET .../versions/{v}/package.zip` | 200 zip; 409 not converted yet; the stored problem if failed |
+//! | `GET .../versions/{v}/robot.urdf` | 200 the package's `<Pkg>/<Pkg>.urdf`; same errors; 404 when the package has none |
 //! | `GET .../versions/{v}/report` | 200 report.json; same errors |
 //! | `GET .../versions/{v}/bundle` | 200 the uploaded zip, byte for byte |
 //! | `GET /api/models/{id}/diff?from=1&to=2` | 200 bodies and joints added, removed, changed |
@@ -48,6 +49,7 @@ pub fn router() -> Router<AppState> {
         .route("/api/models/{model_id}/versions", get(list_versions).post(create_version))
         .route("/api/models/{model_id}/versions/{version}", get(get_version).delete(delete_version))
         .route("/api/models/{model_id}/versions/{version}/package.zip", get(package))
+        .route("/api/models/{model_id}/versions/{version}/robot.urdf", get(robot_urdf))
         .route("/api/models/{model_id}/versions/{version}/report", get(report))
         .route("/api/models/{model_id}/versions/{version}/bundle", get(bundle))
         .route("/api/models/{model_id}/diff", get(diff))
@@ -94,6 +96,7 @@ struct BundleInfo {
 #[derive(Serialize)]
 struct Links {
     package: String,
+    urdf: String,
     report: String,
     bundle: String,
     job: Option<String>,
@@ -137,6 +140,7 @@ fn version_view(v: VersionRow) -> Result<VersionView, ApiError> {
     Ok(VersionView {
         links: Links {
             package: format!("{base}/package.zip"),
+            urdf: format!("{base}/robot.urdf"),
             report: format!("{base}/report"),
             bundle: format!("{base}/bundle"),
             job: v.job_id.as_ref().map(|j| format!("/api/jobs/{j}")),
@@ -539,6 +543,41 @@ async fn package(
     let summary: Option<Summary> = row.summary_json.as_deref().and_then(|s| serde_json::from_str(s).ok());
     let stem = summary.map_or_else(|| "package".to_string(), |s| s.package_name);
     Ok(file(bytes, "application/zip", Some(&format!("{stem}-v{v}.zip")), &package))
+}
+
+/// The URDF inside the version's package (`<Pkg>/<Pkg>.urdf`, written by `back::urdf`).
+async fn robot_urdf(
+    State(state): State<AppState>,
+    path: Result<Path<(String, String)>, PathRejection>,
+) -> Result<Response, ApiError> {
+    let (id, v) = version_ids(path)?;
+    let row = find_version(&state, &id, v).await?;
+    let Some((package, _)) = outputs(&row) else { return Ok(not_converted(&row)) };
+    let bytes = read_blob(&state, package.clone()).await?;
+    let summary: Option<Summary> = row.summary_json.as_deref().and_then(|s| serde_json::from_str(s).ok());
+    let stem = summary.map_or_else(|| "package".to_string(), |s| s.package_name);
+    let wanted = format!("{stem}/{stem}.urdf");
+    let text = blocking(move || urdf_entry(&bytes, &wanted)).await?;
+    let Some(text) = text else {
+        return Err(ApiError::NotFound(format!(
+            "a URDF in the package of version {v} of model {id} (converted before URDF output existed; upload the bundle again)"
+        )));
+    };
+    Ok(file(text, "application/xml", Some(&format!("{stem}-v{v}.urdf")), &package))
+}
+
+/// The bytes of the zip entry `wanted`, `None` when the package has no such entry.
+fn urdf_entry(zip_bytes: &[u8], wanted: &str) -> Result<Option<Vec<u8>>, ApiError> {
+    let internal = |e: zip::result::ZipError| ApiError::Internal(anyhow::anyhow!("stored package: {e}"));
+    let mut archive = zip::ZipArchive::new(std::io::Cursor::new(zip_bytes)).map_err(internal)?;
+    let mut entry = match archive.by_name(wanted) {
+        Ok(e) => e,
+        Err(zip::result::ZipError::FileNotFound) => return Ok(None),
+        Err(e) => return Err(internal(e)),
+    };
+    let mut out = Vec::new();
+    std::io::Read::read_to_end(&mut entry, &mut out).map_err(|e| ApiError::Internal(anyhow::anyhow!("stored package: {e}")))?;
+    Ok(Some(out))
 }
 
 async fn report(

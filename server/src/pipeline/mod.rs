@@ -365,6 +365,7 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
     }
     // MuJoCo model beside the Modelica package (back/mjcf).
     files.push(back::mjcf::file(&a.model, &a.validated, &pkg.layout, &package_name, opts.gravity, opts.write_shapes));
+    files.push(back::urdf::file(&a.model, &a.validated, &pkg.layout, &package_name, opts.write_shapes));
     obs.progress(Stage::Report, 0, 1);
     let json = serde_json::to_vec_pretty(&report).map_err(|e| ConvertError::Options(e.to_string()))?;
     files.push(("report.json".to_string(), json));

@@ -77,6 +77,7 @@ export async function renderViewer(main, id, v, initialTab) {
     h('span', { class: 'check' }, anaglyph, h('label', { for: 'anaglyph' }, 'Red-cyan anaglyph')),
     h('span', { class: 'check' }, grid, h('label', { for: 'grid' }, 'Grid and world frame')),
     h('button', { type: 'button', onclick: () => download(version.links.package, `${report.package_name}-v${v}.zip`).catch((e) => say(e.message, 'error')) }, 'Download package'),
+    h('button', { type: 'button', onclick: () => download(version.links.urdf, `${report.package_name}-v${v}.urdf`).catch((e) => say(e.message, 'error')) }, 'Download URDF'),
   );
 
   const tv = performance.now();

@@ -165,6 +165,7 @@ export async function renderModel(main, id) {
           { class: 'actions' },
           ok ? h('a', { class: 'button', href: `#/models/${enc(id)}/versions/${v.version}`, 'aria-label': `3D view of version ${v.version}` }, '3D view') : null,
           ok ? h('button', { type: 'button', 'aria-label': `Download the package of version ${v.version}`, onclick: () => dl(v.links.package, `package-v${v.version}.zip`) }, 'Package') : null,
+          ok ? h('button', { type: 'button', 'aria-label': `Download the URDF of version ${v.version}`, onclick: () => dl(v.links.urdf, `robot-v${v.version}.urdf`) }, 'URDF') : null,
           h('button', { type: 'button', 'aria-label': `Download the bundle of version ${v.version}`, onclick: () => dl(v.links.bundle, v.bundle.name) }, 'Bundle'),
           h('button', { type: 'button', class: 'danger', 'aria-label': `Delete version ${v.version}`, onclick: () => removeVersion(v.version) }, 'Delete'),
         ),

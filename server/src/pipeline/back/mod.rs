@@ -6,3 +6,4 @@ pub mod dxf;
 pub mod mjcf;
 pub mod modelica;
 pub mod stl;
+pub mod urdf;
