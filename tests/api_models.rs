@@ -91,7 +91,19 @@ async fn upload_convert_and_download() {
     z.by_name("report.json").expect("report.json").read_to_string(&mut inner).expect("read");
     assert_eq!(serde_json::from_str::<Value>(&inner).expect("json"), report);
 
+    // The URDF beside the package: the package's own `<Pkg>/<Pkg>.urdf`, linked from the version.
+    let r = app.get(&format!("/api/models/{model_id}/versions/1/robot.urdf")).await;
+    assert_eq!(r.status(), 200);
+    assert_eq!(header(&r, "content-type"), "application/xml");
+    assert_eq!(header(&r, "content-disposition"), "attachment; filename=\"PENDULUM-v1.urdf\"");
+    let urdf = r.text().await.expect("text");
+    let mut inner = String::new();
+    z.by_name("PENDULUM/PENDULUM.urdf").expect("urdf in the package").read_to_string(&mut inner).expect("read");
+    assert_eq!(urdf, inner);
+    assert!(urdf.contains("<robot name=\"PENDULUM\">") && urdf.contains("<link name=\"LINK\">"), "{urdf}");
+
     let v = json(app.version(model_id, 1).await, 200).await;
+    assert_eq!(v["links"]["urdf"], format!("/api/models/{model_id}/versions/1/robot.urdf"));
     assert_eq!(v["status"], "succeeded");
     assert_eq!(v["job_id"], job_id);
     assert_eq!(v["bundle"]["name"], "pendulum.zip");
@@ -362,6 +374,8 @@ async fn unknown_things_are_404() {
     problem(app.version(&id, 2).await, 404).await;
     problem(app.version(&id, "abc").await, 404).await;
     problem(app.package(&id, 7).await, 404).await;
+    problem(app.get(&format!("/api/models/{id}/versions/7/robot.urdf")).await, 404).await;
+    problem(app.get("/api/models/nope/versions/1/robot.urdf").await, 404).await;
     app.wait_for_job(&job).await;
 }
 
@@ -410,6 +424,7 @@ async fn interrupted_jobs_resume_after_a_restart() {
     let p = problem(app.package(&id, 1).await, 409).await;
     assert!(p["detail"].as_str().expect("detail").contains(&job), "{p}");
     problem(app.report(&id, 1).await, 409).await;
+    problem(app.get(&format!("/api/models/{id}/versions/1/robot.urdf")).await, 409).await;
     problem(app.diff(&id, 1, 1).await, 409).await;
     assert_eq!(json(app.job(&job).await, 200).await["status"], "running");
     let dir = app.stop().await;
@@ -443,6 +458,7 @@ async fn failed_conversions_keep_their_problem() {
     let p = problem(app.package(&id, 1).await, 422).await;
     assert_eq!(p, done["error"]);
     problem(app.report(&id, 1).await, 422).await;
+    problem(app.get(&format!("/api/models/{id}/versions/1/robot.urdf")).await, 422).await;
     problem(app.diff(&id, 1, 1).await, 409).await;
     let v = json(app.version(&id, 1).await, 200).await;
     assert_eq!((v["status"].as_str(), &v["error"]), (Some("failed"), &done["error"]));
