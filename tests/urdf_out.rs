@@ -98,6 +98,16 @@ fn check(label: &str, bundle_path: &Path) -> Option<bool> {
         }
     }
     let result = mujoco(label, &urdf, &samples)?;
+    for link in result["inertia_replaced"].as_array().into_iter().flatten() {
+        let body = out.report.bodies.iter().find(|b| Some(b.modelica_name.as_str()) == link.as_str());
+        let body = body.unwrap_or_else(|| panic!("{label}: MuJoCo replaced the inertia of {link}, which is no body"));
+        let warned = out.report.warnings.iter().any(|w| w.code == "inertia-not-positive" && w.location.contains(&format!("\"{}\"", body.cad_name)));
+        // Without a warning, it must be semi-definite within the validator's tolerance.
+        let i = Matrix3::from_fn(|r, c| body.inertia_cg[r][c]);
+        let eig = i.symmetric_eigenvalues();
+        let semi = eig.min() >= -1e-6 * eig.amax();
+        assert!(warned || semi, "{label}: the inertia of {} is not positive definite ({eig:?}), and the validator did not say so", body.cad_name);
+    }
     let ours: f64 = out.report.bodies.iter().map(|b| b.mass).sum();
     let theirs = result["total_mass"].as_f64().unwrap_or(f64::NAN);
     assert!((ours - theirs).abs() <= TOL * ours.max(1.0), "{label}: total mass {ours} vs MuJoCo {theirs}");

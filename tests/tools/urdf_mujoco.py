@@ -6,11 +6,18 @@ IN: {"urdf": "<path>", "samples": [{joint: u}]}   (u = URDF coordinate; joints n
 OUT: {"mujoco": "<version>", "total_mass": m, "nq": n,
       "xpos": [{body: [x, y, z]}], "xquat": [{body: [w, x, y, z]}]}  (world poses, mj_kinematics)
 MuJoCo reads URDF directly; a <mujoco><compiler fusestatic="false"/></mujoco> element is added so
-that bodies joined by fixed joints keep their names (MuJoCo would merge them). Mesh elements are
-dropped. Exit code 3 when mujoco cannot be imported.
+that bodies joined by fixed joints keep their names (MuJoCo would merge them), with a mass floor of
+1e-12 kg and 1e-14 kg m2 (MuJoCo refuses moving bodies without mass, and a joint of several
+elements runs through massless links in URDF; the floor adds < 1e-9 kg to any model we test).
+Inertias that break the triangle inequality (a golden case has one on purpose) are balanced
+(positions and masses do not depend on them); an inertia that is not positive definite (the
+validator warns about those) is replaced by 1e-9 I and its link listed in "inertia_replaced".
+Mesh elements are dropped. Exit code 3 when mujoco cannot be imported.
 """
 import json
 import sys
+
+import numpy
 import xml.etree.ElementTree as ET
 
 try:
@@ -20,20 +27,31 @@ except ImportError as e:  # pragma: no cover
     sys.exit(3)
 
 
-def load(path):
+def load(path, replaced):
     root = ET.parse(path).getroot()
     for link in root.findall("link"):
+        inertia = link.find("inertial/inertia")
+        if inertia is not None:
+            g = lambda k: float(inertia.get(k))
+            m = numpy.array([[g("ixx"), g("ixy"), g("ixz")], [g("ixy"), g("iyy"), g("iyz")], [g("ixz"), g("iyz"), g("izz")]])
+            if m.any() and numpy.linalg.eigvalsh(m).min() <= 0.0:
+                for k in ("ixy", "ixz", "iyz"):
+                    inertia.set(k, "0")
+                for k in ("ixx", "iyy", "izz"):
+                    inertia.set(k, "1e-9")
+                replaced.append(link.get("name"))
         for tag in ("visual", "collision"):
             for el in link.findall(tag):
                 link.remove(el)
     ext = ET.SubElement(root, "mujoco")
-    ET.SubElement(ext, "compiler", {"fusestatic": "false", "discardvisual": "true"})
+    ET.SubElement(ext, "compiler", {"fusestatic": "false", "discardvisual": "true", "boundmass": "1e-12", "boundinertia": "1e-14", "balanceinertia": "true"})
     return mujoco.MjModel.from_xml_string(ET.tostring(root, encoding="unicode"))
 
 
 def main():
     spec = json.load(open(sys.argv[1]))
-    model = load(spec["urdf"])
+    replaced = []
+    model = load(spec["urdf"], replaced)
     data = mujoco.MjData(model)
     names = [mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_BODY, b) for b in range(model.nbody)]
     xpos, xquat = [], []
@@ -51,6 +69,7 @@ def main():
         "mujoco": mujoco.__version__,
         "nq": int(model.nq),
         "total_mass": float(sum(model.body_mass)),
+        "inertia_replaced": replaced,
         "xpos": xpos,
         "xquat": xquat,
     }
