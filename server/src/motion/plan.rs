@@ -119,6 +119,24 @@ impl AxisLimits {
         }
     }
 
+    /// The defaults for a coordinate: [`AxisLimits::defaults`], with the position range and
+    /// speed the source states (URDF `<limit>`) where it states them (positions are shifted by
+    /// the start value: the source's zero is the CAD pose).
+    pub fn for_coordinate(c: &crate::mechanism::Coordinate) -> AxisLimits {
+        let mut d = AxisLimits::defaults(c.kind, c.q0);
+        if let Some(s) = &c.source_limits {
+            if let (Some(lo), Some(hi)) = (s.lower, s.upper) {
+                if lo < hi {
+                    d.position = [c.q0 + lo, c.q0 + hi];
+                }
+            }
+            if let Some(v) = s.velocity.filter(|v| *v > 0.0) {
+                d.speed = v;
+            }
+        }
+        d
+    }
+
     /// These limits with a user's edit applied.
     pub fn with(self, e: &LimitsEdit) -> AxisLimits {
         AxisLimits {
@@ -175,7 +193,7 @@ pub fn axes(mech: &Mechanism, edits: &BTreeMap<String, LimitsEdit>) -> Vec<Axis>
     mech.coordinates()
         .iter()
         .map(|c| {
-            let d = AxisLimits::defaults(c.kind, c.q0);
+            let d = AxisLimits::for_coordinate(c);
             let limits = edits.get(&c.name).map_or(d, |e| d.with(e));
             Axis { name: c.name.clone(), kind: c.kind, q0: c.q0, limits }
         })

@@ -86,6 +86,10 @@ pub enum ConvertError {
     #[error(transparent)]
     Geometry(#[from] GeometryError),
     #[error(transparent)]
+    Urdf(#[from] front::urdf::UrdfError),
+    #[error(transparent)]
+    UrdfGeometry(#[from] front::urdf::UrdfGeometryError),
+    #[error(transparent)]
     Validation(#[from] ValidationError),
     #[error(transparent)]
     Vrml(#[from] front::vrml::VrmlError),
@@ -118,6 +122,12 @@ impl ConvertError {
                 line: e.line,
                 column: e.column,
                 message: if e.element.is_empty() { e.kind.to_string() } else { format!("in {}: {}", e.element, e.kind) },
+            },
+            ConvertError::Urdf(e) => Diagnostic {
+                file: e.file.clone(),
+                line: e.line,
+                column: e.column,
+                message: if e.element.is_empty() { e.message.clone() } else { format!("in {}: {}", e.element, e.message) },
             },
             ConvertError::Geometry(GeometryError::Stl(e)) => {
                 Diagnostic { file: e.file.clone(), line: e.line, column: 0, message: e.kind.to_string() }
@@ -171,23 +181,23 @@ pub fn analyse(bundle: &Bundle, opts: &Options) -> Result<Analysed, ConvertError
 /// [`analyse`], telling `obs` how far it is.
 pub fn analyse_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer) -> Result<Analysed, ConvertError> {
     obs.progress(Stage::Xml, 0, 1);
-    let xml_path = match bundle.find_export(front::simmechanics::is_physical_modeling_xml) {
-        Ok(p) => p.to_string(),
-        Err(e @ BundleError::NoXml { .. }) => {
-            // One XML of another kind: let the front end say what it is (e.g. second-generation).
-            let xmls: Vec<&str> = bundle.paths().filter(|p| p.to_ascii_lowercase().ends_with(".xml")).collect();
-            if let [only] = xmls.as_slice() {
-                front::simmechanics::parse(only, bundle.get(only).unwrap_or_default())?;
-            }
-            return Err(e.into());
+    let (kind, path) = find_source(bundle)?;
+    let bytes = bundle.get(&path).unwrap_or_default();
+    let (mut model, mut warnings) = match kind {
+        SourceKind::FirstGeneration | SourceKind::SecondGeneration => {
+            let (mut model, mut warnings) = front::simmechanics::parse(&path, bytes)?;
+            warnings.extend(passes::geometry::read_meshes(&mut model, bundle, &path, &mut |i, n| {
+                obs.progress(Stage::Meshes, i, n)
+            })?);
+            (model, warnings)
         }
-        Err(e) => return Err(e.into()),
+        SourceKind::Urdf => {
+            let mut urdf = front::urdf::parse(&path, bytes)?;
+            let w = front::urdf::attach_meshes(&mut urdf, bundle, &path, &mut |i, n| obs.progress(Stage::Meshes, i, n))?;
+            urdf.warnings.extend(w);
+            (urdf.model, urdf.warnings)
+        }
     };
-    let bytes = bundle.get(&xml_path).unwrap_or_default();
-    let (mut model, mut warnings) = front::simmechanics::parse(&xml_path, bytes)?;
-    warnings.extend(passes::geometry::read_meshes(&mut model, bundle, &xml_path, &mut |i, n| {
-        obs.progress(Stage::Meshes, i, n)
-    })?);
     let vrml = match_vrml(&mut model, bundle, opts, &mut warnings, obs)?;
     obs.progress(Stage::Analysis, 0, 1);
     let mut merged = Default::default();
@@ -205,6 +215,55 @@ pub fn analyse_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
     let validated = valid::validate(&model, analysis)?;
     warnings.extend(validated.warnings.iter().cloned());
     Ok(Analysed { model, validated, merged, absorbed, warnings, vrml })
+}
+
+/// The kinds of model source a bundle can hold.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SourceKind {
+    FirstGeneration,
+    SecondGeneration,
+    Urdf,
+}
+
+impl SourceKind {
+    pub fn describe(self) -> &'static str {
+        match self {
+            SourceKind::FirstGeneration => "first-generation SimMechanics XML",
+            SourceKind::SecondGeneration => "second-generation Simscape Multibody XML",
+            SourceKind::Urdf => "URDF",
+        }
+    }
+
+    /// What kind of source the file at `path` is, from its extension and root element.
+    pub fn of(path: &str, bytes: &[u8]) -> Option<SourceKind> {
+        let lower = path.to_ascii_lowercase();
+        if !(lower.ends_with(".xml") || lower.ends_with(".urdf")) {
+            return None;
+        }
+        if front::simmechanics::is_physical_modeling_xml(bytes) {
+            Some(SourceKind::FirstGeneration)
+        } else if front::simmechanics::is_second_generation_xml(bytes) {
+            Some(SourceKind::SecondGeneration)
+        } else if front::urdf::is_urdf(bytes) {
+            Some(SourceKind::Urdf)
+        } else {
+            None
+        }
+    }
+}
+
+/// The bundle's one model source. A bundle with none but a xacro file is told to expand it.
+pub fn find_source(bundle: &Bundle) -> Result<(SourceKind, String), ConvertError> {
+    match bundle.find_source(SourceKind::of, SourceKind::describe) {
+        Ok((k, p)) => Ok((k, p.to_string())),
+        Err(e @ BundleError::NoXml { .. }) => {
+            if let Some(x) = bundle.paths().find(|p| p.to_ascii_lowercase().ends_with(".xacro")) {
+                return Err(front::urdf::parse(x, bundle.get(x).unwrap_or_default()).err().map_or(e.into(), Into::into));
+            }
+            Err(e.into())
+        }
+        Err(e) => Err(e.into()),
+    }
 }
 
 /// The names an earlier version's `report.json` gave its bodies and joints, by node ID.
@@ -301,6 +360,11 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
         warnings: a.warnings,
         version: VERSION,
     });
+    for (c, done) in a.model.couplings.iter().zip(&pkg.layout.couplings) {
+        if let Err(why) = done {
+            report.warnings.push(Warning::new("mimic-not-expressible", format!("coupling not emitted: {why}"), c.loc.to_string()));
+        }
+    }
     // Collision shapes of every body with a mesh; interferences at the CAD pose are warnings.
     obs.progress(Stage::Collision, 0, 1);
     let names: Vec<String> = pkg.layout.names.as_ref().map(|n| n.bodies.clone()).unwrap_or_default();
