@@ -70,7 +70,7 @@ impl Kinematic {
             &a.validated,
             &pipeline::back::modelica::Options {
                 package_name: "P".into(),
-                gravity: options.gravity,
+                gravity: options.gravity.unwrap_or_else(|| pipeline::default_gravity(&a.model)),
                 converter_version: pipeline::VERSION.to_string(),
                 name_hints: pipeline::name_hints(report),
             },
@@ -93,7 +93,7 @@ impl Kinematic {
                 rotation: [0, 1, 2].map(|i| [0, 1, 2].map(|j| r[(i, j)])),
             });
         }
-        Ok(Kinematic { mech, joint_node_ids, frames, gravity: Vector3::from(options.gravity) })
+        Ok(Kinematic { mech, joint_node_ids, frames, gravity: Vector3::from(options.gravity.unwrap_or_else(|| pipeline::default_gravity(&a.model))) })
     }
 }
 

@@ -40,8 +40,8 @@ pub const MAX_MESSAGE_BYTES: usize = 4096;
 pub struct Options {
     /// Modelica package name; `None` derives it from the assembly's name.
     pub package_name: Option<String>,
-    /// Gravity in world coordinates, m/s² (CAD "up" is usually +y).
-    pub gravity: [f64; 3],
+    /// Gravity in world coordinates, m/s²; `None`: the source's convention ([`default_gravity`]).
+    pub gravity: Option<[f64; 3]>,
     /// Merge bodies joined by welds into one body each.
     pub lump_welds: bool,
     /// Write DXF/STL shape files (off for `inspect`).
@@ -63,7 +63,7 @@ impl Default for Options {
     fn default() -> Self {
         Options {
             package_name: None,
-            gravity: [0.0, -9.81, 0.0],
+            gravity: None,
             lump_welds: false,
             write_shapes: true,
             drives: Vec::new(),
@@ -217,6 +217,15 @@ pub fn analyse_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
     Ok(Analysed { model, validated, merged, absorbed, warnings, vrml })
 }
 
+/// Gravity where the user gives none: CAD assemblies (first-generation SimMechanics XML) are
+/// drawn with +y up; URDF (ROS's REP 103) and Simscape Multibody models with +z up.
+pub fn default_gravity(model: &Model) -> [f64; 3] {
+    match model.source.format.as_str() {
+        "urdf" | "simscape2" => [0.0, 0.0, -9.81],
+        _ => [0.0, -9.81, 0.0],
+    }
+}
+
 /// The kinds of model source a bundle can hold.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum SourceKind {
@@ -327,10 +336,11 @@ pub fn convert(bundle: &Bundle, opts: &Options) -> Result<Output, ConvertError> 
 /// [`convert`], telling `obs` how far it is and letting it choose the drives once the report
 /// exists (the report does not depend on them: drives only make `Mechatronics.mo`).
 pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer) -> Result<Output, ConvertError> {
-    if !opts.gravity.iter().all(|g| g.is_finite()) {
-        return Err(ConvertError::Options(format!("gravity {:?} is not finite", opts.gravity)));
+    if let Some(g) = opts.gravity.filter(|g| !g.iter().all(|c| c.is_finite())) {
+        return Err(ConvertError::Options(format!("gravity {g:?} is not finite")));
     }
     let a = analyse_observed(bundle, opts, obs)?;
+    let gravity = opts.gravity.unwrap_or_else(|| default_gravity(&a.model));
     let package_name = match &opts.package_name {
         Some(p) if back::modelica::sanitize(p, "P") == *p => p.clone(),
         Some(p) => return Err(ConvertError::Options(format!("package name \"{p}\" is not a Modelica identifier"))),
@@ -343,7 +353,7 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
         &a.validated,
         &back::modelica::Options {
             package_name: package_name.clone(),
-            gravity: opts.gravity,
+            gravity,
             converter_version: VERSION.to_string(),
             name_hints: opts.name_hints.clone(),
         },
@@ -353,7 +363,7 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
         validated: &a.validated,
         layout: &pkg.layout,
         package_name: &package_name,
-        options: report::ReportOptions { lump_welds: opts.lump_welds, gravity: opts.gravity },
+        options: report::ReportOptions { lump_welds: opts.lump_welds, gravity },
         merged: &a.merged,
         absorbed: &a.absorbed,
         vrml: a.vrml.as_ref(),
@@ -428,7 +438,7 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
         }
     }
     // MuJoCo model beside the Modelica package (back/mjcf).
-    files.push(back::mjcf::file(&a.model, &a.validated, &pkg.layout, &package_name, opts.gravity, opts.write_shapes));
+    files.push(back::mjcf::file(&a.model, &a.validated, &pkg.layout, &package_name, gravity, opts.write_shapes));
     obs.progress(Stage::Report, 0, 1);
     let json = serde_json::to_vec_pretty(&report).map_err(|e| ConvertError::Options(e.to_string()))?;
     files.push(("report.json".to_string(), json));
