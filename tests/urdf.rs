@@ -15,7 +15,7 @@ use cad2mo::pipeline::front::bundle::Bundle;
 use cad2mo::pipeline::{self, Options};
 use cad2mo_tests::check::fk_check_with_inertia;
 use cad2mo_tests::common::{fixtures_dir, tools_required, workspace_root};
-use cad2mo_tests::urdf_truth::urdf_truth;
+use cad2mo_tests::urdf_truth::{loops_closed, start_values, urdf_truth, urdf_truth_at};
 use nalgebra::Vector3;
 
 /// Every URDF under `urdf/` with the root of its set (`urdf/<owner+repo>/<commit>/`).
@@ -81,7 +81,13 @@ fn every_fixture_urdf_converts_and_reproduces_its_poses() {
         let bundle = urdf_bundle(urdf, set);
         let out = pipeline::convert(&bundle, &Options { write_shapes: false, ..Options::default() })
             .unwrap_or_else(|e| panic!("{label}: {e}"));
-        let t = urdf_truth(&text);
+        // The start values are zero unless Drake loops had to be closed; the truth composes the
+        // URDF at them and must then have every loop closed.
+        let t = urdf_truth_at(&text, &start_values(&out.report));
+        let closed = loops_closed(&t).unwrap_or_else(|e| panic!("{label}: {e}"));
+        if !text.contains("<loop_joint") {
+            assert!(start_values(&out.report).values().all(|v| *v == 0.0), "{label}: a tree URDF starts at its zero configuration");
+        }
         let stats = fk_check_with_inertia(&out, &t.frames, &t.cgs, &t.mass).unwrap_or_else(|e| panic!("{label}: {e}"));
         let bodies = out.report.bodies.len();
         assert!(stats.frames >= bodies && stats.cgs == bodies && stats.inertias == bodies, "{label}: checked {stats:?} of {bodies} bodies");
@@ -114,7 +120,7 @@ fn every_fixture_urdf_converts_and_reproduces_its_poses() {
             assert!(missing.is_empty(), "{label}: {missing:?}");
         }
         println!(
-            "{label}: {bodies} bodies, {} joints ({compared} compared), {} loops, {with_mesh} with meshes, {} warnings; FK max error {:e} m",
+            "{label}: {bodies} bodies, {} joints ({compared} compared), {} loops ({closed} Drake loop joints closed), {with_mesh} with meshes, {} warnings; FK max error {:e} m",
             out.report.joints.len(),
             out.report.loops.len(),
             out.report.warnings.len(),
@@ -176,8 +182,15 @@ fn mujoco_reads_the_urdf_fixtures_as_we_do() {
         }
         // MuJoCo knows the URDF's <joint>s (not Drake's loop joints).
         let known = urdf_truth(&text).joints;
-        let samples: Vec<BTreeMap<String, f64>> =
+        let mut samples: Vec<BTreeMap<String, f64>> =
             qs.iter().map(|q| (0..q.len()).map(|k| (joint_of(k), q[k])).filter(|(j, _)| known.contains_key(j)).collect()).collect();
+        // With loops, the spanning tree may cut a URDF joint: its start value comes from its chain.
+        for (j, joint) in a.model.joints.iter().enumerate() {
+            let chain = &a.validated.analysis.chains[j];
+            if chain.elements.len() == 1 && known.contains_key(&joint.cad_name) {
+                samples[0].entry(joint.cad_name.clone()).or_insert(chain.elements[0].q0);
+            }
+        }
         let Some(r) = mujoco(&label, &text, &samples) else { return };
         let ours_mass: f64 = a.model.bodies.iter().map(|b| b.mass).sum();
         let theirs_mass = r["total_mass"].as_f64().expect("mass");

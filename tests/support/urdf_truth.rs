@@ -1,6 +1,6 @@
 //! Ground truth read straight from a URDF, independently of the converter's front end: each
-//! link's frame (`<link>::CS1`) and inertial frame (`<link>::CG`) in the world at the zero
-//! configuration, composed along the tree with rotation matrices written out here (R = Rz(yaw)
+//! link's frame (`<link>::CS1`) and inertial frame (`<link>::CG`) in the world at given joint
+//! values (the zero configuration unless the model had to be assembled to close Drake loops), composed along the tree with rotation matrices written out here (R = Rz(yaw)
 //! Ry(pitch) Rx(roll)), the centre of mass and the inertia resolved in world axes.
 
 use std::collections::BTreeMap;
@@ -17,6 +17,15 @@ pub struct UrdfTruth {
     pub mass: BTreeMap<String, (f64, Matrix3<f64>)>,
     /// Joint name -> (type, parent, child), `<joint>` and `<drake:joint>` alike.
     pub joints: BTreeMap<String, (String, String, String)>,
+    /// Per Drake `<loop_joint>`: the world positions of its frame on each link.
+    pub loop_frames: BTreeMap<String, (Vector3<f64>, Vector3<f64>)>,
+}
+
+/// Rotation by `angle` about the unit `axis` (Rodrigues), written out.
+fn axis_angle(axis: [f64; 3], angle: f64) -> Matrix3<f64> {
+    let n = Vector3::from(axis).normalize();
+    let k = Matrix3::new(0.0, -n.z, n.y, n.z, 0.0, -n.x, -n.y, n.x, 0.0);
+    Matrix3::identity() + k * angle.sin() + k * k * (1.0 - angle.cos())
 }
 
 fn nums(s: Option<&str>, default: [f64; 3]) -> [f64; 3] {
@@ -62,7 +71,14 @@ fn child<'a, 'i>(n: roxmltree::Node<'a, 'i>, tag: &str) -> Option<roxmltree::Nod
     n.children().find(|c| c.is_element() && c.tag_name().name() == tag)
 }
 
+/// [`urdf_truth_at`] the zero configuration.
 pub fn urdf_truth(text: &str) -> UrdfTruth {
+    urdf_truth_at(text, &BTreeMap::new())
+}
+
+/// Truth with revolute/continuous joints turned and prismatic joints moved by `q` (by joint
+/// name; absent = 0).
+pub fn urdf_truth_at(text: &str, q: &BTreeMap<String, f64>) -> UrdfTruth {
     let doc = roxmltree::Document::parse(text).expect("URDF parses");
     let root = doc.root_element();
     let mut parent: BTreeMap<String, (String, Vector3<f64>, Matrix3<f64>)> = BTreeMap::new();
@@ -70,7 +86,16 @@ pub fn urdf_truth(text: &str) -> UrdfTruth {
     for j in root.children().filter(|n| n.is_element() && n.tag_name().name() == "joint") {
         let p = child(j, "parent").and_then(|c| c.attribute("link")).expect("parent").to_string();
         let c = child(j, "child").and_then(|c| c.attribute("link")).expect("child").to_string();
-        let (t, r) = origin(child(j, "origin"));
+        let (mut t, mut r) = origin(child(j, "origin"));
+        let kind = j.attribute("type").unwrap_or("");
+        if let Some(v) = q.get(j.attribute("name").unwrap_or("")) {
+            let axis = nums(child(j, "axis").and_then(|a| a.attribute("xyz")), [1.0, 0.0, 0.0]);
+            match kind {
+                "revolute" | "continuous" => r *= axis_angle(axis, *v),
+                "prismatic" => t += r * Vector3::from(axis).normalize() * *v,
+                _ => {}
+            }
+        }
         out.joints.insert(j.attribute("name").expect("name").to_string(), (j.attribute("type").unwrap_or("").to_string(), p.clone(), c.clone()));
         parent.insert(c, (p, t, r));
     }
@@ -88,6 +113,15 @@ pub fn urdf_truth(text: &str) -> UrdfTruth {
         }
         (t, r)
     };
+    for l in root.children().filter(|n| n.is_element() && n.tag_name().name() == "loop_joint") {
+        let end = |tag: &str| {
+            let c = child(l, tag).expect("loop link");
+            let (t, r) = world_of(c.attribute("link").expect("link"));
+            let (ot, _) = origin(Some(c));
+            r * ot + t
+        };
+        out.loop_frames.insert(l.attribute("name").expect("name").to_string(), (end("link1"), end("link2")));
+    }
     for l in root.children().filter(|n| n.is_element() && n.tag_name().name() == "link") {
         let name = l.attribute("name").expect("link name");
         if name == "world" {
@@ -107,4 +141,21 @@ pub fn urdf_truth(text: &str) -> UrdfTruth {
         out.mass.insert(name.to_string(), (mass, cg_r * ic * cg_r.transpose()));
     }
     out
+}
+
+/// The joint values a conversion started from (each single-coordinate joint's start value, by
+/// CAD name), for [`urdf_truth_at`].
+pub fn start_values(report: &cad2mo::pipeline::report::Report) -> BTreeMap<String, f64> {
+    report.joints.iter().filter(|j| j.initial_q.len() == 1).map(|j| (j.cad_name.clone(), j.initial_q[0])).collect()
+}
+
+/// Checks that every loop joint's two frames coincide in the truth (to 1e-9 m).
+pub fn loops_closed(t: &UrdfTruth) -> Result<usize, String> {
+    for (name, (a, b)) in &t.loop_frames {
+        let d = (a - b).norm();
+        if d.is_nan() || d >= 1e-9 {
+            return Err(format!("loop joint {name}: frames {d:e} m apart"));
+        }
+    }
+    Ok(t.loop_frames.len())
 }

@@ -120,14 +120,15 @@ impl AxisLimits {
     }
 
     /// The defaults for a coordinate: [`AxisLimits::defaults`], with the position range and
-    /// speed the source states (URDF `<limit>`) where it states them (positions are shifted by
-    /// the start value: the source's zero is the CAD pose).
+    /// speed the source states (URDF `<limit>`) where it states them. The source's joint
+    /// coordinate is the Modelica one (the URDF front end places the base frame at the joint
+    /// origin), so its position limits apply as they are, whatever the start value.
     pub fn for_coordinate(c: &crate::mechanism::Coordinate) -> AxisLimits {
         let mut d = AxisLimits::defaults(c.kind, c.q0);
         if let Some(s) = &c.source_limits {
             if let (Some(lo), Some(hi)) = (s.lower, s.upper) {
                 if lo < hi {
-                    d.position = [c.q0 + lo, c.q0 + hi];
+                    d.position = [lo, hi];
                 }
             }
             if let Some(v) = s.velocity.filter(|v| *v > 0.0) {

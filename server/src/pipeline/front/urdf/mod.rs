@@ -40,6 +40,7 @@
 //!   and placed by the visual's origin into the link frame. A missing file is a warning.
 //! - `xacro` files are refused with a message saying to expand them first.
 
+mod assemble;
 mod geometry;
 
 pub use geometry::{attach_meshes, locate, UrdfGeometryError};
@@ -538,6 +539,7 @@ impl<'d, 'i> Reader<'d, 'i> {
             children.entry(j.parent.as_str()).or_default().push(k);
         }
         let mut pose: Vec<Option<Isometry3<f64>>> = vec![None; links.len()];
+        let mut order: Vec<usize> = Vec::new();
         let mut queue: VecDeque<usize> = VecDeque::new();
         for (i, l) in links.iter().enumerate() {
             if parent_of[i].is_none() {
@@ -550,6 +552,7 @@ impl<'d, 'i> Reader<'d, 'i> {
         for &k in children.get("world").into_iter().flatten() {
             let c = index[joints[k].child.as_str()];
             pose[c] = Some(joints[k].origin);
+            order.push(k);
             queue.push_back(c);
         }
         while let Some(i) = queue.pop_front() {
@@ -558,6 +561,7 @@ impl<'d, 'i> Reader<'d, 'i> {
                 let c = index[joints[k].child.as_str()];
                 if pose[c].is_none() {
                     pose[c] = Some(p * joints[k].origin);
+                    order.push(k);
                     queue.push_back(c);
                 }
             }
@@ -574,6 +578,84 @@ impl<'d, 'i> Reader<'d, 'i> {
                 cur = p;
             }
             return Err(self.err(links[i].node, format!("the links form a cycle ({}): URDF describes a tree", ir::bounded_list(&cycle, 8))));
+        }
+
+        // Drake loop joints: read, then close them (the zero configuration need not).
+        let mut loop_specs = Vec::new();
+        for &n in &loops {
+            let name = self.attr(n, "name")?.to_string();
+            let kind = self.attr(n, "type")?;
+            let motion = match kind {
+                "continuous" | "revolute" => assemble::Motion::Revolute,
+                "prismatic" => assemble::Motion::Prismatic,
+                "fixed" => assemble::Motion::None,
+                other => return Err(self.err(n, format!("unknown loop joint type \"{}\" (continuous, revolute, prismatic, fixed)", ir::clip(other, 80)))),
+            };
+            let side = |tag: &str| -> Result<(usize, Isometry3<f64>), UrdfError> {
+                let c = child(n, tag).ok_or_else(|| self.err(n, format!("missing <{tag} link=\"...\" xyz rpy/>")))?;
+                let link = self.attr(c, "link")?;
+                let i = *index.get(link).ok_or_else(|| self.err(c, format!("link \"{}\" is not declared", ir::clip(link, 200))))?;
+                if link == "world" {
+                    return Err(self.err(c, "a loop joint cannot end on the world link"));
+                }
+                Ok((i, self.pose(c)?))
+            };
+            let ((a, ta), (b, tb)) = (side("link1")?, side("link2")?);
+            let axis = match child(n, "axis") {
+                Some(x) => self.vec3(x, "xyz", [1.0, 0.0, 0.0])?,
+                None => Vector3::x(),
+            };
+            if axis.norm() < 1e-12 {
+                return Err(self.err(n, "the loop joint axis is the zero vector"));
+            }
+            let spec = assemble::LoopSpec { a, ta, b, tb, axis: axis.normalize(), motion, fixed: kind == "fixed" };
+            loop_specs.push((n, name, spec));
+        }
+        let mut q = vec![0.0; joints.len()];
+        if !loop_specs.is_empty() {
+            let tree: Vec<assemble::TreeJoint> = joints
+                .iter()
+                .map(|j| assemble::TreeJoint {
+                    parent: index.get(j.parent.as_str()).copied().filter(|_| j.parent != "world"),
+                    child: index[j.child.as_str()],
+                    origin: j.origin,
+                    axis: j.axis,
+                    motion: match j.kind.as_str() {
+                        "revolute" | "continuous" => assemble::Motion::Revolute,
+                        "prismatic" => assemble::Motion::Prismatic,
+                        _ => assemble::Motion::None,
+                    },
+                })
+                .collect();
+            let specs: Vec<assemble::LoopSpec> = loop_specs.iter().map(|(_, _, s)| s.clone()).collect();
+            match assemble::assemble(links.len(), &tree, &order, &specs) {
+                Ok(closed) => {
+                    let moved = closed.iter().filter(|v| **v != 0.0).count();
+                    if moved > 0 {
+                        warnings.push(self.warning(
+                            loops[0],
+                            "urdf-loops-assembled",
+                            format!(
+                                "the zero configuration does not close the {} loop joint(s); the model starts in the nearest closed configuration ({moved} joints moved, largest by {:.6})",
+                                loop_specs.len(),
+                                closed.iter().fold(0.0f64, |m, v| m.max(v.abs()))
+                            ),
+                        ));
+                    }
+                    q = closed;
+                    let assembled = assemble::poses(links.len(), &tree, &order, &q);
+                    for (i, p) in pose.iter_mut().enumerate() {
+                        if p.is_some() {
+                            *p = Some(assembled[i]);
+                        }
+                    }
+                }
+                Err(v) => warnings.push(self.warning(
+                    loops[0],
+                    "urdf-loops-open",
+                    format!("the loop joints cannot be closed near the zero configuration (violation {v:.3e}); the model keeps the zero configuration and each loop joint its offset"),
+                )),
+            }
         }
 
         let mut model = Model {
@@ -654,7 +736,8 @@ impl<'d, 'i> Reader<'d, 'i> {
             let c = index[j.child.as_str()];
             let Some(child_body) = body_of[c] else { continue };
             let follower = model.body(child_body).cs1;
-            let frame_pose = pose[c].unwrap_or_else(Isometry3::identity);
+            let parent_pose = if j.parent == "world" { Isometry3::identity() } else { pose[index[j.parent.as_str()]].unwrap_or_else(Isometry3::identity) };
+            let frame_pose = parent_pose * j.origin;
             let r = frame_pose.rotation;
             let world_axis = r * j.axis;
             let primitives = match j.kind.as_str() {
@@ -710,33 +793,18 @@ impl<'d, 'i> Reader<'d, 'i> {
             });
         }
         // Drake loop joints: a joint between a frame on each link.
-        for n in loops {
-            let name = self.attr(n, "name")?.to_string();
-            let kind = self.attr(n, "type")?;
-            let side = |tag: &str| -> Result<(ir::BodyId, Isometry3<f64>, String), UrdfError> {
-                let c = child(n, tag).ok_or_else(|| self.err(n, format!("missing <{tag} link=\"...\" xyz rpy/>")))?;
-                let link = self.attr(c, "link")?;
-                let i = *index.get(link).ok_or_else(|| self.err(c, format!("link \"{}\" is not declared", ir::clip(link, 200))))?;
-                let b = body_of[i].ok_or_else(|| self.err(c, "a loop joint cannot end on the world link"))?;
-                Ok((b, pose[i].unwrap_or_else(Isometry3::identity) * self.pose(c)?, link.to_string()))
-            };
-            let (b1, p1, l1) = side("link1")?;
-            let (b2, p2, l2) = side("link2")?;
+        for (n, name, spec) in loop_specs {
             let loc = self.loc(n);
-            let axis = match child(n, "axis") {
-                Some(a) => self.vec3(a, "xyz", [1.0, 0.0, 0.0])?,
-                None => Vector3::x(),
+            let (Some(b1), Some(b2)) = (body_of[spec.a], body_of[spec.b]) else { continue };
+            let p1 = pose[spec.a].unwrap_or_else(Isometry3::identity) * spec.ta;
+            let p2 = pose[spec.b].unwrap_or_else(Isometry3::identity) * spec.tb;
+            let world_axis = p1.rotation * spec.axis;
+            let primitives = match spec.motion {
+                assemble::Motion::Revolute => vec![prim(PrimitiveKind::Revolute, world_axis, loc.clone())],
+                assemble::Motion::Prismatic => vec![prim(PrimitiveKind::Prismatic, world_axis, loc.clone())],
+                assemble::Motion::None => vec![prim(PrimitiveKind::Weld, world_axis, loc.clone())],
             };
-            if axis.norm() < 1e-12 {
-                return Err(self.err(n, "the loop joint axis is the zero vector"));
-            }
-            let world_axis = p1.rotation * axis.normalize();
-            let primitives = match kind {
-                "continuous" | "revolute" => vec![prim(PrimitiveKind::Revolute, world_axis, loc.clone())],
-                "prismatic" => vec![prim(PrimitiveKind::Prismatic, world_axis, loc.clone())],
-                "fixed" => vec![prim(PrimitiveKind::Weld, world_axis, loc.clone())],
-                other => return Err(self.err(n, format!("unknown loop joint type \"{}\" (continuous, revolute, prismatic, fixed)", ir::clip(other, 80)))),
-            };
+            let (l1, l2) = (&links[spec.a].name, &links[spec.b].name);
             let f1 = push_frame(&mut model, &name, format!("{l1}::{name}"), FrameOwner::Body(b1), p1, &loc);
             model.bodies[b1.index()].frames.push(f1);
             let f2 = push_frame(&mut model, &name, format!("{l2}::{name}"), FrameOwner::Body(b2), p2, &loc);
