@@ -214,10 +214,10 @@ pub fn write(model: &Model, v: &Validated, layout: &Layout, package: &str, write
     let mut reached = vec![false; nb];
     let cs1 = |b: usize| model.frame(model.bodies[b].cs1).pose;
 
-    for &j in &h.tree {
+    let tree = spanning_tree(model, v);
+    for &(j, forward) in &tree.joints {
         let joint = model.joint(j);
         let ji = j.index();
-        let forward = h.follower_is_child[ji];
         let (pf, cf) = if forward { (joint.base, joint.follower) } else { (joint.follower, joint.base) };
         let FrameOwner::Body(child) = model.frame(cf).owner else { continue };
         let child = child.index();
@@ -252,14 +252,7 @@ pub fn write(model: &Model, v: &Validated, layout: &Layout, package: &str, write
         }
         // Planar: P(a1) P(a2) R(n), orthonormal, a1 × a2 = n, nothing after it.
         let e = &chain.elements;
-        let planar = forward
-            && e.len() == 3
-            && e[0].kind == PrimitiveKind::Prismatic
-            && e[1].kind == PrimitiveKind::Prismatic
-            && e[2].kind == PrimitiveKind::Revolute
-            && e[0].axis.dot(&e[1].axis).abs() <= IDENTITY_TOL
-            && (e[0].axis.cross(&e[1].axis) - e[2].axis).norm() <= IDENTITY_TOL
-            && is_identity(&post);
+        let planar = forward && is_planar(chain) && is_identity(&post);
         if planar {
             let mut o = pre;
             for s in &steps {
@@ -448,19 +441,20 @@ pub fn write(model: &Model, v: &Validated, layout: &Layout, package: &str, write
         }
         let _ = writeln!(out, "  </joint>");
     }
-    // Loops: closing joints as Drake's <loop_joint>.
+    // Loops: what the hierarchy drops (redundant welds, implied cuts) as comments; the joints
+    // left out of our tree as Drake's <loop_joint>.
     for (i, l) in h.loops.iter().enumerate() {
-        let joint = model.joint(l.closing);
         let jname = &names.joints[l.closing.index()];
         if l.kind == LoopKind::Rigid {
             let _ = writeln!(out, "  <!-- {} -->", comment(&format!("weld {jname} closes a rigid loop: redundant, not written")));
-            continue;
-        }
-        if a.loops.loops.get(i).is_none_or(|info| info.cut == Cut::Omitted) {
+        } else if a.loops.loops.get(i).is_none_or(|info| info.cut == Cut::Omitted) {
             let _ = writeln!(out, "  <!-- {} -->", comment(&format!("joint {jname} closes a loop the rest of the mechanism already closes: not written")));
-            continue;
         }
-        let chain = &a.chains[l.closing.index()];
+    }
+    for &closing in &tree.cuts {
+        let joint = model.joint(closing);
+        let jname = &names.joints[closing.index()];
+        let chain = &a.chains[closing.index()];
         let kind = match chain.elements.as_slice() {
             [] => "fixed",
             [e] if e.kind == PrimitiveKind::Revolute => {
@@ -515,6 +509,129 @@ pub fn write(model: &Model, v: &Validated, layout: &Layout, package: &str, write
     }
     let _ = writeln!(out, "</robot>");
     out
+}
+
+/// The writer's spanning tree: tree joints (with their direction: true when the follower side
+/// is the child) in breadth-first order from the world, then from each free root; and the
+/// joints left out, written as loop joints.
+struct Tree {
+    joints: Vec<(JointId, bool)>,
+    cuts: Vec<JointId>,
+}
+
+/// Whether URDF expresses joint `j` traversed in direction `forward` as one joint whose child
+/// frame is the child's CS1 (no helper links): a weld, a planar chain, or one revolute or
+/// prismatic element after which the child's CS1 can follow (a prismatic always, a revolute when
+/// CS1 is on its axis). A ground cannot be a child.
+fn clean(model: &Model, v: &Validated, j: JointId, forward: bool) -> bool {
+    let joint = model.joint(j);
+    let chain = &v.analysis.chains[j.index()];
+    let (b, f) = (model.frame(joint.base), model.frame(joint.follower));
+    let child = if forward { f } else { b };
+    let FrameOwner::Body(c) = child.owner else { return false };
+    let cs1 = model.frame(model.body(c).cs1).pose;
+    let post = if forward { chain.residual * f.pose.inverse() * cs1 } else { b.pose.inverse() * cs1 };
+    let steps = steps(chain, &|_| String::new(), forward);
+    match steps.as_slice() {
+        [] => true,
+        [s] => {
+            let t = post.translation.vector;
+            s.kind == PrimitiveKind::Prismatic || (t - s.axis * t.dot(&s.axis)).norm() <= IDENTITY_TOL
+        }
+        _ => forward && is_planar(chain) && is_identity(&post),
+    }
+}
+
+/// P(a1) P(a2) R(n) with orthonormal, right-handed axes (a1 × a2 = n).
+fn is_planar(chain: &crate::pipeline::passes::kinematics::Chain) -> bool {
+    let e = &chain.elements;
+    e.len() == 3
+        && e[0].kind == PrimitiveKind::Prismatic
+        && e[1].kind == PrimitiveKind::Prismatic
+        && e[2].kind == PrimitiveKind::Revolute
+        && e[0].axis.dot(&e[1].axis).abs() <= IDENTITY_TOL
+        && (e[0].axis.cross(&e[1].axis) - e[2].axis).norm() <= IDENTITY_TOL
+}
+
+/// A spanning tree over the joints the hierarchy keeps (its redundant welds and implied cuts
+/// are left out), preferring (Kruskal) welds, then joints URDF expresses without helper links
+/// ([`clean`]), then joints at a ground (a Drake loop joint cannot end on the world), then the
+/// hierarchy's own order. For a model read from URDF this is the source's tree (its loop
+/// joints end off their links' frames), so a URDF written back has the source's structure; for
+/// CAD models it is the hierarchy's tree wherever that needs no more helper links.
+fn spanning_tree(model: &Model, v: &Validated) -> Tree {
+    let h = &v.analysis.hierarchy;
+    let nb = model.bodies.len();
+    let world = nb;
+    let node = |f: crate::pipeline::ir::FrameId| match model.frame(f).owner {
+        FrameOwner::Body(b) => b.index(),
+        FrameOwner::Ground(_) => world,
+    };
+    let dropped = |j: JointId| {
+        h.loops.iter().enumerate().any(|(i, l)| {
+            l.closing == j && (l.kind == LoopKind::Rigid || v.analysis.loops.loops.get(i).is_none_or(|info| info.cut == Cut::Omitted))
+        })
+    };
+    let rank: BTreeMap<JointId, usize> =
+        h.tree.iter().chain(h.loops.iter().map(|l| &l.closing)).enumerate().map(|(i, &j)| (j, i)).collect();
+    let at_ground = |j: JointId| {
+        let joint = model.joint(j);
+        node(joint.base) == world || node(joint.follower) == world
+    };
+    // Clean in the direction it would take: from the ground when it has one, else forward.
+    let key = |j: JointId| {
+        let joint = model.joint(j);
+        let forward = node(joint.follower) != world;
+        (!joint.is_weld(), !clean(model, v, j, forward), !at_ground(j), rank.get(&j).copied().unwrap_or(usize::MAX), j)
+    };
+    let mut order: Vec<JointId> = model.joint_ids().filter(|&j| !dropped(j)).collect();
+    order.sort_by_key(|&j| key(j));
+    let mut dsu: Vec<usize> = (0..=nb).collect();
+    fn find(d: &mut [usize], mut x: usize) -> usize {
+        while d[x] != x {
+            d[x] = d[d[x]];
+            x = d[x];
+        }
+        x
+    }
+    let mut adjacency: Vec<Vec<JointId>> = vec![Vec::new(); nb + 1];
+    let mut cuts = Vec::new();
+    for j in order {
+        let joint = model.joint(j);
+        let (a, b) = (node(joint.base), node(joint.follower));
+        let (ra, rb) = (find(&mut dsu, a), find(&mut dsu, b));
+        if ra == rb {
+            cuts.push(j);
+        } else {
+            dsu[ra.max(rb)] = ra.min(rb);
+            adjacency[a].push(j);
+            adjacency[b].push(j);
+        }
+    }
+    let mut seen = vec![false; nb + 1];
+    let mut joints = Vec::new();
+    let roots = std::iter::once(world).chain(h.free_roots.iter().map(|b| b.index()));
+    for root in roots {
+        if seen[root] {
+            continue;
+        }
+        seen[root] = true;
+        let mut queue = std::collections::VecDeque::from([root]);
+        while let Some(n) = queue.pop_front() {
+            for &j in &adjacency[n] {
+                let joint = model.joint(j);
+                let (a, b) = (node(joint.base), node(joint.follower));
+                let (other, forward) = if a == n { (b, true) } else { (a, false) };
+                if !seen[other] {
+                    seen[other] = true;
+                    joints.push((j, forward));
+                    queue.push_back(other);
+                }
+            }
+        }
+    }
+    cuts.sort_by_key(|&j| rank.get(&j).copied().unwrap_or(usize::MAX));
+    Tree { joints, cuts }
 }
 
 /// The `<limit>` element of a joint of URDF type `kind`, filling what URDF requires and the
