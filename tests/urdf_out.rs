@@ -67,7 +67,13 @@ fn off(a: &Isometry3<f64>, b: &Isometry3<f64>) -> (f64, f64) {
 fn check(label: &str, bundle_path: &Path) -> Option<bool> {
     let Ok(bundle) = cad2mo::cli::read_bundle(bundle_path, &Limits::default()) else { return Some(false) };
     let opts = Options { write_shapes: false, ..Options::default() };
-    let Ok(out) = pipeline::convert(&bundle, &opts) else { return Some(false) };
+    let out = match pipeline::convert(&bundle, &opts) {
+        Ok(out) => out,
+        Err(e) => {
+            println!("{label}: {e}");
+            return Some(false);
+        }
+    };
     let urdf = out.files.iter().find(|(p, _)| p.ends_with(".urdf")).map(|(_, b)| String::from_utf8(b.clone()).expect("utf-8"));
     let urdf = urdf.unwrap_or_else(|| panic!("{label}: no .urdf in the output"));
     assert!(!urdf.contains("<mesh"), "{label}: meshes written without shapes");
@@ -79,7 +85,7 @@ fn check(label: &str, bundle_path: &Path) -> Option<bool> {
             &a.validated,
             &cad2mo::pipeline::back::modelica::Options {
                 package_name: out.report.package_name.clone(),
-                gravity: opts.gravity,
+                gravity: out.report.options.gravity,
                 converter_version: String::new(),
                 name_hints: Default::default(),
             },
