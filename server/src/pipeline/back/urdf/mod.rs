@@ -5,7 +5,9 @@
 //!   the IR's tensor about the CG in CG axes (symmetrised `(I + Iᵀ)/2`, which is the tensor
 //!   itself when it is symmetric), mass. A `world` link is the CAD world frame: grounds are fixed
 //!   in it, free bodies hang from it by `floating` joints at their CAD pose.
-//! - **Joints** follow the passes' spanning tree (`Hierarchy::tree`) and joint chains. URDF's
+//! - **Joints** follow a spanning tree of the writer's own (`spanning_tree`: the hierarchy's
+//!   joints, preferring those URDF writes without helper links, so that a model read from URDF
+//!   keeps the source's tree and loop joints) and the passes' joint chains. URDF's
 //!   zero configuration is the CAD pose: every element's start value `q0` is folded into the
 //!   joint `<origin>`, so **URDF q = Modelica q − q0** (for a tree joint traversed from its
 //!   follower side the URDF axis is negated, and the same relation holds). Limits
@@ -21,8 +23,8 @@
 //!   joint (axis = the revolute's). Where the child's CS1 frame is off a revolute's axis, the
 //!   revolute ends in a massless link `<joint>__<k>` and a fixed joint `<joint>__offset` carries
 //!   the offset (URDF rotates a child about its own origin).
-//! - **Loops**: URDF has no loops. Each kinematic loop's closing joint (a cut, not in the tree) is
-//!   written as Drake's `<loop_joint>` (link frames = the IR joint's base and follower frames in
+//! - **Loops**: URDF has no loops. Each joint left out of the tree is written as Drake's
+//!   `<loop_joint>` (link frames = the IR joint's base and follower frames in
 //!   their links' CS1 frames, axis in the base frame) with a comment; omitted cuts and redundant
 //!   welds only as comments.
 //! - **Mimic**: `Model::couplings` between joints written as one URDF joint each become
