@@ -11,8 +11,10 @@
 //!   zero configuration is the CAD pose: every element's start value `q0` is folded into the
 //!   joint `<origin>`, so **URDF q = Modelica q − q0** (for a tree joint traversed from its
 //!   follower side the URDF axis is negated, and the same relation holds). Limits
-//!   (`Joint::limits`) are in that coordinate already (the source's, zero at its zero
-//!   configuration) and are written as they are; a revolute without position limits is
+//!   (`Joint::limits`, in the source's coordinate = the Modelica q) are shifted by −q0 (a URDF
+//!   whose loops the front end had to assemble starts off its own zero); a loop joint keeps them
+//!   as they are (its frames are the IR's, so its zero is the source's). A revolute without
+//!   position limits is
 //!   `continuous`; a prismatic without them gets ±[`DEFAULT_TRAVEL`], and missing effort and
 //!   velocity get [`DEFAULT_EFFORT`] and [`DEFAULT_VELOCITY`] (URDF requires both), each said in
 //!   a comment.
@@ -28,8 +30,8 @@
 //!   their links' CS1 frames, axis in the base frame) with a comment; omitted cuts and redundant
 //!   welds only as comments.
 //! - **Mimic**: `Model::couplings` between joints written as one URDF joint each become
-//!   `<mimic joint multiplier offset>` (coordinates relative to the CAD pose on both sides, so the
-//!   IR's offset holds as it is); others are listed in a comment.
+//!   `<mimic joint multiplier offset>`, the offset moved to URDF's coordinates
+//!   (`o + m·q0_leader − q0_follower`); others are listed in a comment.
 //! - **Meshes** (when shapes are written): `package://<Pkg>/Resources/Shapes/<stem>.stl` (the
 //!   package's STL, metres, CS1), so visual and collision origins are the identity; colour as
 //!   `<material>` rgba.
@@ -303,7 +305,13 @@ pub fn write(model: &Model, v: &Validated, layout: &Layout, package: &str, write
             };
             let name = if count == 1 { jname.clone() } else { joint_names.take(&s.name) };
             let kind = if s.kind == PrimitiveKind::Prismatic { Kind::Prismatic } else { Kind::Revolute };
-            let limits = if chain.elements.len() == 1 && count == 1 { joint.limits.clone() } else { None };
+            // The source's limits are in the Modelica coordinate q (zero where the joint's
+            // frames coincide); URDF's is q − q0.
+            let limits = if chain.elements.len() == 1 && count == 1 {
+                joint.limits.clone().map(|l| JointLimits { lower: l.lower.map(|x| x - s.q0), upper: l.upper.map(|x| x - s.q0), ..l })
+            } else {
+                None
+            };
             let note = (count > 1 && k == 0).then(|| {
                 let mut s = format!("joint {jname}: {count} movable elements in series through massless links {jname}__k");
                 if chain.elements.iter().any(|e| e.kind == PrimitiveKind::Spherical) {
@@ -362,7 +370,10 @@ pub fn write(model: &Model, v: &Validated, layout: &Layout, package: &str, write
             unexpressed.push(names.joints[c.follower.index()].clone());
             continue;
         };
-        let text = format!("<mimic joint=\"{}\" multiplier=\"{}\" offset=\"{}\"/>", attr(l), n(c.multiplier), n(c.offset));
+        // q_f = m q_l + o with q = u + q0 on both sides: u_f = m u_l + (o + m q0_l − q0_f).
+        let q0 = |j: JointId| a.chains[j.index()].elements.first().map_or(0.0, |e| e.q0);
+        let offset = c.offset + c.multiplier * q0(c.leader) - q0(c.follower);
+        let text = format!("<mimic joint=\"{}\" multiplier=\"{}\" offset=\"{}\"/>", attr(l), n(c.multiplier), n(offset));
         if let Some(u) = ujoints.iter_mut().find(|u| &u.name == f) {
             u.mimic = Some(text);
         }

@@ -322,7 +322,9 @@ fn joint_kinds_limits_mimic_loops() {
     let j = |n: &str| robot.all("joint").find(|j| j.attr("name") == n).unwrap_or_else(|| panic!("{n} in {text}"));
     assert_eq!(j("JA").attr("type"), "revolute");
     let l = j("JA").child("limit").unwrap();
-    assert_eq!((l.num("lower"), l.num("upper"), l.num("velocity"), l.num("effort")), (-1.0, 1.5, 2.0, 30.0));
+    // Limits move to URDF's coordinate: q − q0 with q0 = 0.3.
+    assert!((l.num("lower") + 1.3).abs() < 1e-15 && (l.num("upper") - 1.2).abs() < 1e-15, "{l:?}");
+    assert_eq!((l.num("velocity"), l.num("effort")), (2.0, 30.0));
     // A's CS1 is off the axis: the revolute ends in a helper link and a fixed offset.
     assert_eq!(j("JA").child("child").unwrap().attr("link"), "JA__1");
     assert_eq!(j("JA__offset").attr("type"), "fixed");
@@ -330,7 +332,9 @@ fn joint_kinds_limits_mimic_loops() {
     let l = j("JB").child("limit").unwrap();
     assert_eq!((l.num("lower"), l.num("upper")), (-DEFAULT_TRAVEL, DEFAULT_TRAVEL));
     let mimic = j("JB").child("mimic").unwrap();
-    assert_eq!((mimic.attr("joint"), mimic.num("multiplier"), mimic.num("offset")), ("JA", 0.5, 0.01));
+    // q_B = 0.5 q_A + 0.01 with q0_A = 0.3, q0_B = 0.05: u_B = 0.5 u_A + 0.11.
+    assert_eq!((mimic.attr("joint"), mimic.num("multiplier")), ("JA", 0.5));
+    assert!((mimic.num("offset") - 0.11).abs() < 1e-15, "{mimic:?}");
     assert_eq!(j("JC").attr("type"), "fixed");
     assert_eq!(j("JD_1").attr("type"), "continuous");
     assert_eq!(j("JD_2").attr("type"), "prismatic");
