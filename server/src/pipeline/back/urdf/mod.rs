@@ -483,6 +483,15 @@ pub fn write(model: &Model, v: &Validated, layout: &Layout, package: &str, write
                 continue;
             }
         };
+        let at_world = |f| matches!(model.frame(f).owner, FrameOwner::Ground(_));
+        if at_world(joint.base) || at_world(joint.follower) {
+            let _ = writeln!(
+                out,
+                "  <!-- {} -->",
+                comment(&format!("joint {jname} closes a loop at the world (every joint of the loop is at a ground): a loop_joint cannot end on the world link, not written"))
+            );
+            continue;
+        }
         let side = |f| match model.frame(f).owner {
             FrameOwner::Body(b) => (names.bodies[b.index()].clone(), cs1(b.index()).inverse() * model.frame(f).pose),
             FrameOwner::Ground(_) => ("world".to_string(), model.frame(f).pose),
@@ -567,8 +576,8 @@ fn is_planar(chain: &crate::pipeline::passes::kinematics::Chain) -> bool {
 }
 
 /// A spanning tree over the joints the hierarchy keeps (its redundant welds and implied cuts
-/// are left out), preferring (Kruskal) welds, then joints URDF expresses without helper links
-/// ([`clean`]), then joints at a ground (a Drake loop joint cannot end on the world), then the
+/// are left out), preferring (Kruskal) welds, then joints at a ground (a loop joint should not
+/// end on the world), then joints URDF expresses without helper links ([`clean`]), then the
 /// hierarchy's own order. For a model read from URDF this is the source's tree (its loop
 /// joints end off their links' frames), so a URDF written back has the source's structure; for
 /// CAD models it is the hierarchy's tree wherever that needs no more helper links.
@@ -595,7 +604,7 @@ fn spanning_tree(model: &Model, v: &Validated) -> Tree {
     let key = |j: JointId| {
         let joint = model.joint(j);
         let forward = node(joint.follower) != world;
-        (!joint.is_weld(), !clean(model, v, j, forward), !at_ground(j), rank.get(&j).copied().unwrap_or(usize::MAX), j)
+        (!joint.is_weld(), !at_ground(j), !clean(model, v, j, forward), rank.get(&j).copied().unwrap_or(usize::MAX), j)
     };
     let mut order: Vec<JointId> = model.joint_ids().filter(|&j| !dropped(j)).collect();
     order.sort_by_key(|&j| key(j));

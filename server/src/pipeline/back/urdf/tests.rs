@@ -473,3 +473,24 @@ fn numbers_round_trip_and_names_are_escaped() {
     layout.shapes[0] = None;
     assert!(!write(&m, &v, &layout, "T", true).contains("<mesh"));
 }
+
+/// A body hung from the ground by two joints: the loop closes at the world, which a loop joint
+/// cannot end on: a comment, no loop joint, and the body hangs from one of them.
+#[test]
+fn loops_at_the_world_are_comments() {
+    let mut m = Model { name: "w".into(), length_scale: 1.0, ..Default::default() };
+    m.grounds.push(Ground { name: "G".into(), node_id: "g".into(), frame: FrameId(0), loc: SourceLoc::default() });
+    let g1 = frame(&mut m, FrameOwner::Ground(GroundId(0)), "G1", iso([0.0, 0.0, 0.0], [0.0, 0.0, 0.0]));
+    let g2 = frame(&mut m, FrameOwner::Ground(GroundId(0)), "G2", iso([0.0, 0.0, 0.3], [0.0, 0.0, 0.0]));
+    let x = body(&mut m, "X", iso([0.1, 0.0, 0.1], [0.0, 0.0, 0.0]), iso([0.0, 0.0, 0.0], [0.0, 0.0, 0.0]), 1.0);
+    let x1 = frame(&mut m, FrameOwner::Body(x), "CS2", iso([0.0, 0.0, 0.0], [0.0, 0.0, 0.0]));
+    let x2 = frame(&mut m, FrameOwner::Body(x), "CS3", iso([0.0, 0.0, 0.3], [0.0, 0.0, 0.0]));
+    joint(&mut m, "J1", g1, x1, &[(PrimitiveKind::Revolute, Vector3::z())], None);
+    joint(&mut m, "J2", g2, x2, &[(PrimitiveKind::Revolute, Vector3::z())], None);
+    let (_, _, text) = convert(&m);
+    assert!(!text.contains("<loop_joint"), "{text}");
+    assert!(text.contains("not written"), "{text}");
+    let robot = parse(&text);
+    let poses = link_poses(&robot, &BTreeMap::new());
+    assert!(dist(&poses["X"], &m.frame(m.bodies[0].cs1).pose) < 1e-12);
+}
