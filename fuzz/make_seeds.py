@@ -117,6 +117,8 @@ def golden():
                 write("stl", base, data)
             elif low.endswith((".wrl", ".wrz")):
                 write("vrml", base, data)
+            elif low.endswith((".urdf", ".xacro")):
+                write("urdf", base, data)
         write("bundle_zip", f"{case}.zip", deterministic_zip([(rel, open(full, "rb").read()) for rel, full in files]))
 
 

@@ -13,7 +13,7 @@ use cad2mo::pipeline::{
 pub type Target = (&'static str, fn(&[u8]));
 
 /// The targets by name, as `fuzz/regressions/<name>/` and `cargo fuzz run <name>` call them.
-pub const TARGETS: [Target; 7] = [
+pub const TARGETS: [Target; 8] = [
     ("xml", xml),
     ("stl", stl),
     ("vrml", vrml),
@@ -21,7 +21,27 @@ pub const TARGETS: [Target; 7] = [
     ("convert", convert),
     ("mat", mat),
     ("live", live),
+    ("urdf", urdf),
 ];
+
+/// A URDF -> `front::urdf::parse`; when it parses, the whole conversion of a bundle holding just
+/// that file (no shapes written): errors are fine, panics and non-finite outputs are not.
+pub fn urdf(data: &[u8]) {
+    match pipeline::front::urdf::parse("fuzz.urdf", data) {
+        Ok(_) => {}
+        Err(e) => {
+            let _ = e.to_string();
+            return;
+        }
+    }
+    let Ok(bundle) = Bundle::from_files("fuzz", [("robot.urdf".to_string(), data.to_vec())]) else { return };
+    let opts = pipeline::Options { write_shapes: false, ..Default::default() };
+    if let Ok(out) = pipeline::convert(&bundle, &opts) {
+        for b in &out.report.bodies {
+            assert!(b.mass.is_finite(), "a converted mass is not finite");
+        }
+    }
+}
 
 /// A simulation result (MAT v4 bytes) -> `results::mat::Trajectory::read`; when it reads, what
 /// the service does with it: the summary, variable search, every series (of the first 64
