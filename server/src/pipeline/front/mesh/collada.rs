@@ -56,6 +56,7 @@ use crate::pipeline::front::simmechanics::dom::{Doc, NodeId};
 use crate::pipeline::front::stl::number::parse_f64;
 use crate::pipeline::ir;
 use nalgebra::{Matrix3, Matrix4, Unit, Vector3};
+use std::collections::hash_map::Entry;
 use std::collections::HashMap;
 
 /// Deepest `<instance_node>` chain (a cycle would otherwise never end).
@@ -261,13 +262,12 @@ impl<'a> Reader<'a> {
         let mut total_triangles = 0usize;
         let mut total_points = 0usize;
         for &(g, _) in &instances {
-            if !geoms.contains_key(&g) {
-                let geom = self.geometry(g)?;
-                geoms.insert(g, geom);
-            }
-            let geom = geoms.get(&g).map_or((0, 0), |x| (x.triangles.len(), x.points.len()));
-            total_triangles += geom.0;
-            total_points += geom.1;
+            let geom = match geoms.entry(g) {
+                Entry::Occupied(e) => e.into_mut(),
+                Entry::Vacant(e) => e.insert(self.geometry(g)?),
+            };
+            total_triangles += geom.triangles.len();
+            total_points += geom.points.len();
             if total_triangles > MAX_TRIANGLES {
                 return Err(MeshError::new(self.file, 0, MeshErrorKind::TooManyTriangles { max: MAX_TRIANGLES }));
             }
