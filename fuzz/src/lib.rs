@@ -6,14 +6,14 @@
 use cad2mo::pipeline::{
     self,
     front::bundle::{Bundle, Limits},
-    front::{simmechanics, stl, vrml},
+    front::{mesh, simmechanics, stl, vrml},
 };
 
 /// A target's name and body.
 pub type Target = (&'static str, fn(&[u8]));
 
 /// The targets by name, as `fuzz/regressions/<name>/` and `cargo fuzz run <name>` call them.
-pub const TARGETS: [Target; 7] = [
+pub const TARGETS: [Target; 8] = [
     ("xml", xml),
     ("stl", stl),
     ("vrml", vrml),
@@ -21,7 +21,24 @@ pub const TARGETS: [Target; 7] = [
     ("convert", convert),
     ("mat", mat),
     ("live", live),
+    ("dae", dae),
 ];
+
+/// COLLADA bytes -> `front::mesh::read` as a `.dae`; when it reads, the `ir::Mesh` invariants
+/// hold (triangles, finite vertices, indices in range).
+pub fn dae(data: &[u8]) {
+    match mesh::read("fuzz.dae", data) {
+        Ok(m) => {
+            assert!(!m.triangles.is_empty(), "a mesh without triangles was returned");
+            assert!(m.vertices.iter().flatten().all(|x| x.is_finite()), "a vertex is not finite");
+            let n = m.vertices.len();
+            assert!(m.triangles.iter().flatten().all(|&i| (i as usize) < n), "an index is out of range");
+        }
+        Err(e) => {
+            let _ = e.to_string();
+        }
+    }
+}
 
 /// A simulation result (MAT v4 bytes) -> `results::mat::Trajectory::read`; when it reads, what
 /// the service does with it: the summary, variable search, every series (of the first 64
