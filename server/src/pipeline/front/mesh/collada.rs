@@ -47,9 +47,9 @@
 //!
 //! # Bounds and errors
 //! At most [`super::MAX_TRIANGLES`] triangles in all (counted before any vertex is placed), at
-//! most 1,000,000 node visits. An index outside its source, an accessor reading past its array, a
-//! `<p>` whose length does not fit its inputs, a bad number or an unresolvable `url` is an error
-//! naming the element's line.
+//! most 250,000 node visits and as many geometry instances. An index outside its source, an
+//! accessor reading past its array, a `<p>` whose length does not fit its inputs, a bad number or
+//! an unresolvable `url` is an error naming the element's line.
 
 use super::{MeshError, MeshErrorKind, MAX_TRIANGLES};
 use crate::pipeline::front::simmechanics::dom::{Doc, NodeId};
@@ -61,8 +61,8 @@ use std::collections::HashMap;
 
 /// Deepest `<instance_node>` chain (a cycle would otherwise never end).
 const MAX_INSTANCE_DEPTH: u32 = 64;
-/// Most node visits (instancing can multiply nodes).
-const MAX_NODE_VISITS: usize = 1_000_000;
+/// Most node visits, and most geometry instances (instancing can multiply both).
+const MAX_NODE_VISITS: usize = 250_000;
 
 /// Reads a COLLADA file, applying its unit, up axis and node transforms (see the module docs).
 pub fn read(file: &str, bytes: &[u8]) -> Result<ir::Mesh, MeshError> {
@@ -331,6 +331,9 @@ impl<'a> Reader<'a> {
                         let g = self.resolve(c, "url")?;
                         if self.name(g) != b"geometry" {
                             return Err(self.err(c, format!("url of <instance_geometry> names a <{}>, not a <geometry>", show(self.name(g)))));
+                        }
+                        if out.len() >= MAX_NODE_VISITS {
+                            return Err(self.err(c, format!("more than {MAX_NODE_VISITS} geometry instances")));
                         }
                         out.push((g, m));
                     }

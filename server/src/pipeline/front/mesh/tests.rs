@@ -179,6 +179,17 @@ fn dae_instance_node_and_two_instances() {
         .replace("<library_geometries>", &format!("{lib}<library_geometries>"));
     let e = read("cycle.dae", text.as_bytes()).expect_err("cycle");
     assert!(e.to_string().contains("nested more than 64 deep"), "{e}");
+    // Instancing that multiplies (ten of the next level, eight levels: 10^8 nodes) is refused
+    // after 250,000 visits.
+    let mut lib = String::from("<library_nodes>");
+    for level in 0..8 {
+        lib += &format!("<node id=\"l{level}\">{}</node>", format!("<instance_node url=\"#l{}\"/>", level + 1).repeat(10));
+    }
+    lib += "<node id=\"l8\"><instance_geometry url=\"#b\"/></node></library_nodes>";
+    let text = dae("", &geoms, Some("<node><instance_node url=\"#l0\"/></node>"))
+        .replace("<library_geometries>", &format!("{lib}<library_geometries>"));
+    let e = read("bomb.dae", text.as_bytes()).expect_err("bomb");
+    assert!(e.to_string().contains("more than 250000 node visits"), "{e}");
 }
 
 #[test]
