@@ -6,14 +6,14 @@
 use cad2mo::pipeline::{
     self,
     front::bundle::{Bundle, Limits},
-    front::{simmechanics, stl, vrml},
+    front::{mesh, simmechanics, stl, vrml},
 };
 
 /// A target's name and body.
 pub type Target = (&'static str, fn(&[u8]));
 
 /// The targets by name, as `fuzz/regressions/<name>/` and `cargo fuzz run <name>` call them.
-pub const TARGETS: [Target; 8] = [
+pub const TARGETS: [Target; 9] = [
     ("xml", xml),
     ("stl", stl),
     ("vrml", vrml),
@@ -22,6 +22,7 @@ pub const TARGETS: [Target; 8] = [
     ("mat", mat),
     ("live", live),
     ("urdf", urdf),
+    ("dae", dae),
 ];
 
 /// A URDF -> `front::urdf::parse`; when it parses, the whole conversion of a bundle holding just
@@ -39,6 +40,22 @@ pub fn urdf(data: &[u8]) {
     if let Ok(out) = pipeline::convert(&bundle, &opts) {
         for b in &out.report.bodies {
             assert!(b.mass.is_finite(), "a converted mass is not finite");
+        }
+    }
+}
+
+/// COLLADA bytes -> `front::mesh::read` as a `.dae`; when it reads, the `ir::Mesh` invariants
+/// hold (triangles, finite vertices, indices in range).
+pub fn dae(data: &[u8]) {
+    match mesh::read("fuzz.dae", data) {
+        Ok(m) => {
+            assert!(!m.triangles.is_empty(), "a mesh without triangles was returned");
+            assert!(m.vertices.iter().flatten().all(|x| x.is_finite()), "a vertex is not finite");
+            let n = m.vertices.len();
+            assert!(m.triangles.iter().flatten().all(|&i| (i as usize) < n), "an index is out of range");
+        }
+        Err(e) => {
+            let _ = e.to_string();
         }
     }
 }
