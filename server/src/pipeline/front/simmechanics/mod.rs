@@ -45,7 +45,7 @@
 //! Everything else is an [`XmlError`] pointing at the offending element; malformed input never
 //! panics. Physical plausibility (inertia, density, loops) is checked by later passes.
 
-mod dom;
+pub(crate) mod dom;
 mod error;
 mod lower;
 mod pose;
