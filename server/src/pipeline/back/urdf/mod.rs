@@ -271,11 +271,17 @@ pub fn write(model: &Model, v: &Validated, layout: &Layout, package: &str, write
                 axis: e[2].axis,
                 limits: None,
                 mimic: None,
-                note: Some(format!(
-                    "planar: translations along {} and {} of the joint frame, then rotation about the axis",
-                    v3(&e[0].axis),
-                    v3(&e[1].axis)
-                )),
+                note: {
+                    // The start rotation is in the origin: the Modelica translations run along
+                    // the plane axes turned back by it.
+                    let back = element_motion(PrimitiveKind::Revolute, &e[2].axis, -e[2].q0).rotation;
+                    Some(format!(
+                        "planar (Modelica chain {}): translations along {} and {} of the joint frame, then rotation about the axis",
+                        jname,
+                        v3(&(back * e[0].axis)),
+                        v3(&(back * e[1].axis))
+                    ))
+                },
             });
             continue;
         }
@@ -607,7 +613,7 @@ fn spanning_tree(model: &Model, v: &Validated) -> Tree {
         (!joint.is_weld(), !at_ground(j), !clean(model, v, j, forward), rank.get(&j).copied().unwrap_or(usize::MAX), j)
     };
     let mut order: Vec<JointId> = model.joint_ids().filter(|&j| !dropped(j)).collect();
-    order.sort_by_key(|&j| key(j));
+    order.sort_by_cached_key(|&j| key(j));
     let mut dsu: Vec<usize> = (0..=nb).collect();
     fn find(d: &mut [usize], mut x: usize) -> usize {
         while d[x] != x {
