@@ -783,7 +783,8 @@ impl<'d, 'i> Reader<'d, 'i> {
                 push_ground(&mut model, &j.name, frame_pose, loc.clone())
             } else {
                 let p = index[j.parent.as_str()];
-                let pb = body_of[p].expect("a declared link other than world is a body");
+                // Every declared link but `world` is a body.
+                let Some(pb) = body_of[p] else { continue };
                 let f = push_frame(&mut model, &j.name, format!("{}::{}", links[p].name, j.name), FrameOwner::Body(pb), frame_pose, &loc);
                 model.bodies[pb.index()].frames.push(f);
                 f
