@@ -2,5 +2,6 @@
 
 pub mod bundle;
 pub mod simmechanics;
+pub mod simscape2;
 pub mod stl;
 pub mod vrml;

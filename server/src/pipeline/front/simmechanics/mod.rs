@@ -45,8 +45,8 @@
 //! Everything else is an [`XmlError`] pointing at the offending element; malformed input never
 //! panics. Physical plausibility (inertia, density, loops) is checked by later passes.
 
-mod dom;
-mod error;
+pub(crate) mod dom;
+pub(crate) mod error;
 mod lower;
 mod pose;
 mod units;
