@@ -816,7 +816,17 @@ impl<'a, 'd> Lower<'a, 'd> {
                 None => Vec::new(),
             };
             let Some(target) = self.resolve(container, &path) else {
-                return Err(self.err(f, format!("instance path {} names no instance", ir::clip(&path.join(" / "), 300))));
+                // Real exports do this (Tumbller: a weld to an instance missing from the tree).
+                self.warn(
+                    "joint-dangling",
+                    format!(
+                        "joint \"{}\": instance path {} names no instance in the tree; the joint is left out",
+                        self.attr(j, "name")?.unwrap_or_default(),
+                        ir::clip(&path.join(" / "), 300)
+                    ),
+                    f,
+                );
+                return Ok(());
             };
             let pose = self.node_world(target) * self.transform(f)?;
             let Some(owner) = self.owner_of(target, groups, rep) else {
@@ -884,10 +894,14 @@ impl<'a, 'd> Lower<'a, 'd> {
             let mut nodes = Vec::new();
             for p in self.kids(m, b"InstancePath") {
                 let path = self.read_path(p)?;
-                let t = self.resolve(container, &path).ok_or_else(|| {
-                    self.err(p, format!("instance path {} names no instance", ir::clip(&path.join(" / "), 300)))
-                })?;
-                nodes.push(t);
+                match self.resolve(container, &path) {
+                    Some(t) => nodes.push(t),
+                    None => {
+                        let msg = format!("mate \"{name}\": instance path {} names no instance in the tree; the mate is left out", ir::clip(&path.join(" / "), 300));
+                        self.warn("mate-dangling", msg, p);
+                        return Ok(None);
+                    }
+                }
             }
             for w in nodes.windows(2) {
                 groups.union(w[0], w[1]);
@@ -900,9 +914,11 @@ impl<'a, 'd> Lower<'a, 'd> {
                 Some(p) => self.read_path(p)?,
                 None => Vec::new(),
             };
-            let target = self.resolve(container, &path).ok_or_else(|| {
-                self.err(g, format!("instance path {} names no instance", ir::clip(&path.join(" / "), 300)))
-            })?;
+            let Some(target) = self.resolve(container, &path) else {
+                let msg = format!("mate \"{name}\": instance path {} names no instance in the tree; the mate is left out", ir::clip(&path.join(" / "), 300));
+                self.warn("mate-dangling", msg, g);
+                return Ok(None);
+            };
             let gt = self.attr(g, "geomType")?.unwrap_or_default();
             let pose = self.node_world(target);
             let pos = pose * nalgebra::Point3::from(self.vec3(self.req(g, "Position")?)? * self.length);
