@@ -357,3 +357,61 @@ fn step_geometry_is_one_warning_per_part() {
     ids.dedup();
     assert_eq!(ids.len(), model.bodies.len());
 }
+
+/// Our own hand-made second-generation cases in `tests/in` (`xml2_*`, `broken_xml2_*`): the FK
+/// check against the scanner, the joints they are built to give, the broken case's error. (Once
+/// the pipeline dispatches second-generation files, tests/golden.rs also pins their output.)
+#[test]
+fn own_xml2_cases() {
+    let root = cad2mo_tests::common::workspace_root().join("tests/in");
+    let one_xml = |case: &str| {
+        let xml = cad2mo_tests::common::files_with_ext(&root.join(case), &[".xml"]);
+        assert_eq!(xml.len(), 1, "{case}");
+        xml[0].clone()
+    };
+    // Onshape: revolute (follower frame turned 15 deg about z), weld, prismatic inside the
+    // sub-assembly's definition (follower 0.1 m along the slide), weld.
+    let path = one_xml("xml2_onshape");
+    let (model, validated, warnings) = analyse(&path);
+    let kinds = joint_kinds(&model);
+    assert_eq!(kinds, BTreeMap::from([("prismatic".to_string(), 1), ("revolute".to_string(), 1), ("weld".to_string(), 3)]));
+    assert_eq!(warning_codes(&warnings), BTreeMap::from([("geometry-step", 5), ("no-geometry", 1)]), "{warnings:?}");
+    assert!(model.bodies.iter().any(|b| b.cad_name == "Tool (grün) <1>" && b.subsystem_path.is_empty()));
+    assert!(model.bodies.iter().any(|b| b.node_id == "MSub1|MCar1" && b.subsystem_path == ["Slide Unit <1>"]));
+    let slide = model.joints.iter().find(|j| j.cad_name == "slide").expect("slide");
+    assert_eq!(slide.node_id, "joint:MSub1|slide");
+    let truth = scan(&std::fs::read_to_string(&path).expect("xml"));
+    let out = convert(&model, &validated, warnings);
+    let stats = fk_check_with_inertia(&out, &truth.frames, &truth.cgs, &truth.mass).unwrap_or_else(|e| panic!("xml2_onshape: {e}"));
+    assert_eq!((stats.frames, stats.cgs, stats.inertias), (5, 5, 5));
+
+    // SolidWorks: a revolute (concentric + face), a planar (one face pair), a weld (three face
+    // pairs onto a rigid sub-assembly, itself two bodies welded), and a pin in a slot that no
+    // single joint allows (warned, no joint).
+    let path = one_xml("xml2_solidworks");
+    let (model, validated, warnings) = analyse(&path);
+    let kinds = joint_kinds(&model);
+    assert_eq!(
+        kinds,
+        BTreeMap::from([("prismatic+prismatic+revolute".to_string(), 1), ("revolute".to_string(), 1), ("weld".to_string(), 3)]),
+        "{warnings:?}"
+    );
+    let slot: Vec<&Warning> = warnings.iter().filter(|w| w.code == "mate-unreducible").collect();
+    assert_eq!(slot.len(), 1, "{warnings:?}");
+    assert!(slot[0].message.contains("Coincident \"SlotPin\"") && slot[0].message.contains("\"slider-1\""), "{}", slot[0].message);
+    let rev = model.joints.iter().find(|j| j.primitives[0].kind == PrimitiveKind::Revolute && j.primitives.len() == 1).expect("revolute");
+    let o = model.frame(rev.base).pose.translation.vector;
+    assert!((o.xy() - nalgebra::Vector2::new(0.1, 0.05)).norm() < 1e-12, "pivot {o}");
+    assert!((rev.primitives[0].axis_world - Vector3::z()).norm() < 1e-12);
+    let truth = scan(&std::fs::read_to_string(&path).expect("xml"));
+    let out = convert(&model, &validated, warnings);
+    let stats = fk_check_with_inertia(&out, &truth.frames, &truth.cgs, &truth.mass).unwrap_or_else(|e| panic!("xml2_solidworks: {e}"));
+    assert_eq!((stats.frames, stats.cgs, stats.inertias), (6, 6, 6));
+
+    // Broken: an unknown joint kind is an error naming the element and its position.
+    let path = one_xml("broken_xml2_unknown_joint");
+    let e = simscape2::parse("slide_arm.xml", &std::fs::read(&path).expect("xml")).expect_err("unknown joint kind");
+    assert_eq!(e.element, "Screw \"shoulder\"");
+    assert!(e.to_string().starts_with("slide_arm.xml:"), "{e}");
+    assert!(e.message.starts_with("unknown joint kind <Screw>"), "{e}");
+}

@@ -977,9 +977,14 @@ impl<'a, 'd> Lower<'a, 'd> {
                 continue; // inside one rigid group: nothing left to constrain
             }
             if !rep.contains_key(&ga) || !rep.contains_key(&gb) {
+                let floating = if rep.contains_key(&ga) { mate.geoms[1].0 } else { mate.geoms[0].0 };
+                let sub = self.insts.get(floating).map_or_else(String::new, |i| format!(" \"{}\" ({})", i.name, i.path_id));
                 self.warn(
                     "mate-unsupported",
-                    format!("mate \"{}\" refers to the frame of a sub-assembly that no part is fixed to: ignored", mate.name),
+                    format!(
+                        "mate \"{}\" refers to the frame of sub-assembly instance{sub}, which no part is fixed to (it would be a massless body): the mate is left out",
+                        mate.name
+                    ),
                     mate.node,
                 );
                 continue;

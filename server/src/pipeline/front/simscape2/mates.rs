@@ -36,10 +36,10 @@ use nalgebra::{DMatrix, UnitQuaternion, Vector3, Vector6};
 
 /// Singular values below this (relative to the rows, which are about unit size once lengths are
 /// scaled by the pair's extent) count as zero.
-pub const RANK_TOL: f64 = 1e-7;
+pub const RANK_TOL: f64 = 1e-4;
 /// A mate whose geometry is further off than this at the assembly pose (m, or rad for
 /// directions) is reported as inconsistent.
-pub const CONSISTENCY_TOL: f64 = 1e-6;
+pub const CONSISTENCY_TOL: f64 = 1e-4;
 
 /// One mate's geometry, in world coordinates (metres) at the assembly pose.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -408,7 +408,7 @@ pub fn reduce(rows: &[Vector6<f64>], points: &[Vector3<f64>]) -> Reduction {
         Err(_) => return Reduction::Unreducible { what: "no fixed point".into() },
     };
     let fit = (&a * nalgebra::DVector::from_column_slice(q.as_slice()) - &b).norm();
-    if fit > 1e-6 {
+    if fit > RANK_TOL {
         return Reduction::Unreducible {
             what: format!("{r} rotation(s) and {t} translation(s) whose rotations share no axis or point (a screw-like motion)"),
         };
