@@ -276,6 +276,10 @@ fn every_xml2_fixture_converts_and_reproduces_the_cad_pose() {
             codes
         );
         if std::env::var_os("SIMSCAPE2_VERBOSE").is_some() {
+            for j in &model.joints {
+                let sig: Vec<&str> = j.primitives.iter().map(|p| p.kind.as_str()).collect();
+                println!("  joint {} [{}]", j.cad_name, sig.join("+"));
+            }
             for w in &out.report.warnings {
                 println!("  [{}] {} -- {}", w.code, w.message, w.location);
             }

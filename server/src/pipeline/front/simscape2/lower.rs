@@ -14,6 +14,8 @@ use crate::pipeline::ir::{
 };
 
 type Result<T> = std::result::Result<T, Simscape2Error>;
+/// A joint's primitives: kind and world axis.
+type Prims = Vec<(PrimitiveKind, Vector3<f64>)>;
 
 /// How far (m, and rad-ish for rotation-matrix entries) an Onshape joint's follower frame may sit
 /// from where its joint kind allows, relative to its base frame, before we warn.
@@ -620,7 +622,7 @@ impl<'a, 'd> Lower<'a, 'd> {
         base: Owner,
         follower: Owner,
         pose: Isometry3<f64>,
-        primitives: Vec<(PrimitiveKind, Vector3<f64>)>,
+        primitives: Prims,
         node: NodeId,
     ) {
         let loc = self.loc(node);
@@ -1049,7 +1051,7 @@ impl<'a, 'd> Lower<'a, 'd> {
             }
             let red = mates::reduce(&rows, &points);
             let (base, follower) = (rep[&ga], rep[&gb]);
-            let (prims, origin, axis): (Vec<(PrimitiveKind, Vector3<f64>)>, Vector3<f64>, Vector3<f64>) = match &red {
+            let (prims, origin, axis): (Prims, Vector3<f64>, Vector3<f64>) = match &red {
                 Reduction::Free => {
                     self.warn(
                         "mate-free",
