@@ -10,6 +10,7 @@ use cad2mo::pipeline::Options;
 use cad2mo_tests::check::{fk_check, fk_check_with_inertia, nearest_rotation, TOL};
 use cad2mo_tests::common::{convert_path, files_with_ext, sorted_dirs, workspace_root};
 use cad2mo_tests::truth::{xml_cgs, xml_frames, xml_mass_properties, TruthFrame};
+use cad2mo_tests::urdf_truth::{loops_closed, start_values, urdf_truth_at};
 use nalgebra::{Matrix3, Vector3};
 use serde_json::Value;
 
@@ -58,9 +59,15 @@ fn own_cases_reproduce_cad_pose() {
     for case in sorted_dirs(&workspace_root().join("tests/in")) {
         let name = case.file_name().expect("name").to_string_lossy().to_string();
         let Ok(out) = convert_path(&case, &options(&case)) else { continue };
-        let xml = files_with_ext(&case, &[".xml"]);
-        let text = std::fs::read_to_string(&xml[0]).expect("xml");
-        let stats = fk_check_with_inertia(&out, &xml_frames(&text), &xml_cgs(&text), &xml_mass_properties(&text)).unwrap_or_else(|e| panic!("{name} (XML truth): {e}"));
+        let stats = if let Some(urdf) = files_with_ext(&case, &[".urdf"]).first() {
+            let t = urdf_truth_at(&std::fs::read_to_string(urdf).expect("urdf"), &start_values(&out.report));
+            loops_closed(&t).unwrap_or_else(|e| panic!("{name}: {e}"));
+            fk_check_with_inertia(&out, &t.frames, &t.cgs, &t.mass).unwrap_or_else(|e| panic!("{name} (URDF truth): {e}"))
+        } else {
+            let xml = files_with_ext(&case, &[".xml"]);
+            let text = std::fs::read_to_string(&xml[0]).expect("xml");
+            fk_check_with_inertia(&out, &xml_frames(&text), &xml_cgs(&text), &xml_mass_properties(&text)).unwrap_or_else(|e| panic!("{name} (XML truth): {e}"))
+        };
         assert!(stats.frames >= out.report.bodies.len(), "{name}: only {} frames checked", stats.frames);
         let (frames, cgs) = expected_frames(&case);
         if !frames.is_empty() {

@@ -25,7 +25,7 @@ fn case_options(case: &Path) -> Options {
     }
     if let Some(g) = v["gravity"].as_array() {
         let g: Vec<f64> = g.iter().filter_map(Value::as_f64).collect();
-        opts.gravity = [g[0], g[1], g[2]];
+        opts.gravity = Some([g[0], g[1], g[2]]);
     }
     opts
 }

@@ -40,7 +40,7 @@ fn prepare(name: &str, xml: &str) -> Option<(Mechanism, String)> {
         &a.validated,
         &cad2mo::pipeline::back::modelica::Options {
             package_name: out.report.package_name.clone(),
-            gravity: opts.gravity,
+            gravity: out.report.options.gravity,
             converter_version: String::new(),
             name_hints: Default::default(),
         },
@@ -54,7 +54,7 @@ fn compare(label: &str, m: &Mechanism, mjcf: &str, samples: usize, seed: u64) ->
     let dir = tempfile::tempdir().expect("tempdir");
     let model_path = dir.path().join("model.mjcf.xml");
     std::fs::write(&model_path, mjcf).expect("write mjcf");
-    let g = Vector3::from(Options::default().gravity);
+    let g = Vector3::new(0.0, -9.81, 0.0);
     let mut rng = XorShift::new(seed);
     let mut ws = m.workspace();
     let n = m.dof();

@@ -32,9 +32,10 @@ enum Command {
         /// Name of the Modelica package (default: from the assembly's name).
         #[arg(long)]
         package_name: Option<String>,
-        /// Gravity vector in world coordinates, m/s^2, as X,Y,Z.
-        #[arg(long, value_parser = parse_gravity, default_value = "0,-9.81,0", allow_hyphen_values = true)]
-        gravity: [f64; 3],
+        /// Gravity vector in world coordinates, m/s^2, as X,Y,Z (default: 0,-9.81,0 for
+        /// SimMechanics XML, whose CAD "up" is y; 0,0,-9.81 for URDF and Simscape XML).
+        #[arg(long, value_parser = parse_gravity, allow_hyphen_values = true)]
+        gravity: Option<[f64; 3]>,
         /// Merge bodies joined by welds into single bodies.
         #[arg(long)]
         lump_welds: bool,

@@ -27,8 +27,8 @@ use crate::pipeline::{self, ConvertError};
 pub struct ExportOptions {
     /// Modelica package name; `None` derives it from the assembly's name.
     pub package_name: Option<String>,
-    /// Gravity in world coordinates, m/s².
-    pub gravity: [f64; 3],
+    /// Gravity in world coordinates, m/s²; `None`: the source's convention.
+    pub gravity: Option<[f64; 3]>,
     /// Merge bodies joined by welds.
     pub lump_welds: bool,
 }
@@ -237,7 +237,7 @@ pub struct MotionsInput {
 struct BuildObserver<'a> {
     drives: &'a [crate::drives::ResolvedDrive],
     motions: &'a MotionsInput,
-    gravity: [f64; 3],
+    gravity: Option<[f64; 3]>,
     active: Vec<String>,
     orphaned: Vec<String>,
     /// Motions written into `Mechatronics.mo`, and those this version cannot plan.
@@ -278,7 +278,7 @@ impl Observer for BuildObserver<'_> {
         let files = match (mech, pipeline::back::modelica::mechatronics::motion_class_names(&tables)) {
             (Some(mech), Ok(names)) => crate::motions::sizing_files(
                 &mech,
-                &nalgebra::Vector3::from(self.gravity),
+                &nalgebra::Vector3::from(self.gravity.unwrap_or_else(|| pipeline::default_gravity(view.model))),
                 self.motions.version,
                 view.package_name,
                 &planned,
@@ -333,7 +333,7 @@ mod tests {
     fn options_round_trip_with_defaults() {
         let o: ExportOptions = serde_json::from_str("{}").unwrap();
         assert_eq!(o, ExportOptions::default());
-        let o = ExportOptions { package_name: Some("P".into()), gravity: [0.0, 0.0, -9.81], lump_welds: true };
+        let o = ExportOptions { package_name: Some("P".into()), gravity: Some([0.0, 0.0, -9.81]), lump_welds: true };
         assert_eq!(serde_json::from_str::<ExportOptions>(&serde_json::to_string(&o).unwrap()).unwrap(), o);
     }
 }

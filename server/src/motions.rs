@@ -70,7 +70,7 @@ impl Kinematic {
             &a.validated,
             &pipeline::back::modelica::Options {
                 package_name: "P".into(),
-                gravity: options.gravity,
+                gravity: options.gravity.unwrap_or_else(|| pipeline::default_gravity(&a.model)),
                 converter_version: pipeline::VERSION.to_string(),
                 name_hints: pipeline::name_hints(report),
             },
@@ -93,7 +93,7 @@ impl Kinematic {
                 rotation: [0, 1, 2].map(|i| [0, 1, 2].map(|j| r[(i, j)])),
             });
         }
-        Ok(Kinematic { mech, joint_node_ids, frames, gravity: Vector3::from(options.gravity) })
+        Ok(Kinematic { mech, joint_node_ids, frames, gravity: Vector3::from(options.gravity.unwrap_or_else(|| pipeline::default_gravity(&a.model))) })
     }
 }
 
@@ -148,6 +148,9 @@ pub struct JointView {
     pub independent: bool,
     pub limits: AxisLimits,
     pub defaults: AxisLimits,
+    /// The joint's effort limit from the source (URDF), N·m or N.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub effort: Option<f64>,
     pub custom: bool,
 }
 
@@ -193,7 +196,8 @@ pub fn joints_view(k: &Kinematic, version: i64, edits: &BTreeMap<String, LimitsE
                 q0: c.q0,
                 independent: c.independent,
                 limits: a.limits,
-                defaults: AxisLimits::defaults(c.kind, c.q0),
+                defaults: AxisLimits::for_coordinate(c),
+                effort: c.source_limits.as_ref().and_then(|l| l.effort),
                 custom: edits.contains_key(&c.name),
             }
         })
@@ -426,9 +430,16 @@ pub fn sizing(
             tau: &tau[i],
             load_inertia: inertia[i],
         };
+        let effort = mech.coordinates().get(i).and_then(|c| c.source_limits.as_ref()).and_then(|l| l.effort).filter(|e| *e > 0.0);
         let Some(d) = drives.iter().find(|d| d.joint == axis.name) else {
             match crate::sizing::undriven(load) {
-                Ok(u) => report.undriven.push(u),
+                Ok(mut u) => {
+                    if let Some(e) = effort {
+                        u.effort_limit = Some(e);
+                        u.within_effort = Some(u.peak_torque <= e);
+                    }
+                    report.undriven.push(u)
+                }
                 Err(e) => report.not_sized.push(NotSized { joint: axis.name.clone(), problem: e.to_string() }),
             }
             continue;
@@ -451,7 +462,14 @@ pub fn sizing(
                 crate::sizing::size_drive(load, &motor, &gear, Some(catalog), crate::sizing::TOP).map_err(|e| e.to_string())
             });
         match sized {
-            Ok(s) => report.drives.push(s),
+            Ok(mut s) => {
+                if let Some(e) = effort {
+                    let c = crate::sizing::effort_check(load.kind, load.tau, e);
+                    s.pass &= c.pass;
+                    s.checks.push(c);
+                }
+                report.drives.push(s)
+            }
             Err(problem) => report.not_sized.push(NotSized { joint: axis.name.clone(), problem }),
         }
     }

@@ -283,6 +283,10 @@ pub fn element(model: &Model, c: &Component) -> Result<Element, String> {
             _ => Err(format!("component `{}`: unknown class `{}`", c.name, c.class)),
         };
     }
+    // 1-D couplings between drive flanges (URDF mimic) move no frame.
+    if matches!(class, "Modelica.Mechanics.Rotational.Components.IdealGear" | "Modelica.Mechanics.Rotational.Components.IdealGearR2T") {
+        return Ok(Element::Leaf);
+    }
     match class.strip_prefix(model.package.as_str()).and_then(|s| s.strip_prefix(".Components.")) {
         Some("Revolute") if !model.package.is_empty() => {
             Ok(Element::Revolute { n: axis_param(c, [0.0, 0.0, 1.0])?, phi: num_param(c, "phi.start", Some(0.0))? })
@@ -428,6 +432,11 @@ pub fn forward_kinematics_tol(model: &Model, pos_tol: f64, angle_tol: f64) -> Re
         }
     };
     for (a, b) in &model.connects {
+        // 1-D flange connections (drives, URDF mimic gears) carry no frame.
+        let one_d = |r: &str| r.rsplit_once('.').is_some_and(|(_, c)| c == "drive" || c.starts_with("flange"));
+        if one_d(a) || one_d(b) {
+            continue;
+        }
         check_connector(a)?;
         check_connector(b)?;
         links.push(Link { a: a.clone(), b: b.clone(), t: Isometry3::identity(), what: format!("connect({a}, {b})") });

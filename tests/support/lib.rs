@@ -19,3 +19,4 @@ pub mod live;
 pub mod modelica;
 pub mod structure;
 pub mod truth;
+pub mod urdf_truth;

@@ -59,7 +59,7 @@ ALL_CASES = ["pendulum", "fourbar", "arm_subsystems", "inch_lbm", "rotated_frame
              "lump_welds", "warnings", "frames_relative", "slider_crank", "sixbar_6digit",
              "crank_rocker_noise", "spatial_rssr", "immobile_leg"] + list(ERROR_CASES)
 # Written by make_vrml_fixtures.py, checked elsewhere.
-OTHER_GENERATOR = ("vrml_", "broken_vrml_")
+OTHER_GENERATOR = ("vrml_", "broken_vrml_", "urdf_", "broken_urdf_", "xml2_", "broken_xml2_")
 I3 = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]
 
 failures = []

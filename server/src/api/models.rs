@@ -299,7 +299,7 @@ impl FromRequest<AppState> for Upload {
                     }
                     options.package_name = Some(text.to_string());
                 }
-                "gravity" => options.gravity = parse_gravity(text).map_err(|m| invalid("gravity", m))?,
+                "gravity" => options.gravity = Some(parse_gravity(text).map_err(|m| invalid("gravity", m))?),
                 _ => {
                     options.lump_welds = match text.to_ascii_lowercase().as_str() {
                         "true" | "1" | "on" | "yes" => true,

@@ -95,6 +95,8 @@ pub struct Coordinate {
     /// Independent: its start value is `fixed=true` in Modelica (always, outside loops; in a loop,
     /// the independent coordinates the loop pass chose). Dependent ones are solved by assembly.
     pub independent: bool,
+    /// The limits the source states for the joint (URDF), when the joint has this one element.
+    pub source_limits: Option<crate::pipeline::ir::JointLimits>,
 }
 
 /// Where something sits: a fixed transform from a link frame (or the world) to it.
@@ -241,6 +243,7 @@ impl Mechanism {
                     kind: kind_of(e.kind),
                     q0: e.q0,
                     independent: e.fixed,
+                    source_limits: model.joint(j).limits.clone().filter(|_| chain.elements.len() == 1),
                 });
                 *link = Some(links.len() - 1);
                 *x = Isometry3::identity();
@@ -314,6 +317,7 @@ impl Mechanism {
                             kind: kind_of(e.kind),
                             q0: e.q0,
                             independent: false,
+                            source_limits: None,
                         });
                     }
                     Closure { joint: l.closing, a: base, b: follower, form: ClosureForm::Plain { elements, residual: chain.residual } }

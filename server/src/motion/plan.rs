@@ -119,6 +119,25 @@ impl AxisLimits {
         }
     }
 
+    /// The defaults for a coordinate: [`AxisLimits::defaults`], with the position range and
+    /// speed the source states (URDF `<limit>`) where it states them. The source's joint
+    /// coordinate is the Modelica one (the URDF front end places the base frame at the joint
+    /// origin), so its position limits apply as they are, whatever the start value.
+    pub fn for_coordinate(c: &crate::mechanism::Coordinate) -> AxisLimits {
+        let mut d = AxisLimits::defaults(c.kind, c.q0);
+        if let Some(s) = &c.source_limits {
+            if let (Some(lo), Some(hi)) = (s.lower, s.upper) {
+                if lo < hi {
+                    d.position = [lo, hi];
+                }
+            }
+            if let Some(v) = s.velocity.filter(|v| *v > 0.0) {
+                d.speed = v;
+            }
+        }
+        d
+    }
+
     /// These limits with a user's edit applied.
     pub fn with(self, e: &LimitsEdit) -> AxisLimits {
         AxisLimits {
@@ -175,7 +194,7 @@ pub fn axes(mech: &Mechanism, edits: &BTreeMap<String, LimitsEdit>) -> Vec<Axis>
     mech.coordinates()
         .iter()
         .map(|c| {
-            let d = AxisLimits::defaults(c.kind, c.q0);
+            let d = AxisLimits::for_coordinate(c);
             let limits = edits.get(&c.name).map_or(d, |e| d.with(e));
             Axis { name: c.name.clone(), kind: c.kind, q0: c.q0, limits }
         })

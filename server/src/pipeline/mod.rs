@@ -40,8 +40,8 @@ pub const MAX_MESSAGE_BYTES: usize = 4096;
 pub struct Options {
     /// Modelica package name; `None` derives it from the assembly's name.
     pub package_name: Option<String>,
-    /// Gravity in world coordinates, m/s² (CAD "up" is usually +y).
-    pub gravity: [f64; 3],
+    /// Gravity in world coordinates, m/s²; `None`: the source's convention ([`default_gravity`]).
+    pub gravity: Option<[f64; 3]>,
     /// Merge bodies joined by welds into one body each.
     pub lump_welds: bool,
     /// Write DXF/STL shape files (off for `inspect`).
@@ -63,7 +63,7 @@ impl Default for Options {
     fn default() -> Self {
         Options {
             package_name: None,
-            gravity: [0.0, -9.81, 0.0],
+            gravity: None,
             lump_welds: false,
             write_shapes: true,
             drives: Vec::new(),
@@ -85,6 +85,10 @@ pub enum ConvertError {
     Xml(#[from] XmlError),
     #[error(transparent)]
     Geometry(#[from] GeometryError),
+    #[error(transparent)]
+    Urdf(#[from] front::urdf::UrdfError),
+    #[error(transparent)]
+    UrdfGeometry(#[from] front::urdf::UrdfGeometryError),
     #[error(transparent)]
     Validation(#[from] ValidationError),
     #[error(transparent)]
@@ -118,6 +122,12 @@ impl ConvertError {
                 line: e.line,
                 column: e.column,
                 message: if e.element.is_empty() { e.kind.to_string() } else { format!("in {}: {}", e.element, e.kind) },
+            },
+            ConvertError::Urdf(e) => Diagnostic {
+                file: e.file.clone(),
+                line: e.line,
+                column: e.column,
+                message: if e.element.is_empty() { e.message.clone() } else { format!("in {}: {}", e.element, e.message) },
             },
             ConvertError::Geometry(GeometryError::Stl(e)) => {
                 Diagnostic { file: e.file.clone(), line: e.line, column: 0, message: e.kind.to_string() }
@@ -171,23 +181,23 @@ pub fn analyse(bundle: &Bundle, opts: &Options) -> Result<Analysed, ConvertError
 /// [`analyse`], telling `obs` how far it is.
 pub fn analyse_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer) -> Result<Analysed, ConvertError> {
     obs.progress(Stage::Xml, 0, 1);
-    let xml_path = match bundle.find_export(front::simmechanics::is_physical_modeling_xml) {
-        Ok(p) => p.to_string(),
-        Err(e @ BundleError::NoXml { .. }) => {
-            // One XML of another kind: let the front end say what it is (e.g. second-generation).
-            let xmls: Vec<&str> = bundle.paths().filter(|p| p.to_ascii_lowercase().ends_with(".xml")).collect();
-            if let [only] = xmls.as_slice() {
-                front::simmechanics::parse(only, bundle.get(only).unwrap_or_default())?;
-            }
-            return Err(e.into());
+    let (kind, path) = find_source(bundle)?;
+    let bytes = bundle.get(&path).unwrap_or_default();
+    let (mut model, mut warnings) = match kind {
+        SourceKind::FirstGeneration | SourceKind::SecondGeneration => {
+            let (mut model, mut warnings) = front::simmechanics::parse(&path, bytes)?;
+            warnings.extend(passes::geometry::read_meshes(&mut model, bundle, &path, &mut |i, n| {
+                obs.progress(Stage::Meshes, i, n)
+            })?);
+            (model, warnings)
         }
-        Err(e) => return Err(e.into()),
+        SourceKind::Urdf => {
+            let mut urdf = front::urdf::parse(&path, bytes)?;
+            let w = front::urdf::attach_meshes(&mut urdf, bundle, &path, &mut |i, n| obs.progress(Stage::Meshes, i, n))?;
+            urdf.warnings.extend(w);
+            (urdf.model, urdf.warnings)
+        }
     };
-    let bytes = bundle.get(&xml_path).unwrap_or_default();
-    let (mut model, mut warnings) = front::simmechanics::parse(&xml_path, bytes)?;
-    warnings.extend(passes::geometry::read_meshes(&mut model, bundle, &xml_path, &mut |i, n| {
-        obs.progress(Stage::Meshes, i, n)
-    })?);
     let vrml = match_vrml(&mut model, bundle, opts, &mut warnings, obs)?;
     obs.progress(Stage::Analysis, 0, 1);
     let mut merged = Default::default();
@@ -205,6 +215,64 @@ pub fn analyse_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
     let validated = valid::validate(&model, analysis)?;
     warnings.extend(validated.warnings.iter().cloned());
     Ok(Analysed { model, validated, merged, absorbed, warnings, vrml })
+}
+
+/// Gravity where the user gives none: CAD assemblies (first-generation SimMechanics XML) are
+/// drawn with +y up; URDF (ROS's REP 103) and Simscape Multibody models with +z up.
+pub fn default_gravity(model: &Model) -> [f64; 3] {
+    match model.source.format.as_str() {
+        "urdf" | "simscape2" => [0.0, 0.0, -9.81],
+        _ => [0.0, -9.81, 0.0],
+    }
+}
+
+/// The kinds of model source a bundle can hold.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SourceKind {
+    FirstGeneration,
+    SecondGeneration,
+    Urdf,
+}
+
+impl SourceKind {
+    pub fn describe(self) -> &'static str {
+        match self {
+            SourceKind::FirstGeneration => "first-generation SimMechanics XML",
+            SourceKind::SecondGeneration => "second-generation Simscape Multibody XML",
+            SourceKind::Urdf => "URDF",
+        }
+    }
+
+    /// What kind of source the file at `path` is, from its extension and root element.
+    pub fn of(path: &str, bytes: &[u8]) -> Option<SourceKind> {
+        let lower = path.to_ascii_lowercase();
+        if !(lower.ends_with(".xml") || lower.ends_with(".urdf")) {
+            return None;
+        }
+        if front::simmechanics::is_physical_modeling_xml(bytes) {
+            Some(SourceKind::FirstGeneration)
+        } else if front::simmechanics::is_second_generation_xml(bytes) {
+            Some(SourceKind::SecondGeneration)
+        } else if front::urdf::is_urdf(bytes) {
+            Some(SourceKind::Urdf)
+        } else {
+            None
+        }
+    }
+}
+
+/// The bundle's one model source. A bundle with none but a xacro file is told to expand it.
+pub fn find_source(bundle: &Bundle) -> Result<(SourceKind, String), ConvertError> {
+    match bundle.find_source(SourceKind::of, SourceKind::describe) {
+        Ok((k, p)) => Ok((k, p.to_string())),
+        Err(e @ BundleError::NoXml { .. }) => {
+            if let Some(x) = bundle.paths().find(|p| p.to_ascii_lowercase().ends_with(".xacro")) {
+                return Err(front::urdf::parse(x, bundle.get(x).unwrap_or_default()).err().map_or(e.into(), Into::into));
+            }
+            Err(e.into())
+        }
+        Err(e) => Err(e.into()),
+    }
 }
 
 /// The names an earlier version's `report.json` gave its bodies and joints, by node ID.
@@ -268,10 +336,11 @@ pub fn convert(bundle: &Bundle, opts: &Options) -> Result<Output, ConvertError> 
 /// [`convert`], telling `obs` how far it is and letting it choose the drives once the report
 /// exists (the report does not depend on them: drives only make `Mechatronics.mo`).
 pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer) -> Result<Output, ConvertError> {
-    if !opts.gravity.iter().all(|g| g.is_finite()) {
-        return Err(ConvertError::Options(format!("gravity {:?} is not finite", opts.gravity)));
+    if let Some(g) = opts.gravity.filter(|g| !g.iter().all(|c| c.is_finite())) {
+        return Err(ConvertError::Options(format!("gravity {g:?} is not finite")));
     }
     let a = analyse_observed(bundle, opts, obs)?;
+    let gravity = opts.gravity.unwrap_or_else(|| default_gravity(&a.model));
     let package_name = match &opts.package_name {
         Some(p) if back::modelica::sanitize(p, "P") == *p => p.clone(),
         Some(p) => return Err(ConvertError::Options(format!("package name \"{p}\" is not a Modelica identifier"))),
@@ -284,7 +353,7 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
         &a.validated,
         &back::modelica::Options {
             package_name: package_name.clone(),
-            gravity: opts.gravity,
+            gravity,
             converter_version: VERSION.to_string(),
             name_hints: opts.name_hints.clone(),
         },
@@ -294,13 +363,18 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
         validated: &a.validated,
         layout: &pkg.layout,
         package_name: &package_name,
-        options: report::ReportOptions { lump_welds: opts.lump_welds, gravity: opts.gravity },
+        options: report::ReportOptions { lump_welds: opts.lump_welds, gravity },
         merged: &a.merged,
         absorbed: &a.absorbed,
         vrml: a.vrml.as_ref(),
         warnings: a.warnings,
         version: VERSION,
     });
+    for (c, done) in a.model.couplings.iter().zip(&pkg.layout.couplings) {
+        if let Err(why) = done {
+            report.warnings.push(Warning::new("mimic-not-expressible", format!("coupling not emitted: {why}"), c.loc.to_string()));
+        }
+    }
     // Collision shapes of every body with a mesh; interferences at the CAD pose are warnings.
     obs.progress(Stage::Collision, 0, 1);
     let names: Vec<String> = pkg.layout.names.as_ref().map(|n| n.bodies.clone()).unwrap_or_default();
@@ -364,7 +438,7 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
         }
     }
     // MuJoCo model beside the Modelica package (back/mjcf).
-    files.push(back::mjcf::file(&a.model, &a.validated, &pkg.layout, &package_name, opts.gravity, opts.write_shapes));
+    files.push(back::mjcf::file(&a.model, &a.validated, &pkg.layout, &package_name, gravity, opts.write_shapes));
     obs.progress(Stage::Report, 0, 1);
     let json = serde_json::to_vec_pretty(&report).map_err(|e| ConvertError::Options(e.to_string()))?;
     files.push(("report.json".to_string(), json));

@@ -32,6 +32,9 @@ pub struct Report {
     /// built; absent from reports of earlier versions).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub collision: Option<crate::pipeline::back::collision_shapes::CollisionReport>,
+    /// Joint couplings (URDF `mimic`); absent when there are none.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub couplings: Vec<CouplingReport>,
 }
 
 #[derive(Serialize, Debug, Clone)]
@@ -124,6 +127,20 @@ pub struct JointReport {
     /// With `lump_welds`: the Modelica name of the body a weld was absorbed into (the weld itself
     /// has no component then, and `emitted_as` is `lumped`).
     pub lumped_into: Option<String>,
+    /// Limits the source states (URDF `<limit>`): position, speed, effort.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub limits: Option<crate::pipeline::ir::JointLimits>,
+}
+
+/// A joint whose coordinate follows another's (URDF `mimic`).
+#[derive(Serialize, Debug, Clone)]
+pub struct CouplingReport {
+    pub follower: String,
+    pub leader: String,
+    pub multiplier: f64,
+    pub offset: f64,
+    /// The Modelica component(s) coupling the drive flanges; empty when not emitted.
+    pub emitted_as: String,
 }
 
 #[derive(Serialize, Debug, Clone)]
@@ -264,6 +281,7 @@ pub fn build(input: ReportInput) -> Report {
                 in_loop: h.in_loop[j],
                 start_fixed: if chain.elements.is_empty() { !h.in_loop[j] } else { chain.elements.iter().all(|e| e.fixed) },
                 lumped_into: None,
+                limits: joint.limits.clone(),
             }
         })
         .chain(absorbed.iter().map(|a| {
@@ -283,6 +301,7 @@ pub fn build(input: ReportInput) -> Report {
                 in_loop: false,
                 start_fixed: true,
                 lumped_into: Some(body),
+                limits: None,
             }
         }))
         .collect();
@@ -324,5 +343,17 @@ pub fn build(input: ReportInput) -> Report {
         vrml: vrml.cloned(),
         warnings,
         collision: None,
+        couplings: model
+            .couplings
+            .iter()
+            .enumerate()
+            .map(|(k, c)| CouplingReport {
+                follower: names.map(|n| n.joints[c.follower.index()].clone()).unwrap_or_default(),
+                leader: names.map(|n| n.joints[c.leader.index()].clone()).unwrap_or_default(),
+                multiplier: c.multiplier,
+                offset: c.offset,
+                emitted_as: layout.couplings.get(k).and_then(|r| r.as_ref().ok()).cloned().unwrap_or_default(),
+            })
+            .collect(),
     }
 }

@@ -174,6 +174,28 @@ pub struct Undriven {
     pub peak_torque: f64,
     pub rms_torque: f64,
     pub max_speed: f64,
+    /// The joint's effort limit from the source (URDF), and whether the peak stays within it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub effort_limit: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub within_effort: Option<bool>,
+}
+
+/// The check of a joint's load against the effort limit its source states (URDF `<limit
+/// effort>`): the peak `|τ|` at the joint, whatever drives it.
+pub fn effort_check(kind: JointKind, tau: &[f64], effort: f64) -> Check {
+    let peak = tau.iter().fold(0.0f64, |m, t| m.max(t.abs()));
+    let unit = if kind == JointKind::Prismatic { "N" } else { "N·m" };
+    Check {
+        check: "joint-effort",
+        label: "Joint effort limit (source)",
+        value: peak,
+        limit: Some(effort),
+        unit,
+        margin: (effort > 0.0).then(|| (effort - peak) / effort),
+        pass: peak <= effort,
+        detail: format!("peak joint load {peak:.4} {unit} against the effort limit {effort} {unit} the source states"),
+    }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -634,5 +656,7 @@ pub fn undriven(load: AxisLoad) -> Result<Undriven, SizingError> {
         peak_torque: axis.peak_tau.0,
         rms_torque: axis.rms_tau,
         max_speed: axis.max_qd.0,
+        effort_limit: None,
+        within_effort: None,
     })
 }

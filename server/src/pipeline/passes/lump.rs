@@ -126,6 +126,16 @@ pub fn lump(model: &Model, h: &Hierarchy) -> Lumped {
         .filter(|j| internal.binary_search(j).is_err())
         .map(|j| model.joint(j).clone())
         .collect();
+    // Couplings refer to movable joints, which all survive; their indices shift.
+    let kept: Vec<_> = model.joint_ids().filter(|j| internal.binary_search(j).is_err()).collect();
+    out.couplings = model
+        .couplings
+        .iter()
+        .filter_map(|c| {
+            let at = |j| kept.binary_search(&j).ok().map(|k| crate::pipeline::ir::JointId(k as u32));
+            Some(crate::pipeline::ir::Coupling { follower: at(c.follower)?, leader: at(c.leader)?, ..c.clone() })
+        })
+        .collect();
     Lumped { model: out, merged, absorbed }
 }
 

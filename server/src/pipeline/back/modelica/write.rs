@@ -39,6 +39,9 @@ pub struct Layout {
     pub joint_elements: Vec<Vec<String>>,
     /// Per joint: how it was emitted.
     pub emitted_as: Vec<&'static str>,
+    /// Per coupling of the model (same order): the component(s) that couple the two drive
+    /// flanges, or why none could.
+    pub couplings: Vec<Result<String, String>>,
 }
 
 /// The package's text files, paths relative to the zip root (`<Pkg>/...`).
@@ -119,6 +122,9 @@ struct Writer<'a> {
     conn: String,
     layout: Layout,
     rows: [usize; 6],
+    /// Followers of couplings that can be emitted: their start values are not fixed (the
+    /// coupling fixes them).
+    coupled: Vec<bool>,
 }
 
 const COL_WORLD: usize = 0;
@@ -265,7 +271,7 @@ impl Writer<'_> {
         let mut extra = Vec::new();
         for (k, e) in chain.elements.iter().enumerate() {
             let name = if count == 1 { jname.to_string() } else { self.scope.take(&format!("{jname}_{}", k + 1)) };
-            let fixed = if e.fixed { ", fixed=true" } else { "" };
+            let fixed = if e.fixed && !self.coupled[jid.index()] { ", fixed=true" } else { "" };
             let desc = if count == 1 { format!("Joint {what}") } else { format!("Joint {what}, primitive {} of {count}", k + 1) };
             let last_cut = if k + 1 == count { cut } else { None };
             let kind = match (e.kind, last_cut) {
@@ -366,6 +372,76 @@ impl Writer<'_> {
     }
 }
 
+/// Whether a joint's drive flange can take a coupling: one revolute or prismatic element, not a
+/// loop-closing cut.
+fn couplable(v: &Validated, j: crate::pipeline::ir::JointId) -> bool {
+    let a = &v.analysis;
+    let chain = &a.chains[j.index()];
+    chain.elements.len() == 1
+        && matches!(chain.elements[0].kind, PrimitiveKind::Revolute | PrimitiveKind::Prismatic)
+        && !a.hierarchy.loops.iter().any(|l| l.closing == j)
+}
+
+impl Writer<'_> {
+    /// Couples the follower's drive flange to the leader's: `q_f = multiplier * q_l` (the front
+    /// end admits only zero offsets). Revolute-revolute is an `IdealGear` (`phi_a = ratio *
+    /// phi_b`, so `ratio = 1/multiplier`); a prismatic side goes through `IdealGearR2T`
+    /// (`phi = ratio * s`); prismatic-prismatic through two of them sharing a rotational node.
+    fn coupling(&mut self, c: &crate::pipeline::ir::Coupling, jnames: &[String]) -> Result<String, String> {
+        let (l, f) = (c.leader, c.follower);
+        if !couplable(self.v, l) || !couplable(self.v, f) {
+            return Err(format!(
+                "joint {} or its leader {} is emitted as {} / {}, not as one revolute or prismatic joint with a drive flange",
+                jnames[f.index()],
+                jnames[l.index()],
+                self.layout.emitted_as[f.index()],
+                self.layout.emitted_as[l.index()]
+            ));
+        }
+        let kind = |j: crate::pipeline::ir::JointId| self.v.analysis.chains[j.index()].elements[0].kind;
+        let (lk, fk) = (kind(l), kind(f));
+        let ld = format!("{}.drive", self.layout.joint_elements[l.index()][0]);
+        let fd = format!("{}.drive", self.layout.joint_elements[f.index()][0]);
+        let m = num(c.multiplier);
+        let name = self.scope.take(&format!("{}_mimic", jnames[f.index()]));
+        let desc = mstr(&format!("{} = {m} * {} (URDF mimic)", jnames[f.index()], jnames[l.index()]));
+        let rot = "Modelica.Mechanics.Rotational.Components";
+        use PrimitiveKind::{Prismatic as P, Revolute as R};
+        match (lk, fk) {
+            (R, R) => {
+                let place = self.place(COL_JOINT);
+                let _ = writeln!(self.decl, "  {rot}.IdealGear {name}(ratio=1/({m}))\n    \"{desc}\" {place};");
+                self.connect(&ld, &format!("{name}.flange_a"));
+                self.connect(&format!("{name}.flange_b"), &fd);
+            }
+            (R, P) => {
+                let place = self.place(COL_JOINT);
+                let _ = writeln!(self.decl, "  {rot}.IdealGearR2T {name}(ratio=1/({m}))\n    \"{desc}\" {place};");
+                self.connect(&ld, &format!("{name}.flangeR"));
+                self.connect(&format!("{name}.flangeT"), &fd);
+            }
+            (P, R) => {
+                let place = self.place(COL_JOINT);
+                let _ = writeln!(self.decl, "  {rot}.IdealGearR2T {name}(ratio={m})\n    \"{desc}\" {place};");
+                self.connect(&fd, &format!("{name}.flangeR"));
+                self.connect(&format!("{name}.flangeT"), &ld);
+            }
+            _ => {
+                let second = self.scope.take(&format!("{name}_b"));
+                let place = self.place(COL_JOINT);
+                let _ = writeln!(self.decl, "  {rot}.IdealGearR2T {name}(ratio=1)\n    \"{desc}: leader side\" {place};");
+                let place = self.place(COL_JOINT);
+                let _ = writeln!(self.decl, "  {rot}.IdealGearR2T {second}(ratio=1/({m}))\n    \"{desc}: follower side\" {place};");
+                self.connect(&format!("{name}.flangeT"), &ld);
+                self.connect(&format!("{second}.flangeT"), &fd);
+                self.connect(&format!("{name}.flangeR"), &format!("{second}.flangeR"));
+                return Ok(format!("{name}, {second}"));
+            }
+        }
+        Ok(name)
+    }
+}
+
 fn is_user_frame(node_id: &str, display_name: &str) -> bool {
     node_id.contains("USERADDED") || !display_name.is_empty()
 }
@@ -389,7 +465,13 @@ pub fn write(model: &Model, v: &Validated, opts: &Options) -> Package {
             ..Layout::default()
         },
         rows: [0; 6],
+        coupled: vec![false; model.joints.len()],
     };
+    for c in &model.couplings {
+        if couplable(v, c.leader) && couplable(v, c.follower) {
+            w.coupled[c.follower.index()] = true;
+        }
+    }
     let g = Vector3::from(opts.gravity);
     let g_norm = g.norm();
     let n = if g_norm > 0.0 { g / g_norm } else { Vector3::new(0.0, -1.0, 0.0) };
@@ -466,6 +548,14 @@ pub fn write(model: &Model, v: &Validated, opts: &Options) -> Package {
     order.extend(analysis.hierarchy.loops.iter().map(|l| l.closing));
     for jid in order {
         w.joint(jid, &names.joints[jid.index()]);
+    }
+
+    if !model.couplings.is_empty() {
+        let _ = writeln!(w.decl, "\n  // Couplings: joints whose coordinate follows another joint's (URDF mimic)");
+        for c in &model.couplings {
+            let done = w.coupling(c, &names.joints);
+            w.layout.couplings.push(done);
+        }
     }
 
     let _ = writeln!(w.decl, "\n  // Shapes: CAD meshes in each body frame, metres");

@@ -47,9 +47,11 @@ pub enum BundleError {
     CorruptEntry { bundle: String, entry: String, reason: String },
     #[error("{bundle}: two entries map to the same path \"{entry}\"")]
     DuplicateEntry { bundle: String, entry: String },
-    #[error("{bundle}: no first-generation SimMechanics XML (root element PhysicalModelingXMLFile) found{hint}")]
+    #[error("{bundle}: no model source found: expected a first-generation SimMechanics XML (root PhysicalModelingXMLFile), a second-generation Simscape Multibody XML (root SimscapeMultibodyImportXML) or a URDF (.urdf, root robot){hint}")]
     NoXml { bundle: String, hint: String },
-    #[error("{bundle}: two SimMechanics XML exports in one bundle: \"{first}\" and \"{second}\"; put each model in its own bundle")]
+    #[error("{bundle}: two model sources in one bundle: \"{first}\" ({first_kind}) and \"{second}\" ({second_kind}); a bundle holds one model: put each in its own bundle")]
+    TwoSources { bundle: String, first: String, first_kind: &'static str, second: String, second_kind: &'static str },
+    #[error("{bundle}: two model sources in one bundle: \"{first}\" and \"{second}\"; put each model in its own bundle")]
     TwoXml { bundle: String, first: String, second: String },
     #[error("{referenced_from}: \"{name}\" matches more than one file in the bundle: {}", candidates.join(", "))]
     Ambiguous { referenced_from: String, name: String, candidates: Vec<String> },
@@ -196,6 +198,49 @@ impl Bundle {
     /// Total bytes held.
     pub fn total_bytes(&self) -> u64 {
         self.files.values().map(|v| v.len() as u64).sum()
+    }
+
+    /// The one model source in the bundle: each file is asked of `kind_of` (its path and
+    /// bytes; `None` when it is no source). Two sources of one kind are [`BundleError::TwoXml`],
+    /// of two kinds [`BundleError::TwoSources`], none [`BundleError::NoXml`].
+    pub fn find_source<K: Copy + PartialEq>(
+        &self,
+        kind_of: impl Fn(&str, &[u8]) -> Option<K>,
+        describe: impl Fn(K) -> &'static str,
+    ) -> Result<(K, &str), BundleError> {
+        let mut found: Option<(K, &str)> = None;
+        for (path, bytes) in &self.files {
+            let Some(kind) = kind_of(path, bytes) else { continue };
+            if let Some((k, first)) = found {
+                return Err(if k == kind {
+                    BundleError::TwoXml { bundle: self.name.clone(), first: first.to_string(), second: path.clone() }
+                } else {
+                    BundleError::TwoSources {
+                        bundle: self.name.clone(),
+                        first: first.to_string(),
+                        first_kind: describe(k),
+                        second: path.clone(),
+                        second_kind: describe(kind),
+                    }
+                });
+            }
+            found = Some((kind, path));
+        }
+        found.ok_or_else(|| {
+            let xmls: Vec<&str> = self
+                .paths()
+                .filter(|p| {
+                    let l = p.to_ascii_lowercase();
+                    l.ends_with(".xml") || l.ends_with(".urdf") || l.ends_with(".xacro")
+                })
+                .collect();
+            let hint = if xmls.is_empty() {
+                " (the bundle holds no .xml or .urdf file)".to_string()
+            } else {
+                format!(" (XML files present but of another kind: {})", crate::pipeline::ir::bounded_list(&xmls, 10))
+            };
+            BundleError::NoXml { bundle: self.name.clone(), hint }
+        })
     }
 
     /// The one file for which `is_export` holds (e.g. the XML sniffer). Two is an error naming both.

@@ -1,0 +1,161 @@
+use super::*;
+
+fn ok(text: &str) -> Urdf {
+    parse("t.urdf", text.as_bytes()).unwrap_or_else(|e| panic!("{e}"))
+}
+
+fn err(text: &str) -> String {
+    parse("t.urdf", text.as_bytes()).expect_err("must fail").to_string()
+}
+
+const INERTIAL: &str = r#"<inertial><mass value="1"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial>"#;
+
+fn two_links(joint: &str) -> String {
+    format!(r#"<robot name="r"><link name="a">{INERTIAL}</link><link name="b">{INERTIAL}</link>{joint}</robot>"#)
+}
+
+#[test]
+fn sniffs_the_root() {
+    assert!(is_urdf(b"\xEF\xBB\xBF<?xml version=\"1.0\"?><!-- c --><robot name=\"x\"/>"));
+    assert!(!is_urdf(b"<PhysicalModelingXMLFile/>"));
+    assert!(!is_urdf(b"not xml"));
+}
+
+#[test]
+fn rpy_is_fixed_axis_xyz() {
+    // Roll about x, then pitch about the fixed y, then yaw about the fixed z.
+    let (r, p, y) = (0.3, -0.4, 1.1);
+    let q = rpy_rotation(&Vector3::new(r, p, y));
+    let want = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), y)
+        * UnitQuaternion::from_axis_angle(&Vector3::y_axis(), p)
+        * UnitQuaternion::from_axis_angle(&Vector3::x_axis(), r);
+    assert!(q.angle_to(&want) < 1e-15);
+}
+
+#[test]
+fn places_links_and_inertial_frames() {
+    let u = ok(&two_links(
+        r#"<joint name="j" type="revolute"><parent link="a"/><child link="b"/><origin xyz="1 0 0" rpy="0 0 1.5707963267948966"/><axis xyz="0 1 0"/><limit lower="-1" upper="2" effort="3" velocity="4"/></joint>"#,
+    ));
+    let m = &u.model;
+    assert_eq!(m.source.format, "urdf");
+    let b = &m.bodies[1];
+    let cs1 = m.frame(b.cs1).pose;
+    assert!((cs1.translation.vector - Vector3::new(1.0, 0.0, 0.0)).norm() < 1e-15);
+    // Joint 0 welds the root to the world; joint 1 is the revolute, its axis y turned to -x.
+    let j = &m.joints[1];
+    assert_eq!(j.cad_name, "j");
+    assert!((j.primitives[0].axis_world - Vector3::new(-1.0, 0.0, 0.0)).norm() < 1e-15);
+    assert_eq!(j.limits, Some(JointLimits { lower: Some(-1.0), upper: Some(2.0), velocity: Some(4.0), effort: Some(3.0) }));
+    assert_eq!(m.frame(j.base).pose, m.frame(j.follower).pose);
+    assert!(u.warnings.iter().any(|w| w.code == "urdf-root-fixed"));
+}
+
+#[test]
+fn continuous_drops_position_limits_and_planar_spans_the_plane() {
+    let u = ok(&two_links(
+        r#"<joint name="j" type="continuous"><parent link="a"/><child link="b"/><axis xyz="0 0 2"/><limit lower="-1" upper="1" velocity="5"/></joint>"#,
+    ));
+    let j = &u.model.joints[1];
+    assert_eq!(j.limits, Some(JointLimits { lower: None, upper: None, velocity: Some(5.0), effort: None }));
+    assert!((j.primitives[0].axis_world - Vector3::z()).norm() < 1e-15, "axis normalised");
+    let u = ok(&two_links(r#"<joint name="p" type="planar"><parent link="a"/><child link="b"/><axis xyz="0 0 1"/></joint>"#));
+    let p = &u.model.joints[1].primitives;
+    let kinds: Vec<_> = p.iter().map(|x| x.kind).collect();
+    assert_eq!(kinds, [PrimitiveKind::Prismatic, PrimitiveKind::Prismatic, PrimitiveKind::Revolute]);
+    assert!(p[0].axis_world.dot(&Vector3::z()).abs() < 1e-15 && p[1].axis_world.dot(&Vector3::z()).abs() < 1e-15);
+    assert!((p[0].axis_world.cross(&p[1].axis_world) - Vector3::z()).norm() < 1e-15);
+}
+
+#[test]
+fn world_joints_get_grounds_and_floating_leaves_free() {
+    let text = format!(
+        r#"<robot name="r"><link name="world"/><link name="a">{INERTIAL}</link><link name="b">{INERTIAL}</link>
+        <joint name="fix" type="fixed"><parent link="world"/><child link="a"/><origin xyz="0 0 2"/></joint>
+        <joint name="fly" type="floating"><parent link="world"/><child link="b"/><origin xyz="1 0 0"/></joint></robot>"#
+    );
+    let u = ok(&text);
+    assert_eq!(u.model.bodies.len(), 2, "world is no body");
+    assert_eq!(u.model.grounds.len(), 1);
+    assert_eq!(u.model.joints.len(), 1);
+    assert!((u.model.frame(u.model.grounds[0].frame).pose.translation.vector.z - 2.0).abs() < 1e-15);
+    assert!(u.warnings.iter().any(|w| w.code == "urdf-floating"));
+    assert!((u.model.frame(u.model.bodies[1].cs1).pose.translation.vector.x - 1.0).abs() < 1e-15);
+}
+
+#[test]
+fn mimic_becomes_a_coupling_or_a_warning() {
+    let text = format!(
+        r#"<robot name="r"><link name="a">{INERTIAL}</link><link name="b">{INERTIAL}</link><link name="c">{INERTIAL}</link><link name="d">{INERTIAL}</link>
+        <joint name="j1" type="revolute"><parent link="a"/><child link="b"/><axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>
+        <joint name="j2" type="prismatic"><parent link="a"/><child link="c"/><mimic joint="j1" multiplier="-0.5"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>
+        <joint name="j3" type="revolute"><parent link="a"/><child link="d"/><mimic joint="nope"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint></robot>"#
+    );
+    let u = ok(&text);
+    assert_eq!(u.model.couplings.len(), 1);
+    let c = &u.model.couplings[0];
+    assert_eq!((u.model.joint(c.follower).cad_name.as_str(), u.model.joint(c.leader).cad_name.as_str(), c.multiplier), ("j2", "j1", -0.5));
+    let w = u.warnings.iter().find(|w| w.code == "mimic-not-expressible").expect("warning");
+    assert!(w.message.contains("\"nope\""), "{}", w.message);
+}
+
+#[test]
+fn loop_joints_are_closed_by_assembly() {
+    // A parallelogram whose coupler is built 0.2 rad open: the front end assembles it.
+    let text = format!(
+        r#"<robot name="r"><link name="g">{INERTIAL}</link><link name="c">{INERTIAL}</link><link name="k">{INERTIAL}</link><link name="o">{INERTIAL}</link>
+        <joint name="crank" type="continuous"><parent link="g"/><child link="c"/><axis xyz="0 0 1"/></joint>
+        <joint name="cup" type="continuous"><parent link="c"/><child link="k"/><origin xyz="0 1 0" rpy="0 0 0.2"/><axis xyz="0 0 1"/></joint>
+        <joint name="rock" type="continuous"><parent link="g"/><child link="o"/><origin xyz="2 0 0"/><axis xyz="0 0 1"/></joint>
+        <loop_joint name="close" type="continuous"><axis xyz="0 0 1"/><link1 link="k" xyz="2 0 0" rpy="0 0 0"/><link2 link="o" xyz="0 1 0" rpy="0 0 0"/></loop_joint></robot>"#
+    );
+    let u = ok(&text);
+    let close = u.model.joints.iter().find(|j| j.cad_name == "close").expect("loop joint");
+    let (a, b) = (u.model.frame(close.base).pose, u.model.frame(close.follower).pose);
+    assert!((a.translation.vector - b.translation.vector).norm() < 1e-12);
+    assert!(u.warnings.iter().any(|w| w.code == "urdf-loops-assembled"));
+}
+
+#[test]
+fn errors_name_the_element_and_line() {
+    let e = err(&two_links(r#"<joint name="j" type="gimbal"><parent link="a"/><child link="b"/></joint>"#));
+    assert!(e.starts_with("t.urdf:1:") && e.contains("joint \"j\"") && e.contains("unknown joint type \"gimbal\""), "{e}");
+    let e = err(&two_links(r#"<joint name="j" type="fixed"><parent link="a"/><child link="zz"/></joint>"#));
+    assert!(e.contains("child link \"zz\" is not declared"), "{e}");
+    let e = err(&two_links(
+        r#"<joint name="j" type="fixed"><parent link="a"/><child link="b"/></joint><joint name="k" type="fixed"><parent link="b"/><child link="a"/></joint>"#,
+    ));
+    assert!(e.contains("cycle"), "{e}");
+    let e = err(&two_links(r#"<joint name="j" type="fixed"><parent link="a"/><child link="b"/><origin xyz="1 nan 0"/></joint>"#));
+    assert!(e.contains("not finite") || e.contains("not a number"), "{e}");
+    let e = err(r#"<robot name="r"><link name="a"><inertial><mass value="-1"/></inertial></link></robot>"#);
+    assert!(e.contains("negative mass"), "{e}");
+    let e = err(r#"<robot xmlns:xacro="http://www.ros.org/wiki/xacro"><xacro:property name="x" value="1"/></robot>"#);
+    assert!(e.contains("xacro") && e.contains("expand it first"), "{e}");
+    let e = err("<robot><link name=\"a\">");
+    assert!(e.contains("malformed XML"), "{e}");
+    let e = err(r#"<robot name="r"><link name="a"/><link name="a"/></robot>"#);
+    assert!(e.contains("a second link named \"a\""), "{e}");
+}
+
+#[test]
+fn package_uris_resolve_inside_the_bundle() {
+    use crate::pipeline::front::bundle::Bundle;
+    let b = Bundle::from_files(
+        "b",
+        [
+            ("set/robots/r_description/urdf/r.urdf".to_string(), Vec::new()),
+            ("set/robots/r_description/meshes/Link.STL".to_string(), Vec::new()),
+            ("set/robots/q_description/meshes/link.stl".to_string(), Vec::new()),
+            ("set/robots/r_description/urdf/local.stl".to_string(), Vec::new()),
+        ],
+    )
+    .expect("bundle");
+    let from = "set/robots/r_description/urdf/r.urdf";
+    assert_eq!(locate(&b, from, "package://ex/robots/r_description/meshes/link.stl").unwrap(), Some("set/robots/r_description/meshes/Link.STL"));
+    assert_eq!(locate(&b, from, "package:///local.stl").unwrap(), Some("set/robots/r_description/urdf/local.stl"));
+    assert_eq!(locate(&b, from, "local.stl").unwrap(), Some("set/robots/r_description/urdf/local.stl"));
+    assert_eq!(locate(&b, from, "package://ex/robots/none.stl").unwrap(), None);
+    // Two candidates by file name alone: an error naming both.
+    assert!(locate(&b, from, "package://ex/meshes/link.stl").is_err());
+}
