@@ -12,10 +12,10 @@ use cad2mo::pipeline::front::simscape2;
 use cad2mo::pipeline::ir::{Model, PrimitiveKind, Warning};
 use cad2mo::pipeline::valid::{Analysis, Validated};
 use cad2mo::pipeline::{back, passes, report, valid, Output, VERSION};
-use cad2mo_tests::check::{fk_check_with_inertia, nearest_rotation};
+use cad2mo_tests::check::fk_check_with_inertia;
 use cad2mo_tests::common::fixtures_dir;
-use cad2mo_tests::truth::TruthFrame;
-use nalgebra::{Matrix3, Vector3};
+use cad2mo_tests::xml2_truth::scan;
+use nalgebra::Vector3;
 
 /// The 11 fixture files, relative to `xml2/`.
 const FILES: [&str; 11] = [
@@ -85,146 +85,6 @@ fn convert(model: &Model, validated: &Validated, warnings: Vec<Warning>) -> Outp
     Output { files: pkg.files, report }
 }
 
-// ----- an independent reading of the XML ------------------------------------------------------
-
-/// What the scanner finds: per part instance (node ID = uids joined by `|`), the CS1 pose, the
-/// CG and the mass with the world inertia.
-#[derive(Default)]
-struct Truth {
-    frames: BTreeMap<String, TruthFrame>,
-    cgs: BTreeMap<String, Vector3<f64>>,
-    mass: BTreeMap<String, (f64, Matrix3<f64>)>,
-    /// Joint elements under `<Joints>` by tag, whole file (root and sub-assembly definitions).
-    joint_tags: BTreeMap<String, usize>,
-    part_instances: usize,
-}
-
-fn decode(s: &str) -> String {
-    s.replace("&lt;", "<").replace("&gt;", ">").replace("&quot;", "\"").replace("&apos;", "'").replace("&amp;", "&")
-}
-
-fn attr(tag: &str, key: &str) -> Option<String> {
-    let pat = format!(" {key}=\"");
-    let start = tag.find(&pat)? + pat.len();
-    let end = tag[start..].find('"')? + start;
-    Some(decode(&tag[start..end]))
-}
-
-fn nums(s: &str) -> Vec<f64> {
-    s.split_whitespace().map(|x| x.parse::<f64>().expect("number")).collect()
-}
-
-fn length_unit(u: &str) -> f64 {
-    match u {
-        "meter" | "m" => 1.0,
-        "millimeter" | "mm" => 1e-3,
-        "inch" => 0.0254,
-        other => panic!("scanner: length unit {other}"),
-    }
-}
-
-fn mass_unit(u: &str) -> f64 {
-    match u {
-        "kilogram" | "kg" => 1.0,
-        "pound" | "lbm" => 0.45359237,
-        other => panic!("scanner: mass unit {other}"),
-    }
-}
-
-/// Scans tags and text in order: `(tag text without <>, text after it up to the next <)`.
-fn tokens(xml: &str) -> Vec<(&str, &str)> {
-    let mut out = Vec::new();
-    let mut rest = xml;
-    while let Some(i) = rest.find('<') {
-        let Some(j) = rest[i..].find('>') else { break };
-        let tag = &rest[i + 1..i + j];
-        rest = &rest[i + j + 1..];
-        let text = &rest[..rest.find('<').unwrap_or(rest.len())];
-        out.push((tag, text.trim()));
-    }
-    out
-}
-
-fn scan(xml: &str) -> Truth {
-    let toks = tokens(xml);
-    let units_tag = toks
-        .iter()
-        .find(|(t, _)| t.starts_with("DataUnits"))
-        .or_else(|| toks.iter().find(|(t, _)| t.starts_with("ModelUnits")))
-        .expect("units");
-    let (lu, mu) = (
-        length_unit(&attr(units_tag.0, "length").expect("length")),
-        mass_unit(&attr(units_tag.0, "mass").expect("mass")),
-    );
-    // Parts.
-    let mut parts: BTreeMap<String, (f64, Vector3<f64>, Matrix3<f64>)> = BTreeMap::new();
-    let mut current: Option<String> = None;
-    let (mut m, mut c, mut i6) = (0.0, Vector3::zeros(), vec![0.0; 6]);
-    let mut truth = Truth::default();
-    let mut in_joints = 0usize;
-    for (tag, text) in &toks {
-        if tag.starts_with("Part ") {
-            current = attr(tag, "uid");
-        } else if *tag == "Mass" && current.is_some() {
-            m = nums(text)[0] * mu;
-        } else if *tag == "CenterOfMass" && current.is_some() {
-            let v = nums(text);
-            c = Vector3::new(v[0], v[1], v[2]) * lu;
-        } else if *tag == "Inertia" && current.is_some() {
-            i6 = nums(text).iter().map(|x| x * mu * lu * lu).collect();
-        } else if *tag == "/Part" {
-            let i = Matrix3::new(i6[0], i6[5], i6[4], i6[5], i6[1], i6[3], i6[4], i6[3], i6[2]);
-            parts.insert(current.take().expect("part uid"), (m, c, i));
-        } else if *tag == "Joints" {
-            in_joints += 1;
-        } else if *tag == "/Joints" {
-            in_joints -= 1;
-        } else if in_joints > 0 && !tag.starts_with('/') && tag.contains("name=") {
-            let kind = tag.split_whitespace().next().expect("tag").to_string();
-            *truth.joint_tags.entry(kind).or_default() += 1;
-        }
-    }
-    // The instance tree: transforms composed parent * child, rotations row-major.
-    let start = toks.iter().position(|(t, _)| *t == "InstanceTree").expect("InstanceTree");
-    let mut stack: Vec<(String, String, Matrix3<f64>, Vector3<f64>)> = Vec::new(); // (path, entity, R, p)
-    let (mut rot, mut tr) = (None, None);
-    for (tag, text) in &toks[start + 1..] {
-        if *tag == "/InstanceTree" {
-            break;
-        }
-        if tag.starts_with("Instance ") {
-            let uid = attr(tag, "uid").expect("uid");
-            let entity = attr(tag, "entityUid").unwrap_or_default();
-            let path = match stack.last() {
-                Some((p, ..)) => format!("{p}|{uid}"),
-                None => uid,
-            };
-            stack.push((path, entity, Matrix3::identity(), Vector3::zeros()));
-        } else if *tag == "Rotation" {
-            rot = Some(nearest_rotation(&Matrix3::from_row_slice(&nums(text))));
-        } else if *tag == "Translation" {
-            let v = nums(text);
-            tr = Some(Vector3::new(v[0], v[1], v[2]) * lu);
-        } else if *tag == "/Transform" {
-            let (r, p) = (rot.take().expect("rotation"), tr.take().expect("translation"));
-            let n = stack.len();
-            let (pr, pp) = if n >= 2 { (stack[n - 2].2, stack[n - 2].3) } else { (Matrix3::identity(), Vector3::zeros()) };
-            let top = stack.last_mut().expect("instance");
-            top.2 = pr * r;
-            top.3 = pp + pr * p;
-            if let Some((mass, com, inertia)) = parts.get(&top.1) {
-                truth.part_instances += 1;
-                truth.frames.insert(format!("{}::CS1", top.0), TruthFrame { position: top.3, rotation: top.2 });
-                truth.cgs.insert(top.0.clone(), top.3 + top.2 * com);
-                truth.mass.insert(top.0.clone(), (*mass, top.2 * inertia * top.2.transpose()));
-            }
-        } else if *tag == "/Instance" {
-            stack.pop();
-        }
-    }
-    truth
-}
-
 /// Joints of the model by primitive signature (`revolute`, `prismatic+revolute`, ...).
 fn joint_kinds(model: &Model) -> BTreeMap<String, usize> {
     let mut out = BTreeMap::new();
@@ -285,6 +145,28 @@ fn every_xml2_fixture_converts_and_reproduces_the_cad_pose() {
             }
         }
         assert_eq!(model.bodies.len(), truth.part_instances, "{name}: one body per part instance");
+        // Joints inferred from mates, checked by hand against the assemblies (see the report):
+        // (kind, count) that must hold, and the number of independent loops.
+        let kinds = joint_kinds(&model);
+        let inferred: &[(&str, usize)] = match name.as_str() {
+            // Three ball joints (sphere-in-socket concentric mates) between the legs and the top.
+            "assemtest.xml" => &[("spherical", 3)],
+            // The actuator of each of the three legs: a rod turning and sliding in its barrel.
+            "leg3StewartPlatform.xml" => &[("prismatic+revolute", 3)],
+            // Hip, knee and ankle motors: three revolutes, everything else welded.
+            "leg_model.xml" => &[("revolute", 3)],
+            // Spherical parallel wrist: three arms on one axis, three rods with a revolute at
+            // each end, the platform: nine revolutes, two independent loops.
+            "SPHERICAL_WRIST_V1.xml" => &[("revolute", 9)],
+            _ => &[],
+        };
+        for (k, n) in inferred {
+            assert_eq!(kinds.get(*k).copied().unwrap_or(0), *n, "{name}: {kinds:?}");
+        }
+        if name == "SPHERICAL_WRIST_V1.xml" {
+            assert_eq!(validated.analysis.hierarchy.loops.len(), 2);
+            assert!(!codes.contains_key("mate-unreducible") && !codes.contains_key("free-bodies"), "{codes:?}");
+        }
         assert_eq!(model.source.format, "simscape2");
         match fk_check_with_inertia(&out, &truth.frames, &truth.cgs, &truth.mass) {
             Ok(stats) => {
