@@ -62,8 +62,10 @@
 //!   rank and null space of their constraint Jacobian (see [`mates`]); pairs that reduce to no
 //!   single joint, contain unsupported mates or do not hold at the assembly pose are warnings.
 //! - Geometry: only STL and OBJ names are kept in `geometry_file`; STEP gives one
-//!   `geometry-step` warning per part (no well-kept Rust crate tessellates STEP: `truck` reads
-//!   and meshes B-reps but is young and large, and the pure readers only parse the entities).
+//!   `geometry-step` warning per part. No well-kept Rust crate tessellates STEP (checked
+//!   2026-11): `truck-stepio` 0.3 (Sep 2024, ~80 downloads a month) documents STEP *input* as
+//!   still to come and pulls in ~120k lines of dependencies; `stepmesh` 0.1.0 is a single first
+//!   release by one author. Both are too young to trust with users' parts.
 //! - No ground at all: a `no-ground` warning; the bodies float (the pipeline makes them free).
 
 mod error;
