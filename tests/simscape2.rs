@@ -168,6 +168,19 @@ fn every_xml2_fixture_converts_and_reproduces_the_cad_pose() {
             assert!(!codes.contains_key("mate-unreducible") && !codes.contains_key("free-bodies"), "{codes:?}");
         }
         assert_eq!(model.source.format, "simscape2");
+        // Node IDs unique per kind (duplicate joint names such as the ASU arm's two
+        // "Revolute1" get "#2"; instance uids repeat across sub-assemblies).
+        let unique = |ids: Vec<&str>| {
+            let n = ids.len();
+            let mut ids = ids;
+            ids.sort_unstable();
+            ids.dedup();
+            ids.len() == n
+        };
+        assert!(unique(model.bodies.iter().map(|b| b.node_id.as_str()).collect()), "{name}: body node IDs");
+        assert!(unique(model.joints.iter().map(|j| j.node_id.as_str()).collect()), "{name}: joint node IDs");
+        assert!(unique(model.frames.iter().map(|f| f.node_id.as_str()).collect()), "{name}: frame node IDs");
+        assert!(unique(model.grounds.iter().map(|g| g.node_id.as_str()).collect()), "{name}: ground node IDs");
         match fk_check_with_inertia(&out, &truth.frames, &truth.cgs, &truth.mass) {
             Ok(stats) => {
                 println!(
