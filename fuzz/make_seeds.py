@@ -117,6 +117,8 @@ def golden():
                 write("stl", base, data)
             elif low.endswith((".wrl", ".wrz")):
                 write("vrml", base, data)
+            elif low.endswith((".urdf", ".xacro")):
+                write("urdf", base, data)
         write("bundle_zip", f"{case}.zip", deterministic_zip([(rel, open(full, "rb").read()) for rel, full in files]))
 
 
@@ -352,6 +354,55 @@ def live_seeds():
     write("live", "lying_count.bin", bytes(lie))
 
 
+def dae_doc(asset, geometry, scene, libs=""):
+    return ('<?xml version="1.0" encoding="utf-8"?>\n'
+            '<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">\n'
+            f'<asset>{asset}</asset>\n{libs}<library_geometries>{geometry}</library_geometries>\n'
+            + (f'<library_visual_scenes><visual_scene id="S">{scene}</visual_scene></library_visual_scenes>'
+               '<scene><instance_visual_scene url="#S"/></scene>\n' if scene is not None else "")
+            + '</COLLADA>\n')
+
+
+def dae_geometry(prims):
+    return ('<geometry id="g"><mesh><source id="g-p"><float_array id="g-a" count="24">'
+            '0 0 0 1 0 0 0 1 0 1 1 0 0 0 1 1 0 1 0 1 1 1 1 1</float_array>'
+            '<technique_common><accessor source="#g-a" count="8" stride="3"/></technique_common></source>'
+            '<source id="g-n"><float_array id="g-na" count="3">0 0 1</float_array>'
+            '<technique_common><accessor source="#g-na" count="1" stride="3"/></technique_common></source>'
+            '<vertices id="g-v"><input semantic="POSITION" source="#g-p"/></vertices>'
+            f'{prims}</mesh></geometry>')
+
+
+def dae_seeds():
+    """COLLADA documents of our own for the `dae` target: every primitive kind, node transforms,
+    instance_node, units and up axes, plus a few broken ones."""
+    v = '<input semantic="VERTEX" source="#g-v" offset="0"/>'
+    n = '<input semantic="NORMAL" source="#g-n" offset="1"/>'
+    quads = "0 2 3 1 4 5 7 6 0 1 5 4 2 6 7 3 0 4 6 2 1 3 7 5"
+    poly = f'<polylist count="6">{v}<vcount>4 4 4 4 4 4</vcount><p>{quads}</p></polylist>'
+    inter = " ".join(f"{i} 0" for i in quads.split())
+    node = '<node id="n"><translate>1 2 3</translate><rotate>0 0 1 90</rotate><scale>2 2 2</scale>' \
+           '<matrix>1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1</matrix><instance_geometry url="#g"/></node>'
+    write("dae", "polylist_mm_yup.dae", dae_doc('<unit meter="0.001"/><up_axis>Y_UP</up_axis>', dae_geometry(poly), node))
+    write("dae", "polylist_interleaved.dae", dae_doc("<up_axis>Z_UP</up_axis>", dae_geometry(
+        f'<polylist count="6">{v}{n}<vcount>4 4 4 4 4 4</vcount><p>{inter}</p></polylist>'), node))
+    write("dae", "triangles_xup.dae", dae_doc("<up_axis>X_UP</up_axis>", dae_geometry(
+        f'<triangles count="2">{v}<p>0 1 2 1 3 2</p></triangles>'), node))
+    write("dae", "polygons_fans_strips.dae", dae_doc("", dae_geometry(
+        f'<polygons count="2">{v}<p>0 1 3 2</p><ph><p>4 5 7 6</p><h>4 5 7</h></ph></polygons>'
+        f'<trifans count="1">{v}<p>0 1 5 4</p></trifans><tristrips count="1">{v}<p>0 2 4 6 5</p></tristrips>'), node))
+    write("dae", "instance_node.dae", dae_doc("", dae_geometry(poly),
+        '<node><instance_node url="#lib"/></node><node><instance_node url="#lib"/></node>',
+        libs='<library_nodes><node id="lib"><translate>0 0 5</translate><instance_geometry url="#g"/></node></library_nodes>'))
+    write("dae", "no_scene.dae", dae_doc("", dae_geometry(poly), None))
+    write("dae", "index_out_of_range.dae", dae_doc("", dae_geometry(
+        f'<triangles count="1">{v}<p>0 1 99</p></triangles>'), node))
+    write("dae", "instance_cycle.dae", dae_doc("", dae_geometry(poly), '<node><instance_node url="#a"/></node>',
+        libs='<library_nodes><node id="a"><instance_node url="#a"/></node></library_nodes>'))
+    write("dae", "deep_nodes.dae", dae_doc("", dae_geometry(poly), "<node>" * 300 + "</node>" * 300))
+    write("dae", "truncated.dae", dae_doc("", dae_geometry(poly), node)[:700])
+
+
 def main():
     if os.path.isdir(SEEDS):
         shutil.rmtree(SEEDS)
@@ -365,6 +416,7 @@ def main():
     zip_bombs()
     mat_seeds()
     live_seeds()
+    dae_seeds()
     for t in sorted(os.listdir(SEEDS)):
         files = os.listdir(os.path.join(SEEDS, t))
         size = sum(os.path.getsize(os.path.join(SEEDS, t, f)) for f in files)

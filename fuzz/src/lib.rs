@@ -6,14 +6,14 @@
 use cad2mo::pipeline::{
     self,
     front::bundle::{Bundle, Limits},
-    front::{simmechanics, stl, vrml},
+    front::{mesh, simmechanics, stl, vrml},
 };
 
 /// A target's name and body.
 pub type Target = (&'static str, fn(&[u8]));
 
 /// The targets by name, as `fuzz/regressions/<name>/` and `cargo fuzz run <name>` call them.
-pub const TARGETS: [Target; 7] = [
+pub const TARGETS: [Target; 9] = [
     ("xml", xml),
     ("stl", stl),
     ("vrml", vrml),
@@ -21,7 +21,44 @@ pub const TARGETS: [Target; 7] = [
     ("convert", convert),
     ("mat", mat),
     ("live", live),
+    ("urdf", urdf),
+    ("dae", dae),
 ];
+
+/// A URDF -> `front::urdf::parse`; when it parses, the whole conversion of a bundle holding just
+/// that file (no shapes written): errors are fine, panics and non-finite outputs are not.
+pub fn urdf(data: &[u8]) {
+    match pipeline::front::urdf::parse("fuzz.urdf", data) {
+        Ok(_) => {}
+        Err(e) => {
+            let _ = e.to_string();
+            return;
+        }
+    }
+    let Ok(bundle) = Bundle::from_files("fuzz", [("robot.urdf".to_string(), data.to_vec())]) else { return };
+    let opts = pipeline::Options { write_shapes: false, ..Default::default() };
+    if let Ok(out) = pipeline::convert(&bundle, &opts) {
+        for b in &out.report.bodies {
+            assert!(b.mass.is_finite(), "a converted mass is not finite");
+        }
+    }
+}
+
+/// COLLADA bytes -> `front::mesh::read` as a `.dae`; when it reads, the `ir::Mesh` invariants
+/// hold (triangles, finite vertices, indices in range).
+pub fn dae(data: &[u8]) {
+    match mesh::read("fuzz.dae", data) {
+        Ok(m) => {
+            assert!(!m.triangles.is_empty(), "a mesh without triangles was returned");
+            assert!(m.vertices.iter().flatten().all(|x| x.is_finite()), "a vertex is not finite");
+            let n = m.vertices.len();
+            assert!(m.triangles.iter().flatten().all(|&i| (i as usize) < n), "an index is out of range");
+        }
+        Err(e) => {
+            let _ = e.to_string();
+        }
+    }
+}
 
 /// A simulation result (MAT v4 bytes) -> `results::mat::Trajectory::read`; when it reads, what
 /// the service does with it: the summary, variable search, every series (of the first 64

@@ -143,3 +143,61 @@ pub fn serial_arm_xml(n: usize) -> String {
         "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\" ?>\n<PhysicalModelingXMLFile>\n  <formatVersion>\"1.0.4\"</formatVersion>\n  <internalVersion>1</internalVersion>\n  <createdUsing>\"cad2mo arm generator\"</createdUsing>\n  <createdFrom>\"generated\"</createdFrom>\n  <createdOn>\"01/01/26||00:00:00\"</createdOn>\n  <createdBy>\"bench\"</createdBy>\n  <name>\"ARM\"</name>\n  <SimMechanics>\n    <name>\"ARM\"</name>\n    <nodeID>\"ARM\"</nodeID>\n    <bodies>\n{bodies}    </bodies>\n    <joints>\n{joints}    </joints>\n    <grounds>\n      <Ground>\n        <name>\"Ground\"</name>\n        <nodeID>\"Ground\"</nodeID>\n        <status>\"\"</status>\n        <frame>\n{ground}        </frame>\n      </Ground>\n    </grounds>\n    <subsystems></subsystems>\n    <connectionPorts></connectionPorts>\n    <id>0</id>\n  </SimMechanics>\n</PhysicalModelingXMLFile>\n"
     )
 }
+
+/// A URDF tree of `n` links (branching like `tree_xml`: each link hangs from link `(i - 1) / 3`),
+/// siblings side by side 0.15 m apart, revolute joints about varying axes with limits, rotated
+/// inertial frames, and one binary STL
+/// per link (`meshes/link_<i>.stl`, a 16-sided prism of 64 triangles), as bundle files.
+pub fn urdf_tree(n: usize) -> Vec<(String, Vec<u8>)> {
+    use std::fmt::Write as _;
+    let mut u = String::from("<?xml version=\"1.0\"?>\n<robot name=\"gen_tree\">\n  <link name=\"world\"/>\n");
+    let mut files = Vec::new();
+    for i in 0..n {
+        let _ = write!(
+            u,
+            "  <link name=\"link_{i}\">\n    <inertial>\n      <origin xyz=\"0.01 0.02 0.05\" rpy=\"0.1 0.2 {}\"/>\n      <mass value=\"{}\"/>\n      <inertia ixx=\"0.003\" ixy=\"0.0001\" ixz=\"0\" iyy=\"0.002\" iyz=\"0\" izz=\"0.001\"/>\n    </inertial>\n    <visual>\n      <origin xyz=\"0 0 0.05\"/>\n      <geometry><mesh filename=\"package://gen/meshes/link_{i}.stl\" scale=\"0.001 0.001 0.001\"/></geometry>\n    </visual>\n  </link>\n",
+            0.01 * (i % 7) as f64,
+            1.0 + (i % 5) as f64 * 0.1
+        );
+        // A 16-sided prism, radius 20 mm, length 100 mm, centred: 64 triangles.
+        let k = 16;
+        let p = |j: usize, z: f32| {
+            let a = std::f32::consts::TAU * j as f32 / k as f32;
+            [20.0 * a.cos(), 20.0 * a.sin(), z]
+        };
+        let mut tris: Vec<[[f32; 3]; 3]> = Vec::new();
+        for j in 0..k {
+            let (a0, a1, b0, b1) = (p(j, -50.0), p(j + 1, -50.0), p(j, 50.0), p(j + 1, 50.0));
+            tris.push([a0, a1, b1]);
+            tris.push([a0, b1, b0]);
+            tris.push([[0.0, 0.0, -50.0], a1, a0]);
+            tris.push([[0.0, 0.0, 50.0], b0, b1]);
+        }
+        let mut stl = vec![0u8; 80];
+        stl.extend_from_slice(&(tris.len() as u32).to_le_bytes());
+        for t in &tris {
+            stl.extend_from_slice(&[0u8; 12]);
+            for v in t {
+                for c in v {
+                    stl.extend_from_slice(&c.to_le_bytes());
+                }
+            }
+            stl.extend_from_slice(&[0u8; 2]);
+        }
+        files.push((format!("gen/meshes/link_{i}.stl"), stl));
+    }
+    for i in 0..n {
+        let parent = if i == 0 { "world".to_string() } else { format!("link_{}", (i - 1) / 3) };
+        let axis = ["0 0 1", "0 1 0", "1 0 0"][i % 3];
+        let _ = write!(
+            u,
+            "  <joint name=\"joint_{i}\" type=\"revolute\">\n    <parent link=\"{parent}\"/>\n    <child link=\"link_{i}\"/>\n    <origin xyz=\"0.0{} {} 0.12\" rpy=\"0 0 {}\"/>\n    <axis xyz=\"{axis}\"/>\n    <limit lower=\"-2\" upper=\"2\" effort=\"50\" velocity=\"3\"/>\n  </joint>\n",
+            i % 9,
+            0.15 * ((i % 3) as f64 - 1.0),
+            0.1 * (i % 4) as f64
+        );
+    }
+    u.push_str("</robot>\n");
+    files.push(("gen/urdf/gen_tree.urdf".to_string(), u.into_bytes()));
+    files
+}

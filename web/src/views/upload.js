@@ -32,7 +32,7 @@ export function uploadZone({ url, label, askName = false, onAccepted, onDone }) 
     'label',
     { for: inputId, class: 'dropzone', tabindex: '-1' },
     h('span', { class: 'dropzone-main' }, label),
-    h('span', { class: 'muted' }, 'Drop a .zip here, or press to choose one (SimMechanics XML with STL or VRML files).'),
+    h('span', { class: 'muted' }, 'Drop a .zip here, or press to choose one: a SimMechanics XML with its STL or VRML files, a Simscape Multibody XML, or a URDF with its meshes.'),
   );
   let busy = false;
 

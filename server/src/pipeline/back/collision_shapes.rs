@@ -75,24 +75,37 @@ pub struct CollisionReport {
 impl Collision {
     /// Shapes for every body with a mesh; pairs joined by a joint; the user's edits by name.
     pub fn new(model: &Model, names: &[String], joint_names: &[String], edits: &AllowedEdits, opts: &ShapeOptions) -> Collision {
-        let shapes: Vec<Option<BodyShape>> = model
-            .bodies
-            .iter()
-            .map(|b| {
-                b.mesh.as_ref().map(|m| {
-                    let mut s = collision::body_shape(m, opts);
-                    // Mesh coordinates are f32: written with the digits they have (0.06, not
-                    // 0.05999999865889549); computed corners move by less than 1e-7 of their size.
-                    for p in &mut s.parts {
-                        for v in &mut p.vertices {
-                            *v = v.map(tidy);
-                        }
-                        p.radius = tidy(p.radius);
+        let shape_of = |b: &crate::pipeline::ir::Body| {
+            b.mesh.as_ref().map(|m| {
+                let mut s = collision::body_shape(m, opts);
+                // Mesh coordinates are f32: written with the digits they have (0.06, not
+                // 0.05999999865889549); computed corners move by less than 1e-7 of their size.
+                for p in &mut s.parts {
+                    for v in &mut p.vertices {
+                        *v = v.map(tidy);
                     }
-                    s
-                })
+                    p.radius = tidy(p.radius);
+                }
+                s
             })
-            .collect();
+        };
+        // Shapes are independent per body: computed on every core (in body order, so the result
+        // does not depend on the thread count).
+        let threads = std::thread::available_parallelism().map_or(1, |n| n.get()).min(8);
+        let meshed = model.bodies.iter().filter(|b| b.mesh.is_some()).count();
+        let shapes: Vec<Option<BodyShape>> = if threads < 2 || meshed < 8 {
+            model.bodies.iter().map(shape_of).collect()
+        } else {
+            let chunk = model.bodies.len().div_ceil(threads);
+            std::thread::scope(|scope| {
+                let handles: Vec<_> = model
+                    .bodies
+                    .chunks(chunk)
+                    .map(|part| scope.spawn(move || part.iter().map(shape_of).collect::<Vec<_>>()))
+                    .collect();
+                handles.into_iter().flat_map(|h| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e))).collect()
+            })
+        };
         let body_of = |f| match model.frame(f).owner {
             FrameOwner::Body(b) => Some(b.index()),
             FrameOwner::Ground(_) => None,

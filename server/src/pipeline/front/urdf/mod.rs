@@ -149,7 +149,8 @@ pub fn parse(file: &str, bytes: &[u8]) -> Result<Urdf, UrdfError> {
         let p = e.pos();
         UrdfError { line: p.row, column: p.col, ..at0(format!("malformed XML: {e}")) }
     })?;
-    Reader { file, doc: &doc }.read()
+    let line_starts = std::iter::once(0).chain(text.match_indices('\n').map(|(i, _)| i + 1)).collect();
+    Reader { file, doc: &doc, text, line_starts }.read()
 }
 
 fn xacro_message() -> String {
@@ -168,6 +169,10 @@ const DRAKE_NS: &str = "http://drake.mit.edu";
 struct Reader<'d, 'i> {
     file: &'d str,
     doc: &'d roxmltree::Document<'i>,
+    text: &'i str,
+    /// Byte offset of each line's start (positions are looked up by binary search, not by
+    /// counting from the start of the file for every element).
+    line_starts: Vec<usize>,
 }
 
 /// A joint as read, before links are placed.
@@ -195,8 +200,11 @@ struct RawLink<'a, 'i> {
 
 impl<'d, 'i> Reader<'d, 'i> {
     fn loc(&self, node: roxmltree::Node) -> SourceLoc {
-        let p = self.doc.text_pos_at(node.range().start);
-        SourceLoc { file: self.file.to_string(), line: p.row, column: p.col }
+        let at = node.range().start.min(self.text.len());
+        let line = self.line_starts.partition_point(|&s| s <= at);
+        let start = self.line_starts[line.saturating_sub(1).min(self.line_starts.len() - 1)];
+        let column = self.text.get(start..at).map_or(1, |t| t.chars().count() + 1);
+        SourceLoc { file: self.file.to_string(), line: line as u32, column: column as u32 }
     }
 
     fn describe(&self, node: roxmltree::Node) -> String {

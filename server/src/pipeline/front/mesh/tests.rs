@@ -1,0 +1,550 @@
+//! Unit tests of the mesh readers: test-only code, declared by the parent under `#[cfg(test)]`.
+
+use super::*;
+use crate::pipeline::front::simmechanics::dom::{Doc, NodeId};
+use nalgebra::{Point3, Rotation3, Vector3};
+use std::path::{Path, PathBuf};
+
+// ---------------------------------------------------------------- helpers
+
+/// Signed volume enclosed by the triangles (positive when wound outward).
+fn volume(m: &ir::Mesh) -> f64 {
+    let p = |i: u32| {
+        let v = m.vertices[i as usize];
+        Vector3::new(f64::from(v[0]), f64::from(v[1]), f64::from(v[2]))
+    };
+    m.triangles.iter().map(|t| p(t[0]).dot(&p(t[1]).cross(&p(t[2]))) / 6.0).sum()
+}
+
+/// Every directed edge appears once and its reverse once: closed and consistently wound.
+fn assert_closed(m: &ir::Mesh) {
+    let mut edges = std::collections::HashMap::new();
+    for t in &m.triangles {
+        for k in 0..3 {
+            *edges.entry((t[k], t[(k + 1) % 3])).or_insert(0) += 1;
+        }
+    }
+    for (&(a, b), &n) in &edges {
+        assert_eq!(n, 1, "edge {a}-{b} used {n} times in one direction");
+        assert_eq!(edges.get(&(b, a)), Some(&1), "edge {a}-{b} has no opposite edge");
+    }
+}
+
+fn bounds(m: &ir::Mesh) -> ([f64; 3], [f64; 3]) {
+    let (lo, hi) = m.bounds().expect("mesh has vertices");
+    (lo.map(f64::from), hi.map(f64::from))
+}
+
+fn assert_bounds(m: &ir::Mesh, lo: [f64; 3], hi: [f64; 3]) {
+    let (l, h) = bounds(m);
+    for k in 0..3 {
+        assert!((l[k] - lo[k]).abs() < 1e-5 && (h[k] - hi[k]).abs() < 1e-5, "bounds {l:?}..{h:?}, expected {lo:?}..{hi:?}");
+    }
+}
+
+fn kind(e: &MeshError) -> &MeshErrorKind {
+    &e.kind
+}
+
+// ---------------------------------------------------------------- COLLADA documents of our own
+
+/// A COLLADA document: `asset` inside `<asset>`, `geoms` inside `<library_geometries>`, `scene`
+/// (the `<node>`s) inside a visual scene when given.
+fn dae(asset: &str, geoms: &str, scene: Option<&str>) -> String {
+    let scene = scene
+        .map(|s| {
+            format!(
+                "<library_visual_scenes><visual_scene id=\"Scene\">{s}</visual_scene></library_visual_scenes>\n\
+                 <scene><instance_visual_scene url=\"#Scene\"/></scene>"
+            )
+        })
+        .unwrap_or_default();
+    format!(
+        "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n\
+         <COLLADA xmlns=\"http://www.collada.org/2005/11/COLLADASchema\" version=\"1.4.1\">\n\
+         <asset>{asset}</asset>\n<library_geometries>\n{geoms}\n</library_geometries>\n{scene}\n</COLLADA>\n"
+    )
+}
+
+/// A box from the origin to `size` as a `<polylist>` of six quads (outward), with normals
+/// interleaved at offset 1 when `normals`.
+fn box_geometry(id: &str, size: [f64; 3], normals: bool) -> String {
+    let mut pos = String::new();
+    for k in 0..8 {
+        let c = [k & 1, (k >> 1) & 1, (k >> 2) & 1];
+        for j in 0..3 {
+            pos += &format!("{} ", c[j] as f64 * size[j]);
+        }
+    }
+    let quads = [[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]];
+    let mut p = String::new();
+    for (f, q) in quads.iter().enumerate() {
+        for i in q {
+            p += &if normals { format!("{i} {f} ") } else { format!("{i} ") };
+        }
+    }
+    let norm_src = if normals {
+        format!(
+            "<source id=\"{id}-n\"><float_array id=\"{id}-n-a\" count=\"18\">0 0 -1 0 0 1 0 -1 0 0 1 0 -1 0 0 1 0 0</float_array>\
+             <technique_common><accessor source=\"#{id}-n-a\" count=\"6\" stride=\"3\"/></technique_common></source>"
+        )
+    } else {
+        String::new()
+    };
+    let norm_in = if normals { format!("<input semantic=\"NORMAL\" source=\"#{id}-n\" offset=\"1\"/>") } else { String::new() };
+    format!(
+        "<geometry id=\"{id}\"><mesh>\n\
+         <source id=\"{id}-p\"><float_array id=\"{id}-p-a\" count=\"24\">{pos}</float_array>\n\
+         <technique_common><accessor source=\"#{id}-p-a\" count=\"8\" stride=\"3\">\
+         <param name=\"X\" type=\"float\"/><param name=\"Y\" type=\"float\"/><param name=\"Z\" type=\"float\"/></accessor></technique_common></source>\n\
+         {norm_src}\n\
+         <vertices id=\"{id}-v\"><input semantic=\"POSITION\" source=\"#{id}-p\"/></vertices>\n\
+         <polylist count=\"6\" material=\"m\"><input semantic=\"VERTEX\" source=\"#{id}-v\" offset=\"0\"/>{norm_in}\n\
+         <vcount>4 4 4 4 4 4</vcount>\n<p>{p}</p>\n</polylist>\n</mesh></geometry>"
+    )
+}
+
+fn node(transforms: &str, url: &str) -> String {
+    format!("<node id=\"n-{url}\">{transforms}<instance_geometry url=\"#{url}\"/></node>")
+}
+
+// ---------------------------------------------------------------- COLLADA
+
+#[test]
+fn dae_unit_and_y_up() {
+    // A 1000 × 2000 × 3000 mm box in a Y_UP file: metres, and (x, y, z) -> (x, -z, y).
+    let text = dae(
+        "<unit name=\"millimeter\" meter=\"0.001\"/><up_axis>Y_UP</up_axis>",
+        &box_geometry("b", [1000.0, 2000.0, 3000.0], true),
+        Some(&node("", "b")),
+    );
+    let m = read("parts/box.DAE", text.as_bytes()).expect("reads");
+    assert_eq!(m.triangles.len(), 12);
+    assert_eq!(m.vertices.len(), 8);
+    assert_bounds(&m, [0.0, -3.0, 0.0], [1.0, 0.0, 2.0]);
+    assert!((volume(&m) - 6.0).abs() < 1e-4, "outward, 6 m³: {}", volume(&m));
+    assert_closed(&m);
+}
+
+#[test]
+fn dae_default_up_axis_is_y_and_unit_is_metre() {
+    // No <unit>, no <up_axis>: metres, Y up (the specification's defaults).
+    let text = dae("", &box_geometry("b", [1.0, 2.0, 3.0], false), Some(&node("", "b")));
+    let m = read("box.dae", text.as_bytes()).expect("reads");
+    assert_bounds(&m, [0.0, -3.0, 0.0], [1.0, 0.0, 2.0]);
+    // Z_UP leaves the numbers; X_UP maps (x, y, z) -> (-y, -z, x).
+    let z = dae("<up_axis>Z_UP</up_axis>", &box_geometry("b", [1.0, 2.0, 3.0], false), Some(&node("", "b")));
+    assert_bounds(&read("box.dae", z.as_bytes()).expect("reads"), [0.0, 0.0, 0.0], [1.0, 2.0, 3.0]);
+    let x = dae("<up_axis>X_UP</up_axis>", &box_geometry("b", [1.0, 2.0, 3.0], false), Some(&node("", "b")));
+    let mx = read("box.dae", x.as_bytes()).expect("reads");
+    assert_bounds(&mx, [-2.0, -3.0, 0.0], [0.0, 0.0, 1.0]);
+    assert!(volume(&mx) > 5.99, "a rotation keeps the orientation");
+    // read_with(false) ignores the up axis.
+    let raw = collada::read_with("box.dae", text.as_bytes(), false).expect("reads");
+    assert_bounds(&raw, [0.0, 0.0, 0.0], [1.0, 2.0, 3.0]);
+}
+
+#[test]
+fn dae_node_transforms_compose_in_document_order() {
+    // Unit cube, scaled by 2, turned 90° about z, moved 10 along x: p' = T R S p.
+    let s = node("<translate>10 0 0</translate><rotate>0 0 1 90</rotate><scale>2 2 2</scale>", "b");
+    let text = dae("<up_axis>Z_UP</up_axis>", &box_geometry("b", [1.0; 3], false), Some(&s));
+    let m = read("t.dae", text.as_bytes()).expect("reads");
+    assert_bounds(&m, [8.0, 0.0, 0.0], [10.0, 2.0, 2.0]);
+    // <matrix> is row-major: the translation is the last column. Nested nodes compose.
+    let s = "<node><matrix>1 0 0 1  0 1 0 2  0 0 1 3  0 0 0 1</matrix>\
+             <node><translate>0 0 10</translate><instance_geometry url=\"#b\"/></node></node>";
+    let text = dae("<up_axis>Z_UP</up_axis>", &box_geometry("b", [1.0; 3], false), Some(s));
+    assert_bounds(&read("t.dae", text.as_bytes()).expect("reads"), [1.0, 2.0, 13.0], [2.0, 3.0, 14.0]);
+    // A mirroring scale keeps the triangles outward.
+    let s = node("<scale>-1 1 1</scale>", "b");
+    let text = dae("<up_axis>Z_UP</up_axis>", &box_geometry("b", [1.0; 3], false), Some(&s));
+    let m = read("t.dae", text.as_bytes()).expect("reads");
+    assert_bounds(&m, [-1.0, 0.0, 0.0], [0.0, 1.0, 1.0]);
+    assert!((volume(&m) - 1.0).abs() < 1e-6, "mirrored but outward: {}", volume(&m));
+}
+
+#[test]
+fn dae_instance_node_and_two_instances() {
+    let geoms = box_geometry("b", [1.0; 3], false);
+    let lib = "<library_nodes><node id=\"part\"><translate>0 0 5</translate><instance_geometry url=\"#b\"/></node></library_nodes>";
+    let scene = "<node><instance_node url=\"#part\"/></node><node><translate>3 0 0</translate><instance_geometry url=\"#b\"/></node>";
+    let text = dae("<up_axis>Z_UP</up_axis>", &geoms, Some(scene)).replace("<library_geometries>", &format!("{lib}<library_geometries>"));
+    let m = read("t.dae", text.as_bytes()).expect("reads");
+    assert_eq!(m.triangles.len(), 24);
+    assert_bounds(&m, [0.0, 0.0, 0.0], [4.0, 1.0, 6.0]);
+    // A cycle of instance_node is an error, not a hang.
+    let lib = "<library_nodes><node id=\"a\"><instance_node url=\"#a\"/></node></library_nodes>";
+    let text = dae("", &geoms, Some("<node><instance_node url=\"#a\"/></node>"))
+        .replace("<library_geometries>", &format!("{lib}<library_geometries>"));
+    let e = read("cycle.dae", text.as_bytes()).expect_err("cycle");
+    assert!(e.to_string().contains("nested more than 64 deep"), "{e}");
+    // Instancing that multiplies (ten of the next level, eight levels: 10^8 nodes) is refused
+    // after 250,000 visits.
+    let mut lib = String::from("<library_nodes>");
+    for level in 0..8 {
+        lib += &format!("<node id=\"l{level}\">{}</node>", format!("<instance_node url=\"#l{}\"/>", level + 1).repeat(10));
+    }
+    lib += "<node id=\"l8\"><instance_geometry url=\"#b\"/></node></library_nodes>";
+    let text = dae("", &geoms, Some("<node><instance_node url=\"#l0\"/></node>"))
+        .replace("<library_geometries>", &format!("{lib}<library_geometries>"));
+    let e = read("bomb.dae", text.as_bytes()).expect_err("bomb");
+    assert!(e.to_string().contains("more than 250000 node visits"), "{e}");
+}
+
+#[test]
+fn dae_without_scene_uses_every_geometry() {
+    let geoms = format!("{}{}", box_geometry("a", [1.0; 3], false), box_geometry("b", [2.0; 3], false));
+    let m = read("t.dae", dae("<up_axis>Z_UP</up_axis>", &geoms, None).as_bytes()).expect("reads");
+    assert_eq!(m.triangles.len(), 24);
+    assert!((volume(&m) - 9.0).abs() < 1e-5);
+}
+
+/// A tetrahedron (0,0,0), (1,0,0), (0,1,0), (0,0,1) with the primitive element `prim`.
+fn tetra(prim: &str) -> String {
+    let g = format!(
+        "<geometry id=\"t\"><mesh><source id=\"t-p\"><float_array id=\"t-a\" count=\"12\">0 0 0 1 0 0 0 1 0 0 0 1</float_array>\
+         <technique_common><accessor source=\"#t-a\" count=\"4\" stride=\"3\"/></technique_common></source>\
+         <vertices id=\"t-v\"><input semantic=\"POSITION\" source=\"#t-p\"/></vertices>\n{prim}\n</mesh></geometry>"
+    );
+    dae("<up_axis>Z_UP</up_axis>", &g, Some(&node("", "t")))
+}
+
+const V: &str = "<input semantic=\"VERTEX\" source=\"#t-v\" offset=\"0\"/>";
+
+#[test]
+fn dae_primitive_kinds() {
+    // Outward tetrahedron faces: 0 2 1, 0 1 3, 0 3 2, 1 2 3. Volume 1/6.
+    let cases = [
+        format!("<triangles count=\"4\">{V}<p>0 2 1 0 1 3 0 3 2 1 2 3</p></triangles>"),
+        // Interleaved: a TEXCOORD at offset 1 (values ignored).
+        format!(
+            "<triangles count=\"4\">{V}<input semantic=\"TEXCOORD\" source=\"#t-p\" offset=\"1\" set=\"0\"/>\
+             <p>0 9 2 9 1 9 0 9 1 9 3 9 0 9 3 9 2 9 1 9 2 9 3 9</p></triangles>"
+        ),
+        format!("<polygons count=\"4\">{V}<p>0 2 1</p><p>0 1 3</p><ph><p>0 3 2</p><h>0 0 0</h></ph><p>1 2 3</p></polygons>"),
+        format!("<trifans count=\"2\">{V}<p>0 2 1 3 2</p><p>1 2 3</p></trifans>"),
+        // The strip 1 0 2 3 1 is (1 0 2), (2 0 3) (second triangle reversed), (2 3 1).
+        format!("<tristrips count=\"2\">{V}<p>1 0 2 3 1</p><p>0 1 3</p></tristrips>"),
+        format!("<polylist count=\"4\">{V}<vcount>3 3 3 3</vcount><p>0 2 1 0 1 3 0 3 2 1 2 3</p></polylist>"),
+    ];
+    for (k, prim) in cases.iter().enumerate() {
+        let m = read("t.dae", tetra(prim).as_bytes()).unwrap_or_else(|e| panic!("case {k}: {e}"));
+        assert_eq!(m.triangles.len(), 4, "case {k}");
+        assert!((volume(&m) - 1.0 / 6.0).abs() < 1e-6, "case {k}: volume {}", volume(&m));
+        assert_closed(&m);
+    }
+}
+
+#[test]
+fn dae_errors_name_file_line_and_problem() {
+    let cases: Vec<(String, &str)> = vec![
+        // Index 7 of a 4-point source (the <p> is on line 6 of the document).
+        (tetra(&format!("<triangles count=\"4\">{V}<p>0 2 1 0 1 7 0 3 2 1 2 3</p></triangles>")), "t.dae:6: COLLADA: <p> index 7 is out of range: the position source has 4 points"),
+        (tetra(&format!("<triangles count=\"1\">{V}<p>0 2 1 0</p></triangles>")), "not a multiple of 3"),
+        (tetra(&format!("<polylist count=\"1\">{V}<vcount>4</vcount><p>0 2 1</p></polylist>")), "<vcount> adds up to 4 corners but <p> has 3"),
+        (tetra(&format!("<polylist count=\"1\">{V}<p>0 2 1</p></polylist>")), "<polylist> has no <vcount>"),
+        (tetra(&format!("<triangles count=\"1\">{V}<p>0 x 1</p></triangles>")), "bad index \"x\""),
+        (tetra(&format!("<triangles count=\"1\">{V}<p>0 -1 1</p></triangles>")), "bad index \"-1\""),
+        (tetra("<triangles count=\"1\"><p>0 1 2</p></triangles>"), "<triangles> has no VERTEX input"),
+        (tetra(&format!("<triangles count=\"1\">{}<p>0 1 2</p></triangles>", V.replace("#t-v", "#nowhere"))), "no element has id \"nowhere\""),
+        (tetra(&format!("<triangles count=\"1\">{}<p>0 1 2</p></triangles>", V.replace("#t-v", "other.dae#t-v"))), "other files are not read"),
+        (tetra(&format!("<triangles>{V}<p>0 2 3</p></triangles>")).replace("0 0 1</float_array>", "0 0 nan</float_array>"), "t.dae: vertex 3 is not finite"),
+        (tetra(&format!("<triangles>{V}<p>0 2 3</p></triangles>")).replace("0 0 1</float_array>", "0 0 1e999</float_array>"), "not finite"),
+        (tetra(&format!("<triangles>{V}<p>0 2 1</p></triangles>")).replace("0 0 1</float_array>", "0 0 1,5</float_array>"), "bad number \"1,5\" in <float_array>"),
+        (tetra(&format!("<triangles>{V}<p>0 2 1</p></triangles>")).replace("count=\"4\" stride", "count=\"5\" stride"), "reads past its <float_array>"),
+        (tetra(&format!("<triangles>{V}<p>0 2 1</p></triangles>")).replace("stride=\"3\"", "stride=\"2\""), "stride 2"),
+        (tetra(&format!("<triangles>{V}<p>0 2 1</p></triangles>")).replace("<up_axis>Z_UP", "<unit meter=\"-1\"/><up_axis>Z_UP"), "<unit meter=\"-1\"> is not a positive number"),
+        (tetra(&format!("<triangles>{V}<p>0 2 1</p></triangles>")).replace("Z_UP", "W_UP"), "<up_axis> \"W_UP\" is not X_UP"),
+        (tetra(&format!("<triangles>{V}<p>0 2 1</p></triangles>")).replace("<node id=\"n-t\">", "<node id=\"n-t\"><lookat>0 0 0 1 0 0 0 0 1</lookat>"), "<lookat> node transforms are not supported"),
+        (tetra(&format!("<triangles>{V}<p>0 2 1</p></triangles>")).replace("<node id=\"n-t\">", "<node id=\"n-t\"><matrix>1 0 0</matrix>"), "<matrix> needs 16 numbers, found 3"),
+        (tetra(&format!("<triangles>{V}<p></p></triangles>")), "t.dae: no triangles in the file"),
+        ("<COLLADA><asset></asset><library_geometries>".to_string(), "t.dae:1: XML: unexpected end of file"),
+        ("<html><body/></html>".to_string(), "the root element is <html>, not <COLLADA>"),
+        ("\u{0}\u{1}garbage\u{ff}".to_string(), "t.dae:1: XML"),
+        (String::new(), "t.dae:1: XML"),
+    ];
+    for (text, want) in cases {
+        let e = read("t.dae", text.as_bytes()).expect_err(want);
+        assert!(e.to_string().contains(want), "want {want:?}, got {e}");
+    }
+    // The line points at the bad element.
+    let text = tetra(&format!("<triangles count=\"1\">{V}\n\n<p>0 2 9</p></triangles>"));
+    let e = read("t.dae", text.as_bytes()).expect_err("index");
+    assert_eq!(e.line, 8, "{e}");
+    assert!(matches!(kind(&e), MeshErrorKind::Collada(_)));
+}
+
+#[test]
+fn dae_truncated_or_mutated_never_panics() {
+    let text = dae("<unit meter=\"0.001\"/><up_axis>Y_UP</up_axis>", &box_geometry("b", [1.0, 2.0, 3.0], true), Some(&node("<rotate>1 0 0 30</rotate>", "b")));
+    let bytes = text.as_bytes();
+    for cut in 0..bytes.len() {
+        let _ = read("t.dae", &bytes[..cut]);
+    }
+    let mut seed = 0x9E37_79B9_7F4A_7C15u64;
+    let mut rnd = || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        seed
+    };
+    for _ in 0..3000 {
+        let mut b = bytes.to_vec();
+        for _ in 0..3 {
+            let k = (rnd() % b.len() as u64) as usize;
+            b[k] = b"0123456789 -.e<>/\"#x"[(rnd() % 20) as usize];
+        }
+        if let Ok(m) = read("t.dae", &b) {
+            assert!(m.vertices.iter().flatten().all(|x| x.is_finite()));
+            assert!(m.triangles.iter().flatten().all(|&i| (i as usize) < m.vertices.len()));
+        }
+    }
+    // Deep nesting is refused, not a stack overflow.
+    let deep = format!("<COLLADA>{}{}</COLLADA>", "<node>".repeat(100_000), "</node>".repeat(100_000));
+    assert!(read("deep.dae", deep.as_bytes()).is_err());
+}
+
+// ---------------------------------------------------------------- OBJ
+
+#[test]
+fn obj_quad_objects_and_negative_indices() {
+    let text = "# a unit square and a triangle\nmtllib x.mtl\no quad\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\n\
+                f 1//1 2//1 3//1 4//1\no tri\nv 0 0 5\nv 1 0 5\nv 0 1 5\nf -3 -2 -1\nl 1 2\n";
+    let m = read("m/Shape.OBJ", text.as_bytes()).expect("reads");
+    assert_eq!(m.triangles.len(), 3, "the quad is two triangles, the objects are appended");
+    assert_bounds(&m, [0.0, 0.0, 0.0], [1.0, 1.0, 5.0]);
+    // Orientation kept: both faces wind counter-clockwise about +z.
+    for t in &m.triangles {
+        let p = t.map(|i| Vector3::from(m.vertices[i as usize].map(f64::from)));
+        assert!((p[1] - p[0]).cross(&(p[2] - p[0])).z > 0.0);
+    }
+}
+
+#[test]
+fn obj_errors() {
+    let cases = [
+        ("v 0 0 0\nv 1 0 0\nv 0 1 x\nf 1 2 3\n", "t.obj:3: OBJ: bad vertex record"),
+        ("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 a\n", "t.obj:4: OBJ: bad face record"),
+        ("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n", "t.obj: OBJ: a face refers to a vertex that does not exist"),
+        ("v 0 0 0\nv 1 0 0\nv 0 1 nan\nf 1 2 3\n", "t.obj: vertex 3 is not finite"),
+        ("v 0 0 0\nv 1 0 0\nv 0 1 0\n", "t.obj: no triangles in the file"),
+        ("", "no triangles"),
+    ];
+    for (text, want) in cases {
+        let e = read("t.obj", text.as_bytes()).expect_err(want);
+        assert!(e.to_string().contains(want), "want {want:?}, got {e}");
+    }
+    // Invalid UTF-8 and random bytes: errors, never panics.
+    let e = read("t.obj", b"v 0 0 0\nv \xff\xfe 1 0\n").expect_err("utf8");
+    assert_eq!(e.line, 2, "{e}");
+    let text = "o a\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\nf 1/1/1 2/1/1 3/1/1 4/1/1\nf -1 -2 -3\n";
+    for cut in 0..text.len() {
+        let _ = read("t.obj", &text.as_bytes()[..cut]);
+    }
+    let mut seed = 12345u64;
+    for _ in 0..3000 {
+        let mut b = text.as_bytes().to_vec();
+        for _ in 0..3 {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            let k = (seed % b.len() as u64) as usize;
+            b[k] = b"0123456789 -./\nfv#"[(seed >> 32) as usize % 18];
+        }
+        if let Ok(m) = read("t.obj", &b) {
+            assert!(m.triangles.iter().flatten().all(|&i| (i as usize) < m.vertices.len()));
+        }
+    }
+}
+
+// ---------------------------------------------------------------- dispatch, STL
+
+#[test]
+fn dispatch_by_extension() {
+    let stl = "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid t\n";
+    assert_eq!(read("a/b.STL", stl.as_bytes()).expect("stl").triangles.len(), 1);
+    let e = read("a/b.stl", b"solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0\n").expect_err("bad stl");
+    assert!(e.to_string().starts_with("a/b.stl:5: expected a number"), "{e}");
+    for name in ["x.ply", "x", "x.", "dir.obj/x.3ds"] {
+        let e = read(name, b"").expect_err("unsupported");
+        assert!(e.to_string().contains("supported are .stl, .obj and .dae"), "{e}");
+    }
+    assert!(read("x.ply", b"").expect_err("").to_string().contains("\".ply\""));
+}
+
+// ---------------------------------------------------------------- primitives, scale
+
+#[test]
+fn primitives_are_closed_outward_and_of_the_right_volume() {
+    let b = box_mesh([0.1, 0.2, 0.3]);
+    assert_closed(&b);
+    assert_bounds(&b, [-0.05, -0.1, -0.15], [0.05, 0.1, 0.15]);
+    assert!((volume(&b) - 0.006).abs() < 1e-9, "{}", volume(&b));
+
+    let (r, l) = (0.05, 0.4);
+    let c = cylinder_mesh(r, l);
+    assert_closed(&c);
+    assert_eq!(c.triangles.len(), 4 * CYLINDER_SEGMENTS);
+    assert_bounds(&c, [-r, -r, -l / 2.0], [r, r, l / 2.0]);
+    let n = CYLINDER_SEGMENTS as f64;
+    let polygon = n / 2.0 * r * r * (2.0 * std::f64::consts::PI / n).sin() * l;
+    assert!((volume(&c) - polygon).abs() < 1e-6 * polygon, "{} vs {polygon}", volume(&c));
+    assert!((volume(&c) / (std::f64::consts::PI * r * r * l) - 1.0).abs() < 0.01);
+
+    let r = 0.3;
+    let s = sphere_mesh(r);
+    assert_closed(&s);
+    assert_bounds(&s, [-r, -r, -r], [r, r, r]);
+    let exact = 4.0 / 3.0 * std::f64::consts::PI * r * r * r;
+    assert!(volume(&s) > 0.95 * exact && volume(&s) < exact, "{} vs {exact}", volume(&s));
+}
+
+#[test]
+fn scaled_is_componentwise_and_keeps_outward_winding() {
+    let b = box_mesh([1.0, 1.0, 1.0]);
+    let s = scaled("b.obj", &b, [0.2, 0.4, 0.05]).expect("finite");
+    assert_bounds(&s, [-0.1, -0.2, -0.025], [0.1, 0.2, 0.025]);
+    assert!((volume(&s) - 0.004).abs() < 1e-9);
+    let m = scaled("b.obj", &b, [-1.0, 1.0, 2.0]).expect("finite");
+    assert!((volume(&m) - 2.0).abs() < 1e-9, "mirrored, still outward: {}", volume(&m));
+    let e = scaled("b.obj", &b, [f64::NAN, 1.0, 1.0]).expect_err("nan");
+    assert_eq!(e.to_string(), "b.obj: vertex 1 is not finite (NaN or infinite coordinate, in the file or after scaling)");
+}
+
+// ---------------------------------------------------------------- fixtures
+
+fn urdf_fixtures() -> Option<PathBuf> {
+    crate::pipeline::testutil::fixtures_dir().map(|d| d.join("urdf")).filter(|d| d.is_dir())
+}
+
+/// Every mesh under `fixtures/urdf` reads: triangles, finite, smaller than 2 m (2.5 m: the
+/// quadruped's `cylinder.obj` is a unit shape 2 m tall that its URDF scales down).
+#[test]
+fn fixture_meshes_read() {
+    let Some(dir) = urdf_fixtures() else { return };
+    let mut files = Vec::new();
+    for ext in ["dae", "obj", "stl"] {
+        files.extend(crate::pipeline::testutil::files_with_ext(&dir, ext));
+    }
+    assert!(files.len() >= 130, "{} mesh files", files.len());
+    for f in &files {
+        let bytes = std::fs::read(f).expect("read fixture");
+        let name = f.strip_prefix(&dir).unwrap_or(f).to_string_lossy().into_owned();
+        let m = read(&name, &bytes).unwrap_or_else(|e| panic!("{e}"));
+        assert!(!m.triangles.is_empty(), "{name}");
+        let (lo, hi) = bounds(&m);
+        let extent = (0..3).map(|k| hi[k] - lo[k]).fold(0.0, f64::max);
+        assert!(extent > 1e-3 && extent < 2.5, "{name}: extent {extent} m");
+    }
+}
+
+/// URDF `xyz`/`rpy` attributes of an `<origin>` child as a transform (identity when absent).
+fn origin(doc: &Doc, el: NodeId) -> nalgebra::Isometry3<f64> {
+    let nums = |key: &[u8]| -> [f64; 3] {
+        let v: Vec<f64> = doc
+            .child(el, b"origin")
+            .and_then(|o| doc.attr(o, key).ok().flatten())
+            .map(|s| String::from_utf8_lossy(s).split_whitespace().map(|t| t.parse().expect("number")).collect())
+            .unwrap_or_else(|| vec![0.0; 3]);
+        [v[0], v[1], v[2]]
+    };
+    let (xyz, rpy) = (nums(b"xyz"), nums(b"rpy"));
+    nalgebra::Isometry3::from_parts(
+        nalgebra::Translation3::new(xyz[0], xyz[1], xyz[2]),
+        Rotation3::from_euler_angles(rpy[0], rpy[1], rpy[2]).into(),
+    )
+}
+
+/// For each link of `urdf` with a `.dae` visual: (name, is its centre of mass inside the visual
+/// mesh's box in the link frame, distance from the centre of mass to the box centre), reading
+/// the meshes with or without the up-axis turn.
+fn com_in_parts(urdf: &Path, root: &Path, apply_up_axis: bool) -> Vec<(String, bool, f64)> {
+    let bytes = std::fs::read(urdf).expect("urdf");
+    let doc = Doc::build(&bytes).unwrap_or_else(|_| panic!("parse {}", urdf.display()));
+    let mut out = Vec::new();
+    for link in doc.children(doc.root()).filter(|&c| doc.name(c) == b"link") {
+        let (Some(vis), Some(inertial)) = (doc.child(link, b"visual"), doc.child(link, b"inertial")) else { continue };
+        let Some(file) = doc.descend(vis, &[b"geometry", b"mesh"]).and_then(|m| doc.attr(m, b"filename").ok().flatten()) else {
+            continue;
+        };
+        let file = String::from_utf8_lossy(file);
+        let Some(rel) = file.strip_prefix("package://example-robot-data/") else { continue };
+        if !rel.ends_with(".dae") {
+            continue;
+        }
+        let mesh = collada::read_with(rel, &std::fs::read(root.join(rel)).expect("mesh"), apply_up_axis).expect("dae");
+        let place = origin(&doc, vis);
+        let pts: Vec<Point3<f64>> =
+            mesh.vertices.iter().map(|v| place * Point3::new(f64::from(v[0]), f64::from(v[1]), f64::from(v[2]))).collect();
+        let lo = pts.iter().fold(Point3::from([f64::MAX; 3]), |a, p| a.inf(p));
+        let hi = pts.iter().fold(Point3::from([f64::MIN; 3]), |a, p| a.sup(p));
+        let com = origin(&doc, inertial).translation.vector;
+        let inside = (0..3).all(|k| com[k] >= lo[k] - 1e-4 && com[k] <= hi[k] + 1e-4);
+        let name = String::from_utf8_lossy(doc.attr(link, b"name").ok().flatten().unwrap_or_default()).into_owned();
+        out.push((name, inside, (com - nalgebra::center(&lo, &hi).coords).norm()));
+    }
+    out
+}
+
+/// The evidence of `collada`'s module docs: iCub's Y_UP meshes contain their links' centres of
+/// mass only when turned to Z up.
+#[test]
+fn up_axis_evidence_icub() {
+    let Some(dir) = urdf_fixtures() else { return };
+    let root = dir.join("Gepetto+example-robot-data/39aa9437");
+    let urdf = root.join("robots/icub_description/robots/icub.urdf");
+    let turned = com_in_parts(&urdf, &root, true);
+    let raw = com_in_parts(&urdf, &root, false);
+    assert!(turned.len() >= 20, "{} iCub links with meshes", turned.len());
+    let decisive = ["chest", "l_upper_arm", "l_forearm", "l_upper_leg", "l_lower_leg", "r_upper_arm", "r_forearm", "r_upper_leg", "r_lower_leg"];
+    for name in decisive {
+        let t = turned.iter().find(|l| l.0 == name).expect("link");
+        let r = raw.iter().find(|l| l.0 == name).expect("link");
+        assert!(t.1 && !r.1, "{name}: inside turned {} ({:.3} m), unturned {} ({:.3} m)", t.1, t.2, r.1, r.2);
+        assert!(t.2 < 0.05 && r.2 > 0.09, "{name}: {:.3} m turned vs {:.3} m unturned", t.2, r.2);
+    }
+    // Over all links, turning never loses a centre of mass the unturned reading had inside
+    // (except r_shoulder_1, a placeholder disc that contains its centre of mass either way not).
+    let inside = |v: &[(String, bool, f64)]| v.iter().filter(|l| l.1).count();
+    assert!(inside(&turned) >= inside(&raw) + 9, "{} vs {}", inside(&turned), inside(&raw));
+}
+
+/// UR5 (Z_UP, unit 1 m, node matrices): each link's visual COLLADA part has the box of its
+/// collision STL (an independent file of the same part, in the same link frame) to 5 mm. (UR5's
+/// inertials are nominal, centres of mass at the joints, so they cannot serve here.)
+#[test]
+fn ur5_visual_parts_match_their_collision_stls() {
+    let Some(dir) = urdf_fixtures() else { return };
+    let meshes = dir.join("Gepetto+example-robot-data/39aa9437/robots/ur_description/meshes/ur5");
+    for part in ["base", "shoulder", "upperarm", "forearm", "wrist1", "wrist2", "wrist3"] {
+        let read_at = |rel: String| {
+            let bytes = std::fs::read(meshes.join(&rel)).expect("fixture");
+            bounds(&read(&rel, &bytes).unwrap_or_else(|e| panic!("{e}")))
+        };
+        let (vlo, vhi) = read_at(format!("visual/{part}.dae"));
+        let (clo, chi) = read_at(format!("collision/{part}.stl"));
+        for k in 0..3 {
+            assert!(
+                (vlo[k] - clo[k]).abs() < 0.005 && (vhi[k] - chi[k]).abs() < 0.005,
+                "{part}: visual {vlo:?}..{vhi:?}, collision {clo:?}..{chi:?}"
+            );
+        }
+    }
+}
+
+/// Release timing of the biggest COLLADA fixture (run with `--release -- --ignored --nocapture`).
+#[test]
+#[ignore]
+fn time_biggest_dae() {
+    let Some(dir) = urdf_fixtures() else { return };
+    let f = dir.join("Gepetto+example-robot-data/39aa9437/robots/ur_description/meshes/ur5/visual/upperarm.dae");
+    let bytes = std::fs::read(&f).expect("fixture");
+    let n = 20;
+    let t = std::time::Instant::now();
+    let mut tris = 0;
+    for _ in 0..n {
+        tris = read("upperarm.dae", &bytes).expect("reads").triangles.len();
+    }
+    println!("upperarm.dae ({} bytes, {tris} triangles): {:.2} ms per read", bytes.len(), t.elapsed().as_secs_f64() * 1e3 / n as f64);
+}
