@@ -123,7 +123,10 @@ fn local(name: &[u8]) -> &[u8] {
 
 /// The nearest rotation (polar decomposition) and how far `m` was from it.
 fn nearest_rotation(m: &Matrix3<f64>) -> Option<(Rotation3<f64>, f64)> {
-    let svd = m.svd(true, true);
+    if !m.iter().all(|x| x.abs() <= 2.0) {
+        return None;
+    }
+    let svd = m.try_svd(true, true, f64::EPSILON, 1000)?;
     let (u, v_t) = (svd.u?, svd.v_t?);
     let r = u * v_t;
     if r.determinant() <= 0.0 {

@@ -40,6 +40,8 @@ pub const RANK_TOL: f64 = 1e-4;
 /// A mate whose geometry is further off than this at the assembly pose (m, or rad for
 /// directions) is reported as inconsistent.
 pub const CONSISTENCY_TOL: f64 = 1e-4;
+/// SVD iterations before giving up (nalgebra's default is unbounded).
+const MAX_SVD_ITERATIONS: usize = 1000;
 
 /// One mate's geometry, in world coordinates (metres) at the assembly pose.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -299,7 +301,7 @@ fn null_space(m: &DMatrix<f64>, tol: f64) -> Vec<nalgebra::DVector<f64>> {
     let rows = m.nrows().max(cols);
     let mut a = DMatrix::<f64>::zeros(rows, cols);
     a.view_mut((0, 0), (m.nrows(), cols)).copy_from(m);
-    let svd = a.svd(false, true);
+    let Some(svd) = a.try_svd(false, true, f64::EPSILON, MAX_SVD_ITERATIONS) else { return Vec::new() };
     let Some(v_t) = svd.v_t else { return Vec::new() };
     (0..cols)
         .filter(|&i| svd.singular_values[i] <= tol)
@@ -316,6 +318,10 @@ fn null_space(m: &DMatrix<f64>, tol: f64) -> Vec<nalgebra::DVector<f64>> {
 /// `[(a - c × b) / L, b]` on `(ω, u)` (then scaled to unit length), so the rank test does not
 /// depend on where the assembly sits or on its units.
 pub fn reduce(rows: &[Vector6<f64>], points: &[Vector3<f64>]) -> Reduction {
+    // Non-finite input (a corrupt file's 1e308s composed into infinities) would stall the SVD.
+    if rows.iter().any(|r| !r.iter().all(|x| x.is_finite())) || points.iter().any(|p| !p.iter().all(|x| x.is_finite())) {
+        return Reduction::Unreducible { what: "non-finite geometry".into() };
+    }
     let n = points.len().max(1) as f64;
     let centre = points.iter().fold(Vector3::zeros(), |a, p| a + p) / n;
     let scale = points.iter().map(|p| (p - centre).norm()).fold(0.0_f64, f64::max).max(1e-3);
@@ -374,7 +380,9 @@ pub fn reduce(rows: &[Vector6<f64>], points: &[Vector3<f64>]) -> Reduction {
         return Reduction::Unreducible { what: format!("{t} translations") };
     }
     // Rotation directions: the column space of the ω parts.
-    let svd = wmat.clone().svd(true, false);
+    let Some(svd) = wmat.clone().try_svd(true, false, f64::EPSILON, MAX_SVD_ITERATIONS) else {
+        return Reduction::Unreducible { what: "SVD failed".into() };
+    };
     let Some(uw) = svd.u else { return Reduction::Unreducible { what: "SVD failed".into() } };
     let rot_dirs: Vec<Vector3<f64>> = (0..svd.singular_values.len())
         .filter(|&i| svd.singular_values[i] > RANK_TOL)
@@ -403,9 +411,10 @@ pub fn reduce(rows: &[Vector6<f64>], points: &[Vector3<f64>]) -> Reduction {
         a.view_mut((3 * i, 0), (3, 3)).copy_from(&(-w.cross_matrix()));
         b.rows_mut(3 * i, 3).copy_from(v);
     }
-    let q = match a.clone().svd(true, true).solve(&b, 1e-9) {
-        Ok(q) => Vector3::new(q[0], q[1], q[2]),
-        Err(_) => return Reduction::Unreducible { what: "no fixed point".into() },
+    let solved = a.clone().try_svd(true, true, f64::EPSILON, MAX_SVD_ITERATIONS).map(|svd| svd.solve(&b, 1e-9));
+    let q = match solved {
+        Some(Ok(q)) => Vector3::new(q[0], q[1], q[2]),
+        _ => return Reduction::Unreducible { what: "no fixed point".into() },
     };
     let fit = (&a * nalgebra::DVector::from_column_slice(q.as_slice()) - &b).norm();
     if fit > RANK_TOL {

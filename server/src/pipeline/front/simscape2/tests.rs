@@ -300,3 +300,16 @@ fn solidworks_inconsistent_and_unreducible_pairs_are_warned() {
     assert!(w.iter().any(|w| w.code == "mate-unreducible" && w.message.contains("\"Slot\"")), "{w:?}");
     assert_eq!(m.joints.len(), 1, "only the ground weld");
 }
+
+#[test]
+fn non_finite_geometry_is_unreducible_not_a_hang() {
+    let rows = [Vector6::new(f64::INFINITY, 0.0, 0.0, 0.0, 0.0, 1.0)];
+    assert!(matches!(reduce(&rows, &[Vector3::zeros()]), Reduction::Unreducible { .. }));
+    // Translations so large that composing them overflows: the file still parses or fails with
+    // a message, never hangs.
+    let huge = SOLIDWORKS.replace("<Translation>100 0 0</Translation>", "<Translation>1e308 1e308 0</Translation>");
+    let _ = parse("sw.xml", huge.as_bytes());
+    let scaled = ONSHAPE.replace("<Rotation>0 -1 0 1 0 0 0 0 1</Rotation>", "<Rotation>0 -1e300 0 1 0 0 0 0 1</Rotation>");
+    let e = parse("t.xml", scaled.as_bytes()).expect_err("not a rotation");
+    assert!(e.message.contains("not a rotation"), "{e}");
+}
