@@ -3,7 +3,8 @@
 //! - [`common`]: locating fixtures and tools, converting bundles, writing packages to disk.
 //! - [`modelica`], [`fk`]: an independent reader of the `Mechanics.mo` we emit and a forward
 //!   kinematics walker over it (they deliberately use nothing from the converter).
-//! - [`truth`]: frames and CGs scanned straight from an XML export.
+//! - [`truth`]: frames and CGs scanned straight from an XML export; [`xml2_truth`] the same for
+//!   second-generation Simscape Multibody XML.
 //! - [`check`]: the FK comparison of an output against that truth.
 //! - [`structure`]: structural rank of closed loops (redundant equations, mobility) of the emitted
 //!   model and of the XML assembly.
@@ -19,4 +20,5 @@ pub mod live;
 pub mod modelica;
 pub mod structure;
 pub mod truth;
+pub mod xml2_truth;
 pub mod urdf_truth;

@@ -3,6 +3,7 @@
 pub mod bundle;
 pub mod mesh;
 pub mod simmechanics;
+pub mod simscape2;
 pub mod stl;
 pub mod urdf;
 pub mod vrml;

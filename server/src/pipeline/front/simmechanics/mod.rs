@@ -46,7 +46,7 @@
 //! panics. Physical plausibility (inertia, density, loops) is checked by later passes.
 
 pub(crate) mod dom;
-mod error;
+pub(crate) mod error;
 mod lower;
 mod pose;
 mod units;
