@@ -86,6 +86,8 @@ pub enum ConvertError {
     #[error(transparent)]
     Geometry(#[from] GeometryError),
     #[error(transparent)]
+    Simscape2(#[from] front::simscape2::Simscape2Error),
+    #[error(transparent)]
     Urdf(#[from] front::urdf::UrdfError),
     #[error(transparent)]
     UrdfGeometry(#[from] front::urdf::UrdfGeometryError),
@@ -123,6 +125,9 @@ impl ConvertError {
                 column: e.column,
                 message: if e.element.is_empty() { e.kind.to_string() } else { format!("in {}: {}", e.element, e.kind) },
             },
+            ConvertError::Simscape2(e) => {
+                Diagnostic { file: e.file.clone(), line: e.line, column: e.column, message: e.diagnostic_message() }
+            }
             ConvertError::Urdf(e) => Diagnostic {
                 file: e.file.clone(),
                 line: e.line,
@@ -184,7 +189,14 @@ pub fn analyse_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
     let (kind, path) = find_source(bundle)?;
     let bytes = bundle.get(&path).unwrap_or_default();
     let (mut model, mut warnings) = match kind {
-        SourceKind::FirstGeneration | SourceKind::SecondGeneration => {
+        SourceKind::SecondGeneration => {
+            let (mut model, mut warnings) = front::simscape2::parse(&path, bytes)?;
+            warnings.extend(passes::geometry::read_meshes(&mut model, bundle, &path, &mut |i, n| {
+                obs.progress(Stage::Meshes, i, n)
+            })?);
+            (model, warnings)
+        }
+        SourceKind::FirstGeneration => {
             let (mut model, mut warnings) = front::simmechanics::parse(&path, bytes)?;
             warnings.extend(passes::geometry::read_meshes(&mut model, bundle, &path, &mut |i, n| {
                 obs.progress(Stage::Meshes, i, n)
@@ -251,7 +263,7 @@ impl SourceKind {
         }
         if front::simmechanics::is_physical_modeling_xml(bytes) {
             Some(SourceKind::FirstGeneration)
-        } else if front::simmechanics::is_second_generation_xml(bytes) {
+        } else if front::simscape2::is_simscape2_xml(bytes) {
             Some(SourceKind::SecondGeneration)
         } else if front::urdf::is_urdf(bytes) {
             Some(SourceKind::Urdf)

@@ -130,12 +130,6 @@ pub fn is_physical_modeling_xml(bytes: &[u8]) -> bool {
     matches!(dom::root_element(strip_bom(bytes)), Root::Element { name, .. } if name == ROOT)
 }
 
-/// Cheap sniff: is the root element a second-generation one (`SimscapeMultibodyImportXML` or
-/// `SimMechanicsImportXML`)?
-pub fn is_second_generation_xml(bytes: &[u8]) -> bool {
-    matches!(dom::root_element(strip_bom(bytes)), Root::Element { name, .. } if SECOND_GENERATION_ROOTS.contains(&name))
-}
-
 /// Removes a UTF-8 byte-order mark (positions are then counted from after it).
 fn strip_bom(bytes: &[u8]) -> &[u8] {
     bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes)
