@@ -548,3 +548,66 @@ fn time_biggest_dae() {
     }
     println!("upperarm.dae ({} bytes, {tris} triangles): {:.2} ms per read", bytes.len(), t.elapsed().as_secs_f64() * 1e3 / n as f64);
 }
+
+/// A longer in-process mutation run over the fixture COLLADA files (small ones), for when the
+/// libFuzzer target cannot be built: `cargo test -p cad2mo --lib soak -- --ignored`.
+#[test]
+#[ignore]
+fn soak_mutated_fixture_daes() {
+    let Some(dir) = urdf_fixtures() else { return };
+    let mut seed = 0x2545_F491_4F6C_DD1Du64;
+    let mut rnd = move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        seed
+    };
+    let alphabet = b"0123456789 -.e<>/\"#=xpn\n";
+    let mut runs = 0;
+    for f in crate::pipeline::testutil::files_with_ext(&dir, "dae") {
+        let bytes = std::fs::read(&f).expect("fixture");
+        if bytes.len() > 300_000 {
+            continue;
+        }
+        for _ in 0..300 {
+            let mut b = bytes.clone();
+            for _ in 0..1 + rnd() % 4 {
+                let k = (rnd() % b.len() as u64) as usize;
+                match rnd() % 3 {
+                    0 => b[k] = alphabet[(rnd() % alphabet.len() as u64) as usize],
+                    1 => {
+                        let l = ((rnd() % 64) as usize).min(b.len() - k);
+                        b.drain(k..k + l);
+                    }
+                    _ => {
+                        let l = ((rnd() % 64) as usize).min(b.len() - k);
+                        let chunk = b[k..k + l].to_vec();
+                        b.splice(k..k, chunk);
+                    }
+                }
+                if b.is_empty() {
+                    break;
+                }
+            }
+            let r = std::panic::catch_unwind(|| read("soak.dae", &b));
+            match r {
+                Err(_) => {
+                    std::fs::write("/tmp/mesh-soak-panic.dae", &b).expect("write");
+                    panic!("panic on a mutation of {} (saved to /tmp/mesh-soak-panic.dae)", f.display());
+                }
+                Ok(Ok(m)) => {
+                    assert!(m.vertices.iter().flatten().all(|x| x.is_finite()));
+                    assert!(m.triangles.iter().flatten().all(|&i| (i as usize) < m.vertices.len()));
+                }
+                Ok(Err(e)) => {
+                    let _ = e.to_string();
+                }
+            }
+            runs += 1;
+            if b.is_empty() {
+                break;
+            }
+        }
+    }
+    println!("soak: {runs} mutated files read without a panic");
+}
