@@ -144,6 +144,24 @@ fn dae_default_up_axis_is_y_and_unit_is_metre() {
     assert_bounds(&raw, [0.0, 0.0, 0.0], [1.0, 2.0, 3.0]);
 }
 
+/// What the `dae-parser` crate refuses (see `collada`'s docs) reads here: COLLADA 1.5, no
+/// namespace, no `<created>`, unknown elements, a byte order mark.
+#[test]
+fn dae_tolerates_versions_and_unknown_elements() {
+    let text = dae("<up_axis>Z_UP</up_axis>", &box_geometry("b", [1.0; 3], false), Some(&node("<foo_bar/>", "b")));
+    let variants = [
+        text.replace("2005/11/COLLADASchema\" version=\"1.4.1\"", "2008/03/COLLADASchema\" version=\"1.5.0\""),
+        text.replace(" xmlns=\"http://www.collada.org/2005/11/COLLADASchema\"", ""),
+        text.replace("<library_geometries>", "<library_cameras><camera id=\"c\"/></library_cameras><extra_stuff a=\"1\"/><library_geometries>"),
+        format!("\u{feff}{text}"),
+    ];
+    for v in variants {
+        let m = read("v.dae", v.as_bytes()).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(m.triangles.len(), 12);
+        assert_bounds(&m, [0.0; 3], [1.0; 3]);
+    }
+}
+
 #[test]
 fn dae_node_transforms_compose_in_document_order() {
     // Unit cube, scaled by 2, turned 90° about z, moved 10 along x: p' = T R S p.
@@ -428,8 +446,17 @@ fn fixture_meshes_read() {
         files.extend(crate::pipeline::testutil::files_with_ext(&dir, ext));
     }
     assert!(files.len() >= 130, "{} mesh files", files.len());
+    let mut solid_headers = 0;
     for f in &files {
         let bytes = std::fs::read(f).expect("read fixture");
+        // Binary STLs whose header begins with "solid" (Solo12, Robotiq) read as binary: all the
+        // triangles the header declares.
+        if bytes.starts_with(b"solid") && crate::pipeline::front::stl::is_binary(&bytes) {
+            solid_headers += 1;
+            let declared = u32::from_le_bytes([bytes[80], bytes[81], bytes[82], bytes[83]]) as usize;
+            let m = read(&f.to_string_lossy(), &bytes).unwrap_or_else(|e| panic!("{e}"));
+            assert_eq!(m.triangles.len(), declared, "{}", f.display());
+        }
         let name = f.strip_prefix(&dir).unwrap_or(f).to_string_lossy().into_owned();
         let m = read(&name, &bytes).unwrap_or_else(|e| panic!("{e}"));
         assert!(!m.triangles.is_empty(), "{name}");
@@ -437,6 +464,7 @@ fn fixture_meshes_read() {
         let extent = (0..3).map(|k| hi[k] - lo[k]).fold(0.0, f64::max);
         assert!(extent > 1e-3 && extent < 2.5, "{name}: extent {extent} m");
     }
+    assert!(solid_headers >= 5, "{solid_headers} binary STLs with a solid header");
 }
 
 /// URDF `xyz`/`rpy` attributes of an `<origin>` child as a transform (identity when absent).
@@ -547,4 +575,67 @@ fn time_biggest_dae() {
         tris = read("upperarm.dae", &bytes).expect("reads").triangles.len();
     }
     println!("upperarm.dae ({} bytes, {tris} triangles): {:.2} ms per read", bytes.len(), t.elapsed().as_secs_f64() * 1e3 / n as f64);
+}
+
+/// A longer in-process mutation run over the fixture COLLADA files (small ones), for when the
+/// libFuzzer target cannot be built: `cargo test -p cad2mo --lib soak -- --ignored`.
+#[test]
+#[ignore]
+fn soak_mutated_fixture_daes() {
+    let Some(dir) = urdf_fixtures() else { return };
+    let mut seed = 0x2545_F491_4F6C_DD1Du64;
+    let mut rnd = move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        seed
+    };
+    let alphabet = b"0123456789 -.e<>/\"#=xpn\n";
+    let mut runs = 0;
+    for f in crate::pipeline::testutil::files_with_ext(&dir, "dae") {
+        let bytes = std::fs::read(&f).expect("fixture");
+        if bytes.len() > 300_000 {
+            continue;
+        }
+        for _ in 0..300 {
+            let mut b = bytes.clone();
+            for _ in 0..1 + rnd() % 4 {
+                let k = (rnd() % b.len() as u64) as usize;
+                match rnd() % 3 {
+                    0 => b[k] = alphabet[(rnd() % alphabet.len() as u64) as usize],
+                    1 => {
+                        let l = ((rnd() % 64) as usize).min(b.len() - k);
+                        b.drain(k..k + l);
+                    }
+                    _ => {
+                        let l = ((rnd() % 64) as usize).min(b.len() - k);
+                        let chunk = b[k..k + l].to_vec();
+                        b.splice(k..k, chunk);
+                    }
+                }
+                if b.is_empty() {
+                    break;
+                }
+            }
+            let r = std::panic::catch_unwind(|| read("soak.dae", &b));
+            match r {
+                Err(_) => {
+                    std::fs::write("/tmp/mesh-soak-panic.dae", &b).expect("write");
+                    panic!("panic on a mutation of {} (saved to /tmp/mesh-soak-panic.dae)", f.display());
+                }
+                Ok(Ok(m)) => {
+                    assert!(m.vertices.iter().flatten().all(|x| x.is_finite()));
+                    assert!(m.triangles.iter().flatten().all(|&i| (i as usize) < m.vertices.len()));
+                }
+                Ok(Err(e)) => {
+                    let _ = e.to_string();
+                }
+            }
+            runs += 1;
+            if b.is_empty() {
+                break;
+            }
+        }
+    }
+    println!("soak: {runs} mutated files read without a panic");
 }
