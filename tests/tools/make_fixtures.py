@@ -1291,7 +1291,7 @@ def case_broken_truncated():
 def case_broken_two_xml():
     m, arm, j = small_model("FIRST")
     m2, _, _ = small_model("SECOND")
-    return m, {"error_contains": "two SimMechanics XML", "flaw": "FIRST.xml and SECOND.xml are both exports",
+    return m, {"error_contains": "two model sources in one bundle", "flaw": "FIRST.xml and SECOND.xml are both exports",
                "second": (m2, "SECOND.xml")}, None, "FIRST.xml"
 
 
