@@ -254,6 +254,12 @@ fn cut(c: &Component, kind: &'static str) -> Result<Element, String> {
     Ok(Element::Constraint(Constraint::Cut(Cut { kind, locked, rotation })))
 }
 
+/// A 1-D flange connector (a joint's `drive`, a gear's `flange_a`/`flangeR`/...): its connects
+/// (URDF mimic couplings) carry no frame.
+pub fn is_flange(r: &str) -> bool {
+    r.rsplit_once('.').is_some_and(|(_, c)| c == "drive" || c.starts_with("flange"))
+}
+
 /// Classifies a component of `model` (whose package is `model.package`).
 pub fn element(model: &Model, c: &Component) -> Result<Element, String> {
     let class = c.class.as_str();
@@ -432,9 +438,7 @@ pub fn forward_kinematics_tol(model: &Model, pos_tol: f64, angle_tol: f64) -> Re
         }
     };
     for (a, b) in &model.connects {
-        // 1-D flange connections (drives, URDF mimic gears) carry no frame.
-        let one_d = |r: &str| r.rsplit_once('.').is_some_and(|(_, c)| c == "drive" || c.starts_with("flange"));
-        if one_d(a) || one_d(b) {
+        if is_flange(a) || is_flange(b) {
             continue;
         }
         check_connector(a)?;

@@ -359,7 +359,9 @@ pub fn model_structure(model: &Model, poses: &Poses) -> Result<Structure, String
 
     // Connection sets, then rigid groups over them.
     let mut sets = Sets::new(index.len());
-    for (a, b) in &model.connects {
+    // Frame connects only: 1-D couplings between drive flanges (URDF mimic) act on joint
+    // coordinates, not on frames.
+    for (a, b) in model.connects.iter().filter(|(a, b)| !crate::fk::is_flange(a) && !crate::fk::is_flange(b)) {
         sets.union(id(a)?, id(b)?);
     }
     let pose = |r: &str| poses.get(r).ok_or_else(|| format!("`{r}` has no start pose (not reached from the world)"));
