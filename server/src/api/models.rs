@@ -537,12 +537,22 @@ async fn package(
     path: Result<Path<(String, String)>, PathRejection>,
 ) -> Result<Response, ApiError> {
     let (id, v) = version_ids(path)?;
-    let row = find_version(&state, &id, v).await?;
-    let Some((package, _)) = outputs(&row) else { return Ok(not_converted(&row)) };
-    let bytes = read_blob(&state, package.clone()).await?;
+    let (bytes, stem, package) = match stored_package(&state, &id, v).await? {
+        Ok(found) => found,
+        Err(not_yet) => return Ok(not_yet),
+    };
+    Ok(file(bytes, "application/zip", Some(&format!("{stem}-v{v}.zip")), &package))
+}
+
+/// A version's stored package: its bytes, the package name (file stem) and its blob reference;
+/// `Err` with the response for a version that has none (yet).
+async fn stored_package(state: &AppState, id: &str, v: i64) -> Result<Result<(Vec<u8>, String, String), Response>, ApiError> {
+    let row = find_version(state, id, v).await?;
+    let Some((package, _)) = outputs(&row) else { return Ok(Err(not_converted(&row))) };
+    let bytes = read_blob(state, package.clone()).await?;
     let summary: Option<Summary> = row.summary_json.as_deref().and_then(|s| serde_json::from_str(s).ok());
     let stem = summary.map_or_else(|| "package".to_string(), |s| s.package_name);
-    Ok(file(bytes, "application/zip", Some(&format!("{stem}-v{v}.zip")), &package))
+    Ok(Ok((bytes, stem, package)))
 }
 
 /// The URDF inside the version's package (`<Pkg>/<Pkg>.urdf`, written by `back::urdf`).
@@ -551,11 +561,10 @@ async fn robot_urdf(
     path: Result<Path<(String, String)>, PathRejection>,
 ) -> Result<Response, ApiError> {
     let (id, v) = version_ids(path)?;
-    let row = find_version(&state, &id, v).await?;
-    let Some((package, _)) = outputs(&row) else { return Ok(not_converted(&row)) };
-    let bytes = read_blob(&state, package.clone()).await?;
-    let summary: Option<Summary> = row.summary_json.as_deref().and_then(|s| serde_json::from_str(s).ok());
-    let stem = summary.map_or_else(|| "package".to_string(), |s| s.package_name);
+    let (bytes, stem, package) = match stored_package(&state, &id, v).await? {
+        Ok(found) => found,
+        Err(not_yet) => return Ok(not_yet),
+    };
     let wanted = format!("{stem}/{stem}.urdf");
     let text = blocking(move || urdf_entry(&bytes, &wanted)).await?;
     let Some(text) = text else {

@@ -23,7 +23,7 @@ use std::fmt::Write as _;
 
 use nalgebra::{Isometry3, Point3, UnitQuaternion, Vector3};
 
-use crate::pipeline::back::modelica::{assign_with_hints, Hints, Layout};
+use crate::pipeline::back::modelica::Layout;
 use crate::pipeline::ir::{FrameOwner, Model, PrimitiveKind};
 use crate::pipeline::passes::hierarchy::LoopKind;
 use crate::pipeline::passes::loops::Cut;
@@ -76,19 +76,9 @@ struct MjJoint {
 pub fn write(model: &Model, v: &Validated, layout: &Layout, opts: &Options) -> String {
     let a = &v.analysis;
     let h = &a.hierarchy;
-    let default_names;
-    let names = match &layout.names {
-        Some(names) => names,
-        None => {
-            default_names = assign_with_hints(model, &Hints::default());
-            &default_names
-        }
-    };
-    let element_name = |j: usize, k: usize| {
-        layout.joint_elements.get(j).and_then(|e| e.get(k)).cloned().unwrap_or_else(|| {
-            if a.chains[j].elements.len() == 1 { names.joints[j].clone() } else { format!("{}_{}", names.joints[j], k + 1) }
-        })
-    };
+    let names = layout.names_or_assign(model);
+    let names = names.as_ref();
+    let element_name = |j: usize, k: usize| layout.element_name(names, v, j, k);
     let nb = model.bodies.len();
     // Parent (None: world) and joints of every body reached by the tree.
     let mut parent: Vec<Option<Option<usize>>> = vec![None; nb];

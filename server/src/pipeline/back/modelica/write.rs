@@ -44,6 +44,28 @@ pub struct Layout {
     pub couplings: Vec<Result<String, String>>,
 }
 
+impl Layout {
+    /// The body and joint names, or (for a layout without them) those the naming rules give.
+    pub fn names_or_assign(&self, model: &Model) -> std::borrow::Cow<'_, Names> {
+        match &self.names {
+            Some(n) => std::borrow::Cow::Borrowed(n),
+            None => std::borrow::Cow::Owned(names::assign_with_hints(model, &names::Hints::default())),
+        }
+    }
+
+    /// The Modelica component of element `k` of joint `j` (`J`, or `J_2` for the second element
+    /// of a chain when the layout does not say).
+    pub fn element_name(&self, names: &Names, v: &Validated, j: usize, k: usize) -> String {
+        self.joint_elements.get(j).and_then(|e| e.get(k)).cloned().unwrap_or_else(|| {
+            if v.analysis.chains[j].elements.len() == 1 {
+                names.joints[j].clone()
+            } else {
+                format!("{}_{}", names.joints[j], k + 1)
+            }
+        })
+    }
+}
+
 /// The package's text files, paths relative to the zip root (`<Pkg>/...`).
 #[derive(Clone, Debug)]
 pub struct Package {
