@@ -285,9 +285,13 @@ pub struct Joint {
 /// N). Absent values are `None`.
 #[derive(Clone, Debug, Default, PartialEq, Serialize)]
 pub struct JointLimits {
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub lower: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub upper: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub velocity: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub effort: Option<f64>,
 }
 
