@@ -619,7 +619,6 @@ impl<'d, 'i> Reader<'d, 'i> {
             let spec = assemble::LoopSpec { a, ta, b, tb, axis: axis.normalize(), motion, fixed: kind == "fixed" };
             loop_specs.push((n, name, spec));
         }
-        let mut q = vec![0.0; joints.len()];
         if !loop_specs.is_empty() {
             let tree: Vec<assemble::TreeJoint> = joints
                 .iter()
@@ -650,8 +649,7 @@ impl<'d, 'i> Reader<'d, 'i> {
                             ),
                         ));
                     }
-                    q = closed;
-                    let assembled = assemble::poses(links.len(), &tree, &order, &q);
+                    let assembled = assemble::poses(links.len(), &tree, &order, &closed);
                     for (i, p) in pose.iter_mut().enumerate() {
                         if p.is_some() {
                             *p = Some(assembled[i]);
