@@ -115,7 +115,7 @@ pub fn choice(class: &Class, inst: &Instance, overrides: Option<&Json>) -> Resul
             (name.clone(), to_param(v))
         })
         .collect();
-    Ok(ClassChoice { modelica_class: class.modelica_class.clone(), params })
+    Ok(ClassChoice { modelica_class: class.modelica_class.clone(), params, instance: inst.name.clone() })
 }
 
 /// A joint element of a converted model that can carry a drive.

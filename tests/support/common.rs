@@ -134,3 +134,44 @@ pub fn fixture_bundle(xml: &Path) -> (PathBuf, Option<tempfile::TempDir>) {
     std::fs::copy(xml, tmp.path().join(xml.file_name().expect("name"))).expect("copy");
     (tmp.path().to_path_buf(), Some(tmp))
 }
+
+/// Every URDF under `urdf/` with the root of its set (`urdf/<owner+repo>/<commit>/`).
+pub fn fixture_urdfs(fx: &Path) -> Vec<(PathBuf, PathBuf)> {
+    let mut out = Vec::new();
+    let mut stack = vec![fx.join("urdf")];
+    while let Some(d) = stack.pop() {
+        for e in std::fs::read_dir(&d).into_iter().flatten().flatten() {
+            let p = e.path();
+            if p.is_dir() {
+                stack.push(p);
+            } else if p.extension().is_some_and(|x| x == "urdf") {
+                let rel = p.strip_prefix(fx.join("urdf")).expect("under urdf");
+                let set: PathBuf = rel.iter().take(2).collect();
+                out.push((p.clone(), fx.join("urdf").join(set)));
+            }
+        }
+    }
+    out.sort();
+    out
+}
+
+/// The URDF and every mesh file of its set, at their paths in the set (so `package://` URIs
+/// resolve as they do in the source repository).
+pub fn urdf_bundle(urdf: &Path, set: &Path) -> cad2mo::pipeline::front::bundle::Bundle {
+    let mut files = Vec::new();
+    let mut stack = vec![set.to_path_buf()];
+    while let Some(d) = stack.pop() {
+        for e in std::fs::read_dir(&d).into_iter().flatten().flatten() {
+            let p = e.path();
+            let ext = p.extension().map(|x| x.to_string_lossy().to_ascii_lowercase()).unwrap_or_default();
+            if p.is_dir() {
+                stack.push(p);
+            } else if p == urdf || matches!(ext.as_str(), "stl" | "dae" | "obj") {
+                let rel = p.strip_prefix(set).expect("under set").to_string_lossy().replace('\\', "/");
+                files.push((rel, std::fs::read(&p).expect("read")));
+            }
+        }
+    }
+    cad2mo::pipeline::front::bundle::Bundle::from_files("urdf-set", files).expect("bundle")
+}
+

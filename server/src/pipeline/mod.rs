@@ -298,7 +298,16 @@ pub fn name_hints(report: &serde_json::Value) -> back::modelica::Hints {
             .filter(|(_, name): &(String, String)| !name.is_empty())
             .collect()
     };
-    back::modelica::Hints { bodies: collect("bodies"), joints: collect("joints") }
+    let diagram = report["diagram"]["groups"]
+        .as_object()
+        .into_iter()
+        .flatten()
+        .filter_map(|(k, v)| {
+            let (c, r) = (v.get(0)?.as_i64()?, v.get(1)?.as_i64()?);
+            Some((k.clone(), (i32::try_from(c).ok()?, i32::try_from(r).ok()?)))
+        })
+        .collect();
+    back::modelica::Hints { bodies: collect("bodies"), joints: collect("joints"), diagram }
 }
 
 /// Reads the bundle's VRML export (every main file: those no other VRML file inlines) and
@@ -418,7 +427,12 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
         &package_name,
         &drives,
         &extras.motions,
-        &back::modelica::mechatronics::Additions { live, collision: contacts.as_deref() },
+        &back::modelica::mechatronics::Additions {
+            live,
+            collision: contacts.as_deref(),
+            diagram: Some(&pkg.layout.diagram),
+            experiment: Some(&back::modelica::Experiment::for_model(&a.model, gravity)),
+        },
         &back::modelica::provenance(&a.model, VERSION),
     )?);
     if !extras.motions.is_empty() {
@@ -435,6 +449,10 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
         }
     }
     files.extend(extras.files);
+    // The package documentation lists the report's findings and the drives.
+    if let Some((_, text)) = files.iter_mut().find(|(p, _)| *p == format!("{package_name}/package.mo")) {
+        *text = back::modelica::doc::package_file(&report, &drives, &back::modelica::provenance(&a.model, VERSION), VERSION).into_bytes();
+    }
     if opts.write_shapes {
         files.extend(collision.files(&package_name, &names));
         let shapes: Vec<usize> = (0..pkg.layout.shapes.len())

@@ -35,6 +35,15 @@ pub struct Report {
     /// Joint couplings (URDF `mimic`); absent when there are none.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub couplings: Vec<CouplingReport>,
+    /// Where the Mechanics diagram put each group (the world, each body with its frames), so
+    /// the next version keeps the places of what did not change.
+    pub diagram: DiagramReport,
+}
+
+#[derive(Serialize, Debug, Clone, Default)]
+pub struct DiagramReport {
+    /// (column, row) by node ID; `world` for the world.
+    pub groups: std::collections::BTreeMap<String, (i32, i32)>,
 }
 
 #[derive(Serialize, Debug, Clone)]
@@ -355,5 +364,6 @@ pub fn build(input: ReportInput) -> Report {
                 emitted_as: layout.couplings.get(k).and_then(|r| r.as_ref().ok()).cloned().unwrap_or_default(),
             })
             .collect(),
+        diagram: DiagramReport { groups: layout.diagram_groups.clone() },
     }
 }

@@ -1,7 +1,7 @@
 within RSSR;
 model Mechanics "Mechanical model of RSSR (4 bodies, 5 joints)"
   inner Modelica.Mechanics.MultiBody.World world(n={0.0, -1.0, 0.0}, g=9.81) "World frame: the CAD assembly's frame"
-    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-160,0})));
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={20,0})));
 
   // Bodies: frame_a is each part's CS1 frame
   Modelica.Mechanics.MultiBody.Parts.Body RootPart(
@@ -10,28 +10,28 @@ model Mechanics "Mechanical model of RSSR (4 bodies, 5 joints)"
     I_11=0.0, I_22=0.0, I_33=0.0,
     I_21=0.0, I_31=0.0, I_32=0.0,
     animation=false)
-    "Assembly root RootPart (nodeID RSSR/RootPart)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,0})));
+    "Assembly root RootPart (nodeID RSSR/RootPart)" annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={420,0})));
   Modelica.Mechanics.MultiBody.Parts.Body CRANK(
     m=0.0246024,
     r_CM={0.0255, 0.000499999999999995, 0.0},
     I_11=7.23721e-7, I_22=9.33456e-6, I_33=9.79586e-6,
     I_21=0.0, I_31=0.0, I_32=0.0,
     animation=false)
-    "Part CRANK (nodeID 70)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-25})));
+    "Part CRANK (nodeID 70)" annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={740,0})));
   Modelica.Mechanics.MultiBody.Parts.Body COUPLER(
     m=0.0851472,
     r_CM={0.1015, 0.0, -0.000500000000000007},
     I_11=2.39122e-6, I_22=0.000340887, I_33=0.000342129,
     I_21=0.0, I_31=0.0, I_32=0.0,
     animation=false)
-    "Part COUPLER (nodeID 71)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-50})));
+    "Part COUPLER (nodeID 71)" annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={1060,0})));
   Modelica.Mechanics.MultiBody.Parts.Body ROCKER(
     m=0.0400896,
     r_CM={0.05, 0.0, 0.0},
     I_11=1.06906e-6, I_22=4.51676e-5, I_33=4.5809e-5,
     I_21=0.0, I_31=0.0, I_32=0.0,
     animation=false)
-    "Part ROCKER (nodeID 72)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={280,-75})));
+    "Part ROCKER (nodeID 72)" annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={1380,0})));
 
   // Frames: grounds, joint attachment frames and user-added CAD frames
   Modelica.Mechanics.MultiBody.Parts.FixedRotation CRANK_CS2(
@@ -40,60 +40,60 @@ model Mechanics "Mechanical model of RSSR (4 bodies, 5 joints)"
     n_x={0.866025403784439, -0.5, 0.0},
     n_y={0.5, 0.866025403784439, 0.0},
     animation=false)
-    "Frame CS2 of CRANK (nodeID 70:-:RSSR/RootPart::70(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,0})));
+    "Frame CS2 of CRANK (nodeID 70:-:RSSR/RootPart::70(AUTOGEN))" annotation (Placement(transformation(extent={{10,-10},{-10,10}}, origin={660,0})));
   Modelica.Mechanics.MultiBody.Parts.FixedRotation CRANK_CS3(
     r={0.05, 0.0, 0.0},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
     n_x={0.866025403784439, -0.5, 0.0},
     n_y={0.5, 0.866025403784439, 0.0},
     animation=false)
-    "Frame CS3 of CRANK (nodeID 70:-:71::70(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-25})));
+    "Frame CS3 of CRANK (nodeID 70:-:71::70(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={740,-200})));
   Modelica.Mechanics.MultiBody.Parts.FixedRotation COUPLER_CS2(
     r={0.0, 0.0, 0.0},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
     n_x={0.775720766465972, 0.280531673821129, 0.565295738933667},
     n_y={-0.588944960032139, 0.0, 0.808173146084886},
     animation=false)
-    "Frame CS2 of COUPLER (nodeID 70:-:71::71(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-50})));
+    "Frame CS2 of COUPLER (nodeID 70:-:71::71(AUTOGEN))" annotation (Placement(transformation(extent={{10,-10},{-10,10}}, origin={980,0})));
   Modelica.Mechanics.MultiBody.Parts.FixedRotation COUPLER_CS3(
     r={0.202004041382914, 0.0, 0.0},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
     n_x={0.775720766465972, 0.280531673821129, 0.565295738933667},
     n_y={-0.588944960032139, 0.0, 0.808173146084886},
     animation=false)
-    "Frame CS3 of COUPLER (nodeID 71:-:72::71(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-75})));
+    "Frame CS3 of COUPLER (nodeID 71:-:72::71(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={1060,-200})));
   Modelica.Mechanics.MultiBody.Parts.FixedRotation ROCKER_CS2(
     r={0.1, 0.0, 0.0},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
     n_x={0.0, 0.0, 1.0},
     n_y={-0.939692620785908, 0.342020143325669, 0.0},
     animation=false)
-    "Frame CS2 of ROCKER (nodeID 71:-:72::72(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-100})));
+    "Frame CS2 of ROCKER (nodeID 71:-:72::72(AUTOGEN))" annotation (Placement(transformation(extent={{10,-10},{-10,10}}, origin={1300,0})));
   Modelica.Mechanics.MultiBody.Parts.FixedTranslation RootPart_CS3(r={0.2, 0.0, 0.08}, animation=false)
-    "Frame CS3 of RootPart (nodeID 72:-:RSSR/RootPart::RSSR/RootPart(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-125})));
+    "Frame CS3 of RootPart (nodeID 72:-:RSSR/RootPart::RSSR/RootPart(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={420,-100})));
   Modelica.Mechanics.MultiBody.Parts.FixedRotation ROCKER_CS3(
     r={0.0, 0.0, 0.0},
     rotationType=Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors,
     n_x={0.0, 0.0, 1.0},
     n_y={-0.939692620785908, 0.342020143325669, 0.0},
     animation=false)
-    "Frame CS3 of ROCKER (nodeID 72:-:RSSR/RootPart::72(AUTOGEN))" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={160,-150})));
+    "Frame CS3 of ROCKER (nodeID 72:-:RSSR/RootPart::72(AUTOGEN))" annotation (Placement(transformation(extent={{10,-10},{-10,10}}, origin={1300,-100})));
 
   // Joints: base frame -> follower frame; start values reproduce the CAD pose
   RSSR.Components.Revolute RootPart_CRANK(
     n={0.0, 0.0, 1.0},
     phi(start=0.0, fixed=true),
     w(start=0, fixed=true))
-    "Joint RootPart--CRANK (nodeID 70:-:RSSR/RootPart)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-40,0})));
+    "Joint RootPart--CRANK (nodeID 70:-:RSSR/RootPart)" annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={500,0})));
   Modelica.Mechanics.MultiBody.Joints.Spherical CRANK_COUPLER
-    "Joint CRANK--COUPLER (nodeID 70:-:71)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-40,-25})));
+    "Joint CRANK--COUPLER (nodeID 70:-:71)" annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={820,0})));
   Modelica.Mechanics.MultiBody.Joints.Spherical COUPLER_ROCKER
-    "Joint COUPLER--ROCKER (nodeID 71:-:72)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-40,-50})));
+    "Joint COUPLER--ROCKER (nodeID 71:-:72)" annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={1140,0})));
   RSSR.Components.Revolute RootPart_ROCKER(
     n={1.0, 0.0, 0.0},
     phi(start=0.0),
     w(start=0))
-    "Joint RootPart--ROCKER (nodeID 72:-:RSSR/RootPart)" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={-40,-75})));
+    "Joint RootPart--ROCKER (nodeID 72:-:RSSR/RootPart)" annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={1140,-100})));
 
   // Shapes: CAD meshes in each body frame, metres
   Modelica.Mechanics.MultiBody.Visualizers.FixedShape CRANK_shape(
@@ -101,44 +101,74 @@ model Mechanics "Mechanical model of RSSR (4 bodies, 5 joints)"
     length=1, width=1, height=1,
     extra=0,
     color={51, 89, 204})
-    "Shape of CRANK" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={400,0})));
+    "Shape of CRANK" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={740,-100})));
   Modelica.Mechanics.MultiBody.Visualizers.FixedShape COUPLER_shape(
     shapeType="modelica://RSSR/Resources/Shapes/COUPLER.dxf",
     length=1, width=1, height=1,
     extra=0,
     color={170, 170, 170})
-    "Shape of COUPLER" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={400,-25})));
+    "Shape of COUPLER" annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={1060,-100})));
   Modelica.Mechanics.MultiBody.Visualizers.FixedShape ROCKER_shape(
     shapeType="modelica://RSSR/Resources/Shapes/ROCKER.dxf",
     length=1, width=1, height=1,
     extra=0,
     color={242, 140, 26})
-    "Shape of ROCKER" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={400,-50})));
+    "Shape of ROCKER" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={1380,-100})));
 equation
-  connect(CRANK.frame_a, CRANK_CS2.frame_a);
-  connect(CRANK.frame_a, CRANK_CS3.frame_a);
-  connect(COUPLER.frame_a, COUPLER_CS2.frame_a);
-  connect(COUPLER.frame_a, COUPLER_CS3.frame_a);
-  connect(ROCKER.frame_a, ROCKER_CS2.frame_a);
-  connect(RootPart.frame_a, RootPart_CS3.frame_a);
-  connect(ROCKER.frame_a, ROCKER_CS3.frame_a);
-  connect(world.frame_b, RootPart.frame_a);
-  connect(RootPart.frame_a, RootPart_CRANK.frame_a);
-  connect(RootPart_CRANK.frame_b, CRANK_CS2.frame_b);
-  connect(CRANK_CS3.frame_b, CRANK_COUPLER.frame_a);
-  connect(CRANK_COUPLER.frame_b, COUPLER_CS2.frame_b);
-  connect(COUPLER_CS3.frame_b, COUPLER_ROCKER.frame_a);
-  connect(COUPLER_ROCKER.frame_b, ROCKER_CS2.frame_b);
-  connect(RootPart_CS3.frame_b, RootPart_ROCKER.frame_a);
-  connect(RootPart_ROCKER.frame_b, ROCKER_CS3.frame_b);
-  connect(CRANK.frame_a, CRANK_shape.frame_a);
-  connect(COUPLER.frame_a, COUPLER_shape.frame_a);
-  connect(ROCKER.frame_a, ROCKER_shape.frame_a);
+  connect(CRANK.frame_a, CRANK_CS2.frame_a)
+    annotation (Line(points={{725,0},{670,0}}, color={95,95,95}, thickness=0.5));
+  connect(CRANK.frame_a, CRANK_CS3.frame_a)
+    annotation (Line(points={{725,0},{720,0},{720,-200},{730,-200}}, color={95,95,95}, thickness=0.5));
+  connect(COUPLER.frame_a, COUPLER_CS2.frame_a)
+    annotation (Line(points={{1045,0},{990,0}}, color={95,95,95}, thickness=0.5));
+  connect(COUPLER.frame_a, COUPLER_CS3.frame_a)
+    annotation (Line(points={{1045,0},{1040,0},{1040,-200},{1050,-200}}, color={95,95,95}, thickness=0.5));
+  connect(ROCKER.frame_a, ROCKER_CS2.frame_a)
+    annotation (Line(points={{1365,0},{1310,0}}, color={95,95,95}, thickness=0.5));
+  connect(RootPart.frame_a, RootPart_CS3.frame_a)
+    annotation (Line(points={{405,0},{400,0},{400,-100},{410,-100}}, color={95,95,95}, thickness=0.5));
+  connect(ROCKER.frame_a, ROCKER_CS3.frame_a)
+    annotation (Line(points={{1365,0},{1360,0},{1360,-100},{1310,-100}}, color={95,95,95}, thickness=0.5));
+  connect(world.frame_b, RootPart.frame_a)
+    annotation (Line(points={{30,0},{405,0}}, color={95,95,95}, thickness=0.5));
+  connect(RootPart.frame_a, RootPart_CRANK.frame_a)
+    annotation (Line(points={{405,0},{400,0},{400,25},{480,25},{480,0},{485,0}}, color={95,95,95}, thickness=0.5));
+  connect(RootPart_CRANK.frame_b, CRANK_CS2.frame_b)
+    annotation (Line(points={{515,0},{650,0}}, color={95,95,95}, thickness=0.5));
+  connect(CRANK_CS3.frame_b, CRANK_COUPLER.frame_a)
+    annotation (Line(points={{750,-200},{800,-200},{800,0},{805,0}}, color={95,95,95}, thickness=0.5));
+  connect(CRANK_COUPLER.frame_b, COUPLER_CS2.frame_b)
+    annotation (Line(points={{835,0},{970,0}}, color={95,95,95}, thickness=0.5));
+  connect(COUPLER_CS3.frame_b, COUPLER_ROCKER.frame_a)
+    annotation (Line(points={{1070,-200},{1120,-200},{1120,0},{1125,0}}, color={95,95,95}, thickness=0.5));
+  connect(COUPLER_ROCKER.frame_b, ROCKER_CS2.frame_b)
+    annotation (Line(points={{1155,0},{1290,0}}, color={95,95,95}, thickness=0.5));
+  connect(RootPart_CS3.frame_b, RootPart_ROCKER.frame_a)
+    annotation (Line(points={{430,-100},{725,-100},{725,-115},{1035,-115},{1035,-120},{1115,-120},{1115,-100},{1125,-100}}, color={238,46,47}, pattern=LinePattern.Dash, thickness=0.5));
+  connect(RootPart_ROCKER.frame_b, ROCKER_CS3.frame_b)
+    annotation (Line(points={{1155,-100},{1290,-100}}, color={238,46,47}, pattern=LinePattern.Dash, thickness=0.5));
+  connect(CRANK.frame_a, CRANK_shape.frame_a)
+    annotation (Line(points={{725,0},{715,0},{715,-100},{730,-100}}, color={95,95,95}, thickness=0.5));
+  connect(COUPLER.frame_a, COUPLER_shape.frame_a)
+    annotation (Line(points={{1045,0},{1035,0},{1035,-100},{1045,-100}}, color={95,95,95}, thickness=0.5));
+  connect(ROCKER.frame_a, ROCKER_shape.frame_a)
+    annotation (Line(points={{1365,0},{1355,0},{1355,-100},{1370,-100}}, color={95,95,95}, thickness=0.5));
   annotation (
-    experiment(StopTime=1),
+    experiment(StopTime=3.0, Interval=0.01, Tolerance=1e-06),
+    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-40,-260},{1440,80}})),
+    Icon(coordinateSystem(preserveAspectRatio=false, extent={{-100,-100},{100,100}}), graphics={
+      Rectangle(extent={{-100,-100},{100,100}}, lineColor={95,95,95}, fillColor={255,255,255}, fillPattern=FillPattern.Solid, radius=8),
+      Rectangle(extent={{-80,-80},{0,-66}}, lineColor={95,95,95}, fillColor={175,175,175}, fillPattern=FillPattern.Solid),
+      Line(points={{-40,-66},{-40,10},{50,50}}, color={95,95,95}, thickness=1),
+      Ellipse(extent={{-50,-76},{-30,-56}}, lineColor={95,95,95}, fillColor={255,255,255}, fillPattern=FillPattern.Solid),
+      Ellipse(extent={{-50,0},{-30,20}}, lineColor={95,95,95}, fillColor={255,255,255}, fillPattern=FillPattern.Solid),
+      Polygon(points={{50,50},{70,40},{66,62}}, lineColor={95,95,95}, fillColor={95,95,95}, fillPattern=FillPattern.Solid),
+      Text(extent={{-150,110},{150,150}}, textString="%name", textColor={0,0,255})}),
     Documentation(info="<html>
 <p>Converted by cad2mo 0.1.0 from <code>RSSR.xml</code> (SimscapeMultibody), exported by Simscape Multibody Link Version 5.0 from Pro/E Wildfire Creo 7.0 - 2020454 on 03/14/24||10:20:30 by cad2mo.</p>
 <p>All quantities in SI units. Each body's frame_a is its CAD part frame CS1; joint start values reproduce the CAD pose.</p>
 <ul><li>Joint RootPart--ROCKER closes a loop: all 5 equations of the revolute are independent.</li></ul>
+<p>Experiment: 3.0 s, about three swings of a pendulum as long as the mechanism's reach (0.215 m, period 0.93 s), 500 output intervals, tolerance 1e-6.</p>
+<p>Diagram: the kinematic tree from the world (left) to the deepest bodies (right), one column per depth; each body stands with the frames fixed on it; the joints stand between the bodies they connect; dashed red lines close kinematic loops.</p>
 </html>"));
 end Mechanics;

@@ -33,7 +33,10 @@ use std::collections::BTreeSet;
 use std::fmt::Write as _;
 use std::sync::OnceLock;
 
+use super::diagram::extend::PLACEHOLDER;
+use super::diagram::Sheet;
 use super::names::KEYWORDS;
+use super::write::Experiment;
 
 mod classes;
 #[cfg(test)]
@@ -88,6 +91,8 @@ pub struct ClassChoice {
     /// A class path of [`known_classes`].
     pub modelica_class: String,
     pub params: Vec<(String, ParamValue)>,
+    /// The motor library instance it comes from (its name; empty when none).
+    pub instance: String,
 }
 
 /// The joint reference: angle in rad (revolute) or position in m (prismatic).
@@ -461,6 +466,8 @@ fn value_text(v: &ParamValue) -> String {
 /// A validated slot: the class and its modifiers in the class table's order.
 struct Slot {
     spec: &'static Spec,
+    /// The library instance's name (empty when none).
+    instance: String,
     /// (name, Modelica value text).
     values: Vec<(&'static str, String)>,
 }
@@ -539,7 +546,7 @@ fn slot(joint: &str, kind: JointKind, domain: Domain, choice: &ClassChoice) -> R
         });
     }
     let values = spec.params.iter().zip(given).filter_map(|(p, v)| v.map(|v| (p.name, v))).collect();
-    Ok(Slot { spec, values })
+    Ok(Slot { spec, instance: choice.instance.clone(), values })
 }
 
 /// The reference as emitted: a constant or a table whose first point is at t <= 0.
@@ -648,7 +655,11 @@ fn slot_html(slot: &Slot) -> String {
             .collect::<Vec<_>>()
             .join(", ")
     };
-    format!("<code>{}</code> ({values})", html(slot.spec.class))
+    if slot.instance.is_empty() {
+        format!("<code>{}</code> ({values})", html(slot.spec.class))
+    } else {
+        format!("{}: <code>{}</code> ({values})", html(&slot.instance), html(slot.spec.class))
+    }
 }
 
 fn reference_html(r: &Ref, kind: JointKind, start: f64) -> String {
@@ -671,7 +682,15 @@ pub struct Additions<'a> {
     /// The contact forces' declarations ([`collision::declarations`]); their package files are
     /// written with them.
     pub collision: Option<&'a str>,
+    /// The Mechanics diagram, which Mechatronics places its components around.
+    pub diagram: Option<&'a Sheet>,
+    /// The experiment Mechanics runs (Mechatronics runs it too unless a motion or a reference
+    /// table is longer).
+    pub experiment: Option<&'a Experiment>,
 }
+
+/// The icon `Mechatronics` adds to the one it inherits: a motor with its shaft.
+const MECHATRONICS_ICON: &str = "\n      Rectangle(extent={{10,-70},{60,-30}}, lineColor={0,0,0}, fillColor={0,128,255}, fillPattern=FillPattern.HorizontalCylinder),\n      Rectangle(extent={{60,-54},{80,-46}}, lineColor={0,0,0}, fillColor={160,160,164}, fillPattern=FillPattern.HorizontalCylinder),\n      Rectangle(extent={{20,-80},{50,-70}}, lineColor={0,0,0}, fillColor={64,64,64}, fillPattern=FillPattern.Solid)";
 
 /// Writes `<pkg>/Mechatronics.mo`: Mechanics plus one drive per plan. `provenance_html` is the
 /// HTML paragraph saying where the model came from (it is escaped for the string literal only).
@@ -696,7 +715,7 @@ pub fn mechatronics(
         // As RobotR3's fullRobot: the motion, then half a second to settle.
         stop_time = first.t.last().copied().unwrap_or(0.0) + 0.5;
     }
-    for (i, d) in drives.iter().enumerate() {
+    for d in drives.iter() {
         let p = d.plan;
         let joint = &p.joint;
         let name = format!("drive_{joint}");
@@ -716,10 +735,9 @@ pub fn mechatronics(
             }
         };
         let label = if p.label.trim().is_empty() { format!("joint {joint}") } else { p.label.clone() };
-        let y = -(i as i64) * 30;
         let _ = writeln!(
             decl,
-            "  {pkg}.Components.Drives.{model} {name}(\n{},\n{},\n{},\n{})\n    \"Drive of {}\"\n    annotation (Placement(transformation(extent={{{{-10,-10}},{{10,10}}}}, origin={{-100,{y}}})));",
+            "  {pkg}.Components.Drives.{model} {name}(\n{},\n{},\n{},\n{})\n    \"Drive of {}\"\n    {PLACEHOLDER};",
             redeclare(pkg, "motor", &d.motor),
             redeclare(pkg, "gear", &d.gear),
             redeclare(pkg, "controller", &d.controller),
@@ -769,9 +787,8 @@ pub fn mechatronics(
         for (k, (m, mname)) in motions.iter().zip(&motion_names).enumerate() {
             let _ = writeln!(
                 motion_decl,
-                "  Motions.{mname} motion_{mname} \"Motion {}\"\n    annotation (Placement(transformation(extent={{{{-10,-10}},{{10,10}}}}, origin={{-140,{}}})));",
-                mstr(&m.label),
-                -(k as i64) * 30
+                "  Motions.{mname} motion_{mname} \"Motion {}\"\n    {PLACEHOLDER};",
+                mstr(&m.label)
             );
             let _ = write!(
                 motion_rows,
@@ -820,13 +837,25 @@ pub fn mechatronics(
             "{body}\n<p>Motions (parameter <code>motion</code> selects the one the drives follow; tables in <code>Motions</code>: time, then the position, speed and acceleration of every joint):</p>\n<table border='1' cellspacing='0' cellpadding='2'>\n<tr><th>motion</th><th>Table</th><th>Name</th><th>Duration, s</th></tr>{motion_rows}\n</table>"
         )
     };
+    let experiment = match (motions.first(), additions.experiment) {
+        (Some(first), _) => Experiment::of(
+            stop_time,
+            format!("Experiment: {} s, the motion {} ({} s) and half a second to settle; 500 output intervals, tolerance 1e-6.", num(stop_time), first.label, num(first.t.last().copied().unwrap_or(0.0))),
+        ),
+        (None, Some(e)) if e.stop >= stop_time => Experiment::of(e.stop, e.why.clone()),
+        (None, _) => Experiment::of(stop_time, format!("Experiment: {} s, the longest reference table; 500 output intervals, tolerance 1e-6.", num(stop_time))),
+    };
     let text = format!(
-        "within {pkg};\nmodel Mechatronics \"Mechatronic model of {pkg}: Mechanics with {count}\"\n  extends {pkg}.Mechanics;\n{decl}\nequation\n{conn}  annotation (\n    experiment(StopTime={}),\n    Documentation(info=\"<html>\n{}\n<p><code>Mechatronics</code> extends <code>Mechanics</code> and refers to joints by name only: a <code>Mechanics</code> regenerated after a CAD change slots under it unchanged. Generated by cad2mo {}.</p>\n{}\n</html>\"));\nend Mechatronics;\n",
-        num(stop_time),
+        "within {pkg};\nmodel Mechatronics \"Mechatronic model of {pkg}: Mechanics with {count}\"\n  extends {pkg}.Mechanics;\n{decl}\nequation\n{conn}  annotation (\n    {},\n    Diagram(\u{1}),\n    Icon(graphics={{{MECHATRONICS_ICON}}}),\n    Documentation(info=\"<html>\n{}\n<p><code>Mechatronics</code> extends <code>Mechanics</code> and refers to joints by name only: a <code>Mechanics</code> regenerated after a CAD change slots under it unchanged. Generated by cad2mo {}.</p>\n{}\n<p>{}</p>\n<p>Diagram: the Mechanics diagram, with each drive above the joint it moves, each contact force beside its body, and the reference tables and the collision and live-view blocks in a column left of the world.</p>\n</html>\"));\nend Mechatronics;\n",
+        experiment.annotation(),
         mstr(provenance_html),
         html(crate::pipeline::VERSION),
-        body
+        body,
+        mstr(&html(&experiment.why))
     );
+    let empty = Sheet::default();
+    let (text, extent) = super::diagram::extend::lay_out(&text, additions.diagram.unwrap_or(&empty));
+    let text = text.replacen("Diagram(\u{1})", &format!("Diagram({})", super::diagram::coordinate_system(&extent)), 1);
     let mut files = vec![(format!("{pkg}/Mechatronics.mo"), text.into_bytes())];
     if !motions.is_empty() {
         files.extend(motions_package(pkg, motions, &motion_names));

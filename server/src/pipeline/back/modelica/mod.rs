@@ -14,9 +14,11 @@
 //!
 //! The output is deterministic: no clock, no file order dependence beyond the IR's.
 
+pub mod diagram;
+pub mod doc;
 pub mod mechatronics;
 mod names;
 mod write;
 
 pub use names::{assign_with_hints, sanitize, Hints, Names, Scope, KEYWORDS};
-pub use write::{provenance_html as provenance, write, Layout, Options, Package};
+pub use write::{provenance_html as provenance, write, Experiment, Layout, Options, Package};

@@ -122,6 +122,8 @@ fn short_hash(s: &str) -> String {
 pub struct Hints {
     pub bodies: BTreeMap<String, String>,
     pub joints: BTreeMap<String, String>,
+    /// Diagram groups' (column, row) by node ID (see `diagram::plan`).
+    pub diagram: BTreeMap<String, (i32, i32)>,
 }
 
 /// As [`assign`], but an entity whose node ID has a hint gets that name first (when it is a valid

@@ -5,6 +5,8 @@ use std::fmt::Write as _;
 
 use nalgebra::{Isometry3, Matrix3, Translation3, Vector3};
 
+use super::diagram::plan::{half_for, Plan};
+use super::diagram::{Class, Sheet, Style, Want};
 use super::names::{self, sanitize, Names, Scope};
 use crate::pipeline::ir::{FrameId, FrameOwner, JointId, Model, PrimitiveKind};
 use crate::pipeline::passes::loops::{ConstraintClass, Cut};
@@ -42,6 +44,12 @@ pub struct Layout {
     /// Per coupling of the model (same order): the component(s) that couple the two drive
     /// flanges, or why none could.
     pub couplings: Vec<Result<String, String>>,
+    /// The Mechanics diagram: every component's placement and every connect's route
+    /// (`Mechatronics` places its own components around them).
+    pub diagram: Sheet,
+    /// Each group's (column, row) in the diagram by node ID (`world` for the world), kept by
+    /// the next version of the model.
+    pub diagram_groups: BTreeMap<String, (i32, i32)>,
 }
 
 impl Layout {
@@ -126,59 +134,40 @@ fn html(s: &str) -> String {
     s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
 }
 
-/// Placement on a simple grid: one column per kind of component, one row per component.
-fn placement(column: i32, row: usize) -> String {
-    let x = column * 40;
-    let y = -(row as i32) * 25;
-    format!(
-        "annotation (Placement(transformation(extent={{{{-10,-10}},{{10,10}}}}, origin={{{x},{y}}})))"
-    )
-}
-
 struct Writer<'a> {
     model: &'a Model,
     v: &'a Validated,
     pkg: &'a str,
     scope: Scope,
     decl: String,
-    conn: String,
     layout: Layout,
-    rows: [usize; 6],
+    plan: Plan,
+    sheet: Sheet,
+    /// The connects, in order, routed once every component stands.
+    wires: Vec<(String, String, Style)>,
+    /// How the connects being made are drawn.
+    style: Style,
     /// Followers of couplings that can be emitted: their start values are not fixed (the
     /// coupling fixes them).
     coupled: Vec<bool>,
 }
 
-const COL_WORLD: usize = 0;
-const COL_FRAME: usize = 1;
-const COL_JOINT: usize = 2;
-const COL_BODY: usize = 3;
-const COL_SHAPE: usize = 4;
-const COL_GROUND: usize = 5;
-
 impl Writer<'_> {
-    fn place(&mut self, col: usize) -> String {
-        let column = match col {
-            COL_WORLD | COL_GROUND => -4,
-            COL_FRAME => 4,
-            COL_JOINT => -1,
-            COL_BODY => 7,
-            _ => 10,
-        };
-        let row = self.rows[col];
-        self.rows[col] += 1;
-        placement(column, row + usize::from(col == COL_GROUND) * 2)
+    /// Places component `name` where the plan wants it (or the nearest free spot) and returns
+    /// its `Placement` annotation.
+    fn put(&mut self, name: &str, class: Class, want: Want) -> String {
+        self.sheet.add(name, class, want).annotation()
     }
 
     fn connect(&mut self, a: &str, b: &str) {
-        let _ = writeln!(self.conn, "  connect({a}, {b});");
+        self.wires.push((a.to_string(), b.to_string(), self.style));
     }
 
     /// Declares a fixed transform `name` for `iso` (frame_b in frame_a coordinates).
-    fn fixed(&mut self, name: &str, iso: &Isometry3<f64>, comment: &str) {
+    fn fixed(&mut self, name: &str, iso: &Isometry3<f64>, comment: &str, want: Want) {
         let r = iso.translation.vector;
         let rot = iso.rotation.to_rotation_matrix();
-        let place = self.place(COL_FRAME);
+        let place = self.put(name, Class::TwoPort, Want { half: half_for(name), ..want });
         if crate::pipeline::passes::kinematics::rotation_angle(&iso.rotation) <= crate::pipeline::passes::kinematics::IDENTITY_TOL {
             let _ = writeln!(
                 self.decl,
@@ -218,10 +207,12 @@ impl Writer<'_> {
                 } else {
                     let label = if frame.display_name.is_empty() { &frame.name } else { &frame.display_name };
                     let name = self.scope.take(&format!("{bname}_{}", sanitize(label, "f")));
+                    let want = self.plan.frame(self.model, f, half_for(&name));
                     self.fixed(
                         &name,
                         &rel,
                         &format!("Frame {} of {} (nodeID {})", frame.name, body.cad_name, frame.node_id),
+                        want,
                     );
                     self.connect(&format!("{bname}.frame_a"), &format!("{name}.frame_a"));
                     format!("{name}.frame_b")
@@ -233,10 +224,12 @@ impl Writer<'_> {
                     "world.frame_b".to_string()
                 } else {
                     let name = self.scope.take(&sanitize(&ground.name, "g"));
+                    let want = self.plan.frame(self.model, f, half_for(&name));
                     self.fixed(
                         &name,
                         &frame.pose,
                         &format!("Ground {} (nodeID {}) in the world frame", ground.name, ground.node_id),
+                        want,
                     );
                     self.connect("world.frame_b", &format!("{name}.frame_a"));
                     format!("{name}.frame_b")
@@ -261,6 +254,13 @@ impl Writer<'_> {
         let base = self.layout.connectors[&joint.base].clone();
         let follower = self.layout.connectors[&joint.follower].clone();
         let what = format!("{} (nodeID {})", joint.cad_name, joint.node_id);
+        self.style = if cut.is_some() { Style::Loop } else { Style::Frame };
+        // The chain's components in order (axes, elements, offset), for their places.
+        let mut slot = 0usize;
+        let mut at = |w: &Self, name: &str| {
+            slot += 1;
+            w.plan.element(jid, slot - 1, half_for(name))
+        };
         if cut == Some(&Cut::Omitted) {
             let (why, kind) = if joint.is_weld() {
                 ("redundant weld closing a rigid loop", "omitted-redundant-weld")
@@ -276,7 +276,8 @@ impl Writer<'_> {
                 self.connect(&base, &follower);
                 self.layout.emitted_as[jid.index()] = "connect";
             } else {
-                self.fixed(jname, &chain.residual, &format!("Rigid joint {what}"));
+                let want = at(self, jname);
+                self.fixed(jname, &chain.residual, &format!("Rigid joint {what}"), want);
                 self.connect(&base, &format!("{jname}.frame_a"));
                 self.connect(&format!("{jname}.frame_b"), &follower);
                 self.layout.joint_elements[jid.index()].push(jname.to_string());
@@ -298,7 +299,8 @@ impl Writer<'_> {
             let last_cut = if k + 1 == count { cut } else { None };
             let kind = match (e.kind, last_cut) {
                 (PrimitiveKind::Revolute, Some(Cut::PlanarLoopConstraint)) => {
-                    let place = self.place(COL_JOINT);
+                    let want = at(self, &name);
+                    let place = self.put(&name, Class::TwoPort, want);
                     let _ = writeln!(
                         self.decl,
                         "  {MB}.Joints.RevolutePlanarLoopConstraint {name}(n={}, animation=false)\n    \"{}: closes a planar loop\" {place};",
@@ -311,7 +313,8 @@ impl Writer<'_> {
                     let axes = Isometry3::from_parts(Translation3::identity(), cc.axes);
                     if !is_identity(&axes) {
                         let axes_name = self.scope.take(&format!("{name}_axes"));
-                        self.fixed(&axes_name, &axes, &format!("Axes of the loop cut {name}"));
+                        let want = at(self, &axes_name);
+                        self.fixed(&axes_name, &axes, &format!("Axes of the loop cut {name}"), want);
                         self.connect(&prev, &format!("{axes_name}.frame_a"));
                         prev = format!("{axes_name}.frame_b");
                         extra.push(axes_name);
@@ -329,7 +332,8 @@ impl Writer<'_> {
                         params.push(format!("{axis}_locked={locked}"));
                     }
                     params.push("animation=false".to_string());
-                    let place = self.place(COL_JOINT);
+                    let want = at(self, &name);
+                    let place = self.put(&name, Class::TwoPort, want);
                     let _ = writeln!(
                         self.decl,
                         "  {MB}.Joints.Constraints.{} {name}({})\n    \"{}: closes a loop, imposing only its independent equations\" {place};",
@@ -354,7 +358,8 @@ impl Writer<'_> {
                     } else {
                         ("Prismatic", "s", "v", "prismatic")
                     };
-                    let place = self.place(COL_JOINT);
+                    let want = at(self, &name);
+                    let place = self.put(&name, Class::Joint, want);
                     let _ = writeln!(
                         self.decl,
                         "  {}.Components.{class} {name}(\n    n={},\n    {q}(start={}{fixed}),\n    {qd}(start=0{fixed}))\n    \"{}\" {place};",
@@ -371,7 +376,8 @@ impl Writer<'_> {
                     } else {
                         "(\n    enforceStates=true,\n    useQuaternions=true,\n    angles_fixed=true,\n    w_rel_a_fixed=true)".to_string()
                     };
-                    let place = self.place(COL_JOINT);
+                    let want = at(self, &name);
+                    let place = self.put(&name, Class::TwoPort, want);
                     let _ = writeln!(self.decl, "  {MB}.Joints.Spherical {name}{states}\n    \"{}\" {place};", mstr(&desc));
                     "spherical"
                 }
@@ -385,7 +391,8 @@ impl Writer<'_> {
             self.connect(&prev, &follower);
         } else {
             let name = self.scope.take(&format!("{jname}_offset"));
-            self.fixed(&name, &offset, &format!("CAD offset of joint {what} at its start values"));
+            let want = at(self, &name);
+            self.fixed(&name, &offset, &format!("CAD offset of joint {what} at its start values"), want);
             self.connect(&prev, &format!("{name}.frame_a"));
             self.connect(&format!("{name}.frame_b"), &follower);
             extra.push(name);
@@ -428,32 +435,39 @@ impl Writer<'_> {
         let name = self.scope.take(&format!("{}_mimic", jnames[f.index()]));
         let desc = mstr(&format!("{} = {m} * {} (URDF mimic)", jnames[f.index()], jnames[l.index()]));
         let rot = "Modelica.Mechanics.Rotational.Components";
+        self.style = Style::Flange;
+        let mut k = 0;
+        let mut put = |w: &mut Self, name: &str| {
+            k += 1;
+            let want = w.plan.coupling(f, k - 1, half_for(name));
+            w.put(name, Class::TwoPort, want)
+        };
         use PrimitiveKind::{Prismatic as P, Revolute as R};
         match (lk, fk) {
             (R, R) => {
-                let place = self.place(COL_JOINT);
+                let place = put(self, &name);
                 let _ = writeln!(self.decl, "  {rot}.IdealGear {name}(ratio=1/({m}))\n    \"{desc}\" {place};");
                 self.connect(&ld, &format!("{name}.flange_a"));
                 self.connect(&format!("{name}.flange_b"), &fd);
             }
             (R, P) => {
-                let place = self.place(COL_JOINT);
+                let place = put(self, &name);
                 let _ = writeln!(self.decl, "  {rot}.IdealGearR2T {name}(ratio=1/({m}))\n    \"{desc}\" {place};");
                 self.connect(&ld, &format!("{name}.flangeR"));
                 self.connect(&format!("{name}.flangeT"), &fd);
             }
             (P, R) => {
-                let place = self.place(COL_JOINT);
+                let place = put(self, &name);
                 let _ = writeln!(self.decl, "  {rot}.IdealGearR2T {name}(ratio={m})\n    \"{desc}\" {place};");
                 self.connect(&fd, &format!("{name}.flangeR"));
                 self.connect(&format!("{name}.flangeT"), &ld);
             }
             _ => {
                 let second = self.scope.take(&format!("{name}_b"));
-                let place = self.place(COL_JOINT);
+                let place = put(self, &name);
                 let _ = writeln!(self.decl, "  {rot}.IdealGearR2T {name}(ratio=1)\n    \"{desc}: leader side\" {place};");
-                let place = self.place(COL_JOINT);
-                let _ = writeln!(self.decl, "  {rot}.IdealGearR2T {second}(ratio=1/({m}))\n    \"{desc}: follower side\" {place};");
+                let place2 = put(self, &second);
+                let _ = writeln!(self.decl, "  {rot}.IdealGearR2T {second}(ratio=1/({m}))\n    \"{desc}: follower side\" {place2};");
                 self.connect(&format!("{name}.flangeT"), &ld);
                 self.connect(&format!("{second}.flangeT"), &fd);
                 self.connect(&format!("{name}.flangeR"), &format!("{second}.flangeR"));
@@ -479,14 +493,16 @@ pub fn write(model: &Model, v: &Validated, opts: &Options) -> Package {
         pkg,
         scope: names.scope.clone(),
         decl: String::new(),
-        conn: String::new(),
         layout: Layout {
             shapes: vec![None; model.bodies.len()],
             joint_elements: vec![Vec::new(); model.joints.len()],
             emitted_as: vec![""; model.joints.len()],
             ..Layout::default()
         },
-        rows: [0; 6],
+        plan: Plan::new(model, v, &opts.name_hints.diagram),
+        sheet: Sheet::default(),
+        wires: Vec::new(),
+        style: Style::Frame,
         coupled: vec![false; model.joints.len()],
     };
     for c in &model.couplings {
@@ -497,7 +513,7 @@ pub fn write(model: &Model, v: &Validated, opts: &Options) -> Package {
     let g = Vector3::from(opts.gravity);
     let g_norm = g.norm();
     let n = if g_norm > 0.0 { g / g_norm } else { Vector3::new(0.0, -1.0, 0.0) };
-    let place = w.place(COL_WORLD);
+    let place = w.put("world", Class::World, w.plan.world(10));
     let _ = writeln!(
         w.decl,
         "  inner {MB}.World world(n={}, g={}) \"World frame: the CAD assembly's frame\"\n    {place};",
@@ -525,7 +541,8 @@ pub fn write(model: &Model, v: &Validated, opts: &Options) -> Package {
         } else {
             String::new()
         };
-        let place = w.place(COL_BODY);
+        let want = w.plan.body(crate::pipeline::ir::BodyId(i as u32), half_for(name).max(15));
+        let place = w.put(name, Class::TwoPort, want);
         let _ = writeln!(
             w.decl,
             "  {MB}.Parts.Body {name}(\n    m={},\n    r_CM={},\n    I_11={}, I_22={}, I_33={},\n    I_21={}, I_31={}, I_32={}{anim}{initial})\n    \"{}{} (nodeID {})\" {place};",
@@ -580,6 +597,7 @@ pub fn write(model: &Model, v: &Validated, opts: &Options) -> Package {
         }
     }
 
+    w.style = Style::Frame;
     let _ = writeln!(w.decl, "\n  // Shapes: CAD meshes in each body frame, metres");
     for (i, body) in model.bodies.iter().enumerate() {
         if body.mesh.as_ref().is_none_or(|m| m.triangles.is_empty()) {
@@ -588,7 +606,8 @@ pub fn write(model: &Model, v: &Validated, opts: &Options) -> Package {
         let bname = &names.bodies[i];
         let sname = w.scope.take(&format!("{bname}_shape"));
         let c = body.display_rgb();
-        let place = w.place(COL_SHAPE);
+        let want = w.plan.shape(crate::pipeline::ir::BodyId(i as u32), half_for(&sname));
+        let place = w.put(&sname, Class::TwoPort, want);
         let _ = writeln!(
             w.decl,
             "  {MB}.Visualizers.FixedShape {sname}(\n    shapeType=\"modelica://{pkg}/Resources/Shapes/{bname}.dxf\",\n    length=1, width=1, height=1,\n    extra=0,\n    color={{{}, {}, {}}})\n    \"Shape of {}\" {place};",
@@ -601,6 +620,9 @@ pub fn write(model: &Model, v: &Validated, opts: &Options) -> Package {
         w.layout.shapes[i] = Some(bname.clone());
     }
 
+    for (a, b, style) in std::mem::take(&mut w.wires) {
+        w.sheet.connect(&a, &b, style);
+    }
     let mechanics = mechanics_file(&w, opts);
     let mut files = vec![
         (format!("{pkg}/package.mo"), package_file(model, opts).into_bytes()),
@@ -610,6 +632,8 @@ pub fn write(model: &Model, v: &Validated, opts: &Options) -> Package {
     files.extend(components(pkg, opts));
     let mut layout = w.layout;
     layout.names = Some(names);
+    layout.diagram_groups = w.plan.groups;
+    layout.diagram = w.sheet;
     Package { files, layout }
 }
 
@@ -656,16 +680,94 @@ fn mechanics_file(w: &Writer, opts: &Options) -> String {
         let _ = write!(notes, "<li>Body {} has no path to the ground (free body).</li>", html(&model.body(*b).cad_name));
     }
     let notes = if notes.is_empty() { String::new() } else { format!("\n<ul>{}</ul>", mstr(&notes)) };
+    let ex = Experiment::for_model(model, opts.gravity);
+    let extent = w.sheet.extent(40);
     format!(
-        "within {pkg};\nmodel Mechanics \"Mechanical model of {} ({} bodies, {} joints)\"\n{}\nequation\n{}  annotation (\n    experiment(StopTime=1),\n    Documentation(info=\"<html>\n{}\n<p>All quantities in SI units. Each body's frame_a is its CAD part frame CS1; joint start values reproduce the CAD pose.</p>{}\n</html>\"));\nend Mechanics;\n",
+        "within {pkg};\nmodel Mechanics \"Mechanical model of {} ({} bodies, {} joints)\"\n{}\nequation\n{}  annotation (\n    {},\n    Diagram({}),\n    Icon({}, graphics={{{}}}),\n    Documentation(info=\"<html>\n{}\n<p>All quantities in SI units. Each body's frame_a is its CAD part frame CS1; joint start values reproduce the CAD pose.</p>{}\n<p>{}</p>\n<p>Diagram: the kinematic tree from the world (left) to the deepest bodies (right), one column per depth; each body stands with the frames fixed on it; the joints stand between the bodies they connect; dashed red lines close kinematic loops.</p>\n</html>\"));\nend Mechanics;\n",
         mstr(&model.name),
         model.bodies.len(),
         model.joints.len(),
         w.decl.trim_end(),
-        w.conn,
+        w.sheet.equations(0),
+        ex.annotation(),
+        super::diagram::coordinate_system(&extent),
+        super::diagram::coordinate_system(&super::diagram::Rect { x1: -100, y1: -100, x2: 100, y2: 100 }),
+        MECHANICS_ICON,
         provenance(model, opts),
-        notes
+        notes,
+        mstr(&ex.why)
     )
+}
+
+/// The icon of `Mechanics`: a two-link arm on a base.
+pub const MECHANICS_ICON: &str = "\n      Rectangle(extent={{-100,-100},{100,100}}, lineColor={95,95,95}, fillColor={255,255,255}, fillPattern=FillPattern.Solid, radius=8),\n      Rectangle(extent={{-80,-80},{0,-66}}, lineColor={95,95,95}, fillColor={175,175,175}, fillPattern=FillPattern.Solid),\n      Line(points={{-40,-66},{-40,10},{50,50}}, color={95,95,95}, thickness=1),\n      Ellipse(extent={{-50,-76},{-30,-56}}, lineColor={95,95,95}, fillColor={255,255,255}, fillPattern=FillPattern.Solid),\n      Ellipse(extent={{-50,0},{-30,20}}, lineColor={95,95,95}, fillColor={255,255,255}, fillPattern=FillPattern.Solid),\n      Polygon(points={{50,50},{70,40},{66,62}}, lineColor={95,95,95}, fillColor={95,95,95}, fillPattern=FillPattern.Solid),\n      Text(extent={{-150,110},{150,150}}, textString=\"%name\", textColor={0,0,255})";
+
+/// The `experiment` annotation of a model and the sentence that says how it was chosen.
+#[derive(Clone, Debug)]
+pub struct Experiment {
+    pub stop: f64,
+    pub why: String,
+}
+
+impl Experiment {
+    /// `Mechanics`: with gravity, three periods of a pendulum as long as the mechanism's reach
+    /// (the largest distance of a body's centre of mass from the world origin), rounded up to a
+    /// readable value within 1 to 20 s; 1 s without gravity or without mass.
+    pub fn for_model(model: &Model, gravity: [f64; 3]) -> Experiment {
+        let g = Vector3::from(gravity).norm();
+        let mut reach: f64 = 0.0;
+        for (i, body) in model.bodies.iter().enumerate() {
+            if body.mass > 0.0 {
+                let mp = model.mass_properties_cs1(crate::pipeline::ir::BodyId(i as u32));
+                let cg = model.frame(body.cs1).pose * nalgebra::Point3::from(mp.r_cm);
+                reach = reach.max(cg.coords.norm());
+            }
+        }
+        if !(g > 0.0 && reach > 0.0 && reach.is_finite()) {
+            return Experiment { stop: 1.0, why: "Experiment: 1 s (no gravity or no mass to set a time scale), 500 output intervals, tolerance 1e-6.".into() };
+        }
+        let period = 2.0 * std::f64::consts::PI * (reach / g).sqrt();
+        let stop = nice_up((3.0 * period).clamp(1.0, 20.0));
+        Experiment {
+            stop,
+            why: format!(
+                "Experiment: {} s, about three swings of a pendulum as long as the mechanism's reach ({} m, period {} s), 500 output intervals, tolerance 1e-6.",
+                num(stop),
+                num((reach * 1000.0).round() / 1000.0),
+                num((period * 100.0).round() / 100.0)
+            ),
+        }
+    }
+
+    /// For a run of `stop` seconds.
+    pub fn of(stop: f64, why: String) -> Experiment {
+        Experiment { stop, why }
+    }
+
+    pub fn annotation(&self) -> String {
+        format!("experiment(StopTime={}, Interval={}, Tolerance=1e-06)", num(self.stop), num(interval(self.stop)))
+    }
+}
+
+/// The output interval for a run of `stop` seconds: 500 intervals, as a round number.
+pub fn interval(stop: f64) -> f64 {
+    let raw = stop / 500.0;
+    let p = 10f64.powf(raw.log10().floor());
+    let m = raw / p;
+    let m = if m <= 1.0 { 1.0 } else if m <= 2.0 { 2.0 } else if m <= 5.0 { 5.0 } else { 10.0 };
+    let v = m * p;
+    format!("{v:.12e}").parse().unwrap_or(v)
+}
+
+/// `x` rounded up to 1, 2 or 5 times a power of ten, or a whole number of seconds above 2.
+fn nice_up(x: f64) -> f64 {
+    if x > 2.0 {
+        return x.ceil();
+    }
+    let p = 10f64.powf(x.log10().floor());
+    let m = x / p;
+    let m = if m <= 1.0 { 1.0 } else if m <= 2.0 { 2.0 } else if m <= 5.0 { 5.0 } else { 10.0 };
+    m * p
 }
 
 fn components(pkg: &str, opts: &Options) -> Vec<(String, Vec<u8>)> {

@@ -7,6 +7,7 @@
 //!
 //! Plain data in, text out: no IO, no panics.
 
+use crate::pipeline::back::modelica::diagram::extend::PLACEHOLDER;
 use std::fmt::Write as _;
 
 use super::num;
@@ -194,7 +195,7 @@ pub fn declarations(pkg: &str, bodies: &[String], shapes: &[Option<Vec<ConvexPar
     );
     let _ = writeln!(
         s,
-        "  {pkg}.Components.Collision.World collisionWorld(\n    nBodies={n},\n    nParts={},\n    partBody={{{}}},\n    partVertices={{{}}},\n    partRadius={{{}}},\n    vertices={{\n      {}}},\n    checked={{{}}},\n    r_0={{{}}},\n    R_T={{{}}},\n    v_0={{{}}},\n    w_a={{{}}}) if collisions \"Contact forces between the collision shapes\"\n    annotation (Placement(transformation(extent={{{{-10,-10}},{{10,10}}}}, origin={{-140,20}})));",
+        "  {pkg}.Components.Collision.World collisionWorld(\n    nBodies={n},\n    nParts={},\n    partBody={{{}}},\n    partVertices={{{}}},\n    partRadius={{{}}},\n    vertices={{\n      {}}},\n    checked={{{}}},\n    r_0={{{}}},\n    R_T={{{}}},\n    v_0={{{}}},\n    w_a={{{}}}) if collisions \"Contact forces between the collision shapes\"\n    {PLACEHOLDER};",
         part_body.len(),
         part_body.join(", "),
         part_vertices.join(", "),
@@ -206,13 +207,12 @@ pub fn declarations(pkg: &str, bodies: &[String], shapes: &[Option<Vec<ConvexPar
         list(&|b| format!("{b}.v_0")),
         list(&|b| format!("{b}.w_a")),
     );
-    for (k, &i) in shaped.iter().enumerate() {
+    for &i in &shaped {
         let _ = writeln!(
             s,
-            "  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque {} if collisions \"Contact force and torque on {} (resolved in world)\"\n    annotation (Placement(transformation(extent={{{{-10,-10}},{{10,10}}}}, origin={{-110,{}}})));",
+            "  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque {} if collisions \"Contact force and torque on {} (resolved in world)\"\n    {PLACEHOLDER};",
             force_name(&bodies[i]),
-            bodies[i],
-            20 - 30 * k as i64
+            bodies[i]
         );
     }
     let _ = writeln!(s, "equation");

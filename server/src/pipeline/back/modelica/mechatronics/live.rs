@@ -3,6 +3,7 @@
 //! declarations `Mechatronics` gets when the package is written for a model the service knows
 //! (its id and version go into every frame; see docs/live-protocol.md).
 
+use crate::pipeline::back::modelica::diagram::extend::PLACEHOLDER;
 use std::fmt::Write as _;
 
 use sha2::{Digest, Sha256};
@@ -175,7 +176,7 @@ pub fn declarations(pkg: &str, target: &LiveTarget, bodies: &[String]) -> String
     );
     let _ = writeln!(
         s,
-        "  {pkg}.Components.Visualization.LiveView liveViewer(\n    nBodies={},\n    host=liveHost,\n    port=livePort,\n    token=liveToken,\n    modelId=\"{}\",\n    version={},\n    layout=\"{}\",\n    samplePeriod=livePeriod,\n    realTime=liveRealTime,\n    r_0={{{}}},\n    R_T={{{}}}) if liveView \"Sends the bodies' poses to cad2mo\"\n    annotation (Placement(transformation(extent={{{{-10,-10}},{{10,10}}}}, origin={{-140,60}})));",
+        "  {pkg}.Components.Visualization.LiveView liveViewer(\n    nBodies={},\n    host=liveHost,\n    port=livePort,\n    token=liveToken,\n    modelId=\"{}\",\n    version={},\n    layout=\"{}\",\n    samplePeriod=livePeriod,\n    realTime=liveRealTime,\n    r_0={{{}}},\n    R_T={{{}}}) if liveView \"Sends the bodies' poses to cad2mo\"\n    {PLACEHOLDER};",
         bodies.len(),
         mstr(&target.model_id),
         target.version,

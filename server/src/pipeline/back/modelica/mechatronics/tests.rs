@@ -20,6 +20,7 @@ fn choice(class: &str, params: &[(&str, ParamValue)]) -> ClassChoice {
     ClassChoice {
         modelica_class: class.to_string(),
         params: params.iter().map(|(n, v)| (n.to_string(), v.clone())).collect(),
+        instance: String::new(),
     }
 }
 

@@ -1,0 +1,325 @@
+//! The diagram of a generated model: where each component stands and how each `connect` is
+//! drawn. A [`Sheet`] takes components with the spot the layout wants for them ([`Sheet::add`]),
+//! moves a component that would overlap another to the nearest free spot, and routes every
+//! connection orthogonally around the components ([`route`]). It knows the connector positions
+//! of the classes the back end emits ([`port`]); everything is in diagram units on a 5-unit grid,
+//! so the output is exact integers and the same input always gives the same file.
+
+pub mod extend;
+pub mod plan;
+pub mod svg;
+mod route;
+
+use std::collections::{BTreeMap, HashMap};
+use std::fmt::Write as _;
+
+/// The grid every origin, extent and route corner lies on.
+pub const GRID: i32 = 5;
+
+/// A rectangle, `x1 < x2`, `y1 < y2`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Rect {
+    pub x1: i32,
+    pub y1: i32,
+    pub x2: i32,
+    pub y2: i32,
+}
+
+impl Rect {
+    pub fn grow(&self, d: i32, top: i32) -> Rect {
+        Rect { x1: self.x1 - d, y1: self.y1 - d, x2: self.x2 + d, y2: self.y2 + top }
+    }
+    pub fn overlaps(&self, o: &Rect) -> bool {
+        self.x1 < o.x2 && o.x1 < self.x2 && self.y1 < o.y2 && o.y1 < self.y2
+    }
+    pub fn union(&self, o: &Rect) -> Rect {
+        Rect { x1: self.x1.min(o.x1), y1: self.y1.min(o.y1), x2: self.x2.max(o.x2), y2: self.y2.max(o.y2) }
+    }
+}
+
+/// What a connector is drawn like: the classes the back end instantiates, by their connectors.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Class {
+    /// MSL World: `frame_b` on the right.
+    World,
+    /// Parts with `frame_a` on the left and `frame_b` on the right (bodies, fixed transforms,
+    /// spherical joints, loop constraints, shapes), or 1-D parts with `flange_a`/`flange_b`,
+    /// `flangeR`/`flangeT` at the same places.
+    TwoPort,
+    /// `Components.Revolute`/`Prismatic`: frames as [`Class::TwoPort`] and the `drive` flange at
+    /// {-60, 100}.
+    Joint,
+    /// `Components.Drives.*Drive`: its `flange` on the right, {110, 0}.
+    Drive,
+    /// MSL `Forces.WorldForceAndTorque`: `frame_b` right, inputs `force` {-120, 60} and
+    /// `torque` {-120, -60}.
+    WorldForce,
+    /// `Components.Collision.World`: outputs `force` {110, 40} and `torque` {110, -40}.
+    CollisionWorld,
+    /// A block with no connection drawn (motion tables, the live viewer).
+    Other,
+}
+
+/// The connector `name` of a component of class `class`, in the component's icon coordinates
+/// ({-100, -100} to {100, 100}).
+pub fn port(class: Class, name: &str) -> Option<(f64, f64)> {
+    Some(match (class, name) {
+        (Class::World, "frame_b") => (100.0, 0.0),
+        (Class::TwoPort | Class::Joint, "frame_a" | "flange_a" | "flangeR") => (-100.0, 0.0),
+        (Class::TwoPort | Class::Joint, "frame_b" | "flange_b" | "flangeT") => (100.0, 0.0),
+        (Class::Joint, "drive") => (-60.0, 100.0),
+        (Class::Drive, "flange") => (110.0, 0.0),
+        (Class::WorldForce, "frame_b") => (100.0, 0.0),
+        (Class::WorldForce, "force") => (-120.0, 60.0),
+        (Class::WorldForce, "torque") => (-120.0, -60.0),
+        (Class::CollisionWorld, "force") => (110.0, 40.0),
+        (Class::CollisionWorld, "torque") => (110.0, -40.0),
+        _ => return None,
+    })
+}
+
+/// A placed component: origin, half size (square extent) and whether it is mirrored
+/// horizontally (extent written right to left, so `frame_a` is on the right).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Placed {
+    pub x: i32,
+    pub y: i32,
+    pub half: i32,
+    pub flip: bool,
+    pub class: Class,
+}
+
+impl Placed {
+    pub fn rect(&self) -> Rect {
+        Rect { x1: self.x - self.half, y1: self.y - self.half, x2: self.x + self.half, y2: self.y + self.half }
+    }
+
+    /// The `Placement` annotation.
+    pub fn annotation(&self) -> String {
+        let h = self.half;
+        let (a, b) = if self.flip { (h, -h) } else { (-h, h) };
+        format!(
+            "annotation (Placement(transformation(extent={{{{{a},{}}},{{{b},{h}}}}}, origin={{{},{}}})))",
+            -h, self.x, self.y
+        )
+    }
+
+    /// A connector's position in the diagram and the direction a line leaves it in.
+    pub fn port(&self, name: &str) -> Option<((f64, f64), (i32, i32))> {
+        let (px, py) = port(self.class, name)?;
+        let sx = if self.flip { -1.0 } else { 1.0 };
+        let h = f64::from(self.half) / 100.0;
+        let at = (f64::from(self.x) + sx * px * h, f64::from(self.y) + py * h);
+        let out = if px.abs() >= py.abs() { ((sx * px).signum() as i32, 0) } else { (0, py.signum() as i32) };
+        Some((at, out))
+    }
+}
+
+/// Where the layout wants a component.
+#[derive(Clone, Copy, Debug)]
+pub struct Want {
+    pub x: i32,
+    pub y: i32,
+    pub half: i32,
+    pub flip: bool,
+}
+
+/// How a connection is drawn.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Style {
+    /// A MultiBody frame connection (grey, thick).
+    Frame,
+    /// The connection that closes a kinematic loop (red, dashed), so the loops stand out.
+    Loop,
+    /// A 1-D flange (black).
+    Flange,
+    /// A signal (blue).
+    Signal,
+}
+
+impl Style {
+    fn annotation(self) -> &'static str {
+        match self {
+            Style::Frame => "color={95,95,95}, thickness=0.5",
+            Style::Loop => "color={238,46,47}, pattern=LinePattern.Dash, thickness=0.5",
+            Style::Flange => "color={0,0,0}",
+            Style::Signal => "color={0,0,127}",
+        }
+    }
+}
+
+/// One `connect` with its route.
+#[derive(Clone, Debug)]
+pub struct Wire {
+    pub a: String,
+    pub b: String,
+    pub style: Style,
+    pub points: Vec<(f64, f64)>,
+}
+
+/// The components of a diagram and their wires.
+#[derive(Clone, Debug, Default)]
+pub struct Sheet {
+    pub placed: BTreeMap<String, Placed>,
+    /// Component names in the order they were added.
+    pub order: Vec<String>,
+    /// Spatial buckets of [`BUCKET`] units: the components whose extent (grown by the margin)
+    /// touches each.
+    buckets: HashMap<(i32, i32), Vec<usize>>,
+    rects: Vec<Rect>,
+    pub wires: Vec<Wire>,
+    /// Cells wires already use (for spreading later wires apart).
+    used: HashMap<(i32, i32), u8>,
+}
+
+const BUCKET: i32 = 100;
+/// Free space kept around every component (the name is drawn above it: more room on top).
+const MARGIN: i32 = 5;
+const MARGIN_TOP: i32 = 10;
+
+fn floor_div(a: i32, b: i32) -> i32 {
+    a.div_euclid(b)
+}
+
+impl Sheet {
+    fn keep_out(r: &Rect) -> Rect {
+        r.grow(MARGIN, MARGIN_TOP)
+    }
+
+    fn free(&self, r: &Rect) -> bool {
+        let g = Self::keep_out(r);
+        for bx in floor_div(g.x1, BUCKET)..=floor_div(g.x2, BUCKET) {
+            for by in floor_div(g.y1, BUCKET)..=floor_div(g.y2, BUCKET) {
+                if let Some(list) = self.buckets.get(&(bx, by)) {
+                    if list.iter().any(|&i| Self::keep_out(&self.rects[i]).overlaps(&g)) {
+                        return false;
+                    }
+                }
+            }
+        }
+        true
+    }
+
+    /// Places `name` at `want`, or where it is nearest to it and overlaps nothing (searching
+    /// rings of grid spots outwards, the same order every time).
+    pub fn add(&mut self, name: &str, class: Class, want: Want) -> Placed {
+        let snap = |v: i32| v.div_euclid(GRID) * GRID;
+        let (wx, wy) = (snap(want.x), snap(want.y));
+        let at = |x: i32, y: i32| Placed { x, y, half: want.half, flip: want.flip, class };
+        let mut p = at(wx, wy);
+        let step = 2 * GRID;
+        'search: for ring in 0..10_000 {
+            if ring == 0 {
+                if self.free(&p.rect()) {
+                    break;
+                }
+                continue;
+            }
+            // Down first (layouts grow downwards), then right, then up, then left.
+            let r = ring * step;
+            let mut spots = Vec::with_capacity(8 * ring as usize);
+            for k in -ring..=ring {
+                spots.push((wx + k * step, wy - r));
+            }
+            for k in -ring..=ring {
+                spots.push((wx + r, wy - k * step));
+            }
+            for k in -ring..=ring {
+                spots.push((wx + k * step, wy + r));
+            }
+            for k in -ring..=ring {
+                spots.push((wx - r, wy - k * step));
+            }
+            spots.sort_by_key(|(x, y)| ((x - wx).abs() + (y - wy).abs(), *y, *x));
+            for (x, y) in spots {
+                let q = at(x, y);
+                if self.free(&q.rect()) {
+                    p = q;
+                    break 'search;
+                }
+            }
+        }
+        let r = p.rect();
+        let i = self.rects.len();
+        self.rects.push(r);
+        let g = Self::keep_out(&r);
+        for bx in floor_div(g.x1 - BUCKET, BUCKET)..=floor_div(g.x2 + BUCKET, BUCKET) {
+            for by in floor_div(g.y1 - BUCKET, BUCKET)..=floor_div(g.y2 + BUCKET, BUCKET) {
+                self.buckets.entry((bx, by)).or_default().push(i);
+            }
+        }
+        self.placed.insert(name.to_string(), p);
+        self.order.push(name.to_string());
+        p
+    }
+
+    /// The bounding box of every component and wire, grown by `margin` and rounded out to 20.
+    pub fn extent(&self, margin: i32) -> Rect {
+        let mut b: Option<Rect> = None;
+        for r in &self.rects {
+            b = Some(b.map_or(*r, |b| b.union(r)));
+        }
+        for w in &self.wires {
+            for &(x, y) in &w.points {
+                let r = Rect { x1: x.floor() as i32, y1: y.floor() as i32, x2: x.ceil() as i32, y2: y.ceil() as i32 };
+                b = Some(b.map_or(r, |b| b.union(&r)));
+            }
+        }
+        let b = b.unwrap_or(Rect { x1: -100, y1: -100, x2: 100, y2: 100 });
+        let down = |v: i32| (v - margin).div_euclid(20) * 20;
+        let up = |v: i32| -((-(v + margin)).div_euclid(20) * 20);
+        Rect { x1: down(b.x1), y1: down(b.y1), x2: up(b.x2), y2: up(b.y2) }
+    }
+
+    /// The component and connector of a `connect` argument (`a.frame_b`, `f.force[2, :]`).
+    fn split(arg: &str) -> Option<(&str, &str)> {
+        let (comp, conn) = arg.split_once('.')?;
+        let conn = conn.split('[').next()?.trim();
+        Some((comp, conn))
+    }
+
+    /// Records `connect(a, b)` and routes its line. A connector the sheet does not know
+    /// (a component placed elsewhere) gets no line.
+    pub fn connect(&mut self, a: &str, b: &str, style: Style) {
+        let ends = Self::split(a).zip(Self::split(b)).and_then(|((ca, pa), (cb, pb))| {
+            let (pa_, pb_) = (self.placed.get(ca)?, self.placed.get(cb)?);
+            Some(((pa_.port(pa)?, pa_.rect()), (pb_.port(pb)?, pb_.rect())))
+        });
+        let points = match ends {
+            Some((from, to)) => route::route(self, from, to),
+            None => Vec::new(),
+        };
+        self.wires.push(Wire { a: a.to_string(), b: b.to_string(), style, points });
+    }
+
+    /// The `connect` equations with their `Line` annotations, in the order they were made.
+    pub fn equations(&self, from: usize) -> String {
+        let mut s = String::new();
+        for w in &self.wires[from..] {
+            if w.points.len() < 2 {
+                let _ = writeln!(s, "  connect({}, {});", w.a, w.b);
+                continue;
+            }
+            let pts: Vec<String> = w.points.iter().map(|(x, y)| format!("{{{},{}}}", fmt(*x), fmt(*y))).collect();
+            let _ = writeln!(s, "  connect({}, {})\n    annotation (Line(points={{{}}}, {}));", w.a, w.b, pts.join(","), w.style.annotation());
+        }
+        s
+    }
+}
+
+/// A coordinate: an integer when it is one, else one decimal (ports of small components).
+fn fmt(v: f64) -> String {
+    if (v - v.round()).abs() < 1e-9 {
+        format!("{}", v.round() as i64)
+    } else {
+        format!("{}", (v * 10.0).round() / 10.0)
+    }
+}
+
+/// A `Diagram` and `Icon` coordinate system for extent `r`.
+pub fn coordinate_system(r: &Rect) -> String {
+    format!("coordinateSystem(preserveAspectRatio=false, extent={{{{{},{}}},{{{},{}}}}})", r.x1, r.y1, r.x2, r.y2)
+}
+
+#[cfg(test)]
+mod tests;
