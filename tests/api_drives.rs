@@ -116,7 +116,7 @@ async fn drives_survive_a_cad_change_and_reexport() {
     let mech = unzip_text(&pkg, "/Mechatronics.mo").await;
     assert!(mech.contains("drive_RootPart_BRACKET") && mech.contains("drive_SLIDER_TOOL"), "{mech}");
     assert!(mech.contains("ratio=100"), "{mech}");
-    assert!(mech.contains("connect(drive_SLIDER_TOOL.flange, SLIDER_TOOL.drive);"), "{mech}");
+    assert!(mech.contains("connect(drive_SLIDER_TOOL.flange, SLIDER_TOOL.drive)"), "{mech}");
 
     // Version 2: the removed joint's drive is orphaned, the renamed body's joint keeps its name.
     let (_, version, job) = app.upload_version_ok(&model, v2, &[]).await;

@@ -206,7 +206,7 @@ async fn end_to_end_in_chromium() {
         .and_then(|r| r.trim().parse().ok())
         .unwrap_or_else(|| panic!("no gear ratio in\n{decl}"));
     assert_eq!(ratio, 100.0, "the drive of {joint} has gear ratio 100:\n{decl}");
-    assert!(mech.contains(&format!("connect(drive_{joint}.flange, {joint}.drive);")), "the drive is connected to {joint}:\n{mech}");
+    assert!(mech.contains(&format!("connect(drive_{joint}.flange, {joint}.drive)")), "the drive is connected to {joint}:\n{mech}");
 
     // The exported library is the XML the UI downloaded, with the edited gain.
     let xml = std::fs::read_to_string(result["library"].as_str().expect("library path")).expect("library");
@@ -230,7 +230,12 @@ async fn end_to_end_in_chromium() {
     assert!(collision["interference"]["depth"].as_f64().is_some_and(|d| d > 0.0), "an interference with its depth: {collision}");
     assert!(collision["first_contact"]["time"].as_f64().is_some_and(|t| t > 0.0), "the motion's first contact: {collision}");
     assert!(collision["min_distance"].as_f64().is_some_and(|d| d < 0.0), "the pair penetrates along the motion: {collision}");
-    for png in ["1-models-empty", "2-model-3d", "6-drives-refused", "7-drives-saved", "8-library", "10-model-versions", "12-narrow-model", "15-job-progress", "26-collision-interference", "27-collision-motion", "13f-narrow-collision"] {
+    // The Modelica diagram tab (web/e2e/diagram.mjs): every body drawn, lines, the drive shown.
+    let diagram = &result["diagram"];
+    println!("diagram: {diagram}");
+    assert!(diagram["components"].as_u64().is_some_and(|n| n >= 6), "components drawn: {diagram}");
+    assert!(diagram["drives"].as_u64().is_some_and(|n| n >= 1), "the saved drive in the Mechatronics diagram: {diagram}");
+    for png in ["1-models-empty", "2-model-3d", "6-drives-refused", "7-drives-saved", "8-library", "10-model-versions", "12-narrow-model", "15-job-progress", "26-collision-interference", "27-collision-motion", "13f-narrow-collision", "28-modelica-diagram", "29-mechatronics-diagram"] {
         assert!(shots.join(format!("{png}.png")).exists(), "screenshot {png}");
     }
     app.stop().await;

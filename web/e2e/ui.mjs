@@ -22,6 +22,7 @@ import { motionSteps } from './motion.mjs';
 import { resultsSteps } from './results.mjs';
 import { liveSteps } from './live.mjs';
 import { collisionSteps } from './collision.mjs';
+import { diagramSteps } from './diagram.mjs';
 import { standaloneSteps } from './standalone.mjs';
 
 const url = process.env.CAD2MO_URL;
@@ -192,6 +193,10 @@ try {
   const collision = await collisionSteps(page, { step, shot });
   await checkLabels(page, 'the collision tab');
 
+  // ---- The Modelica diagram (issue 17): Mechanics and Mechatronics as a Modelica tool draws them.
+  const diagram = await diagramSteps(page, { step, shot });
+  await checkLabels(page, 'the diagram tab');
+
   // ---- The Results page: a result of any Modelica model, its Dymola visual shapes in 3D.
   const standalone = await standaloneSteps(page, { step, shot, downloads, checkLabels });
 
@@ -361,7 +366,7 @@ try {
   assert.ok(overflowLib <= 1, `the library is ${overflowLib}px wider than a narrow window`);
 
   assert.deepEqual(consoleErrors, [], 'the page logged errors');
-  console.log(JSON.stringify({ joint, package: packagePath, library: libraryPath, motion, results, live, collision, standalone }));
+  console.log(JSON.stringify({ joint, package: packagePath, library: libraryPath, motion, results, live, collision, diagram, standalone }));
 } finally {
   await browser.close();
 }

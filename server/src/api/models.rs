@@ -12,6 +12,7 @@
 //! | `GET /api/models/{id}/versions/{v}` | 200 version (status, job, bundle, options, error, summary) |
 //! | `DELETE /api/models/{id}/versions/{v}` | 204 |
 //! | `GET .../versions/{v}/package.zip` | 200 zip; 409 not converted yet; the stored problem if failed |
+//! | `GET .../versions/{v}/diagram.svg?model=Mechanics\|Mechatronics` | 200 the model's diagram drawn from its annotations; same errors |
 //! | `GET .../versions/{v}/robot.urdf` | 200 the package's `<Pkg>/<Pkg>.urdf`; same errors; 404 when the package has none |
 //! | `GET .../versions/{v}/report` | 200 report.json; same errors |
 //! | `GET .../versions/{v}/bundle` | 200 the uploaded zip, byte for byte |
@@ -50,6 +51,7 @@ pub fn router() -> Router<AppState> {
         .route("/api/models/{model_id}/versions/{version}", get(get_version).delete(delete_version))
         .route("/api/models/{model_id}/versions/{version}/package.zip", get(package))
         .route("/api/models/{model_id}/versions/{version}/robot.urdf", get(robot_urdf))
+        .route("/api/models/{model_id}/versions/{version}/diagram.svg", get(diagram_svg))
         .route("/api/models/{model_id}/versions/{version}/report", get(report))
         .route("/api/models/{model_id}/versions/{version}/bundle", get(bundle))
         .route("/api/models/{model_id}/diff", get(diff))
@@ -97,6 +99,7 @@ struct BundleInfo {
 struct Links {
     package: String,
     urdf: String,
+    diagram: String,
     report: String,
     bundle: String,
     job: Option<String>,
@@ -141,6 +144,7 @@ fn version_view(v: VersionRow) -> Result<VersionView, ApiError> {
         links: Links {
             package: format!("{base}/package.zip"),
             urdf: format!("{base}/robot.urdf"),
+            diagram: format!("{base}/diagram.svg"),
             report: format!("{base}/report"),
             bundle: format!("{base}/bundle"),
             job: v.job_id.as_ref().map(|j| format!("/api/jobs/{j}")),
@@ -566,7 +570,7 @@ async fn robot_urdf(
         Err(not_yet) => return Ok(not_yet),
     };
     let wanted = format!("{stem}/{stem}.urdf");
-    let text = blocking(move || urdf_entry(&bytes, &wanted)).await?;
+    let text = blocking(move || zip_entry(&bytes, &wanted)).await?;
     let Some(text) = text else {
         return Err(ApiError::NotFound(format!(
             "a URDF in the package of version {v} of model {id} (converted before URDF output existed; upload the bundle again)"
@@ -575,8 +579,49 @@ async fn robot_urdf(
     Ok(file(text, "application/xml", Some(&format!("{stem}-v{v}.urdf")), &package))
 }
 
+#[derive(Deserialize)]
+struct DiagramQuery {
+    model: Option<String>,
+}
+
+/// The diagram of the version's `Mechanics` (or `Mechatronics`, drawn over the Mechanics it
+/// extends), from the `Placement` and `Line` annotations of the stored package.
+async fn diagram_svg(
+    State(state): State<AppState>,
+    path: Result<Path<(String, String)>, PathRejection>,
+    query: Result<Query<DiagramQuery>, QueryRejection>,
+) -> Result<Response, ApiError> {
+    let (id, v) = version_ids(path)?;
+    let Query(q) = query.map_err(|e| ApiError::BadRequest(format!("invalid query: {}", e.body_text())))?;
+    let which = match q.model.as_deref() {
+        None | Some("Mechanics") => "Mechanics",
+        Some("Mechatronics") => "Mechatronics",
+        Some(other) => return Err(ApiError::BadRequest(format!("model must be Mechanics or Mechatronics, not \"{other}\""))),
+    };
+    let (bytes, stem, package) = match stored_package(&state, &id, v).await? {
+        Ok(found) => found,
+        Err(not_yet) => return Ok(not_yet),
+    };
+    let title = format!("{stem}.{which} (version {v})");
+    let svg = blocking(move || {
+        use crate::pipeline::back::modelica::diagram::svg;
+        let text = |class: &str| -> Result<String, ApiError> {
+            let entry = zip_entry(&bytes, &format!("{stem}/{class}.mo"))?
+                .ok_or_else(|| ApiError::NotFound(format!("{class}.mo in the package of version {v} of model {id}")))?;
+            Ok(String::from_utf8_lossy(&entry).into_owned())
+        };
+        let mechanics = svg::read(&text("Mechanics")?);
+        let own = if which == "Mechatronics" { Some(svg::read(&text("Mechatronics")?)) } else { None };
+        let mut drawings = vec![&mechanics];
+        drawings.extend(own.as_ref());
+        Ok(svg::svg(&drawings, &title).into_bytes())
+    })
+    .await?;
+    Ok(file(svg, "image/svg+xml", None, &format!("{package}-{which}")))
+}
+
 /// The bytes of the zip entry `wanted`, `None` when the package has no such entry.
-fn urdf_entry(zip_bytes: &[u8], wanted: &str) -> Result<Option<Vec<u8>>, ApiError> {
+fn zip_entry(zip_bytes: &[u8], wanted: &str) -> Result<Option<Vec<u8>>, ApiError> {
     let internal = |e: zip::result::ZipError| ApiError::Internal(anyhow::anyhow!("stored package: {e}"));
     let mut archive = zip::ZipArchive::new(std::io::Cursor::new(zip_bytes)).map_err(internal)?;
     let mut entry = match archive.by_name(wanted) {

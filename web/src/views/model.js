@@ -1,5 +1,5 @@
-// One converted version: the 3D view beside seven tabs (Structure with joint sliders, Report,
-// Drives, Motion, Results, Live, Collision). Selecting a body or joint anywhere highlights it in the 3D view and in the lists.
+// One converted version: the 3D view beside eight tabs (Structure with joint sliders, Report,
+// Drives, Motion, Results, Live, Collision, Modelica diagram). Selecting a body or joint anywhere highlights it in the 3D view and in the lists.
 
 import { unzipSync } from 'fflate';
 import { STLLoader } from 'three/addons/loaders/STLLoader.js';
@@ -12,6 +12,7 @@ import { renderMotion } from './motion.js';
 import { renderResults } from './results.js';
 import { renderLive } from './live.js';
 import { renderCollision } from './collision.js';
+import { renderDiagram } from './diagram.js';
 
 const DEG = 180 / Math.PI;
 
@@ -127,6 +128,7 @@ export async function renderViewer(main, id, v, initialTab) {
     { id: 'results', label: 'Results', render: (p) => (results = renderResults(p, { modelId: id, versionNumber: v, viewer, say, select, stage: resultsStage })) },
     { id: 'live', label: 'Live', render: (p) => (live = renderLive(p, { modelId: id, versionNumber: v, viewer, say, stage: liveStage })) },
     { id: 'collision', label: 'Collision', render: (p) => (collision = renderCollision(p, { modelId: id, versionNumber: v, viewer, say, resetPose })) },
+    { id: 'diagram', label: 'Modelica diagram', render: (p) => renderDiagram(p, { version, report, select, stage: diagramStage }) },
   ];
   let collision = null;
   let motion = null;
@@ -140,6 +142,8 @@ export async function renderViewer(main, id, v, initialTab) {
   const resultsStage = h('div', { class: 'motion-stage results-stage', hidden: true });
   // The live stream's numbers likewise, shown with the Live tab (whose poses apply only then).
   const liveStage = h('div', { class: 'motion-stage live-stage', hidden: true });
+  // The Modelica diagram likewise, shown with its tab.
+  const diagramStage = h('div', { class: 'motion-stage diagram-stage', hidden: true });
   const t = tabs(tabSpec, {
     initial: tabSpec.some((x) => x.id === initialTab) ? initialTab : 'structure',
     label: 'Model details',
@@ -147,6 +151,7 @@ export async function renderViewer(main, id, v, initialTab) {
       motionStage.hidden = tab !== 'motion';
       resultsStage.hidden = tab !== 'results';
       liveStage.hidden = tab !== 'live';
+      diagramStage.hidden = tab !== 'diagram';
       // Hide before show: both tabs pose the bodies, and hiding one hands them back to the joints.
       if (tab !== 'results') results?.shown(false);
       if (tab !== 'live') live?.shown(false);
@@ -163,7 +168,7 @@ export async function renderViewer(main, id, v, initialTab) {
     main,
     h('p', { class: 'crumbs' }, h('a', { href: '#/models' }, 'Models'), ' / ', h('a', { href: `#/models/${enc(id)}` }, model.name), ' / ', `v${v}`),
     h('h1', {}, `${model.name} `, h('small', { class: 'muted' }, `v${v} · package ${report.package_name}`)),
-    h('div', { class: 'model-layout' }, h('section', { class: 'view3d', 'aria-label': '3D view' }, toolbar, stage, info, details, motionStage, resultsStage, liveStage), h('section', { class: 'side' }, t.el)),
+    h('div', { class: 'model-layout' }, h('section', { class: 'view3d', 'aria-label': '3D view' }, toolbar, stage, info, details, motionStage, resultsStage, liveStage, diagramStage), h('section', { class: 'side' }, t.el)),
   );
 
 

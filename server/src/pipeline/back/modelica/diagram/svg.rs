@@ -270,7 +270,8 @@ pub fn svg(drawings: &[&Drawing], title: &str) -> String {
             let size = ((x2 - x1) * 1.5 / (0.6 * c.name.chars().count().max(1) as f64)).min(8.0).max(2.0);
             let _ = writeln!(
                 s,
-                "<g><title>{} {}</title><rect x=\"{x1}\" y=\"{}\" width=\"{}\" height=\"{}\" rx=\"2\" fill=\"{}\" stroke=\"#404040\" stroke-width=\"0.6\"/><text x=\"{}\" y=\"{}\" font-size=\"{size:.1}\" text-anchor=\"middle\" fill=\"#0000c0\">{}</text></g>",
+                "<g data-component=\"{}\"><title>{} {}</title><rect x=\"{x1}\" y=\"{}\" width=\"{}\" height=\"{}\" rx=\"2\" fill=\"{}\" stroke=\"#404040\" stroke-width=\"0.6\"/><text x=\"{}\" y=\"{}\" font-size=\"{size:.1}\" text-anchor=\"middle\" fill=\"#0000c0\">{}</text></g>",
+                esc(&c.name),
                 esc(&c.class),
                 esc(&c.name),
                 -y2,

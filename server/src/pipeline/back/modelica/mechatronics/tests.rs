@@ -302,7 +302,7 @@ fn prismatic_drive_and_tables() {
     assert!(s.contains("drive_HELD(") && s.contains("    useTable=false,\n    q_constant=0.3)"), "{s}");
     assert!(s.contains("    useTable=false,\n    q_constant=0.7)"), "{s}");
     // The experiment covers the longest table.
-    assert!(s.contains("experiment(StopTime=3.0)"), "{s}");
+    assert!(s.contains("experiment(StopTime=3.0, Interval=0.01, Tolerance=1e-06)"), "{s}");
     assert!(s.contains("Mechanics with 4 joint drives"), "{s}");
     assert!(s.contains("holds the start value"), "{s}");
 }
@@ -538,7 +538,7 @@ fn pendulum_with_a_drive_passes_the_tools() {
     assert_eq!(plans.len(), 1, "the pendulum has one revolute joint");
     assert_eq!(plans[0].joint, "RootPart_LINK");
     let (tmp, text) = write_package(files, &pkg, &plans);
-    assert!(text.contains("connect(drive_RootPart_LINK.flange, RootPart_LINK.drive);"), "{text}");
+    assert!(text.contains("connect(drive_RootPart_LINK.flange, RootPart_LINK.drive)"), "{text}");
     check_with_tools(&tmp.path().join(&pkg));
 }
 
@@ -599,7 +599,7 @@ fn drives_following_motions_pass_the_tools() {
     // 11 rows of 1 + 3n columns: the last row is t = 1, q = 0.1, qd = 0.2, qdd = 0.2.
     let last = std::iter::once("1".to_string()).chain(std::iter::repeat_n("0.1".to_string(), n)).chain(std::iter::repeat_n("0.2".to_string(), 2 * n));
     assert!(table.contains(&format!("{}]", last.collect::<Vec<_>>().join(", "))), "{table}");
-    assert!(text.contains("experiment(StopTime=1.5)"), "{text}");
+    assert!(text.contains("experiment(StopTime=1.5, Interval=0.005, Tolerance=1e-06)"), "{text}");
     check_with_tools(&tmp.path().join(&pkg));
     // Bad tables are refused, naming the motion.
     let mut bad = ramp("jumpy", &axes, 0.1);
@@ -779,7 +779,7 @@ fn an_observer_sees_the_stages_and_chooses_drives_from_the_report() {
     assert!(!w.joints_seen.is_empty());
     let pkg = &out.report.package_name;
     let mech = text(&out.files, &format!("{pkg}/Mechatronics.mo"));
-    let driven = &w.joints_seen.iter().find(|j| mech.contains(&format!("connect(drive_{j}.flange, {j}.drive);"))).expect("a driven joint");
+    let driven = &w.joints_seen.iter().find(|j| mech.contains(&format!("connect(drive_{j}.flange, {j}.drive)"))).expect("a driven joint");
     assert!(mech.contains(&format!(" drive_{driven}(")), "{mech}");
     // The report itself does not depend on the drives.
     let plain = crate::pipeline::convert(&bundle, &opts).expect("convert");

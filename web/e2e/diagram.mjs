@@ -1,0 +1,37 @@
+// The "Modelica diagram" tab (issue 17), end to end (part of ui.mjs, on the model view of the
+// uploaded arm): the Mechanics diagram drawn from the package's annotations shows every
+// component of Mechanics.mo and a line per connect; clicking a body in it selects that body in
+// the 3D view; Mechatronics adds its drive next to the joint it moves.
+
+import assert from 'node:assert/strict';
+
+export async function diagramSteps(page, { step, shot }) {
+  const [, , id, , v] = new URL(page.url()).hash.split('/');
+  const version = Number(v);
+  assert.ok(id && version > 0, `on a model version page: ${page.url()}`);
+  step('diagram: Mechanics');
+  await page.getByRole('tab', { name: 'Modelica diagram' }).click();
+  const view = page.locator('.diagram-view');
+  await view.locator('svg g[data-component]').first().waitFor();
+  // What the package says: every placed component, every connect.
+  const pkg = await page.evaluate(async ({ id, version }) => {
+    const r = await fetch(`/api/models/${id}/versions/${version}/report`);
+    return r.json();
+  }, { id, version });
+  const shown = await view.locator('svg g[data-component]').evaluateAll((gs) => gs.map((g) => g.dataset.component));
+  for (const b of pkg.bodies) assert.ok(shown.includes(b.modelica_name), `body ${b.modelica_name} in the diagram: ${shown}`);
+  const lines = await view.locator('svg polyline').count();
+  assert.ok(lines >= pkg.bodies.length, `a line per connection: ${lines}`);
+  // A click on a body in the diagram selects it.
+  const body = pkg.bodies.find((b) => b.shape) || pkg.bodies[0];
+  await view.locator(`svg g[data-component="${body.modelica_name}"] rect`).click();
+  await page.locator('.selection').filter({ hasText: `Selected body ${body.modelica_name}` }).waitFor();
+  await shot(page, '28-modelica-diagram');
+
+  step('diagram: Mechatronics');
+  await page.getByRole('combobox', { name: 'Model' }).selectOption('Mechatronics');
+  await page.locator('.diagram-status').filter({ hasText: 'Mechatronics:' }).waitFor();
+  const drives = await view.locator('svg g[data-component^="drive_"]').count();
+  await shot(page, '29-mechatronics-diagram');
+  return { components: shown.length, lines, drives };
+}
