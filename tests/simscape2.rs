@@ -126,6 +126,8 @@ fn every_xml2_fixture_converts_and_reproduces_the_cad_pose() {
         let codes = warning_codes(&warnings);
         let out = convert(&model, &validated, warnings);
         let name = path.file_name().expect("name").to_string_lossy().to_string();
+        // The diagram's layout (issue 17), on the same conversion.
+        failures.extend(cad2mo_tests::diagram::check_package(&name, &out).into_iter().take(5));
         println!(
             "{name}: {} bodies, {} grounds, joints {:?}, {} loops, tree DOF {}, warnings {:?}",
             model.bodies.len(),

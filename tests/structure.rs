@@ -11,6 +11,7 @@ use std::path::Path;
 
 use cad2mo::pipeline::Options;
 use cad2mo_tests::common::{convert_path, file_text, files_with_ext, fixtures_dir, sorted_dirs, workspace_root};
+use cad2mo_tests::diagram::check_package;
 use cad2mo_tests::fk::{forward_kinematics, parse_mechanics};
 use cad2mo_tests::structure::{cad_structure, model_structure};
 use serde_json::Value;
@@ -111,6 +112,8 @@ fn every_fixture_xml_has_no_redundant_equations() {
         if let Err(e) = check(&rel, mechanics, &text) {
             failures.push(e);
         }
+        // The diagram's layout (issue 17), on the same conversion.
+        failures.extend(check_package(&rel, &out).into_iter().take(5));
         checked += 1;
     }
     assert!(checked >= 15, "only {checked} fixture XMLs converted");

@@ -86,6 +86,9 @@ fn every_fixture_urdf_converts_and_reproduces_its_poses() {
         } else {
             assert!(missing.is_empty(), "{label}: {missing:?}");
         }
+        // The diagram's layout (issue 17), on the same conversion.
+        let layout = cad2mo_tests::diagram::check_package(&label, &out);
+        assert!(layout.is_empty(), "{label}: diagram layout:\n{}", layout.join("\n"));
         println!(
             "{label}: {bodies} bodies, {} joints ({compared} compared), {} loops ({closed} Drake loop joints closed), {with_mesh} with meshes, {} warnings; FK max error {:e} m",
             out.report.joints.len(),

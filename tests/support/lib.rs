@@ -15,6 +15,7 @@ pub mod app_library;
 pub mod app_models;
 pub mod check;
 pub mod common;
+pub mod diagram;
 pub mod fk;
 pub mod live;
 pub mod modelica;
