@@ -422,7 +422,7 @@ fn reexport(settings: crate::config::Settings, model: Option<String>) -> ExitCod
         rt.block_on(async {
             std::fs::create_dir_all(&settings.data_dir)?;
             let store = crate::store::Store::open(&settings.database_url).await?;
-            let blobs = crate::store::blobs::Blobs::new(&settings.data_dir)?;
+            let blobs = crate::store::blobs::Blobs::open(&settings.blobs, &settings.data_dir).await?;
             let ids: Vec<(String, String)> = match &model {
                 Some(id) => match models::get_model(&store.pool, id).await? {
                     Some(m) => vec![(m.id, m.name)],
