@@ -18,6 +18,7 @@ pub mod app_models;
 pub mod check;
 pub mod common;
 pub mod fk;
+pub mod instances;
 pub mod live;
 pub mod modelica;
 pub mod s3;

@@ -126,10 +126,12 @@ impl Blobs {
         }
         let store = builder.build().map_err(object_error)?;
         let blobs = Blobs::in_object_store(Arc::new(store), prefix, url);
-        // Fail at start, not at the first upload: one HEAD of a name that is never stored.
+        // Fail at start, not at the first upload: one listing of the prefix's top level (an
+        // error for a bucket that does not exist, bad credentials or no server).
         let Backend::Object { store, prefix, .. } = &*blobs.backend else { return Err(std::io::Error::other("not an object store")) };
-        match store.head(&key(prefix, ".cad2mo", "probe")).await {
-            Ok(_) | Err(object_store::Error::NotFound { .. }) => Ok(blobs),
+        let under = (!prefix.is_empty()).then(|| ObjectPath::from(prefix.as_str()));
+        match store.list_with_delimiter(under.as_ref()).await {
+            Ok(_) => Ok(blobs),
             Err(e) => Err(std::io::Error::other(format!("blob store {url} is not reachable: {e}"))),
         }
     }

@@ -27,6 +27,13 @@ pub async fn referenced_blobs(store: &Store) -> Result<BTreeSet<String>, StoreEr
     Ok(rows.into_iter().filter_map(|(h,)| h).collect())
 }
 
+/// How often each job was claimed and where it stands: `(status, attempts)` by job id. A job
+/// converted exactly once is `succeeded` with one attempt. Read-only.
+pub async fn job_attempts(store: &Store) -> Result<std::collections::BTreeMap<String, (String, i64)>, StoreError> {
+    let rows: Vec<(String, String, i64)> = sqlx::query_as("SELECT id, status, attempts FROM jobs").fetch_all(&store.pool).await?;
+    Ok(rows.into_iter().map(|(id, status, attempts)| (id, (status, attempts))).collect())
+}
+
 /// What [`check`] found.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct BlobReport {
@@ -88,6 +95,8 @@ mod tests {
         models::create_model(&store.pool, "m", &v(&bundle)).await.unwrap();
         let r = check(&store, &blobs).await.unwrap();
         assert_eq!(r, BlobReport { stored: 1, referenced: 1, ..Default::default() });
+        let jobs = job_attempts(&store).await.unwrap();
+        assert_eq!(jobs.values().cloned().collect::<Vec<_>>(), vec![("queued".to_string(), 0)]);
         assert!(r.is_consistent());
 
         // A row pointing at a blob that is not stored: missing.
