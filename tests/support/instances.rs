@@ -24,6 +24,15 @@ pub fn binary() -> PathBuf {
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
     let mut build = Command::new(cargo);
     build.args(["build", "--quiet", "-p", "cad2mo", "--bin", "cad2mo", "--target-dir"]).arg(&target_dir);
+    // Without the variables cargo sets for this test binary: build scripts watch some of them
+    // (ring: CARGO_MANIFEST_DIR), and a change would rebuild the service here and again after.
+    for (k, _) in std::env::vars_os() {
+        let k = k.to_string_lossy().to_string();
+        let set_by_cargo = ["CARGO_MANIFEST_", "CARGO_PKG_", "CARGO_CRATE_", "CARGO_BIN_", "CARGO_PRIMARY_", "CARGO_TARGET_TMPDIR", "CARGO_RUSTC_CURRENT_DIR"];
+        if set_by_cargo.iter().any(|p| k.starts_with(p)) {
+            build.env_remove(&k);
+        }
+    }
     if release {
         build.arg("--release");
     }
