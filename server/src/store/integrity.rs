@@ -108,6 +108,19 @@ mod tests {
         assert_eq!((r.missing.clone(), r.orphans.clone(), r.corrupt.clone()), (vec![absent], vec![orphan], vec![]));
         assert!(!r.is_consistent());
 
+        // A converted version's package and report, and a result file, are referenced too.
+        let job = models::claim_next_job(&store.pool).await.unwrap().unwrap();
+        let (package, report, result) = (blobs.put(b"package").unwrap(), blobs.put(b"report").unwrap(), blobs.put(b"result").unwrap());
+        let out = models::JobOutputs { package_sha256: &package, report_sha256: &report, summary_json: "{}" };
+        models::finish_succeeded(&store.pool, &job, &out).await.unwrap();
+        crate::store::results::insert(&store, None, None, "r.mat", 6, &result, "{}").await.unwrap();
+        let referenced = referenced_blobs(&store).await.unwrap();
+        for h in [&bundle, &package, &report, &result] {
+            assert!(referenced.contains(h), "{h} is not counted as referenced");
+        }
+        let r = check(&store, &blobs).await.unwrap();
+        assert_eq!((r.stored, r.orphans.len()), (5, 1), "{r:?}");
+
         // A referenced blob whose bytes changed: corrupt.
         std::fs::write(dir.path().join("blobs").join(&bundle[..2]).join(&bundle), b"bundle bytez").unwrap();
         let r = check(&store, &blobs).await.unwrap();
