@@ -4,7 +4,8 @@
 //! - **the local folder** (default): `<data_dir>/blobs/<first two hex digits>/<sha256>`, written
 //!   atomically (temporary file in the same folder, fsync, rename), so nothing half-written is ever
 //!   visible. A crash between the write and the rename leaves a `.<hash>.<uuid>.tmp` file behind:
-//!   [`Blobs::new`] removes them.
+//!   [`Blobs::new`] removes those older than [`PARTIAL_AGE`] (younger ones may be the writes of
+//!   another instance sharing the folder).
 //! - **an S3-compatible object store** (`s3://bucket/prefix`, through the `object_store` crate):
 //!   the same layout under the prefix (`<prefix>/<first two>/<sha256>`), so a local folder can be
 //!   copied to a bucket as it is. A PUT is atomic (an object is visible whole or not at all), so no
@@ -291,6 +292,10 @@ impl Blobs {
     }
 }
 
+/// Partial files at least this old are removed at start: no write takes that long, so they were
+/// left by a stop, not being written by another process sharing the folder.
+pub const PARTIAL_AGE: std::time::Duration = std::time::Duration::from_secs(600);
+
 /// Whether `name` is a temporary file of [`Blobs::put`]: `.<64 hex>.<anything>.tmp`.
 fn is_partial(name: &str) -> bool {
     name.strip_prefix('.')
@@ -300,7 +305,8 @@ fn is_partial(name: &str) -> bool {
 }
 
 /// Removes the temporary files of interrupted writes in the blob folders (one level deep, as
-/// [`Blobs::put`] writes them). Returns how many were removed.
+/// [`Blobs::put`] writes them) last modified [`PARTIAL_AGE`] ago or earlier. Returns how many
+/// were removed.
 fn remove_partial_files(root: &Path) -> std::io::Result<usize> {
     let mut removed = 0;
     for dir in std::fs::read_dir(root)? {
@@ -311,7 +317,11 @@ fn remove_partial_files(root: &Path) -> std::io::Result<usize> {
         for entry in std::fs::read_dir(dir.path())? {
             let entry = entry?;
             let partial = entry.file_name().to_str().is_some_and(is_partial);
-            if partial && entry.file_type()?.is_file() {
+            let old = || -> std::io::Result<bool> {
+                let modified = entry.metadata()?.modified()?;
+                Ok(modified.elapsed().is_ok_and(|age| age >= PARTIAL_AGE))
+            };
+            if partial && entry.file_type()?.is_file() && old()? {
                 match std::fs::remove_file(entry.path()) {
                     Ok(()) => removed += 1,
                     Err(e) if e.kind() == std::io::ErrorKind::NotFound => {}
@@ -356,10 +366,17 @@ mod tests {
         // Files that are not ours stay.
         let foreign = folder.join("notes.tmp");
         std::fs::write(&foreign, b"mine").unwrap();
+        // Stops happened long ago; a write of another process sharing the folder is under way.
+        let long_ago = std::time::SystemTime::now() - PARTIAL_AGE - std::time::Duration::from_secs(1);
+        for p in [&partial, &partial2, &foreign] {
+            std::fs::File::options().write(true).open(p).unwrap().set_modified(long_ago).unwrap();
+        }
+        let in_progress = folder.join(format!(".{h}.{}.tmp", uuid::Uuid::new_v4()));
+        std::fs::write(&in_progress, b"being written").unwrap();
 
         let b = Blobs::new(dir.path()).unwrap();
         assert!(!partial.exists() && !partial2.exists());
-        assert!(foreign.exists());
+        assert!(foreign.exists() && in_progress.exists());
         assert_eq!(b.get(&h).unwrap().as_deref(), Some(&b"kept"[..]));
         // Listing names blobs only, not the foreign file.
         assert_eq!(b.list().unwrap(), vec![h]);
