@@ -73,9 +73,17 @@ impl S3Place {
 /// `CAD2MO_TEST_S3_ENDPOINT` is not set (a failure when tools are required, as `scripts/test`
 /// starts the server).
 pub async fn place(test: &str) -> Option<S3Place> {
+    let place = try_place(test).await;
+    if place.is_none() {
+        println!("NOTICE: {test} skipped: no S3-compatible test server (set CAD2MO_TEST_S3_ENDPOINT; scripts/test starts moto)");
+    }
+    place
+}
+
+/// [`place`] without the notice (for tests that fall back to something else).
+pub async fn try_place(test: &str) -> Option<S3Place> {
     let Some(endpoint) = std::env::var("CAD2MO_TEST_S3_ENDPOINT").ok().filter(|e| !e.is_empty()) else {
         assert!(!crate::common::tools_required(), "{test}: CAD2MO_TEST_S3_ENDPOINT is not set but tools are required (scripts/test starts moto)");
-        println!("NOTICE: {test} skipped: no S3-compatible test server (set CAD2MO_TEST_S3_ENDPOINT; scripts/test starts moto)");
         return None;
     };
     let endpoint = endpoint.trim_end_matches('/').to_string();
