@@ -113,6 +113,8 @@ impl Cluster {
     pub async fn new(test: &str, extra: &[&str]) -> Cluster {
         let bin = binary();
         let dir = tempfile::tempdir().expect("tempdir");
+        // With issue 16's PostgreSQL support merged, CAD2MO_TEST_DATABASE_URL names a server:
+        // take a fresh database on it (`cad2mo::store::testdb::create_database`) instead.
         let database_url = match std::env::var("CAD2MO_TEST_DATABASE_URL").ok().filter(|u| !u.is_empty()) {
             Some(url) => url,
             None => format!("sqlite://{}?mode=rwc", dir.path().join("shared.db").display()),
