@@ -71,6 +71,46 @@ async fn assert_consistent(cluster: &Cluster, models: &[String]) {
     }
     let stored: BTreeSet<String> = tokio::task::spawn_blocking(move || blobs.list()).await.expect("task").expect("list").into_iter().collect();
     assert!(mine.is_subset(&stored), "missing: {:?}", mine.difference(&stored).collect::<Vec<_>>());
+    // The operators' command says the same.
+    let (code, out) = cluster.check_blobs();
+    assert!(code == Some(0) && out.contains("0 missing, 0 corrupt, 0 orphans"), "cad2mo check-blobs: {code:?}\n{out}");
+}
+
+/// `cad2mo check-blobs` finds a package corrupted in the blob store (exit code 1, its hash named)
+/// and a blob no row refers to (an orphan: reported, exit code still 0).
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn check_blobs_finds_corrupt_and_orphan_blobs() {
+    let cluster = &mut Cluster::new("check_blobs_finds_corrupt_and_orphan_blobs", &["--workers", "1"]).await;
+    let a = cluster.start().await;
+    let (model, id) = upload(&a, pendulum(0)).await;
+    let deadline = Instant::now() + Duration::from_secs(60);
+    while !finished(&job(&a, &id).await) {
+        assert!(Instant::now() < deadline, "job {id} unfinished");
+        tokio::time::sleep(Duration::from_millis(50)).await;
+    }
+    let package = client().get(a.url(&format!("/api/models/{model}/versions/1/package.zip"))).send().await.expect("package");
+    let package = package.bytes().await.expect("bytes").to_vec();
+    let (code, out) = cluster.check_blobs();
+    assert!(code == Some(0) && out.contains("3 blobs stored, 3 referenced; 0 missing, 0 corrupt, 0 orphans"), "{code:?}\n{out}");
+
+    let (_, blobs) = cluster.open().await;
+    let orphan = tokio::task::spawn_blocking(move || blobs.put(b"no row refers to me")).await.expect("task").expect("put");
+    let (code, out) = cluster.check_blobs();
+    assert!(code == Some(0) && out.contains(&format!("orphan {orphan}")), "{code:?}\n{out}");
+
+    // Overwrite the package with other bytes, behind the service's back.
+    let hash = cad2mo::store::blobs::sha256_hex(&package);
+    let mut tampered = package.clone();
+    tampered[0] ^= 0xff;
+    match &cluster.s3 {
+        Some(place) => {
+            use object_store::ObjectStore;
+            place.client().put(&place.key(&hash), tampered.into()).await.expect("overwrite");
+        }
+        None => std::fs::write(cluster.local_blob_path(&hash), tampered).expect("overwrite"),
+    }
+    let (code, out) = cluster.check_blobs();
+    assert!(code == Some(1) && out.contains(&format!("corrupt {hash}")), "{code:?}\n{out}");
 }
 
 /// 50 uploads, alternating between two instances, all at once: each job is claimed once

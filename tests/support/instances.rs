@@ -180,6 +180,24 @@ impl Cluster {
         panic!("instance {i}: no free port after 5 tries");
     }
 
+    /// Where a blob lives when blobs are in the local folder.
+    pub fn local_blob_path(&self, hash: &str) -> PathBuf {
+        self.data_dir(0).join("blobs").join(&hash[..2]).join(hash)
+    }
+
+    /// Runs `cad2mo check-blobs` on the shared database and blob store: (exit code, stdout).
+    pub fn check_blobs(&self) -> (Option<i32>, String) {
+        let mut cmd = Command::new(&self.bin);
+        cmd.arg("check-blobs").arg("--data-dir").arg(self.data_dir(0)).args(["--database-url", &self.database_url]).env("NO_COLOR", "1");
+        for (k, v) in self.s3.iter().flat_map(S3Place::env) {
+            cmd.env(k, v);
+        }
+        let out = cmd.output().expect("cad2mo check-blobs runs");
+        let stdout = String::from_utf8_lossy(&out.stdout).to_string();
+        assert!(out.status.code().is_some_and(|c| c <= 1), "check-blobs failed: {}\n{stdout}", String::from_utf8_lossy(&out.stderr));
+        (out.status.code(), stdout)
+    }
+
     /// The shared database and blob store, opened by this process (for the integrity checks).
     pub async fn open(&self) -> (cad2mo::store::Store, cad2mo::store::blobs::Blobs) {
         let store = cad2mo::store::Store::open(&self.database_url).await.expect("database");
