@@ -47,7 +47,8 @@ impl App {
             .with_context(|| format!("creating data folder {}", settings.data_dir.display()))?;
         let store = Store::open(&settings.database_url).await.context("opening the database")?;
         crate::store::library::seed_if_empty(&store).await.context("seeding the motor library")?;
-        let blobs = Blobs::new(&settings.data_dir).context("opening the file store")?;
+        let blobs = Blobs::open(&settings.blobs, &settings.data_dir).await.context("opening the file store")?;
+        tracing::info!(blobs = %blobs.location(), "file store open");
         let listener = TcpListener::bind(settings.bind).await.with_context(|| format!("binding {}", settings.bind))?;
         let relay = crate::relay::Relay::start(settings.live_bind, settings.requires_auth(), store.clone(), blobs.clone()).await;
         let live = relay.addr().map(|a| (settings.live_host(), a.port()));

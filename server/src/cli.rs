@@ -64,6 +64,13 @@ enum Command {
         #[command(subcommand)]
         command: TokenCommand,
     },
+    /// Check the blob store against the database: read and verify every stored blob, list
+    /// referenced blobs that are missing or corrupt, and blobs no row refers to (orphans,
+    /// harmless). Exit code 1 when a referenced blob is missing or corrupt.
+    CheckBlobs {
+        #[command(flatten)]
+        service: crate::config::ServeArgs,
+    },
     /// Print the conversion report (JSON) of a bundle without writing a package.
     Inspect {
         bundle: PathBuf,
@@ -236,6 +243,7 @@ pub fn main() -> ExitCode {
         Command::Serve(args) => serve(crate::config::Settings::from_args(args)),
         Command::Reexport { all: _, model, service } => reexport(crate::config::Settings::from_args(service), model),
         Command::Token { command } => token(command),
+        Command::CheckBlobs { service } => check_blobs(crate::config::Settings::from_args(service)),
         Command::Convert { bundle, output, package_name, gravity, lump_welds, match_tolerance, match_angle } => {
             if let Some(p) = &package_name {
                 if pipeline::back::modelica::sanitize(p, "P") != *p {
@@ -314,6 +322,41 @@ pub fn main() -> ExitCode {
                     ExitCode::from(1)
                 }
             }
+        }
+    }
+}
+
+/// `cad2mo check-blobs`: [`crate::store::integrity::check`] on the service's database and blob
+/// store; the findings on stdout, one per line, then a summary.
+fn check_blobs(settings: crate::config::Settings) -> ExitCode {
+    let result = runtime().map_err(anyhow::Error::from).and_then(|rt| {
+        rt.block_on(async {
+            let store = crate::store::Store::open(&settings.database_url).await?;
+            let blobs = crate::store::blobs::Blobs::open(&settings.blobs, &settings.data_dir).await?;
+            let report = crate::store::integrity::check(&store, &blobs).await?;
+            Ok::<_, anyhow::Error>((blobs.location(), report))
+        })
+    });
+    match result {
+        Ok((location, r)) => {
+            for (kind, hashes) in [("missing", &r.missing), ("corrupt", &r.corrupt), ("orphan", &r.orphans)] {
+                for h in hashes {
+                    println!("{kind} {h}");
+                }
+            }
+            println!(
+                "{location}: {} blobs stored, {} referenced; {} missing, {} corrupt, {} orphans",
+                r.stored,
+                r.referenced,
+                r.missing.len(),
+                r.corrupt.len(),
+                r.orphans.len()
+            );
+            if r.is_consistent() { ExitCode::SUCCESS } else { ExitCode::from(1) }
+        }
+        Err(e) => {
+            eprintln!("error: {e:#}");
+            ExitCode::from(2)
         }
     }
 }
@@ -422,7 +465,7 @@ fn reexport(settings: crate::config::Settings, model: Option<String>) -> ExitCod
         rt.block_on(async {
             std::fs::create_dir_all(&settings.data_dir)?;
             let store = crate::store::Store::open(&settings.database_url).await?;
-            let blobs = crate::store::blobs::Blobs::new(&settings.data_dir)?;
+            let blobs = crate::store::blobs::Blobs::open(&settings.blobs, &settings.data_dir).await?;
             let ids: Vec<(String, String)> = match &model {
                 Some(id) => match models::get_model(&store.pool, id).await? {
                     Some(m) => vec![(m.id, m.name)],

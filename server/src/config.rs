@@ -45,6 +45,14 @@ pub struct ServeArgs {
     /// --allowed-host when that is a wildcard).
     #[arg(long, env = "CAD2MO_LIVE_HOST")]
     pub live_host: Option<String>,
+    /// Where bundles, packages and reports are kept: absent = `<data-dir>/blobs`;
+    /// `s3://bucket/prefix` = an S3-compatible object store (credentials and region from the
+    /// standard AWS_ACCESS_KEY_ID, AWS_SECRET_ACCESS_KEY, AWS_REGION variables).
+    #[arg(long, env = "CAD2MO_BLOB_URL")]
+    pub blob_url: Option<String>,
+    /// Endpoint of an S3-compatible store other than AWS (MinIO, ...), e.g. http://minio:9000.
+    #[arg(long, env = "CAD2MO_S3_ENDPOINT")]
+    pub s3_endpoint: Option<String>,
 }
 
 /// `--live-bind`: an address, or off.
@@ -78,6 +86,8 @@ pub struct Settings {
     pub live_bind: Option<SocketAddr>,
     /// The host name packages' live views send to (see [`Settings::live_host`]).
     pub live_host: Option<String>,
+    /// Where blobs are kept (the local folder by default, or an S3-compatible store).
+    pub blobs: crate::store::blobs::BlobSettings,
 }
 
 impl Settings {
@@ -101,6 +111,11 @@ impl Settings {
             allowed_hosts: a.allowed_hosts.into_iter().map(|h| h.trim().to_string()).filter(|h| !h.is_empty()).collect(),
             live_bind: a.live_bind.0,
             live_host: a.live_host.map(|h| h.trim().to_string()).filter(|h| !h.is_empty()),
+            blobs: crate::store::blobs::BlobSettings {
+                url: a.blob_url.map(|u| u.trim().to_string()).filter(|u| !u.is_empty()),
+                s3_endpoint: a.s3_endpoint.map(|u| u.trim().to_string()).filter(|u| !u.is_empty()),
+                ..Default::default()
+            },
         }
     }
 
@@ -118,6 +133,7 @@ impl Settings {
             allowed_hosts: Vec::new(),
             live_bind: Some(SocketAddr::from(([127, 0, 0, 1], 0))),
             live_host: None,
+            blobs: Default::default(),
         }
     }
 

@@ -9,6 +9,8 @@
 //! - [`structure`]: structural rank of closed loops (redundant equations, mobility) of the emitted
 //!   model and of the XML assembly.
 //! - [`app`]: `TestApp`, the real service spawned on port 0 with a fresh database.
+//! - [`s3`]: the S3-compatible test server (a bucket, a prefix per test); [`instances`]: real
+//!   `cad2mo serve` processes for the multi-instance tests.
 
 pub mod app;
 pub mod app_library;
@@ -17,8 +19,10 @@ pub mod check;
 pub mod common;
 pub mod diagram;
 pub mod fk;
+pub mod instances;
 pub mod live;
 pub mod modelica;
+pub mod s3;
 pub mod structure;
 pub mod truth;
 pub mod xml2_truth;

@@ -4,6 +4,7 @@
 pub mod blobs;
 pub mod collision;
 pub mod drives;
+pub mod integrity;
 pub mod library;
 pub mod models;
 pub mod motions;
