@@ -266,3 +266,231 @@ pub async fn now(pool: &Pool) -> Result<String, StoreError> {
     let (t,): (String,) = sqlx::query_as(&pool.sql("SELECT %NOW%")).fetch_one(pool).await?;
     Ok(t)
 }
+
+/// Tests on both engines: SQLite always, PostgreSQL when `CAD2MO_TEST_DATABASE_URL` names a
+/// server (`scripts/test` starts one), each on a fresh database.
+#[cfg(test)]
+mod tests {
+    use std::collections::{BTreeMap, BTreeSet};
+
+    use super::models::{self, Claimer, JobOutputs, NewVersion};
+    use super::*;
+
+    /// A fresh database: `(keep-alive, url)`.
+    async fn fresh(engine: Engine) -> Option<(Option<tempfile::TempDir>, String)> {
+        match engine {
+            Engine::Sqlite => {
+                let dir = tempfile::tempdir().expect("tempdir");
+                let url = format!("sqlite://{}?mode=rwc", dir.path().join("t.db").display());
+                Some((Some(dir), url))
+            }
+            Engine::Postgres => {
+                let Ok(base) = std::env::var("CAD2MO_TEST_DATABASE_URL") else {
+                    eprintln!("NOTICE: CAD2MO_TEST_DATABASE_URL is not set: the PostgreSQL half of this test is skipped");
+                    return None;
+                };
+                Some((None, testdb::create_database(&base).await.expect("test database")))
+            }
+        }
+    }
+
+    async fn drop_fresh(url: &str) {
+        if let (Engine::Postgres, Ok(base)) = (Engine::of_url(url), std::env::var("CAD2MO_TEST_DATABASE_URL")) {
+            testdb::drop_database(&base, url).await.expect("drop test database");
+        }
+    }
+
+    fn upload() -> NewVersion<'static> {
+        NewVersion { bundle_name: "b.zip", bundle_sha256: "ab", bundle_size: 2, options_json: "{}" }
+    }
+
+    fn claimer(instance: &str, lease_secs: f64) -> Claimer {
+        Claimer { instance: instance.into(), lease_secs }
+    }
+
+    const OUT: JobOutputs<'static> = JobOutputs { package_sha256: "p", report_sha256: "r", summary_json: "{}" };
+
+    #[test]
+    fn placeholders_become_numbered_for_postgres_outside_literals() {
+        let q = "SELECT a FROM t WHERE x = ? AND y = '?' AND z = ? AND w = ?2";
+        assert_eq!(sql(Engine::Sqlite, q), q);
+        assert_eq!(sql(Engine::Postgres, q), "SELECT a FROM t WHERE x = $1 AND y = '?' AND z = $2 AND w = $2");
+        assert!(sql(Engine::Postgres, "SELECT %NOW%").contains("clock_timestamp()"));
+        assert!(sql(Engine::Sqlite, "SELECT %UNTIL%").contains("'now', '+' || ? || ' seconds'"));
+    }
+
+    /// Table -> column -> type class (int, real, text) of a database, without sqlx's own table
+    /// and PostgreSQL's rowid stand-in.
+    async fn schema(store: &Store) -> BTreeMap<String, BTreeMap<String, String>> {
+        let rows: Vec<(String, String, String)> = match store.pool.engine() {
+            Engine::Sqlite => sqlx::query_as(
+                "SELECT m.name, p.name, lower(p.type) FROM sqlite_master m JOIN pragma_table_info(m.name) p
+                 WHERE m.type = 'table' AND m.name NOT LIKE 'sqlite_%' AND m.name <> '_sqlx_migrations'",
+            )
+            .fetch_all(&store.pool)
+            .await
+            .expect("sqlite schema"),
+            Engine::Postgres => sqlx::query_as(
+                "SELECT table_name::text, column_name::text, data_type::text FROM information_schema.columns
+                 WHERE table_schema = 'public' AND table_name <> '_sqlx_migrations' AND column_name <> 'rowid'",
+            )
+            .fetch_all(&store.pool)
+            .await
+            .expect("postgres schema"),
+        };
+        let mut tables: BTreeMap<String, BTreeMap<String, String>> = BTreeMap::new();
+        for (table, column, ty) in rows {
+            let class = match ty.as_str() {
+                "integer" | "bigint" => "int",
+                "real" | "double precision" => "real",
+                "text" => "text",
+                other => panic!("{table}.{column}: unexpected type {other}"),
+            };
+            tables.entry(table).or_default().insert(column, class.to_string());
+        }
+        tables
+    }
+
+    /// Both engines' migrations give the same tables with the same columns of the same type class.
+    #[tokio::test]
+    async fn schemas_match() {
+        let Some((_keep, pg)) = fresh(Engine::Postgres).await else { return };
+        let (_dir, lite) = fresh(Engine::Sqlite).await.expect("sqlite");
+        let (a, b) = (Store::open(&lite).await.expect("sqlite"), Store::open(&pg).await.expect("postgres"));
+        let (sa, sb) = (schema(&a).await, schema(&b).await);
+        assert!(sa.contains_key("jobs") && sa["jobs"].contains_key("lease_until"), "{sa:?}");
+        assert_eq!(sa, sb, "SQLite's schema (left) differs from PostgreSQL's (right)");
+        drop(b);
+        drop_fresh(&pg).await;
+    }
+
+    /// 50 jobs, two instances (two pools) with four claimers each, all claiming at once: every
+    /// job is claimed exactly once.
+    #[tokio::test(flavor = "multi_thread", worker_threads = 4)]
+    async fn concurrent_claims_from_two_instances_never_share_a_job() {
+        for engine in [Engine::Sqlite, Engine::Postgres] {
+            let Some((_keep, url)) = fresh(engine).await else { continue };
+            let stores = [Store::open(&url).await.expect("a"), Store::open(&url).await.expect("b")];
+            let mut made = BTreeSet::new();
+            for i in 0..50 {
+                made.insert(models::create_model(&stores[0].pool, &format!("m{i}"), &upload()).await.expect("model").job_id);
+            }
+            let started = std::time::Instant::now();
+            let mut tasks = Vec::new();
+            for (n, store) in stores.iter().enumerate() {
+                for k in 0..4 {
+                    let store = store.clone();
+                    let me = claimer(&format!("i{n}c{k}"), 30.0);
+                    tasks.push(tokio::spawn(async move {
+                        let mut got = Vec::new();
+                        while let Some(j) = models::claim_next_job(&store.pool, &me).await.expect("claim") {
+                            got.push(j.id);
+                        }
+                        got
+                    }));
+                }
+            }
+            let mut claimed = Vec::new();
+            let mut per_instance = [0, 0];
+            for (t, task) in tasks.into_iter().enumerate() {
+                let got = task.await.expect("claimer");
+                per_instance[t / 4] += got.len();
+                claimed.extend(got);
+            }
+            let elapsed = started.elapsed();
+            eprintln!("{engine:?}: 50 claims by 2x4 claimers in {elapsed:?} ({:?} each), per instance {per_instance:?}", elapsed / 50);
+            let distinct: BTreeSet<String> = claimed.iter().cloned().collect();
+            assert_eq!(claimed.len(), 50, "{engine:?}: a job was claimed twice or never");
+            assert_eq!(distinct, made, "{engine:?}");
+            drop(stores);
+            drop_fresh(&url).await;
+        }
+    }
+
+    /// A claim not renewed passes: another instance takes the job over (an attempt more) and the
+    /// first can no longer record anything; a renewed claim holds.
+    #[tokio::test]
+    async fn an_expired_lease_is_taken_over_and_a_renewed_one_is_not() {
+        for engine in [Engine::Sqlite, Engine::Postgres] {
+            let Some((_keep, url)) = fresh(engine).await else { continue };
+            let (a, b) = (Store::open(&url).await.expect("a"), Store::open(&url).await.expect("b"));
+            let (ca, cb) = (claimer("a", 0.6), claimer("b", 30.0));
+            let m = models::create_model(&a.pool, "m", &upload()).await.expect("model");
+            // Renewed: held well past its first lease.
+            let ja = models::claim_next_job(&a.pool, &ca).await.expect("claim").expect("job");
+            assert_eq!(ja.attempts, 1);
+            for _ in 0..6 {
+                tokio::time::sleep(Duration::from_millis(200)).await;
+                assert!(models::renew_lease(&a.pool, &ja, ca.lease_secs).await.expect("renew"), "{engine:?}");
+                assert!(models::claim_next_job(&b.pool, &cb).await.expect("claim").is_none(), "{engine:?}: taken while renewed");
+            }
+            // Not renewed: after the lease, b takes it.
+            tokio::time::sleep(Duration::from_millis(900)).await;
+            let jb = models::claim_next_job(&b.pool, &cb).await.expect("claim").expect("taken over after expiry");
+            assert_eq!((jb.id.as_str(), jb.attempts), (m.job_id.as_str(), 2), "{engine:?}");
+            assert!(!models::renew_lease(&a.pool, &ja, ca.lease_secs).await.expect("renew"), "{engine:?}: a's lease is gone");
+            assert!(!models::set_progress(&a.pool, &ja, "{}").await.expect("progress"), "{engine:?}");
+            assert!(!models::finish_failed(&a.pool, &ja, "{\"late\":1}").await.expect("finish"), "{engine:?}: a late finish wrote");
+            assert!(models::finish_succeeded(&b.pool, &jb, &OUT).await.expect("finish"), "{engine:?}");
+            let v = models::get_version(&a.pool, &m.model_id, 1).await.expect("version").expect("v1");
+            assert_eq!((v.status.as_str(), v.error_json), ("succeeded", None), "{engine:?}");
+            drop((a, b));
+            drop_fresh(&url).await;
+        }
+    }
+
+    /// A model's versions run in order even when two instances claim: version 2 waits while
+    /// version 1 runs on the other instance; another model's job does not wait.
+    #[tokio::test]
+    async fn a_models_jobs_run_in_version_order_across_instances() {
+        for engine in [Engine::Sqlite, Engine::Postgres] {
+            let Some((_keep, url)) = fresh(engine).await else { continue };
+            let (a, b) = (Store::open(&url).await.expect("a"), Store::open(&url).await.expect("b"));
+            let (ca, cb) = (claimer("a", 30.0), claimer("b", 30.0));
+            let m = models::create_model(&a.pool, "m", &upload()).await.expect("model");
+            let v2 = models::create_version(&a.pool, &m.model_id, &upload()).await.expect("v2").expect("model");
+            let v3 = models::create_version(&b.pool, &m.model_id, &upload()).await.expect("v3").expect("model");
+            let other = models::create_model(&b.pool, "other", &upload()).await.expect("model");
+            let j1 = models::claim_next_job(&a.pool, &ca).await.expect("claim").expect("v1");
+            assert_eq!(j1.version, 1);
+            let jo = models::claim_next_job(&b.pool, &cb).await.expect("claim").expect("other model");
+            assert_eq!(jo.id, other.job_id, "{engine:?}: version 2 must wait for version 1");
+            assert!(models::claim_next_job(&b.pool, &cb).await.expect("claim").is_none(), "{engine:?}");
+            assert!(models::finish_succeeded(&a.pool, &j1, &OUT).await.expect("finish"));
+            let j2 = models::claim_next_job(&b.pool, &cb).await.expect("claim").expect("v2");
+            assert_eq!(j2.id, v2.job_id, "{engine:?}");
+            assert!(models::claim_next_job(&a.pool, &ca).await.expect("claim").is_none(), "{engine:?}: v3 waits for v2");
+            assert!(models::finish_failed(&b.pool, &j2, "{}").await.expect("finish"));
+            assert_eq!(models::claim_next_job(&a.pool, &ca).await.expect("claim").expect("v3").id, v3.job_id, "{engine:?}");
+            drop((a, b));
+            drop_fresh(&url).await;
+        }
+    }
+
+    /// Progress one instance records is read by another; requeue at start-up leaves a live
+    /// instance's job alone on PostgreSQL.
+    #[tokio::test]
+    async fn progress_is_shared_and_requeue_spares_live_leases() {
+        for engine in [Engine::Sqlite, Engine::Postgres] {
+            let Some((_keep, url)) = fresh(engine).await else { continue };
+            let (a, b) = (Store::open(&url).await.expect("a"), Store::open(&url).await.expect("b"));
+            let m = models::create_model(&a.pool, "m", &upload()).await.expect("model");
+            let j = models::claim_next_job(&a.pool, &claimer("a", 30.0)).await.expect("claim").expect("job");
+            assert!(models::set_progress(&a.pool, &j, "{\"stage\":\"meshes\"}").await.expect("progress"));
+            let seen = models::get_job(&b.pool, &m.job_id).await.expect("job").expect("job");
+            assert_eq!(seen.progress_json.as_deref(), Some("{\"stage\":\"meshes\"}"), "{engine:?}");
+            let requeued = models::requeue_unfinished(&b.pool).await.expect("requeue");
+            match engine {
+                // One server per SQLite database: a start re-queues every running job.
+                Engine::Sqlite => assert_eq!(requeued, 1),
+                Engine::Postgres => {
+                    assert_eq!(requeued, 0, "a live instance's job was re-queued");
+                    assert!(models::finish_succeeded(&a.pool, &j, &OUT).await.expect("finish"));
+                    assert_eq!(models::get_job(&b.pool, &m.job_id).await.expect("job").expect("job").progress_json, None);
+                }
+            }
+            drop((a, b));
+            drop_fresh(&url).await;
+        }
+    }
+}
