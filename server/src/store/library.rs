@@ -235,6 +235,9 @@ async fn write_class(conn: &mut AnyConnection, c: &Class) -> Result<(), StoreErr
         .bind(i64::from(p.datasheet))
         .bind(p.default.as_ref().map(|d| d.to_json().to_string()))
         .bind(&p.comment)
+        // Not a cached statement: sqlx's Any driver gives a NULL f64 the PostgreSQL type float4,
+        // and a statement prepared with it would refuse the next row's float8 limit.
+        .persistent(false)
         .execute(&mut *conn)
         .await?;
     }
