@@ -10,8 +10,8 @@
 //! them (`succeeded`, `finished_at`); any error is stored as a problem document on the job and
 //! the version (`failed`).
 //!
-//! Restart: [`Jobs::start`] (called by `App::build`) first re-queues every job a stopped server
-//! left `queued` or `running` (`store::models::requeue_unfinished`), then runs them.
+//! Restart: [`Jobs::start`] (called by `App::build`) first re-queues the jobs a stopped server
+//! left `running` (`store::models::requeue_unfinished`), then runs them.
 //!
 //! Poison jobs: every claim counts an attempt (`jobs.attempts`). A job claimed again after
 //! [`MAX_ATTEMPTS`] claims was running each time the service stopped: its conversion most likely
@@ -19,13 +19,19 @@
 //! instead of being run again and taking the service down at every start. Conversion
 //! is deterministic and idempotent and blobs are content-addressed, so redoing a half-done job is
 //! harmless; a crash between the blob writes and the database update leaves at worst an
-//! unreferenced blob. One server per database: two servers would each re-queue the other's
-//! running jobs (still harmless, just wasted work).
+//! unreferenced blob.
+//!
+//! Several instances (PostgreSQL): each claim holds a lease (`jobs.lease_owner`,
+//! `jobs.lease_until`) that [`keep_while`] renews every third of the lease while the job runs. A
+//! job whose instance died is claimable again once its lease has passed (an attempt more), and
+//! the result of an instance that lost its lease is discarded (`finish_*` are conditional on the
+//! lease). A start re-queues only jobs no live instance holds (see
+//! `store::models::requeue_unfinished`).
 //!
 //! Progress: a running job's latest step (conversion stage, `done` of `total`, an overall
 //! fraction) is kept in memory on a [`ProgressBoard`] shared with the API, which shows it on
-//! `GET /api/jobs/{id}`; it is ephemeral by nature (a restart re-runs the job from the start), so
-//! it never touches the database.
+//! `GET /api/jobs/{id}`, and written to `jobs.progress_json` at most every [`PROGRESS_EVERY`]
+//! when it changed, so that the other instances show it too.
 //!
 //! Shutdown: the dispatcher stops when the last [`Jobs`] handle is dropped (the app's state);
 //! queued jobs wait in the table for the next start. [`Jobs::halt`] stops it at once, like a
