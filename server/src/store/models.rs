@@ -78,6 +78,8 @@ pub struct JobRow {
     pub finished_at: Option<String>,
     /// The latest progress a worker recorded while the job runs (`crate::jobs::JobProgress` as JSON).
     pub progress_json: Option<String>,
+    /// Claims of the job so far (see [`ClaimedJob::attempts`]).
+    pub attempts: i64,
 }
 
 /// A job a worker took, with what it needs to run.
@@ -256,7 +258,7 @@ pub async fn delete_version(pool: &Pool, model_id: &str, version: i64) -> Result
 
 pub async fn get_job(pool: &Pool, id: &str) -> Result<Option<JobRow>, StoreError> {
     Ok(sqlx::query_as(&pool.sql(
-        "SELECT id, kind, model_id, version, status, error_json, created_at, started_at, finished_at, progress_json
+        "SELECT id, kind, model_id, version, status, error_json, created_at, started_at, finished_at, progress_json, attempts
          FROM jobs WHERE id = ?",
     ))
     .bind(id)
