@@ -310,6 +310,32 @@ mod tests {
 
     const OUT: JobOutputs<'static> = JobOutputs { package_sha256: "p", report_sha256: "r", summary_json: "{}" };
 
+    /// SQLite databases made before the migrations moved to `migrations/sqlite/` still open: sqlx
+    /// records each applied migration's SHA-384 and refuses a database whose files changed. These
+    /// are the digests of the files as they were applied (never edit an applied migration).
+    #[test]
+    fn applied_sqlite_migrations_are_byte_identical() {
+        use sha2::Digest;
+        let applied = [
+        ("0001_init.sql", "403287fe7abb052666819f310348e437edbeebcace0ad4ee7dd63829a7f1db9d3da21c4bd8eeefce4ba1c7719c7ac96f"),
+        ("0002_versions.sql", "99699dea2b0a2ca99ea552f78b9f2b139e4cbeb087feddceefdc4aaff6c76ee2cda680ced48a43ebbc3cafbc3b26d649"),
+        ("0003_job_attempts.sql", "9e8ec94eb2fa73b054d7764b736ba8936c40c1d63a00b7eb16bbd1945bdbd52af5d6b68e671959ecc68adac977075364"),
+        ("0004_token_expiry.sql", "9fa0a47517a8dcd09680a4f33ef8dac826549fe9448dfc23a1ef1f4fa7f5b6732c89650335777ab3ae624f89f1bbdf3f"),
+        ("0005_library_datasheet.sql", "a9c0c613806d5cc48c19ba8ad992328c3672b716168e17cf79594a8712ece0d3a4a5694b4aee7cbec82cea9718c93743"),
+        ("0006_motions.sql", "dc0f3117036c9a715bf11e9df6ef1109cd5a57473af28ff279bbfaad0a5d6ab415a544aa8eda4cb524b709c0018299c1"),
+        ("0007_results.sql", "6ae9fa4e16e2467df3021a2780f4dcf9e3f82d35e08ba6f86c84dc28fedc98471fcf51a97a0d7e0b500463e09b63ac71"),
+        ("0008_collision_pairs.sql", "bcd3412e4defa56bb1820c6d436498fc8e8f771bc59d193b6a35b001ed179accd66955b35777bc1bc6c3c758c22bc471"),
+        ];
+        let migrator = sqlx::migrate!("../migrations/sqlite");
+        for (file, digest) in applied {
+            let version: i64 = file[..4].parse().expect("version");
+            let m = migrator.iter().find(|m| m.version == version).expect("migration");
+            assert_eq!(hex::encode(&*m.checksum), digest, "{file} changed");
+            let on_disk = std::fs::read(format!("{}/../migrations/sqlite/{file}", env!("CARGO_MANIFEST_DIR"))).expect("file");
+            assert_eq!(hex::encode(sha2::Sha384::digest(&on_disk)), digest, "{file} changed");
+        }
+    }
+
     #[test]
     fn placeholders_become_numbered_for_postgres_outside_literals() {
         let q = "SELECT a FROM t WHERE x = ? AND y = '?' AND z = ? AND w = ?2";
