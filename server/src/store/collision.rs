@@ -25,8 +25,10 @@ pub async fn apply(store: &Store, model_id: &str, changes: &[(String, String, Op
         let (a, b) = ordered(a, b);
         match allowed {
             Some(x) => {
-                sqlx::query(&store.pool.sql("INSERT INTO collision_pairs (model_id, body_a, body_b, allowed, updated_at) VALUES (?, ?, ?, ?, ?)
-                     ON CONFLICT (model_id, body_a, body_b) DO UPDATE SET allowed = excluded.allowed, updated_at = excluded.updated_at"))
+                sqlx::query(&store.pool.sql(
+                    "INSERT INTO collision_pairs (model_id, body_a, body_b, allowed, updated_at) VALUES (?, ?, ?, ?, ?)
+                     ON CONFLICT (model_id, body_a, body_b) DO UPDATE SET allowed = excluded.allowed, updated_at = excluded.updated_at",
+                ))
                 .bind(model_id)
                 .bind(a)
                 .bind(b)

@@ -38,13 +38,15 @@ pub async fn get(store: &Store, model_id: &str, joint: &str) -> Result<Option<As
 /// Inserts or replaces the assignment of `a.joint`.
 pub async fn put(store: &Store, model_id: &str, a: &Assignment) -> Result<(), StoreError> {
     let t = now(&store.pool).await?;
-    sqlx::query(&store.pool.sql("INSERT INTO drives (model_id, joint, joint_node_id, motor_instance, gear_instance, controller_instance, overrides_json, reference_json, updated_at)
+    sqlx::query(&store.pool.sql(
+        "INSERT INTO drives (model_id, joint, joint_node_id, motor_instance, gear_instance, controller_instance, overrides_json, reference_json, updated_at)
          VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)
          ON CONFLICT (model_id, joint) DO UPDATE SET
            joint_node_id = excluded.joint_node_id, motor_instance = excluded.motor_instance,
            gear_instance = excluded.gear_instance, controller_instance = excluded.controller_instance,
            overrides_json = excluded.overrides_json, reference_json = excluded.reference_json,
-           updated_at = excluded.updated_at"))
+           updated_at = excluded.updated_at",
+    ))
     .bind(model_id)
     .bind(&a.joint)
     .bind(&a.joint_node_id)

@@ -106,13 +106,17 @@ fn decode_param(row: ParamRow) -> Result<(String, Parameter), StoreError> {
 
 /// Classes (all, or the one with `id`), by name, with their parameters in order.
 async fn load_classes(conn: &mut AnyConnection, id: Option<&str>) -> Result<Vec<Class>, StoreError> {
-    let rows: Vec<ClassRow> = sqlx::query_as(&sql(Engine::of(conn), "SELECT id, name, domain, modelica_class, description FROM library_classes
-         WHERE ?1 IS NULL OR id = ?1 ORDER BY name, id"))
+    let rows: Vec<ClassRow> = sqlx::query_as(&sql(Engine::of(conn),
+        "SELECT id, name, domain, modelica_class, description FROM library_classes
+         WHERE ?1 IS NULL OR id = ?1 ORDER BY name, id",
+    ))
     .bind(id)
     .fetch_all(&mut *conn)
     .await?;
-    let params: Vec<ParamRow> = sqlx::query_as(&sql(Engine::of(conn), "SELECT class_id, name, type, unit, min_value, max_value, editable, datasheet, default_json, comment
-         FROM library_parameters WHERE ?1 IS NULL OR class_id = ?1 ORDER BY class_id, position, name"))
+    let params: Vec<ParamRow> = sqlx::query_as(&sql(Engine::of(conn),
+        "SELECT class_id, name, type, unit, min_value, max_value, editable, datasheet, default_json, comment
+         FROM library_parameters WHERE ?1 IS NULL OR class_id = ?1 ORDER BY class_id, position, name",
+    ))
     .bind(id)
     .fetch_all(&mut *conn)
     .await?;
@@ -137,10 +141,12 @@ async fn load_instances(
     class_id: Option<&str>,
     domain: Option<&str>,
 ) -> Result<Vec<(Instance, Class)>, StoreError> {
-    let rows: Vec<InstanceRow> = sqlx::query_as(&sql(Engine::of(conn), "SELECT i.id, i.class_id, i.name, i.values_json, i.source
+    let rows: Vec<InstanceRow> = sqlx::query_as(&sql(Engine::of(conn),
+        "SELECT i.id, i.class_id, i.name, i.values_json, i.source
          FROM library_instances i JOIN library_classes c ON c.id = i.class_id
          WHERE (?1 IS NULL OR i.id = ?1) AND (?2 IS NULL OR i.class_id = ?2) AND (?3 IS NULL OR c.domain = ?3)
-         ORDER BY c.name, c.id, i.name, i.id"))
+         ORDER BY c.name, c.id, i.name, i.id",
+    ))
     .bind(id)
     .bind(class_id)
     .bind(domain)
@@ -209,9 +215,11 @@ pub async fn export(store: &Store) -> Result<Library, StoreError> {
 
 /// Creates or replaces a class row and all its parameters.
 async fn write_class(conn: &mut AnyConnection, c: &Class) -> Result<(), StoreError> {
-    sqlx::query(&sql(Engine::of(conn), "INSERT INTO library_classes (id, name, domain, modelica_class, description) VALUES (?1, ?2, ?3, ?4, ?5)
+    sqlx::query(&sql(Engine::of(conn),
+        "INSERT INTO library_classes (id, name, domain, modelica_class, description) VALUES (?1, ?2, ?3, ?4, ?5)
          ON CONFLICT(id) DO UPDATE SET name = excluded.name, domain = excluded.domain,
-             modelica_class = excluded.modelica_class, description = excluded.description"))
+             modelica_class = excluded.modelica_class, description = excluded.description",
+    ))
     .bind(&c.id)
     .bind(&c.name)
     .bind(&c.domain)
@@ -221,9 +229,11 @@ async fn write_class(conn: &mut AnyConnection, c: &Class) -> Result<(), StoreErr
     .await?;
     sqlx::query(&sql(Engine::of(conn), "DELETE FROM library_parameters WHERE class_id = ?1")).bind(&c.id).execute(&mut *conn).await?;
     for (position, p) in c.parameters.iter().enumerate() {
-        sqlx::query(&sql(Engine::of(conn), "INSERT INTO library_parameters
+        sqlx::query(&sql(Engine::of(conn),
+            "INSERT INTO library_parameters
                  (class_id, name, position, type, unit, min_value, max_value, editable, datasheet, default_json, comment)
-             VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11)"))
+             VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11)",
+        ))
         .bind(&c.id)
         .bind(&p.name)
         .bind(position as i64)
@@ -246,9 +256,11 @@ async fn write_class(conn: &mut AnyConnection, c: &Class) -> Result<(), StoreErr
 
 /// Creates or replaces an instance row.
 async fn write_instance(conn: &mut AnyConnection, i: &Instance) -> Result<(), StoreError> {
-    sqlx::query(&sql(Engine::of(conn), "INSERT INTO library_instances (id, class_id, name, values_json, source) VALUES (?1, ?2, ?3, ?4, ?5)
+    sqlx::query(&sql(Engine::of(conn),
+        "INSERT INTO library_instances (id, class_id, name, values_json, source) VALUES (?1, ?2, ?3, ?4, ?5)
          ON CONFLICT(id) DO UPDATE SET class_id = excluded.class_id, name = excluded.name,
-             values_json = excluded.values_json, source = excluded.source"))
+             values_json = excluded.values_json, source = excluded.source",
+    ))
     .bind(&i.id)
     .bind(&i.class_id)
     .bind(&i.name)
@@ -370,8 +382,10 @@ pub async fn delete_instance(store: &Store, id: &str) -> Result<Removal, StoreEr
     let Some((name,)) = found else {
         return Ok(Removal::NotFound);
     };
-    let drives: Vec<(String, String)> = sqlx::query_as(&sql(Engine::of(&tx), "SELECT model_id, joint FROM drives
-         WHERE motor_instance = ?1 OR gear_instance = ?1 OR controller_instance = ?1 ORDER BY model_id, joint"))
+    let drives: Vec<(String, String)> = sqlx::query_as(&sql(Engine::of(&tx),
+        "SELECT model_id, joint FROM drives
+         WHERE motor_instance = ?1 OR gear_instance = ?1 OR controller_instance = ?1 ORDER BY model_id, joint",
+    ))
     .bind(id)
     .fetch_all(&mut *tx)
     .await?;
@@ -493,9 +507,11 @@ mod tests {
             .execute(&store.pool)
             .await
             .expect("model");
-        sqlx::query(&store.pool.sql("INSERT INTO drives (model_id, joint, joint_node_id, motor_instance, gear_instance, controller_instance,
+        sqlx::query(&store.pool.sql(
+            "INSERT INTO drives (model_id, joint, joint_node_id, motor_instance, gear_instance, controller_instance,
                  reference_json, updated_at)
-             VALUES ('m1', 'J1', '1', ?1, ?2, ?3, '{}', '2024-01-01T00:00:00Z')"))
+             VALUES ('m1', 'J1', '1', ?1, ?2, ?3, '{}', '2024-01-01T00:00:00Z')",
+        ))
         .bind(seed::MAXON_RE40)
         .bind(seed::GEAR_100)
         .bind(seed::ROBOT_R3_CONTROLLER)
@@ -529,8 +545,10 @@ mod tests {
             else {
                 continue;
             };
-            sqlx::query(&store.pool.sql("UPDATE library_instances SET source = ?2, values_json = json_remove(values_json,
-                     '$.T_nom', '$.T_peak', '$.w_max', '$.T_rated', '$.w_in_max', '$.J_in', '$.F_peak') WHERE id = ?1"))
+            sqlx::query(&store.pool.sql(
+                "UPDATE library_instances SET source = ?2, values_json = json_remove(values_json,
+                     '$.T_nom', '$.T_peak', '$.w_max', '$.T_rated', '$.w_in_max', '$.J_in', '$.F_peak') WHERE id = ?1",
+            ))
             .bind(&i.id)
             .bind(i.source[..cut].trim_end())
             .execute(&store.pool)

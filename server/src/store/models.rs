@@ -489,8 +489,10 @@ pub async fn mark_interrupted(pool: &Pool, job_id: &str) -> Result<bool, StoreEr
         tx.rollback().await?;
         return Ok(false);
     };
-    sqlx::query(&pool.sql("UPDATE versions SET status = 'running', package_sha256 = NULL, report_sha256 = NULL, summary_json = NULL, error_json = NULL
-         WHERE model_id = ? AND version = ?"))
+    sqlx::query(&pool.sql(
+        "UPDATE versions SET status = 'running', package_sha256 = NULL, report_sha256 = NULL, summary_json = NULL, error_json = NULL
+         WHERE model_id = ? AND version = ?",
+    ))
     .bind(&model_id)
     .bind(version)
     .execute(&mut *tx)

@@ -24,8 +24,10 @@ pub async fn limits(store: &Store, model_id: &str) -> Result<BTreeMap<String, Li
 /// Inserts or replaces the limits of `joint`.
 pub async fn put_limits(store: &Store, model_id: &str, joint: &str, e: &LimitsEdit) -> Result<(), StoreError> {
     let t = now(&store.pool).await?;
-    sqlx::query(&store.pool.sql("INSERT INTO joint_limits (model_id, joint, limits_json, updated_at) VALUES (?, ?, ?, ?)
-         ON CONFLICT (model_id, joint) DO UPDATE SET limits_json = excluded.limits_json, updated_at = excluded.updated_at"))
+    sqlx::query(&store.pool.sql(
+        "INSERT INTO joint_limits (model_id, joint, limits_json, updated_at) VALUES (?, ?, ?, ?)
+         ON CONFLICT (model_id, joint) DO UPDATE SET limits_json = excluded.limits_json, updated_at = excluded.updated_at",
+    ))
     .bind(model_id)
     .bind(joint)
     .bind(serde_json::to_string(e).map_err(|e| StoreError::Corrupt(e.to_string()))?)
