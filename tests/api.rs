@@ -23,7 +23,7 @@ async fn unknown_route_is_404() {
 async fn restart_keeps_the_database() {
     let app = TestApp::spawn().await;
     let dir = app.stop().await;
-    assert!(dir.path().join("cad2mo.db").exists());
+    assert!(dir.path().join("cad2mo.db").exists() || cad2mo_tests::app::postgres_base().is_some());
     let app = TestApp::spawn_in(dir, |_| {}).await;
     assert_eq!(app.health().await.status(), 200);
 }
@@ -46,7 +46,7 @@ async fn tokens_guard_models_and_writes_when_auth_is_required() {
     // A wrong token is refused; a created one is accepted.
     let r = app.client.get(app.url("/api/models")).bearer_auth("c2m_wrong").send().await.expect("get");
     assert_eq!(r.status(), 401);
-    let url = format!("sqlite://{}?mode=rwc", app.data_dir().join("cad2mo.db").display());
+    let url = app.database_url().to_string();
     let store = cad2mo::store::Store::open(&url).await.expect("store");
     let token = cad2mo::store::tokens::create(&store, "test", None).await.expect("token");
     let r = app.client.get(app.url("/api/models")).bearer_auth(&token).send().await.expect("get");
@@ -83,7 +83,7 @@ async fn problem_of(r: reqwest::Response, status: u16) -> serde_json::Value {
 }
 
 async fn open_store(app: &TestApp) -> cad2mo::store::Store {
-    let url = format!("sqlite://{}?mode=rwc", app.data_dir().join("cad2mo.db").display());
+    let url = app.database_url().to_string();
     cad2mo::store::Store::open(&url).await.expect("store")
 }
 

@@ -448,7 +448,7 @@ async fn a_broken_import_changes_nothing() {
 #[tokio::test]
 async fn a_library_above_the_cache_cap_still_lists() {
     let app = TestApp::spawn().await;
-    let url = format!("sqlite://{}?mode=rwc", app.data_dir().join("cad2mo.db").display());
+    let url = app.database_url().to_string();
     let store = cad2mo::store::Store::open(&url).await.expect("store");
     let (re40, _) = cad2mo::store::library::get_instance(&store, seed::MAXON_RE40).await.expect("get").expect("seeded");
     let source = "datasheet ".repeat(1_000); // 10,000 characters, the most a source may have

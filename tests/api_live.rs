@@ -267,7 +267,7 @@ fn hex_bytes<const N: usize>(hex: &str) -> [u8; N] {
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn where_tokens_are_required_frames_and_viewers_need_one() {
     let app = TestApp::spawn_with(|s| s.force_auth = true).await;
-    let store = cad2mo::store::Store::open(&format!("sqlite://{}?mode=rwc", app.data_dir().join("cad2mo.db").display())).await.expect("store");
+    let store = cad2mo::store::Store::open(app.database_url()).await.expect("store");
     let token = cad2mo::store::tokens::create(&store, "sim", None).await.expect("token");
     let auth = reqwest::header::HeaderValue::from_str(&format!("Bearer {token}")).expect("header");
     let form = cad2mo_tests::app_models::upload_form(arm_zip(2), "arm.zip", &[]);

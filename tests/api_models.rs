@@ -381,7 +381,7 @@ async fn unknown_things_are_404() {
 }
 
 async fn open_store(dir: &Path) -> cad2mo::store::Store {
-    let url = cad2mo::config::Settings::for_tests(dir).database_url;
+    let url = cad2mo_tests::app::database_url_for(dir).await;
     cad2mo::store::Store::open(&url).await.expect("store")
 }
 

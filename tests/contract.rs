@@ -82,7 +82,7 @@ async fn the_service_keeps_its_contract() {
         s.max_checks = 4;
     })
     .await;
-    let url = format!("sqlite://{}?mode=rwc", app.data_dir().join("cad2mo.db").display());
+    let url = app.database_url().to_string();
     let store = cad2mo::store::Store::open(&url).await.expect("store");
     let token = cad2mo::store::tokens::create(&store, "contract", None).await.expect("token");
     app.client = token_client(&token);

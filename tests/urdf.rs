@@ -7,7 +7,7 @@
 //!   link's world pose at the zero configuration and at random ones, and the gravity torques.
 
 use std::collections::BTreeMap;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::Command;
 
 use cad2mo::mechanism::{Mechanism, XorShift};

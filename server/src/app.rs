@@ -45,14 +45,14 @@ impl App {
     pub async fn build(settings: Settings) -> anyhow::Result<App> {
         std::fs::create_dir_all(&settings.data_dir)
             .with_context(|| format!("creating data folder {}", settings.data_dir.display()))?;
-        let store = Store::open(&settings.database_url).await.context("opening the database")?;
+        let store = Store::open_with(&settings.database_url, settings.db_pool_size).await.context("opening the database")?;
         crate::store::library::seed_if_empty(&store).await.context("seeding the motor library")?;
         let blobs = Blobs::open(&settings.blobs, &settings.data_dir).await.context("opening the file store")?;
         tracing::info!(blobs = %blobs.location(), "file store open");
         let listener = TcpListener::bind(settings.bind).await.with_context(|| format!("binding {}", settings.bind))?;
         let relay = crate::relay::Relay::start(settings.live_bind, settings.requires_auth(), store.clone(), blobs.clone()).await;
         let live = relay.addr().map(|a| (settings.live_host(), a.port()));
-        let jobs = Jobs::start(store.clone(), blobs.clone(), settings.workers, live)
+        let jobs = Jobs::start(store.clone(), blobs.clone(), settings.workers, live, settings.lease)
             .await
             .context("starting the conversion workers")?;
         let addr = listener.local_addr().unwrap_or(settings.bind);

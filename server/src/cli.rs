@@ -369,7 +369,12 @@ async fn open_store(service: crate::config::ServeArgs) -> anyhow::Result<(crate:
     let settings = crate::config::Settings::from_args(service);
     std::fs::create_dir_all(&settings.data_dir)?;
     let store = crate::store::Store::open(&settings.database_url).await?;
-    let shown = settings.database_url.trim_start_matches("sqlite://").split('?').next().unwrap_or_default().to_string();
+    let url = settings.database_url.split('?').next().unwrap_or_default();
+    // A PostgreSQL URL is shown without its user and password.
+    let shown = match url.split_once("://") {
+        Some((scheme, rest)) if scheme.starts_with("postgres") => format!("{scheme}://{}", rest.rsplit_once('@').map_or(rest, |(_, h)| h)),
+        _ => url.trim_start_matches("sqlite://").to_string(),
+    };
     Ok((store, shown))
 }
 
@@ -482,7 +487,7 @@ fn reexport(settings: crate::config::Settings, model: Option<String>) -> ExitCod
                 }
             }
             let live = settings.live_bind.map(|a| (settings.live_host(), a.port()));
-            let pool = crate::jobs::Jobs::start(store.clone(), blobs, settings.workers, live).await?;
+            let pool = crate::jobs::Jobs::start(store.clone(), blobs, settings.workers, live, settings.lease).await?;
             pool.notify();
             let total = jobs.len();
             let mut done = 0;

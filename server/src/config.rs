@@ -12,9 +12,17 @@ pub struct ServeArgs {
     /// Address to listen on.
     #[arg(long, env = "CAD2MO_BIND", default_value = "127.0.0.1:8080")]
     pub bind: SocketAddr,
-    /// SQLite database URL (default: `<data-dir>/cad2mo.db`, created on start).
+    /// Database URL: `sqlite://FILE` (default: `<data-dir>/cad2mo.db`, created on start) or
+    /// `postgres://USER:PASSWORD@HOST:PORT/DB` (several instances may share one PostgreSQL database).
     #[arg(long, env = "CAD2MO_DATABASE_URL")]
     pub database_url: Option<String>,
+    /// Database connections per instance (mind PostgreSQL's max_connections across instances).
+    #[arg(long, env = "CAD2MO_DB_POOL_SIZE", default_value_t = crate::store::POOL_SIZE)]
+    pub db_pool_size: u32,
+    /// Seconds a job's claim holds without renewal (renewed every third of it while the job runs):
+    /// the jobs of an instance that died are taken over by another instance this long after.
+    #[arg(long, env = "CAD2MO_LEASE_SECS", default_value_t = 30.0)]
+    pub lease_secs: f64,
     /// Folder for the database and the content-addressed files (bundles, packages, reports).
     #[arg(long, env = "CAD2MO_DATA_DIR", default_value = "data")]
     pub data_dir: PathBuf,
@@ -71,6 +79,10 @@ fn parse_live_bind(s: &str) -> Result<LiveBind, String> {
 pub struct Settings {
     pub bind: SocketAddr,
     pub database_url: String,
+    /// Database connections per instance.
+    pub db_pool_size: u32,
+    /// How long a job's claim holds without renewal (see `crate::jobs`).
+    pub lease: std::time::Duration,
     pub data_dir: PathBuf,
     pub max_upload: u64,
     pub workers: usize,
@@ -102,6 +114,8 @@ impl Settings {
         Settings {
             bind: a.bind,
             database_url,
+            db_pool_size: a.db_pool_size.max(1),
+            lease: std::time::Duration::try_from_secs_f64(a.lease_secs.clamp(1.0, 3600.0)).unwrap_or(std::time::Duration::from_secs(30)),
             data_dir: a.data_dir,
             max_upload: a.max_upload,
             workers,
@@ -124,6 +138,8 @@ impl Settings {
         Settings {
             bind: SocketAddr::from(([127, 0, 0, 1], 0)),
             database_url: format!("sqlite://{}?mode=rwc", dir.join("cad2mo.db").display()),
+            db_pool_size: crate::store::POOL_SIZE,
+            lease: std::time::Duration::from_secs(30),
             data_dir: dir.to_path_buf(),
             max_upload: 64 * 1024 * 1024,
             workers: 2,

@@ -10,8 +10,8 @@
 //! them (`succeeded`, `finished_at`); any error is stored as a problem document on the job and
 //! the version (`failed`).
 //!
-//! Restart: [`Jobs::start`] (called by `App::build`) first re-queues every job a stopped server
-//! left `queued` or `running` (`store::models::requeue_unfinished`), then runs them.
+//! Restart: [`Jobs::start`] (called by `App::build`) first re-queues the jobs a stopped server
+//! left `running` (`store::models::requeue_unfinished`), then runs them.
 //!
 //! Poison jobs: every claim counts an attempt (`jobs.attempts`). A job claimed again after
 //! [`MAX_ATTEMPTS`] claims was running each time the service stopped: its conversion most likely
@@ -19,13 +19,19 @@
 //! instead of being run again and taking the service down at every start. Conversion
 //! is deterministic and idempotent and blobs are content-addressed, so redoing a half-done job is
 //! harmless; a crash between the blob writes and the database update leaves at worst an
-//! unreferenced blob. One server per database: two servers would each re-queue the other's
-//! running jobs (still harmless, just wasted work).
+//! unreferenced blob.
+//!
+//! Several instances (PostgreSQL): each claim holds a lease (`jobs.lease_owner`,
+//! `jobs.lease_until`) that [`keep_while`] renews every third of the lease while the job runs. A
+//! job whose instance died is claimable again once its lease has passed (an attempt more), and
+//! the result of an instance that lost its lease is discarded (`finish_*` are conditional on the
+//! lease). A start re-queues only jobs no live instance holds (see
+//! `store::models::requeue_unfinished`).
 //!
 //! Progress: a running job's latest step (conversion stage, `done` of `total`, an overall
 //! fraction) is kept in memory on a [`ProgressBoard`] shared with the API, which shows it on
-//! `GET /api/jobs/{id}`; it is ephemeral by nature (a restart re-runs the job from the start), so
-//! it never touches the database.
+//! `GET /api/jobs/{id}`, and written to `jobs.progress_json` at most every [`PROGRESS_EVERY`]
+//! when it changed, so that the other instances show it too.
 //!
 //! Shutdown: the dispatcher stops when the last [`Jobs`] handle is dropped (the app's state);
 //! queued jobs wait in the table for the next start. [`Jobs::halt`] stops it at once, like a
@@ -47,12 +53,16 @@ use crate::api::ApiError;
 use crate::export::{self, BuildStage, BuildStep, ExportOptions};
 use crate::pipeline::observe::Stage;
 use crate::store::blobs::Blobs;
-use crate::store::models::{self, ClaimedJob, JobOutputs};
-use crate::store::{Store, StoreError};
+use crate::store::models::{self, ClaimedJob, Claimer, JobOutputs};
+use crate::store::{Engine, Store, StoreError};
 
 /// Claims of one job before it is given up (see the module doc): a job claimed for the
 /// `MAX_ATTEMPTS + 1`-th time fails without running.
 pub const MAX_ATTEMPTS: i64 = 3;
+
+/// How often a running job's progress is written to the database at most (4 a second), so that
+/// every instance can show it.
+const PROGRESS_EVERY: Duration = Duration::from_millis(250);
 
 /// A handle on the worker pool (cheap to clone): wakes the dispatcher.
 #[derive(Clone, Debug)]
@@ -76,6 +86,8 @@ struct Ctx {
     board: ProgressBoard,
     /// Where packages' live views send to (host, UDP port), when the service receives them.
     live: Option<(String, u16)>,
+    /// This instance's claims: its id and the lease time.
+    claimer: Claimer,
 }
 
 /// Where a running job is.
@@ -131,6 +143,21 @@ impl JobProgress {
     fn storing() -> JobProgress {
         Self::of(STORING, 0, 1)
     }
+
+    /// The progress as stored in the database (`jobs.progress_json`), for other instances.
+    fn to_json(&self) -> String {
+        serde_json::json!({"stage": self.stage, "done": self.done, "total": self.total, "fraction": self.fraction}).to_string()
+    }
+
+    /// Progress stored by [`JobProgress::to_json`] (by this or another instance); `None` when it is
+    /// not one (an unknown stage).
+    pub fn from_json(json: &str) -> Option<JobProgress> {
+        let v: serde_json::Value = serde_json::from_str(json).ok()?;
+        let (stage, label, _) = *STAGES.iter().find(|s| Some(s.0) == v["stage"].as_str())?;
+        let done = usize::try_from(v["done"].as_u64()?).ok()?;
+        let total = usize::try_from(v["total"].as_u64()?).ok()?;
+        Some(JobProgress { stage, label, done, total, fraction: v["fraction"].as_f64()?.clamp(0.0, 1.0) })
+    }
 }
 
 /// The latest progress of every running job (cheap to clone; shared by workers and the API).
@@ -160,14 +187,24 @@ impl Jobs {
     /// Re-queues unfinished jobs, then starts the dispatcher with `workers` workers (at least one).
     /// Packages get a live view sending to `live` (host, UDP port) when it is given.
     /// Must be called inside a tokio runtime.
-    pub async fn start(store: Store, blobs: Blobs, workers: usize, live: Option<(String, u16)>) -> Result<Jobs, StoreError> {
+    /// A claim holds for `lease` and is renewed every third of it while the job runs.
+    pub async fn start(
+        store: Store,
+        blobs: Blobs,
+        workers: usize,
+        live: Option<(String, u16)>,
+        lease: Duration,
+    ) -> Result<Jobs, StoreError> {
         let requeued = models::requeue_unfinished(&store.pool).await?;
         if requeued > 0 {
             tracing::warn!(requeued, "jobs interrupted by a stop were re-queued");
         }
         let (wake, rx) = mpsc::channel(1);
         let board = ProgressBoard::default();
-        let ctx = Ctx { store, blobs, board: board.clone(), live };
+        let instance = uuid::Uuid::new_v4().simple().to_string();
+        tracing::info!(instance = %instance, lease_secs = lease.as_secs_f64(), "job queue instance");
+        let claimer = Claimer { instance, lease_secs: lease.as_secs_f64().max(0.1) };
+        let ctx = Ctx { store, blobs, board: board.clone(), live, claimer };
         let (signal, halted) = watch::channel(false);
         let dispatcher = tokio::spawn(dispatch(ctx, workers.max(1), rx, halted).instrument(tracing::info_span!("jobs")));
         let halt = Arc::new(Halt { signal, dispatcher: Mutex::new(Some(dispatcher)) });
@@ -213,7 +250,7 @@ async fn dispatch(ctx: Ctx, workers: usize, mut wake: mpsc::Receiver<()>, mut ha
         if halted_now(&halted) {
             break;
         }
-        match models::claim_next_job(&ctx.store.pool).await {
+        match models::claim_next_job(&ctx.store.pool, &ctx.claimer).await {
             Ok(Some(job)) => {
                 let span = tracing::info_span!("job", job_id = %job.id, kind = %job.kind, model_id = %job.model_id, version = job.version);
                 let ctx = ctx.clone();
@@ -228,7 +265,12 @@ async fn dispatch(ctx: Ctx, workers: usize, mut wake: mpsc::Receiver<()>, mut ha
             Ok(None) => {
                 drop(permit);
                 // Woken by a new job, or after a short while: a job held back behind an earlier
-                // job of its model becomes claimable when that one finishes.
+                // job of its model becomes claimable when that one finishes, and on PostgreSQL
+                // other instances queue jobs (and may die, leaving leases to expire).
+                let poll = match ctx.store.pool.engine() {
+                    Engine::Sqlite => Duration::from_millis(100),
+                    Engine::Postgres => Duration::from_millis(250),
+                };
                 tokio::select! {
                     w = wake.recv() => if w.is_none() {
                         tracing::info!("job workers stopped");
@@ -237,7 +279,7 @@ async fn dispatch(ctx: Ctx, workers: usize, mut wake: mpsc::Receiver<()>, mut ha
                         return;
                     },
                     () = halt_requested(&mut halted) => break,
-                    () = tokio::time::sleep(Duration::from_millis(100)) => {}
+                    () = tokio::time::sleep(poll) => {}
                 }
             }
             Err(e) => {
@@ -284,7 +326,7 @@ async fn run(ctx: &Ctx, job: ClaimedJob) {
         tracing::error!(attempts = job.attempts, "the job stopped the service every time it ran: marked failed");
         Err(ApiError::Aborted { times: job.attempts - 1 })
     } else {
-        convert(ctx, &job).await
+        keep_while(ctx, &job, convert(ctx, &job)).await
     };
     let ms = started.elapsed().as_millis() as u64;
     for attempt in 1..=3 {
@@ -300,7 +342,12 @@ async fn run(ctx: &Ctx, job: ClaimedJob) {
             Err(e) => models::finish_failed(&ctx.store.pool, &job, &e.problem_json().to_string()).await,
         };
         match recorded {
-            Ok(()) => {
+            Ok(false) => {
+                ctx.board.clear(&job.id);
+                tracing::warn!(ms, "the job's lease was lost (another instance took it over): its result is discarded");
+                return;
+            }
+            Ok(true) => {
                 ctx.board.clear(&job.id);
                 match &result {
                     Ok(_) => tracing::info!(ms, "job succeeded"),
@@ -316,6 +363,49 @@ async fn run(ctx: &Ctx, job: ClaimedJob) {
     }
     // Still `running` in the table: the next start re-queues it.
     ctx.board.clear(&job.id);
+}
+
+/// Runs `work` while keeping the job's claim alive: every [`PROGRESS_EVERY`] the latest progress
+/// (when it changed) is written for other instances, and every third of the lease the lease is
+/// renewed. A lost lease is logged; the work still ends, but its result will not be recorded.
+async fn keep_while<T>(ctx: &Ctx, job: &ClaimedJob, work: impl std::future::Future<Output = T>) -> T {
+    tokio::pin!(work);
+    let renew_every = Duration::from_secs_f64(ctx.claimer.lease_secs / 3.0);
+    let mut tick = tokio::time::interval(PROGRESS_EVERY.min(renew_every));
+    tick.set_missed_tick_behavior(tokio::time::MissedTickBehavior::Delay);
+    let mut renewed = tokio::time::Instant::now();
+    let mut written: Option<JobProgress> = None;
+    let mut lost = false;
+    loop {
+        tokio::select! {
+            out = &mut work => return out,
+            _ = tick.tick() => {}
+        }
+        if lost {
+            continue;
+        }
+        let held = if renewed.elapsed() >= renew_every {
+            renewed = tokio::time::Instant::now();
+            models::renew_lease(&ctx.store.pool, job, ctx.claimer.lease_secs).await
+        } else {
+            match ctx.board.get(&job.id).filter(|p| written.as_ref() != Some(p)) {
+                Some(p) => {
+                    let r = models::set_progress(&ctx.store.pool, job, &p.to_json()).await;
+                    written = Some(p);
+                    r
+                }
+                None => Ok(true),
+            }
+        };
+        match held {
+            Ok(true) => {}
+            Ok(false) => {
+                lost = true;
+                tracing::warn!("the job's lease was lost: another instance may have taken it over");
+            }
+            Err(e) => tracing::warn!(error = %e, "renewing the job's lease or recording its progress failed"),
+        }
+    }
 }
 
 /// The Modelica names of the model's latest converted version before this one (re-exports of a

@@ -1,5 +1,8 @@
-//! `TestApp`: the real service on port 0 with a fresh SQLite database and data folder per test,
-//! and one method per endpoint.
+//! `TestApp`: the real service on port 0 with a fresh database and data folder per test, and one
+//! method per endpoint. The database is SQLite in the data folder, or, when
+//! `CAD2MO_TEST_DATABASE_URL` names a PostgreSQL server (`scripts/test` starts one for a second
+//! run of the API tests), a new database `t_<uuid>` on it, dropped with the app (its URL is kept
+//! in the data folder, so a restart on the same folder finds it).
 
 use std::path::Path;
 
@@ -15,6 +18,9 @@ pub struct TestApp {
     dir: Option<tempfile::TempDir>,
     handle: Option<tokio::task::JoinHandle<()>>,
     jobs: cad2mo::jobs::Jobs,
+    database_url: String,
+    /// Another app's database (not dropped with this one).
+    shared: bool,
 }
 
 impl Drop for TestApp {
@@ -22,7 +28,33 @@ impl Drop for TestApp {
         if let Some(h) = self.handle.take() {
             h.abort();
         }
+        // Dropped with its data folder (not handed back by `stop`): its PostgreSQL database goes too.
+        if let (Some(_), Some(base)) = (&self.dir, postgres_base()) {
+            if !self.shared {
+                cad2mo::store::testdb::drop_database_blocking(base, self.database_url.clone());
+            }
+        }
     }
+}
+
+/// The PostgreSQL server API tests run on (`CAD2MO_TEST_DATABASE_URL`), if any.
+pub fn postgres_base() -> Option<String> {
+    std::env::var("CAD2MO_TEST_DATABASE_URL").ok().filter(|u| !u.is_empty())
+}
+
+/// The database URL of the data folder `dir`: SQLite inside it, or its PostgreSQL database
+/// (created on first use, its URL kept in `dir/postgres-url`).
+pub async fn database_url_for(dir: &Path) -> String {
+    let Some(base) = postgres_base() else {
+        return format!("sqlite://{}?mode=rwc", dir.join("cad2mo.db").display());
+    };
+    let file = dir.join("postgres-url");
+    if let Ok(url) = std::fs::read_to_string(&file) {
+        return url;
+    }
+    let url = cad2mo::store::testdb::create_database(&base).await.expect("a test database on CAD2MO_TEST_DATABASE_URL");
+    std::fs::write(&file, &url).expect("postgres-url");
+    url
 }
 
 impl TestApp {
@@ -40,14 +72,28 @@ impl TestApp {
     /// Spawns the app on an existing data folder (restart tests).
     pub async fn spawn_in(dir: tempfile::TempDir, tweak: impl FnOnce(&mut Settings)) -> TestApp {
         let mut settings = Settings::for_tests(dir.path());
+        settings.database_url = database_url_for(dir.path()).await;
+        if postgres_base().is_some() {
+            // A stopped (killed) app's jobs are taken over after their lease: keep it short.
+            settings.lease = std::time::Duration::from_secs(2);
+        }
+        let own_database = settings.database_url.clone();
         tweak(&mut settings);
+        // A tweak may point the app at another app's database (several instances): not ours to drop.
+        let shared = settings.database_url != own_database;
+        let database_url = settings.database_url.clone();
         let app = App::build(settings).await.expect("app builds");
         let address = format!("http://{}", app.local_addr());
         let jobs = app.state().jobs.clone();
         let handle = tokio::spawn(async move {
             let _ = app.run_until_stopped().await;
         });
-        TestApp { address, client: ui_client(), dir: Some(dir), handle: Some(handle), jobs }
+        TestApp { address, client: ui_client(), dir: Some(dir), handle: Some(handle), jobs, database_url, shared }
+    }
+
+    /// The app's database URL (SQLite in its data folder, or its PostgreSQL database).
+    pub fn database_url(&self) -> &str {
+        &self.database_url
     }
 
     /// The data folder (database and blobs).

@@ -113,10 +113,9 @@ impl Cluster {
     pub async fn new(test: &str, extra: &[&str]) -> Cluster {
         let bin = binary();
         let dir = tempfile::tempdir().expect("tempdir");
-        // With issue 16's PostgreSQL support merged, CAD2MO_TEST_DATABASE_URL names a server:
-        // take a fresh database on it (`cad2mo::store::testdb::create_database`) instead.
+        // CAD2MO_TEST_DATABASE_URL names a PostgreSQL server: a fresh database on it.
         let database_url = match std::env::var("CAD2MO_TEST_DATABASE_URL").ok().filter(|u| !u.is_empty()) {
-            Some(url) => url,
+            Some(base) => cad2mo::store::testdb::create_database(&base).await.expect("a test database on CAD2MO_TEST_DATABASE_URL"),
             None => format!("sqlite://{}?mode=rwc", dir.path().join("shared.db").display()),
         };
         let s3 = crate::s3::try_place(test).await;

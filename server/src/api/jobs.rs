@@ -62,7 +62,12 @@ async fn get_job(
         "queued" => db::queue_position(&state.store.pool, &job.id).await?.map(|(ahead, running)| QueueView { ahead, running }),
         _ => None,
     };
-    let progress = if job.status == "running" { state.jobs.progress(&job.id) } else { None };
+    // This instance's own running jobs from memory; another instance's from the progress it wrote.
+    let progress = if job.status == "running" {
+        state.jobs.progress(&job.id).or_else(|| job.progress_json.as_deref().and_then(JobProgress::from_json))
+    } else {
+        None
+    };
     Ok(Json(JobView {
         id: job.id,
         kind: job.kind,

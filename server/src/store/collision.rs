@@ -10,7 +10,7 @@ pub fn ordered<'a>(a: &'a str, b: &'a str) -> (&'a str, &'a str) {
 /// The edited pairs of a model: (a, b, allowed) with `a < b`.
 pub async fn edits(store: &Store, model_id: &str) -> Result<Vec<(String, String, bool)>, StoreError> {
     let rows: Vec<(String, String, i64)> =
-        sqlx::query_as("SELECT body_a, body_b, allowed FROM collision_pairs WHERE model_id = ? ORDER BY body_a, body_b")
+        sqlx::query_as(&store.pool.sql("SELECT body_a, body_b, allowed FROM collision_pairs WHERE model_id = ? ORDER BY body_a, body_b"))
             .bind(model_id)
             .fetch_all(&store.pool)
             .await?;
@@ -25,10 +25,10 @@ pub async fn apply(store: &Store, model_id: &str, changes: &[(String, String, Op
         let (a, b) = ordered(a, b);
         match allowed {
             Some(x) => {
-                sqlx::query(
+                sqlx::query(&store.pool.sql(
                     "INSERT INTO collision_pairs (model_id, body_a, body_b, allowed, updated_at) VALUES (?, ?, ?, ?, ?)
                      ON CONFLICT (model_id, body_a, body_b) DO UPDATE SET allowed = excluded.allowed, updated_at = excluded.updated_at",
-                )
+                ))
                 .bind(model_id)
                 .bind(a)
                 .bind(b)
@@ -38,7 +38,7 @@ pub async fn apply(store: &Store, model_id: &str, changes: &[(String, String, Op
                 .await?;
             }
             None => {
-                sqlx::query("DELETE FROM collision_pairs WHERE model_id = ? AND body_a = ? AND body_b = ?")
+                sqlx::query(&store.pool.sql("DELETE FROM collision_pairs WHERE model_id = ? AND body_a = ? AND body_b = ?"))
                     .bind(model_id)
                     .bind(a)
                     .bind(b)

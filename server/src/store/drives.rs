@@ -19,7 +19,7 @@ fn from_row(r: Row) -> Result<Assignment, StoreError> {
 const COLUMNS: &str = "joint, joint_node_id, motor_instance, gear_instance, controller_instance, overrides_json, reference_json";
 
 pub async fn list(store: &Store, model_id: &str) -> Result<Vec<Assignment>, StoreError> {
-    let rows: Vec<Row> = sqlx::query_as(&format!("SELECT {COLUMNS} FROM drives WHERE model_id = ? ORDER BY joint"))
+    let rows: Vec<Row> = sqlx::query_as(&store.pool.sql(format!("SELECT {COLUMNS} FROM drives WHERE model_id = ? ORDER BY joint")))
         .bind(model_id)
         .fetch_all(&store.pool)
         .await?;
@@ -27,7 +27,7 @@ pub async fn list(store: &Store, model_id: &str) -> Result<Vec<Assignment>, Stor
 }
 
 pub async fn get(store: &Store, model_id: &str, joint: &str) -> Result<Option<Assignment>, StoreError> {
-    let row: Option<Row> = sqlx::query_as(&format!("SELECT {COLUMNS} FROM drives WHERE model_id = ? AND joint = ?"))
+    let row: Option<Row> = sqlx::query_as(&store.pool.sql(format!("SELECT {COLUMNS} FROM drives WHERE model_id = ? AND joint = ?")))
         .bind(model_id)
         .bind(joint)
         .fetch_optional(&store.pool)
@@ -38,7 +38,7 @@ pub async fn get(store: &Store, model_id: &str, joint: &str) -> Result<Option<As
 /// Inserts or replaces the assignment of `a.joint`.
 pub async fn put(store: &Store, model_id: &str, a: &Assignment) -> Result<(), StoreError> {
     let t = now(&store.pool).await?;
-    sqlx::query(
+    sqlx::query(&store.pool.sql(
         "INSERT INTO drives (model_id, joint, joint_node_id, motor_instance, gear_instance, controller_instance, overrides_json, reference_json, updated_at)
          VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)
          ON CONFLICT (model_id, joint) DO UPDATE SET
@@ -46,7 +46,7 @@ pub async fn put(store: &Store, model_id: &str, a: &Assignment) -> Result<(), St
            gear_instance = excluded.gear_instance, controller_instance = excluded.controller_instance,
            overrides_json = excluded.overrides_json, reference_json = excluded.reference_json,
            updated_at = excluded.updated_at",
-    )
+    ))
     .bind(model_id)
     .bind(&a.joint)
     .bind(&a.joint_node_id)
@@ -63,6 +63,6 @@ pub async fn put(store: &Store, model_id: &str, a: &Assignment) -> Result<(), St
 
 /// Removes an assignment; false when there was none.
 pub async fn delete(store: &Store, model_id: &str, joint: &str) -> Result<bool, StoreError> {
-    let r = sqlx::query("DELETE FROM drives WHERE model_id = ? AND joint = ?").bind(model_id).bind(joint).execute(&store.pool).await?;
+    let r = sqlx::query(&store.pool.sql("DELETE FROM drives WHERE model_id = ? AND joint = ?")).bind(model_id).bind(joint).execute(&store.pool).await?;
     Ok(r.rows_affected() > 0)
 }

@@ -11,9 +11,10 @@
 use std::collections::{BTreeMap, HashMap};
 
 use serde_json::value::RawValue;
-use sqlx::{Sqlite, SqliteConnection, Transaction};
+use sqlx::AnyConnection;
+use sqlx::{Any, Transaction};
 
-use super::{Store, StoreError};
+use super::{sql, Engine, Store, StoreError};
 use crate::library::{self, Class, ImportCounts, ImportPlan, Instance, Issue, Library, ParamType, Parameter, Value};
 
 /// The outcome of a checked change.
@@ -35,8 +36,17 @@ pub enum Removal {
     InUse(String),
 }
 
-async fn begin(store: &Store) -> Result<Transaction<'static, Sqlite>, StoreError> {
-    Ok(store.pool.begin_with("BEGIN IMMEDIATE").await?)
+/// A transaction that holds the library's write lock from its start: SQLite's `BEGIN IMMEDIATE`;
+/// on PostgreSQL a transaction-scoped advisory lock (the same number for every library writer).
+async fn begin(store: &Store) -> Result<Transaction<'static, Any>, StoreError> {
+    match store.pool.engine() {
+        Engine::Sqlite => Ok(store.pool.begin_with("BEGIN IMMEDIATE").await?),
+        Engine::Postgres => {
+            let mut tx = store.pool.begin().await?;
+            sqlx::query("SELECT pg_advisory_xact_lock(1616)").execute(&mut *tx).await?;
+            Ok(tx)
+        }
+    }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -95,18 +105,18 @@ fn decode_param(row: ParamRow) -> Result<(String, Parameter), StoreError> {
 // Reading
 
 /// Classes (all, or the one with `id`), by name, with their parameters in order.
-async fn load_classes(conn: &mut SqliteConnection, id: Option<&str>) -> Result<Vec<Class>, StoreError> {
-    let rows: Vec<ClassRow> = sqlx::query_as(
+async fn load_classes(conn: &mut AnyConnection, id: Option<&str>) -> Result<Vec<Class>, StoreError> {
+    let rows: Vec<ClassRow> = sqlx::query_as(&sql(Engine::of(conn),
         "SELECT id, name, domain, modelica_class, description FROM library_classes
          WHERE ?1 IS NULL OR id = ?1 ORDER BY name, id",
-    )
+    ))
     .bind(id)
     .fetch_all(&mut *conn)
     .await?;
-    let params: Vec<ParamRow> = sqlx::query_as(
+    let params: Vec<ParamRow> = sqlx::query_as(&sql(Engine::of(conn),
         "SELECT class_id, name, type, unit, min_value, max_value, editable, datasheet, default_json, comment
          FROM library_parameters WHERE ?1 IS NULL OR class_id = ?1 ORDER BY class_id, position, name",
-    )
+    ))
     .bind(id)
     .fetch_all(&mut *conn)
     .await?;
@@ -126,17 +136,17 @@ async fn load_classes(conn: &mut SqliteConnection, id: Option<&str>) -> Result<V
 
 /// Instances matching the filters, each with its class, ordered by class name then name.
 async fn load_instances(
-    conn: &mut SqliteConnection,
+    conn: &mut AnyConnection,
     id: Option<&str>,
     class_id: Option<&str>,
     domain: Option<&str>,
 ) -> Result<Vec<(Instance, Class)>, StoreError> {
-    let rows: Vec<InstanceRow> = sqlx::query_as(
+    let rows: Vec<InstanceRow> = sqlx::query_as(&sql(Engine::of(conn),
         "SELECT i.id, i.class_id, i.name, i.values_json, i.source
          FROM library_instances i JOIN library_classes c ON c.id = i.class_id
          WHERE (?1 IS NULL OR i.id = ?1) AND (?2 IS NULL OR i.class_id = ?2) AND (?3 IS NULL OR c.domain = ?3)
          ORDER BY c.name, c.id, i.name, i.id",
-    )
+    ))
     .bind(id)
     .bind(class_id)
     .bind(domain)
@@ -159,7 +169,7 @@ async fn load_instances(
         .collect()
 }
 
-async fn load_library(conn: &mut SqliteConnection) -> Result<Library, StoreError> {
+async fn load_library(conn: &mut AnyConnection) -> Result<Library, StoreError> {
     let classes = load_classes(conn, None).await?;
     let instances = load_instances(conn, None, None, None).await?.into_iter().map(|(i, _)| i).collect();
     let mut lib = Library { classes, instances };
@@ -204,12 +214,12 @@ pub async fn export(store: &Store) -> Result<Library, StoreError> {
 // Writing
 
 /// Creates or replaces a class row and all its parameters.
-async fn write_class(conn: &mut SqliteConnection, c: &Class) -> Result<(), StoreError> {
-    sqlx::query(
+async fn write_class(conn: &mut AnyConnection, c: &Class) -> Result<(), StoreError> {
+    sqlx::query(&sql(Engine::of(conn),
         "INSERT INTO library_classes (id, name, domain, modelica_class, description) VALUES (?1, ?2, ?3, ?4, ?5)
          ON CONFLICT(id) DO UPDATE SET name = excluded.name, domain = excluded.domain,
              modelica_class = excluded.modelica_class, description = excluded.description",
-    )
+    ))
     .bind(&c.id)
     .bind(&c.name)
     .bind(&c.domain)
@@ -217,13 +227,13 @@ async fn write_class(conn: &mut SqliteConnection, c: &Class) -> Result<(), Store
     .bind(&c.description)
     .execute(&mut *conn)
     .await?;
-    sqlx::query("DELETE FROM library_parameters WHERE class_id = ?1").bind(&c.id).execute(&mut *conn).await?;
+    sqlx::query(&sql(Engine::of(conn), "DELETE FROM library_parameters WHERE class_id = ?1")).bind(&c.id).execute(&mut *conn).await?;
     for (position, p) in c.parameters.iter().enumerate() {
-        sqlx::query(
+        sqlx::query(&sql(Engine::of(conn),
             "INSERT INTO library_parameters
                  (class_id, name, position, type, unit, min_value, max_value, editable, datasheet, default_json, comment)
              VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11)",
-        )
+        ))
         .bind(&c.id)
         .bind(&p.name)
         .bind(position as i64)
@@ -235,6 +245,9 @@ async fn write_class(conn: &mut SqliteConnection, c: &Class) -> Result<(), Store
         .bind(i64::from(p.datasheet))
         .bind(p.default.as_ref().map(|d| d.to_json().to_string()))
         .bind(&p.comment)
+        // Not a cached statement: sqlx's Any driver gives a NULL f64 the PostgreSQL type float4,
+        // and a statement prepared with it would refuse the next row's float8 limit.
+        .persistent(false)
         .execute(&mut *conn)
         .await?;
     }
@@ -242,12 +255,12 @@ async fn write_class(conn: &mut SqliteConnection, c: &Class) -> Result<(), Store
 }
 
 /// Creates or replaces an instance row.
-async fn write_instance(conn: &mut SqliteConnection, i: &Instance) -> Result<(), StoreError> {
-    sqlx::query(
+async fn write_instance(conn: &mut AnyConnection, i: &Instance) -> Result<(), StoreError> {
+    sqlx::query(&sql(Engine::of(conn),
         "INSERT INTO library_instances (id, class_id, name, values_json, source) VALUES (?1, ?2, ?3, ?4, ?5)
          ON CONFLICT(id) DO UPDATE SET class_id = excluded.class_id, name = excluded.name,
              values_json = excluded.values_json, source = excluded.source",
-    )
+    ))
     .bind(&i.id)
     .bind(&i.class_id)
     .bind(&i.name)
@@ -301,11 +314,11 @@ pub async fn update_class(
 pub async fn delete_class(store: &Store, id: &str) -> Result<Removal, StoreError> {
     let mut tx = begin(store).await?;
     let found: Option<(String,)> =
-        sqlx::query_as("SELECT name FROM library_classes WHERE id = ?1").bind(id).fetch_optional(&mut *tx).await?;
+        sqlx::query_as(&sql(Engine::of(&tx), "SELECT name FROM library_classes WHERE id = ?1")).bind(id).fetch_optional(&mut *tx).await?;
     let Some((name,)) = found else {
         return Ok(Removal::NotFound);
     };
-    let users: Vec<(String,)> = sqlx::query_as("SELECT name FROM library_instances WHERE class_id = ?1 ORDER BY name")
+    let users: Vec<(String,)> = sqlx::query_as(&sql(Engine::of(&tx), "SELECT name FROM library_instances WHERE class_id = ?1 ORDER BY name"))
         .bind(id)
         .fetch_all(&mut *tx)
         .await?;
@@ -318,7 +331,7 @@ pub async fn delete_class(store: &Store, id: &str) -> Result<Removal, StoreError
             names.join(", ")
         )));
     }
-    sqlx::query("DELETE FROM library_classes WHERE id = ?1").bind(id).execute(&mut *tx).await?;
+    sqlx::query(&sql(Engine::of(&tx), "DELETE FROM library_classes WHERE id = ?1")).bind(id).execute(&mut *tx).await?;
     tx.commit().await?;
     Ok(Removal::Deleted)
 }
@@ -365,14 +378,14 @@ pub async fn update_instance(
 pub async fn delete_instance(store: &Store, id: &str) -> Result<Removal, StoreError> {
     let mut tx = begin(store).await?;
     let found: Option<(String,)> =
-        sqlx::query_as("SELECT name FROM library_instances WHERE id = ?1").bind(id).fetch_optional(&mut *tx).await?;
+        sqlx::query_as(&sql(Engine::of(&tx), "SELECT name FROM library_instances WHERE id = ?1")).bind(id).fetch_optional(&mut *tx).await?;
     let Some((name,)) = found else {
         return Ok(Removal::NotFound);
     };
-    let drives: Vec<(String, String)> = sqlx::query_as(
+    let drives: Vec<(String, String)> = sqlx::query_as(&sql(Engine::of(&tx),
         "SELECT model_id, joint FROM drives
          WHERE motor_instance = ?1 OR gear_instance = ?1 OR controller_instance = ?1 ORDER BY model_id, joint",
-    )
+    ))
     .bind(id)
     .fetch_all(&mut *tx)
     .await?;
@@ -385,19 +398,19 @@ pub async fn delete_instance(store: &Store, id: &str) -> Result<Removal, StoreEr
             list.join(", ")
         )));
     }
-    sqlx::query("DELETE FROM library_instances WHERE id = ?1").bind(id).execute(&mut *tx).await?;
+    sqlx::query(&sql(Engine::of(&tx), "DELETE FROM library_instances WHERE id = ?1")).bind(id).execute(&mut *tx).await?;
     tx.commit().await?;
     Ok(Removal::Deleted)
 }
 
 /// Applies a checked plan: names of the rows being replaced are parked first, so that names may
 /// move between items of the same file without tripping the UNIQUE constraints midway.
-async fn apply_plan(conn: &mut SqliteConnection, plan: &ImportPlan) -> Result<(), StoreError> {
+async fn apply_plan(conn: &mut AnyConnection, plan: &ImportPlan) -> Result<(), StoreError> {
     for c in &plan.classes {
-        sqlx::query("UPDATE library_classes SET name = char(1) || id WHERE id = ?1").bind(&c.id).execute(&mut *conn).await?;
+        sqlx::query(&sql(Engine::of(conn), "UPDATE library_classes SET name = ?2 || id WHERE id = ?1")).bind(&c.id).bind("\u{1}").execute(&mut *conn).await?;
     }
     for i in &plan.instances {
-        sqlx::query("UPDATE library_instances SET name = char(1) || id WHERE id = ?1").bind(&i.id).execute(&mut *conn).await?;
+        sqlx::query(&sql(Engine::of(conn), "UPDATE library_instances SET name = ?2 || id WHERE id = ?1")).bind(&i.id).bind("\u{1}").execute(&mut *conn).await?;
     }
     for c in &plan.classes {
         write_class(conn, c).await?;
@@ -429,7 +442,7 @@ pub async fn import(
 /// false) when any class exists, so it is safe on every start.
 pub async fn seed_if_empty(store: &Store) -> Result<bool, StoreError> {
     let mut tx = begin(store).await?;
-    let (count,): (i64,) = sqlx::query_as("SELECT COUNT(*) FROM library_classes").fetch_one(&mut *tx).await?;
+    let (count,): (i64,) = sqlx::query_as(&sql(Engine::of(&tx), "SELECT COUNT(*) FROM library_classes")).fetch_one(&mut *tx).await?;
     if count > 0 {
         return Ok(false);
     }
@@ -490,15 +503,15 @@ mod tests {
     async fn an_instance_used_by_a_drive_cannot_be_deleted() {
         let (_dir, store) = store().await;
         seed_if_empty(&store).await.expect("seed");
-        sqlx::query("INSERT INTO models (id, name, created_at) VALUES ('m1', 'Robot', '2024-01-01T00:00:00Z')")
+        sqlx::query(&store.pool.sql("INSERT INTO models (id, name, created_at) VALUES ('m1', 'Robot', '2024-01-01T00:00:00Z')"))
             .execute(&store.pool)
             .await
             .expect("model");
-        sqlx::query(
+        sqlx::query(&store.pool.sql(
             "INSERT INTO drives (model_id, joint, joint_node_id, motor_instance, gear_instance, controller_instance,
                  reference_json, updated_at)
              VALUES ('m1', 'J1', '1', ?1, ?2, ?3, '{}', '2024-01-01T00:00:00Z')",
-        )
+        ))
         .bind(seed::MAXON_RE40)
         .bind(seed::GEAR_100)
         .bind(seed::ROBOT_R3_CONTROLLER)
@@ -522,7 +535,7 @@ mod tests {
         seed_if_empty(&store).await.expect("seed");
         let new = export(&store).await.expect("export");
         // Back to the old seed.
-        sqlx::query("DELETE FROM library_parameters WHERE datasheet = 1").execute(&store.pool).await.expect("params");
+        sqlx::query(&store.pool.sql("DELETE FROM library_parameters WHERE datasheet = 1")).execute(&store.pool).await.expect("params");
         for i in &new.instances {
             // Controllers have no datasheet values.
             let Some(cut) = ["Datasheet values for the drive sizing", "No datasheet values for the drive sizing"]
@@ -532,10 +545,10 @@ mod tests {
             else {
                 continue;
             };
-            sqlx::query(
+            sqlx::query(&store.pool.sql(
                 "UPDATE library_instances SET source = ?2, values_json = json_remove(values_json,
                      '$.T_nom', '$.T_peak', '$.w_max', '$.T_rated', '$.w_in_max', '$.J_in', '$.F_peak') WHERE id = ?1",
-            )
+            ))
             .bind(&i.id)
             .bind(i.source[..cut].trim_end())
             .execute(&store.pool)
@@ -546,7 +559,7 @@ mod tests {
         assert!(old.classes.iter().all(|c| c.parameters.iter().all(|p| !p.datasheet)));
         assert_ne!(old, new);
         // The migration again, without the column it adds.
-        let sql = include_str!("../../../migrations/0005_library_datasheet.sql");
+        let sql = include_str!("../../../migrations/sqlite/0005_library_datasheet.sql");
         let data = sql.split_once("DEFAULT 0;").expect("the ALTER TABLE").1;
         sqlx::raw_sql(data).execute(&store.pool).await.expect("migrate");
         assert_eq!(export(&store).await.expect("export"), new);

@@ -9,12 +9,13 @@
 //! `running`, and [`requeue_unfinished`] (called on start-up) puts back every job a stopped server
 //! left `queued` or `running`.
 
-use sqlx::{FromRow, SqlitePool};
+use sqlx::AnyConnection;
+use sqlx::FromRow;
 
-use super::StoreError;
+use super::{sql, Engine, Pool, StoreError};
 
-/// SQLite's clock as RFC 3339 UTC with milliseconds (the same format as [`super::now`]).
-const NOW: &str = "strftime('%Y-%m-%dT%H:%M:%fZ', 'now')";
+/// The database's clock as RFC 3339 UTC with milliseconds (the format of [`super::now`]; expanded by [`sql`]).
+const NOW: &str = "%NOW%";
 
 /// The stored upload of a new version.
 #[derive(Debug, Clone)]
@@ -75,6 +76,10 @@ pub struct JobRow {
     pub created_at: String,
     pub started_at: Option<String>,
     pub finished_at: Option<String>,
+    /// The latest progress a worker recorded while the job runs (`crate::jobs::JobProgress` as JSON).
+    pub progress_json: Option<String>,
+    /// Claims of the job so far (see [`ClaimedJob::attempts`]).
+    pub attempts: i64,
 }
 
 /// A job a worker took, with what it needs to run.
@@ -89,6 +94,18 @@ pub struct ClaimedJob {
     pub attempts: i64,
     /// `None` when the version no longer exists (deleted meanwhile).
     pub source: Option<JobSource>,
+    /// This claim's lease token (`<instance>:<claim>`): renewing the lease, recording progress
+    /// and finishing the job all require that the job still holds it.
+    pub lease_owner: String,
+}
+
+/// How a worker claims: who it is and how long its claim holds without a renewal.
+#[derive(Debug, Clone)]
+pub struct Claimer {
+    /// The instance's id (random, new at every start).
+    pub instance: String,
+    /// Seconds a claim or a renewal holds ([`claim_next_job`], [`renew_lease`]).
+    pub lease_secs: f64,
 }
 
 /// The stored input of a version.
@@ -105,15 +122,15 @@ fn new_id() -> String {
 
 /// Inserts the version row and its convert job (inside the caller's transaction).
 async fn insert_version_and_job(
-    tx: &mut sqlx::SqliteConnection,
+    tx: &mut AnyConnection,
     model_id: &str,
     version: i64,
     v: &NewVersion<'_>,
 ) -> Result<String, StoreError> {
-    sqlx::query(&format!(
+    sqlx::query(&sql(Engine::of(tx), format!(
         "INSERT INTO versions (model_id, version, created_at, bundle_name, bundle_sha256, bundle_size, options_json, status)
          VALUES (?, ?, {NOW}, ?, ?, ?, ?, 'queued')"
-    ))
+    )))
     .bind(model_id)
     .bind(version)
     .bind(v.bundle_name)
@@ -126,11 +143,11 @@ async fn insert_version_and_job(
 }
 
 /// Inserts a queued job of `kind` for a version (inside the caller's transaction).
-async fn insert_job(tx: &mut sqlx::SqliteConnection, kind: &str, model_id: &str, version: i64) -> Result<String, StoreError> {
+async fn insert_job(tx: &mut AnyConnection, kind: &str, model_id: &str, version: i64) -> Result<String, StoreError> {
     let job_id = new_id();
-    sqlx::query(&format!(
+    sqlx::query(&sql(Engine::of(tx), format!(
         "INSERT INTO jobs (id, kind, model_id, version, status, created_at) VALUES (?, ?, ?, ?, 'queued', {NOW})"
-    ))
+    )))
     .bind(&job_id)
     .bind(kind)
     .bind(model_id)
@@ -141,10 +158,10 @@ async fn insert_job(tx: &mut sqlx::SqliteConnection, kind: &str, model_id: &str,
 }
 
 /// Creates a model with its first version and that version's job, in one transaction.
-pub async fn create_model(pool: &SqlitePool, name: &str, v: &NewVersion<'_>) -> Result<Created, StoreError> {
+pub async fn create_model(pool: &Pool, name: &str, v: &NewVersion<'_>) -> Result<Created, StoreError> {
     let model_id = new_id();
     let mut tx = pool.begin().await?;
-    sqlx::query(&format!("INSERT INTO models (id, name, created_at, last_version) VALUES (?, ?, {NOW}, 1)"))
+    sqlx::query(&pool.sql(format!("INSERT INTO models (id, name, created_at, last_version) VALUES (?, ?, {NOW}, 1)")))
         .bind(&model_id)
         .bind(name)
         .execute(&mut *tx)
@@ -157,14 +174,14 @@ pub async fn create_model(pool: &SqlitePool, name: &str, v: &NewVersion<'_>) -> 
 /// Adds a version (numbered after every version the model ever had) and its job, in one
 /// transaction. `None` when the model does not exist.
 pub async fn create_version(
-    pool: &SqlitePool,
+    pool: &Pool,
     model_id: &str,
     v: &NewVersion<'_>,
 ) -> Result<Option<Created>, StoreError> {
     let mut tx = pool.begin().await?;
     // A write first, so the transaction takes the write lock at once (no read-then-upgrade).
     let next: Option<(i64,)> =
-        sqlx::query_as("UPDATE models SET last_version = last_version + 1 WHERE id = ? RETURNING last_version")
+        sqlx::query_as(&pool.sql("UPDATE models SET last_version = last_version + 1 WHERE id = ? RETURNING last_version"))
             .bind(model_id)
             .fetch_optional(&mut *tx)
             .await?;
@@ -183,18 +200,18 @@ const MODEL_SELECT: &str = "SELECT m.id, m.name, m.created_at, v.version AS late
        ON v.model_id = m.id AND v.version = (SELECT MAX(version) FROM versions WHERE model_id = m.id)";
 
 /// Every model, oldest first.
-pub async fn list_models(pool: &SqlitePool) -> Result<Vec<ModelRow>, StoreError> {
-    Ok(sqlx::query_as(&format!("{MODEL_SELECT} ORDER BY m.created_at, m.rowid")).fetch_all(pool).await?)
+pub async fn list_models(pool: &Pool) -> Result<Vec<ModelRow>, StoreError> {
+    Ok(sqlx::query_as(&pool.sql(format!("{MODEL_SELECT} ORDER BY m.created_at, m.rowid"))).fetch_all(pool).await?)
 }
 
-pub async fn get_model(pool: &SqlitePool, id: &str) -> Result<Option<ModelRow>, StoreError> {
-    Ok(sqlx::query_as(&format!("{MODEL_SELECT} WHERE m.id = ?")).bind(id).fetch_optional(pool).await?)
+pub async fn get_model(pool: &Pool, id: &str) -> Result<Option<ModelRow>, StoreError> {
+    Ok(sqlx::query_as(&pool.sql(format!("{MODEL_SELECT} WHERE m.id = ?"))).bind(id).fetch_optional(pool).await?)
 }
 
 /// Deletes a model with its versions, jobs and drives (cascade). False when absent.
 /// Blobs stay: they are content-addressed and may be shared with other versions.
-pub async fn delete_model(pool: &SqlitePool, id: &str) -> Result<bool, StoreError> {
-    let r = sqlx::query("DELETE FROM models WHERE id = ?").bind(id).execute(pool).await?;
+pub async fn delete_model(pool: &Pool, id: &str) -> Result<bool, StoreError> {
+    let r = sqlx::query(&pool.sql("DELETE FROM models WHERE id = ?")).bind(id).execute(pool).await?;
     Ok(r.rows_affected() > 0)
 }
 
@@ -206,15 +223,15 @@ const VERSION_SELECT: &str =
      FROM versions v";
 
 /// A model's versions, in order.
-pub async fn list_versions(pool: &SqlitePool, model_id: &str) -> Result<Vec<VersionRow>, StoreError> {
-    Ok(sqlx::query_as(&format!("{VERSION_SELECT} WHERE v.model_id = ? ORDER BY v.version"))
+pub async fn list_versions(pool: &Pool, model_id: &str) -> Result<Vec<VersionRow>, StoreError> {
+    Ok(sqlx::query_as(&pool.sql(format!("{VERSION_SELECT} WHERE v.model_id = ? ORDER BY v.version")))
         .bind(model_id)
         .fetch_all(pool)
         .await?)
 }
 
-pub async fn get_version(pool: &SqlitePool, model_id: &str, version: i64) -> Result<Option<VersionRow>, StoreError> {
-    Ok(sqlx::query_as(&format!("{VERSION_SELECT} WHERE v.model_id = ? AND v.version = ?"))
+pub async fn get_version(pool: &Pool, model_id: &str, version: i64) -> Result<Option<VersionRow>, StoreError> {
+    Ok(sqlx::query_as(&pool.sql(format!("{VERSION_SELECT} WHERE v.model_id = ? AND v.version = ?")))
         .bind(model_id)
         .bind(version)
         .fetch_optional(pool)
@@ -223,14 +240,14 @@ pub async fn get_version(pool: &SqlitePool, model_id: &str, version: i64) -> Res
 
 /// Deletes a version and its jobs. False when absent. The model stays (possibly with no
 /// versions); its version numbers are not reused.
-pub async fn delete_version(pool: &SqlitePool, model_id: &str, version: i64) -> Result<bool, StoreError> {
+pub async fn delete_version(pool: &Pool, model_id: &str, version: i64) -> Result<bool, StoreError> {
     let mut tx = pool.begin().await?;
-    let r = sqlx::query("DELETE FROM versions WHERE model_id = ? AND version = ?")
+    let r = sqlx::query(&pool.sql("DELETE FROM versions WHERE model_id = ? AND version = ?"))
         .bind(model_id)
         .bind(version)
         .execute(&mut *tx)
         .await?;
-    sqlx::query("DELETE FROM jobs WHERE model_id = ? AND version = ?")
+    sqlx::query(&pool.sql("DELETE FROM jobs WHERE model_id = ? AND version = ?"))
         .bind(model_id)
         .bind(version)
         .execute(&mut *tx)
@@ -239,10 +256,11 @@ pub async fn delete_version(pool: &SqlitePool, model_id: &str, version: i64) -> 
     Ok(r.rows_affected() > 0)
 }
 
-pub async fn get_job(pool: &SqlitePool, id: &str) -> Result<Option<JobRow>, StoreError> {
-    Ok(sqlx::query_as(
-        "SELECT id, kind, model_id, version, status, error_json, created_at, started_at, finished_at FROM jobs WHERE id = ?",
-    )
+pub async fn get_job(pool: &Pool, id: &str) -> Result<Option<JobRow>, StoreError> {
+    Ok(sqlx::query_as(&pool.sql(
+        "SELECT id, kind, model_id, version, status, error_json, created_at, started_at, finished_at, progress_json, attempts
+         FROM jobs WHERE id = ?",
+    ))
     .bind(id)
     .fetch_optional(pool)
     .await?)
@@ -250,73 +268,157 @@ pub async fn get_job(pool: &SqlitePool, id: &str) -> Result<Option<JobRow>, Stor
 
 /// How many queued jobs are ahead of queued job `id` (claimed in creation order), and how many
 /// are running; `None` when `id` is not queued.
-pub async fn queue_position(pool: &SqlitePool, id: &str) -> Result<Option<(i64, i64)>, StoreError> {
-    Ok(sqlx::query_as(
+pub async fn queue_position(pool: &Pool, id: &str) -> Result<Option<(i64, i64)>, StoreError> {
+    Ok(sqlx::query_as(&pool.sql(
         "SELECT (SELECT COUNT(*) FROM jobs a WHERE a.status = 'queued'
                    AND (a.created_at < j.created_at OR (a.created_at = j.created_at AND a.rowid < j.rowid))),
                 (SELECT COUNT(*) FROM jobs r WHERE r.status = 'running')
          FROM jobs j WHERE j.id = ? AND j.status = 'queued'",
-    )
+    ))
     .bind(id)
     .fetch_optional(pool)
     .await?)
 }
 
-/// Start-up recovery: every job left `queued` or `running` by a stopped server goes back to
-/// `queued` (conversion is idempotent, so a half-done run is simply redone), and so do their
-/// versions. Returns how many jobs were `running`.
-pub async fn requeue_unfinished(pool: &SqlitePool) -> Result<u64, StoreError> {
+/// Start-up recovery: jobs left `running` by a stopped server go back to `queued` (conversion is
+/// idempotent, so a half-done run is simply redone), and so do their versions. Returns how many.
+///
+/// SQLite has one server per database: every `running` job is a stopped server's. On PostgreSQL
+/// other instances may be running jobs right now: only jobs without a lease (marked interrupted)
+/// or whose lease has passed are re-queued; the others belong to live instances.
+pub async fn requeue_unfinished(pool: &Pool) -> Result<u64, StoreError> {
+    let stale = match pool.engine() {
+        Engine::Sqlite => "status = 'running'",
+        Engine::Postgres => "status = 'running' AND (lease_until IS NULL OR lease_until < %NOW%)",
+    };
     let mut tx = pool.begin().await?;
-    let r = sqlx::query("UPDATE jobs SET status = 'queued', started_at = NULL WHERE status = 'running'")
-        .execute(&mut *tx)
-        .await?;
-    sqlx::query("UPDATE versions SET status = 'queued' WHERE status = 'running'").execute(&mut *tx).await?;
+    let requeued: Vec<(String, i64)> = sqlx::query_as(&pool.sql(format!(
+        "UPDATE jobs SET status = 'queued', started_at = NULL, lease_owner = NULL, lease_until = NULL, progress_json = NULL
+         WHERE {stale} RETURNING model_id, version"
+    )))
+    .fetch_all(&mut *tx)
+    .await?;
+    for (model_id, version) in &requeued {
+        sqlx::query(&pool.sql("UPDATE versions SET status = 'queued' WHERE model_id = ? AND version = ? AND status = 'running'"))
+            .bind(model_id)
+            .bind(version)
+            .execute(&mut *tx)
+            .await?;
+    }
     tx.commit().await?;
-    Ok(r.rows_affected())
+    Ok(requeued.len() as u64)
 }
 
-/// Takes the oldest queued job whose model has no earlier job still queued or running (a
-/// model's jobs run in version order: a version's Modelica names come from the one before it),
-/// marks it and its version `running`, counts the attempt (`jobs.attempts`) and returns it.
-/// `None` when nothing is claimable.
-pub async fn claim_next_job(pool: &SqlitePool) -> Result<Option<ClaimedJob>, StoreError> {
-    // Read first, outside any transaction: an idle poll must not take SQLite's write lock, or a
-    // concurrent read-then-write transaction elsewhere would fail with "database is locked".
-    let candidate: Option<(String,)> = sqlx::query_as(
-        "SELECT j.id FROM jobs j WHERE j.status = 'queued'
+/// A job is claimable when it is queued, or running under a lease that has passed (its instance
+/// died), and no earlier job of its model is still queued or running: a model's jobs run in
+/// version order (a version's Modelica names come from the one before it).
+const CLAIMABLE: &str = "(j.status = 'queued' OR (j.status = 'running' AND j.lease_until < %NOW%))
            AND NOT EXISTS (SELECT 1 FROM jobs e WHERE e.model_id = j.model_id
                              AND e.status IN ('queued', 'running')
-                             AND (e.version < j.version OR (e.version = j.version AND e.rowid < j.rowid)))
-         ORDER BY j.created_at, j.rowid LIMIT 1",
-    )
-    .fetch_optional(pool)
-    .await?;
-    let Some((candidate,)) = candidate else { return Ok(None) };
-    let mut tx = pool.begin().await?;
-    let job: Option<(String, String, String, i64, i64)> = sqlx::query_as(&format!(
-        "UPDATE jobs SET status = 'running', started_at = {NOW}, finished_at = NULL, error_json = NULL,
-                attempts = attempts + 1
-         WHERE id = ? AND status = 'queued'
-         RETURNING id, kind, model_id, version, attempts"
-    ))
-    .bind(&candidate)
-    .fetch_optional(&mut *tx)
-    .await?;
+                             AND (e.version < j.version OR (e.version = j.version AND e.rowid < j.rowid)))";
+
+/// Takes the oldest claimable job (see [`CLAIMABLE`]), marks it and its version `running` under a
+/// lease of `claimer.lease_secs` held by a new token, counts the attempt (`jobs.attempts`) and
+/// returns it. `None` when nothing is claimable.
+///
+/// Two claimers never get the same job: on PostgreSQL the candidate row is locked in the claim's
+/// transaction (`FOR UPDATE SKIP LOCKED`: concurrent claimers pass over it to the next); on
+/// SQLite, with its single writer, the update is conditional on the job still being claimable.
+pub async fn claim_next_job(pool: &Pool, claimer: &Claimer) -> Result<Option<ClaimedJob>, StoreError> {
+    let owner = format!("{}:{}", claimer.instance, new_id());
+    let set = "status = 'running', started_at = %NOW%, finished_at = NULL, error_json = NULL, progress_json = NULL,
+               attempts = attempts + 1, lease_owner = ?, lease_until = %UNTIL%";
+    let mut tx;
+    let job: Option<(String, String, String, i64, i64)> = match pool.engine() {
+        Engine::Postgres => {
+            tx = pool.begin().await?;
+            sqlx::query_as(&pool.sql(format!(
+                "WITH c AS (SELECT j.id FROM jobs j WHERE {CLAIMABLE}
+                            ORDER BY j.created_at, j.rowid LIMIT 1 FOR UPDATE OF j SKIP LOCKED)
+                 UPDATE jobs SET {set} FROM c WHERE jobs.id = c.id
+                 RETURNING jobs.id, jobs.kind, jobs.model_id, jobs.version, jobs.attempts"
+            )))
+            .bind(&owner)
+            .bind(claimer.lease_secs)
+            .fetch_optional(&mut *tx)
+            .await?
+        }
+        Engine::Sqlite => {
+            // Read first, outside any transaction: an idle poll must not take SQLite's write lock,
+            // or a concurrent read-then-write transaction elsewhere would fail with "database is locked".
+            let candidate: Option<(String,)> =
+                sqlx::query_as(&pool.sql(format!("SELECT j.id FROM jobs j WHERE {CLAIMABLE} ORDER BY j.created_at, j.rowid LIMIT 1")))
+                    .fetch_optional(pool)
+                    .await?;
+            let Some((candidate,)) = candidate else { return Ok(None) };
+            tx = pool.begin().await?;
+            sqlx::query_as(&pool.sql(format!(
+                "UPDATE jobs SET {set} WHERE id = ? AND id IN (SELECT j.id FROM jobs j WHERE {CLAIMABLE})
+                 RETURNING id, kind, model_id, version, attempts"
+            )))
+            .bind(&owner)
+            .bind(claimer.lease_secs)
+            .bind(&candidate)
+            .fetch_optional(&mut *tx)
+            .await?
+        }
+    };
     let Some((id, kind, model_id, version, attempts)) = job else {
         tx.rollback().await?;
         return Ok(None);
     };
-    let source: Option<JobSource> = sqlx::query_as(
+    let source: Option<JobSource> = sqlx::query_as(&pool.sql(
         "UPDATE versions SET status = 'running', error_json = NULL
          WHERE model_id = ? AND version = ?
          RETURNING bundle_name, bundle_sha256, options_json",
-    )
+    ))
     .bind(&model_id)
     .bind(version)
     .fetch_optional(&mut *tx)
     .await?;
     tx.commit().await?;
-    Ok(Some(ClaimedJob { id, kind, model_id, version, attempts, source }))
+    Ok(Some(ClaimedJob { id, kind, model_id, version, attempts, source, lease_owner: owner }))
+}
+
+/// Extends a running job's lease by `lease_secs` from now. False when the job no longer holds
+/// this lease (it passed and another instance took the job over, or the job was deleted).
+pub async fn renew_lease(pool: &Pool, job: &ClaimedJob, lease_secs: f64) -> Result<bool, StoreError> {
+    let r = sqlx::query(&pool.sql("UPDATE jobs SET lease_until = %UNTIL% WHERE id = ? AND lease_owner = ? AND status = 'running'"))
+        .bind(lease_secs)
+        .bind(&job.id)
+        .bind(&job.lease_owner)
+        .execute(pool)
+        .await?;
+    Ok(r.rows_affected() == 1)
+}
+
+/// Records a running job's progress (JSON), while it holds its lease. False when it does not.
+pub async fn set_progress(pool: &Pool, job: &ClaimedJob, progress_json: &str) -> Result<bool, StoreError> {
+    let r = sqlx::query(&pool.sql("UPDATE jobs SET progress_json = ? WHERE id = ? AND lease_owner = ? AND status = 'running'"))
+        .bind(progress_json)
+        .bind(&job.id)
+        .bind(&job.lease_owner)
+        .execute(pool)
+        .await?;
+    Ok(r.rows_affected() == 1)
+}
+
+/// Ends a job: `status`, `error_json` and `finished_at` on the job, if it still holds its lease
+/// (an instance whose lease passed must not overwrite the result of the one that took over).
+/// The lease and the progress are cleared. False when the lease was lost: nothing is written.
+async fn finish_job(tx: &mut AnyConnection, job: &ClaimedJob, status: &str, error_json: Option<&str>) -> Result<bool, StoreError> {
+    let r = sqlx::query(&sql(
+        Engine::of(tx),
+        "UPDATE jobs SET status = ?, error_json = ?, finished_at = %NOW%, lease_owner = NULL, lease_until = NULL, progress_json = NULL
+         WHERE id = ? AND lease_owner = ? AND status = 'running'",
+    ))
+    .bind(status)
+    .bind(error_json)
+    .bind(&job.id)
+    .bind(&job.lease_owner)
+    .execute(&mut *tx)
+    .await?;
+    Ok(r.rows_affected() == 1)
 }
 
 /// The outputs of a successful job (blobs already stored).
@@ -327,17 +429,18 @@ pub struct JobOutputs<'a> {
     pub summary_json: &'a str,
 }
 
-/// Marks a job and its version succeeded, pointing the version at its outputs.
-pub async fn finish_succeeded(pool: &SqlitePool, job: &ClaimedJob, out: &JobOutputs<'_>) -> Result<(), StoreError> {
+/// Marks a job and its version succeeded, pointing the version at its outputs. False (nothing
+/// written) when the job no longer holds its lease.
+pub async fn finish_succeeded(pool: &Pool, job: &ClaimedJob, out: &JobOutputs<'_>) -> Result<bool, StoreError> {
     let mut tx = pool.begin().await?;
-    sqlx::query(&format!("UPDATE jobs SET status = 'succeeded', error_json = NULL, finished_at = {NOW} WHERE id = ?"))
-        .bind(&job.id)
-        .execute(&mut *tx)
-        .await?;
-    sqlx::query(
+    if !finish_job(&mut tx, job, "succeeded", None).await? {
+        tx.rollback().await?;
+        return Ok(false);
+    }
+    sqlx::query(&pool.sql(
         "UPDATE versions SET status = 'succeeded', package_sha256 = ?, report_sha256 = ?, summary_json = ?, error_json = NULL
          WHERE model_id = ? AND version = ?",
-    )
+    ))
     .bind(out.package_sha256)
     .bind(out.report_sha256)
     .bind(out.summary_json)
@@ -346,38 +449,39 @@ pub async fn finish_succeeded(pool: &SqlitePool, job: &ClaimedJob, out: &JobOutp
     .execute(&mut *tx)
     .await?;
     tx.commit().await?;
-    Ok(())
+    Ok(true)
 }
 
-/// Marks a job and its version failed with a problem document.
-pub async fn finish_failed(pool: &SqlitePool, job: &ClaimedJob, error_json: &str) -> Result<(), StoreError> {
+/// Marks a job and its version failed with a problem document. False (nothing written) when the
+/// job no longer holds its lease.
+pub async fn finish_failed(pool: &Pool, job: &ClaimedJob, error_json: &str) -> Result<bool, StoreError> {
     let mut tx = pool.begin().await?;
-    sqlx::query(&format!("UPDATE jobs SET status = 'failed', error_json = ?, finished_at = {NOW} WHERE id = ?"))
-        .bind(error_json)
-        .bind(&job.id)
-        .execute(&mut *tx)
-        .await?;
-    sqlx::query(
+    if !finish_job(&mut tx, job, "failed", Some(error_json)).await? {
+        tx.rollback().await?;
+        return Ok(false);
+    }
+    sqlx::query(&pool.sql(
         "UPDATE versions SET status = 'failed', package_sha256 = NULL, report_sha256 = NULL, summary_json = NULL, error_json = ?
          WHERE model_id = ? AND version = ?",
-    )
+    ))
     .bind(error_json)
     .bind(&job.model_id)
     .bind(job.version)
     .execute(&mut *tx)
     .await?;
     tx.commit().await?;
-    Ok(())
+    Ok(true)
 }
 
 /// Puts a job (and its version) back in the state a crash mid-conversion leaves: `running`, no
 /// outputs. For recovery tests and operators; a server start re-queues it. False when absent.
-pub async fn mark_interrupted(pool: &SqlitePool, job_id: &str) -> Result<bool, StoreError> {
+pub async fn mark_interrupted(pool: &Pool, job_id: &str) -> Result<bool, StoreError> {
     let mut tx = pool.begin().await?;
-    let job: Option<(String, i64)> = sqlx::query_as(&format!(
-        "UPDATE jobs SET status = 'running', started_at = {NOW}, finished_at = NULL, error_json = NULL
+    let job: Option<(String, i64)> = sqlx::query_as(&pool.sql(format!(
+        "UPDATE jobs SET status = 'running', started_at = {NOW}, finished_at = NULL, error_json = NULL,
+                lease_owner = NULL, lease_until = NULL, progress_json = NULL
          WHERE id = ? RETURNING model_id, version"
-    ))
+    )))
     .bind(job_id)
     .fetch_optional(&mut *tx)
     .await?;
@@ -385,10 +489,10 @@ pub async fn mark_interrupted(pool: &SqlitePool, job_id: &str) -> Result<bool, S
         tx.rollback().await?;
         return Ok(false);
     };
-    sqlx::query(
+    sqlx::query(&pool.sql(
         "UPDATE versions SET status = 'running', package_sha256 = NULL, report_sha256 = NULL, summary_json = NULL, error_json = NULL
          WHERE model_id = ? AND version = ?",
-    )
+    ))
     .bind(&model_id)
     .bind(version)
     .execute(&mut *tx)
@@ -399,15 +503,15 @@ pub async fn mark_interrupted(pool: &SqlitePool, job_id: &str) -> Result<bool, S
 
 /// Queues a re-export of a model's latest version (same bundle, current library and drives):
 /// a `reexport` job, with the version back to `queued`. `None` when the model has no version.
-pub async fn queue_reexport(pool: &SqlitePool, model_id: &str) -> Result<Option<(i64, String)>, StoreError> {
+pub async fn queue_reexport(pool: &Pool, model_id: &str) -> Result<Option<(i64, String)>, StoreError> {
     let mut tx = pool.begin().await?;
     // Write first (no read-then-write lock upgrade inside the transaction).
     let job_id = new_id();
-    let inserted: Option<(i64,)> = sqlx::query_as(&format!(
+    let inserted: Option<(i64,)> = sqlx::query_as(&pool.sql(format!(
         "INSERT INTO jobs (id, kind, model_id, version, status, created_at)
          SELECT ?, 'reexport', ?, MAX(version), 'queued', {NOW} FROM versions WHERE model_id = ? HAVING COUNT(*) > 0
          RETURNING version"
-    ))
+    )))
     .bind(&job_id)
     .bind(model_id)
     .bind(model_id)
@@ -417,7 +521,7 @@ pub async fn queue_reexport(pool: &SqlitePool, model_id: &str) -> Result<Option<
         tx.rollback().await?;
         return Ok(None);
     };
-    sqlx::query("UPDATE versions SET status = 'queued' WHERE model_id = ? AND version = ? AND status <> 'running'")
+    sqlx::query(&pool.sql("UPDATE versions SET status = 'queued' WHERE model_id = ? AND version = ? AND status <> 'running'"))
         .bind(model_id)
         .bind(version)
         .execute(&mut *tx)
@@ -435,6 +539,10 @@ mod tests {
         let dir = tempfile::tempdir().unwrap();
         let url = format!("sqlite://{}?mode=rwc", dir.path().join("t.db").display());
         (dir, Store::open(&url).await.unwrap())
+    }
+
+    fn claimer() -> Claimer {
+        Claimer { instance: "test".into(), lease_secs: 30.0 }
     }
 
     fn upload() -> NewVersion<'static> {
@@ -464,21 +572,21 @@ mod tests {
         let (_d, s) = store().await;
         let a = create_model(&s.pool, "a", &upload()).await.unwrap();
         let b = create_model(&s.pool, "b", &upload()).await.unwrap();
-        let j = claim_next_job(&s.pool).await.unwrap().unwrap();
+        let j = claim_next_job(&s.pool, &claimer()).await.unwrap().unwrap();
         assert_eq!((j.id.as_str(), j.attempts), (a.job_id.as_str(), 1));
         assert_eq!(j.source.as_ref().unwrap().bundle_name, "b.zip");
         let out = JobOutputs { package_sha256: "p", report_sha256: "r", summary_json: "{}" };
-        finish_succeeded(&s.pool, &j, &out).await.unwrap();
-        let j2 = claim_next_job(&s.pool).await.unwrap().unwrap();
+        assert!(finish_succeeded(&s.pool, &j, &out).await.unwrap());
+        let j2 = claim_next_job(&s.pool, &claimer()).await.unwrap().unwrap();
         assert_eq!(j2.id, b.job_id);
-        assert!(claim_next_job(&s.pool).await.unwrap().is_none());
+        assert!(claim_next_job(&s.pool, &claimer()).await.unwrap().is_none());
         // A crash now: b's job stays running until the next start re-queues it.
         assert_eq!(requeue_unfinished(&s.pool).await.unwrap(), 1);
         assert_eq!(get_job(&s.pool, &b.job_id).await.unwrap().unwrap().status, "queued");
         assert_eq!(get_version(&s.pool, &b.model_id, 1).await.unwrap().unwrap().status, "queued");
-        let j3 = claim_next_job(&s.pool).await.unwrap().unwrap();
+        let j3 = claim_next_job(&s.pool, &claimer()).await.unwrap().unwrap();
         assert_eq!((j3.id.as_str(), j3.attempts), (b.job_id.as_str(), 2), "every claim counts");
-        finish_failed(&s.pool, &j3, "{\"status\":422}").await.unwrap();
+        assert!(finish_failed(&s.pool, &j3, "{\"status\":422}").await.unwrap());
         let v = get_version(&s.pool, &b.model_id, 1).await.unwrap().unwrap();
         assert_eq!((v.status.as_str(), v.error_json.as_deref()), ("failed", Some("{\"status\":422}")));
         assert!(mark_interrupted(&s.pool, &a.job_id).await.unwrap());

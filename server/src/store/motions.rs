@@ -9,7 +9,7 @@ use crate::motion::plan::{LimitsEdit, MotionSpec};
 
 /// The limit edits of a model, by joint.
 pub async fn limits(store: &Store, model_id: &str) -> Result<BTreeMap<String, LimitsEdit>, StoreError> {
-    let rows: Vec<(String, String)> = sqlx::query_as("SELECT joint, limits_json FROM joint_limits WHERE model_id = ? ORDER BY joint")
+    let rows: Vec<(String, String)> = sqlx::query_as(&store.pool.sql("SELECT joint, limits_json FROM joint_limits WHERE model_id = ? ORDER BY joint"))
         .bind(model_id)
         .fetch_all(&store.pool)
         .await?;
@@ -24,10 +24,10 @@ pub async fn limits(store: &Store, model_id: &str) -> Result<BTreeMap<String, Li
 /// Inserts or replaces the limits of `joint`.
 pub async fn put_limits(store: &Store, model_id: &str, joint: &str, e: &LimitsEdit) -> Result<(), StoreError> {
     let t = now(&store.pool).await?;
-    sqlx::query(
+    sqlx::query(&store.pool.sql(
         "INSERT INTO joint_limits (model_id, joint, limits_json, updated_at) VALUES (?, ?, ?, ?)
          ON CONFLICT (model_id, joint) DO UPDATE SET limits_json = excluded.limits_json, updated_at = excluded.updated_at",
-    )
+    ))
     .bind(model_id)
     .bind(joint)
     .bind(serde_json::to_string(e).map_err(|e| StoreError::Corrupt(e.to_string()))?)
@@ -39,7 +39,7 @@ pub async fn put_limits(store: &Store, model_id: &str, joint: &str, e: &LimitsEd
 
 /// Removes the limits of `joint`; false when there were none.
 pub async fn delete_limits(store: &Store, model_id: &str, joint: &str) -> Result<bool, StoreError> {
-    let r = sqlx::query("DELETE FROM joint_limits WHERE model_id = ? AND joint = ?")
+    let r = sqlx::query(&store.pool.sql("DELETE FROM joint_limits WHERE model_id = ? AND joint = ?"))
         .bind(model_id)
         .bind(joint)
         .execute(&store.pool)
@@ -67,7 +67,7 @@ fn from_row((id, name, spec, created_at, updated_at): Row) -> Result<Motion, Sto
 
 /// The motions of a model, oldest first.
 pub async fn list(store: &Store, model_id: &str) -> Result<Vec<Motion>, StoreError> {
-    let rows: Vec<Row> = sqlx::query_as(&format!("SELECT {COLUMNS} FROM motions WHERE model_id = ? ORDER BY created_at, rowid"))
+    let rows: Vec<Row> = sqlx::query_as(&store.pool.sql(format!("SELECT {COLUMNS} FROM motions WHERE model_id = ? ORDER BY created_at, rowid")))
         .bind(model_id)
         .fetch_all(&store.pool)
         .await?;
@@ -75,7 +75,7 @@ pub async fn list(store: &Store, model_id: &str) -> Result<Vec<Motion>, StoreErr
 }
 
 pub async fn get(store: &Store, model_id: &str, id: &str) -> Result<Option<Motion>, StoreError> {
-    let row: Option<Row> = sqlx::query_as(&format!("SELECT {COLUMNS} FROM motions WHERE model_id = ? AND id = ?"))
+    let row: Option<Row> = sqlx::query_as(&store.pool.sql(format!("SELECT {COLUMNS} FROM motions WHERE model_id = ? AND id = ?")))
         .bind(model_id)
         .bind(id)
         .fetch_optional(&store.pool)
@@ -87,7 +87,7 @@ pub async fn get(store: &Store, model_id: &str, id: &str) -> Result<Option<Motio
 pub async fn create(store: &Store, model_id: &str, spec: &MotionSpec) -> Result<Motion, StoreError> {
     let t = now(&store.pool).await?;
     let id = uuid::Uuid::new_v4().to_string();
-    sqlx::query("INSERT INTO motions (id, model_id, name, spec_json, created_at, updated_at) VALUES (?, ?, ?, ?, ?, ?)")
+    sqlx::query(&store.pool.sql("INSERT INTO motions (id, model_id, name, spec_json, created_at, updated_at) VALUES (?, ?, ?, ?, ?, ?)"))
         .bind(&id)
         .bind(model_id)
         .bind(&spec.name)
@@ -102,7 +102,7 @@ pub async fn create(store: &Store, model_id: &str, spec: &MotionSpec) -> Result<
 /// Replaces a motion; `None` when it does not exist.
 pub async fn update(store: &Store, model_id: &str, id: &str, spec: &MotionSpec) -> Result<Option<Motion>, StoreError> {
     let t = now(&store.pool).await?;
-    let r = sqlx::query("UPDATE motions SET name = ?, spec_json = ?, updated_at = ? WHERE model_id = ? AND id = ?")
+    let r = sqlx::query(&store.pool.sql("UPDATE motions SET name = ?, spec_json = ?, updated_at = ? WHERE model_id = ? AND id = ?"))
         .bind(&spec.name)
         .bind(serde_json::to_string(spec).map_err(|e| StoreError::Corrupt(e.to_string()))?)
         .bind(&t)
@@ -118,6 +118,6 @@ pub async fn update(store: &Store, model_id: &str, id: &str, spec: &MotionSpec) 
 
 /// Removes a motion; false when there was none.
 pub async fn delete(store: &Store, model_id: &str, id: &str) -> Result<bool, StoreError> {
-    let r = sqlx::query("DELETE FROM motions WHERE model_id = ? AND id = ?").bind(model_id).bind(id).execute(&store.pool).await?;
+    let r = sqlx::query(&store.pool.sql("DELETE FROM motions WHERE model_id = ? AND id = ?")).bind(model_id).bind(id).execute(&store.pool).await?;
     Ok(r.rows_affected() > 0)
 }

@@ -35,7 +35,7 @@ pub async fn insert(
 ) -> Result<ResultRow, StoreError> {
     let t = now(&store.pool).await?;
     let id = uuid::Uuid::new_v4().to_string();
-    sqlx::query(&format!("INSERT INTO results ({COLUMNS}) VALUES (?, ?, ?, ?, ?, ?, ?, ?)"))
+    sqlx::query(&store.pool.sql(format!("INSERT INTO results ({COLUMNS}) VALUES (?, ?, ?, ?, ?, ?, ?, ?)")))
         .bind(&id)
         .bind(model_id)
         .bind(version)
@@ -61,7 +61,7 @@ pub async fn insert(
 /// The results of a model version, oldest first.
 pub async fn list(store: &Store, model_id: &str, version: i64) -> Result<Vec<ResultRow>, StoreError> {
     let rows: Vec<Row> =
-        sqlx::query_as(&format!("SELECT {COLUMNS} FROM results WHERE model_id = ? AND version = ? ORDER BY created_at, rowid"))
+        sqlx::query_as(&store.pool.sql(format!("SELECT {COLUMNS} FROM results WHERE model_id = ? AND version = ? ORDER BY created_at, rowid")))
             .bind(model_id)
             .bind(version)
             .fetch_all(&store.pool)
@@ -71,7 +71,7 @@ pub async fn list(store: &Store, model_id: &str, version: i64) -> Result<Vec<Res
 
 /// The standalone results (no model), oldest first.
 pub async fn list_standalone(store: &Store) -> Result<Vec<ResultRow>, StoreError> {
-    let rows: Vec<Row> = sqlx::query_as(&format!("SELECT {COLUMNS} FROM results WHERE model_id IS NULL ORDER BY created_at, rowid"))
+    let rows: Vec<Row> = sqlx::query_as(&store.pool.sql(format!("SELECT {COLUMNS} FROM results WHERE model_id IS NULL ORDER BY created_at, rowid")))
         .fetch_all(&store.pool)
         .await?;
     Ok(rows.into_iter().map(from_row).collect())
@@ -79,13 +79,13 @@ pub async fn list_standalone(store: &Store) -> Result<Vec<ResultRow>, StoreError
 
 pub async fn get(store: &Store, id: &str) -> Result<Option<ResultRow>, StoreError> {
     let row: Option<Row> =
-        sqlx::query_as(&format!("SELECT {COLUMNS} FROM results WHERE id = ?")).bind(id).fetch_optional(&store.pool).await?;
+        sqlx::query_as(&store.pool.sql(format!("SELECT {COLUMNS} FROM results WHERE id = ?"))).bind(id).fetch_optional(&store.pool).await?;
     Ok(row.map(from_row))
 }
 
 /// Removes a result; false when there was none. (Its blob stays: blobs are content-addressed and
 /// may be shared.)
 pub async fn delete(store: &Store, id: &str) -> Result<bool, StoreError> {
-    let r = sqlx::query("DELETE FROM results WHERE id = ?").bind(id).execute(&store.pool).await?;
+    let r = sqlx::query(&store.pool.sql("DELETE FROM results WHERE id = ?")).bind(id).execute(&store.pool).await?;
     Ok(r.rows_affected() > 0)
 }

@@ -1,14 +1,14 @@
 //! API tokens: only their SHA-256 is stored; the token itself is shown once, at creation. A token
-//! may expire (`expires_at`, checked by [`verify`] against SQLite's clock).
+//! may expire (`expires_at`, checked by [`verify`] against the database's clock).
 
-use super::{now, Store, StoreError};
+use super::{now, Engine, Store, StoreError};
 use crate::store::blobs::sha256_hex;
 
-/// SQLite's clock as RFC 3339 UTC with milliseconds (the format of `created_at`).
-const NOW: &str = "strftime('%Y-%m-%dT%H:%M:%fZ', 'now')";
+/// The database's clock as RFC 3339 UTC with milliseconds (the format of `created_at`; expanded by `sql`).
+const NOW: &str = "%NOW%";
 
 /// A stored token as `cad2mo token list` shows it: never the token, only the end of its hash.
-#[derive(Debug, Clone, PartialEq, sqlx::FromRow)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct TokenInfo {
     pub id: String,
     pub name: String,
@@ -37,13 +37,25 @@ pub async fn create(store: &Store, name: &str, expires_in_secs: Option<u64>) -> 
     let expires = match expires_in_secs {
         Some(secs) => {
             let secs = i64::try_from(secs).map_err(|_| StoreError::Corrupt("expiry out of range".into()))?;
-            let (t,): (Option<String>,) =
-                sqlx::query_as("SELECT strftime('%Y-%m-%dT%H:%M:%fZ', ?, ?)").bind(&created).bind(format!("+{secs} seconds")).fetch_one(&store.pool).await?;
+            let (t,): (Option<String>,) = match store.pool.engine() {
+                Engine::Sqlite => sqlx::query_as("SELECT strftime('%Y-%m-%dT%H:%M:%fZ', ?, ?)")
+                    .bind(&created)
+                    .bind(format!("+{secs} seconds"))
+                    .fetch_one(&store.pool)
+                    .await?,
+                Engine::Postgres => sqlx::query_as(
+                    r#"SELECT to_char(($1::timestamptz + $2 * interval '1 second') AT TIME ZONE 'UTC', 'YYYY-MM-DD"T"HH24:MI:SS.MS"Z"')"#,
+                )
+                .bind(&created)
+                .bind(secs as f64)
+                .fetch_one(&store.pool)
+                .await?,
+            };
             Some(t.ok_or_else(|| StoreError::Corrupt(format!("expiry {secs} s is out of range")))?)
         }
         None => None,
     };
-    sqlx::query("INSERT INTO tokens (id, name, sha256, created_at, expires_at) VALUES (?, ?, ?, ?, ?)")
+    sqlx::query(&store.pool.sql("INSERT INTO tokens (id, name, sha256, created_at, expires_at) VALUES (?, ?, ?, ?, ?)"))
         .bind(uuid::Uuid::new_v4().to_string())
         .bind(name)
         .bind(sha256_hex(token.as_bytes()))
@@ -56,9 +68,9 @@ pub async fn create(store: &Store, name: &str, expires_in_secs: Option<u64>) -> 
 
 /// Whether `token` is a stored token that has not expired.
 pub async fn verify(store: &Store, token: &str) -> Result<bool, StoreError> {
-    let row: Option<(String,)> = sqlx::query_as(&format!(
+    let row: Option<(String,)> = sqlx::query_as(&store.pool.sql(format!(
         "SELECT id FROM tokens WHERE sha256 = ? AND (expires_at IS NULL OR expires_at > {NOW})"
-    ))
+    )))
     .bind(sha256_hex(token.as_bytes()))
     .fetch_optional(&store.pool)
     .await?;
@@ -67,13 +79,18 @@ pub async fn verify(store: &Store, token: &str) -> Result<bool, StoreError> {
 
 /// Every token, oldest first.
 pub async fn list(store: &Store) -> Result<Vec<TokenInfo>, StoreError> {
-    Ok(sqlx::query_as(&format!(
+    type Row = (String, String, String, Option<String>, String, i64);
+    let rows: Vec<Row> = sqlx::query_as(&store.pool.sql(format!(
         "SELECT id, name, created_at, expires_at, sha256,
-                (expires_at IS NOT NULL AND expires_at <= {NOW}) AS expired
+                CASE WHEN expires_at IS NOT NULL AND expires_at <= {NOW} THEN 1 ELSE 0 END AS expired
          FROM tokens ORDER BY created_at, rowid"
-    ))
+    )))
     .fetch_all(&store.pool)
-    .await?)
+    .await?;
+    Ok(rows
+        .into_iter()
+        .map(|(id, name, created_at, expires_at, sha256, expired)| TokenInfo { id, name, created_at, expires_at, sha256, expired: expired != 0 })
+        .collect())
 }
 
 /// Deletes the token with id `name_or_id`, or else the one token named so.
@@ -84,7 +101,7 @@ pub async fn revoke(store: &Store, name_or_id: &str) -> Result<Revoked, StoreErr
     match matches.as_slice() {
         [] => Ok(Revoked::NotFound),
         [one] => {
-            sqlx::query("DELETE FROM tokens WHERE id = ?").bind(&one.id).execute(&store.pool).await?;
+            sqlx::query(&store.pool.sql("DELETE FROM tokens WHERE id = ?")).bind(&one.id).execute(&store.pool).await?;
             Ok(Revoked::One((*one).clone()))
         }
         many => Ok(Revoked::Ambiguous(many.iter().map(|t| (*t).clone()).collect())),
@@ -94,13 +111,13 @@ pub async fn revoke(store: &Store, name_or_id: &str) -> Result<Revoked, StoreErr
 /// The SHA-256 (hex) of every token that has not expired: the keys live view frames are signed with.
 pub async fn live_hashes(store: &Store) -> Result<Vec<String>, StoreError> {
     let rows: Vec<(String,)> =
-        sqlx::query_as(&format!("SELECT sha256 FROM tokens WHERE expires_at IS NULL OR expires_at > {NOW}")).fetch_all(&store.pool).await?;
+        sqlx::query_as(&store.pool.sql(format!("SELECT sha256 FROM tokens WHERE expires_at IS NULL OR expires_at > {NOW}"))).fetch_all(&store.pool).await?;
     Ok(rows.into_iter().map(|(h,)| h).collect())
 }
 
 /// The stored hashes (for tests and audits).
 pub async fn hashes(store: &Store) -> Result<Vec<String>, StoreError> {
-    let rows: Vec<(String,)> = sqlx::query_as("SELECT sha256 FROM tokens ORDER BY created_at").fetch_all(&store.pool).await?;
+    let rows: Vec<(String,)> = sqlx::query_as(&store.pool.sql("SELECT sha256 FROM tokens ORDER BY created_at")).fetch_all(&store.pool).await?;
     Ok(rows.into_iter().map(|(h,)| h).collect())
 }
 
