@@ -4,18 +4,11 @@
 use std::fmt::Write as _;
 
 use super::mechatronics::DrivePlan;
+use super::write::{html, mstr};
 use crate::pipeline::report::Report;
 
 /// Warnings listed in full; more are counted.
 const MAX_WARNINGS: usize = 200;
-
-fn html(s: &str) -> String {
-    s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
-}
-
-fn mstr(s: &str) -> String {
-    s.replace('\\', "\\\\").replace('"', "\\\"")
-}
 
 /// A short number for a table cell.
 fn short(x: f64) -> String {

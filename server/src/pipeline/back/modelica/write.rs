@@ -125,12 +125,12 @@ fn cardan_xyz(r: &Matrix3<f64>) -> Vector3<f64> {
 }
 
 /// Escapes text for a Modelica string literal.
-fn mstr(s: &str) -> String {
+pub(super) fn mstr(s: &str) -> String {
     s.replace('\\', "\\\\").replace('"', "\\\"")
 }
 
 /// HTML-escapes text (not yet escaped for a Modelica string: see [`mstr`]).
-fn html(s: &str) -> String {
+pub(super) fn html(s: &str) -> String {
     s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
 }
 
@@ -482,6 +482,25 @@ fn is_user_frame(node_id: &str, display_name: &str) -> bool {
     node_id.contains("USERADDED") || !display_name.is_empty()
 }
 
+/// The frames `Mechanics` shows, in the order their components are made: the grounds' frames,
+/// the joints' base and follower frames, the user-added CAD frames (repeats included).
+pub(super) fn shown_frames(model: &Model) -> Vec<FrameId> {
+    let mut used: Vec<FrameId> = model.grounds.iter().map(|g| g.frame).collect();
+    for j in &model.joints {
+        used.push(j.base);
+        used.push(j.follower);
+    }
+    for body in &model.bodies {
+        for f in &body.frames {
+            let fr = model.frame(*f);
+            if is_user_frame(&fr.node_id, &fr.display_name) {
+                used.push(*f);
+            }
+        }
+    }
+    used
+}
+
 /// Writes the package. Shapes are referenced for every body with a mesh; the caller writes the
 /// files under `<Pkg>/Resources/Shapes/<stem>.dxf|.stl` using [`Layout::shapes`].
 pub fn write(model: &Model, v: &Validated, opts: &Options) -> Package {
@@ -562,22 +581,7 @@ pub fn write(model: &Model, v: &Validated, opts: &Options) -> Package {
     }
 
     let _ = writeln!(w.decl, "\n  // Frames: grounds, joint attachment frames and user-added CAD frames");
-    for gid in model.ground_ids() {
-        w.frame_connector(model.ground(gid).frame, &names.bodies);
-    }
-    let mut used: Vec<FrameId> = Vec::new();
-    for j in &model.joints {
-        used.push(j.base);
-        used.push(j.follower);
-    }
-    for body in &model.bodies {
-        for f in &body.frames {
-            let fr = model.frame(*f);
-            if is_user_frame(&fr.node_id, &fr.display_name) {
-                used.push(*f);
-            }
-        }
-    }
+    let used = shown_frames(model);
     for f in used {
         w.frame_connector(f, &names.bodies);
     }

@@ -152,19 +152,7 @@ impl Plan {
         // grounds' frames). A frame keeps the slot an earlier version gave it when still free.
         let shape_slot = |g: usize| g > 0 && model.bodies[g - 1].mesh.as_ref().is_some_and(|m| !m.triangles.is_empty());
         let first_frame_slot = |g: usize| if g == 0 { 0 } else { 1 + i32::from(shape_slot(g)) };
-        let mut used: Vec<FrameId> = model.grounds.iter().map(|gr| gr.frame).collect();
-        for j in &model.joints {
-            used.push(j.base);
-            used.push(j.follower);
-        }
-        for body in &model.bodies {
-            for f in &body.frames {
-                let fr = model.frame(*f);
-                if fr.node_id.contains("USERADDED") || !fr.display_name.is_empty() {
-                    used.push(*f);
-                }
-            }
-        }
+        let mut used = crate::pipeline::back::modelica::write::shown_frames(model);
         let mut seen = std::collections::HashSet::new();
         used.retain(|f| seen.insert(*f) && needs(*f));
         let mut left_rows = vec![0i32; n];

@@ -165,9 +165,6 @@ pub(super) fn route(sheet: &mut Sheet, a: End, b: End) -> Vec<(f64, f64)> {
         }
     }
     let Some(path) = path else {
-        if std::env::var("CAD2MO_DEBUG_ROUTE").is_ok() {
-            eprintln!("no route {:?} -> {:?}: s blocked {} t blocked {}", s, t, sheet.blocked(s.0, s.1), sheet.blocked(t.0, t.1));
-        }
         // No free route: a straight orthogonal elbow (the layout test reports it).
         let (pa, pb) = (a.0 .0, b.0 .0);
         return vec![pa, (pb.0, pa.1), pb];
