@@ -59,6 +59,7 @@ fn bench(c: &mut Criterion) {
             let choice = |class: &str, params: &[(&str, f64)]| ClassChoice {
                 modelica_class: class.to_string(),
                 params: params.iter().map(|(n, v)| (n.to_string(), ParamValue::Real(*v))).collect(),
+                instance: String::new(),
             };
             let drive = ResolvedDrive {
                 joint,

@@ -109,7 +109,8 @@ mod tests {
         assert!(!r.is_consistent());
 
         // A converted version's package and report, and a result file, are referenced too.
-        let job = models::claim_next_job(&store.pool).await.unwrap().unwrap();
+        let claimer = models::Claimer { instance: "test".into(), lease_secs: 30.0 };
+        let job = models::claim_next_job(&store.pool, &claimer).await.unwrap().unwrap();
         let (package, report, result) = (blobs.put(b"package").unwrap(), blobs.put(b"report").unwrap(), blobs.put(b"result").unwrap());
         let out = models::JobOutputs { package_sha256: &package, report_sha256: &report, summary_json: "{}" };
         models::finish_succeeded(&store.pool, &job, &out).await.unwrap();
