@@ -13,6 +13,33 @@ mod route;
 use std::collections::{BTreeMap, HashMap};
 use std::fmt::Write as _;
 
+/// A fast hash for grid coordinates (the maps here are keyed by small integer pairs; SipHash's
+/// protection against chosen keys is not needed for our own layout).
+#[derive(Clone, Copy, Default)]
+pub struct GridHasher(u64);
+
+impl std::hash::Hasher for GridHasher {
+    fn finish(&self) -> u64 {
+        self.0
+    }
+    fn write(&mut self, bytes: &[u8]) {
+        for b in bytes {
+            self.0 = (self.0.rotate_left(5) ^ u64::from(*b)).wrapping_mul(0x51_7c_c1_b7_27_22_0a_95);
+        }
+    }
+    fn write_i32(&mut self, i: i32) {
+        self.0 = (self.0.rotate_left(5) ^ u64::from(i as u32)).wrapping_mul(0x51_7c_c1_b7_27_22_0a_95);
+    }
+    fn write_u64(&mut self, i: u64) {
+        self.0 = (self.0.rotate_left(5) ^ i).wrapping_mul(0x51_7c_c1_b7_27_22_0a_95);
+    }
+    fn write_usize(&mut self, i: usize) {
+        self.write_u64(i as u64);
+    }
+}
+
+pub type GridMap<K, V> = HashMap<K, V, std::hash::BuildHasherDefault<GridHasher>>;
+
 /// The grid every origin, extent and route corner lies on.
 pub const GRID: i32 = 5;
 
@@ -165,11 +192,11 @@ pub struct Sheet {
     pub order: Vec<String>,
     /// Spatial buckets of [`BUCKET`] units: the components whose extent (grown by the margin)
     /// touches each.
-    buckets: HashMap<(i32, i32), Vec<usize>>,
+    buckets: GridMap<(i32, i32), Vec<usize>>,
     rects: Vec<Rect>,
     pub wires: Vec<Wire>,
     /// Cells wires already use (for spreading later wires apart).
-    used: HashMap<(i32, i32), u8>,
+    used: GridMap<(i32, i32), u8>,
 }
 
 const BUCKET: i32 = 100;

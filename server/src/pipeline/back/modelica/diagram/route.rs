@@ -6,7 +6,7 @@
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 
-use super::{floor_div, Rect, Sheet, BUCKET, GRID};
+use super::{floor_div, GridMap, Rect, Sheet, BUCKET, GRID};
 
 type End = (((f64, f64), (i32, i32)), Rect);
 
@@ -52,28 +52,79 @@ fn stub(((px, py), (dx, dy)): ((f64, f64), (i32, i32)), rect: &Rect) -> Vec<(f64
 
 const DIRS: [(i32, i32); 4] = [(1, 0), (-1, 0), (0, 1), (0, -1)];
 
+/// Per-search state: dense arrays for a small window, hash maps for a large one (a long wire's
+/// window is mostly never visited).
+enum Cells {
+    Dense { state: Vec<u8>, best: Vec<u32>, from: Vec<u32> },
+    Sparse { state: GridMap<usize, u8>, best: GridMap<usize, u32>, from: GridMap<usize, u32> },
+}
+
+const DENSE_CELLS: usize = 1 << 15;
+
+impl Cells {
+    fn new(cells: usize) -> Cells {
+        if cells <= DENSE_CELLS {
+            Cells::Dense { state: vec![0; cells], best: vec![u32::MAX; cells * 5], from: vec![u32::MAX; cells * 5] }
+        } else {
+            Cells::Sparse { state: GridMap::default(), best: GridMap::default(), from: GridMap::default() }
+        }
+    }
+    fn state(&mut self, c: usize, f: impl FnOnce() -> u8) -> u8 {
+        match self {
+            Cells::Dense { state, .. } => {
+                if state[c] == 0 {
+                    state[c] = f();
+                }
+                state[c]
+            }
+            Cells::Sparse { state, .. } => *state.entry(c).or_insert_with(f),
+        }
+    }
+    fn best(&self, n: usize) -> u32 {
+        match self {
+            Cells::Dense { best, .. } => best[n],
+            Cells::Sparse { best, .. } => best.get(&n).copied().unwrap_or(u32::MAX),
+        }
+    }
+    fn from(&self, n: usize) -> u32 {
+        match self {
+            Cells::Dense { from, .. } => from[n],
+            Cells::Sparse { from, .. } => from.get(&n).copied().unwrap_or(u32::MAX),
+        }
+    }
+    fn set(&mut self, n: usize, cost: u32, prev: u32) {
+        match self {
+            Cells::Dense { best, from, .. } => {
+                best[n] = cost;
+                from[n] = prev;
+            }
+            Cells::Sparse { best, from, .. } => {
+                best.insert(n, cost);
+                from.insert(n, prev);
+            }
+        }
+    }
+}
+
 /// Weighted A* (the heuristic counts twice: routes are found fast and are short enough) from
 /// grid point `s` to `t` within `win` (grid units); the grid points of the path.
 fn search(sheet: &Sheet, s: (i32, i32), t: (i32, i32), win: Rect) -> Option<Vec<(i32, i32)>> {
     let w = (win.x2 - win.x1 + 1) as usize;
     let hgt = (win.y2 - win.y1 + 1) as usize;
-    let cells = w * hgt;
     let cell = |p: (i32, i32)| (p.0 - win.x1) as usize + (p.1 - win.y1) as usize * w;
     let h = |p: (i32, i32)| 2 * ((p.0 - t.0).abs() + (p.1 - t.1).abs()) as u32;
     // Per cell: 0 unknown, 1 free, 2 blocked. Per state (cell, arriving direction 0..5): best
     // cost and the state it came from.
-    let mut state_of = vec![0u8; cells];
-    let mut best = vec![u32::MAX; cells * 5];
-    let mut from = vec![u32::MAX; cells * 5];
+    let mut cells = Cells::new(w * hgt);
     let mut heap = BinaryHeap::new();
     let start = cell(s) * 5 + 4;
-    best[start] = 0;
+    cells.set(start, 0, u32::MAX);
     heap.push(Reverse((h(s), 0u32, start as u32)));
     let mut expansions = 0;
     let goal = cell(t);
     while let Some(Reverse((_, cost, node))) = heap.pop() {
         let node = node as usize;
-        if best[node] < cost {
+        if cells.best(node) < cost {
             continue;
         }
         let (c, dir) = (node / 5, (node % 5) as u8);
@@ -83,10 +134,11 @@ fn search(sheet: &Sheet, s: (i32, i32), t: (i32, i32), win: Rect) -> Option<Vec<
             loop {
                 let cc = cur / 5;
                 path.push((win.x1 + (cc % w) as i32, win.y1 + (cc / w) as i32));
-                if from[cur] == u32::MAX {
+                let prev = cells.from(cur);
+                if prev == u32::MAX {
                     break;
                 }
-                cur = from[cur] as usize;
+                cur = prev as usize;
             }
             path.reverse();
             return Some(path);
@@ -107,10 +159,7 @@ fn search(sheet: &Sheet, s: (i32, i32), t: (i32, i32), win: Rect) -> Option<Vec<
                 continue;
             }
             let nc = cell((nx, ny));
-            if state_of[nc] == 0 {
-                state_of[nc] = if sheet.blocked(nx, ny) { 2 } else { 1 };
-            }
-            if state_of[nc] == 2 && nc != goal {
+            if cells.state(nc, || if sheet.blocked(nx, ny) { 2 } else { 1 }) == 2 && nc != goal {
                 continue;
             }
             let mut step = 1 + if dir != 4 && dir != d { BEND } else { 0 };
@@ -119,9 +168,8 @@ fn search(sheet: &Sheet, s: (i32, i32), t: (i32, i32), win: Rect) -> Option<Vec<
             }
             let next = nc * 5 + d as usize;
             let cst = cost + step;
-            if cst < best[next] {
-                best[next] = cst;
-                from[next] = node as u32;
+            if cst < cells.best(next) {
+                cells.set(next, cst, node as u32);
                 heap.push(Reverse((cst + h((nx, ny)), cst, next as u32)));
             }
         }
