@@ -213,11 +213,8 @@ impl Plan {
                 None => {
                     let t = &mut taken[col[g]];
                     let mut r = desired;
-                    loop {
-                        match t.iter().find(|&&(a, b)| r < b && a < r + rows[g]) {
-                            Some(&(_, b)) => r = b,
-                            None => break,
-                        }
+                    while let Some(&(_, b)) = t.iter().find(|&&(a, b)| r < b && a < r + rows[g]) {
+                        r = b;
                     }
                     t.push((r, r + rows[g]));
                     row[g] = Some(r);

@@ -267,7 +267,7 @@ pub fn svg(drawings: &[&Drawing], title: &str) -> String {
         for c in &d.components {
             let (x1, x2) = (c.extent[0].0.min(c.extent[1].0), c.extent[0].0.max(c.extent[1].0));
             let (y1, y2) = (c.extent[0].1.min(c.extent[1].1), c.extent[0].1.max(c.extent[1].1));
-            let size = ((x2 - x1) * 1.5 / (0.6 * c.name.chars().count().max(1) as f64)).min(8.0).max(2.0);
+            let size = ((x2 - x1) * 1.5 / (0.6 * c.name.chars().count().max(1) as f64)).clamp(2.0, 8.0);
             let _ = writeln!(
                 s,
                 "<g data-component=\"{}\"><title>{} {}</title><rect x=\"{x1}\" y=\"{}\" width=\"{}\" height=\"{}\" rx=\"2\" fill=\"{}\" stroke=\"#404040\" stroke-width=\"0.6\"/><text x=\"{}\" y=\"{}\" font-size=\"{size:.1}\" text-anchor=\"middle\" fill=\"#0000c0\">{}</text></g>",

@@ -43,7 +43,7 @@ fn wires_go_around_components_orthogonally() {
 #[test]
 fn mirrored_components_have_frame_a_on_the_right() {
     let p = Placed { x: 100, y: 50, half: 10, flip: true, class: Class::TwoPort };
-    assert_eq!(p.port("frame_a").map(|(at, out)| (at, out)), Some(((110.0, 50.0), (1, 0))));
+    assert_eq!(p.port("frame_a"), Some(((110.0, 50.0), (1, 0))));
     assert_eq!(p.annotation(), "annotation (Placement(transformation(extent={{10,-10},{-10,10}}, origin={100,50})))");
     let j = Placed { x: 0, y: 0, half: 10, flip: false, class: Class::Joint };
     assert_eq!(j.port("drive"), Some(((-6.0, 10.0), (0, 1))));
