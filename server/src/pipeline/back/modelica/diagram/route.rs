@@ -218,7 +218,8 @@ pub(super) fn route(sheet: &mut Sheet, a: End, b: End) -> Vec<(f64, f64)> {
         return vec![pa, (pb.0, pa.1), pb];
     };
     for p in &path {
-        *sheet.used.entry(*p).or_insert(0) += 1;
+        let n = sheet.used.entry(*p).or_insert(0);
+        *n = n.saturating_add(1);
     }
     let mut pts = sa;
     pts.extend(path.iter().map(|&(x, y)| (f64::from(x * GRID), f64::from(y * GRID))));

@@ -48,3 +48,17 @@ fn mirrored_components_have_frame_a_on_the_right() {
     let j = Placed { x: 0, y: 0, half: 10, flip: false, class: Class::Joint };
     assert_eq!(j.port("drive"), Some(((-6.0, 10.0), (0, 1))));
 }
+
+#[test]
+fn hundreds_of_wires_through_one_corridor() {
+    // A collision world wired to 300 bodies: every wire leaves by the same cells (more than a
+    // cell's use count of 255 once overflowed).
+    let mut s = Sheet::default();
+    s.add("hub", Class::CollisionWorld, want(0, 0));
+    for k in 0..300 {
+        s.add(&format!("f{k}"), Class::TwoPort, want(100 + 40 * (k % 15), -40 * (k / 15)));
+        s.connect("hub.force[1, :]", &format!("f{k}.frame_a"), Style::Signal);
+    }
+    assert_eq!(s.wires.len(), 300);
+    assert!(s.wires.iter().all(|w| w.points.len() >= 2));
+}
