@@ -509,7 +509,16 @@ async fn jobs_report_queue_position_and_progress() {
     let light: Value = app.upload_model(pendulum(), "light.zip", &[]).await.json().await.expect("json");
     let (heavy_job, light_job) = (heavy["job_id"].as_str().expect("job"), light["job_id"].as_str().expect("job"));
 
-    // One worker, busy with the heavy job for seconds: the light one waits, first in line.
+    // One worker, busy with the heavy job for seconds (once its dispatcher has claimed it: on
+    // PostgreSQL the claim takes a moment): the light one waits, first in line.
+    let claimed_by = std::time::Instant::now() + std::time::Duration::from_secs(20);
+    loop {
+        let h: Value = app.job(heavy_job).await.json().await.expect("json");
+        if h["status"] != "queued" || std::time::Instant::now() > claimed_by {
+            break;
+        }
+        tokio::time::sleep(std::time::Duration::from_millis(20)).await;
+    }
     let queued: Value = app.job(light_job).await.json().await.expect("json");
     assert_eq!(queued["status"], "queued", "{queued:#}");
     assert_eq!(queued["queue"], serde_json::json!({"ahead": 0, "running": 1}), "{queued:#}");
