@@ -137,7 +137,11 @@ export async function motionSteps(page, { joint, step, shot, downloads, strict }
   const wall = (Date.now() - t0) / 1000; // measured after the time was read: an upper bound
   assert.ok(tPlay > 0.1 && tPlay <= wall + 0.05, `plays at real speed: motion time ${tPlay} s after ${wall} s`);
   assert.notEqual(await canvasImage(page), still, 'playing moves the arm');
-  await page.getByRole('button', { name: 'Pause' }).click();
+  await page.locator('#motion-play').click();
+  // On a slow machine the motion may have ended just before that click (the button then said
+  // Play, and the click started it again from 0): pause that playback.
+  if ((await player.getAttribute('data-playing')) === 'true') await page.locator('#motion-play').click();
+  assert.equal(await player.getAttribute('data-playing'), 'false', 'paused by the button');
   const paused = await player.getAttribute('data-time');
   await page.waitForTimeout(250);
   assert.equal(await player.getAttribute('data-time'), paused, 'paused');
