@@ -108,7 +108,7 @@ pub fn lay_out(text: &str, base: &Sheet) -> (String, Rect) {
         if t.starts_with("connect(") && t.ends_with(");") {
             if let Some(w) = routed.next() {
                 let indent = &line[..line.len() - line.trim_start().len()];
-                let eq = sheet_equation(w);
+                let eq = w.equation();
                 out.push_str(indent);
                 out.push_str(eq.trim_start());
                 continue;
@@ -118,9 +118,4 @@ pub fn lay_out(text: &str, base: &Sheet) -> (String, Rect) {
         out.push('\n');
     }
     (out, sheet.extent(40))
-}
-
-fn sheet_equation(w: &super::Wire) -> String {
-    let one = Sheet { wires: vec![w.clone()], ..Sheet::default() };
-    one.equations(0)
 }

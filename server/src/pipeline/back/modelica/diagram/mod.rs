@@ -11,7 +11,6 @@ pub mod svg;
 mod route;
 
 use std::collections::{BTreeMap, HashMap};
-use std::fmt::Write as _;
 
 /// A fast hash for grid coordinates (the maps here are keyed by small integer pairs; SipHash's
 /// protection against chosen keys is not needed for our own layout).
@@ -321,16 +320,18 @@ impl Sheet {
 
     /// The `connect` equations with their `Line` annotations, in the order they were made.
     pub fn equations(&self, from: usize) -> String {
-        let mut s = String::new();
-        for w in &self.wires[from..] {
-            if w.points.len() < 2 {
-                let _ = writeln!(s, "  connect({}, {});", w.a, w.b);
-                continue;
-            }
-            let pts: Vec<String> = w.points.iter().map(|(x, y)| format!("{{{},{}}}", fmt(*x), fmt(*y))).collect();
-            let _ = writeln!(s, "  connect({}, {})\n    annotation (Line(points={{{}}}, {}));", w.a, w.b, pts.join(","), w.style.annotation());
+        self.wires[from..].iter().map(Wire::equation).collect()
+    }
+}
+
+impl Wire {
+    /// The `connect` equation, with its `Line` annotation when it has a route.
+    pub fn equation(&self) -> String {
+        if self.points.len() < 2 {
+            return format!("  connect({}, {});\n", self.a, self.b);
         }
-        s
+        let pts: Vec<String> = self.points.iter().map(|(x, y)| format!("{{{},{}}}", fmt(*x), fmt(*y))).collect();
+        format!("  connect({}, {})\n    annotation (Line(points={{{}}}, {}));\n", self.a, self.b, pts.join(","), self.style.annotation())
     }
 }
 
