@@ -115,7 +115,12 @@ async fn shapes_matrix_interferences_and_motions() {
     let mut mech = String::new();
     let name = z.file_names().find(|n| n.ends_with("/Mechatronics.mo")).expect("Mechatronics").to_string();
     std::io::Read::read_to_string(&mut z.by_name(&name).expect("entry"), &mut mech).expect("utf-8");
-    assert!(mech.contains("checked={{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}"), "no pair is checked now:\n{mech}");
+    assert!(mech.contains("0 of 3 pairs checked"), "no pair is checked now:\n{mech}");
+    let mut shape_file = String::new();
+    let name = z.file_names().find(|n| n.ends_with("/Resources/Collision/contact.txt")).expect("the shape file").to_string();
+    std::io::Read::read_to_string(&mut z.by_name(&name).expect("entry"), &mut shape_file).expect("utf-8");
+    let allowed: Vec<&str> = shape_file.lines().filter(|l| l.starts_with("allow ")).collect();
+    assert_eq!(allowed, ["allow 1 2", "allow 1 3", "allow 2 3"], "the C code reads every pair as allowed:\n{shape_file}");
     assert!(z.file_names().any(|n| n.ends_with("/Resources/Collision/LINK_FORE.obj")));
 
     // Unknown things are 404s.

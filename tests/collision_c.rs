@@ -1,7 +1,9 @@
 //! The collision C code a package ships (`Resources/Include/cad2mo_collision.c`), compiled with
 //! the system C compiler into `tests/collision/harness.c`: GJK/EPA against parry3d on 10,000
 //! random convex pairs, a drop test of the contact law against its coefficient of restitution,
-//! and the `Components.Collision` Modelica text through msl-check and rumoca.
+//! the shape file a converted package ships read by the C code from the unzipped package (as a
+//! Modelica tool resolves its `modelica://` URI), with its errors, and the `Components.Collision`
+//! Modelica text through msl-check and rumoca.
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -383,7 +385,9 @@ fn collision_package_passes_msl_check_and_rumoca() {
     files.push((format!("{pkg}/Components/package.mo"), format!("within {pkg};\npackage Components \"Components\"\n  extends Modelica.Icons.Package;\nend Components;\n").into_bytes()));
     let bodies: Vec<String> = ["B1", "B2", "B3"].iter().map(|s| s.to_string()).collect();
     let shapes = vec![Some(vec![cube(0.1, 0.0)]), None, Some(vec![cube(0.05, 0.0), ConvexPart { vertices: vec![[0.0, 0.0, 0.2]], faces: Vec::new(), radius: 0.03 }])];
-    let decl = collision::declarations(pkg, &bodies, &shapes, &|_, _| true);
+    let contacts = collision::declarations(pkg, &bodies, &shapes, &|_, _| true).expect("contacts");
+    let decl = contacts.declarations.clone();
+    files.push((format!("{pkg}/{}", collision::SHAPE_FILE), contacts.shape_file.clone()));
     assert!(!decl.contains(" model "), "`model` is a keyword");
     // laid out as Mechatronics is: declarations, then the equation section
     let text = format!(
@@ -407,7 +411,7 @@ fn collision_package_passes_msl_check_and_rumoca() {
             _ => {}
         }
     }
-    assert!(names.len() >= 10, "{names:?}");
+    assert!(names.len() >= 7, "{names:?}");
     for n in &names {
         let declared = [format!(" {n}["), format!(" {n}("), format!(" {n} ="), format!(" {n} \"")].iter().any(|p| world_text.contains(p.as_str()));
         assert!(declared, "collisionWorld modifier `{n}` is not a component of Components.Collision.World");
@@ -429,4 +433,109 @@ fn collision_package_passes_msl_check_and_rumoca() {
     if let Some(errors) = modelica_syntax_errors(&root.join(pkg)) {
         assert!(errors.is_empty(), "rumoca parse errors:\n{}", errors.join("\n"));
     }
+}
+
+/// The world's body names as `Mechatronics` lists them (`bodyNames={"A", "B"}`).
+fn body_names(mechatronics: &str) -> Vec<String> {
+    let start = mechatronics.find("bodyNames={").expect("bodyNames") + "bodyNames={".len();
+    let end = start + mechatronics[start..].find('}').expect("end of bodyNames");
+    mechatronics[start..end].split(',').map(|s| s.trim().trim_matches('"').to_string()).collect()
+}
+
+/// Runs `harness load FILE NAMES...` with `stdin`; (status, stdout, stderr).
+fn run_load(exe: &Path, file: &Path, names: &[String], stdin: &str) -> (bool, String, String) {
+    let mut child = Command::new(exe)
+        .arg("load")
+        .arg(file)
+        .args(names)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("run the harness");
+    child.stdin.take().expect("stdin").write_all(stdin.as_bytes()).expect("write stdin");
+    let out = child.wait_with_output().expect("harness output");
+    (out.status.success(), String::from_utf8_lossy(&out.stdout).to_string(), String::from_utf8_lossy(&out.stderr).to_string())
+}
+
+/// A converted package unzipped to a folder: the C code reads `Resources/Collision/contact.txt`
+/// (where `Modelica.Utilities.Files.loadResource` resolves the world's default `shapeFile`) and
+/// finds the parts, vertices and checked pairs of the report, and contact forces exactly on the
+/// bodies the report says interfere at the CAD pose (and none elsewhere). `Mechatronics.mo` holds
+/// no vertex. A damaged, truncated or foreign shape file is refused naming the file and line.
+#[test]
+fn shape_file_of_a_converted_package_is_read_by_the_c_code() {
+    let tmp = tempfile::tempdir().expect("tempdir");
+    let Some(exe) = build(tmp.path()) else { return };
+    let case = cad2mo_tests::common::workspace_root().join("tests/in/vrml_pinned");
+    let opts = cad2mo::pipeline::Options::default();
+    let out = cad2mo_tests::common::convert_path(&case, &opts).expect("converts");
+    let pkg_dir = tmp.path().join("unzipped");
+    for (p, b) in &out.files {
+        let path = pkg_dir.join(p);
+        std::fs::create_dir_all(path.parent().expect("folder")).expect("mkdir");
+        std::fs::write(&path, b).expect("write");
+    }
+    let pkg = &out.report.package_name;
+    let mech = std::fs::read_to_string(pkg_dir.join(pkg).join("Mechatronics.mo")).expect("Mechatronics.mo");
+    assert!(mech.contains(&format!("Modelica.Utilities.Files.loadResource")) || std::fs::read_to_string(pkg_dir.join(pkg).join("Components/Collision.mo")).expect("Collision.mo").contains(&format!("loadResource(\"modelica://{pkg}/Resources/Collision/contact.txt\")")), "the world finds its shape file through a modelica:// URI");
+    let file = pkg_dir.join(pkg).join(collision::SHAPE_FILE);
+    assert!(file.is_file(), "the package ships {}", collision::SHAPE_FILE);
+    let names = body_names(&mech);
+    let coll = out.report.collision.as_ref().expect("collision report");
+    // No vertices in the text: every number in the world's modifiers is a size or an index.
+    assert!(!mech.contains("vertices="), "Mechatronics.mo carries vertices");
+    // The CAD poses of the named bodies.
+    let bundle = cad2mo::cli::read_bundle(&case, &Default::default()).expect("bundle");
+    let analysed = cad2mo::pipeline::analyse(&bundle, &opts).expect("analyses");
+    let poses = cad2mo::pipeline::back::collision_shapes::cad_poses(&analysed.model);
+    let index: std::collections::BTreeMap<&str, usize> = coll.bodies.iter().enumerate().map(|(i, b)| (b.body.as_str(), i)).collect();
+    let mut stdin = String::new();
+    for n in &names {
+        let pose = poses[*index.get(n.as_str()).expect("a report body")];
+        let r: Matrix3<f64> = pose.rotation.to_rotation_matrix().matrix().transpose();
+        let t = pose.translation.vector;
+        stdin.push_str(&format!("{} {} {} ", fmt(t.x), fmt(t.y), fmt(t.z)));
+        for i in 0..3 {
+            for j in 0..3 {
+                stdin.push_str(&format!("{} ", fmt(r[(i, j)])));
+            }
+        }
+        stdin.push('\n');
+    }
+    let (ok, stdout, stderr) = run_load(&exe, &file, &names, &stdin);
+    assert!(ok, "load failed: {stderr}");
+    let mut lines = stdout.lines();
+    let head: Vec<usize> = lines.next().expect("summary").split_whitespace().map(|x| x.parse().expect("count")).collect();
+    let shaped: Vec<_> = coll.bodies.iter().filter(|b| b.parts > 0).collect();
+    assert_eq!(names.len(), shaped.len(), "every shaped body is in the world");
+    assert_eq!(head[0], shaped.iter().map(|b| b.parts).sum::<usize>(), "parts");
+    assert_eq!(head[1], shaped.iter().map(|b| b.vertices).sum::<usize>(), "vertices");
+    assert_eq!(head[2], coll.checked_pairs, "checked pairs");
+    assert!(!coll.interferences.is_empty(), "the case interferes at the CAD pose");
+    let touching: std::collections::BTreeSet<&str> = coll.interferences.iter().flat_map(|i| [i.a.as_str(), i.b.as_str()]).collect();
+    for (n, line) in names.iter().zip(lines) {
+        let v: Vec<f64> = line.split_whitespace().map(|x| x.parse().expect("number")).collect();
+        let pushed = v[..3].iter().any(|x| x.abs() > 0.0);
+        assert_eq!(pushed, touching.contains(n.as_str()), "{n}: force {v:?}, interferences {touching:?}");
+    }
+
+    // Refusals name the file and the line.
+    let text = std::fs::read_to_string(&file).expect("shape file");
+    let bad = tmp.path().join("bad.txt");
+    let truncated = &text[..text.rfind("end").expect("end")];
+    for (what, content, expect) in [
+        ("truncated", truncated.to_string(), "ends without \"end\""),
+        ("unknown entry", text.replacen("\npart ", "\nslab ", 1), "unknown entry \"slab\""),
+        ("not a number", text.replacen("\npart 1 ", "\npart 1 x", 1), "expected \"part"),
+        ("foreign", text.replacen(&format!("body 1 {}", names[0]), "body 1 SOMEONE_ELSE", 1), "a shape file of another model"),
+        ("other format", "solid x\nendsolid x\n".to_string(), "not a cad2mo collision shape file"),
+    ] {
+        std::fs::write(&bad, &content).expect("write");
+        let (ok, _, stderr) = run_load(&exe, &bad, &names, &stdin);
+        assert!(!ok, "{what}: accepted");
+        assert!(stderr.contains(expect) && stderr.contains("bad.txt") && (stderr.contains("line ") || what == "truncated"), "{what}: {stderr}");
+    }
+    let (ok, _, stderr) = run_load(&exe, &tmp.path().join("missing.txt"), &names, &stdin);
+    assert!(!ok && stderr.contains("cannot open the collision shape file"), "{stderr}");
 }

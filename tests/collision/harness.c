@@ -9,7 +9,12 @@
  *   harness drop e stiffness exponent mass radius height dt
  *                   drops a sphere (one vertex grown by radius) on a fixed box under gravity
  *                   through the world's contact law, integrated with semi-implicit Euler at
- *                   the fixed step dt, and writes one line per bounce: v_in v_out apex */
+ *                   the fixed step dt, and writes one line per bounce: v_in v_out apex
+ *   harness load FILE NAME...
+ *                   builds the world from a package's shape file (Resources/Collision/contact.txt)
+ *                   for the bodies NAME... (as Mechatronics lists them), reads each body's
+ *                   r_0[3] R_T[9] from stdin (velocities zero) and writes one line
+ *                   "parts vertices checkedPairs touching", then per body force[3] torque[3] */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -184,7 +189,65 @@ static int drop(int argc, char** argv) {
     return 0;
 }
 
+static int load(int argc, char** argv) {
+    int n = argc - 3, i, k, parts, vertices, checkedPairs = 0;
+    double *r_0, *R_T, *v_0, *force, *torque, st, re, fr;
+    double *stiffness, *restitution, *friction;
+    c2mc_world* w;
+    if (n < 1) {
+        return 1;
+    }
+    r_0 = (double*)calloc((size_t)n * 3, sizeof(double));
+    R_T = (double*)calloc((size_t)n * 9, sizeof(double));
+    v_0 = (double*)calloc((size_t)n * 3, sizeof(double));
+    force = (double*)calloc((size_t)n * 3, sizeof(double));
+    torque = (double*)calloc((size_t)n * 3, sizeof(double));
+    stiffness = (double*)calloc((size_t)n, sizeof(double));
+    restitution = (double*)calloc((size_t)n, sizeof(double));
+    friction = (double*)calloc((size_t)n, sizeof(double));
+    if (!r_0 || !R_T || !v_0 || !force || !torque || !stiffness || !restitution || !friction) {
+        return 1;
+    }
+    st = 1e7;
+    re = 0.5;
+    fr = 0.3;
+    for (i = 0; i < n; i++) {
+        stiffness[i] = st;
+        restitution[i] = re;
+        friction[i] = fr;
+        if (!read_doubles(r_0 + 3 * i, 3) || !read_doubles(R_T + 9 * i, 9)) {
+            return 1;
+        }
+    }
+    w = (c2mc_world*)cad2mo_collision_load(argv[2], n, (const char**)(argv + 3), 0, NULL, stiffness, restitution, friction, 1.5, 0.01, 0.01);
+    parts = w->nParts;
+    vertices = w->nVertices;
+    for (i = 0; i < n; i++) {
+        for (k = i + 1; k < n; k++) {
+            checkedPairs += w->checked[i * n + k];
+        }
+    }
+    cad2mo_collision_forces(w, r_0, R_T, v_0, v_0, n, force, torque);
+    printf("%d %d %d %d\n", parts, vertices, checkedPairs, cad2mo_collision_contacts(w));
+    for (i = 0; i < n; i++) {
+        printf("%.17g %.17g %.17g %.17g %.17g %.17g\n", force[3 * i], force[3 * i + 1], force[3 * i + 2], torque[3 * i], torque[3 * i + 1], torque[3 * i + 2]);
+    }
+    cad2mo_collision_close(w);
+    free(r_0);
+    free(R_T);
+    free(v_0);
+    free(force);
+    free(torque);
+    free(stiffness);
+    free(restitution);
+    free(friction);
+    return 0;
+}
+
 int main(int argc, char** argv) {
+    if (argc >= 3 && strcmp(argv[1], "load") == 0) {
+        return load(argc, argv);
+    }
     if (argc >= 2 && strcmp(argv[1], "query") == 0) {
         return query();
     }
@@ -194,6 +257,6 @@ int main(int argc, char** argv) {
     if (argc >= 2 && strcmp(argv[1], "drop") == 0) {
         return drop(argc, argv);
     }
-    fprintf(stderr, "usage: harness query | harness eval | harness drop e stiffness exponent mass radius height dt\n");
+    fprintf(stderr, "usage: harness query | harness eval | harness drop e stiffness exponent mass radius height dt | harness load FILE NAME...\n");
     return 1;
 }

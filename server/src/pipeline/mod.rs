@@ -420,16 +420,14 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
         .filter(|_| (1..=back::modelica::mechatronics::live::MAX_BODIES).contains(&bodies.len()))
         .map(|t| (t, bodies));
     let parts = collision.parts();
-    let contacts = parts.iter().any(Option::is_some).then(|| {
-        back::modelica::mechatronics::collision::declarations(&package_name, &names, &parts, &|i, j| collision.checked(i, j))
-    });
+    let contacts = back::modelica::mechatronics::collision::declarations(&package_name, &names, &parts, &|i, j| collision.checked(i, j));
     files.extend(back::modelica::mechatronics::mechatronics(
         &package_name,
         &drives,
         &extras.motions,
         &back::modelica::mechatronics::Additions {
             live,
-            collision: contacts.as_deref(),
+            collision: contacts.as_ref(),
             diagram: Some(&pkg.layout.diagram),
             experiment: Some(&back::modelica::Experiment::for_model(&a.model, gravity)),
         },

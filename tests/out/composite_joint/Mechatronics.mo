@@ -2,76 +2,33 @@ within UJ;
 model Mechatronics "Mechatronic model of UJ: Mechanics with no joint drive"
   extends UJ.Mechanics;
 
-  // Collisions: contact forces between the bodies' collision shapes (see Components.Collision)
+  // Collisions: contact forces between the bodies' collision shapes (3 bodies, 3 convex parts, 1 of 3 pairs checked; see Components.Collision and Resources/Collision/contact.txt)
   parameter Boolean collisions = false "Apply contact forces between the bodies' collision shapes"
     annotation (Dialog(group="Collisions"), choices(checkBox=true));
   UJ.Components.Collision.World collisionWorld(
+    enabled=collisions,
     nBodies=3,
-    nParts=3,
-    partBody={1, 2, 3},
-    partVertices={8, 8, 8},
-    partRadius={0.0, 0.0, 0.0},
-    vertices={
-      {-0.05, 0.0, -0.05},
-      {0.05, 0.0, -0.05},
-      {-0.05, 0.18, -0.05},
-      {0.05, 0.18, -0.05},
-      {-0.05, 0.0, 0.05},
-      {0.05, 0.0, 0.05},
-      {-0.05, 0.18, 0.05},
-      {0.05, 0.18, 0.05},
-      {-0.02, -0.02, -0.02},
-      {0.02, -0.02, -0.02},
-      {-0.02, 0.08, -0.02},
-      {0.02, 0.08, -0.02},
-      {-0.02, -0.02, 0.06},
-      {0.02, -0.02, 0.06},
-      {-0.02, 0.08, 0.06},
-      {0.02, 0.08, 0.06},
-      {-0.03, -0.015, -0.01},
-      {0.03, -0.015, -0.01},
-      {-0.03, 0.015, -0.01},
-      {0.03, 0.015, -0.01},
-      {-0.03, -0.015, 0.01},
-      {0.03, -0.015, 0.01},
-      {-0.03, 0.015, 0.01},
-      {0.03, 0.015, 0.01}},
-    checked={{0, 0, 1}, {0, 0, 0}, {1, 0, 0}},
+    bodyNames={"BASE", "CROSS", "FLOAT"},
     r_0={BASE.frame_a.r_0, CROSS.frame_a.r_0, FLOAT.frame_a.r_0},
     R_T={BASE.frame_a.R.T, CROSS.frame_a.R.T, FLOAT.frame_a.R.T},
     v_0={BASE.v_0, CROSS.v_0, FLOAT.v_0},
-    w_a={BASE.w_a, CROSS.w_a, FLOAT.w_a}) if collisions "Contact forces between the collision shapes"
+    w_a={BASE.w_a, CROSS.w_a, FLOAT.w_a}) "Contact forces between the collision shapes (read from Resources/Collision/contact.txt when collisions is true)"
     annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,0})));
-  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_BASE if collisions "Contact force and torque on BASE (resolved in world)"
-    annotation (Placement(transformation(extent={{10,-10},{-10,10}}, origin={680,50})));
-  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_CROSS if collisions "Contact force and torque on CROSS (resolved in world)"
-    annotation (Placement(transformation(extent={{10,-10},{-10,10}}, origin={1080,50})));
-  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_FLOAT if collisions "Contact force and torque on FLOAT (resolved in world)"
-    annotation (Placement(transformation(extent={{10,-10},{-10,10}}, origin={1640,50})));
+  UJ.Components.Collision.BodyForce collisionForce_BASE(force=collisionWorld.force[1, :], torque=collisionWorld.torque[1, :]) if collisions "Contact force and torque on BASE (from collisionWorld)"
+    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-60})));
+  UJ.Components.Collision.BodyForce collisionForce_CROSS(force=collisionWorld.force[2, :], torque=collisionWorld.torque[2, :]) if collisions "Contact force and torque on CROSS (from collisionWorld)"
+    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-120})));
+  UJ.Components.Collision.BodyForce collisionForce_FLOAT(force=collisionWorld.force[3, :], torque=collisionWorld.torque[3, :]) if collisions "Contact force and torque on FLOAT (from collisionWorld)"
+    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-180})));
 equation
-  connect(collisionForce_BASE.frame_b, BASE.frame_a)
-    annotation (Line(points={{670,50},{665,50},{665,0},{725,0}}, color={95,95,95}, thickness=0.5));
-  connect(collisionWorld.force[1, :], collisionForce_BASE.force)
-    annotation (Line(points={{-63.5,6},{-60,6},{-60,5},{5,5},{5,55},{665,55},{665,70},{695,70},{695,56},{692,56}}, color={0,0,127}));
-  connect(collisionWorld.torque[1, :], collisionForce_BASE.torque)
-    annotation (Line(points={{-63.5,-6},{-60,-6},{-60,-5},{0,-5},{0,45},{660,45},{660,35},{695,35},{695,44},{692,44}}, color={0,0,127}));
-  connect(collisionForce_CROSS.frame_b, CROSS.frame_a)
-    annotation (Line(points={{1070,50},{1065,50},{1065,5},{1120,5},{1120,0},{1125,0}}, color={95,95,95}, thickness=0.5));
-  connect(collisionWorld.force[2, :], collisionForce_CROSS.force)
-    annotation (Line(points={{-63.5,6},{-60,6},{-60,55},{0,55},{0,60},{660,60},{660,75},{1095,75},{1095,56},{1092,56}}, color={0,0,127}));
-  connect(collisionWorld.torque[2, :], collisionForce_CROSS.torque)
-    annotation (Line(points={{-63.5,-6},{-60,-6},{-60,0},{-5,0},{-5,50},{655,50},{655,30},{1095,30},{1095,44},{1092,44}}, color={0,0,127}));
-  connect(collisionForce_FLOAT.frame_b, FLOAT.frame_a)
-    annotation (Line(points={{1630,50},{1625,50},{1625,20},{1680,20},{1680,0},{1685,0}}, color={95,95,95}, thickness=0.5));
-  connect(collisionWorld.force[3, :], collisionForce_FLOAT.force)
-    annotation (Line(points={{-63.5,6},{-60,6},{-60,10},{-10,10},{-10,65},{655,65},{655,80},{1655,80},{1655,56},{1652,56}}, color={0,0,127}));
-  connect(collisionWorld.torque[3, :], collisionForce_FLOAT.torque)
-    annotation (Line(points={{-63.5,-6},{-60,-6},{-60,-10},{5,-10},{5,-15},{395,-15},{395,40},{650,40},{650,25},{1655,25},{1655,44},{1652,44}}, color={0,0,127}));
+  connect(collisionForce_BASE.frame_b, BASE.frame_a);
+  connect(collisionForce_CROSS.frame_b, CROSS.frame_a);
+  connect(collisionForce_FLOAT.frame_b, FLOAT.frame_a);
 public
 equation
   annotation (
     experiment(StopTime=4.0, Interval=0.01, Tolerance=1e-06),
-    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-140,-260},{1760,120}})),
+    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-140,-260},{1760,60}})),
     Icon(graphics={
       Rectangle(extent={{10,-70},{60,-30}}, lineColor={0,0,0}, fillColor={0,128,255}, fillPattern=FillPattern.HorizontalCylinder),
       Rectangle(extent={{60,-54},{80,-46}}, lineColor={0,0,0}, fillColor={160,160,164}, fillPattern=FillPattern.HorizontalCylinder),

@@ -2,76 +2,33 @@ within RELFRAMES;
 model Mechatronics "Mechatronic model of RELFRAMES: Mechanics with no joint drive"
   extends RELFRAMES.Mechanics;
 
-  // Collisions: contact forces between the bodies' collision shapes (see Components.Collision)
+  // Collisions: contact forces between the bodies' collision shapes (3 bodies, 3 convex parts, 1 of 3 pairs checked; see Components.Collision and Resources/Collision/contact.txt)
   parameter Boolean collisions = false "Apply contact forces between the bodies' collision shapes"
     annotation (Dialog(group="Collisions"), choices(checkBox=true));
   RELFRAMES.Components.Collision.World collisionWorld(
+    enabled=collisions,
     nBodies=3,
-    nParts=3,
-    partBody={1, 2, 3},
-    partVertices={8, 8, 8},
-    partRadius={0.0, 0.0, 0.0},
-    vertices={
-      {-0.015, -0.016, -0.01},
-      {0.195, -0.016, -0.01},
-      {-0.015, 0.015, -0.01},
-      {0.195, 0.015, -0.01},
-      {-0.015, -0.016, 0.011},
-      {0.195, -0.016, 0.011},
-      {-0.015, 0.015, 0.011},
-      {0.195, 0.015, 0.011},
-      {-0.012, -0.012, -0.01},
-      {0.163, -0.012, -0.01},
-      {-0.012, 0.013, -0.01},
-      {0.163, 0.013, -0.01},
-      {-0.012, -0.012, 0.011},
-      {0.163, -0.012, 0.011},
-      {-0.012, 0.013, 0.011},
-      {0.163, 0.013, 0.011},
-      {-0.021, -0.01, -0.045},
-      {0.01, -0.01, -0.045},
-      {-0.021, 0.059, -0.045},
-      {0.01, 0.059, -0.045},
-      {-0.021, -0.01, 0.01},
-      {0.01, -0.01, 0.01},
-      {-0.021, 0.059, 0.01},
-      {0.01, 0.059, 0.01}},
-    checked={{0, 0, 1}, {0, 0, 0}, {1, 0, 0}},
+    bodyNames={"CRANK", "ROD", "SLIDER"},
     r_0={CRANK.frame_a.r_0, ROD.frame_a.r_0, SLIDER.frame_a.r_0},
     R_T={CRANK.frame_a.R.T, ROD.frame_a.R.T, SLIDER.frame_a.R.T},
     v_0={CRANK.v_0, ROD.v_0, SLIDER.v_0},
-    w_a={CRANK.w_a, ROD.w_a, SLIDER.w_a}) if collisions "Contact forces between the collision shapes"
+    w_a={CRANK.w_a, ROD.w_a, SLIDER.w_a}) "Contact forces between the collision shapes (read from Resources/Collision/contact.txt when collisions is true)"
     annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,0})));
-  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_CRANK if collisions "Contact force and torque on CRANK (resolved in world)"
-    annotation (Placement(transformation(extent={{10,-10},{-10,10}}, origin={680,50})));
-  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_ROD if collisions "Contact force and torque on ROD (resolved in world)"
-    annotation (Placement(transformation(extent={{10,-10},{-10,10}}, origin={1000,50})));
-  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_SLIDER if collisions "Contact force and torque on SLIDER (resolved in world)"
-    annotation (Placement(transformation(extent={{10,-10},{-10,10}}, origin={1320,50})));
+  RELFRAMES.Components.Collision.BodyForce collisionForce_CRANK(force=collisionWorld.force[1, :], torque=collisionWorld.torque[1, :]) if collisions "Contact force and torque on CRANK (from collisionWorld)"
+    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-60})));
+  RELFRAMES.Components.Collision.BodyForce collisionForce_ROD(force=collisionWorld.force[2, :], torque=collisionWorld.torque[2, :]) if collisions "Contact force and torque on ROD (from collisionWorld)"
+    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-120})));
+  RELFRAMES.Components.Collision.BodyForce collisionForce_SLIDER(force=collisionWorld.force[3, :], torque=collisionWorld.torque[3, :]) if collisions "Contact force and torque on SLIDER (from collisionWorld)"
+    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-180})));
 equation
-  connect(collisionForce_CRANK.frame_b, CRANK.frame_a)
-    annotation (Line(points={{670,50},{665,50},{665,20},{720,20},{720,0},{725,0}}, color={95,95,95}, thickness=0.5));
-  connect(collisionWorld.force[1, :], collisionForce_CRANK.force)
-    annotation (Line(points={{-63.5,6},{-60,6},{-60,5},{5,5},{5,55},{665,55},{665,70},{695,70},{695,56},{692,56}}, color={0,0,127}));
-  connect(collisionWorld.torque[1, :], collisionForce_CRANK.torque)
-    annotation (Line(points={{-63.5,-6},{-60,-6},{-60,-5},{0,-5},{0,45},{660,45},{660,35},{695,35},{695,44},{692,44}}, color={0,0,127}));
-  connect(collisionForce_ROD.frame_b, ROD.frame_a)
-    annotation (Line(points={{990,50},{985,50},{985,20},{1040,20},{1040,0},{1045,0}}, color={95,95,95}, thickness=0.5));
-  connect(collisionWorld.force[2, :], collisionForce_ROD.force)
-    annotation (Line(points={{-63.5,6},{-60,6},{-60,55},{0,55},{0,60},{660,60},{660,75},{1015,75},{1015,56},{1012,56}}, color={0,0,127}));
-  connect(collisionWorld.torque[2, :], collisionForce_ROD.torque)
-    annotation (Line(points={{-63.5,-6},{-60,-6},{-60,0},{-5,0},{-5,50},{655,50},{655,30},{1015,30},{1015,44},{1012,44}}, color={0,0,127}));
-  connect(collisionForce_SLIDER.frame_b, SLIDER.frame_a)
-    annotation (Line(points={{1310,50},{1305,50},{1305,20},{1360,20},{1360,0},{1365,0}}, color={95,95,95}, thickness=0.5));
-  connect(collisionWorld.force[3, :], collisionForce_SLIDER.force)
-    annotation (Line(points={{-63.5,6},{-60,6},{-60,10},{-10,10},{-10,65},{655,65},{655,80},{1335,80},{1335,56},{1332,56}}, color={0,0,127}));
-  connect(collisionWorld.torque[3, :], collisionForce_SLIDER.torque)
-    annotation (Line(points={{-63.5,-6},{-60,-6},{-60,-10},{5,-10},{5,-15},{395,-15},{395,40},{650,40},{650,25},{1335,25},{1335,44},{1332,44}}, color={0,0,127}));
+  connect(collisionForce_CRANK.frame_b, CRANK.frame_a);
+  connect(collisionForce_ROD.frame_b, ROD.frame_a);
+  connect(collisionForce_SLIDER.frame_b, SLIDER.frame_a);
 public
 equation
   annotation (
     experiment(StopTime=4.0, Interval=0.01, Tolerance=1e-06),
-    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-140,-260},{1440,120}})),
+    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-140,-260},{1440,60}})),
     Icon(graphics={
       Rectangle(extent={{10,-70},{60,-30}}, lineColor={0,0,0}, fillColor={0,128,255}, fillPattern=FillPattern.HorizontalCylinder),
       Rectangle(extent={{60,-54},{80,-46}}, lineColor={0,0,0}, fillColor={160,160,164}, fillPattern=FillPattern.HorizontalCylinder),

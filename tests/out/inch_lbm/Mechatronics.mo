@@ -2,60 +2,30 @@ within CHAIN_IN;
 model Mechatronics "Mechatronic model of CHAIN_IN: Mechanics with no joint drive"
   extends CHAIN_IN.Mechanics;
 
-  // Collisions: contact forces between the bodies' collision shapes (see Components.Collision)
+  // Collisions: contact forces between the bodies' collision shapes (2 bodies, 2 convex parts, 0 of 1 pairs checked; see Components.Collision and Resources/Collision/contact.txt)
   parameter Boolean collisions = false "Apply contact forces between the bodies' collision shapes"
     annotation (Dialog(group="Collisions"), choices(checkBox=true));
   CHAIN_IN.Components.Collision.World collisionWorld(
+    enabled=collisions,
     nBodies=2,
-    nParts=2,
-    partBody={1, 2},
-    partVertices={8, 8},
-    partRadius={0.0, 0.0},
-    vertices={
-      {-0.0127, -0.0127, -0.00635},
-      {0.3175, -0.0127, -0.00635},
-      {-0.0127, 0.0127, -0.00635},
-      {0.3175, 0.0127, -0.00635},
-      {-0.0127, -0.0127, 0.00635},
-      {0.3175, -0.0127, 0.00635},
-      {-0.0127, 0.0127, 0.00635},
-      {0.3175, 0.0127, 0.00635},
-      {-0.0127, -0.0127, -0.00635},
-      {0.2159, -0.0127, -0.00635},
-      {-0.0127, 0.0127, -0.00635},
-      {0.2159, 0.0127, -0.00635},
-      {-0.0127, -0.0127, 0.00635},
-      {0.2159, -0.0127, 0.00635},
-      {-0.0127, 0.0127, 0.00635},
-      {0.2159, 0.0127, 0.00635}},
-    checked={{0, 0}, {0, 0}},
+    bodyNames={"LINK1", "LINK2"},
     r_0={LINK1.frame_a.r_0, LINK2.frame_a.r_0},
     R_T={LINK1.frame_a.R.T, LINK2.frame_a.R.T},
     v_0={LINK1.v_0, LINK2.v_0},
-    w_a={LINK1.w_a, LINK2.w_a}) if collisions "Contact forces between the collision shapes"
+    w_a={LINK1.w_a, LINK2.w_a}) "Contact forces between the collision shapes (read from Resources/Collision/contact.txt when collisions is true)"
     annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,0})));
-  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_LINK1 if collisions "Contact force and torque on LINK1 (resolved in world)"
-    annotation (Placement(transformation(extent={{10,-10},{-10,10}}, origin={680,50})));
-  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_LINK2 if collisions "Contact force and torque on LINK2 (resolved in world)"
-    annotation (Placement(transformation(extent={{10,-10},{-10,10}}, origin={1000,50})));
+  CHAIN_IN.Components.Collision.BodyForce collisionForce_LINK1(force=collisionWorld.force[1, :], torque=collisionWorld.torque[1, :]) if collisions "Contact force and torque on LINK1 (from collisionWorld)"
+    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-60})));
+  CHAIN_IN.Components.Collision.BodyForce collisionForce_LINK2(force=collisionWorld.force[2, :], torque=collisionWorld.torque[2, :]) if collisions "Contact force and torque on LINK2 (from collisionWorld)"
+    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-120})));
 equation
-  connect(collisionForce_LINK1.frame_b, LINK1.frame_a)
-    annotation (Line(points={{670,50},{665,50},{665,20},{720,20},{720,0},{725,0}}, color={95,95,95}, thickness=0.5));
-  connect(collisionWorld.force[1, :], collisionForce_LINK1.force)
-    annotation (Line(points={{-63.5,6},{-60,6},{-60,5},{5,5},{5,55},{665,55},{665,70},{695,70},{695,56},{692,56}}, color={0,0,127}));
-  connect(collisionWorld.torque[1, :], collisionForce_LINK1.torque)
-    annotation (Line(points={{-63.5,-6},{-60,-6},{-60,-5},{0,-5},{0,45},{660,45},{660,35},{695,35},{695,44},{692,44}}, color={0,0,127}));
-  connect(collisionForce_LINK2.frame_b, LINK2.frame_a)
-    annotation (Line(points={{990,50},{985,50},{985,20},{1040,20},{1040,0},{1045,0}}, color={95,95,95}, thickness=0.5));
-  connect(collisionWorld.force[2, :], collisionForce_LINK2.force)
-    annotation (Line(points={{-63.5,6},{-60,6},{-60,55},{0,55},{0,60},{660,60},{660,75},{1015,75},{1015,56},{1012,56}}, color={0,0,127}));
-  connect(collisionWorld.torque[2, :], collisionForce_LINK2.torque)
-    annotation (Line(points={{-63.5,-6},{-60,-6},{-60,0},{-5,0},{-5,50},{655,50},{655,30},{1015,30},{1015,44},{1012,44}}, color={0,0,127}));
+  connect(collisionForce_LINK1.frame_b, LINK1.frame_a);
+  connect(collisionForce_LINK2.frame_b, LINK2.frame_a);
 public
 equation
   annotation (
     experiment(StopTime=4.0, Interval=0.01, Tolerance=1e-06),
-    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-140,-260},{1120,120}})),
+    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-140,-260},{1120,60}})),
     Icon(graphics={
       Rectangle(extent={{10,-70},{60,-30}}, lineColor={0,0,0}, fillColor={0,128,255}, fillPattern=FillPattern.HorizontalCylinder),
       Rectangle(extent={{60,-54},{80,-46}}, lineColor={0,0,0}, fillColor={160,160,164}, fillPattern=FillPattern.HorizontalCylinder),

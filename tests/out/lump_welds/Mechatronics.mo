@@ -2,68 +2,30 @@ within LumpedArm;
 model Mechatronics "Mechatronic model of LumpedArm: Mechanics with no joint drive"
   extends LumpedArm.Mechanics;
 
-  // Collisions: contact forces between the bodies' collision shapes (see Components.Collision)
+  // Collisions: contact forces between the bodies' collision shapes (2 bodies, 2 convex parts, 0 of 1 pairs checked; see Components.Collision and Resources/Collision/contact.txt)
   parameter Boolean collisions = false "Apply contact forces between the bodies' collision shapes"
     annotation (Dialog(group="Collisions"), choices(checkBox=true));
   LumpedArm.Components.Collision.World collisionWorld(
+    enabled=collisions,
     nBodies=2,
-    nParts=2,
-    partBody={1, 2},
-    partVertices={16, 8},
-    partRadius={0.0, 0.0},
-    vertices={
-      {-0.012, -0.013, -0.01},
-      {-0.012, 0.012, -0.01},
-      {0.152, 0.012, -0.01},
-      {0.152, -0.013, -0.01},
-      {-0.012, -0.013, 0.01},
-      {0.152, -0.013, 0.01},
-      {0.152, 0.012, 0.01},
-      {-0.012, 0.012, 0.01},
-      {0.128, 0.011, -0.012},
-      {0.128, 0.011, 0.012},
-      {0.27199998, 0.011, 0.012},
-      {0.27199998, 0.011, -0.012},
-      {0.128, -0.011, -0.012},
-      {0.27199998, -0.011, -0.012},
-      {0.27199998, -0.011, 0.012},
-      {0.128, -0.011, 0.012},
-      {-0.01, -0.01, -0.008},
-      {0.21, -0.01, -0.008},
-      {-0.01, 0.01, -0.008},
-      {0.21, 0.01, -0.008},
-      {-0.01, -0.01, 0.008},
-      {0.21, -0.01, 0.008},
-      {-0.01, 0.01, 0.008},
-      {0.21, 0.01, 0.008}},
-    checked={{0, 0}, {0, 0}},
+    bodyNames={"UPPER_A", "FORE"},
     r_0={UPPER_A.frame_a.r_0, FORE.frame_a.r_0},
     R_T={UPPER_A.frame_a.R.T, FORE.frame_a.R.T},
     v_0={UPPER_A.v_0, FORE.v_0},
-    w_a={UPPER_A.w_a, FORE.w_a}) if collisions "Contact forces between the collision shapes"
+    w_a={UPPER_A.w_a, FORE.w_a}) "Contact forces between the collision shapes (read from Resources/Collision/contact.txt when collisions is true)"
     annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,0})));
-  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_UPPER_A if collisions "Contact force and torque on UPPER_A (resolved in world)"
-    annotation (Placement(transformation(extent={{10,-10},{-10,10}}, origin={680,50})));
-  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_FORE if collisions "Contact force and torque on FORE (resolved in world)"
-    annotation (Placement(transformation(extent={{10,-10},{-10,10}}, origin={1000,50})));
+  LumpedArm.Components.Collision.BodyForce collisionForce_UPPER_A(force=collisionWorld.force[1, :], torque=collisionWorld.torque[1, :]) if collisions "Contact force and torque on UPPER_A (from collisionWorld)"
+    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-60})));
+  LumpedArm.Components.Collision.BodyForce collisionForce_FORE(force=collisionWorld.force[2, :], torque=collisionWorld.torque[2, :]) if collisions "Contact force and torque on FORE (from collisionWorld)"
+    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-120})));
 equation
-  connect(collisionForce_UPPER_A.frame_b, UPPER_A.frame_a)
-    annotation (Line(points={{670,50},{665,50},{665,20},{720,20},{720,0},{725,0}}, color={95,95,95}, thickness=0.5));
-  connect(collisionWorld.force[1, :], collisionForce_UPPER_A.force)
-    annotation (Line(points={{-63.5,6},{-60,6},{-60,5},{5,5},{5,55},{665,55},{665,70},{695,70},{695,56},{692,56}}, color={0,0,127}));
-  connect(collisionWorld.torque[1, :], collisionForce_UPPER_A.torque)
-    annotation (Line(points={{-63.5,-6},{-60,-6},{-60,-5},{0,-5},{0,45},{660,45},{660,35},{695,35},{695,44},{692,44}}, color={0,0,127}));
-  connect(collisionForce_FORE.frame_b, FORE.frame_a)
-    annotation (Line(points={{990,50},{985,50},{985,20},{1040,20},{1040,0},{1045,0}}, color={95,95,95}, thickness=0.5));
-  connect(collisionWorld.force[2, :], collisionForce_FORE.force)
-    annotation (Line(points={{-63.5,6},{-60,6},{-60,55},{0,55},{0,60},{660,60},{660,75},{1015,75},{1015,56},{1012,56}}, color={0,0,127}));
-  connect(collisionWorld.torque[2, :], collisionForce_FORE.torque)
-    annotation (Line(points={{-63.5,-6},{-60,-6},{-60,0},{-5,0},{-5,50},{655,50},{655,30},{1015,30},{1015,44},{1012,44}}, color={0,0,127}));
+  connect(collisionForce_UPPER_A.frame_b, UPPER_A.frame_a);
+  connect(collisionForce_FORE.frame_b, FORE.frame_a);
 public
 equation
   annotation (
     experiment(StopTime=4.0, Interval=0.01, Tolerance=1e-06),
-    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-140,-260},{1120,120}})),
+    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-140,-260},{1120,60}})),
     Icon(graphics={
       Rectangle(extent={{10,-70},{60,-30}}, lineColor={0,0,0}, fillColor={0,128,255}, fillPattern=FillPattern.HorizontalCylinder),
       Rectangle(extent={{60,-54},{80,-46}}, lineColor={0,0,0}, fillColor={160,160,164}, fillPattern=FillPattern.HorizontalCylinder),

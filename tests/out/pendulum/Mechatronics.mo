@@ -2,44 +2,27 @@ within PENDULUM;
 model Mechatronics "Mechatronic model of PENDULUM: Mechanics with no joint drive"
   extends PENDULUM.Mechanics;
 
-  // Collisions: contact forces between the bodies' collision shapes (see Components.Collision)
+  // Collisions: contact forces between the bodies' collision shapes (1 bodies, 1 convex parts, 0 of 0 pairs checked; see Components.Collision and Resources/Collision/contact.txt)
   parameter Boolean collisions = false "Apply contact forces between the bodies' collision shapes"
     annotation (Dialog(group="Collisions"), choices(checkBox=true));
   PENDULUM.Components.Collision.World collisionWorld(
+    enabled=collisions,
     nBodies=1,
-    nParts=1,
-    partBody={1},
-    partVertices={8},
-    partRadius={0.0},
-    vertices={
-      {-0.015, -0.015, -0.005},
-      {0.315, -0.015, -0.005},
-      {-0.015, 0.015, -0.005},
-      {0.315, 0.015, -0.005},
-      {-0.015, -0.015, 0.005},
-      {0.315, -0.015, 0.005},
-      {-0.015, 0.015, 0.005},
-      {0.315, 0.015, 0.005}},
-    checked={{0}},
+    bodyNames={"LINK"},
     r_0={LINK.frame_a.r_0},
     R_T={LINK.frame_a.R.T},
     v_0={LINK.v_0},
-    w_a={LINK.w_a}) if collisions "Contact forces between the collision shapes"
+    w_a={LINK.w_a}) "Contact forces between the collision shapes (read from Resources/Collision/contact.txt when collisions is true)"
     annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,0})));
-  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_LINK if collisions "Contact force and torque on LINK (resolved in world)"
-    annotation (Placement(transformation(extent={{10,-10},{-10,10}}, origin={680,50})));
+  PENDULUM.Components.Collision.BodyForce collisionForce_LINK(force=collisionWorld.force[1, :], torque=collisionWorld.torque[1, :]) if collisions "Contact force and torque on LINK (from collisionWorld)"
+    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-60})));
 equation
-  connect(collisionForce_LINK.frame_b, LINK.frame_a)
-    annotation (Line(points={{670,50},{665,50},{665,20},{720,20},{720,0},{725,0}}, color={95,95,95}, thickness=0.5));
-  connect(collisionWorld.force[1, :], collisionForce_LINK.force)
-    annotation (Line(points={{-63.5,6},{-60,6},{-60,5},{5,5},{5,55},{665,55},{665,70},{695,70},{695,56},{692,56}}, color={0,0,127}));
-  connect(collisionWorld.torque[1, :], collisionForce_LINK.torque)
-    annotation (Line(points={{-63.5,-6},{-60,-6},{-60,-5},{0,-5},{0,45},{660,45},{660,35},{695,35},{695,44},{692,44}}, color={0,0,127}));
+  connect(collisionForce_LINK.frame_b, LINK.frame_a);
 public
 equation
   annotation (
     experiment(StopTime=4.0, Interval=0.01, Tolerance=1e-06),
-    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-140,-160},{800,120}})),
+    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-140,-160},{800,60}})),
     Icon(graphics={
       Rectangle(extent={{10,-70},{60,-30}}, lineColor={0,0,0}, fillColor={0,128,255}, fillPattern=FillPattern.HorizontalCylinder),
       Rectangle(extent={{60,-54},{80,-46}}, lineColor={0,0,0}, fillColor={160,160,164}, fillPattern=FillPattern.HorizontalCylinder),

@@ -2,76 +2,33 @@ within RSSR;
 model Mechatronics "Mechatronic model of RSSR: Mechanics with no joint drive"
   extends RSSR.Mechanics;
 
-  // Collisions: contact forces between the bodies' collision shapes (see Components.Collision)
+  // Collisions: contact forces between the bodies' collision shapes (3 bodies, 3 convex parts, 1 of 3 pairs checked; see Components.Collision and Resources/Collision/contact.txt)
   parameter Boolean collisions = false "Apply contact forces between the bodies' collision shapes"
     annotation (Dialog(group="Collisions"), choices(checkBox=true));
   RSSR.Components.Collision.World collisionWorld(
+    enabled=collisions,
     nBodies=3,
-    nParts=3,
-    partBody={1, 2, 3},
-    partVertices={8, 8, 8},
-    partRadius={0.0, 0.0, 0.0},
-    vertices={
-      {-0.008, -0.008, -0.004},
-      {0.059, -0.008, -0.004},
-      {-0.008, 0.009, -0.004},
-      {0.059, 0.009, -0.004},
-      {-0.008, -0.008, 0.004},
-      {0.059, -0.008, 0.004},
-      {-0.008, 0.009, 0.004},
-      {0.059, 0.009, 0.004},
-      {-0.008, -0.008, -0.005},
-      {0.211, -0.008, -0.005},
-      {-0.008, 0.008, -0.005},
-      {0.211, 0.008, -0.005},
-      {-0.008, -0.008, 0.004},
-      {0.211, -0.008, 0.004},
-      {-0.008, 0.008, 0.004},
-      {0.211, 0.008, 0.004},
-      {-0.008, -0.008, -0.004},
-      {0.108, -0.008, -0.004},
-      {-0.008, 0.008, -0.004},
-      {0.108, 0.008, -0.004},
-      {-0.008, -0.008, 0.004},
-      {0.108, -0.008, 0.004},
-      {-0.008, 0.008, 0.004},
-      {0.108, 0.008, 0.004}},
-    checked={{0, 0, 1}, {0, 0, 0}, {1, 0, 0}},
+    bodyNames={"CRANK", "COUPLER", "ROCKER"},
     r_0={CRANK.frame_a.r_0, COUPLER.frame_a.r_0, ROCKER.frame_a.r_0},
     R_T={CRANK.frame_a.R.T, COUPLER.frame_a.R.T, ROCKER.frame_a.R.T},
     v_0={CRANK.v_0, COUPLER.v_0, ROCKER.v_0},
-    w_a={CRANK.w_a, COUPLER.w_a, ROCKER.w_a}) if collisions "Contact forces between the collision shapes"
+    w_a={CRANK.w_a, COUPLER.w_a, ROCKER.w_a}) "Contact forces between the collision shapes (read from Resources/Collision/contact.txt when collisions is true)"
     annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,20})));
-  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_CRANK if collisions "Contact force and torque on CRANK (resolved in world)"
-    annotation (Placement(transformation(extent={{10,-10},{-10,10}}, origin={680,50})));
-  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_COUPLER if collisions "Contact force and torque on COUPLER (resolved in world)"
-    annotation (Placement(transformation(extent={{10,-10},{-10,10}}, origin={1000,50})));
-  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_ROCKER if collisions "Contact force and torque on ROCKER (resolved in world)"
-    annotation (Placement(transformation(extent={{10,-10},{-10,10}}, origin={1320,50})));
+  RSSR.Components.Collision.BodyForce collisionForce_CRANK(force=collisionWorld.force[1, :], torque=collisionWorld.torque[1, :]) if collisions "Contact force and torque on CRANK (from collisionWorld)"
+    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-40})));
+  RSSR.Components.Collision.BodyForce collisionForce_COUPLER(force=collisionWorld.force[2, :], torque=collisionWorld.torque[2, :]) if collisions "Contact force and torque on COUPLER (from collisionWorld)"
+    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-100})));
+  RSSR.Components.Collision.BodyForce collisionForce_ROCKER(force=collisionWorld.force[3, :], torque=collisionWorld.torque[3, :]) if collisions "Contact force and torque on ROCKER (from collisionWorld)"
+    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-160})));
 equation
-  connect(collisionForce_CRANK.frame_b, CRANK.frame_a)
-    annotation (Line(points={{670,50},{665,50},{665,20},{720,20},{720,0},{725,0}}, color={95,95,95}, thickness=0.5));
-  connect(collisionWorld.force[1, :], collisionForce_CRANK.force)
-    annotation (Line(points={{-63.5,26},{-60,26},{-60,25},{395,25},{395,55},{665,55},{665,70},{695,70},{695,56},{692,56}}, color={0,0,127}));
-  connect(collisionWorld.torque[1, :], collisionForce_CRANK.torque)
-    annotation (Line(points={{-63.5,14},{-60,14},{-60,15},{5,15},{5,45},{660,45},{660,35},{695,35},{695,44},{692,44}}, color={0,0,127}));
-  connect(collisionForce_COUPLER.frame_b, COUPLER.frame_a)
-    annotation (Line(points={{990,50},{985,50},{985,20},{1040,20},{1040,0},{1045,0}}, color={95,95,95}, thickness=0.5));
-  connect(collisionWorld.force[2, :], collisionForce_COUPLER.force)
-    annotation (Line(points={{-63.5,26},{-60,26},{-60,55},{390,55},{390,60},{660,60},{660,75},{1015,75},{1015,56},{1012,56}}, color={0,0,127}));
-  connect(collisionWorld.torque[2, :], collisionForce_COUPLER.torque)
-    annotation (Line(points={{-63.5,14},{-60,14},{-60,20},{400,20},{400,40},{655,40},{655,30},{1015,30},{1015,44},{1012,44}}, color={0,0,127}));
-  connect(collisionForce_ROCKER.frame_b, ROCKER.frame_a)
-    annotation (Line(points={{1310,50},{1305,50},{1305,20},{1360,20},{1360,0},{1365,0}}, color={95,95,95}, thickness=0.5));
-  connect(collisionWorld.force[3, :], collisionForce_ROCKER.force)
-    annotation (Line(points={{-63.5,26},{-60,26},{-60,30},{650,30},{650,25},{1335,25},{1335,56},{1332,56}}, color={0,0,127}));
-  connect(collisionWorld.torque[3, :], collisionForce_ROCKER.torque)
-    annotation (Line(points={{-63.5,14},{-60,14},{-60,10},{0,10},{0,50},{655,50},{655,80},{1340,80},{1340,45},{1335,45},{1335,44},{1332,44}}, color={0,0,127}));
+  connect(collisionForce_CRANK.frame_b, CRANK.frame_a);
+  connect(collisionForce_COUPLER.frame_b, COUPLER.frame_a);
+  connect(collisionForce_ROCKER.frame_b, ROCKER.frame_a);
 public
 equation
   annotation (
     experiment(StopTime=3.0, Interval=0.01, Tolerance=1e-06),
-    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-140,-260},{1440,120}})),
+    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-140,-260},{1440,80}})),
     Icon(graphics={
       Rectangle(extent={{10,-70},{60,-30}}, lineColor={0,0,0}, fillColor={0,128,255}, fillPattern=FillPattern.HorizontalCylinder),
       Rectangle(extent={{60,-54},{80,-46}}, lineColor={0,0,0}, fillColor={160,160,164}, fillPattern=FillPattern.HorizontalCylinder),

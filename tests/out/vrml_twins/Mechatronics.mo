@@ -2,60 +2,30 @@ within VASM;
 model Mechatronics "Mechatronic model of VASM: Mechanics with no joint drive"
   extends VASM.Mechanics;
 
-  // Collisions: contact forces between the bodies' collision shapes (see Components.Collision)
+  // Collisions: contact forces between the bodies' collision shapes (2 bodies, 2 convex parts, 1 of 1 pairs checked; see Components.Collision and Resources/Collision/contact.txt)
   parameter Boolean collisions = false "Apply contact forces between the bodies' collision shapes"
     annotation (Dialog(group="Collisions"), choices(checkBox=true));
   VASM.Components.Collision.World collisionWorld(
+    enabled=collisions,
     nBodies=2,
-    nParts=2,
-    partBody={1, 2},
-    partVertices={8, 8},
-    partRadius={0.0, 0.0},
-    vertices={
-      {-0.005, -0.005, 1.0408341e-17},
-      {0.005, -0.005, 6.938894e-18},
-      {-0.005, 0.005, 8.673617e-18},
-      {0.005, 0.005, 0.0},
-      {0.005, 0.005, 0.06},
-      {-0.005, 0.005, 0.06},
-      {0.005, -0.005, 0.06},
-      {-0.005, -0.005, 0.06},
-      {-0.012, -0.012, 6.938894e-18},
-      {0.012, -0.012, 0.0},
-      {-0.012, 0.012, 5.2041704e-18},
-      {0.012, 0.012, -1.7347235e-18},
-      {0.012, 0.012, 0.01},
-      {-0.012, 0.012, 0.01},
-      {0.012, -0.012, 0.01},
-      {-0.012, -0.012, 0.01}},
-    checked={{0, 1}, {1, 0}},
+    bodyNames={"BOLT", "NUT"},
     r_0={BOLT.frame_a.r_0, NUT.frame_a.r_0},
     R_T={BOLT.frame_a.R.T, NUT.frame_a.R.T},
     v_0={BOLT.v_0, NUT.v_0},
-    w_a={BOLT.w_a, NUT.w_a}) if collisions "Contact forces between the collision shapes"
+    w_a={BOLT.w_a, NUT.w_a}) "Contact forces between the collision shapes (read from Resources/Collision/contact.txt when collisions is true)"
     annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,0})));
-  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_BOLT if collisions "Contact force and torque on BOLT (resolved in world)"
-    annotation (Placement(transformation(extent={{10,-10},{-10,10}}, origin={680,50})));
-  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_NUT if collisions "Contact force and torque on NUT (resolved in world)"
-    annotation (Placement(transformation(extent={{10,-10},{-10,10}}, origin={680,-150})));
+  VASM.Components.Collision.BodyForce collisionForce_BOLT(force=collisionWorld.force[1, :], torque=collisionWorld.torque[1, :]) if collisions "Contact force and torque on BOLT (from collisionWorld)"
+    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-60})));
+  VASM.Components.Collision.BodyForce collisionForce_NUT(force=collisionWorld.force[2, :], torque=collisionWorld.torque[2, :]) if collisions "Contact force and torque on NUT (from collisionWorld)"
+    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-120})));
 equation
-  connect(collisionForce_BOLT.frame_b, BOLT.frame_a)
-    annotation (Line(points={{670,50},{665,50},{665,5},{720,5},{720,0},{725,0}}, color={95,95,95}, thickness=0.5));
-  connect(collisionWorld.force[1, :], collisionForce_BOLT.force)
-    annotation (Line(points={{-63.5,6},{-60,6},{-60,5},{5,5},{5,55},{665,55},{665,70},{695,70},{695,56},{692,56}}, color={0,0,127}));
-  connect(collisionWorld.torque[1, :], collisionForce_BOLT.torque)
-    annotation (Line(points={{-63.5,-6},{-60,-6},{-60,-5},{0,-5},{0,45},{660,45},{660,35},{695,35},{695,44},{692,44}}, color={0,0,127}));
-  connect(collisionForce_NUT.frame_b, NUT.frame_a)
-    annotation (Line(points={{670,-150},{665,-150},{665,-195},{720,-195},{720,-200},{725,-200}}, color={95,95,95}, thickness=0.5));
-  connect(collisionWorld.force[2, :], collisionForce_NUT.force)
-    annotation (Line(points={{-63.5,6},{-60,6},{-60,-145},{665,-145},{665,-130},{695,-130},{695,-144},{692,-144}}, color={0,0,127}));
-  connect(collisionWorld.torque[2, :], collisionForce_NUT.torque)
-    annotation (Line(points={{-63.5,-6},{-60,-6},{-60,-10},{5,-10},{5,-140},{660,-140},{660,-165},{695,-165},{695,-156},{692,-156}}, color={0,0,127}));
+  connect(collisionForce_BOLT.frame_b, BOLT.frame_a);
+  connect(collisionForce_NUT.frame_b, NUT.frame_a);
 public
 equation
   annotation (
     experiment(StopTime=3.0, Interval=0.01, Tolerance=1e-06),
-    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-140,-360},{800,120}})),
+    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-140,-360},{800,60}})),
     Icon(graphics={
       Rectangle(extent={{10,-70},{60,-30}}, lineColor={0,0,0}, fillColor={0,128,255}, fillPattern=FillPattern.HorizontalCylinder),
       Rectangle(extent={{60,-54},{80,-46}}, lineColor={0,0,0}, fillColor={160,160,164}, fillPattern=FillPattern.HorizontalCylinder),

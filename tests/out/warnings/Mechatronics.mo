@@ -2,76 +2,33 @@ within WARN;
 model Mechatronics "Mechatronic model of WARN: Mechanics with no joint drive"
   extends WARN.Mechanics;
 
-  // Collisions: contact forces between the bodies' collision shapes (see Components.Collision)
+  // Collisions: contact forces between the bodies' collision shapes (3 bodies, 3 convex parts, 2 of 3 pairs checked; see Components.Collision and Resources/Collision/contact.txt)
   parameter Boolean collisions = false "Apply contact forces between the bodies' collision shapes"
     annotation (Dialog(group="Collisions"), choices(checkBox=true));
   WARN.Components.Collision.World collisionWorld(
+    enabled=collisions,
     nBodies=3,
-    nParts=3,
-    partBody={1, 2, 3},
-    partVertices={8, 8, 8},
-    partRadius={0.0, 0.0, 0.0},
-    vertices={
-      {-0.01, -0.01, -0.005},
-      {0.11, -0.01, -0.005},
-      {-0.01, 0.01, -0.005},
-      {0.11, 0.01, -0.005},
-      {-0.01, -0.01, 0.005},
-      {0.11, -0.01, 0.005},
-      {-0.01, 0.01, 0.005},
-      {0.11, 0.01, 0.005},
-      {-0.01, -0.01, -0.005},
-      {0.11, -0.01, -0.005},
-      {-0.01, 0.01, -0.005},
-      {0.11, 0.01, -0.005},
-      {-0.01, -0.01, 0.005},
-      {0.11, -0.01, 0.005},
-      {-0.01, 0.01, 0.005},
-      {0.11, 0.01, 0.005},
-      {-0.0005, -0.0025, -0.00025},
-      {0.0045, -0.0025, -0.00025},
-      {-0.0005, 0.0025, -0.00025},
-      {0.0045, 0.0025, -0.00025},
-      {-0.0005, -0.0025, 0.00025},
-      {0.0045, -0.0025, 0.00025},
-      {-0.0005, 0.0025, 0.00025},
-      {0.0045, 0.0025, 0.00025}},
-    checked={{0, 0, 1}, {0, 0, 1}, {1, 1, 0}},
+    bodyNames={"ASYM", "TRI", "NOMAT"},
     r_0={ASYM.frame_a.r_0, TRI.frame_a.r_0, NOMAT.frame_a.r_0},
     R_T={ASYM.frame_a.R.T, TRI.frame_a.R.T, NOMAT.frame_a.R.T},
     v_0={ASYM.v_0, TRI.v_0, NOMAT.v_0},
-    w_a={ASYM.w_a, TRI.w_a, NOMAT.w_a}) if collisions "Contact forces between the collision shapes"
+    w_a={ASYM.w_a, TRI.w_a, NOMAT.w_a}) "Contact forces between the collision shapes (read from Resources/Collision/contact.txt when collisions is true)"
     annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,0})));
-  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_ASYM if collisions "Contact force and torque on ASYM (resolved in world)"
-    annotation (Placement(transformation(extent={{10,-10},{-10,10}}, origin={680,50})));
-  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_TRI if collisions "Contact force and torque on TRI (resolved in world)"
-    annotation (Placement(transformation(extent={{10,-10},{-10,10}}, origin={1080,50})));
-  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_NOMAT if collisions "Contact force and torque on NOMAT (resolved in world)"
-    annotation (Placement(transformation(extent={{10,-10},{-10,10}}, origin={2040,50})));
+  WARN.Components.Collision.BodyForce collisionForce_ASYM(force=collisionWorld.force[1, :], torque=collisionWorld.torque[1, :]) if collisions "Contact force and torque on ASYM (from collisionWorld)"
+    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-60})));
+  WARN.Components.Collision.BodyForce collisionForce_TRI(force=collisionWorld.force[2, :], torque=collisionWorld.torque[2, :]) if collisions "Contact force and torque on TRI (from collisionWorld)"
+    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-120})));
+  WARN.Components.Collision.BodyForce collisionForce_NOMAT(force=collisionWorld.force[3, :], torque=collisionWorld.torque[3, :]) if collisions "Contact force and torque on NOMAT (from collisionWorld)"
+    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-180})));
 equation
-  connect(collisionForce_ASYM.frame_b, ASYM.frame_a)
-    annotation (Line(points={{670,50},{665,50},{665,5},{720,5},{720,0},{725,0}}, color={95,95,95}, thickness=0.5));
-  connect(collisionWorld.force[1, :], collisionForce_ASYM.force)
-    annotation (Line(points={{-63.5,6},{-60,6},{-60,5},{5,5},{5,55},{665,55},{665,70},{695,70},{695,56},{692,56}}, color={0,0,127}));
-  connect(collisionWorld.torque[1, :], collisionForce_ASYM.torque)
-    annotation (Line(points={{-63.5,-6},{-60,-6},{-60,-5},{0,-5},{0,45},{660,45},{660,35},{695,35},{695,44},{692,44}}, color={0,0,127}));
-  connect(collisionForce_TRI.frame_b, TRI.frame_a)
-    annotation (Line(points={{1070,50},{1065,50},{1065,5},{1120,5},{1120,0},{1125,0}}, color={95,95,95}, thickness=0.5));
-  connect(collisionWorld.force[2, :], collisionForce_TRI.force)
-    annotation (Line(points={{-63.5,6},{-60,6},{-60,55},{0,55},{0,60},{660,60},{660,75},{1095,75},{1095,56},{1092,56}}, color={0,0,127}));
-  connect(collisionWorld.torque[2, :], collisionForce_TRI.torque)
-    annotation (Line(points={{-63.5,-6},{-60,-6},{-60,0},{-5,0},{-5,50},{655,50},{655,30},{1095,30},{1095,44},{1092,44}}, color={0,0,127}));
-  connect(collisionForce_NOMAT.frame_b, NOMAT.frame_a)
-    annotation (Line(points={{2030,50},{2025,50},{2025,5},{2080,5},{2080,0},{2085,0}}, color={95,95,95}, thickness=0.5));
-  connect(collisionWorld.force[3, :], collisionForce_NOMAT.force)
-    annotation (Line(points={{-63.5,6},{-60,6},{-60,10},{-10,10},{-10,65},{655,65},{655,80},{2055,80},{2055,56},{2052,56}}, color={0,0,127}));
-  connect(collisionWorld.torque[3, :], collisionForce_NOMAT.torque)
-    annotation (Line(points={{-63.5,-6},{-60,-6},{-60,-10},{5,-10},{5,-15},{395,-15},{395,40},{650,40},{650,25},{2055,25},{2055,44},{2052,44}}, color={0,0,127}));
+  connect(collisionForce_ASYM.frame_b, ASYM.frame_a);
+  connect(collisionForce_TRI.frame_b, TRI.frame_a);
+  connect(collisionForce_NOMAT.frame_b, NOMAT.frame_a);
 public
 equation
   annotation (
     experiment(StopTime=4.0, Interval=0.01, Tolerance=1e-06),
-    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-140,-260},{2160,120}})),
+    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-140,-260},{2160,60}})),
     Icon(graphics={
       Rectangle(extent={{10,-70},{60,-30}}, lineColor={0,0,0}, fillColor={0,128,255}, fillPattern=FillPattern.HorizontalCylinder),
       Rectangle(extent={{60,-54},{80,-46}}, lineColor={0,0,0}, fillColor={160,160,164}, fillPattern=FillPattern.HorizontalCylinder),

@@ -679,9 +679,9 @@ fn reference_html(r: &Ref, kind: JointKind, start: f64) -> String {
 pub struct Additions<'a> {
     /// The live view: where it sends, and the bodies in package order.
     pub live: Option<(&'a live::LiveTarget, &'a [String])>,
-    /// The contact forces' declarations ([`collision::declarations`]); their package files are
-    /// written with them.
-    pub collision: Option<&'a str>,
+    /// The contact forces' declarations and shape file ([`collision::declarations`]); their
+    /// package files are written with them.
+    pub collision: Option<&'a collision::Contacts>,
     /// The Mechanics diagram, which Mechatronics places its components around.
     pub diagram: Option<&'a Sheet>,
     /// The experiment Mechanics runs (Mechatronics runs it too unless a motion or a reference
@@ -828,7 +828,7 @@ pub fn mechatronics(
         decl.push_str(live::declarations(pkg, target, bodies).trim_end_matches('\n'));
     }
     if let Some(c) = additions.collision {
-        decl.push_str(c.trim_end_matches('\n'));
+        decl.push_str(c.declarations.trim_end_matches('\n'));
     }
     let body = if motions.is_empty() {
         body
@@ -863,8 +863,9 @@ pub fn mechatronics(
     if live.is_some() {
         files.extend(live::files(pkg));
     }
-    if additions.collision.is_some() {
+    if let Some(c) = additions.collision {
         files.extend(collision::files(pkg));
+        files.push((format!("{pkg}/{}", collision::SHAPE_FILE), c.shape_file.clone()));
     }
     Ok(files)
 }

@@ -5,7 +5,9 @@
  * penetration by EPA, and a contact law (Flores et al. 2011, a Hunt-Crossley type normal force
  * K*delta^n*(1 + 8(1-e)/(5e)*ddelta/ddelta0) with damping from the coefficient of restitution e,
  * and regularised Coulomb friction). Used by <Pkg>.Components.Collision.World through Modelica's
- * external "C" interface: the world is an ExternalObject built once from flat arrays.
+ * external "C" interface: the world is an ExternalObject built once, at initialisation, from the
+ * shape file cad2mo writes beside it (<Pkg>/Resources/Collision/contact.txt, found by the tool
+ * through its modelica:// URI; see cad2mo_collision_load), or from flat arrays.
  *
  * Conventions: a part point p (frame_a coordinates) of a body is at r_0 + transpose(R_T)*p in
  * world; R_T is MultiBody's frame_a.R.T (world to frame_a), r_0 its origin. Angular velocities
@@ -23,6 +25,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <math.h>
+#include <stdio.h>
 #include "ModelicaUtilities.h"
 
 /* Most vertices and faces the EPA polytope may grow to. */
@@ -741,6 +744,7 @@ typedef struct {
     double exponent, vReg, vImpactMin;
     int touching;      /* touching part pairs at the last evaluation */
     c2mc_epa* epa;
+    unsigned char* checked; /* [nBodies * nBodies] 1: the pair's contacts are computed (set by load) */
 } c2mc_world;
 
 C2MC_API void cad2mo_collision_close(void* object) {
@@ -760,6 +764,7 @@ C2MC_API void cad2mo_collision_close(void* object) {
     free(w->chi);
     free(w->sphere);
     free(w->epa);
+    free(w->checked);
     free(w);
 }
 
@@ -822,7 +827,7 @@ C2MC_API void* cad2mo_collision_open(int nBodies, int nParts, const int* partBod
     w->radius = (double*)malloc(sizeof(double) * (size_t)(nParts > 0 ? nParts : 1));
     w->vertices = (double*)malloc(sizeof(double) * 3 * (size_t)(nVertices > 0 ? nVertices : 1));
     w->scratch = (double*)malloc(sizeof(double) * 3 * (size_t)(nVertices > 0 ? nVertices : 1));
-    w->impact = (double*)calloc((size_t)(nParts > 0 ? nParts * nParts : 1), sizeof(double));
+    w->impact = (double*)calloc(nParts > 0 ? (size_t)nParts * (size_t)nParts : 1, sizeof(double));
     w->stiffness = (double*)malloc(sizeof(double) * (size_t)nBodies);
     w->restitution = (double*)malloc(sizeof(double) * (size_t)nBodies);
     w->friction = (double*)malloc(sizeof(double) * (size_t)nBodies);
@@ -906,8 +911,9 @@ static void c2mc_apply(double* force, double* torque, const double* r_0, int i, 
 }
 
 /* Contact forces: for n bodies at r_0[n,3], R_T[n,3,3], v_0[n,3], w_a[n,3] (resolved in frame_a),
- * every pair (i, j) with checked[i,j] or checked[j,i] nonzero; force[n,3] and torque[n,3] on each
- * body about its frame_a origin, resolved in world. */
+ * every pair (i, j) with checked[i,j] or checked[j,i] nonzero (checked NULL: the pairs the world
+ * was loaded with); force[n,3] and torque[n,3] on each body about its frame_a origin, resolved in
+ * world. */
 C2MC_API void cad2mo_collision_eval(void* object, const double* r_0, const double* R_T, const double* v_0, const double* w_a,
                                  const int* checked, int n, double* force, double* torque) {
     c2mc_world* w = (c2mc_world*)object;
@@ -933,8 +939,11 @@ C2MC_API void cad2mo_collision_eval(void* object, const double* r_0, const doubl
             int a = w->partBody[p], b = w->partBody[q];
             c2mc_result r;
             double delta, rate, va[3], vb[3], dv[3], c[3], vt[3], vtn, Fn, K, mu, ne, fvec[3], damping;
-            double* imp = &w->impact[p * w->nParts + q];
-            if (a == b || !(checked[a * n + b] || checked[b * n + a])) {
+            double* imp = &w->impact[(size_t)p * (size_t)w->nParts + (size_t)q];
+            if (a == b) {
+                continue;
+            }
+            if (checked != NULL ? !(checked[a * n + b] || checked[b * n + a]) : (w->checked == NULL || !w->checked[a * n + b])) {
                 continue;
             }
             {
@@ -987,6 +996,318 @@ C2MC_API void cad2mo_collision_eval(void* object, const double* r_0, const doubl
         }
     }
     w->touching = touching;
+}
+
+/* ---- the shape file (Resources/Collision/contact.txt) ---- */
+
+/* Largest shape file read, and most bodies, parts and vertices it may declare: bounds on what a
+ * damaged or hostile file can make the simulation allocate. */
+#define C2MC_MAX_FILE_BYTES (1024L * 1024L * 1024L)
+#define C2MC_MAX_BODIES 100000
+#define C2MC_MAX_PARTS 1000000
+#define C2MC_MAX_VERTICES 20000000
+
+typedef struct {
+    const char* file; /* for messages */
+    char* text;
+    char* at;
+    int line;
+} c2mc_reader;
+
+/* Skips blanks, line ends (counted) and comments (# to the end of the line). */
+static void c2mc_skip(c2mc_reader* r) {
+    for (;;) {
+        char c = *r->at;
+        if (c == '\n') {
+            r->line++;
+            r->at++;
+        } else if (c == ' ' || c == '\t' || c == '\r') {
+            r->at++;
+        } else if (c == '#') {
+            while (*r->at != '\0' && *r->at != '\n') {
+                r->at++;
+            }
+        } else {
+            return;
+        }
+    }
+}
+
+/* The next word (up to a blank), copied into buf (cap bytes); 0 at the end of the file. */
+static int c2mc_word(c2mc_reader* r, char* buf, size_t cap) {
+    size_t n = 0;
+    c2mc_skip(r);
+    while (*r->at != '\0' && *r->at != ' ' && *r->at != '\t' && *r->at != '\r' && *r->at != '\n') {
+        if (n + 1 < cap) {
+            buf[n++] = *r->at;
+        }
+        r->at++;
+    }
+    buf[n] = '\0';
+    return n > 0;
+}
+
+static int c2mc_int(c2mc_reader* r, long lo, long hi, long* out) {
+    char* end;
+    long v;
+    c2mc_skip(r);
+    v = strtol(r->at, &end, 10);
+    if (end == r->at || v < lo || v > hi) {
+        return 0;
+    }
+    r->at = end;
+    *out = v;
+    return 1;
+}
+
+static int c2mc_real(c2mc_reader* r, double* out) {
+    char* end;
+    double v;
+    c2mc_skip(r);
+    v = strtod(r->at, &end);
+    if (end == r->at || !(v == v) || v > 1e300 || v < -1e300) {
+        return 0;
+    }
+    r->at = end;
+    *out = v;
+    return 1;
+}
+
+/* The whole file as a NUL-terminated string (NULL with a message in err). */
+static char* c2mc_read_file(const char* fileName, char* err, size_t cap) {
+    FILE* f = fopen(fileName, "rb");
+    char* text;
+    long size;
+    if (f == NULL) {
+        snprintf(err, cap, "cannot open the collision shape file \"%s\"", fileName);
+        return NULL;
+    }
+    if (fseek(f, 0, SEEK_END) != 0 || (size = ftell(f)) < 0 || fseek(f, 0, SEEK_SET) != 0) {
+        fclose(f);
+        snprintf(err, cap, "cannot read the collision shape file \"%s\"", fileName);
+        return NULL;
+    }
+    if (size > C2MC_MAX_FILE_BYTES) {
+        fclose(f);
+        snprintf(err, cap, "the collision shape file \"%s\" is larger than %ld bytes", fileName, C2MC_MAX_FILE_BYTES);
+        return NULL;
+    }
+    text = (char*)malloc((size_t)size + 1);
+    if (text == NULL) {
+        fclose(f);
+        snprintf(err, cap, "out of memory reading the collision shape file \"%s\"", fileName);
+        return NULL;
+    }
+    if (size > 0 && fread(text, 1, (size_t)size, f) != (size_t)size) {
+        fclose(f);
+        free(text);
+        snprintf(err, cap, "cannot read the collision shape file \"%s\"", fileName);
+        return NULL;
+    }
+    fclose(f);
+    text[size] = '\0';
+    if (strlen(text) != (size_t)size) {
+        free(text);
+        snprintf(err, cap, "the collision shape file \"%s\" is not text (it holds a NUL byte)", fileName);
+        return NULL;
+    }
+    return text;
+}
+
+/* Reads the shape file written by cad2mo:
+ *
+ *   cad2mo-collision 1
+ *   bodies <n>
+ *   body <k> <name>                    n lines, k = 1..n in turn
+ *   part <k> <radius> <nVertices>      then nVertices lines "x y z" (frame_a of body k, m)
+ *   allow <a> <b>                      a pair of bodies allowed to touch (not computed)
+ *   end
+ *
+ * and builds the world. The file's bodies must be bodyNames, in that order (a shape file of
+ * another model or of an older version of this one is refused, naming the first difference).
+ * mayTouch[nMay, 2] (1-based body indices) are further pairs allowed to touch. An empty fileName
+ * gives a world without parts (no contact forces). Errors name the file and line. */
+C2MC_API void* cad2mo_collision_load(const char* fileName, int nBodies, const char** bodyNames, int nMay, const int* mayTouch,
+                                   const double* stiffness, const double* restitution, const double* friction,
+                                   double exponent, double vReg, double vImpactMin) {
+    c2mc_reader r;
+    char word[1024], err[1400];
+    long version, n, k, nv, a, b;
+    long nParts = 0, nVertices = 0, capParts = 64, capVertices = 1024;
+    int *partBody = NULL, *partVertices = NULL, i, ok = 0;
+    double *partRadius = NULL, *vertices = NULL;
+    unsigned char* checked = NULL;
+    c2mc_world* w = NULL;
+    err[0] = '\0';
+    if (nBodies < 1 || nBodies > C2MC_MAX_BODIES || nMay < 0) {
+        ModelicaError("cad2mo collision: bad sizes");
+        return NULL;
+    }
+    checked = (unsigned char*)malloc((size_t)nBodies * (size_t)nBodies);
+    if (checked == NULL) {
+        ModelicaError("cad2mo collision: out of memory");
+        return NULL;
+    }
+    for (a = 0; a < nBodies; a++) {
+        for (b = 0; b < nBodies; b++) {
+            checked[a * nBodies + b] = (unsigned char)(a != b);
+        }
+    }
+    if (fileName == NULL || fileName[0] == '\0') {
+        w = (c2mc_world*)cad2mo_collision_open(nBodies, 0, NULL, NULL, NULL, 0, NULL, stiffness, restitution, friction, exponent, vReg, vImpactMin);
+        if (w != NULL) {
+            w->checked = checked;
+        } else {
+            free(checked);
+        }
+        return w;
+    }
+    r.file = fileName;
+    r.line = 1;
+    r.text = c2mc_read_file(fileName, err, sizeof err);
+    if (r.text == NULL) {
+        free(checked);
+        ModelicaError(err);
+        return NULL;
+    }
+    r.at = r.text;
+    partBody = (int*)malloc(sizeof(int) * (size_t)capParts);
+    partVertices = (int*)malloc(sizeof(int) * (size_t)capParts);
+    partRadius = (double*)malloc(sizeof(double) * (size_t)capParts);
+    vertices = (double*)malloc(sizeof(double) * 3 * (size_t)capVertices);
+    if (!partBody || !partVertices || !partRadius || !vertices) {
+        snprintf(err, sizeof err, "out of memory");
+        goto done;
+    }
+    if (!c2mc_word(&r, word, sizeof word) || strcmp(word, "cad2mo-collision") != 0 || !c2mc_int(&r, 1, 1, &version)) {
+        snprintf(err, sizeof err, "line %d: not a cad2mo collision shape file of version 1", r.line);
+        goto done;
+    }
+    if (!c2mc_word(&r, word, sizeof word) || strcmp(word, "bodies") != 0 || !c2mc_int(&r, 1, C2MC_MAX_BODIES, &n)) {
+        snprintf(err, sizeof err, "line %d: expected \"bodies <count>\"", r.line);
+        goto done;
+    }
+    if (n != nBodies) {
+        snprintf(err, sizeof err, "line %d: the file has %ld bodies, the model %d (a shape file of another model or version?)", r.line, n, nBodies);
+        goto done;
+    }
+    for (i = 0; i < nBodies; i++) {
+        if (!c2mc_word(&r, word, sizeof word) || strcmp(word, "body") != 0 || !c2mc_int(&r, i + 1, i + 1, &k) || !c2mc_word(&r, word, sizeof word)) {
+            snprintf(err, sizeof err, "line %d: expected \"body %d <name>\"", r.line, i + 1);
+            goto done;
+        }
+        if (bodyNames != NULL && strcmp(word, bodyNames[i]) != 0) {
+            snprintf(err, sizeof err, "line %d: body %d is %s in the file but %s in the model (a shape file of another model or version?)", r.line, i + 1, word,
+                     bodyNames[i]);
+            goto done;
+        }
+    }
+    for (;;) {
+        if (!c2mc_word(&r, word, sizeof word)) {
+            snprintf(err, sizeof err, "line %d: the file ends without \"end\" (truncated?)", r.line);
+            goto done;
+        }
+        if (strcmp(word, "end") == 0) {
+            break;
+        }
+        if (strcmp(word, "part") == 0) {
+            double radius;
+            if (!c2mc_int(&r, 1, nBodies, &k) || !c2mc_real(&r, &radius) || !(radius >= 0.0) || !c2mc_int(&r, 1, C2MC_MAX_VERTICES, &nv)) {
+                snprintf(err, sizeof err, "line %d: expected \"part <body 1..%d> <radius >= 0> <vertices >= 1>\"", r.line, nBodies);
+                goto done;
+            }
+            if (nParts >= C2MC_MAX_PARTS || nVertices + nv > C2MC_MAX_VERTICES) {
+                snprintf(err, sizeof err, "line %d: more than %d parts or %d vertices", r.line, C2MC_MAX_PARTS, C2MC_MAX_VERTICES);
+                goto done;
+            }
+            if (nParts == capParts) {
+                int *pb, *pv;
+                double* pr;
+                capParts *= 2;
+                pb = (int*)realloc(partBody, sizeof(int) * (size_t)capParts);
+                partBody = pb != NULL ? pb : partBody;
+                pv = (int*)realloc(partVertices, sizeof(int) * (size_t)capParts);
+                partVertices = pv != NULL ? pv : partVertices;
+                pr = (double*)realloc(partRadius, sizeof(double) * (size_t)capParts);
+                partRadius = pr != NULL ? pr : partRadius;
+                if (pb == NULL || pv == NULL || pr == NULL) {
+                    snprintf(err, sizeof err, "out of memory");
+                    goto done;
+                }
+            }
+            while (nVertices + nv > capVertices) {
+                double* pv;
+                capVertices *= 2;
+                pv = (double*)realloc(vertices, sizeof(double) * 3 * (size_t)capVertices);
+                if (pv == NULL) {
+                    snprintf(err, sizeof err, "out of memory");
+                    goto done;
+                }
+                vertices = pv;
+            }
+            partBody[nParts] = (int)k;
+            partVertices[nParts] = (int)nv;
+            partRadius[nParts] = radius;
+            for (k = 0; k < 3 * nv; k++) {
+                if (!c2mc_real(&r, &vertices[3 * nVertices + k])) {
+                    snprintf(err, sizeof err, "line %d: expected %ld finite vertex coordinates of part %ld", r.line, 3 * nv, nParts + 1);
+                    goto done;
+                }
+            }
+            nParts++;
+            nVertices += nv;
+        } else if (strcmp(word, "allow") == 0) {
+            if (!c2mc_int(&r, 1, nBodies, &a) || !c2mc_int(&r, 1, nBodies, &b)) {
+                snprintf(err, sizeof err, "line %d: expected \"allow <body> <body>\" (1..%d)", r.line, nBodies);
+                goto done;
+            }
+            checked[(a - 1) * nBodies + (b - 1)] = 0;
+            checked[(b - 1) * nBodies + (a - 1)] = 0;
+        } else {
+            snprintf(err, sizeof err, "line %d: unknown entry \"%s\" (part, allow or end)", r.line, word);
+            goto done;
+        }
+    }
+    for (i = 0; i < nMay; i++) {
+        a = mayTouch[2 * i];
+        b = mayTouch[2 * i + 1];
+        if (a < 1 || a > nBodies || b < 1 || b > nBodies) {
+            snprintf(err, sizeof err, "mayTouch[%d] names a body outside 1..%d", i + 1, nBodies);
+            goto done;
+        }
+        checked[(a - 1) * nBodies + (b - 1)] = 0;
+        checked[(b - 1) * nBodies + (a - 1)] = 0;
+    }
+    ok = 1;
+done:
+    free(r.text);
+    if (ok) {
+        w = (c2mc_world*)cad2mo_collision_open(nBodies, (int)nParts, partBody, partVertices, partRadius, (int)nVertices, vertices, stiffness, restitution,
+                                               friction, exponent, vReg, vImpactMin);
+    }
+    free(partBody);
+    free(partVertices);
+    free(partRadius);
+    free(vertices);
+    if (!ok) {
+        char msg[2800];
+        free(checked);
+        snprintf(msg, sizeof msg, "cad2mo collision: %s: %s", fileName, err);
+        ModelicaError(msg);
+        return NULL;
+    }
+    if (w != NULL) {
+        w->checked = checked;
+    } else {
+        free(checked);
+    }
+    return w;
+}
+
+/* Contact forces with the pairs the world was loaded with ([`cad2mo_collision_load`]). */
+C2MC_API void cad2mo_collision_forces(void* object, const double* r_0, const double* R_T, const double* v_0, const double* w_a, int n, double* force,
+                                    double* torque) {
+    cad2mo_collision_eval(object, r_0, R_T, v_0, w_a, NULL, n, force, torque);
 }
 
 /* The number of touching part pairs at the last evaluation. */

@@ -1,9 +1,12 @@
 //! Contact forces in the Modelica model: `<Pkg>/Components/Collision.mo` (the `World` model with
 //! the bodies' convex collision shapes in a C `ExternalObject`, GJK/EPA distances and the contact
-//! law), the C source in `<Pkg>/Resources/Include/cad2mo_collision.c`, and the declarations
-//! `Mechatronics` gets: `parameter Boolean collisions = false`, the conditional world fed with every
-//! shaped body's pose and velocities by modifiers, and one MSL `WorldForceAndTorque` per shaped
-//! body on its `frame_a`, connected to the world's outputs.
+//! law; `BodyForce`, which applies a body's share), the C source in
+//! `<Pkg>/Resources/Include/cad2mo_collision.c`, the shape file the C code reads at
+//! initialisation (`<Pkg>/Resources/Collision/contact.txt`: every convex part's vertices and the
+//! pairs allowed to touch, so that `Mechatronics.mo` holds names and parameters, not vertices), and
+//! the declarations `Mechatronics` gets: `parameter Boolean collisions = false`, the world fed with
+//! every shaped body's pose and velocities by modifiers, and one conditional `BodyForce` per shaped
+//! body beside it, on its `frame_a`.
 //!
 //! Plain data in, text out: no IO, no panics.
 
@@ -25,14 +28,12 @@ package Collision "Contact forces between the bodies' convex collision shapes"
   extends Modelica.Icons.Package;
 
   model World "Contact forces between the convex collision shapes of the bodies"
+    parameter Boolean enabled = true "Compute contact forces (false: none, the shape file is not read)";
     parameter Integer nBodies(min=1) "Number of bodies with collision shapes";
-    parameter Integer nParts(min=1) "Number of convex parts (a body has one or more)";
-    parameter Integer partBody[nParts](each min=1) "Body (1..nBodies) each part belongs to";
-    parameter Integer partVertices[nParts](each min=1) "Number of vertices of each part";
-    parameter Modelica.Units.SI.Length partRadius[nParts] "Radius each part's convex hull is grown by (spheres, capsules)";
-    parameter Integer nVertices = sum(partVertices) "Number of vertices of all parts";
-    parameter Modelica.Units.SI.Position vertices[nVertices, 3] "Vertices of the parts in turn, in their body's frame_a";
-    parameter Integer checked[nBodies, nBodies] "1: contacts between the two bodies are computed, 0: they may touch";
+    parameter String bodyNames[nBodies] "The bodies, in the order of the inputs (checked against the shape file)";
+    parameter String shapeFile = Modelica.Utilities.Files.loadResource("modelica://{pkg}/Resources/Collision/contact.txt") "The bodies' convex parts and the pairs allowed to touch, written by cad2mo"
+      annotation (Dialog(loadSelector(filter="cad2mo collision shapes (*.txt)", caption="Collision shape file")));
+    parameter Integer mayTouch[:, 2] = fill(0, 0, 2) "Further pairs of bodies (indices into bodyNames) allowed to touch";
     parameter Real stiffness(min=0) = 1e7 "Contact stiffness K of F = K*delta^exponent (N/m^exponent)"
       annotation (Dialog(group="Contact law"));
     parameter Real exponent(min=1) = 1.5 "Exponent of the penetration (1.5: Hertz)"
@@ -55,25 +56,46 @@ package Collision "Contact forces between the bodies' convex collision shapes"
     input Real R_T[nBodies, 3, 3] "Orientations of the bodies' frame_a (R.T: world to frame_a)";
     input Real v_0[nBodies, 3](each final unit="m/s") "Velocities of the frame_a origins, resolved in world";
     input Real w_a[nBodies, 3](each final unit="rad/s") "Angular velocities of the bodies, resolved in frame_a";
-    Modelica.Blocks.Interfaces.RealOutput force[nBodies, 3] "Contact force on each body at its frame_a origin, resolved in world (N)"
-      annotation (Placement(transformation(extent={{{{100,30}},{{120,50}}}})));
-    Modelica.Blocks.Interfaces.RealOutput torque[nBodies, 3] "Contact torque on each body about its frame_a origin, resolved in world (N.m)"
-      annotation (Placement(transformation(extent={{{{100,-50}},{{120,-30}}}})));
+    output Real force[nBodies, 3](each final unit="N") "Contact force on each body at its frame_a origin, resolved in world";
+    output Real torque[nBodies, 3](each final unit="N.m") "Contact torque on each body about its frame_a origin, resolved in world";
   protected
-    Internal.Shapes shapes = Internal.Shapes(nBodies, partBody, partVertices, partRadius, vertices, bodyStiffness, bodyRestitution, bodyFriction, exponent, vReg, vImpactMin) "The shapes and contact law in C";
+    Internal.Shapes shapes = Internal.Shapes(if enabled then shapeFile else "", bodyNames, mayTouch, bodyStiffness, bodyRestitution, bodyFriction, exponent, vReg, vImpactMin) "The shapes and contact law in C";
   equation
-    (force, torque) = Internal.contactForces(shapes, r_0, R_T, v_0, w_a, checked);
-    annotation (Documentation(info="<html>
-<p>The collision manager: one C object (<code>Resources/Include/cad2mo_collision.c</code>, plain C99, nothing to link) holds the convex parts of every body's collision shape (each the convex hull of its vertices in the body's <code>frame_a</code>, grown by a radius), and at every evaluation computes, for every pair of bodies with <code>checked</code> = 1, the distance or penetration of their parts (GJK and EPA, converged to rounding on polytopes) and the contact force at the middle of the witness points.</p>
+    if enabled then
+      (force, torque) = Internal.contactForces(shapes, r_0, R_T, v_0, w_a);
+    else
+      force = zeros(nBodies, 3);
+      torque = zeros(nBodies, 3);
+    end if;
+    annotation (Icon(graphics={{Rectangle(extent={{{{-100,100}},{{100,-100}}}}, lineColor={{0,0,0}}, fillColor={{255,255,255}}, fillPattern=FillPattern.Solid), Polygon(points={{{{-70,-20}},{{-20,-60}},{{20,-20}},{{-30,20}},{{-70,-20}}}}, lineColor={{0,0,0}}, fillColor={{175,175,175}}, fillPattern=FillPattern.Solid), Ellipse(extent={{{{0,60}},{{60,0}}}}, lineColor={{0,0,0}}, fillColor={{215,215,215}}, fillPattern=FillPattern.Solid), Text(extent={{{{-150,150}},{{150,110}}}}, textString="%name", textColor={{0,0,255}})}}),
+      Documentation(info="<html>
+<p>The collision manager: one C object (<code>Resources/Include/cad2mo_collision.c</code>, plain C99, nothing to link) holds the convex parts of every body's collision shape (each the convex hull of its vertices in the body's <code>frame_a</code>, grown by a radius), and at every evaluation computes, for every pair of bodies not allowed to touch, the distance or penetration of their parts (GJK and EPA, converged to rounding on polytopes) and the contact force at the middle of the witness points.</p>
+<p>The parts are read once, at initialisation, from <code>shapeFile</code> (by default <code>Resources/Collision/contact.txt</code> of this package, which cad2mo writes: the bodies in order, each part's radius and vertices, and the pairs allowed to touch, by default those joined by a joint or welded together and as edited in cad2mo's collision matrix); a file whose bodies differ from <code>bodyNames</code> is refused at initialisation with the first difference. <code>mayTouch</code> allows further pairs. With <code>enabled</code> = false the file is not read and the forces are zero.</p>
 <p>Contact law (per touching pair of parts), penetration &delta; along the contact normal n:</p>
 <ul>
 <li>normal force F<sub>n</sub> = K &delta;<sup>exponent</sup> (1 + &chi; d&delta;/dt / v<sub>0</sub>), never pulling (Hunt&ndash;Crossley form as Flores et al. 2011), v<sub>0</sub> the approach speed at contact onset (at least <code>vImpactMin</code>, remembered per pair of parts by the C object), &chi; computed from the coefficient of restitution so that an impact rebounds with exactly <code>restitution</code> for any mass, stiffness and speed (Flores's closed form 8(1-e)/(5e) approximates it);</li>
 <li>friction F<sub>t</sub> = -&mu; F<sub>n</sub> v<sub>t</sub> / sqrt(|v<sub>t</sub>|<sup>2</sup> + vReg<sup>2</sup>) against the slip velocity v<sub>t</sub> (regularised Coulomb).</li>
 </ul>
 <p>Materials per body: a pair uses the series stiffness (K<sub>1</sub><sup>-1/exponent</sup> + K<sub>2</sub><sup>-1/exponent</sup>)<sup>-exponent</sup>, the smaller restitution and the geometric mean of the friction coefficients. Stiff contacts make stiff equations: lower <code>stiffness</code> when the simulation crawls.</p>
-<p>Outputs: the force and torque on every body at its <code>frame_a</code> origin, resolved in world, for <code>Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque</code>.</p>
+<p>Outputs: the force and torque on every body at its <code>frame_a</code> origin, resolved in world; a <code>BodyForce</code> beside each body applies its row.</p>
 </html>"));
   end World;
+
+  model BodyForce "Applies one body's contact force and torque from the collision world"
+    input Real force[3](each final unit="N") "Contact force at the body's frame_a origin, resolved in world";
+    input Real torque[3](each final unit="N.m") "Contact torque about the body's frame_a origin, resolved in world";
+    Modelica.Mechanics.MultiBody.Interfaces.Frame_b frame_b "Connect to the body's frame_a"
+      annotation (Placement(transformation(extent={{{{84,-16}},{{116,16}}}})));
+  protected
+    Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque apply(force=force, torque=torque) "Force and torque resolved in world"
+      annotation (Placement(transformation(extent={{{{-10,-10}},{{10,10}}}})));
+  equation
+    connect(apply.frame_b, frame_b);
+    annotation (Icon(graphics={{Rectangle(extent={{{{-100,60}},{{100,-60}}}}, lineColor={{0,0,0}}, fillColor={{255,255,255}}, fillPattern=FillPattern.Solid), Polygon(points={{{{-80,-30}},{{-40,-50}},{{-20,-10}},{{-60,10}},{{-80,-30}}}}, lineColor={{0,0,0}}, fillColor={{175,175,175}}, fillPattern=FillPattern.Solid), Line(points={{{{-10,0}},{{80,0}}}}, color={{0,0,0}}, thickness=0.5), Polygon(points={{{{80,0}},{{60,10}},{{60,-10}},{{80,0}}}}, lineColor={{0,0,0}}, fillColor={{0,0,0}}, fillPattern=FillPattern.Solid), Text(extent={{{{-150,110}},{{150,70}}}}, textString="%name", textColor={{0,0,255}})}}),
+      Documentation(info="<html>
+<p>The contact force and torque the collision world computed for one body, applied at its <code>frame_a</code> (MSL <code>WorldForceAndTorque</code>). <code>Mechatronics</code> binds <code>force</code> and <code>torque</code> to the body's row of <code>collisionWorld</code> and places each <code>BodyForce</code> beside its body with one short frame connection, so the diagram has no wires from the world to the bodies.</p>
+</html>"));
+  end BodyForce;
 
   package Internal "The C collision code of World"
     extends Modelica.Icons.InternalPackage;
@@ -81,21 +103,19 @@ package Collision "Contact forces between the bodies' convex collision shapes"
     class Shapes "The convex collision shapes of the bodies and the contact law"
       extends ExternalObject;
 
-      function constructor "Builds the shapes"
+      function constructor "Reads the shapes from the shape file"
         extends Modelica.Icons.Function;
-        input Integer nBodies "Number of bodies";
-        input Integer partBody[:] "Body of each part (1-based)";
-        input Integer partVertices[size(partBody, 1)] "Vertices per part";
-        input Real partRadius[size(partBody, 1)] "Radius per part";
-        input Real vertices[:, 3] "All vertices, frame_a coordinates";
-        input Real stiffness[nBodies] "Stiffness per body";
-        input Real restitution[nBodies] "Restitution per body";
-        input Real friction[nBodies] "Friction coefficient per body";
+        input String shapeFile "The shape file (empty: no parts)";
+        input String bodyNames[:] "The bodies, in order";
+        input Integer mayTouch[:, 2] "Further pairs allowed to touch";
+        input Real stiffness[size(bodyNames, 1)] "Stiffness per body";
+        input Real restitution[size(bodyNames, 1)] "Restitution per body";
+        input Real friction[size(bodyNames, 1)] "Friction coefficient per body";
         input Real exponent "Exponent of the penetration";
         input Real vReg "Friction regularisation speed";
         input Real vImpactMin "Least approach speed";
         output Shapes shapes "The shapes";
-        external "C" shapes = cad2mo_collision_open(nBodies, size(partBody, 1), partBody, partVertices, partRadius, size(vertices, 1), vertices, stiffness, restitution, friction, exponent, vReg, vImpactMin)
+        external "C" shapes = cad2mo_collision_load(shapeFile, size(bodyNames, 1), bodyNames, size(mayTouch, 1), mayTouch, stiffness, restitution, friction, exponent, vReg, vImpactMin)
           annotation ({include});
       end constructor;
 
@@ -114,15 +134,14 @@ package Collision "Contact forces between the bodies' convex collision shapes"
       input Real R_T[size(r_0, 1), 3, 3] "Body orientations (world to frame_a)";
       input Real v_0[size(r_0, 1), 3] "Body origin velocities, world";
       input Real w_a[size(r_0, 1), 3] "Body angular velocities, frame_a";
-      input Integer checked[size(r_0, 1), size(r_0, 1)] "Pairs to check";
       output Real force[size(r_0, 1), 3] "Forces at the frame_a origins, world";
       output Real torque[size(r_0, 1), 3] "Torques about the frame_a origins, world";
-      external "C" cad2mo_collision_eval(shapes, r_0, R_T, v_0, w_a, checked, size(r_0, 1), force, torque)
+      external "C" cad2mo_collision_forces(shapes, r_0, R_T, v_0, w_a, size(r_0, 1), force, torque)
         annotation ({include});
     end contactForces;
   end Internal;
   annotation (Documentation(info="<html>
-<p>Collision handling as in Juh&aacute;sz and Schmucker's MultiBody collision extension: a collision manager (<code>World</code>) with the convex shapes that cad2mo made from the CAD meshes, and a <code>WorldForceAndTorque</code> per body applying its contact force. <code>Mechatronics</code> declares them when its parameter <code>collisions</code> is true.</p>
+<p>Collision handling as in Juh&aacute;sz and Schmucker's MultiBody collision extension: a collision manager (<code>World</code>) with the convex shapes that cad2mo made from the CAD meshes (read from <code>Resources/Collision/contact.txt</code> at initialisation), and a <code>BodyForce</code> per body applying its contact force. <code>Mechatronics</code> declares the forces when its parameter <code>collisions</code> is true.</p>
 </html>"));
 end Collision;
 "#
@@ -138,92 +157,102 @@ pub fn force_name(body: &str) -> String {
     format!("collisionForce_{body}")
 }
 
-/// What `Mechatronics` gets: `parameter Boolean collisions = false`, the conditional
-/// `collisionWorld` (a `Components.Collision.World` holding the shapes of the bodies that have
-/// some, in body order, fed by modifiers from each body's `frame_a`, `v_0` and `w_a`) and one
-/// conditional `WorldForceAndTorque` per such body. `bodies[i]` is a `Parts.Body` (or anything
-/// with `frame_a`, `v_0`, `w_a`) whose shape is `shapes[i]` (`None` or no parts: no shape);
-/// `checked(i, j)` (i < j, indices into `bodies`) says whether the pair's contacts are computed.
-///
-/// The text is declarations, then an `equation` section with the `connect`s (conditional
-/// components may only be named in `connect`), then `public`: it may be placed among
-/// `Mechatronics`' declarations. Without any shape, only a comment.
-pub fn declarations(pkg: &str, bodies: &[String], shapes: &[Option<Vec<ConvexPart>>], checked: &dyn Fn(usize, usize) -> bool) -> String {
+/// The file (in the package) the collision world reads its parts from.
+pub const SHAPE_FILE: &str = "Resources/Collision/contact.txt";
+
+/// What `Mechatronics` gets for contact forces: its declarations and the shape file.
+#[derive(Clone, Debug)]
+pub struct Contacts {
+    /// Declarations, then an `equation` section with the `connect`s, then `public`: placed among
+    /// `Mechatronics`' declarations.
+    pub declarations: String,
+    /// `<Pkg>/Resources/Collision/contact.txt` ([`SHAPE_FILE`]), read by the C code.
+    pub shape_file: Vec<u8>,
+}
+
+/// What `Mechatronics` gets: `parameter Boolean collisions = false`, `collisionWorld` (a
+/// `Components.Collision.World` for the bodies that have a shape, in body order, fed by modifiers
+/// from each body's `frame_a`, `v_0` and `w_a`, enabled by `collisions`), and one conditional
+/// `Components.Collision.BodyForce` per such body, bound to its row of the world's outputs and
+/// connected to the body's `frame_a` (no signal wires). The parts and the pairs allowed to touch go
+/// to the shape file, not into the text. `bodies[i]` is a `Parts.Body` (or anything with `frame_a`,
+/// `v_0`, `w_a`) whose shape is `shapes[i]` (`None` or no parts: no shape); `checked(i, j)`
+/// (i < j, indices into `bodies`) says whether the pair's contacts are computed. `None` when no
+/// body has a shape.
+pub fn declarations(pkg: &str, bodies: &[String], shapes: &[Option<Vec<ConvexPart>>], checked: &dyn Fn(usize, usize) -> bool) -> Option<Contacts> {
     let shaped: Vec<usize> = (0..bodies.len())
         .filter(|&i| shapes.get(i).and_then(|s| s.as_ref()).is_some_and(|p| p.iter().any(|q| !q.vertices.is_empty())))
         .collect();
-    let mut s = String::new();
     if shaped.is_empty() {
-        let _ = writeln!(s, "\n  // Collisions: no body has a collision shape");
-        return s;
+        return None;
     }
-    let mut part_body = Vec::new();
-    let mut part_vertices = Vec::new();
-    let mut part_radius = Vec::new();
-    let mut vertices = Vec::new();
+    let n = shaped.len();
+    // The shape file: bodies, parts (radius, vertices), allowed pairs.
+    let mut f = String::new();
+    let _ = writeln!(f, "cad2mo-collision 1");
+    let _ = writeln!(f, "# The convex parts of the bodies' collision shapes for {pkg}.Components.Collision.World (written by cad2mo):");
+    let _ = writeln!(f, "# bodies in the order of the world's inputs; \"part <body> <radius m> <vertices>\" then the vertices in the body's frame_a (m);");
+    let _ = writeln!(f, "# \"allow <body> <body>\": a pair allowed to touch (no contact force); every other pair is checked.");
+    let _ = writeln!(f, "bodies {n}");
+    for (k, &i) in shaped.iter().enumerate() {
+        let _ = writeln!(f, "body {} {}", k + 1, bodies[i]);
+    }
+    let mut parts = 0usize;
     for (k, &i) in shaped.iter().enumerate() {
         for p in shapes[i].iter().flatten().filter(|p| !p.vertices.is_empty()) {
-            part_body.push((k + 1).to_string());
-            part_vertices.push(p.vertices.len().to_string());
-            part_radius.push(num(p.radius.max(0.0)));
+            parts += 1;
+            let _ = writeln!(f, "part {} {} {}", k + 1, num(p.radius.max(0.0)), p.vertices.len());
             for v in &p.vertices {
-                vertices.push(format!("{{{}, {}, {}}}", num(v[0]), num(v[1]), num(v[2])));
+                let _ = writeln!(f, "{} {} {}", num(v[0]), num(v[1]), num(v[2]));
             }
         }
     }
-    let n = shaped.len();
-    let rows: Vec<String> = (0..n)
-        .map(|a| {
-            let row: Vec<&str> = (0..n)
-                .map(|b| {
-                    let (i, j) = (shaped[a.min(b)], shaped[a.max(b)]);
-                    if a != b && checked(i, j) {
-                        "1"
-                    } else {
-                        "0"
-                    }
-                })
-                .collect();
-            format!("{{{}}}", row.join(", "))
-        })
-        .collect();
+    let mut allowed = 0usize;
+    for a in 0..n {
+        for b in a + 1..n {
+            if !checked(shaped[a], shaped[b]) {
+                allowed += 1;
+                let _ = writeln!(f, "allow {} {}", a + 1, b + 1);
+            }
+        }
+    }
+    let _ = writeln!(f, "end");
     let list = |f: &dyn Fn(&str) -> String| shaped.iter().map(|&i| f(&bodies[i])).collect::<Vec<_>>().join(", ");
-    let _ = writeln!(s, "\n  // Collisions: contact forces between the bodies' collision shapes (see Components.Collision)");
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "\n  // Collisions: contact forces between the bodies' collision shapes ({n} bodies, {parts} convex parts, {} of {} pairs checked; see Components.Collision and {SHAPE_FILE})",
+        n * (n - 1) / 2 - allowed,
+        n * (n - 1) / 2
+    );
     let _ = writeln!(
         s,
         "  parameter Boolean collisions = false \"Apply contact forces between the bodies' collision shapes\"\n    annotation (Dialog(group=\"Collisions\"), choices(checkBox=true));"
     );
     let _ = writeln!(
         s,
-        "  {pkg}.Components.Collision.World collisionWorld(\n    nBodies={n},\n    nParts={},\n    partBody={{{}}},\n    partVertices={{{}}},\n    partRadius={{{}}},\n    vertices={{\n      {}}},\n    checked={{{}}},\n    r_0={{{}}},\n    R_T={{{}}},\n    v_0={{{}}},\n    w_a={{{}}}) if collisions \"Contact forces between the collision shapes\"\n    {PLACEHOLDER};",
-        part_body.len(),
-        part_body.join(", "),
-        part_vertices.join(", "),
-        part_radius.join(", "),
-        vertices.join(",\n      "),
-        rows.join(", "),
+        "  {pkg}.Components.Collision.World collisionWorld(\n    enabled=collisions,\n    nBodies={n},\n    bodyNames={{{}}},\n    r_0={{{}}},\n    R_T={{{}}},\n    v_0={{{}}},\n    w_a={{{}}}) \"Contact forces between the collision shapes (read from {SHAPE_FILE} when collisions is true)\"\n    {PLACEHOLDER};",
+        list(&|b| format!("\"{b}\"")),
         list(&|b| format!("{b}.frame_a.r_0")),
         list(&|b| format!("{b}.frame_a.R.T")),
         list(&|b| format!("{b}.v_0")),
         list(&|b| format!("{b}.w_a")),
     );
-    for &i in &shaped {
+    for (k, &i) in shaped.iter().enumerate() {
         let _ = writeln!(
             s,
-            "  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque {} if collisions \"Contact force and torque on {} (resolved in world)\"\n    {PLACEHOLDER};",
+            "  {pkg}.Components.Collision.BodyForce {}(force=collisionWorld.force[{k1}, :], torque=collisionWorld.torque[{k1}, :]) if collisions \"Contact force and torque on {} (from collisionWorld)\"\n    {PLACEHOLDER};",
             force_name(&bodies[i]),
-            bodies[i]
+            bodies[i],
+            k1 = k + 1
         );
     }
     let _ = writeln!(s, "equation");
-    for (k, &i) in shaped.iter().enumerate() {
-        let f = force_name(&bodies[i]);
-        let _ = writeln!(s, "  connect({f}.frame_b, {}.frame_a);", bodies[i]);
-        let _ = writeln!(s, "  connect(collisionWorld.force[{}, :], {f}.force);", k + 1);
-        let _ = writeln!(s, "  connect(collisionWorld.torque[{}, :], {f}.torque);", k + 1);
+    for &i in &shaped {
+        let _ = writeln!(s, "  connect({}.frame_b, {}.frame_a);", force_name(&bodies[i]), bodies[i]);
     }
     let _ = writeln!(s, "public");
-    s
+    Some(Contacts { declarations: s, shape_file: f.into_bytes() })
 }
 
 #[cfg(test)]
@@ -242,16 +271,25 @@ mod tests {
     fn collision_declarations_skip_bodies_without_shapes() {
         let bodies = vec!["B1".to_string(), "B2".to_string(), "B3".to_string()];
         let shapes = vec![Some(vec![cube(0.0)]), None, Some(vec![cube(0.0), cube(0.01)])];
-        let d = declarations("P", &bodies, &shapes, &|_, _| true);
+        let c = declarations("P", &bodies, &shapes, &|_, _| true).expect("contacts");
+        let d = &c.declarations;
         assert!(d.contains("nBodies=2,"), "{d}");
-        assert!(d.contains("nParts=3,"), "{d}");
-        assert!(d.contains("partBody={1, 2, 2}"), "{d}");
-        assert!(d.contains("checked={{0, 1}, {1, 0}}"), "{d}");
+        assert!(d.contains("bodyNames={\"B1\", \"B3\"}"), "{d}");
         assert!(d.contains("v_0={B1.v_0, B3.v_0}"), "{d}");
         assert!(!d.contains("B2"), "{d}");
-        assert!(d.contains("connect(collisionWorld.force[2, :], collisionForce_B3.force);"), "{d}");
-        let none = declarations("P", &bodies, &[None, None, None], &|_, _| true);
-        assert!(!none.contains("collisionWorld"));
+        assert!(d.contains("collisionForce_B3(force=collisionWorld.force[2, :], torque=collisionWorld.torque[2, :]) if collisions"), "{d}");
+        assert!(d.contains("connect(collisionForce_B3.frame_b, B3.frame_a);"), "{d}");
+        assert!(!d.contains("0.1, 0.1"), "no vertices in the text: {d}");
+        let f = String::from_utf8(c.shape_file).expect("utf-8");
+        assert!(f.starts_with("cad2mo-collision 1\n"), "{f}");
+        assert!(f.contains("\nbodies 2\nbody 1 B1\nbody 2 B3\n"), "{f}");
+        assert_eq!(f.matches("\npart ").count(), 3, "{f}");
+        assert!(f.contains("\npart 2 0.01 8\n"), "{f}");
+        assert!(!f.contains("\nallow "), "every pair checked: {f}");
+        assert!(f.ends_with("\nend\n"), "{f}");
+        let allowed = declarations("P", &bodies, &shapes, &|_, _| false).expect("contacts");
+        assert!(String::from_utf8_lossy(&allowed.shape_file).contains("\nallow 1 2\n"));
+        assert!(declarations("P", &bodies, &[None, None, None], &|_, _| true).is_none());
     }
 
     #[test]
