@@ -1,4 +1,5 @@
-//! End-to-end conversion benchmarks: a generated 2,000-body tree (no meshes), the largest XML
+//! End-to-end conversion benchmarks: a generated 2,000-body tree (no meshes, and with 37 MB of
+//! ASCII STL), the largest XML
 //! fixture, and the largest fixture bundle with STL meshes (DXF + STL written); and the service's
 //! whole package build (conversion with a drive, zip) of that bundle.
 
@@ -26,6 +27,18 @@ fn bench(c: &mut Criterion) {
     assert_eq!(out.report.bodies.len(), 2001);
     g.throughput(Throughput::Bytes(xml.len() as u64));
     g.bench_function("tree_2000_bodies", |b| b.iter(|| pipeline::convert(&bundle, &Options::default()).expect("converts")));
+
+    // The same tree with an ASCII STL per body (37 MB): meshes read, collision shapes made (on
+    // every core), interferences checked, both diagrams laid out, DXF and STL shapes written.
+    let files = gen::tree_with_stl(2000);
+    let stl_bytes: usize = files.iter().filter(|(p, _)| p.ends_with(".stl")).map(|(_, b)| b.len()).sum();
+    let bundle = Bundle::from_files("gen", files).expect("bundle");
+    let out = pipeline::convert(&bundle, &Options::default()).expect("generated tree with meshes converts");
+    assert_eq!(out.report.bodies.len(), 2001);
+    g.sample_size(10);
+    g.throughput(Throughput::Bytes(stl_bytes as u64));
+    g.bench_function("tree_2000_bodies_with_37MB_of_stl", |b| b.iter(|| pipeline::convert(&bundle, &Options::default()).expect("converts")));
+    g.sample_size(20);
 
     if let Some(fx) = fixtures() {
         let xml = fx.join("xml/icub-tech-iit+ergocub-software/1fe125d3/SIM_ERGOCUB_1-0.xml");
