@@ -77,7 +77,8 @@ pub enum Class {
     /// `Components.Revolute`/`Prismatic`: frames as [`Class::TwoPort`] and the `drive` flange at
     /// {-60, 100}.
     Joint,
-    /// `Components.Drives.*Drive`: its `flange` on the right, {110, 0}.
+    /// `Components.Drives.*Drive`: its `flange` on the right, {100, 0} (the centre of the
+    /// connector's extent {{90, -10}, {110, 10}}, as for MSL's own connectors).
     Drive,
     /// MSL `Forces.WorldForceAndTorque`: `frame_b` right, inputs `force` {-120, 60} and
     /// `torque` {-120, -60}.
@@ -96,7 +97,7 @@ pub fn port(class: Class, name: &str) -> Option<(f64, f64)> {
         (Class::TwoPort | Class::Joint, "frame_a" | "flange_a" | "flangeR") => (-100.0, 0.0),
         (Class::TwoPort | Class::Joint, "frame_b" | "flange_b" | "flangeT") => (100.0, 0.0),
         (Class::Joint, "drive") => (-60.0, 100.0),
-        (Class::Drive, "flange") => (110.0, 0.0),
+        (Class::Drive, "flange") => (100.0, 0.0),
         (Class::WorldForce, "frame_b") => (100.0, 0.0),
         (Class::WorldForce, "force") => (-120.0, 60.0),
         (Class::WorldForce, "torque") => (-120.0, -60.0),
