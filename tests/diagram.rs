@@ -160,8 +160,9 @@ fn urdf_tree(n: usize) -> Vec<(String, Vec<u8>)> {
 
 /// A Mechatronics text as the writers emit it (placeholder placements, bare connects) over
 /// `sheet`: a drive above every joint, the collision world (`inner`, no connections) and a
-/// contact force on every body.
-fn mechatronics_text(pkg: &str, sheet: &Sheet, bodies: &[String]) -> String {
+/// contact force on every body; or, `wired`, the earlier writer's text: a `WorldForceAndTorque`
+/// per body fed by two signal wires from the collision world (long wires across the sheet).
+fn mechatronics_text(pkg: &str, sheet: &Sheet, bodies: &[String], wired: bool) -> String {
     use std::fmt::Write as _;
     let ph = extend::PLACEHOLDER;
     let joints: Vec<&String> = sheet.placed.iter().filter(|(_, p)| p.class == Class::Joint).map(|(n, _)| n).collect();
@@ -169,16 +170,25 @@ fn mechatronics_text(pkg: &str, sheet: &Sheet, bodies: &[String]) -> String {
     for j in &joints {
         let _ = write!(t, "  {pkg}.Components.Drives.JointDrive drive_{j}(\n    useTable=false)\n    \"Drive of {j}\"\n    {ph};\n");
     }
-    let _ = write!(t, "  inner {pkg}.Components.Collision.World collisionWorld(nBodies={}) if collisions \"Contact forces between the collision shapes\"\n    {ph};\n", bodies.len());
+    let inner = if wired { "" } else { "inner " };
+    let _ = write!(t, "  {inner}{pkg}.Components.Collision.World collisionWorld(nBodies={}) if collisions \"Contact forces between the collision shapes\"\n    {ph};\n", bodies.len());
     for (k, b) in bodies.iter().enumerate() {
-        let _ = write!(t, "  {pkg}.Components.Collision.BodyForce collisionForce_{b}(index={}) if collisions \"Contact force and torque on {b}\"\n    {ph};\n", k + 1);
+        if wired {
+            let _ = write!(t, "  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_{b} if collisions \"Contact force and torque on {b}\"\n    {ph};\n");
+        } else {
+            let _ = write!(t, "  {pkg}.Components.Collision.BodyForce collisionForce_{b}(index={}) if collisions \"Contact force and torque on {b}\"\n    {ph};\n", k + 1);
+        }
     }
     t.push_str("equation\n");
     for j in &joints {
         let _ = writeln!(t, "  connect(drive_{j}.flange, {j}.drive);");
     }
-    for b in bodies {
+    for (k, b) in bodies.iter().enumerate() {
         let _ = writeln!(t, "  connect(collisionForce_{b}.frame_b, {b}.frame_a);");
+        if wired {
+            let _ = writeln!(t, "  connect(collisionWorld.force[{}, :], collisionForce_{b}.force);", k + 1);
+            let _ = writeln!(t, "  connect(collisionWorld.torque[{}, :], collisionForce_{b}.torque);", k + 1);
+        }
     }
     t.push_str("end Mechatronics;\n");
     t
@@ -186,8 +196,9 @@ fn mechatronics_text(pkg: &str, sheet: &Sheet, bodies: &[String]) -> String {
 
 /// Routing work is linear in the wires (issue 23: A* over the whole sheet made a 2,000-body
 /// assembly take more than 20 minutes). The Mechanics and Mechatronics diagrams of generated
-/// trees of 250 to 2,000 links (a shape per body, a drive per joint, a contact force per body)
-/// are laid out; the work (A* expansions and fallback segment checks, `Sheet::work`, not time)
+/// trees of 250 to 2,000 links (a shape per body, a drive per joint, a contact force per body,
+/// and once more with the earlier writer's contact forces wired from the collision world) are
+/// laid out; the work (A* expansions and fallback segment checks, `Sheet::work`, not time)
 /// per wire stays bounded, and the diagrams pass the layout check.
 #[test]
 fn routing_work_grows_linearly_with_the_diagram() {
@@ -200,18 +211,28 @@ fn routing_work_grows_linearly_with_the_diagram() {
         let sheet = &pkg.layout.diagram;
         let bodies = pkg.layout.names.as_ref().map(|x| x.bodies.clone()).unwrap_or_default();
         assert_eq!(bodies.len(), n);
-        let text = mechatronics_text("Gen", sheet, &bodies);
-        let (mt, _, mt_work) = extend::lay_out_counted(&text, sheet);
-        let wires = sheet.wires.len() + mt.matches("  connect(").count();
-        let work = sheet.work() + mt_work;
-        println!("{n} bodies: {} components, {wires} wires, work {} (Mechanics {}, Mechatronics {mt_work}), {:.1} per wire", sheet.placed.len(), work, sheet.work(), work as f64 / wires as f64);
-        if n <= 500 {
-            let mut files = pkg.files.clone();
-            files.extend(mechatronics::components("Gen"));
-            files.push(("Gen/Mechatronics.mo".to_string(), mt.into_bytes()));
-            let errors = check_files(&format!("tree of {n}"), &files);
-            assert!(errors.is_empty(), "{} layout errors:\n{}", errors.len(), errors.iter().take(20).cloned().collect::<Vec<_>>().join("\n"));
+        let mut wires = sheet.wires.len();
+        let mut work = sheet.work();
+        let mut parts = vec![format!("Mechanics {}", sheet.work())];
+        for wired in [false, true] {
+            let text = mechatronics_text("Gen", sheet, &bodies, wired);
+            let (mt, _, mt_work) = extend::lay_out_counted(&text, sheet);
+            wires += mt.matches("  connect(").count();
+            work += mt_work;
+            parts.push(format!("Mechatronics{} {mt_work}", if wired { " (wired contact forces)" } else { "" }));
+            if n <= 500 {
+                let mut files = pkg.files.clone();
+                files.extend(mechatronics::components("Gen"));
+                files.extend(mechatronics::collision::files("Gen"));
+                files.push(("Gen/Mechatronics.mo".to_string(), mt.into_bytes()));
+                let errors = check_files(&format!("tree of {n}{}", if wired { ", wired" } else { "" }), &files);
+                assert!(errors.is_empty(), "{} layout errors:\n{}", errors.len(), errors.iter().take(20).cloned().collect::<Vec<_>>().join("\n"));
+            }
         }
+        println!("{n} bodies: {} components, {wires} wires, work {work} ({}), {:.1} per wire", sheet.placed.len(), parts.join(", "), work as f64 / wires as f64);
+        // Bounded per wire: the sheet's search budget, plus a fallback's checks.
+        let bound = wires as u64 * (modelica::diagram::SHEET_EXPANSIONS_PER_WIRE + 200) + 20_000;
+        assert!(work <= bound, "{n} bodies: work {work} over {bound} for {wires} wires");
         rows.push((n, wires, work));
     }
     // Linear: four times the bodies, at most 1.3 times four times the work (n log n or worse
@@ -219,9 +240,4 @@ fn routing_work_grows_linearly_with_the_diagram() {
     let at = |n: usize| rows.iter().find(|r| r.0 == n).map(|r| r.2 as f64).unwrap_or(f64::NAN);
     let ratio = at(2000) / at(500);
     assert!(ratio <= 4.0 * 1.3, "work grew {ratio:.2} times from 500 to 2,000 bodies: {rows:?}");
-    // And bounded per wire: the sheet's search budget, plus a fallback's checks.
-    for &(n, wires, work) in &rows {
-        let bound = wires as u64 * (modelica::diagram::SHEET_EXPANSIONS_PER_WIRE + 200) + 20_000;
-        assert!(work <= bound, "{n} bodies: work {work} over {bound} for {wires} wires");
-    }
 }
