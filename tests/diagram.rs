@@ -7,10 +7,12 @@
 use std::collections::BTreeMap;
 use std::path::Path;
 
-use cad2mo::pipeline::back::modelica::diagram::svg;
+use cad2mo::pipeline::back::modelica::diagram::{extend, svg, Class, Sheet};
+use cad2mo::pipeline::back::modelica::{self as modelica, mechatronics};
+use cad2mo::pipeline::front::bundle::Bundle;
 use cad2mo::pipeline::{self, Options, Output};
 use cad2mo_tests::common::{convert_path, fixture_bundle, fixtures_dir, sorted_dirs, workspace_root};
-use cad2mo_tests::diagram::{check_package, undescribed_classes};
+use cad2mo_tests::diagram::{check_files, check_package, undescribed_classes};
 
 type Pt = (f64, f64);
 
@@ -136,4 +138,106 @@ fn copy_dir(from: &Path, to: &Path) {
             std::fs::copy(&p, to.join(e.file_name())).expect("copy");
         }
     }
+}
+
+/// A URDF tree of `n` links, each hung from link `(i - 1) / 3` by a revolute joint, with a box
+/// visual (a shape in the diagram), as bundle files.
+fn urdf_tree(n: usize) -> Vec<(String, Vec<u8>)> {
+    use std::fmt::Write as _;
+    let mut u = String::from("<?xml version=\"1.0\"?>\n<robot name=\"gen\">\n  <link name=\"world\"/>\n");
+    for i in 0..n {
+        let parent = if i == 0 { "world".to_string() } else { format!("link_{}", (i - 1) / 3) };
+        let axis = ["0 0 1", "0 1 0", "1 0 0"][i % 3];
+        let _ = write!(
+            u,
+            "  <link name=\"link_{i}\">\n    <inertial>\n      <mass value=\"1\"/>\n      <inertia ixx=\"0.002\" ixy=\"0\" ixz=\"0\" iyy=\"0.002\" iyz=\"0\" izz=\"0.001\"/>\n    </inertial>\n    <visual>\n      <origin xyz=\"0 0 0.05\"/>\n      <geometry><box size=\"0.04 0.04 0.1\"/></geometry>\n    </visual>\n  </link>\n  <joint name=\"joint_{i}\" type=\"revolute\">\n    <parent link=\"{parent}\"/>\n    <child link=\"link_{i}\"/>\n    <origin xyz=\"0.01 {} 0.12\"/>\n    <axis xyz=\"{axis}\"/>\n    <limit lower=\"-2\" upper=\"2\" effort=\"50\" velocity=\"3\"/>\n  </joint>\n",
+            0.15 * ((i % 3) as f64 - 1.0)
+        );
+    }
+    u.push_str("</robot>\n");
+    vec![("gen/gen.urdf".to_string(), u.into_bytes())]
+}
+
+/// A Mechatronics text as the writers emit it (placeholder placements, bare connects) over
+/// `sheet`: a drive above every joint, the collision world (`inner`, no connections) and a
+/// contact force on every body; or, `wired`, the earlier writer's text: a `WorldForceAndTorque`
+/// per body fed by two signal wires from the collision world (long wires across the sheet).
+fn mechatronics_text(pkg: &str, sheet: &Sheet, bodies: &[String], wired: bool) -> String {
+    use std::fmt::Write as _;
+    let ph = extend::PLACEHOLDER;
+    let joints: Vec<&String> = sheet.placed.iter().filter(|(_, p)| p.class == Class::Joint).map(|(n, _)| n).collect();
+    let mut t = format!("within {pkg};\nmodel Mechatronics \"Generated\"\n  extends {pkg}.Mechanics;\n  parameter Boolean collisions = false \"Contacts\";\n");
+    for j in &joints {
+        let _ = write!(t, "  {pkg}.Components.Drives.JointDrive drive_{j}(\n    useTable=false)\n    \"Drive of {j}\"\n    {ph};\n");
+    }
+    let inner = if wired { "" } else { "inner " };
+    let _ = write!(t, "  {inner}{pkg}.Components.Collision.World collisionWorld(nBodies={}) if collisions \"Contact forces between the collision shapes\"\n    {ph};\n", bodies.len());
+    for (k, b) in bodies.iter().enumerate() {
+        if wired {
+            let _ = write!(t, "  Modelica.Mechanics.MultiBody.Forces.WorldForceAndTorque collisionForce_{b} if collisions \"Contact force and torque on {b}\"\n    {ph};\n");
+        } else {
+            let _ = write!(t, "  {pkg}.Components.Collision.BodyForce collisionForce_{b}(index={}) if collisions \"Contact force and torque on {b}\"\n    {ph};\n", k + 1);
+        }
+    }
+    t.push_str("equation\n");
+    for j in &joints {
+        let _ = writeln!(t, "  connect(drive_{j}.flange, {j}.drive);");
+    }
+    for (k, b) in bodies.iter().enumerate() {
+        let _ = writeln!(t, "  connect(collisionForce_{b}.frame_b, {b}.frame_a);");
+        if wired {
+            let _ = writeln!(t, "  connect(collisionWorld.force[{}, :], collisionForce_{b}.force);", k + 1);
+            let _ = writeln!(t, "  connect(collisionWorld.torque[{}, :], collisionForce_{b}.torque);", k + 1);
+        }
+    }
+    t.push_str("end Mechatronics;\n");
+    t
+}
+
+/// Routing work is linear in the wires (issue 23: A* over the whole sheet made a 2,000-body
+/// assembly take more than 20 minutes). The Mechanics and Mechatronics diagrams of generated
+/// trees of 250 to 2,000 links (a shape per body, a drive per joint, a contact force per body,
+/// and once more with the earlier writer's contact forces wired from the collision world) are
+/// laid out; the work (A* expansions and fallback segment checks, `Sheet::work`, not time)
+/// per wire stays bounded, and the diagrams pass the layout check.
+#[test]
+fn routing_work_grows_linearly_with_the_diagram() {
+    let mut rows = Vec::new();
+    for n in [250usize, 500, 1000, 2000] {
+        let bundle = Bundle::from_files("gen", urdf_tree(n)).expect("bundle");
+        let a = pipeline::analyse(&bundle, &options()).expect("the generated tree analyses");
+        let opts = modelica::Options { package_name: "Gen".to_string(), gravity: [0.0, 0.0, -9.81], converter_version: "test".to_string(), name_hints: Default::default() };
+        let pkg = modelica::write(&a.model, &a.validated, &opts);
+        let sheet = &pkg.layout.diagram;
+        let bodies = pkg.layout.names.as_ref().map(|x| x.bodies.clone()).unwrap_or_default();
+        assert_eq!(bodies.len(), n);
+        let mut wires = sheet.wires.len();
+        let mut work = sheet.work();
+        let mut parts = vec![format!("Mechanics {}", sheet.work())];
+        for wired in [false, true] {
+            let text = mechatronics_text("Gen", sheet, &bodies, wired);
+            let (mt, _, mt_work) = extend::lay_out_counted(&text, sheet);
+            wires += mt.matches("  connect(").count();
+            work += mt_work;
+            parts.push(format!("Mechatronics{} {mt_work}", if wired { " (wired contact forces)" } else { "" }));
+            if n <= 500 {
+                let mut files = pkg.files.clone();
+                files.extend(mechatronics::components("Gen"));
+                files.extend(mechatronics::collision::files("Gen"));
+                files.push(("Gen/Mechatronics.mo".to_string(), mt.into_bytes()));
+                let errors = check_files(&format!("tree of {n}{}", if wired { ", wired" } else { "" }), &files);
+                assert!(errors.is_empty(), "{} layout errors:\n{}", errors.len(), errors.iter().take(20).cloned().collect::<Vec<_>>().join("\n"));
+            }
+        }
+        println!("{n} bodies: {} components, {wires} wires, work {work} ({}), {:.1} per wire", sheet.placed.len(), parts.join(", "), work as f64 / wires as f64);
+        // Bounded per wire: the sheet's search budget, plus a fallback's checks.
+        let bound = wires as u64 * (modelica::diagram::SHEET_EXPANSIONS_PER_WIRE + 200) + 20_000;
+        assert!(work <= bound, "{n} bodies: work {work} over {bound} for {wires} wires");
+        rows.push((n, wires, work));
+    }
+    // Linear: four times the bodies, at most 1.3 times four times the work (n log n or worse
+    // fails: the old search grew by orders of magnitude).
+    let at = |n: usize| rows.iter().find(|r| r.0 == n).map(|r| r.2 as f64).unwrap_or(f64::NAN);
+    let ratio = at(2000) / at(500);
+    assert!(ratio <= 4.0 * 1.3, "work grew {ratio:.2} times from 500 to 2,000 bodies: {rows:?}");
 }

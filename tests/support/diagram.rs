@@ -33,7 +33,7 @@ fn msl_port(class: &str, connector: &str) -> Option<Pt> {
 
 /// Our own classes' connectors: every component with a placement in the package's class files
 /// (nested classes too), inherited through `extends` within the package.
-fn own_ports(out: &Output) -> BTreeMap<(String, String), Pt> {
+fn own_ports(files: &[(String, Vec<u8>)]) -> BTreeMap<(String, String), Pt> {
     let mut ports: BTreeMap<(String, String), Pt> = BTreeMap::new();
     let mut extends: Vec<(String, String)> = Vec::new();
     let mut read_class = |class: &str, text: &str| {
@@ -48,7 +48,7 @@ fn own_ports(out: &Output) -> BTreeMap<(String, String), Pt> {
             }
         }
     };
-    for (path, bytes) in &out.files {
+    for (path, bytes) in files {
         if !path.ends_with(".mo") || path.ends_with("Mechanics.mo") || path.ends_with("Mechatronics.mo") {
             continue;
         }
@@ -171,9 +171,15 @@ fn check_drawing(label: &str, d: &Drawing, base: Option<&Drawing>, ports: &BTree
 
 /// Every layout error of a converted package.
 pub fn check_package(label: &str, out: &Output) -> Vec<String> {
-    let text = |suffix: &str| out.files.iter().find(|(p, _)| p.ends_with(suffix)).map(|(_, b)| String::from_utf8_lossy(b).to_string());
+    check_files(label, &out.files)
+}
+
+/// Every layout error of a package's files (`<Pkg>/Mechanics.mo`, `Mechatronics.mo` and the
+/// class files).
+pub fn check_files(label: &str, files: &[(String, Vec<u8>)]) -> Vec<String> {
+    let text = |suffix: &str| files.iter().find(|(p, _)| p.ends_with(suffix)).map(|(_, b)| String::from_utf8_lossy(b).to_string());
     let Some(mechanics) = text("/Mechanics.mo") else { return vec![format!("{label}: no Mechanics.mo")] };
-    let ports = own_ports(out);
+    let ports = own_ports(files);
     let m = svg::read(&mechanics);
     let mut errors = check_drawing(&format!("{label} Mechanics"), &m, None, &ports);
     // The connects the drawing found are all the model's connects (an independent parser).

@@ -18,7 +18,7 @@ fn declaration(line: &str) -> Option<(&str, &str)> {
     if t.starts_with(' ') || t.starts_with("//") {
         return None;
     }
-    let mut words = t.split_whitespace();
+    let mut words = t.split_whitespace().skip_while(|w| matches!(*w, "inner" | "outer"));
     let class = words.next()?;
     if matches!(class, "parameter" | "connect(" | "extends" | "equation" | "public" | "protected" | "annotation") || class.starts_with("connect(") {
         return None;
@@ -28,22 +28,33 @@ fn declaration(line: &str) -> Option<(&str, &str)> {
     (ok(class) && ok(name)).then_some((class, name))
 }
 
-/// Where a Mechatronics component wants to stand.
-fn want(class: &str, name: &str, base: &Sheet, left: &mut i32, top: i32) -> (Class, Want) {
+/// Where a Mechatronics component wants to stand; `left` is the x of the left column (left of
+/// everything `base` holds), `row` counts the components already standing in it.
+fn want(class: &str, name: &str, base: &Sheet, row: &mut i32, left: i32, top: i32) -> (Class, Want) {
     if class.contains(".Components.Drives.") {
         if let Some(j) = name.strip_prefix("drive_").and_then(|j| base.placed.get(j)) {
             return (Class::Drive, Want { x: j.x - 40, y: j.y + 55, half: 10, flip: false });
         }
     }
+    let body = name.strip_prefix("collisionForce_").and_then(|b| base.placed.get(b));
+    if class.ends_with(".Components.Collision.BodyForce") {
+        // Above the body's left end, its frame_b straight above the body's frame_a: in the gap
+        // between two rows, where only drives and contact forces stand.
+        if let Some(b) = body {
+            return (Class::TwoPort, Want { x: b.x - b.half - 20, y: b.y + 50, half: 10, flip: false });
+        }
+    }
     if class.ends_with("Forces.WorldForceAndTorque") {
-        if let Some(b) = name.strip_prefix("collisionForce_").and_then(|b| base.placed.get(b)) {
+        if let Some(b) = body {
             return (Class::WorldForce, Want { x: b.x - 60, y: b.y + 50, half: 10, flip: true });
         }
     }
+    // The collision world of the writer that wires it to every contact force (its outputs);
+    // one whose forces reach them as an outer component has no connection drawn.
     let class_kind = if class.ends_with("Collision.World") { Class::CollisionWorld } else { Class::Other };
-    let y = top - 60 * *left;
-    *left += 1;
-    (class_kind, Want { x: base.extent(0).x1 - 80, y, half: 15, flip: false })
+    let y = top - 60 * *row;
+    *row += 1;
+    (class_kind, Want { x: left - 80, y, half: 15, flip: false })
 }
 
 /// How a connect between these connectors is drawn.
@@ -60,9 +71,16 @@ fn style(a: &str, b: &str) -> Style {
 /// Places the components and routes the connects of a Mechatronics text written with
 /// placeholders; the text with placements and lines, and the extent of the whole diagram.
 pub fn lay_out(text: &str, base: &Sheet) -> (String, Rect) {
+    let (text, extent, _) = lay_out_counted(text, base);
+    (text, extent)
+}
+
+/// [`lay_out`], with the routing work it did (see [`Sheet::work`]).
+pub fn lay_out_counted(text: &str, base: &Sheet) -> (String, Rect, u64) {
     let mut sheet = base.clone();
-    let top = base.extent(0).y2 - 20;
-    let mut left = 0;
+    let base_extent = base.extent(0);
+    let top = base_extent.y2 - 20;
+    let mut row = 0;
     let mut out = String::with_capacity(text.len() * 2);
     let mut current: Option<(String, String)> = None;
     let from = sheet.wires.len();
@@ -74,7 +92,7 @@ pub fn lay_out(text: &str, base: &Sheet) -> (String, Rect) {
             current = Some((c.to_string(), n.to_string()));
         }
         if let (Some(at), Some((class, name))) = (line.find(PLACEHOLDER), current.as_ref()) {
-            let (kind, w) = want(class, name, base, &mut left, top);
+            let (kind, w) = want(class, name, base, &mut row, base_extent.x1, top);
             let placed = sheet.add(name, kind, w);
             lines.push(format!("{}{}{}", &line[..at], placed.annotation(), &line[at + PLACEHOLDER.len()..]));
             continue;
@@ -117,5 +135,6 @@ pub fn lay_out(text: &str, base: &Sheet) -> (String, Rect) {
         out.push_str(&line);
         out.push('\n');
     }
-    (out, sheet.extent(40))
+    let work = sheet.work() - base.work();
+    (out, sheet.extent(40), work)
 }

@@ -12,6 +12,8 @@ mod route;
 
 use std::collections::{BTreeMap, HashMap};
 
+pub use route::{SHEET_EXPANSIONS_PER_WIRE, WIRE_EXPANSIONS};
+
 /// A fast hash for grid coordinates (the maps here are keyed by small integer pairs; SipHash's
 /// protection against chosen keys is not needed for our own layout).
 #[derive(Clone, Copy, Default)]
@@ -75,7 +77,8 @@ pub enum Class {
     /// `Components.Revolute`/`Prismatic`: frames as [`Class::TwoPort`] and the `drive` flange at
     /// {-60, 100}.
     Joint,
-    /// `Components.Drives.*Drive`: its `flange` on the right, {110, 0}.
+    /// `Components.Drives.*Drive`: its `flange` on the right, {100, 0} (the centre of the
+    /// connector's extent {{90, -10}, {110, 10}}, as for MSL's own connectors).
     Drive,
     /// MSL `Forces.WorldForceAndTorque`: `frame_b` right, inputs `force` {-120, 60} and
     /// `torque` {-120, -60}.
@@ -94,7 +97,7 @@ pub fn port(class: Class, name: &str) -> Option<(f64, f64)> {
         (Class::TwoPort | Class::Joint, "frame_a" | "flange_a" | "flangeR") => (-100.0, 0.0),
         (Class::TwoPort | Class::Joint, "frame_b" | "flange_b" | "flangeT") => (100.0, 0.0),
         (Class::Joint, "drive") => (-60.0, 100.0),
-        (Class::Drive, "flange") => (110.0, 0.0),
+        (Class::Drive, "flange") => (100.0, 0.0),
         (Class::WorldForce, "frame_b") => (100.0, 0.0),
         (Class::WorldForce, "force") => (-120.0, 60.0),
         (Class::WorldForce, "torque") => (-120.0, -60.0),
@@ -196,6 +199,36 @@ pub struct Sheet {
     pub wires: Vec<Wire>,
     /// Cells wires already use (for spreading later wires apart).
     used: GridMap<(i32, i32), u8>,
+    /// Per vertical grid line (x / GRID): the keep-out boxes the line runs strictly inside, as
+    /// disjoint open y intervals (start to end); a straight segment is checked in log time.
+    across_v: GridMap<i32, BTreeMap<i32, i32>>,
+    /// Per horizontal grid line (y / GRID): the same with x intervals.
+    across_h: GridMap<i32, BTreeMap<i32, i32>>,
+    /// Routing work done so far: A* node expansions plus straight segments checked by the
+    /// fallback routes (see [`Sheet::work`]).
+    work: u64,
+    /// A* expansions spent so far: with the wires made, this bounds the next searches.
+    spent: u64,
+}
+
+/// Adds the open interval (a, b) to disjoint open intervals, merging what it overlaps.
+fn add_interval(map: &mut BTreeMap<i32, i32>, a: i32, b: i32) {
+    let over: Vec<(i32, i32)> = map.range(..b).rev().take_while(|(_, &e)| e > a).map(|(&s, &e)| (s, e)).collect();
+    let (mut lo, mut hi) = (a, b);
+    for (s, e) in over {
+        map.remove(&s);
+        lo = lo.min(s);
+        hi = hi.max(e);
+    }
+    map.insert(lo, hi);
+}
+
+/// Whether the closed segment [a, b] meets one of the disjoint open intervals.
+fn meets(map: Option<&BTreeMap<i32, i32>>, a: i32, b: i32) -> bool {
+    let (a, b) = (a.min(b), a.max(b));
+    // [a, b] meets (s, e) when s < b and a < e; of the intervals starting before b, the last
+    // ends last (they are disjoint).
+    map.and_then(|m| m.range(..b).next_back()).is_some_and(|(_, &e)| e > a)
 }
 
 const BUCKET: i32 = 100;
@@ -269,6 +302,12 @@ impl Sheet {
         let i = self.rects.len();
         self.rects.push(r);
         let g = Self::keep_out(&r);
+        for gx in floor_div(g.x1, GRID) + 1..=-floor_div(-g.x2, GRID) - 1 {
+            add_interval(self.across_v.entry(gx).or_default(), g.y1, g.y2);
+        }
+        for gy in floor_div(g.y1, GRID) + 1..=-floor_div(-g.y2, GRID) - 1 {
+            add_interval(self.across_h.entry(gy).or_default(), g.x1, g.x2);
+        }
         for bx in floor_div(g.x1 - BUCKET, BUCKET)..=floor_div(g.x2 + BUCKET, BUCKET) {
             for by in floor_div(g.y1 - BUCKET, BUCKET)..=floor_div(g.y2 + BUCKET, BUCKET) {
                 self.buckets.entry((bx, by)).or_default().push(i);
@@ -277,6 +316,27 @@ impl Sheet {
         self.placed.insert(name.to_string(), p);
         self.order.push(name.to_string());
         p
+    }
+
+    /// The routing work done on this sheet so far (a sheet cloned from another starts with its
+    /// count): A* node expansions plus straight segments checked by fallback routes. Bounded by
+    /// [`SHEET_EXPANSIONS_PER_WIRE`] per wire plus a constant per wire for the fallbacks, so
+    /// it grows linearly with the wires whatever their lengths.
+    pub fn work(&self) -> u64 {
+        self.work
+    }
+
+    /// Whether the straight grid segment from `a` to `b` (grid units, one axis) stays out of
+    /// every keep-out box's interior. One unit of work.
+    fn clear(&mut self, a: (i32, i32), b: (i32, i32)) -> bool {
+        self.work += 1;
+        if a.0 == b.0 {
+            !meets(self.across_v.get(&a.0), a.1 * GRID, b.1 * GRID)
+        } else if a.1 == b.1 {
+            !meets(self.across_h.get(&a.1), a.0 * GRID, b.0 * GRID)
+        } else {
+            false
+        }
     }
 
     /// The bounding box of every component and wire, grown by `margin` and rounded out to 20.

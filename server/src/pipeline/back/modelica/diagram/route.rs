@@ -12,9 +12,23 @@ type End = (((f64, f64), (i32, i32)), Rect);
 
 const BEND: u32 = 4;
 const SHARED: u32 = 3;
-/// Step limit of one search (a route that needs more is drawn by the wider search, or not at
-/// all: the line is still valid Modelica, only without a route).
-const MAX_EXPANSIONS: usize = 2_000_000;
+/// A* node expansions one wire may use, both windows together. A route that needs more is
+/// drawn by [`fallback`] (a long wire: weighted A* expands at least one node per grid step of
+/// its route, so a wire whose ends are farther apart than this goes there directly).
+pub const WIRE_EXPANSIONS: u64 = 4_000;
+/// A* node expansions a sheet may use per wire made (with [`SHEET_EXPANSIONS_START`]): wires
+/// that need few leave some for the ones that need more; the total stays linear in the wires.
+pub const SHEET_EXPANSIONS_PER_WIRE: u64 = 1_500;
+const SHEET_EXPANSIONS_START: u64 = 20_000;
+/// Search windows: the bounding box of the two ends grown by this many grid units, then once
+/// more by the second.
+const WINDOWS: [i32; 2] = [20, 80];
+/// The fallback's channels: grid lines at most this far (grid units) from either end.
+const REACH: i32 = 8;
+/// Straight segments one fallback route may check.
+const FALLBACK_CHECKS: u64 = 4_000;
+
+type P = (i32, i32);
 
 fn g(v: f64) -> i32 {
     (v / f64::from(GRID)).round() as i32
@@ -59,7 +73,7 @@ enum Cells {
     Sparse { state: GridMap<usize, u8>, best: GridMap<usize, u32>, from: GridMap<usize, u32> },
 }
 
-const DENSE_CELLS: usize = 1 << 15;
+const DENSE_CELLS: usize = 1 << 13;
 
 impl Cells {
     fn new(cells: usize) -> Cells {
@@ -107,12 +121,13 @@ impl Cells {
 }
 
 /// Weighted A* (the heuristic counts twice: routes are found fast and are short enough) from
-/// grid point `s` to `t` within `win` (grid units); the grid points of the path.
-fn search(sheet: &Sheet, s: (i32, i32), t: (i32, i32), win: Rect) -> Option<Vec<(i32, i32)>> {
+/// grid point `s` to `t` within `win` (grid units), expanding at most `limit` nodes; the grid
+/// points of the path, and the nodes expanded.
+fn search(sheet: &Sheet, s: P, t: P, win: Rect, limit: u64) -> (Option<Vec<P>>, u64) {
     let w = (win.x2 - win.x1 + 1) as usize;
     let hgt = (win.y2 - win.y1 + 1) as usize;
-    let cell = |p: (i32, i32)| (p.0 - win.x1) as usize + (p.1 - win.y1) as usize * w;
-    let h = |p: (i32, i32)| 2 * ((p.0 - t.0).abs() + (p.1 - t.1).abs()) as u32;
+    let cell = |p: P| (p.0 - win.x1) as usize + (p.1 - win.y1) as usize * w;
+    let h = |p: P| 2 * ((p.0 - t.0).abs() + (p.1 - t.1).abs()) as u32;
     // Per cell: 0 unknown, 1 free, 2 blocked. Per state (cell, arriving direction 0..5): best
     // cost and the state it came from.
     let mut cells = Cells::new(w * hgt);
@@ -120,7 +135,7 @@ fn search(sheet: &Sheet, s: (i32, i32), t: (i32, i32), win: Rect) -> Option<Vec<
     let start = cell(s) * 5 + 4;
     cells.set(start, 0, u32::MAX);
     heap.push(Reverse((h(s), 0u32, start as u32)));
-    let mut expansions = 0;
+    let mut expansions = 0u64;
     let goal = cell(t);
     while let Some(Reverse((_, cost, node))) = heap.pop() {
         let node = node as usize;
@@ -141,12 +156,12 @@ fn search(sheet: &Sheet, s: (i32, i32), t: (i32, i32), win: Rect) -> Option<Vec<
                 cur = prev as usize;
             }
             path.reverse();
-            return Some(path);
+            return (Some(path), expansions);
+        }
+        if expansions >= limit {
+            return (None, expansions);
         }
         expansions += 1;
-        if expansions > MAX_EXPANSIONS {
-            return None;
-        }
         let (x, y) = (win.x1 + (c % w) as i32, win.y1 + (c / w) as i32);
         for (d, (dx, dy)) in DIRS.iter().enumerate() {
             let d = d as u8;
@@ -171,6 +186,84 @@ fn search(sheet: &Sheet, s: (i32, i32), t: (i32, i32), win: Rect) -> Option<Vec<
             if cst < cells.best(next) {
                 cells.set(next, cst, node as u32);
                 heap.push(Reverse((cst + h((nx, ny)), cst, next as u32)));
+            }
+        }
+    }
+    (None, expansions)
+}
+
+/// Whether every segment of the corner list `pts` is clear (one unit of work per segment
+/// checked; the checks stop at the first blocked one).
+fn clear_path(sheet: &mut Sheet, pts: &[P]) -> bool {
+    pts.windows(2).all(|w| sheet.clear(w[0], w[1]))
+}
+
+/// Grid lines near `v`, nearest first: v, v - 1, v + 1, v - 2, ...
+fn near(v: i32) -> impl Iterator<Item = i32> + Clone {
+    (0..=2 * REACH).map(move |k| if k % 2 == 0 { v + k / 2 } else { v - (k + 1) / 2 })
+}
+
+/// A route from `s` to `t` (grid units) that needs no search: the corners of the first clear
+/// one of a few orthogonal shapes: an elbow; a Z through a channel (a grid line near one of the
+/// ends); five segments through a column near each end and a row near one of them. Each
+/// straight segment is checked against the components' keep-out boxes in log time, at most
+/// [`FALLBACK_CHECKS`] of them, so its work does not depend on the wire's length.
+fn fallback(sheet: &mut Sheet, s: P, t: P) -> Option<Vec<P>> {
+    let start = sheet.work;
+    let spent = |sheet: &Sheet| sheet.work - start > FALLBACK_CHECKS;
+    for corner in [(t.0, s.1), (s.0, t.1)] {
+        let pts = vec![s, corner, t];
+        if clear_path(sheet, &pts) {
+            return Some(pts);
+        }
+    }
+    for c in near(t.0).chain(near(s.0)) {
+        let pts = vec![s, (c, s.1), (c, t.1), t];
+        if clear_path(sheet, &pts) {
+            return Some(pts);
+        }
+    }
+    for r in near(t.1).chain(near(s.1)) {
+        let pts = vec![s, (s.0, r), (t.0, r), t];
+        if clear_path(sheet, &pts) {
+            return Some(pts);
+        }
+    }
+    // Leave along s's row to a column near s, run along it to a row, along that to a column
+    // near t, then to t's row; and the same turned by a right angle.
+    let firsts: Vec<i32> = near(s.0).filter(|&c| sheet.clear(s, (c, s.1))).collect();
+    let lasts: Vec<i32> = near(t.0).filter(|&c| sheet.clear((c, t.1), t)).collect();
+    for &c1 in &firsts {
+        for r in near(t.1).chain(near(s.1)) {
+            if spent(sheet) {
+                return None;
+            }
+            if !sheet.clear((c1, s.1), (c1, r)) {
+                continue;
+            }
+            for &c2 in &lasts {
+                let pts = vec![s, (c1, s.1), (c1, r), (c2, r), (c2, t.1), t];
+                if clear_path(sheet, &pts[2..5]) {
+                    return Some(pts);
+                }
+            }
+        }
+    }
+    let firsts: Vec<i32> = near(s.1).filter(|&r| sheet.clear(s, (s.0, r))).collect();
+    let lasts: Vec<i32> = near(t.1).filter(|&r| sheet.clear((t.0, r), t)).collect();
+    for &r1 in &firsts {
+        for c in near(t.0).chain(near(s.0)) {
+            if spent(sheet) {
+                return None;
+            }
+            if !sheet.clear((s.0, r1), (c, r1)) {
+                continue;
+            }
+            for &r2 in &lasts {
+                let pts = vec![s, (s.0, r1), (c, r1), (c, r2), (t.0, r2), t];
+                if clear_path(sheet, &pts[2..5]) {
+                    return Some(pts);
+                }
             }
         }
     }
@@ -205,17 +298,39 @@ pub(super) fn route(sheet: &mut Sheet, a: End, b: End) -> Vec<(f64, f64)> {
     let s = sa.last().map(|p| (g(p.0), g(p.1))).unwrap_or_default();
     let t = sb.last().map(|p| (g(p.0), g(p.1))).unwrap_or_default();
     let bbox = Rect { x1: s.0.min(t.0), y1: s.1.min(t.1), x2: s.0.max(t.0), y2: s.1.max(t.1) };
+    // This wire's share of the sheet's search budget: its own cap, and what the wires so far
+    // left over.
+    let pool = (SHEET_EXPANSIONS_START + SHEET_EXPANSIONS_PER_WIRE * (sheet.wires.len() as u64 + 1)).saturating_sub(sheet.spent);
+    let mut allowance = WIRE_EXPANSIONS.min(pool);
+    let distance = u64::from((s.0 - t.0).unsigned_abs() + (s.1 - t.1).unsigned_abs());
     let mut path = None;
-    for grow in [20, 80, 400] {
-        path = search(sheet, s, t, bbox.grow(grow, grow));
-        if path.is_some() {
+    for grow in WINDOWS {
+        if distance > allowance {
+            break;
+        }
+        let (found, used) = search(sheet, s, t, bbox.grow(grow, grow), allowance);
+        allowance -= used.min(allowance);
+        sheet.spent += used;
+        sheet.work += used;
+        if found.is_some() {
+            path = found;
             break;
         }
     }
     let Some(path) = path else {
-        // No free route: a straight orthogonal elbow (the layout test reports it).
-        let (pa, pb) = (a.0 .0, b.0 .0);
-        return vec![pa, (pb.0, pa.1), pb];
+        let mut pts = sa;
+        match fallback(sheet, s, t) {
+            // Not marked as used: that would cost the wire's length.
+            Some(corners) => pts.extend(corners.iter().map(|&(x, y)| (f64::from(x * GRID), f64::from(y * GRID)))),
+            // No clear route: a straight orthogonal elbow (the layout test reports it).
+            None => {
+                let (pa, pb) = (a.0 .0, b.0 .0);
+                return vec![pa, (pb.0, pa.1), pb];
+            }
+        }
+        sb.reverse();
+        pts.extend(sb);
+        return simplify(pts);
     };
     for p in &path {
         let n = sheet.used.entry(*p).or_insert(0);
