@@ -99,9 +99,9 @@ fn ascii_stl(name: &str, tris: &[Tri]) -> Vec<u8> {
         let (u, v) = ([t[1][0] - t[0][0], t[1][1] - t[0][1], t[1][2] - t[0][2]], [t[2][0] - t[0][0], t[2][1] - t[0][1], t[2][2] - t[0][2]]);
         let nrm = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]];
         let l = (nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]).sqrt().max(1e-30);
-        let _ = write!(s, "  facet normal {:e} {:e} {:e}\n    outer loop\n", nrm[0] / l, nrm[1] / l, nrm[2] / l);
+        let _ = writeln!(s, "  facet normal {:e} {:e} {:e}\n    outer loop", nrm[0] / l, nrm[1] / l, nrm[2] / l);
         for p in t {
-            let _ = write!(s, "      vertex {:.6e} {:.6e} {:.6e}\n", p[0], p[1], p[2]);
+            let _ = writeln!(s, "      vertex {:.6e} {:.6e} {:.6e}", p[0], p[1], p[2]);
         }
         s.push_str("    endloop\n  endfacet\n");
     }

@@ -15,20 +15,23 @@ model Mechatronics "Mechatronic model of UJ: Mechanics with no joint drive"
     w_a={BASE.w_a, CROSS.w_a, FLOAT.w_a}) "Contact forces between the collision shapes (read from Resources/Collision/contact.txt when collisions is true)"
     annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,0})));
   UJ.Components.Collision.BodyForce collisionForce_BASE(force=collisionWorld.force[1, :], torque=collisionWorld.torque[1, :]) if collisions "Contact force and torque on BASE (from collisionWorld)"
-    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-60})));
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={705,50})));
   UJ.Components.Collision.BodyForce collisionForce_CROSS(force=collisionWorld.force[2, :], torque=collisionWorld.torque[2, :]) if collisions "Contact force and torque on CROSS (from collisionWorld)"
-    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-120})));
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={1105,50})));
   UJ.Components.Collision.BodyForce collisionForce_FLOAT(force=collisionWorld.force[3, :], torque=collisionWorld.torque[3, :]) if collisions "Contact force and torque on FLOAT (from collisionWorld)"
-    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-180})));
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={1665,50})));
 equation
-  connect(collisionForce_BASE.frame_b, BASE.frame_a);
-  connect(collisionForce_CROSS.frame_b, CROSS.frame_a);
-  connect(collisionForce_FLOAT.frame_b, FLOAT.frame_a);
+  connect(collisionForce_BASE.frame_b, BASE.frame_a)
+    annotation (Line(points={{715,50},{720,50},{720,0},{725,0}}, color={95,95,95}, thickness=0.5));
+  connect(collisionForce_CROSS.frame_b, CROSS.frame_a)
+    annotation (Line(points={{1115,50},{1120,50},{1120,0},{1125,0}}, color={95,95,95}, thickness=0.5));
+  connect(collisionForce_FLOAT.frame_b, FLOAT.frame_a)
+    annotation (Line(points={{1675,50},{1680,50},{1680,0},{1685,0}}, color={95,95,95}, thickness=0.5));
 public
 equation
   annotation (
     experiment(StopTime=4.0, Interval=0.01, Tolerance=1e-06),
-    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-140,-260},{1760,60}})),
+    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-140,-260},{1760,100}})),
     Icon(graphics={
       Rectangle(extent={{10,-70},{60,-30}}, lineColor={0,0,0}, fillColor={0,128,255}, fillPattern=FillPattern.HorizontalCylinder),
       Rectangle(extent={{60,-54},{80,-46}}, lineColor={0,0,0}, fillColor={160,160,164}, fillPattern=FillPattern.HorizontalCylinder),

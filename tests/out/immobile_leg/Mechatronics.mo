@@ -15,20 +15,23 @@ model Mechatronics "Mechatronic model of LEG: Mechanics with no joint drive"
     w_a={HIP.w_a, THIGH.w_a, SHANK.w_a}) "Contact forces between the collision shapes (read from Resources/Collision/contact.txt when collisions is true)"
     annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,20})));
   LEG.Components.Collision.BodyForce collisionForce_HIP(force=collisionWorld.force[1, :], torque=collisionWorld.torque[1, :]) if collisions "Contact force and torque on HIP (from collisionWorld)"
-    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-40})));
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={705,50})));
   LEG.Components.Collision.BodyForce collisionForce_THIGH(force=collisionWorld.force[2, :], torque=collisionWorld.torque[2, :]) if collisions "Contact force and torque on THIGH (from collisionWorld)"
-    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-100})));
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={1025,50})));
   LEG.Components.Collision.BodyForce collisionForce_SHANK(force=collisionWorld.force[3, :], torque=collisionWorld.torque[3, :]) if collisions "Contact force and torque on SHANK (from collisionWorld)"
-    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-160})));
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={1345,50})));
 equation
-  connect(collisionForce_HIP.frame_b, HIP.frame_a);
-  connect(collisionForce_THIGH.frame_b, THIGH.frame_a);
-  connect(collisionForce_SHANK.frame_b, SHANK.frame_a);
+  connect(collisionForce_HIP.frame_b, HIP.frame_a)
+    annotation (Line(points={{715,50},{720,50},{720,0},{725,0}}, color={95,95,95}, thickness=0.5));
+  connect(collisionForce_THIGH.frame_b, THIGH.frame_a)
+    annotation (Line(points={{1035,50},{1040,50},{1040,0},{1045,0}}, color={95,95,95}, thickness=0.5));
+  connect(collisionForce_SHANK.frame_b, SHANK.frame_a)
+    annotation (Line(points={{1355,50},{1360,50},{1360,0},{1365,0}}, color={95,95,95}, thickness=0.5));
 public
 equation
   annotation (
     experiment(StopTime=4.0, Interval=0.01, Tolerance=1e-06),
-    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-140,-260},{1440,80}})),
+    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-140,-260},{1440,100}})),
     Icon(graphics={
       Rectangle(extent={{10,-70},{60,-30}}, lineColor={0,0,0}, fillColor={0,128,255}, fillPattern=FillPattern.HorizontalCylinder),
       Rectangle(extent={{60,-54},{80,-46}}, lineColor={0,0,0}, fillColor={160,160,164}, fillPattern=FillPattern.HorizontalCylinder),

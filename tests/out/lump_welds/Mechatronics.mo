@@ -15,17 +15,19 @@ model Mechatronics "Mechatronic model of LumpedArm: Mechanics with no joint driv
     w_a={UPPER_A.w_a, FORE.w_a}) "Contact forces between the collision shapes (read from Resources/Collision/contact.txt when collisions is true)"
     annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,0})));
   LumpedArm.Components.Collision.BodyForce collisionForce_UPPER_A(force=collisionWorld.force[1, :], torque=collisionWorld.torque[1, :]) if collisions "Contact force and torque on UPPER_A (from collisionWorld)"
-    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-60})));
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={705,50})));
   LumpedArm.Components.Collision.BodyForce collisionForce_FORE(force=collisionWorld.force[2, :], torque=collisionWorld.torque[2, :]) if collisions "Contact force and torque on FORE (from collisionWorld)"
-    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-120})));
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={1025,50})));
 equation
-  connect(collisionForce_UPPER_A.frame_b, UPPER_A.frame_a);
-  connect(collisionForce_FORE.frame_b, FORE.frame_a);
+  connect(collisionForce_UPPER_A.frame_b, UPPER_A.frame_a)
+    annotation (Line(points={{715,50},{720,50},{720,0},{725,0}}, color={95,95,95}, thickness=0.5));
+  connect(collisionForce_FORE.frame_b, FORE.frame_a)
+    annotation (Line(points={{1035,50},{1040,50},{1040,0},{1045,0}}, color={95,95,95}, thickness=0.5));
 public
 equation
   annotation (
     experiment(StopTime=4.0, Interval=0.01, Tolerance=1e-06),
-    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-140,-260},{1120,60}})),
+    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-140,-260},{1120,100}})),
     Icon(graphics={
       Rectangle(extent={{10,-70},{60,-30}}, lineColor={0,0,0}, fillColor={0,128,255}, fillPattern=FillPattern.HorizontalCylinder),
       Rectangle(extent={{60,-54},{80,-46}}, lineColor={0,0,0}, fillColor={160,160,164}, fillPattern=FillPattern.HorizontalCylinder),

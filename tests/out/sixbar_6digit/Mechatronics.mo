@@ -15,26 +15,31 @@ model Mechatronics "Mechatronic model of SIXBAR: Mechanics with no joint drive"
     w_a={CRANK.w_a, COUPLER.w_a, ROCKER.w_a, LINK5.w_a, LINK6.w_a}) "Contact forces between the collision shapes (read from Resources/Collision/contact.txt when collisions is true)"
     annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,20})));
   SIXBAR.Components.Collision.BodyForce collisionForce_CRANK(force=collisionWorld.force[1, :], torque=collisionWorld.torque[1, :]) if collisions "Contact force and torque on CRANK (from collisionWorld)"
-    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-40})));
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={705,50})));
   SIXBAR.Components.Collision.BodyForce collisionForce_COUPLER(force=collisionWorld.force[2, :], torque=collisionWorld.torque[2, :]) if collisions "Contact force and torque on COUPLER (from collisionWorld)"
-    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-100})));
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={1025,50})));
   SIXBAR.Components.Collision.BodyForce collisionForce_ROCKER(force=collisionWorld.force[3, :], torque=collisionWorld.torque[3, :]) if collisions "Contact force and torque on ROCKER (from collisionWorld)"
-    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-160})));
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={1345,50})));
   SIXBAR.Components.Collision.BodyForce collisionForce_LINK5(force=collisionWorld.force[4, :], torque=collisionWorld.torque[4, :]) if collisions "Contact force and torque on LINK5 (from collisionWorld)"
-    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-220})));
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={1345,-150})));
   SIXBAR.Components.Collision.BodyForce collisionForce_LINK6(force=collisionWorld.force[5, :], torque=collisionWorld.torque[5, :]) if collisions "Contact force and torque on LINK6 (from collisionWorld)"
-    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-280})));
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={1665,-150})));
 equation
-  connect(collisionForce_CRANK.frame_b, CRANK.frame_a);
-  connect(collisionForce_COUPLER.frame_b, COUPLER.frame_a);
-  connect(collisionForce_ROCKER.frame_b, ROCKER.frame_a);
-  connect(collisionForce_LINK5.frame_b, LINK5.frame_a);
-  connect(collisionForce_LINK6.frame_b, LINK6.frame_a);
+  connect(collisionForce_CRANK.frame_b, CRANK.frame_a)
+    annotation (Line(points={{715,50},{720,50},{720,0},{725,0}}, color={95,95,95}, thickness=0.5));
+  connect(collisionForce_COUPLER.frame_b, COUPLER.frame_a)
+    annotation (Line(points={{1035,50},{1040,50},{1040,0},{1045,0}}, color={95,95,95}, thickness=0.5));
+  connect(collisionForce_ROCKER.frame_b, ROCKER.frame_a)
+    annotation (Line(points={{1355,50},{1360,50},{1360,0},{1365,0}}, color={95,95,95}, thickness=0.5));
+  connect(collisionForce_LINK5.frame_b, LINK5.frame_a)
+    annotation (Line(points={{1355,-150},{1360,-150},{1360,-200},{1365,-200}}, color={95,95,95}, thickness=0.5));
+  connect(collisionForce_LINK6.frame_b, LINK6.frame_a)
+    annotation (Line(points={{1675,-150},{1680,-150},{1680,-200},{1685,-200}}, color={95,95,95}, thickness=0.5));
 public
 equation
   annotation (
     experiment(StopTime=4.0, Interval=0.01, Tolerance=1e-06),
-    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-140,-460},{1760,80}})),
+    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-140,-460},{1760,100}})),
     Icon(graphics={
       Rectangle(extent={{10,-70},{60,-30}}, lineColor={0,0,0}, fillColor={0,128,255}, fillPattern=FillPattern.HorizontalCylinder),
       Rectangle(extent={{60,-54},{80,-46}}, lineColor={0,0,0}, fillColor={160,160,164}, fillPattern=FillPattern.HorizontalCylinder),

@@ -15,29 +15,35 @@ model Mechatronics "Mechatronic model of urdf_arm: Mechanics with no joint drive
     w_a={base.w_a, shoulder.w_a, upper_arm.w_a, forearm.w_a, slide.w_a, tool.w_a}) "Contact forces between the collision shapes (read from Resources/Collision/contact.txt when collisions is true)"
     annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,0})));
   urdf_arm.Components.Collision.BodyForce collisionForce_base(force=collisionWorld.force[1, :], torque=collisionWorld.torque[1, :]) if collisions "Contact force and torque on base (from collisionWorld)"
-    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-60})));
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={385,50})));
   urdf_arm.Components.Collision.BodyForce collisionForce_shoulder(force=collisionWorld.force[2, :], torque=collisionWorld.torque[2, :]) if collisions "Contact force and torque on shoulder (from collisionWorld)"
-    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-120})));
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={705,50})));
   urdf_arm.Components.Collision.BodyForce collisionForce_upper_arm(force=collisionWorld.force[3, :], torque=collisionWorld.torque[3, :]) if collisions "Contact force and torque on upper_arm (from collisionWorld)"
-    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-180})));
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={1025,50})));
   urdf_arm.Components.Collision.BodyForce collisionForce_forearm(force=collisionWorld.force[4, :], torque=collisionWorld.torque[4, :]) if collisions "Contact force and torque on forearm (from collisionWorld)"
-    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-240})));
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={1345,50})));
   urdf_arm.Components.Collision.BodyForce collisionForce_slide(force=collisionWorld.force[5, :], torque=collisionWorld.torque[5, :]) if collisions "Contact force and torque on slide (from collisionWorld)"
-    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-300})));
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={1665,50})));
   urdf_arm.Components.Collision.BodyForce collisionForce_tool(force=collisionWorld.force[6, :], torque=collisionWorld.torque[6, :]) if collisions "Contact force and torque on tool (from collisionWorld)"
-    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-360})));
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={1985,50})));
 equation
-  connect(collisionForce_base.frame_b, base.frame_a);
-  connect(collisionForce_shoulder.frame_b, shoulder.frame_a);
-  connect(collisionForce_upper_arm.frame_b, upper_arm.frame_a);
-  connect(collisionForce_forearm.frame_b, forearm.frame_a);
-  connect(collisionForce_slide.frame_b, slide.frame_a);
-  connect(collisionForce_tool.frame_b, tool.frame_a);
+  connect(collisionForce_base.frame_b, base.frame_a)
+    annotation (Line(points={{395,50},{400,50},{400,0},{405,0}}, color={95,95,95}, thickness=0.5));
+  connect(collisionForce_shoulder.frame_b, shoulder.frame_a)
+    annotation (Line(points={{715,50},{720,50},{720,0},{725,0}}, color={95,95,95}, thickness=0.5));
+  connect(collisionForce_upper_arm.frame_b, upper_arm.frame_a)
+    annotation (Line(points={{1035,50},{1040,50},{1040,0},{1045,0}}, color={95,95,95}, thickness=0.5));
+  connect(collisionForce_forearm.frame_b, forearm.frame_a)
+    annotation (Line(points={{1355,50},{1360,50},{1360,0},{1365,0}}, color={95,95,95}, thickness=0.5));
+  connect(collisionForce_slide.frame_b, slide.frame_a)
+    annotation (Line(points={{1675,50},{1680,50},{1680,0},{1685,0}}, color={95,95,95}, thickness=0.5));
+  connect(collisionForce_tool.frame_b, tool.frame_a)
+    annotation (Line(points={{1995,50},{2000,50},{2000,0},{2005,0}}, color={95,95,95}, thickness=0.5));
 public
 equation
   annotation (
     experiment(StopTime=7.0, Interval=0.02, Tolerance=1e-06),
-    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-140,-420},{2080,60}})),
+    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-140,-260},{2080,100}})),
     Icon(graphics={
       Rectangle(extent={{10,-70},{60,-30}}, lineColor={0,0,0}, fillColor={0,128,255}, fillPattern=FillPattern.HorizontalCylinder),
       Rectangle(extent={{60,-54},{80,-46}}, lineColor={0,0,0}, fillColor={160,160,164}, fillPattern=FillPattern.HorizontalCylinder),

@@ -15,23 +15,27 @@ model Mechatronics "Mechatronic model of urdf_fourbar: Mechanics with no joint d
     w_a={ground.w_a, crank.w_a, coupler.w_a, rocker.w_a}) "Contact forces between the collision shapes (read from Resources/Collision/contact.txt when collisions is true)"
     annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,20})));
   urdf_fourbar.Components.Collision.BodyForce collisionForce_ground(force=collisionWorld.force[1, :], torque=collisionWorld.torque[1, :]) if collisions "Contact force and torque on ground (from collisionWorld)"
-    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-40})));
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={385,50})));
   urdf_fourbar.Components.Collision.BodyForce collisionForce_crank(force=collisionWorld.force[2, :], torque=collisionWorld.torque[2, :]) if collisions "Contact force and torque on crank (from collisionWorld)"
-    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-100})));
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={705,50})));
   urdf_fourbar.Components.Collision.BodyForce collisionForce_coupler(force=collisionWorld.force[3, :], torque=collisionWorld.torque[3, :]) if collisions "Contact force and torque on coupler (from collisionWorld)"
-    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-160})));
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={1025,50})));
   urdf_fourbar.Components.Collision.BodyForce collisionForce_rocker(force=collisionWorld.force[4, :], torque=collisionWorld.torque[4, :]) if collisions "Contact force and torque on rocker (from collisionWorld)"
-    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-220})));
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={1345,50})));
 equation
-  connect(collisionForce_ground.frame_b, ground.frame_a);
-  connect(collisionForce_crank.frame_b, crank.frame_a);
-  connect(collisionForce_coupler.frame_b, coupler.frame_a);
-  connect(collisionForce_rocker.frame_b, rocker.frame_a);
+  connect(collisionForce_ground.frame_b, ground.frame_a)
+    annotation (Line(points={{395,50},{400,50},{400,0},{405,0}}, color={95,95,95}, thickness=0.5));
+  connect(collisionForce_crank.frame_b, crank.frame_a)
+    annotation (Line(points={{715,50},{720,50},{720,0},{725,0}}, color={95,95,95}, thickness=0.5));
+  connect(collisionForce_coupler.frame_b, coupler.frame_a)
+    annotation (Line(points={{1035,50},{1040,50},{1040,0},{1045,0}}, color={95,95,95}, thickness=0.5));
+  connect(collisionForce_rocker.frame_b, rocker.frame_a)
+    annotation (Line(points={{1355,50},{1360,50},{1360,0},{1365,0}}, color={95,95,95}, thickness=0.5));
 public
 equation
   annotation (
     experiment(StopTime=9.0, Interval=0.02, Tolerance=1e-06),
-    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-140,-280},{1440,80}})),
+    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-140,-260},{1440,100}})),
     Icon(graphics={
       Rectangle(extent={{10,-70},{60,-30}}, lineColor={0,0,0}, fillColor={0,128,255}, fillPattern=FillPattern.HorizontalCylinder),
       Rectangle(extent={{60,-54},{80,-46}}, lineColor={0,0,0}, fillColor={160,160,164}, fillPattern=FillPattern.HorizontalCylinder),

@@ -15,17 +15,19 @@ model Mechatronics "Mechatronic model of VASM: Mechanics with no joint drive"
     w_a={BOLT.w_a, NUT.w_a}) "Contact forces between the collision shapes (read from Resources/Collision/contact.txt when collisions is true)"
     annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,0})));
   VASM.Components.Collision.BodyForce collisionForce_BOLT(force=collisionWorld.force[1, :], torque=collisionWorld.torque[1, :]) if collisions "Contact force and torque on BOLT (from collisionWorld)"
-    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-60})));
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={705,50})));
   VASM.Components.Collision.BodyForce collisionForce_NUT(force=collisionWorld.force[2, :], torque=collisionWorld.torque[2, :]) if collisions "Contact force and torque on NUT (from collisionWorld)"
-    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-120})));
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={705,-150})));
 equation
-  connect(collisionForce_BOLT.frame_b, BOLT.frame_a);
-  connect(collisionForce_NUT.frame_b, NUT.frame_a);
+  connect(collisionForce_BOLT.frame_b, BOLT.frame_a)
+    annotation (Line(points={{715,50},{720,50},{720,0},{725,0}}, color={95,95,95}, thickness=0.5));
+  connect(collisionForce_NUT.frame_b, NUT.frame_a)
+    annotation (Line(points={{715,-150},{720,-150},{720,-200},{725,-200}}, color={95,95,95}, thickness=0.5));
 public
 equation
   annotation (
     experiment(StopTime=3.0, Interval=0.01, Tolerance=1e-06),
-    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-140,-360},{800,60}})),
+    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-140,-360},{800,100}})),
     Icon(graphics={
       Rectangle(extent={{10,-70},{60,-30}}, lineColor={0,0,0}, fillColor={0,128,255}, fillPattern=FillPattern.HorizontalCylinder),
       Rectangle(extent={{60,-54},{80,-46}}, lineColor={0,0,0}, fillColor={160,160,164}, fillPattern=FillPattern.HorizontalCylinder),

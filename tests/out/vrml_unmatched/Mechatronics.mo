@@ -15,20 +15,23 @@ model Mechatronics "Mechatronic model of VASM: Mechanics with no joint drive"
     w_a={BRACKET.w_a, SLIDER.w_a, TOOL.w_a}) "Contact forces between the collision shapes (read from Resources/Collision/contact.txt when collisions is true)"
     annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,0})));
   VASM.Components.Collision.BodyForce collisionForce_BRACKET(force=collisionWorld.force[1, :], torque=collisionWorld.torque[1, :]) if collisions "Contact force and torque on BRACKET (from collisionWorld)"
-    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-60})));
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={705,50})));
   VASM.Components.Collision.BodyForce collisionForce_SLIDER(force=collisionWorld.force[2, :], torque=collisionWorld.torque[2, :]) if collisions "Contact force and torque on SLIDER (from collisionWorld)"
-    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-120})));
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={1025,50})));
   VASM.Components.Collision.BodyForce collisionForce_TOOL(force=collisionWorld.force[3, :], torque=collisionWorld.torque[3, :]) if collisions "Contact force and torque on TOOL (from collisionWorld)"
-    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-180})));
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={1345,50})));
 equation
-  connect(collisionForce_BRACKET.frame_b, BRACKET.frame_a);
-  connect(collisionForce_SLIDER.frame_b, SLIDER.frame_a);
-  connect(collisionForce_TOOL.frame_b, TOOL.frame_a);
+  connect(collisionForce_BRACKET.frame_b, BRACKET.frame_a)
+    annotation (Line(points={{715,50},{720,50},{720,0},{725,0}}, color={95,95,95}, thickness=0.5));
+  connect(collisionForce_SLIDER.frame_b, SLIDER.frame_a)
+    annotation (Line(points={{1035,50},{1040,50},{1040,0},{1045,0}}, color={95,95,95}, thickness=0.5));
+  connect(collisionForce_TOOL.frame_b, TOOL.frame_a)
+    annotation (Line(points={{1355,50},{1360,50},{1360,0},{1365,0}}, color={95,95,95}, thickness=0.5));
 public
 equation
   annotation (
     experiment(StopTime=4.0, Interval=0.01, Tolerance=1e-06),
-    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-140,-260},{1440,60}})),
+    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-140,-260},{1440,100}})),
     Icon(graphics={
       Rectangle(extent={{10,-70},{60,-30}}, lineColor={0,0,0}, fillColor={0,128,255}, fillPattern=FillPattern.HorizontalCylinder),
       Rectangle(extent={{60,-54},{80,-46}}, lineColor={0,0,0}, fillColor={160,160,164}, fillPattern=FillPattern.HorizontalCylinder),

@@ -15,20 +15,23 @@ model Mechatronics "Mechatronic model of WARN: Mechanics with no joint drive"
     w_a={ASYM.w_a, TRI.w_a, NOMAT.w_a}) "Contact forces between the collision shapes (read from Resources/Collision/contact.txt when collisions is true)"
     annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,0})));
   WARN.Components.Collision.BodyForce collisionForce_ASYM(force=collisionWorld.force[1, :], torque=collisionWorld.torque[1, :]) if collisions "Contact force and torque on ASYM (from collisionWorld)"
-    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-60})));
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={705,50})));
   WARN.Components.Collision.BodyForce collisionForce_TRI(force=collisionWorld.force[2, :], torque=collisionWorld.torque[2, :]) if collisions "Contact force and torque on TRI (from collisionWorld)"
-    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-120})));
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={1105,50})));
   WARN.Components.Collision.BodyForce collisionForce_NOMAT(force=collisionWorld.force[3, :], torque=collisionWorld.torque[3, :]) if collisions "Contact force and torque on NOMAT (from collisionWorld)"
-    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,-180})));
+    annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={2065,50})));
 equation
-  connect(collisionForce_ASYM.frame_b, ASYM.frame_a);
-  connect(collisionForce_TRI.frame_b, TRI.frame_a);
-  connect(collisionForce_NOMAT.frame_b, NOMAT.frame_a);
+  connect(collisionForce_ASYM.frame_b, ASYM.frame_a)
+    annotation (Line(points={{715,50},{720,50},{720,0},{725,0}}, color={95,95,95}, thickness=0.5));
+  connect(collisionForce_TRI.frame_b, TRI.frame_a)
+    annotation (Line(points={{1115,50},{1120,50},{1120,0},{1125,0}}, color={95,95,95}, thickness=0.5));
+  connect(collisionForce_NOMAT.frame_b, NOMAT.frame_a)
+    annotation (Line(points={{2075,50},{2080,50},{2080,0},{2085,0}}, color={95,95,95}, thickness=0.5));
 public
 equation
   annotation (
     experiment(StopTime=4.0, Interval=0.01, Tolerance=1e-06),
-    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-140,-260},{2160,60}})),
+    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-140,-260},{2160,100}})),
     Icon(graphics={
       Rectangle(extent={{10,-70},{60,-30}}, lineColor={0,0,0}, fillColor={0,128,255}, fillPattern=FillPattern.HorizontalCylinder),
       Rectangle(extent={{60,-54},{80,-46}}, lineColor={0,0,0}, fillColor={160,160,164}, fillPattern=FillPattern.HorizontalCylinder),
