@@ -1,4 +1,6 @@
-//! Per-body collision shape timings of a bundle (a directory), for choosing the shape budgets:
+//! Per-body collision shape timings of a bundle (a directory), for choosing the shape budgets,
+//! then the whole conversion three times in one process: without a shape cache, and twice with
+//! one (cold, then warm):
 //!
 //! ```sh
 //! cargo run --release -p cad2mo --example shape_timing -- DIR [max_hull_vertices] [decomposition_budget]
@@ -37,12 +39,14 @@ fn main() {
         }
     };
     let mut total = 0.0;
+    let mut shapes = vec![None; a.model.bodies.len()];
     let (mut worst_fit, mut worst_ratio) = (0.0f64, 0.0f64);
     for (i, b) in a.model.bodies.iter().enumerate() {
         let Some(m) = &b.mesh else { continue };
         let t0 = Instant::now();
         let s = body_shape(m, &opts);
         let dt = t0.elapsed().as_secs_f64();
+        shapes[i] = Some(s.clone());
         total += dt;
         worst_fit = worst_fit.max(s.fit_error);
         worst_ratio = worst_ratio.max(s.volume_ratio);
@@ -59,4 +63,33 @@ fn main() {
         );
     }
     println!("total {total:.3} s (one thread); worst fit {:.2} mm, worst ratio {worst_ratio:.3}", worst_fit * 1e3);
+    // Contacts at the CAD pose, every pair checked, within 5 cm: the narrow phase's speed.
+    let world = cad2mo::collision::World::new(&shapes);
+    let poses = cad2mo::pipeline::back::collision_shapes::cad_poses(&a.model);
+    let all = |_: usize, _: usize| true;
+    let n = cad2mo::collision::contacts_at(&world, &poses, &all, 0.05).len();
+    let t0 = Instant::now();
+    for _ in 0..200 {
+        std::hint::black_box(cad2mo::collision::contacts_at(&world, &poses, &all, 0.05));
+    }
+    println!("contacts_at, margin 5 cm: {n} pairs, {:.1} µs per call", t0.elapsed().as_secs_f64() / 200.0 * 1e6);
+    let cache = std::sync::Arc::new(cad2mo::collision::MemoryShapeCache::default());
+    let shared: std::sync::Arc<dyn cad2mo::collision::ShapeCache> = cache.clone();
+    for (what, opts) in [
+        ("no cache", Options::default()),
+        ("cache, cold", Options { shape_cache: Some(shared.clone()), ..Options::default() }),
+        ("cache, warm", Options { shape_cache: Some(shared), ..Options::default() }),
+    ] {
+        let t0 = Instant::now();
+        match pipeline::convert(&bundle, &opts) {
+            Ok(out) => println!(
+                "convert ({what}): {:.3} s, shapes computed {}, from the cache {}",
+                t0.elapsed().as_secs_f64(),
+                out.shapes.computed,
+                out.shapes.cached
+            ),
+            Err(e) => println!("convert ({what}): error {e}"),
+        }
+    }
+    println!("{:?}", cache.stats());
 }

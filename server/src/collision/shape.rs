@@ -555,6 +555,27 @@ fn capped(part: ConvexPart, max: usize, simplified: &mut Simplified) -> ConvexPa
         }
     }
     let mut best: Option<(ConvexPart, f64)> = None;
+    // Candidates: every vertex, or for a big hull one per cell of a grid coarse enough to leave
+    // at most 8 × max (still vertices of the exact hull). Points inside a hull stay inside the
+    // later ones (each hull contains the one before): they are dropped as they are passed.
+    let mut open: Vec<usize> = (0..pts.len()).collect();
+    if pts.len() > 8 * max {
+        let (lo, hi) = bounds(&pts);
+        let diag = (hi - lo).norm().max(1e-12);
+        let mut cells = 256.0f64;
+        while cells >= 2.0 {
+            let cell = diag / cells;
+            let mut seen = std::collections::HashSet::new();
+            let sub: Vec<usize> = (0..pts.len())
+                .filter(|&i| seen.insert(((pts[i].x / cell).floor() as i64, (pts[i].y / cell).floor() as i64, (pts[i].z / cell).floor() as i64)))
+                .collect();
+            if sub.len() <= 8 * max {
+                open = sub;
+                break;
+            }
+            cells /= 1.25;
+        }
+    }
     while chosen.len() <= max {
         let sub: Vec<P3> = chosen.iter().map(|&i| pts[i]).collect();
         let Some(h) = hull_part(&sub) else { break };
@@ -562,12 +583,12 @@ fn capped(part: ConvexPart, max: usize, simplified: &mut Simplified) -> ConvexPa
             break;
         }
         let pl = planes(&h);
-        let mut outside: Vec<(f64, usize)> = pts
+        let mut outside: Vec<(f64, usize)> = open
             .iter()
-            .enumerate()
-            .map(|(i, p)| (pl.iter().map(|(n, d)| n.dot(&p.coords) - d).fold(f64::MIN, f64::max), i))
+            .map(|&i| (pl.iter().map(|(n, d)| n.dot(&pts[i].coords) - d).fold(f64::MIN, f64::max), i))
             .filter(|&(d, i)| d > 0.0 && !chosen.contains(&i))
             .collect();
+        open = outside.iter().map(|&(_, i)| i).collect();
         outside.sort_by(|a, b| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1)));
         best = Some((h, outside.first().map_or(0.0, |o| o.0)));
         // The farthest first; several at a time while far from the cap (fewer hulls to build).
@@ -579,6 +600,9 @@ fn capped(part: ConvexPart, max: usize, simplified: &mut Simplified) -> ConvexPa
     }
     match best {
         Some((h, out)) => {
+            // How far the exact hull reaches beyond (over every vertex, not just the candidates).
+            let pl = planes(&h);
+            let out = pts.iter().map(|p| pl.iter().map(|(n, d)| n.dot(&p.coords) - d).fold(f64::MIN, f64::max)).fold(out, f64::max).max(0.0);
             simplified.parts += 1;
             simplified.before = simplified.before.max(part.vertices.len());
             simplified.after = simplified.after.max(h.vertices.len());

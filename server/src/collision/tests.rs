@@ -525,5 +525,5 @@ fn decomposition_plan_lowers_resolution_with_triangles_and_gives_up() {
     // Over budget: the L keeps its hull, and says why.
     let s = body_shape(&l_mesh(), &ShapeOptions { decomposition_budget: 0, ..o });
     assert_eq!(s.kind, ShapeKind::Hull);
-    assert!(s.warnings.iter().any(|w| w.contains("exceeds the work budget")), "{:?}", s.warnings);
+    assert!(s.warnings.iter().any(|w| w.contains("exceeds its work budget")), "{:?}", s.warnings);
 }
