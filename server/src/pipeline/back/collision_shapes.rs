@@ -79,7 +79,8 @@ pub struct CollisionReport {
     pub default_allowed: Vec<AllowedPair>,
 }
 
-/// How a conversion got its shapes: computed, or served by the shape cache.
+/// How a conversion got its shapes (distinct meshes: bodies with the same mesh share one):
+/// computed, or served by the shape cache.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct ShapeCounts {
     pub computed: usize,
@@ -87,16 +88,24 @@ pub struct ShapeCounts {
 }
 
 /// Every body's shape (None: no mesh), with how many were computed and how many came from
-/// `cache`. Bodies are taken from a shared counter by as many threads as there are cores, the
-/// largest meshes first, so a cluster of expensive bodies spreads over the threads; each
-/// result lands at its body's index, so the output does not depend on the threads.
+/// `cache`. Distinct meshes (by [`ShapeKey`]) are taken from a shared counter by as many threads
+/// as there are cores, the largest first, so a cluster of expensive bodies spreads over the
+/// threads; each result lands at its bodies' indices, so the output does not depend on the
+/// threads.
 pub fn body_shapes(model: &Model, opts: &ShapeOptions, cache: Option<&dyn ShapeCache>) -> (Vec<Option<BodyShape>>, ShapeCounts) {
-    let shape_of = |mesh: &Mesh| -> (BodyShape, bool) {
-        let key = cache.map(|_| ShapeKey::of(mesh, opts));
-        if let (Some(c), Some(k)) = (cache, &key) {
-            if let Some(s) = c.get(k) {
-                return (s, true);
-            }
+    // Bodies with the same mesh (a hand's identical fingers) share one computation.
+    let mut unique: BTreeMap<ShapeKey, (usize, &Mesh)> = BTreeMap::new();
+    let mut key_of: Vec<Option<ShapeKey>> = vec![None; model.bodies.len()];
+    for (i, b) in model.bodies.iter().enumerate() {
+        if let Some(m) = &b.mesh {
+            let k = ShapeKey::of(m, opts);
+            key_of[i] = Some(k);
+            unique.entry(k).or_insert((i, m));
+        }
+    }
+    let shape_of = |key: &ShapeKey, mesh: &Mesh| -> (BodyShape, bool) {
+        if let Some(s) = cache.and_then(|c| c.get(key)) {
+            return (s, true);
         }
         let mut s = collision::body_shape(mesh, opts);
         // Mesh coordinates are f32: written with the digits they have (0.06, not
@@ -107,20 +116,23 @@ pub fn body_shapes(model: &Model, opts: &ShapeOptions, cache: Option<&dyn ShapeC
             }
             p.radius = tidy(p.radius);
         }
-        if let (Some(c), Some(k)) = (cache, key) {
-            c.put(k, &s);
+        if let Some(c) = cache {
+            c.put(*key, &s);
         }
         (s, false)
     };
-    // Largest meshes first (ties by index: deterministic, not that it matters for the result).
-    let mut order: Vec<(usize, &Mesh)> = model.bodies.iter().enumerate().filter_map(|(i, b)| Some((i, b.mesh.as_ref()?))).collect();
-    order.sort_by_key(|&(i, m)| (std::cmp::Reverse(m.triangles.len()), i));
+    // Largest meshes first (ties by body index).
+    let mut order: Vec<(ShapeKey, usize, &Mesh)> = unique.iter().map(|(k, &(i, m))| (*k, i, m)).collect();
+    order.sort_by_key(|&(_, i, m)| (std::cmp::Reverse(m.triangles.len()), i));
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get()).min(order.len());
-    let done: Vec<(usize, BodyShape, bool)> = if threads < 2 {
-        order.iter().map(|&(i, m)| {
-            let (s, hit) = shape_of(m);
-            (i, s, hit)
-        }).collect()
+    let done: Vec<(ShapeKey, BodyShape, bool)> = if threads < 2 {
+        order
+            .iter()
+            .map(|(k, _, m)| {
+                let (s, hit) = shape_of(k, m);
+                (*k, s, hit)
+            })
+            .collect()
     } else {
         let next = AtomicUsize::new(0);
         std::thread::scope(|scope| {
@@ -128,9 +140,9 @@ pub fn body_shapes(model: &Model, opts: &ShapeOptions, cache: Option<&dyn ShapeC
                 .map(|_| {
                     scope.spawn(|| {
                         let mut mine = Vec::new();
-                        while let Some(&(i, m)) = order.get(next.fetch_add(1, Ordering::Relaxed)) {
-                            let (s, hit) = shape_of(m);
-                            mine.push((i, s, hit));
+                        while let Some((k, _, m)) = order.get(next.fetch_add(1, Ordering::Relaxed)) {
+                            let (s, hit) = shape_of(k, m);
+                            mine.push((*k, s, hit));
                         }
                         mine
                     })
@@ -139,16 +151,17 @@ pub fn body_shapes(model: &Model, opts: &ShapeOptions, cache: Option<&dyn ShapeC
             handles.into_iter().flat_map(|h| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e))).collect()
         })
     };
-    let mut shapes: Vec<Option<BodyShape>> = vec![None; model.bodies.len()];
     let mut counts = ShapeCounts::default();
-    for (i, s, hit) in done {
+    let mut by_key: BTreeMap<ShapeKey, BodyShape> = BTreeMap::new();
+    for (k, s, hit) in done {
         if hit {
             counts.cached += 1;
         } else {
             counts.computed += 1;
         }
-        shapes[i] = Some(s);
+        by_key.insert(k, s);
     }
+    let shapes = key_of.iter().map(|k| k.as_ref().and_then(|k| by_key.get(k).cloned())).collect();
     (shapes, counts)
 }
 
