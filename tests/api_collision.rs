@@ -104,9 +104,14 @@ async fn shapes_matrix_interferences_and_motions() {
     assert_eq!(s["pairs"], json!([]));
 
     // A new version keeps the edit (keyed by names); a package regenerated now declares the
-    // pair unchecked in its contact model.
+    // pair unchecked in its contact model. Its meshes are unchanged: every shape comes from the
+    // service's shape cache, none is computed.
+    let before = app.shape_cache_stats();
+    assert_eq!((before.misses, before.hits), (3, 0), "the first version computed the three links' shapes: {before:?}");
     let (_, v2, job2) = app.upload_version_ok(&id, bundle, &[]).await;
     assert_eq!(app.wait_for_job(&job2).await["status"], "succeeded");
+    let after = app.shape_cache_stats();
+    assert_eq!((after.misses, after.hits), (3, 3), "the new version computed no shape: {after:?}");
     let m = json_of(app.get(&base).await, 200).await;
     assert_eq!(pair(&m, "BASE", "LINK_FORE")["allowed"], true);
     assert_eq!(pair(&m, "BASE", "LINK_FORE")["custom"], true);

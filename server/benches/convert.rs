@@ -63,6 +63,17 @@ fn bench(c: &mut Criterion) {
             g.bench_function("left_hand_with_11MB_of_stl", |b| {
                 b.iter(|| pipeline::convert(&bundle, &Options::default()).expect("converts"))
             });
+            // The same with every shape served by the shape cache (a re-export in the service).
+            let cache: std::sync::Arc<dyn cad2mo::collision::ShapeCache> = std::sync::Arc::new(cad2mo::collision::MemoryShapeCache::default());
+            let cached = Options { shape_cache: Some(cache), ..Options::default() };
+            assert_eq!(pipeline::convert(&bundle, &cached).expect("converts").shapes.cached, 0);
+            g.bench_function("left_hand_with_11MB_of_stl_shapes_cached", |b| {
+                b.iter(|| {
+                    let out = pipeline::convert(&bundle, &cached).expect("converts");
+                    assert_eq!(out.shapes.computed, 0);
+                    out
+                })
+            });
             // The job's whole build: one conversion that plans the drive from its report, then
             // the zip (deflate of the DXF text dominates).
             let files: Vec<(String, Vec<u8>)> = bundle.paths().map(|p| (p.to_string(), bundle.get(p).unwrap_or_default().to_vec())).collect();

@@ -52,7 +52,7 @@ impl App {
         let listener = TcpListener::bind(settings.bind).await.with_context(|| format!("binding {}", settings.bind))?;
         let relay = crate::relay::Relay::start(settings.live_bind, settings.requires_auth(), store.clone(), blobs.clone()).await;
         let live = relay.addr().map(|a| (settings.live_host(), a.port()));
-        let jobs = Jobs::start(store.clone(), blobs.clone(), settings.workers, live, settings.lease)
+        let jobs = Jobs::start(store.clone(), blobs.clone(), settings.workers, live, settings.lease, settings.shape_cache_bytes)
             .await
             .context("starting the conversion workers")?;
         let addr = listener.local_addr().unwrap_or(settings.bind);

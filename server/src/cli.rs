@@ -487,7 +487,7 @@ fn reexport(settings: crate::config::Settings, model: Option<String>) -> ExitCod
                 }
             }
             let live = settings.live_bind.map(|a| (settings.live_host(), a.port()));
-            let pool = crate::jobs::Jobs::start(store.clone(), blobs, settings.workers, live, settings.lease).await?;
+            let pool = crate::jobs::Jobs::start(store.clone(), blobs, settings.workers, live, settings.lease, settings.shape_cache_bytes).await?;
             pool.notify();
             let total = jobs.len();
             let mut done = 0;

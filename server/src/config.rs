@@ -32,6 +32,10 @@ pub struct ServeArgs {
     /// Conversion worker threads (default: the number of cores).
     #[arg(long, env = "CAD2MO_WORKERS")]
     pub workers: Option<usize>,
+    /// Megabytes of collision shapes kept in memory by mesh content, shared by all conversions
+    /// (re-exports and new versions reuse the shapes of unchanged meshes); 0: none kept.
+    #[arg(long, env = "CAD2MO_SHAPE_CACHE_MB", default_value_t = 256)]
+    pub shape_cache_mb: usize,
     /// Require bearer tokens even on loopback (they are always required beyond it).
     #[arg(long, env = "CAD2MO_REQUIRE_AUTH")]
     pub require_auth: bool,
@@ -86,6 +90,8 @@ pub struct Settings {
     pub data_dir: PathBuf,
     pub max_upload: u64,
     pub workers: usize,
+    /// Bytes of the process's collision shape cache (see `crate::collision::MemoryShapeCache`).
+    pub shape_cache_bytes: usize,
     /// Require tokens even on loopback.
     pub force_auth: bool,
     /// Upload checks (bundle analyses) at once.
@@ -119,6 +125,7 @@ impl Settings {
             data_dir: a.data_dir,
             max_upload: a.max_upload,
             workers,
+            shape_cache_bytes: a.shape_cache_mb.saturating_mul(1 << 20),
             force_auth: a.require_auth,
             max_checks: a.max_checks.filter(|n| *n > 0).unwrap_or(workers),
             check_wait: std::time::Duration::try_from_secs_f64(a.check_wait.clamp(0.0, 600.0)).unwrap_or_default(),
@@ -143,6 +150,7 @@ impl Settings {
             data_dir: dir.to_path_buf(),
             max_upload: 64 * 1024 * 1024,
             workers: 2,
+            shape_cache_bytes: crate::collision::DEFAULT_CACHE_BYTES,
             force_auth: false,
             max_checks: 2,
             check_wait: std::time::Duration::from_secs(10),

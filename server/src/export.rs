@@ -87,6 +87,8 @@ pub struct Built {
     /// `report.json`, byte-identical to the copy inside the zip.
     pub report_json: Vec<u8>,
     pub summary: Summary,
+    /// Collision shapes computed by this build and served by the shape cache.
+    pub shapes: pipeline::back::collision_shapes::ShapeCounts,
 }
 
 /// What a bundle check found (the upload-time analysis).
@@ -177,6 +179,7 @@ pub fn build_package(
     opts.name_hints = context.name_hints.clone();
     opts.live = context.live.clone();
     opts.collision_edits = context.collision_edits.clone();
+    opts.shape_cache = context.shape_cache.clone();
     let mut obs = BuildObserver {
         drives,
         motions,
@@ -206,7 +209,7 @@ pub fn build_package(
     }
     let package_zip = write_zip_observed(&files, &mut |done, total| progress(BuildStep { stage: BuildStage::Package, done, total }))
         .map_err(ExportError::Zip)?;
-    Ok(Built { package_zip, report_json, summary: Summary::of(&out.report) })
+    Ok(Built { package_zip, report_json, summary: Summary::of(&out.report), shapes: out.shapes })
 }
 
 /// What a version's package is written for beyond its bundle and options: the Modelica names of
@@ -218,6 +221,8 @@ pub struct Context {
     pub live: Option<pipeline::back::modelica::mechatronics::live::LiveTarget>,
     /// The model's allowed-collision edits.
     pub collision_edits: pipeline::back::collision_shapes::AllowedEdits,
+    /// The process's collision shapes by mesh content (see [`pipeline::Options::shape_cache`]).
+    pub shape_cache: Option<std::sync::Arc<dyn crate::collision::ShapeCache>>,
 }
 
 /// The model's motions and joint limits, for the package's `Motions` and sizing files.

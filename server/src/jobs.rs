@@ -50,6 +50,7 @@ use tokio::task::{JoinHandle, JoinSet};
 use tracing::Instrument;
 
 use crate::api::ApiError;
+use crate::collision::{CacheStats, MemoryShapeCache};
 use crate::export::{self, BuildStage, BuildStep, ExportOptions};
 use crate::pipeline::observe::Stage;
 use crate::store::blobs::Blobs;
@@ -70,6 +71,7 @@ pub struct Jobs {
     wake: mpsc::Sender<()>,
     board: ProgressBoard,
     halt: Arc<Halt>,
+    shapes: Arc<MemoryShapeCache>,
 }
 
 /// Stops the dispatcher: the signal, and the dispatcher's task to wait for.
@@ -88,6 +90,8 @@ struct Ctx {
     live: Option<(String, u16)>,
     /// This instance's claims: its id and the lease time.
     claimer: Claimer,
+    /// Collision shapes by mesh content, shared by every job of the process.
+    shapes: Arc<MemoryShapeCache>,
 }
 
 /// Where a running job is.
@@ -194,6 +198,7 @@ impl Jobs {
         workers: usize,
         live: Option<(String, u16)>,
         lease: Duration,
+        shape_cache_bytes: usize,
     ) -> Result<Jobs, StoreError> {
         let requeued = models::requeue_unfinished(&store.pool).await?;
         if requeued > 0 {
@@ -204,13 +209,20 @@ impl Jobs {
         let instance = uuid::Uuid::new_v4().simple().to_string();
         tracing::info!(instance = %instance, lease_secs = lease.as_secs_f64(), "job queue instance");
         let claimer = Claimer { instance, lease_secs: lease.as_secs_f64().max(0.1) };
-        let ctx = Ctx { store, blobs, board: board.clone(), live, claimer };
+        let shapes = Arc::new(MemoryShapeCache::new(shape_cache_bytes));
+        let ctx = Ctx { store, blobs, board: board.clone(), live, claimer, shapes: shapes.clone() };
         let (signal, halted) = watch::channel(false);
         let dispatcher = tokio::spawn(dispatch(ctx, workers.max(1), rx, halted).instrument(tracing::info_span!("jobs")));
         let halt = Arc::new(Halt { signal, dispatcher: Mutex::new(Some(dispatcher)) });
-        let jobs = Jobs { wake, board, halt };
+        let jobs = Jobs { wake, board, halt, shapes };
         jobs.notify(); // pick up what is already queued
         Ok(jobs)
+    }
+
+    /// The counters of the process's collision shape cache: shapes served to jobs from it
+    /// (`hits`) and computed by them (`misses`).
+    pub fn shape_cache_stats(&self) -> CacheStats {
+        self.shapes.stats()
     }
 
     /// Tells the dispatcher that jobs may be queued (call after committing one).
@@ -463,7 +475,8 @@ async fn convert(ctx: &Ctx, job: &ClaimedJob) -> Result<Stored, ApiError> {
         _ => None,
     };
     let collision_edits = crate::store::collision::edits(&ctx.store, &job.model_id).await?.into_iter().map(|(a, b, x)| ((a, b), x)).collect();
-    let context = export::Context { name_hints: hints, live, collision_edits };
+    let shape_cache: Arc<dyn crate::collision::ShapeCache> = ctx.shapes.clone();
+    let context = export::Context { name_hints: hints, live, collision_edits, shape_cache: Some(shape_cache) };
     let blobs = ctx.blobs.clone();
     let board = ctx.board.clone();
     let job_id = job.id.clone();
@@ -485,6 +498,7 @@ async fn convert(ctx: &Ctx, job: &ClaimedJob) -> Result<Stored, ApiError> {
                     board.set(&job_id, p);
                 }
             })?;
+            tracing::info!(computed = built.shapes.computed, cached = built.shapes.cached, "collision shapes");
             board.set(&job_id, JobProgress::storing());
             let summary_json = serde_json::to_string(&built.summary).map_err(|e| ApiError::Internal(e.into()))?;
             // Blobs first: the database points at them only once they are complete on disk.

@@ -97,6 +97,11 @@ impl TestApp {
     }
 
     /// The data folder (database and blobs).
+    /// The counters of the service's collision shape cache (shared by all its jobs).
+    pub fn shape_cache_stats(&self) -> cad2mo::collision::CacheStats {
+        self.jobs.shape_cache_stats()
+    }
+
     pub fn data_dir(&self) -> &Path {
         self.dir.as_ref().expect("data folder").path()
     }

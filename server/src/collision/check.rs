@@ -104,17 +104,14 @@ fn arr(p: &Point3<f64>) -> [f64; 3] {
     [p.x, p.y, p.z]
 }
 
-/// Pairs of bodies whose world AABBs, each grown by `grow`, overlap (a < b, both with shapes).
-fn broad_pairs(aabbs: &[Option<Aabb>], grow: f64, out: &mut Vec<(usize, usize)>, seen: &mut Vec<u64>, stamp: u64) {
+/// Pairs of bodies whose world AABBs, each grown by `grow`, overlap (a < b, both with shapes),
+/// sorted. Work and memory grow with the bodies and the overlapping pairs, not with n².
+fn broad_pairs(aabbs: &[Option<Aabb>], grow: f64, out: &mut Vec<(usize, usize)>) {
     out.clear();
     let ids: Vec<usize> = (0..aabbs.len()).filter(|&i| aabbs[i].is_some()).collect();
     let leaves: Vec<Aabb> = ids.iter().filter_map(|&i| aabbs[i].map(|b| b.loosened(grow))).collect();
     if leaves.len() < 2 {
         return;
-    }
-    let n = aabbs.len();
-    if seen.len() < n * n {
-        seen.resize(n * n, 0);
     }
     let bvh = Bvh::from_leaves(BvhBuildStrategy::Binned, &leaves);
     for (i, j) in bvh.leaf_pairs(&bvh, |x, y| x.aabb().intersects(&y.aabb())) {
@@ -123,12 +120,13 @@ fn broad_pairs(aabbs: &[Option<Aabb>], grow: f64, out: &mut Vec<(usize, usize)>,
             continue;
         }
         let (a, b) = (i.min(j), i.max(j));
-        if seen[a * n + b] != stamp && leaves_overlap(&aabbs[a], &aabbs[b], grow) {
-            seen[a * n + b] = stamp;
+        if leaves_overlap(&aabbs[a], &aabbs[b], grow) {
             out.push((a, b));
         }
     }
+    // A pair may be met in both orders.
     out.sort_unstable();
+    out.dedup();
 }
 
 fn leaves_overlap(a: &Option<Aabb>, b: &Option<Aabb>, grow: f64) -> bool {
@@ -153,8 +151,7 @@ pub fn contacts_at(world: &World, poses: &[Isometry3<f64>], checked: &dyn Fn(usi
         })
         .collect();
     let mut pairs = Vec::new();
-    let mut seen = Vec::new();
-    broad_pairs(&aabbs, margin / 2.0 + 1e-12, &mut pairs, &mut seen, 1);
+    broad_pairs(&aabbs, margin / 2.0 + 1e-12, &mut pairs);
     let mut out = Vec::new();
     for (a, b) in pairs {
         if !checked(a, b) {
@@ -175,6 +172,12 @@ pub fn contacts_at(world: &World, poses: &[Isometry3<f64>], checked: &dyn Fn(usi
         }
     }
     out
+}
+
+#[cfg(test)]
+thread_local! {
+    /// Body pairs this thread gave to the narrow phase of [`contacts_at`] (tests count them).
+    pub(crate) static NARROW_PHASE: std::cell::Cell<usize> = const { std::cell::Cell::new(0) };
 }
 
 /// Options of [`sweep`].
@@ -331,10 +334,8 @@ pub fn sweep(
     let block = opts.block.max(1);
     let mut aabbs: Vec<Option<Aabb>> = vec![None; nb];
     let mut pairs = Vec::new();
-    let mut seen = Vec::new();
     let mut evaluations = 0usize;
     let mut s0 = 0usize;
-    let mut stamp = 0u64;
     loop {
         let s1 = (s0 + block).min(n - 1);
         // Swept AABBs over [s0, s1], grown by the largest step bound in the block.
@@ -349,8 +350,7 @@ pub fn sweep(
                 bb.loosened(grow)
             });
         }
-        stamp += 1;
-        broad_pairs(&aabbs, near / 2.0 + 1e-12, &mut pairs, &mut seen, stamp);
+        broad_pairs(&aabbs, near / 2.0 + 1e-12, &mut pairs);
         for &(a, b) in &pairs {
             let si = index[a * nb + b];
             if si == usize::MAX {
@@ -496,6 +496,8 @@ fn pair_distance(pa: &Prepared, xa: &Isometry3<f64>, pb: &Prepared, xb: &Isometr
 
 /// The contact (deepest or nearest part pair) of two bodies if their distance ≤ `prediction`.
 fn pair_contact(pa: &Prepared, xa: &Isometry3<f64>, pb: &Prepared, xb: &Isometry3<f64>, prediction: f64) -> Option<query::Contact> {
+    #[cfg(test)]
+    NARROW_PHASE.with(|n| n.set(n.get() + 1));
     let mut best: Option<query::Contact> = None;
     for (gap, i, j) in part_pairs(pa, xa, pb, xb) {
         // Sorted by gap: nothing further can be within prediction, or nearer/deeper than best.

@@ -14,10 +14,12 @@ pub struct ConvexPart {
     pub radius: f64,
 }
 
+mod cache;
 mod check;
 mod shape;
 #[cfg(test)]
 mod tests;
 
 pub use check::{contacts_at, sweep, Contact, PairSweep, Sweep, SweepOptions, World};
-pub use shape::{body_shape, obj_text, BodyShape, ShapeKind, ShapeOptions};
+pub use cache::{shape_bytes, CacheStats, MemoryShapeCache, ShapeCache, ShapeKey, DEFAULT_CACHE_BYTES};
+pub use shape::{body_shape, decomposition_plan, obj_text, BodyShape, DecompositionPlan, ShapeKind, ShapeOptions};

@@ -28,8 +28,16 @@ pub struct ShapeOptions {
     pub decompose_ratio: f64,
     /// Most parts of a decomposition (default 16).
     pub max_parts: u32,
-    /// VHACD voxel resolution (default 64).
+    /// Highest VHACD voxel resolution (default 40: a third of the time of 64 on the left-hand
+    /// fixture's fingers, fit errors within 2.3 mm of it); lower when the work budget requires it.
     pub vhacd_resolution: u32,
+    /// Work budget of one body's decomposition, in estimated work units ([`decomposition_work`],
+    /// about a microsecond each; default 180,000: resolution 40 up to 8,400 triangles). The voxel resolution is the highest (in steps
+    /// of 8, at least 16) whose estimate fits, for the mesh's triangle count and the depth that
+    /// `max_parts` needs. A mesh whose triangles alone take more than half the budget is first
+    /// simplified by vertex clustering to fit; if nothing fits, the body keeps its hull. Each is
+    /// warned. Deterministic: the same mesh and options always give the same plan (no clock).
+    pub decomposition_budget: u64,
     /// Sides of the polygon prism standing for a cylinder (default 24); the prism circumscribes
     /// the cylinder, its extra size (R·(1/cos(π/n) − 1), 0.9 % of R) is part of the fit error.
     pub cylinder_sides: usize,
@@ -37,8 +45,9 @@ pub struct ShapeOptions {
     pub max_triangles: usize,
     /// Clustering grid for simplification: cells per bounding-box diagonal (default 100).
     pub simplify_cells: f64,
-    /// Most vertices of a hull or decomposition part (default 1000); bigger hulls are rebuilt
-    /// from their vertices clustered on a coarser grid (warned).
+    /// Most vertices of a hull or decomposition part (default 96, so that GJK's support
+    /// function, a scan over the vertices, stays cheap); bigger hulls are rebuilt from their
+    /// vertices clustered on a coarser grid (warned).
     pub max_hull_vertices: usize,
     /// Thickness of the fallback shape of a flat mesh, and radius for a line or point (default 1 mm).
     pub thin_thickness: f64,
@@ -52,11 +61,12 @@ impl Default for ShapeOptions {
             primitive_volume_tolerance: 0.15,
             decompose_ratio: 1.25,
             max_parts: 16,
-            vhacd_resolution: 64,
+            vhacd_resolution: 40,
+            decomposition_budget: 180_000,
             cylinder_sides: 24,
             max_triangles: 100_000,
             simplify_cells: 100.0,
-            max_hull_vertices: 1000,
+            max_hull_vertices: 96,
             thin_thickness: 1e-3,
         }
     }
@@ -262,21 +272,26 @@ fn shape_inner(mesh: &Mesh, opts: &ShapeOptions) -> BodyShape {
     }
     // The hull's simplification warning only matters if the hull is the shape.
     let mut hull_warnings = Vec::new();
-    let Some(hull) = hull_part(&pts).map(|h| capped(h, opts.max_hull_vertices, &mut hull_warnings)) else {
+    let Some(full) = hull_part(&pts) else {
         warnings.push("convex hull failed: a bounding box instead".into());
         let b = box_from_axes(&pts, &Matrix3::identity());
         let vol = b.vol;
         return finish(b, vol, source_triangles, warnings);
     };
+    // The exact hull's volume decides about decomposition; the shape is the capped hull.
+    let full_vol = part_volume(&full);
+    let mut simplified = Simplified::default();
+    let hull = capped(full, opts.max_hull_vertices, &mut simplified);
+    simplified.warn("hull", 1, &mut hull_warnings);
     let hull_vol = part_volume(&hull);
-    let use_mesh_volume = closed && mesh_volume > 1e-9 * hull_vol;
+    let use_mesh_volume = closed && mesh_volume > 1e-9 * full_vol;
     let denom = if use_mesh_volume {
         mesh_volume
     } else {
         warnings.push(format!(
             "mesh not closed ({open_edges} open or non-manifold edges): volume ratio against the hull, no decomposition"
         ));
-        hull_vol
+        full_vol
     };
     let tol = opts.primitive_abs_tolerance.max(opts.primitive_rel_tolerance * diag);
     let v = opts.primitive_volume_tolerance;
@@ -335,22 +350,43 @@ fn shape_inner(mesh: &Mesh, opts: &ShapeOptions) -> BodyShape {
     }
     let hull_err = shape_error(std::slice::from_ref(&hull), &samples);
     let hull_cand = Cand { kind: ShapeKind::Hull, parts: vec![hull], err: hull_err, vol: hull_vol };
-    if use_mesh_volume && hull_vol / denom > opts.decompose_ratio {
+    if use_mesh_volume && full_vol / denom > opts.decompose_ratio {
         if huge {
             warnings.push("hull much bigger than the mesh, but the mesh is huge: hull, no decomposition".into());
-        } else {
-            match decompose(&pts, &tris, opts) {
+        } else if let Some((plan, dpts, dtris, moved)) = decomposition_input(&pts, &tris, diag, opts) {
+            match decompose(&dpts, &dtris, opts, &plan) {
                 Some(parts) if parts.len() >= 2 => {
-                    let parts: Vec<ConvexPart> = parts.into_iter().map(|p| capped(p, opts.max_hull_vertices, &mut warnings)).collect();
+                    if let Some(moved) = moved {
+                        warnings.push(format!(
+                            "mesh of {} triangles simplified to {} by vertex clustering for the convex decomposition, to stay within its work budget (vertices moved ≤ {moved:.2e} m)",
+                            tris.len(),
+                            dtris.len()
+                        ));
+                    }
+                    if plan.resolution < opts.vhacd_resolution {
+                        warnings.push(format!(
+                            "convex decomposition at voxel resolution {} instead of {} to stay within its work budget ({} triangles): coarser parts",
+                            plan.resolution, opts.vhacd_resolution, dtris.len()
+                        ));
+                    }
+                    let mut simplified = Simplified::default();
+                    let parts: Vec<ConvexPart> = parts.into_iter().map(|p| capped(p, opts.max_hull_vertices, &mut simplified)).collect();
+                    simplified.warn("decomposition part", parts.len(), &mut warnings);
                     let vol: f64 = parts.iter().map(part_volume).sum();
                     let err = shape_error(&parts, &samples);
                     return finish(Cand { kind: ShapeKind::Decomposition, parts, err, vol }, denom, source_triangles, warnings);
                 }
                 _ => warnings.push(format!(
                     "hull is {:.2}× the mesh volume but the convex decomposition failed: hull",
-                    hull_vol / denom
+                    full_vol / denom
                 )),
             }
+        } else {
+            warnings.push(format!(
+                "hull is {:.2}× the mesh volume, but a convex decomposition of {} triangles exceeds its work budget even simplified and at voxel resolution {MIN_RESOLUTION}: hull",
+                full_vol / denom,
+                tris.len()
+            ));
         }
     }
     warnings.extend(hull_warnings);
@@ -470,35 +506,111 @@ fn cluster(pts: &[P3], tris: &[[u32; 3]], cell: f64) -> (Vec<P3>, Vec<[u32; 3]>)
     (out, t2)
 }
 
-/// A hull part with at most `max` vertices: rebuilt from its vertices clustered on ever coarser
-/// grids (warned); unchanged when small enough or when rebuilding fails.
-fn capped(part: ConvexPart, max: usize, warnings: &mut Vec<String>) -> ConvexPart {
-    if part.vertices.len() <= max.max(8) {
+/// What [`capped`] did to the parts of one shape, for one warning per shape.
+#[derive(Default)]
+struct Simplified {
+    parts: usize,
+    /// Largest vertex count before, largest after.
+    before: usize,
+    after: usize,
+    /// Farthest a dropped vertex lies outside its simplified part, m.
+    outside: f64,
+}
+
+impl Simplified {
+    /// One warning: `what` (`hull`, `decomposition part`) of `of` simplified.
+    fn warn(&self, what: &str, of: usize, warnings: &mut Vec<String>) {
+        if self.parts == 0 {
+            return;
+        }
+        let which = if of == 1 { what.to_string() } else { format!("{} of {of} {what}s", self.parts) };
+        warnings.push(format!(
+            "{which} simplified to at most {} vertices (from up to {}; the exact hull reaches ≤ {:.2e} m beyond it): faster contacts",
+            self.after, self.before, self.outside
+        ));
+    }
+}
+
+/// A hull part with at most `max` vertices (noted in `simplified`): a subset of its vertices,
+/// chosen greedily (the six extremes along the axes, then the vertices farthest outside the
+/// hull so far, a quarter of the room left at a time), so the simplified hull lies inside the
+/// exact one and misses little of it. Unchanged when small enough or when a hull fails.
+fn capped(part: ConvexPart, max: usize, simplified: &mut Simplified) -> ConvexPart {
+    let max = max.max(8);
+    if part.vertices.len() <= max || part.radius != 0.0 {
         return part;
     }
     let pts: Vec<P3> = part.vertices.iter().map(|v| P3::from(*v)).collect();
-    let (lo, hi) = bounds(&pts);
-    let diag = (hi - lo).norm();
-    let mut cells = 256.0;
-    while cells >= 2.0 {
-        let cell = diag / cells;
-        let (q, _) = cluster(&pts, &[], cell);
-        if q.len() <= max.max(8) {
-            if let Some(h) = hull_part(&q) {
-                if h.vertices.len() <= max.max(8) {
-                    warnings.push(format!(
-                        "hull of {} vertices simplified to {} (vertices moved ≤ {:.2e} m)",
-                        part.vertices.len(),
-                        h.vertices.len(),
-                        cell * 3f64.sqrt()
-                    ));
-                    return h;
-                }
-            }
-        }
-        cells /= 1.25;
+    let mut chosen: Vec<usize> = Vec::with_capacity(max);
+    for axis in 0..3 {
+        let by = |a: &&P3, b: &&P3| a[axis].total_cmp(&b[axis]);
+        let lo = pts.iter().enumerate().min_by(|a, b| by(&a.1, &b.1)).map(|(i, _)| i);
+        let hi = pts.iter().enumerate().max_by(|a, b| by(&a.1, &b.1)).map(|(i, _)| i);
+        chosen.extend(lo.into_iter().chain(hi).filter(|i| !chosen.contains(i)).collect::<Vec<_>>());
     }
-    part
+    // The farthest point from the first (a tetrahedron at least, for a flat set of extremes).
+    if let Some(far) = (0..pts.len()).max_by(|&a, &b| (pts[a] - pts[chosen[0]]).norm().total_cmp(&(pts[b] - pts[chosen[0]]).norm())) {
+        if !chosen.contains(&far) {
+            chosen.push(far);
+        }
+    }
+    let mut best: Option<(ConvexPart, f64)> = None;
+    // Candidates: every vertex, or for a big hull one per cell of a grid coarse enough to leave
+    // at most 8 × max (still vertices of the exact hull). Points inside a hull stay inside the
+    // later ones (each hull contains the one before): they are dropped as they are passed.
+    let mut open: Vec<usize> = (0..pts.len()).collect();
+    if pts.len() > 8 * max {
+        let (lo, hi) = bounds(&pts);
+        let diag = (hi - lo).norm().max(1e-12);
+        let mut cells = 256.0f64;
+        while cells >= 2.0 {
+            let cell = diag / cells;
+            let mut seen = std::collections::HashSet::new();
+            let sub: Vec<usize> = (0..pts.len())
+                .filter(|&i| seen.insert(((pts[i].x / cell).floor() as i64, (pts[i].y / cell).floor() as i64, (pts[i].z / cell).floor() as i64)))
+                .collect();
+            if sub.len() <= 8 * max {
+                open = sub;
+                break;
+            }
+            cells /= 1.25;
+        }
+    }
+    while chosen.len() <= max {
+        let sub: Vec<P3> = chosen.iter().map(|&i| pts[i]).collect();
+        let Some(h) = hull_part(&sub) else { break };
+        if h.vertices.len() > max {
+            break;
+        }
+        let pl = planes(&h);
+        let mut outside: Vec<(f64, usize)> = open
+            .iter()
+            .map(|&i| (pl.iter().map(|(n, d)| n.dot(&pts[i].coords) - d).fold(f64::MIN, f64::max), i))
+            .filter(|&(d, i)| d > 0.0 && !chosen.contains(&i))
+            .collect();
+        open = outside.iter().map(|&(_, i)| i).collect();
+        outside.sort_by(|a, b| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1)));
+        best = Some((h, outside.first().map_or(0.0, |o| o.0)));
+        // The farthest first; several at a time while far from the cap (fewer hulls to build).
+        let room = max - chosen.len();
+        if outside.is_empty() || room == 0 {
+            break;
+        }
+        chosen.extend(outside.iter().take((room / 4).max(1)).map(|&(_, i)| i));
+    }
+    match best {
+        Some((h, out)) => {
+            // How far the exact hull reaches beyond (over every vertex, not just the candidates).
+            let pl = planes(&h);
+            let out = pts.iter().map(|p| pl.iter().map(|(n, d)| n.dot(&p.coords) - d).fold(f64::MIN, f64::max)).fold(out, f64::max).max(0.0);
+            simplified.parts += 1;
+            simplified.before = simplified.before.max(part.vertices.len());
+            simplified.after = simplified.after.max(h.vertices.len());
+            simplified.outside = simplified.outside.max(out);
+            h
+        }
+        None => part,
+    }
 }
 
 /// Fit samples: every vertex and every triangle centroid.
@@ -765,10 +877,80 @@ fn fit_capsule(hull_pts: &[P3], samples: &[P3], u: &V3) -> Option<Cand> {
     Some(Cand { kind: ShapeKind::Capsule, parts: vec![part_of(&[a, b], Vec::new(), r)], err, vol })
 }
 
+/// The decomposition that a body's budget allows: VHACD voxel resolution and the split depth.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct DecompositionPlan {
+    pub resolution: u32,
+    /// Binary split levels parry's VHACD makes for `max_parts` (up to 2^depth parts).
+    pub depth: u32,
+    /// Estimated work units (compared with [`ShapeOptions::decomposition_budget`]).
+    pub work: u64,
+}
+
+/// Lowest voxel resolution a decomposition is tried at.
+const MIN_RESOLUTION: u32 = 16;
+
+/// Estimated work of a VHACD decomposition (parry 0.22) at resolution `r` of a mesh of
+/// `triangles` triangles into up to 2^`depth` parts, in units of about a microsecond of one core
+/// of the reference machine (calibrated on the left-hand and UR5 fixtures: a split level clips
+/// the voxels against ~r candidate planes, hulling the two sides, which grows about as r²; every
+/// triangle is voxelized, clipped against the parts it meets and sampled for the fit error).
+/// A count, not a clock: the same mesh always gets the same estimate.
+pub fn decomposition_work(r: u32, depth: u32, triangles: usize) -> u64 {
+    let r = u64::from(r);
+    12 * u64::from(depth) * r * r + 10 * triangles as u64
+}
+
+/// The plan for a mesh of `triangles` triangles: the highest resolution (from
+/// `opts.vhacd_resolution` down in steps of 8, not below 16) whose estimated work fits
+/// `opts.decomposition_budget`; `None` when even the lowest does not fit.
+pub fn decomposition_plan(triangles: usize, opts: &ShapeOptions) -> Option<DecompositionPlan> {
+    let max_parts = opts.max_parts.max(2);
+    // As parry's VHACD: levels until 2^depth ≥ max_parts, plus one.
+    let (mut count, mut depth) = (2u32, 1u32);
+    while max_parts > count {
+        depth += 1;
+        count = count.saturating_mul(2);
+    }
+    depth += 1;
+    let top = opts.vhacd_resolution.max(MIN_RESOLUTION);
+    let mut r = top;
+    loop {
+        let work = decomposition_work(r, depth, triangles);
+        if work <= opts.decomposition_budget {
+            return Some(DecompositionPlan { resolution: r, depth, work });
+        }
+        if r <= MIN_RESOLUTION {
+            return None;
+        }
+        r = r.saturating_sub(8).max(MIN_RESOLUTION);
+    }
+}
+
+/// What is decomposed and how: the mesh itself, or (its triangles alone taking more than half
+/// the budget) the mesh clustered on ever coarser grids until they fit, with how far vertices
+/// moved; `None` when even then no plan fits the budget.
+#[allow(clippy::type_complexity)]
+fn decomposition_input(pts: &[P3], tris: &[[u32; 3]], diag: f64, opts: &ShapeOptions) -> Option<(DecompositionPlan, Vec<P3>, Vec<[u32; 3]>, Option<f64>)> {
+    if decomposition_work(0, 0, tris.len()) <= opts.decomposition_budget / 2 {
+        return decomposition_plan(tris.len(), opts).map(|p| (p, pts.to_vec(), tris.to_vec(), None));
+    }
+    let mut cells = opts.simplify_cells.max(8.0);
+    while cells >= 8.0 {
+        let cell = diag / cells;
+        let (p2, t2) = cluster(pts, tris, cell);
+        if decomposition_work(0, 0, t2.len()) <= opts.decomposition_budget / 2 && t2.len() >= 4 {
+            return decomposition_plan(t2.len(), opts).map(|p| (p, p2, t2, Some(cell * 3f64.sqrt())));
+        }
+        cells /= 1.25;
+    }
+    None
+}
+
 /// VHACD convex decomposition; parts are hulls of the original triangles in each voxel part.
-fn decompose(pts: &[P3], tris: &[[u32; 3]], opts: &ShapeOptions) -> Option<Vec<ConvexPart>> {
+fn decompose(pts: &[P3], tris: &[[u32; 3]], opts: &ShapeOptions, plan: &DecompositionPlan) -> Option<Vec<ConvexPart>> {
     let params = VHACDParameters {
-        resolution: opts.vhacd_resolution.max(8),
+        resolution: plan.resolution,
         max_convex_hulls: opts.max_parts.max(2),
         ..VHACDParameters::default()
     };

@@ -357,7 +357,7 @@ fn huge_bumpy_mesh_gets_a_simplified_capped_hull() {
     assert_eq!(s.kind, ShapeKind::Hull, "{:?}", s.warnings);
     assert!(s.vertex_count <= 200 && s.vertex_count >= 8, "{}", s.vertex_count);
     assert!(s.warnings.iter().any(|w| w.contains("huge mesh")), "{:?}", s.warnings);
-    assert!(s.warnings.iter().any(|w| w.contains("hull of")), "{:?}", s.warnings);
+    assert!(s.warnings.iter().any(|w| w.contains("hull simplified to at most")), "{:?}", s.warnings);
     assert!(s.fit_error > 0.005 && s.fit_error < 0.03, "{}", s.fit_error);
 }
 
@@ -436,4 +436,94 @@ fn non_finite_poses_are_left_out_and_named() {
     assert_eq!(s.pairs[0].first_contact, Some(0.0));
     let c = contacts_at(&w, &poses(5), &|_, _| true, 0.0);
     assert_eq!(c.iter().map(|c| (c.a, c.b)).collect::<Vec<_>>(), vec![(0, 2)]);
+}
+
+#[test]
+fn broad_phase_scales_with_touching_pairs() {
+    // 20 × 10 × 5 = 1,000 cubes of side 0.1: overlapping their x neighbours (pitch 0.095), apart
+    // along y and z (pitch 0.12). Touching pairs: 19 × 10 × 5 = 950; all pairs: 499,500.
+    let (nx, ny, nz) = (20usize, 10usize, 5usize);
+    let cube = box_shape(0.05);
+    let shapes: Vec<Option<BodyShape>> = (0..nx * ny * nz).map(|_| Some(cube.clone())).collect();
+    let poses: Vec<Isometry3<f64>> = (0..nx * ny * nz)
+        .map(|k| at((k % nx) as f64 * 0.095, ((k / nx) % ny) as f64 * 0.12, (k / (nx * ny)) as f64 * 0.12))
+        .collect();
+    let w = World::new(&shapes);
+    check::NARROW_PHASE.with(|n| n.set(0));
+    let c = contacts_at(&w, &poses, &|_, _| true, 0.0);
+    let narrow = check::NARROW_PHASE.with(|n| n.get());
+    let touching = (nx - 1) * ny * nz;
+    assert_eq!(c.len(), touching);
+    assert!(c.iter().all(|c| c.b == c.a + 1 && (c.distance + 0.005).abs() < 1e-6), "{:?}", &c[..3]);
+    assert_eq!(narrow, touching, "the narrow phase sees only the pairs whose boxes overlap");
+}
+
+#[test]
+fn shape_key_follows_mesh_content_and_options() {
+    let (vs, ts) = box_mesh([0.0; 3], [0.1, 0.2, 0.3]);
+    let m = mesh(&vs, &ts);
+    let k = ShapeKey::of(&m, &opts());
+    assert_eq!(k, ShapeKey::of(&m.clone(), &opts()), "same content, same key");
+    let mut moved = m.clone();
+    moved.vertices[3][1] = f32::from_bits(moved.vertices[3][1].to_bits() + 1);
+    assert_ne!(k, ShapeKey::of(&moved, &opts()), "one ulp of one vertex");
+    let mut flipped = m.clone();
+    flipped.triangles[0].swap(1, 2);
+    assert_ne!(k, ShapeKey::of(&flipped, &opts()), "a triangle's winding");
+    for o in [
+        ShapeOptions { max_hull_vertices: 64, ..opts() },
+        ShapeOptions { decomposition_budget: 1, ..opts() },
+        ShapeOptions { thin_thickness: 2e-3, ..opts() },
+    ] {
+        assert_ne!(k, ShapeKey::of(&m, &o), "{o:?}");
+    }
+}
+
+#[test]
+fn memory_cache_keeps_recent_shapes_within_its_bytes() {
+    let shape = box_shape(0.05);
+    let size = shape_bytes(&shape);
+    let key = |i: u8| ShapeKey([i; 32]);
+    let c = MemoryShapeCache::new(3 * size);
+    for i in 0..3 {
+        c.put(key(i), &shape);
+    }
+    assert_eq!(c.get(&key(0)).as_ref(), Some(&shape));
+    // A fourth evicts the least recently used: 1 (0 was just read).
+    c.put(key(3), &shape);
+    assert!(c.get(&key(1)).is_none());
+    assert!(c.get(&key(0)).is_some() && c.get(&key(2)).is_some() && c.get(&key(3)).is_some());
+    let s = c.stats();
+    assert_eq!((s.hits, s.misses, s.evictions, s.entries), (4, 1, 1, 3), "{s:?}");
+    assert!(s.bytes <= 3 * size);
+    // Putting a key again replaces it without growing.
+    c.put(key(3), &shape);
+    assert_eq!(c.stats().bytes, s.bytes);
+    // A cache of 0 bytes keeps nothing.
+    let none = MemoryShapeCache::new(0);
+    none.put(key(9), &shape);
+    assert!(none.get(&key(9)).is_none());
+}
+
+#[test]
+fn decomposition_plan_lowers_resolution_with_triangles_and_gives_up() {
+    let o = opts();
+    let small = decomposition_plan(1_000, &o).expect("fits");
+    assert_eq!(small.resolution, o.vhacd_resolution);
+    let mut last = small.resolution;
+    for t in [100_000, 200_000, 400_000] {
+        match decomposition_plan(t, &o) {
+            Some(p) => {
+                assert!(p.resolution <= last && p.work <= o.decomposition_budget, "{t}: {p:?}");
+                last = p.resolution;
+            }
+            None => last = 0,
+        }
+    }
+    assert!(last < o.vhacd_resolution, "a big mesh is decomposed coarser, or not at all");
+    assert_eq!(decomposition_plan(1_000, &ShapeOptions { decomposition_budget: 0, ..o.clone() }), None);
+    // Over budget: the L keeps its hull, and says why.
+    let s = body_shape(&l_mesh(), &ShapeOptions { decomposition_budget: 0, ..o });
+    assert_eq!(s.kind, ShapeKind::Hull);
+    assert!(s.warnings.iter().any(|w| w.contains("exceeds its work budget")), "{:?}", s.warnings);
 }

@@ -57,6 +57,11 @@ pub struct Options {
     pub live: Option<back::modelica::mechatronics::live::LiveTarget>,
     /// The user's allowed-collision edits, by body name (a < b): allowed to touch or not.
     pub collision_edits: back::collision_shapes::AllowedEdits,
+    /// Where collision shapes are looked up by mesh content before being computed, and kept
+    /// after (`None`: every shape is computed). The caller owns it: the service keeps one per
+    /// process for all its jobs; a single conversion (the CLI) has nothing to reuse. Whether a
+    /// shape came from the cache never changes the output.
+    pub shape_cache: Option<std::sync::Arc<dyn crate::collision::ShapeCache>>,
 }
 
 impl Default for Options {
@@ -71,6 +76,7 @@ impl Default for Options {
             name_hints: Default::default(),
             live: None,
             collision_edits: Default::default(),
+            shape_cache: None,
         }
     }
 }
@@ -162,6 +168,9 @@ pub struct Output {
     /// Every file of the output zip, paths relative to its root: `<Pkg>/...` and `report.json`.
     pub files: Vec<(String, Vec<u8>)>,
     pub report: report::Report,
+    /// How many collision shapes were computed and how many came from the shape cache (not in
+    /// the report: the output is the same either way).
+    pub shapes: back::collision_shapes::ShapeCounts,
 }
 
 /// Front end and passes up to validation: the model as back ends will see it.
@@ -400,7 +409,14 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
     obs.progress(Stage::Collision, 0, 1);
     let names: Vec<String> = pkg.layout.names.as_ref().map(|n| n.bodies.clone()).unwrap_or_default();
     let joint_names: Vec<String> = pkg.layout.names.as_ref().map(|n| n.joints.clone()).unwrap_or_default();
-    let collision = back::collision_shapes::Collision::new(&a.model, &names, &joint_names, &opts.collision_edits, &Default::default());
+    let collision = back::collision_shapes::Collision::new(
+        &a.model,
+        &names,
+        &joint_names,
+        &opts.collision_edits,
+        &Default::default(),
+        opts.shape_cache.as_deref(),
+    );
     let (collision_report, collision_warnings) = collision.report(&a.model, &names);
     obs.progress(Stage::Collision, 1, 1);
     report.warnings.extend(collision_warnings);
@@ -471,5 +487,5 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
     obs.progress(Stage::Report, 0, 1);
     let json = serde_json::to_vec_pretty(&report).map_err(|e| ConvertError::Options(e.to_string()))?;
     files.push(("report.json".to_string(), json));
-    Ok(Output { files, report })
+    Ok(Output { files, report, shapes: collision.counts })
 }

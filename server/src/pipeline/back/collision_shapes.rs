@@ -8,12 +8,17 @@
 //! bodies' Modelica names, so they survive CAD changes.
 
 use std::collections::BTreeMap;
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 use nalgebra::Isometry3;
 use serde::Serialize;
 
-use crate::collision::{self, BodyShape, ConvexPart, ShapeOptions};
-use crate::pipeline::ir::{FrameOwner, Model, Warning};
+use crate::collision::{self, BodyShape, ConvexPart, ShapeCache, ShapeKey, ShapeOptions};
+use crate::pipeline::ir::{FrameOwner, Mesh, Model, Warning};
+
+/// Interferences (the deepest) and collision shape warnings (the first, by body) given a
+/// warning each; the rest get one summary warning.
+pub const MAX_LISTED: usize = 20;
 
 /// The user's edits of the allowed-collision matrix: (a, b) with a < b → allowed.
 pub type AllowedEdits = BTreeMap<(String, String), bool>;
@@ -24,6 +29,8 @@ pub struct Collision {
     /// Pairs allowed to touch by default, and why: joined by a joint, or welded together.
     joined: BTreeMap<(usize, usize), String>,
     edits: BTreeMap<(usize, usize), bool>,
+    /// Shapes computed by this conversion and shapes served by the cache.
+    pub counts: ShapeCounts,
 }
 
 /// A pair allowed to touch by default.
@@ -72,40 +79,104 @@ pub struct CollisionReport {
     pub default_allowed: Vec<AllowedPair>,
 }
 
-impl Collision {
-    /// Shapes for every body with a mesh; pairs joined by a joint; the user's edits by name.
-    pub fn new(model: &Model, names: &[String], joint_names: &[String], edits: &AllowedEdits, opts: &ShapeOptions) -> Collision {
-        let shape_of = |b: &crate::pipeline::ir::Body| {
-            b.mesh.as_ref().map(|m| {
-                let mut s = collision::body_shape(m, opts);
-                // Mesh coordinates are f32: written with the digits they have (0.06, not
-                // 0.05999999865889549); computed corners move by less than 1e-7 of their size.
-                for p in &mut s.parts {
-                    for v in &mut p.vertices {
-                        *v = v.map(tidy);
-                    }
-                    p.radius = tidy(p.radius);
-                }
-                s
+/// How a conversion got its shapes (distinct meshes: bodies with the same mesh share one):
+/// computed, or served by the shape cache.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ShapeCounts {
+    pub computed: usize,
+    pub cached: usize,
+}
+
+/// Every body's shape (None: no mesh), with how many were computed and how many came from
+/// `cache`. Distinct meshes (by [`ShapeKey`]) are taken from a shared counter by as many threads
+/// as there are cores, the largest first, so a cluster of expensive bodies spreads over the
+/// threads; each result lands at its bodies' indices, so the output does not depend on the
+/// threads.
+pub fn body_shapes(model: &Model, opts: &ShapeOptions, cache: Option<&dyn ShapeCache>) -> (Vec<Option<BodyShape>>, ShapeCounts) {
+    // Bodies with the same mesh (a hand's identical fingers) share one computation.
+    let mut unique: BTreeMap<ShapeKey, (usize, &Mesh)> = BTreeMap::new();
+    let mut key_of: Vec<Option<ShapeKey>> = vec![None; model.bodies.len()];
+    for (i, b) in model.bodies.iter().enumerate() {
+        if let Some(m) = &b.mesh {
+            let k = ShapeKey::of(m, opts);
+            key_of[i] = Some(k);
+            unique.entry(k).or_insert((i, m));
+        }
+    }
+    let shape_of = |key: &ShapeKey, mesh: &Mesh| -> (BodyShape, bool) {
+        if let Some(s) = cache.and_then(|c| c.get(key)) {
+            return (s, true);
+        }
+        let mut s = collision::body_shape(mesh, opts);
+        // Mesh coordinates are f32: written with the digits they have (0.06, not
+        // 0.05999999865889549); computed corners move by less than 1e-7 of their size.
+        for p in &mut s.parts {
+            for v in &mut p.vertices {
+                *v = v.map(tidy);
+            }
+            p.radius = tidy(p.radius);
+        }
+        if let Some(c) = cache {
+            c.put(*key, &s);
+        }
+        (s, false)
+    };
+    // Largest meshes first (ties by body index).
+    let mut order: Vec<(ShapeKey, usize, &Mesh)> = unique.iter().map(|(k, &(i, m))| (*k, i, m)).collect();
+    order.sort_by_key(|&(_, i, m)| (std::cmp::Reverse(m.triangles.len()), i));
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get()).min(order.len());
+    let done: Vec<(ShapeKey, BodyShape, bool)> = if threads < 2 {
+        order
+            .iter()
+            .map(|(k, _, m)| {
+                let (s, hit) = shape_of(k, m);
+                (*k, s, hit)
             })
-        };
-        // Shapes are independent per body: computed on every core (in body order, so the result
-        // does not depend on the thread count).
-        let threads = std::thread::available_parallelism().map_or(1, |n| n.get()).min(8);
-        let meshed = model.bodies.iter().filter(|b| b.mesh.is_some()).count();
-        let shapes: Vec<Option<BodyShape>> = if threads < 2 || meshed < 8 {
-            model.bodies.iter().map(shape_of).collect()
+            .collect()
+    } else {
+        let next = AtomicUsize::new(0);
+        std::thread::scope(|scope| {
+            let handles: Vec<_> = (0..threads)
+                .map(|_| {
+                    scope.spawn(|| {
+                        let mut mine = Vec::new();
+                        while let Some((k, _, m)) = order.get(next.fetch_add(1, Ordering::Relaxed)) {
+                            let (s, hit) = shape_of(k, m);
+                            mine.push((*k, s, hit));
+                        }
+                        mine
+                    })
+                })
+                .collect();
+            handles.into_iter().flat_map(|h| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e))).collect()
+        })
+    };
+    let mut counts = ShapeCounts::default();
+    let mut by_key: BTreeMap<ShapeKey, BodyShape> = BTreeMap::new();
+    for (k, s, hit) in done {
+        if hit {
+            counts.cached += 1;
         } else {
-            let chunk = model.bodies.len().div_ceil(threads);
-            std::thread::scope(|scope| {
-                let handles: Vec<_> = model
-                    .bodies
-                    .chunks(chunk)
-                    .map(|part| scope.spawn(move || part.iter().map(shape_of).collect::<Vec<_>>()))
-                    .collect();
-                handles.into_iter().flat_map(|h| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e))).collect()
-            })
-        };
+            counts.computed += 1;
+        }
+        by_key.insert(k, s);
+    }
+    let shapes = key_of.iter().map(|k| k.as_ref().and_then(|k| by_key.get(k).cloned())).collect();
+    (shapes, counts)
+}
+
+impl Collision {
+    /// Shapes for every body with a mesh (from `cache` where it has them); pairs joined by a
+    /// joint; the user's edits by name.
+    pub fn new(
+        model: &Model,
+        names: &[String],
+        joint_names: &[String],
+        edits: &AllowedEdits,
+        opts: &ShapeOptions,
+        cache: Option<&dyn ShapeCache>,
+    ) -> Collision {
+        let (shapes, counts) = body_shapes(model, opts, cache);
         let body_of = |f| match model.frame(f).owner {
             FrameOwner::Body(b) => Some(b.index()),
             FrameOwner::Ground(_) => None,
@@ -169,7 +240,7 @@ impl Collision {
                 Some(((i.min(j), i.max(j)), *allowed))
             })
             .collect();
-        Collision { shapes, joined, edits }
+        Collision { shapes, joined, edits, counts }
     }
 
     /// Why bodies `a` and `b` may touch by default (`None`: they are checked by default).
@@ -242,27 +313,66 @@ impl Collision {
                 "collision shapes".to_string(),
             ));
         }
-        for (i, s) in self.shapes.iter().enumerate() {
-            for w in s.iter().flat_map(|s| &s.warnings) {
-                warnings.push(Warning::new("collision-shape", w.clone(), format!("body {}", names.get(i).map_or("?", String::as_str))));
-            }
+        // Shape warnings: each on its own up to MAX_LISTED, then one line for the rest (every
+        // one stays in its body's entry of the report's collision section).
+        let shape_warnings: Vec<(usize, &String)> =
+            self.shapes.iter().enumerate().flat_map(|(i, s)| s.iter().flat_map(move |s| s.warnings.iter().map(move |w| (i, w)))).collect();
+        let body = |i: usize| names.get(i).map_or("?", String::as_str);
+        for &(i, w) in shape_warnings.iter().take(MAX_LISTED) {
+            warnings.push(Warning::new("collision-shape", w.clone(), format!("body {}", body(i))));
+        }
+        if shape_warnings.len() > MAX_LISTED {
+            let rest = &shape_warnings[MAX_LISTED..];
+            let mut bodies: Vec<usize> = rest.iter().map(|&(i, _)| i).collect();
+            bodies.dedup();
+            warnings.push(Warning::new(
+                "collision-shape",
+                format!(
+                    "{} more collision shape warnings on {} bod{} (every one is in report.json, collision.bodies[].warnings)",
+                    rest.len(),
+                    bodies.len(),
+                    if bodies.len() == 1 { "y" } else { "ies" }
+                ),
+                "collision shapes".to_string(),
+            ));
         }
         for c in collision::contacts_at(&world, &poses, &|a, b| self.checked(a, b), 0.0) {
             if c.distance >= 0.0 {
                 continue;
             }
             let (a, b) = (names[c.a].clone(), names[c.b].clone());
+            r.interferences.push(InterferenceReport { a, b, depth: -c.distance, point_a: c.point_a, point_b: c.point_b, normal: c.normal });
+        }
+        // A warning for each of the deepest MAX_LISTED interferences (deepest first), one for
+        // the rest: the report's list keeps every pair.
+        let mut deepest: Vec<&InterferenceReport> = r.interferences.iter().collect();
+        deepest.sort_by(|x, y| y.depth.total_cmp(&x.depth));
+        for i in deepest.iter().take(MAX_LISTED) {
             warnings.push(Warning::new(
                 "interference",
                 format!(
-                    "bodies {a} and {b} intersect at the CAD pose by {} mm (points {} and {} m in world)",
-                    mm(-c.distance),
-                    point(&c.point_a),
-                    point(&c.point_b)
+                    "bodies {} and {} intersect at the CAD pose by {} mm (points {} and {} m in world)",
+                    i.a,
+                    i.b,
+                    mm(i.depth),
+                    point(&i.point_a),
+                    point(&i.point_b)
                 ),
-                format!("bodies {a} and {b}"),
+                format!("bodies {} and {}", i.a, i.b),
             ));
-            r.interferences.push(InterferenceReport { a, b, depth: -c.distance, point_a: c.point_a, point_b: c.point_b, normal: c.normal });
+        }
+        if deepest.len() > MAX_LISTED {
+            let rest = &deepest[MAX_LISTED..];
+            warnings.push(Warning::new(
+                "interference",
+                format!(
+                    "{} more pairs of bodies intersect at the CAD pose, each by at most {} mm ({} in all; every pair is in report.json, collision.interferences)",
+                    rest.len(),
+                    mm(rest[0].depth),
+                    deepest.len()
+                ),
+                "collision shapes".to_string(),
+            ));
         }
         (r, warnings)
     }
@@ -320,4 +430,52 @@ pub fn read_shapes(json: &[u8]) -> Result<BTreeMap<String, Vec<ConvexPart>>, Str
         out.insert(name, parts);
     }
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use std::sync::Arc;
+
+    use crate::collision::{MemoryShapeCache, ShapeCache};
+    use crate::pipeline::front::bundle::Bundle;
+    use crate::pipeline::{self, Options};
+
+    /// The hand-made arm (three STL links) with the upper link's mesh as given.
+    fn arm(upper: &str) -> Bundle {
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/in/arm_subsystems");
+        let read = |p: &str| std::fs::read(dir.join(p)).expect("fixture");
+        let files = vec![
+            ("ARM_SIM_MODEL.xml".to_string(), read("ARM_SIM_MODEL.xml")),
+            ("meshes/BASE_prt.stl".to_string(), read("meshes/BASE_prt.stl")),
+            ("meshes/fore/LINK-1_prt.stl".to_string(), read("meshes/fore/LINK-1_prt.stl")),
+            ("meshes/upper/LINK_prt.stl".to_string(), upper.as_bytes().to_vec()),
+        ];
+        Bundle::from_files("arm", files).expect("bundle")
+    }
+
+    #[test]
+    fn collision_shapes_come_from_the_cache_for_unchanged_meshes() {
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/in/arm_subsystems");
+        let upper = std::fs::read_to_string(dir.join("meshes/upper/LINK_prt.stl")).expect("fixture");
+        let cache = Arc::new(MemoryShapeCache::default());
+        let shared: Arc<dyn ShapeCache> = cache.clone();
+        let opts = Options { shape_cache: Some(shared), ..Options::default() };
+        let uncached = pipeline::convert(&arm(&upper), &Options::default()).expect("converts");
+        assert_eq!((uncached.shapes.computed, uncached.shapes.cached), (3, 0));
+
+        let first = pipeline::convert(&arm(&upper), &opts).expect("converts");
+        assert_eq!((first.shapes.computed, first.shapes.cached), (3, 0));
+        let again = pipeline::convert(&arm(&upper), &opts).expect("converts");
+        assert_eq!((again.shapes.computed, again.shapes.cached), (0, 3), "the same bundle again computes no shape");
+        // The output does not depend on where the shapes came from.
+        assert!(first.files == uncached.files && again.files == uncached.files, "same files with and without the cache");
+
+        // A version whose upper link is 1 mm longer: that one shape is computed again.
+        let longer = upper.replace("2.660000e+02", "2.670000e+02");
+        assert_ne!(longer, upper);
+        let changed = pipeline::convert(&arm(&longer), &opts).expect("converts");
+        assert_eq!((changed.shapes.computed, changed.shapes.cached), (1, 2), "exactly the changed mesh is recomputed");
+        let s = cache.stats();
+        assert_eq!((s.hits, s.misses, s.entries), (5, 4, 4), "{s:?}");
+    }
 }
