@@ -385,7 +385,7 @@ fn collision_package_passes_msl_check_and_rumoca() {
     files.push((format!("{pkg}/Components/package.mo"), format!("within {pkg};\npackage Components \"Components\"\n  extends Modelica.Icons.Package;\nend Components;\n").into_bytes()));
     let bodies: Vec<String> = ["B1", "B2", "B3"].iter().map(|s| s.to_string()).collect();
     let shapes = vec![Some(vec![cube(0.1, 0.0)]), None, Some(vec![cube(0.05, 0.0), ConvexPart { vertices: vec![[0.0, 0.0, 0.2]], faces: Vec::new(), radius: 0.03 }])];
-    let contacts = collision::declarations(pkg, &bodies, &shapes, &|_, _| true).expect("contacts");
+    let contacts = collision::declarations(pkg, &bodies, &shapes, &[]).expect("contacts");
     let decl = contacts.declarations.clone();
     files.push((format!("{pkg}/{}", collision::SHAPE_FILE), contacts.shape_file.clone()));
     assert!(!decl.contains(" model "), "`model` is a keyword");

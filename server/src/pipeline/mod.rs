@@ -436,7 +436,7 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
         .filter(|_| (1..=back::modelica::mechatronics::live::MAX_BODIES).contains(&bodies.len()))
         .map(|t| (t, bodies));
     let parts = collision.parts();
-    let contacts = back::modelica::mechatronics::collision::declarations(&package_name, &names, &parts, &|i, j| collision.checked(i, j));
+    let contacts = back::modelica::mechatronics::collision::declarations(&package_name, &names, &parts, &collision.allowed_pairs());
     files.extend(back::modelica::mechatronics::mechatronics(
         &package_name,
         &drives,

@@ -254,6 +254,18 @@ impl Collision {
         a != b && !self.edits.get(&key).copied().unwrap_or_else(|| self.joined.contains_key(&key))
     }
 
+    /// The pairs (a < b, both with shapes) allowed to touch, sorted: joined or welded by default,
+    /// as the user's edits say otherwise (linear in the allowed pairs and edits, not n²).
+    pub fn allowed_pairs(&self) -> Vec<(usize, usize)> {
+        let shaped = |i: usize| self.shapes.get(i).is_some_and(Option::is_some);
+        let mut out: Vec<(usize, usize)> = self.joined.keys().copied().filter(|k| self.edits.get(k).copied().unwrap_or(true)).collect();
+        out.extend(self.edits.iter().filter(|(k, allowed)| **allowed && !self.joined.contains_key(k)).map(|(k, _)| *k));
+        out.retain(|&(a, b)| a != b && shaped(a) && shaped(b));
+        out.sort_unstable();
+        out.dedup();
+        out
+    }
+
     /// The convex parts of each body (None: no shape), for the Modelica contact code.
     pub fn parts(&self) -> Vec<Option<Vec<ConvexPart>>> {
         self.shapes.iter().map(|s| s.as_ref().map(|s| s.parts.clone())).collect()
@@ -288,13 +300,10 @@ impl Collision {
             });
         }
         let with: Vec<usize> = (0..self.shapes.len()).filter(|&i| self.shapes[i].is_some()).collect();
-        r.checked_pairs = with.iter().enumerate().map(|(k, &a)| with[k + 1..].iter().filter(|&&b| self.checked(a, b)).count()).sum();
-        for (k, &a) in with.iter().enumerate() {
-            for &b in &with[k + 1..] {
-                if let Some(why) = self.joined(a, b) {
-                    r.default_allowed.push(AllowedPair { a: names[a].clone(), b: names[b].clone(), why: why.to_string() });
-                }
-            }
+        r.checked_pairs = with.len() * with.len().saturating_sub(1) / 2 - self.allowed_pairs().len();
+        // Joined pairs are among bodies with shapes, in (a, b) order.
+        for (&(a, b), why) in &self.joined {
+            r.default_allowed.push(AllowedPair { a: names[a].clone(), b: names[b].clone(), why: why.clone() });
         }
         let world = collision::World::new(&self.shapes);
         let poses = cad_poses(model);

@@ -67,10 +67,58 @@ fn stub(((px, py), (dx, dy)): ((f64, f64), (i32, i32)), rect: &Rect) -> Vec<(f64
 const DIRS: [(i32, i32); 4] = [(1, 0), (-1, 0), (0, 1), (0, -1)];
 
 /// Per-search state: dense arrays for a small window, hash maps for a large one (a long wire's
-/// window is mostly never visited).
+/// window is mostly never visited). The dense arrays are kept per thread between searches and
+/// only the entries a search touched are reset after it (a fresh array per wire cost more in
+/// clearing memory than the search itself on large sheets).
 enum Cells {
-    Dense { state: Vec<u8>, best: Vec<u32>, from: Vec<u32> },
+    Dense(Dense),
     Sparse { state: GridMap<usize, u8>, best: GridMap<usize, u32>, from: GridMap<usize, u32> },
+}
+
+/// Dense search state of [`DENSE_CELLS`] cells, clean (0 / `u32::MAX`) outside `touched_*`.
+struct Dense {
+    state: Vec<u8>,
+    best: Vec<u32>,
+    from: Vec<u32>,
+    touched_cells: Vec<u32>,
+    touched_nodes: Vec<u32>,
+}
+
+impl Dense {
+    fn fresh() -> Dense {
+        Dense {
+            state: vec![0; DENSE_CELLS],
+            best: vec![u32::MAX; DENSE_CELLS * 5],
+            from: vec![u32::MAX; DENSE_CELLS * 5],
+            touched_cells: Vec::new(),
+            touched_nodes: Vec::new(),
+        }
+    }
+}
+
+thread_local! {
+    static DENSE_POOL: std::cell::RefCell<Vec<Dense>> = const { std::cell::RefCell::new(Vec::new()) };
+}
+
+impl Drop for Cells {
+    fn drop(&mut self) {
+        if let Cells::Dense(d) = self {
+            for &c in &d.touched_cells {
+                d.state[c as usize] = 0;
+            }
+            for &n in &d.touched_nodes {
+                d.best[n as usize] = u32::MAX;
+                d.from[n as usize] = u32::MAX;
+            }
+            d.touched_cells.clear();
+            d.touched_nodes.clear();
+            let clean = std::mem::replace(
+                d,
+                Dense { state: Vec::new(), best: Vec::new(), from: Vec::new(), touched_cells: Vec::new(), touched_nodes: Vec::new() },
+            );
+            DENSE_POOL.with(|p| p.borrow_mut().push(clean));
+        }
+    }
 }
 
 const DENSE_CELLS: usize = 1 << 13;
@@ -78,39 +126,43 @@ const DENSE_CELLS: usize = 1 << 13;
 impl Cells {
     fn new(cells: usize) -> Cells {
         if cells <= DENSE_CELLS {
-            Cells::Dense { state: vec![0; cells], best: vec![u32::MAX; cells * 5], from: vec![u32::MAX; cells * 5] }
+            Cells::Dense(DENSE_POOL.with(|p| p.borrow_mut().pop()).unwrap_or_else(Dense::fresh))
         } else {
             Cells::Sparse { state: GridMap::default(), best: GridMap::default(), from: GridMap::default() }
         }
     }
     fn state(&mut self, c: usize, f: impl FnOnce() -> u8) -> u8 {
         match self {
-            Cells::Dense { state, .. } => {
-                if state[c] == 0 {
-                    state[c] = f();
+            Cells::Dense(d) => {
+                if d.state[c] == 0 {
+                    d.state[c] = f();
+                    d.touched_cells.push(c as u32);
                 }
-                state[c]
+                d.state[c]
             }
             Cells::Sparse { state, .. } => *state.entry(c).or_insert_with(f),
         }
     }
     fn best(&self, n: usize) -> u32 {
         match self {
-            Cells::Dense { best, .. } => best[n],
+            Cells::Dense(d) => d.best[n],
             Cells::Sparse { best, .. } => best.get(&n).copied().unwrap_or(u32::MAX),
         }
     }
     fn from(&self, n: usize) -> u32 {
         match self {
-            Cells::Dense { from, .. } => from[n],
+            Cells::Dense(d) => d.from[n],
             Cells::Sparse { from, .. } => from.get(&n).copied().unwrap_or(u32::MAX),
         }
     }
     fn set(&mut self, n: usize, cost: u32, prev: u32) {
         match self {
-            Cells::Dense { best, from, .. } => {
-                best[n] = cost;
-                from[n] = prev;
+            Cells::Dense(d) => {
+                if d.best[n] == u32::MAX && d.from[n] == u32::MAX {
+                    d.touched_nodes.push(n as u32);
+                }
+                d.best[n] = cost;
+                d.from[n] = prev;
             }
             Cells::Sparse { best, from, .. } => {
                 best.insert(n, cost);

@@ -176,10 +176,10 @@ pub struct Contacts {
 /// `Components.Collision.BodyForce` per such body, bound to its row of the world's outputs and
 /// connected to the body's `frame_a` (no signal wires). The parts and the pairs allowed to touch go
 /// to the shape file, not into the text. `bodies[i]` is a `Parts.Body` (or anything with `frame_a`,
-/// `v_0`, `w_a`) whose shape is `shapes[i]` (`None` or no parts: no shape); `checked(i, j)`
-/// (i < j, indices into `bodies`) says whether the pair's contacts are computed. `None` when no
-/// body has a shape.
-pub fn declarations(pkg: &str, bodies: &[String], shapes: &[Option<Vec<ConvexPart>>], checked: &dyn Fn(usize, usize) -> bool) -> Option<Contacts> {
+/// `v_0`, `w_a`) whose shape is `shapes[i]` (`None` or no parts: no shape); `allowed` are the
+/// pairs (i < j, indices into `bodies`) allowed to touch, whose contacts are not computed (every
+/// other pair is). `None` when no body has a shape.
+pub fn declarations(pkg: &str, bodies: &[String], shapes: &[Option<Vec<ConvexPart>>], allowed: &[(usize, usize)]) -> Option<Contacts> {
     let shaped: Vec<usize> = (0..bodies.len())
         .filter(|&i| shapes.get(i).and_then(|s| s.as_ref()).is_some_and(|p| p.iter().any(|q| !q.vertices.is_empty())))
         .collect();
@@ -207,15 +207,24 @@ pub fn declarations(pkg: &str, bodies: &[String], shapes: &[Option<Vec<ConvexPar
             }
         }
     }
-    let mut allowed = 0usize;
-    for a in 0..n {
-        for b in a + 1..n {
-            if !checked(shaped[a], shaped[b]) {
-                allowed += 1;
-                let _ = writeln!(f, "allow {} {}", a + 1, b + 1);
-            }
-        }
+    // A body's place among the shaped ones (1-based), by body index.
+    let mut place = vec![0usize; bodies.len()];
+    for (k, &i) in shaped.iter().enumerate() {
+        place[i] = k + 1;
     }
+    let mut pairs: Vec<(usize, usize)> = allowed
+        .iter()
+        .filter_map(|&(i, j)| {
+            let (a, b) = (*place.get(i)?, *place.get(j)?);
+            (a > 0 && b > 0 && a != b).then_some((a.min(b), a.max(b)))
+        })
+        .collect();
+    pairs.sort_unstable();
+    pairs.dedup();
+    for (a, b) in &pairs {
+        let _ = writeln!(f, "allow {a} {b}");
+    }
+    let allowed = pairs.len();
     let _ = writeln!(f, "end");
     let list = |f: &dyn Fn(&str) -> String| shaped.iter().map(|&i| f(&bodies[i])).collect::<Vec<_>>().join(", ");
     let mut s = String::new();
@@ -271,7 +280,7 @@ mod tests {
     fn collision_declarations_skip_bodies_without_shapes() {
         let bodies = vec!["B1".to_string(), "B2".to_string(), "B3".to_string()];
         let shapes = vec![Some(vec![cube(0.0)]), None, Some(vec![cube(0.0), cube(0.01)])];
-        let c = declarations("P", &bodies, &shapes, &|_, _| true).expect("contacts");
+        let c = declarations("P", &bodies, &shapes, &[]).expect("contacts");
         let d = &c.declarations;
         assert!(d.contains("nBodies=2,"), "{d}");
         assert!(d.contains("bodyNames={\"B1\", \"B3\"}"), "{d}");
@@ -287,9 +296,9 @@ mod tests {
         assert!(f.contains("\npart 2 0.01 8\n"), "{f}");
         assert!(!f.contains("\nallow "), "every pair checked: {f}");
         assert!(f.ends_with("\nend\n"), "{f}");
-        let allowed = declarations("P", &bodies, &shapes, &|_, _| false).expect("contacts");
+        let allowed = declarations("P", &bodies, &shapes, &[(0, 2)]).expect("contacts");
         assert!(String::from_utf8_lossy(&allowed.shape_file).contains("\nallow 1 2\n"));
-        assert!(declarations("P", &bodies, &[None, None, None], &|_, _| true).is_none());
+        assert!(declarations("P", &bodies, &[None, None, None], &[]).is_none());
     }
 
     #[test]
