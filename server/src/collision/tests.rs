@@ -198,7 +198,9 @@ fn open_mesh_gets_hull_and_warning() {
 }
 
 #[test]
-fn huge_mesh_is_simplified_fast() {
+/// A mesh over the triangle limit is simplified first (its speed is measured by the collision
+/// benchmark, not asserted here: a loaded machine must not fail a test).
+fn huge_mesh_is_simplified_first() {
     let m = uv_sphere([0.0; 3], 0.1, 300, 300);
     assert!(m.triangles.len() > 100_000);
     let t = std::time::Instant::now();
@@ -207,7 +209,6 @@ fn huge_mesh_is_simplified_fast() {
     eprintln!("huge mesh: {} triangles → {} vertices in {el:.2} s (debug build)", m.triangles.len(), s.vertex_count);
     assert!(s.warnings.iter().any(|w| w.contains("simplified")), "{:?}", s.warnings);
     assert!(s.vertex_count > 0);
-    assert!(el < 5.0, "{el} s (debug build)");
 }
 
 #[test]
