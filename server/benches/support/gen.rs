@@ -38,14 +38,19 @@ pub fn tree_xml(n: usize) -> String {
 }
 
 /// [`tree_xml`] with an ASCII STL per body (`LINK_<i>.stl`, in the body's CS1 frame, mm): an
-/// 18-sided prism (72 triangles, about 18 KB, radius 1 to 1.6 mm, 30 to 40 mm long) for most
-/// bodies, a concave L-shaped bracket (20 triangles, legs 2 to 2.8 mm) for every seventh, as
-/// bundle files. The tree's bodies stand 3.5 mm apart across and 120 mm along: the parts are
-/// small enough not to interfere. 2,000 bodies: 37 MB of STL.
+/// 18-sided prism along z (72 triangles, about 18 KB, radius 0.8 to 1.4 mm, 3 to 4 mm long) for
+/// most bodies, a concave L-shaped bracket (20 triangles, legs 1.2 to 1.6 mm, 3 mm wide) for every
+/// seventh, as bundle files. The tree's bodies stand 3.5 mm apart in y and 7.25 mm in z: the
+/// parts are small enough not to interfere. 2,000 bodies: 37 MB of STL.
 pub fn tree_with_stl(n: usize) -> Vec<(String, Vec<u8>)> {
     let mut files = vec![("tree.xml".to_string(), tree_xml_with(n, true).into_bytes())];
     for i in 0..n {
-        let tris = if i % 7 == 3 { bracket(2.0 + (i % 5) as f32 * 0.2) } else { prism(18, 1.0 + (i % 4) as f32 * 0.2, 30.0 + (i % 3) as f32 * 5.0) };
+        let tris = if i % 7 == 3 {
+            bracket(1.2 + (i % 5) as f32 * 0.1)
+        } else {
+            // Along z: the CS1 frames turn about z.
+            prism(18, 0.8 + (i % 4) as f32 * 0.2, 3.0 + (i % 3) as f32 * 0.5).into_iter().map(|t| t.map(|p| [p[1], p[2], p[0]])).collect()
+        };
         files.push((format!("LINK_{i}.stl"), ascii_stl(&format!("LINK_{i}"), &tris)));
     }
     files
@@ -70,10 +75,10 @@ fn prism(k: usize, r: f32, len: f32) -> Vec<Tri> {
     t
 }
 
-/// An L-shaped bracket (two legs of length `s` mm, 0.8 mm thick, 3 mm wide): concave, closed,
+/// An L-shaped bracket (two legs of length `s` mm, 0.4 mm thick, 3 mm wide): concave, closed,
 /// outward normals.
 fn bracket(s: f32) -> Vec<Tri> {
-    let (w, th) = (3.0, 0.8);
+    let (w, th) = (3.0, 0.4);
     // The L profile in the x-y plane, counter-clockwise, extruded along z from 0 to w.
     let prof = [[0.0, 0.0], [s, 0.0], [s, th], [th, th], [th, s], [0.0, s]];
     let mut t = Vec::new();
