@@ -121,7 +121,7 @@ impl Drop for Cells {
     }
 }
 
-const DENSE_CELLS: usize = 1 << 13;
+const DENSE_CELLS: usize = 1 << 16;
 
 impl Cells {
     fn new(cells: usize) -> Cells {
