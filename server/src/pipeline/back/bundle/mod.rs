@@ -23,7 +23,7 @@ const PIECES: usize = 4;
 pub fn write_zip_observed(files: &[(String, Vec<u8>)], done: &mut dyn FnMut(usize, usize)) -> Result<Vec<u8>, std::io::Error> {
     let total: usize = files.iter().map(|(_, b)| b.len()).sum();
     if total < PARALLEL_BYTES || files.len() < PIECES {
-        return zip_run(files, 0, files.len(), done);
+        return zip_run(files, done);
     }
     // Consecutive runs of about equal bytes.
     let mut bounds = vec![0usize];
@@ -40,7 +40,7 @@ pub fn write_zip_observed(files: &[(String, Vec<u8>)], done: &mut dyn FnMut(usiz
             .windows(2)
             .map(|w| {
                 let part = &files[w[0]..w[1]];
-                scope.spawn(move || zip_run(part, 0, part.len(), &mut |_, _| {}))
+                scope.spawn(move || zip_run(part, &mut |_, _| {}))
             })
             .collect();
         handles.into_iter().map(|h| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e))).collect()
@@ -58,8 +58,8 @@ pub fn write_zip_observed(files: &[(String, Vec<u8>)], done: &mut dyn FnMut(usiz
     Ok(out.into_inner())
 }
 
-/// Zips `files` in turn, calling `done(first + i, n)` before each.
-fn zip_run(files: &[(String, Vec<u8>)], first: usize, n: usize, done: &mut dyn FnMut(usize, usize)) -> Result<Vec<u8>, std::io::Error> {
+/// Zips `files` in turn, calling `done(i, n)` before each of the `n`.
+fn zip_run(files: &[(String, Vec<u8>)], done: &mut dyn FnMut(usize, usize)) -> Result<Vec<u8>, std::io::Error> {
     let mut out = std::io::Cursor::new(Vec::new());
     {
         let mut zip = zip::ZipWriter::new(&mut out);
@@ -68,7 +68,7 @@ fn zip_run(files: &[(String, Vec<u8>)], first: usize, n: usize, done: &mut dyn F
             .last_modified_time(zip::DateTime::default())
             .large_file(false);
         for (i, (path, bytes)) in files.iter().enumerate() {
-            done(first + i, n);
+            done(i, files.len());
             zip.start_file(path.as_str(), opts).map_err(std::io::Error::other)?;
             zip.write_all(bytes)?;
         }
@@ -99,7 +99,7 @@ mod tests {
         let total: usize = files.iter().map(|(_, b)| b.len()).sum();
         assert!(total >= super::PARALLEL_BYTES);
         let parallel = super::write_zip(&files).unwrap();
-        let serial = super::zip_run(&files, 0, files.len(), &mut |_, _| {}).unwrap();
+        let serial = super::zip_run(&files, &mut |_, _| {}).unwrap();
         assert_eq!(parallel, serial);
         let mut z = zip::ZipArchive::new(std::io::Cursor::new(parallel)).unwrap();
         assert_eq!(z.len(), 40);
