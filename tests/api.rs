@@ -10,7 +10,7 @@ async fn health_answers_with_the_version() {
     assert_eq!(r.status(), 200);
     let body: serde_json::Value = r.json().await.expect("json");
     assert_eq!(body["status"], "ok");
-    assert_eq!(body["version"], cad2mo::pipeline::VERSION);
+    assert_eq!(body["version"], cad2mo_engine::pipeline::VERSION);
 }
 
 #[tokio::test]
@@ -47,8 +47,8 @@ async fn tokens_guard_models_and_writes_when_auth_is_required() {
     let r = app.client.get(app.url("/api/models")).bearer_auth("c2m_wrong").send().await.expect("get");
     assert_eq!(r.status(), 401);
     let url = app.database_url().to_string();
-    let store = cad2mo::store::Store::open(&url).await.expect("store");
-    let token = cad2mo::store::tokens::create(&store, "test", None).await.expect("token");
+    let store = cad2mo_server::store::Store::open(&url).await.expect("store");
+    let token = cad2mo_server::store::tokens::create(&store, "test", None).await.expect("token");
     let r = app.client.get(app.url("/api/models")).bearer_auth(&token).send().await.expect("get");
     assert_eq!(r.status(), 200);
     // Only the hash is stored.
@@ -56,8 +56,8 @@ async fn tokens_guard_models_and_writes_when_auth_is_required() {
     assert!(stored.iter().all(|(h,)| h != &token && h.len() == 64));
 }
 
-async fn sqlx_rows(store: &cad2mo::store::Store) -> Vec<(String,)> {
-    cad2mo::store::tokens::hashes(store).await.expect("hashes").into_iter().map(|h| (h,)).collect()
+async fn sqlx_rows(store: &cad2mo_server::store::Store) -> Vec<(String,)> {
+    cad2mo_server::store::tokens::hashes(store).await.expect("hashes").into_iter().map(|h| (h,)).collect()
 }
 
 /// Library reads are cached; a write must never leave a stale read behind.
@@ -82,9 +82,9 @@ async fn problem_of(r: reqwest::Response, status: u16) -> serde_json::Value {
     cad2mo_tests::app_models::problem(r, status).await
 }
 
-async fn open_store(app: &TestApp) -> cad2mo::store::Store {
+async fn open_store(app: &TestApp) -> cad2mo_server::store::Store {
     let url = app.database_url().to_string();
-    cad2mo::store::Store::open(&url).await.expect("store")
+    cad2mo_server::store::Store::open(&url).await.expect("store")
 }
 
 fn pendulum_zip() -> Vec<u8> {
@@ -158,7 +158,7 @@ async fn loopback_refuses_what_a_cross_site_page_can_send() {
     app.wait_for_job(&job).await;
 
     // A valid token passes whatever the origin and content type; an invalid one does not.
-    let token = cad2mo::store::tokens::create(&open_store(&app).await, "t", None).await.expect("token");
+    let token = cad2mo_server::store::tokens::create(&open_store(&app).await, "t", None).await.expect("token");
     let r = page.post(app.url("/api/reexport")).header("origin", evil).bearer_auth(&token).send().await.expect("post");
     assert_eq!(r.status(), 202);
     let r = page.post(app.url("/api/reexport")).header("origin", evil).bearer_auth("c2m_nope").send().await.expect("post");
@@ -190,8 +190,8 @@ async fn allowed_hosts_extend_the_names_the_service_answers_to() {
 async fn tokens_expire_and_the_scheme_is_case_insensitive() {
     let app = TestApp::spawn_with(|s| s.force_auth = true).await;
     let store = open_store(&app).await;
-    let token = cad2mo::store::tokens::create(&store, "t", Some(3600)).await.expect("token");
-    let expired = cad2mo::store::tokens::create(&store, "old", Some(0)).await.expect("token");
+    let token = cad2mo_server::store::tokens::create(&store, "t", Some(3600)).await.expect("token");
+    let expired = cad2mo_server::store::tokens::create(&store, "old", Some(0)).await.expect("token");
     for scheme in ["Bearer", "bearer", "BEARER"] {
         let r = app.client.get(app.url("/api/models")).header("authorization", format!("{scheme} {token}")).send().await.expect("get");
         assert_eq!(r.status(), 200, "{scheme}");
@@ -199,7 +199,7 @@ async fn tokens_expire_and_the_scheme_is_case_insensitive() {
     let r = app.client.get(app.url("/api/models")).bearer_auth(&expired).send().await.expect("get");
     assert_eq!(problem_of(r, 401).await["type"], "/problems/unauthorized");
     // Revoked: refused at once.
-    assert!(matches!(cad2mo::store::tokens::revoke(&store, "t").await.expect("revoke"), cad2mo::store::tokens::Revoked::One(_)));
+    assert!(matches!(cad2mo_server::store::tokens::revoke(&store, "t").await.expect("revoke"), cad2mo_server::store::tokens::Revoked::One(_)));
     let r = app.client.get(app.url("/api/models")).bearer_auth(&token).send().await.expect("get");
     problem_of(r, 401).await;
 }

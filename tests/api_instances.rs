@@ -51,7 +51,7 @@ async fn a_running_jobs_progress_is_visible_from_another_instance() {
     assert_eq!(from_a["finished_at"], done["finished_at"]);
     // The job outlived its lease (2 s in tests) several times over, and A's renewals kept it:
     // B, polling for work all along, never took it over.
-    let store = cad2mo::store::Store::open(a.database_url()).await.expect("store");
-    let row = cad2mo::store::models::get_job(&store.pool, &job).await.expect("job").expect("job");
+    let store = cad2mo_server::store::Store::open(a.database_url()).await.expect("store");
+    let row = cad2mo_server::store::models::get_job(&store.pool, &job).await.expect("job").expect("job");
     assert_eq!(row.attempts, 1, "the running job was taken over: its lease was not renewed");
 }

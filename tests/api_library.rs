@@ -2,7 +2,7 @@
 //! `TestApp` methods of tests/support/app_library.rs (the real service on port 0 with a fresh,
 //! seeded SQLite database per test).
 
-use cad2mo::library::seed;
+use cad2mo_engine::library::seed;
 use cad2mo_tests::app::TestApp;
 use serde_json::{json, Value};
 
@@ -449,19 +449,19 @@ async fn a_broken_import_changes_nothing() {
 async fn a_library_above_the_cache_cap_still_lists() {
     let app = TestApp::spawn().await;
     let url = app.database_url().to_string();
-    let store = cad2mo::store::Store::open(&url).await.expect("store");
-    let (re40, _) = cad2mo::store::library::get_instance(&store, seed::MAXON_RE40).await.expect("get").expect("seeded");
+    let store = cad2mo_server::store::Store::open(&url).await.expect("store");
+    let (re40, _) = cad2mo_server::store::library::get_instance(&store, seed::MAXON_RE40).await.expect("get").expect("seeded");
     let source = "datasheet ".repeat(1_000); // 10,000 characters, the most a source may have
     let n = 1_800; // 18 MB of sources
     for k in 0..n {
-        let inst = cad2mo::library::Instance {
-            id: cad2mo::library::new_id(),
+        let inst = cad2mo_engine::library::Instance {
+            id: cad2mo_engine::library::new_id(),
             name: format!("RE 40 copy {k}"),
             source: source.clone(),
             ..re40.clone()
         };
-        let done = cad2mo::store::library::insert_instance(&store, &re40.class_id, |_| Ok(inst)).await.expect("insert");
-        assert!(matches!(done, cad2mo::store::library::Change::Done(_)));
+        let done = cad2mo_server::store::library::insert_instance(&store, &re40.class_id, |_| Ok(inst)).await.expect("insert");
+        assert!(matches!(done, cad2mo_server::store::library::Change::Done(_)));
     }
     for round in 0..2 {
         let r = app.library_instances("").await;

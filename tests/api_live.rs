@@ -14,12 +14,12 @@ use serde_json::Value;
 use tokio_tungstenite::tungstenite::client::IntoClientRequest;
 use tokio_tungstenite::tungstenite::Message;
 
-#[path = "../server/benches/support/gen.rs"]
+#[path = "../engine/benches/support/gen.rs"]
 #[allow(dead_code)]
 mod gen;
 
 fn arm_zip(n: usize) -> Vec<u8> {
-    cad2mo::pipeline::back::bundle::write_zip(&[("arm.xml".to_string(), gen::serial_arm_xml(n).into_bytes())]).expect("zip")
+    cad2mo_engine::pipeline::back::bundle::write_zip(&[("arm.xml".to_string(), gen::serial_arm_xml(n).into_bytes())]).expect("zip")
 }
 
 async fn json_of(r: reqwest::Response, status: u16) -> Value {
@@ -120,7 +120,7 @@ async fn a_simulated_motion_reaches_the_browser_and_bad_frames_are_counted() {
     let info = json_of(app.get(&format!("/api/models/{id}/versions/{v}/live")).await, 200).await;
     let bodies: Vec<String> = info["bodies"].as_array().expect("bodies").iter().map(|b| b.as_str().expect("name").to_string()).collect();
     let layout = info["layout"].as_str().expect("layout").to_string();
-    assert_eq!(layout, cad2mo::live::layout_hex(&bodies));
+    assert_eq!(layout, cad2mo_engine::live::layout_hex(&bodies));
     let n = bodies.len();
     assert_eq!(n, 4, "the 3-joint arm's ground link and three links: {bodies:?}");
 
@@ -137,7 +137,7 @@ async fn a_simulated_motion_reaches_the_browser_and_bad_frames_are_counted() {
     assert!(text("/Components/Visualization.mo").contains("model LiveView"));
     assert!(text("/Components/package.order").lines().any(|l| l == "Visualization"));
     let sender = text("/Resources/Include/cad2mo_live.c");
-    assert_eq!(sender, cad2mo::pipeline::back::modelica::mechatronics::live::C_SOURCE);
+    assert_eq!(sender, cad2mo_engine::pipeline::back::modelica::mechatronics::live::C_SOURCE);
     let dir = tempfile::tempdir().expect("tempdir");
     zip::ZipArchive::new(std::io::Cursor::new(app.package(&id, v).await.bytes().await.expect("zip").to_vec()))
         .expect("zip")
@@ -191,7 +191,7 @@ async fn a_simulated_motion_reaches_the_browser_and_bad_frames_are_counted() {
         spin_motion(n, 1, 0.0)[0][1..].chunks(12).map(|c| std::array::from_fn(|k| c[k] + if k == 0 { t } else { 0.0 })).collect()
     };
     let frame = |seq: u32, layout: [u8; 8], version: u32, token: Option<&str>| {
-        cad2mo::live::encode(&cad2mo::live::Header { model, version, layout, run: 7, seq, time: 1.0, last: false }, &body(0.0), token)
+        cad2mo_engine::live::encode(&cad2mo_engine::live::Header { model, version, layout, run: 7, seq, time: 1.0, last: false }, &body(0.0), token)
     };
     let good = frame(5, lay, v as u32, None);
     let mut wrong_magic = good.clone();
@@ -207,9 +207,9 @@ async fn a_simulated_motion_reaches_the_browser_and_bad_frames_are_counted() {
         (good[..good.len() - 7].to_vec(), "truncated"),
         (frame(1, [0; 8], v as u32, None), "foreign"),
         (frame(1, lay, 99, None), "foreign"),
-        (cad2mo::live::encode(&cad2mo::live::Header { model: *uuid_bytes("00000000-0000-4000-8000-000000000000"), version: 1, layout: lay, run: 7, seq: 1, time: 1.0, last: false }, &body(0.0), None), "foreign"),
+        (cad2mo_engine::live::encode(&cad2mo_engine::live::Header { model: *uuid_bytes("00000000-0000-4000-8000-000000000000"), version: 1, layout: lay, run: 7, seq: 1, time: 1.0, last: false }, &body(0.0), None), "foreign"),
         (frame(2, lay, v as u32, Some("c2m_not_a_token")), "unauthenticated"),
-        (cad2mo::live::encode(&cad2mo::live::Header { model, version: v as u32, layout: lay, run: 7, seq: 3, time: 1.0, last: false }, &nan, None), "invalid"),
+        (cad2mo_engine::live::encode(&cad2mo_engine::live::Header { model, version: v as u32, layout: lay, run: 7, seq: 3, time: 1.0, last: false }, &nan, None), "invalid"),
         (good.clone(), "relayed"),
         (good.clone(), "stale"),
         (frame(4, lay, v as u32, None), "stale"),
@@ -267,8 +267,8 @@ fn hex_bytes<const N: usize>(hex: &str) -> [u8; N] {
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn where_tokens_are_required_frames_and_viewers_need_one() {
     let app = TestApp::spawn_with(|s| s.force_auth = true).await;
-    let store = cad2mo::store::Store::open(app.database_url()).await.expect("store");
-    let token = cad2mo::store::tokens::create(&store, "sim", None).await.expect("token");
+    let store = cad2mo_server::store::Store::open(app.database_url()).await.expect("store");
+    let token = cad2mo_server::store::tokens::create(&store, "sim", None).await.expect("token");
     let auth = reqwest::header::HeaderValue::from_str(&format!("Bearer {token}")).expect("header");
     let form = cad2mo_tests::app_models::upload_form(arm_zip(2), "arm.zip", &[]);
     let r = app.client.post(app.url("/api/models")).header("authorization", auth.clone()).multipart(form).send().await.expect("upload");

@@ -5,7 +5,7 @@ use std::io::{Read, Write};
 use std::path::Path;
 use std::sync::Arc;
 
-use cad2mo::pipeline::back::bundle::write_zip;
+use cad2mo_engine::pipeline::back::bundle::write_zip;
 use cad2mo_tests::app::{heavy_pendulum, zip_dir, TestApp};
 use cad2mo_tests::app_models::{problem, upload_form};
 use cad2mo_tests::common::workspace_root;
@@ -380,9 +380,9 @@ async fn unknown_things_are_404() {
     app.wait_for_job(&job).await;
 }
 
-async fn open_store(dir: &Path) -> cad2mo::store::Store {
+async fn open_store(dir: &Path) -> cad2mo_server::store::Store {
     let url = cad2mo_tests::app::database_url_for(dir).await;
-    cad2mo::store::Store::open(&url).await.expect("store")
+    cad2mo_server::store::Store::open(&url).await.expect("store")
 }
 
 /// A job interrupted mid-conversion: downloads answer 409 until it is done, and a restart
@@ -397,8 +397,8 @@ async fn interrupted_jobs_resume_after_a_restart() {
 
     // Whatever the workers managed, make the first job look like a crash in the middle.
     let store = open_store(dir.path()).await;
-    assert!(cad2mo::store::models::mark_interrupted(&store.pool, &job).await.expect("mark"));
-    assert!(!cad2mo::store::models::mark_interrupted(&store.pool, "nope").await.expect("mark"));
+    assert!(cad2mo_server::store::models::mark_interrupted(&store.pool, &job).await.expect("mark"));
+    assert!(!cad2mo_server::store::models::mark_interrupted(&store.pool, "nope").await.expect("mark"));
     store.pool.close().await;
 
     // The restarted server re-queues and finishes it.
@@ -420,7 +420,7 @@ async fn interrupted_jobs_resume_after_a_restart() {
 
     // Interrupt again while this server runs: its workers do not see it, downloads say 409.
     let store = open_store(app.data_dir()).await;
-    assert!(cad2mo::store::models::mark_interrupted(&store.pool, &job).await.expect("mark"));
+    assert!(cad2mo_server::store::models::mark_interrupted(&store.pool, &job).await.expect("mark"));
     store.pool.close().await;
     let p = problem(app.package(&id, 1).await, 409).await;
     assert!(p["detail"].as_str().expect("detail").contains(&job), "{p}");
@@ -443,15 +443,15 @@ async fn failed_conversions_keep_their_problem() {
     let app = TestApp::spawn().await;
     let dir = app.stop().await;
     let broken = zip_dir(&case("broken_dangling_ref"));
-    let sha = cad2mo::store::blobs::Blobs::new(dir.path()).expect("blobs").put(&broken).expect("put");
+    let sha = cad2mo_server::store::blobs::Blobs::new(dir.path()).expect("blobs").put(&broken).expect("put");
     let store = open_store(dir.path()).await;
-    let version = cad2mo::store::models::NewVersion {
+    let version = cad2mo_server::store::models::NewVersion {
         bundle_name: "bundle.zip",
         bundle_sha256: &sha,
         bundle_size: broken.len() as i64,
         options_json: "{}",
     };
-    let created = cad2mo::store::models::create_model(&store.pool, "PENDULUM", &version).await.expect("queued");
+    let created = cad2mo_server::store::models::create_model(&store.pool, "PENDULUM", &version).await.expect("queued");
     let (id, job) = (created.model_id, created.job_id);
     store.pool.close().await;
 
@@ -609,19 +609,19 @@ async fn a_job_that_keeps_stopping_the_service_is_failed() {
     let (id, _, job) = app.upload_model_ok(pendulum(), &[]).await;
     app.wait_for_job(&job).await; // attempt 1
     let mut dir = app.stop().await;
-    for attempt in 2..=cad2mo::jobs::MAX_ATTEMPTS + 1 {
+    for attempt in 2..=cad2mo_server::jobs::MAX_ATTEMPTS + 1 {
         let store = open_store(dir.path()).await;
-        assert!(cad2mo::store::models::mark_interrupted(&store.pool, &job).await.expect("mark"));
+        assert!(cad2mo_server::store::models::mark_interrupted(&store.pool, &job).await.expect("mark"));
         store.pool.close().await;
         let app = TestApp::spawn_in(dir, |_| {}).await;
         let done = app.wait_for_job(&job).await;
-        if attempt <= cad2mo::jobs::MAX_ATTEMPTS {
+        if attempt <= cad2mo_server::jobs::MAX_ATTEMPTS {
             assert_eq!(done["status"], "succeeded", "attempt {attempt} runs: {done:#}");
         } else {
             assert_eq!(done["status"], "failed", "attempt {attempt} is not run: {done:#}");
             assert_eq!(done["error"]["type"], "/problems/conversion-aborted", "{done:#}");
             let detail = done["error"]["detail"].as_str().expect("detail");
-            assert!(detail.contains(&format!("stopped the service {} times", cad2mo::jobs::MAX_ATTEMPTS)), "{detail}");
+            assert!(detail.contains(&format!("stopped the service {} times", cad2mo_server::jobs::MAX_ATTEMPTS)), "{detail}");
             let p = problem(app.package(&id, 1).await, 422).await;
             assert_eq!(p, done["error"]);
             // A new version is a new job: it runs.

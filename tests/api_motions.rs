@@ -4,12 +4,12 @@
 use cad2mo_tests::app::TestApp;
 use serde_json::{json, Value};
 
-#[path = "../server/benches/support/gen.rs"]
+#[path = "../engine/benches/support/gen.rs"]
 #[allow(dead_code)]
 mod gen;
 
 fn arm_zip(n: usize) -> Vec<u8> {
-    cad2mo::pipeline::back::bundle::write_zip(&[("arm.xml".to_string(), gen::serial_arm_xml(n).into_bytes())]).expect("zip")
+    cad2mo_engine::pipeline::back::bundle::write_zip(&[("arm.xml".to_string(), gen::serial_arm_xml(n).into_bytes())]).expect("zip")
 }
 
 async fn seeded_instance(app: &TestApp, class_path: &str) -> String {

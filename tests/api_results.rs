@@ -2,11 +2,11 @@
 //! only, as filtered result files are) uploaded to its version; poses from our kinematics, at the
 //! CAD pose where the file's joints are at their start values; variables, series, refusals.
 
-use cad2mo::results::write::trajectory;
+use cad2mo_engine::results::write::trajectory;
 use cad2mo_tests::app::TestApp;
 use serde_json::Value;
 
-#[path = "../server/benches/support/gen.rs"]
+#[path = "../engine/benches/support/gen.rs"]
 #[allow(dead_code)]
 mod gen;
 
@@ -30,7 +30,7 @@ fn f32_at(b: &[u8], k: usize) -> f64 {
 #[tokio::test]
 async fn results_upload_poses_series_and_refusals() {
     let app = TestApp::spawn().await;
-    let zip = cad2mo::pipeline::back::bundle::write_zip(&[("arm.xml".to_string(), gen::serial_arm_xml(6).into_bytes())]).expect("zip");
+    let zip = cad2mo_engine::pipeline::back::bundle::write_zip(&[("arm.xml".to_string(), gen::serial_arm_xml(6).into_bytes())]).expect("zip");
     let (id, _, job) = app.upload_model_ok(zip, &[]).await;
     assert_eq!(app.wait_for_job(&job).await["status"], "succeeded");
     let joints = json_of(app.get(&format!("/api/models/{id}/joints")).await, 200).await;

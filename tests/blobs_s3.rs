@@ -4,7 +4,7 @@
 
 use std::sync::Arc;
 
-use cad2mo::store::blobs::{sha256_hex, BlobSettings, Blobs};
+use cad2mo_server::store::blobs::{sha256_hex, BlobSettings, Blobs};
 use cad2mo_tests::app::{zip_dir, TestApp};
 use cad2mo_tests::common::workspace_root;
 use cad2mo_tests::s3;
@@ -103,9 +103,9 @@ async fn api_flow_with_blobs_on_s3() {
     let local = app.data_dir().join("blobs");
     assert!(!local.exists() || std::fs::read_dir(&local).expect("dir").next().is_none(), "blobs were written locally");
 
-    let store = cad2mo::store::Store::open(&format!("sqlite://{}", app.data_dir().join("cad2mo.db").display())).await.expect("db");
+    let store = cad2mo_server::store::Store::open(&format!("sqlite://{}", app.data_dir().join("cad2mo.db").display())).await.expect("db");
     let blobs = Blobs::open(&place.settings(), app.data_dir()).await.expect("blobs");
-    let report = cad2mo::store::integrity::check(&store, &blobs).await.expect("check");
+    let report = cad2mo_server::store::integrity::check(&store, &blobs).await.expect("check");
     assert!(report.is_consistent() && report.orphans.is_empty(), "{report:?}");
     assert_eq!(report.stored, 3, "{report:?}");
 

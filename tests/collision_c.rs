@@ -9,8 +9,8 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
-use cad2mo::collision::ConvexPart;
-use cad2mo::pipeline::back::modelica::mechatronics::collision;
+use cad2mo_engine::collision::ConvexPart;
+use cad2mo_engine::pipeline::back::modelica::mechatronics::collision;
 use cad2mo_tests::common::{modelica_syntax_errors, msl_check, tools_required, workspace_root};
 use parry3d_f64::na::{Isometry3, Matrix3, Point3, Quaternion, Translation3, UnitQuaternion, Vector3};
 use parry3d_f64::shape::{Ball, ConvexPolyhedron, Segment, Shape};
@@ -468,7 +468,7 @@ fn shape_file_of_a_converted_package_is_read_by_the_c_code() {
     let tmp = tempfile::tempdir().expect("tempdir");
     let Some(exe) = build(tmp.path()) else { return };
     let case = cad2mo_tests::common::workspace_root().join("tests/in/vrml_pinned");
-    let opts = cad2mo::pipeline::Options::default();
+    let opts = cad2mo_engine::pipeline::Options::default();
     let out = cad2mo_tests::common::convert_path(&case, &opts).expect("converts");
     let pkg_dir = tmp.path().join("unzipped");
     for (p, b) in &out.files {
@@ -490,9 +490,9 @@ fn shape_file_of_a_converted_package_is_read_by_the_c_code() {
     // No vertices in the text: every number in the world's modifiers is a size or an index.
     assert!(!mech.contains("vertices="), "Mechatronics.mo carries vertices");
     // The CAD poses of the named bodies.
-    let bundle = cad2mo::cli::read_bundle(&case, &Default::default()).expect("bundle");
-    let analysed = cad2mo::pipeline::analyse(&bundle, &opts).expect("analyses");
-    let poses = cad2mo::pipeline::back::collision_shapes::cad_poses(&analysed.model);
+    let bundle = cad2mo::read_bundle(&case, &Default::default()).expect("bundle");
+    let analysed = cad2mo_engine::pipeline::analyse(&bundle, &opts).expect("analyses");
+    let poses = cad2mo_engine::pipeline::back::collision_shapes::cad_poses(&analysed.model);
     let index: std::collections::BTreeMap<&str, usize> = coll.bodies.iter().enumerate().map(|(i, b)| (b.body.as_str(), i)).collect();
     let mut stdin = String::new();
     for n in &names {

@@ -83,8 +83,8 @@ async fn the_service_keeps_its_contract() {
     })
     .await;
     let url = app.database_url().to_string();
-    let store = cad2mo::store::Store::open(&url).await.expect("store");
-    let token = cad2mo::store::tokens::create(&store, "contract", None).await.expect("token");
+    let store = cad2mo_server::store::Store::open(&url).await.expect("store");
+    let token = cad2mo_server::store::tokens::create(&store, "contract", None).await.expect("token");
     app.client = token_client(&token);
 
     // A converted model with two versions and a drive; a model to delete and one to delete a version of.
@@ -135,7 +135,7 @@ async fn the_service_keeps_its_contract() {
             (format!("{}.{field}", j["name"].as_str().expect("name")), vec![q0, q0 + 0.01])
         })
         .collect();
-    let mat = cad2mo::results::write::trajectory(&[0.0, 1.0], &series, false);
+    let mat = cad2mo_engine::results::write::trajectory(&[0.0, 1.0], &series, false);
     let mut result_ids = Vec::new();
     for _ in 0..2 {
         let form = reqwest::multipart::Form::new().part("file", reqwest::multipart::Part::bytes(mat.clone()).file_name("r.mat"));

@@ -7,10 +7,10 @@
 use std::collections::BTreeMap;
 use std::path::Path;
 
-use cad2mo::pipeline::back::modelica::diagram::{extend, svg, Class, Sheet};
-use cad2mo::pipeline::back::modelica::{self as modelica, mechatronics};
-use cad2mo::pipeline::front::bundle::Bundle;
-use cad2mo::pipeline::{self, Options, Output};
+use cad2mo_engine::pipeline::back::modelica::diagram::{extend, svg, Class, Sheet};
+use cad2mo_engine::pipeline::back::modelica::{self as modelica, mechatronics};
+use cad2mo_engine::pipeline::front::bundle::Bundle;
+use cad2mo_engine::pipeline::{self, Options, Output};
 use cad2mo_tests::common::{convert_path, fixture_bundle, fixtures_dir, sorted_dirs, workspace_root};
 use cad2mo_tests::diagram::{check_files, check_package, undescribed_classes};
 

@@ -3,7 +3,7 @@
 //! (Validation refuses non-finite and implausible input; this checks the outputs themselves.)
 
 
-use cad2mo::pipeline::{Options, Output};
+use cad2mo_engine::pipeline::{Options, Output};
 use cad2mo_tests::common::{convert_path, files_with_ext, fixtures_dir, sorted_dirs, workspace_root};
 use serde_json::Value;
 

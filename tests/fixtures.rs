@@ -4,7 +4,7 @@
 
 use std::process::Command;
 
-use cad2mo::pipeline::Options;
+use cad2mo_engine::pipeline::Options;
 use cad2mo_tests::check::fk_check_with_inertia;
 use cad2mo_tests::common::{convert_path, files_with_ext, fixture_bundle, fixtures_dir, modelica_syntax_errors, msl_check, tools_required, workspace_root, write_output};
 use cad2mo_tests::truth::{xml_cgs, xml_frames, xml_mass_properties};

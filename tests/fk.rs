@@ -6,7 +6,7 @@
 
 use std::collections::BTreeMap;
 
-use cad2mo::pipeline::Options;
+use cad2mo_engine::pipeline::Options;
 use cad2mo_tests::check::{fk_check, fk_check_with_inertia, nearest_rotation, TOL};
 use cad2mo_tests::common::{convert_path, files_with_ext, sorted_dirs, workspace_root};
 use cad2mo_tests::truth::{xml_cgs, xml_frames, xml_mass_properties, TruthFrame};
@@ -186,7 +186,7 @@ fn planar_loops_have_parallel_axes_in_the_emitted_model() {
             let mut axes = Vec::new();
             for j in &l.joints {
                 let joint = out.report.joints.iter().find(|r| &r.modelica_name == j).expect("joint in report");
-                for e in joint.elements.iter().filter(|e| e.kind == cad2mo::pipeline::ir::PrimitiveKind::Revolute) {
+                for e in joint.elements.iter().filter(|e| e.kind == cad2mo_engine::pipeline::ir::PrimitiveKind::Revolute) {
                     let c = model.component(&e.modelica_name).expect("element component");
                     let Some(cad2mo_tests::fk::Value::Vec(n)) = c.params.get("n") else { panic!("{name}: {} has no n", c.name) };
                     let frame_a = poses.get(&format!("{}.frame_a", c.name)).expect("frame_a reached");

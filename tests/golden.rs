@@ -7,8 +7,8 @@
 
 use std::path::Path;
 
-use cad2mo::pipeline::front::bundle::Limits;
-use cad2mo::pipeline::{self, ir, Options};
+use cad2mo_engine::pipeline::front::bundle::Limits;
+use cad2mo_engine::pipeline::{self, ir, Options};
 use cad2mo_tests::common::{file_text, modelica_syntax_errors, msl_check, sorted_dirs, workspace_root, write_output};
 use serde_json::Value;
 
@@ -69,7 +69,7 @@ fn golden() {
         let out_dir = root.join("tests/out").join(&name);
         let opts = case_options(case);
         let expect = expect_json(case);
-        let bundle = cad2mo::cli::read_bundle(case, &Limits::default()).expect("read bundle");
+        let bundle = cad2mo::read_bundle(case, &Limits::default()).expect("read bundle");
         match pipeline::convert(&bundle, &opts) {
             Err(e) => {
                 let mut text = format!("{e}\n");

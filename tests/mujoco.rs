@@ -11,13 +11,13 @@
 use std::path::Path;
 use std::process::Command;
 
-use cad2mo::mechanism::{Mechanism, XorShift};
-use cad2mo::pipeline::front::bundle::Bundle;
-use cad2mo::pipeline::{self, Options};
+use cad2mo_engine::mechanism::{Mechanism, XorShift};
+use cad2mo_engine::pipeline::front::bundle::Bundle;
+use cad2mo_engine::pipeline::{self, Options};
 use cad2mo_tests::common::{files_with_ext, fixtures_dir, tools_required, workspace_root};
 use nalgebra::Vector3;
 
-#[path = "../server/benches/support/gen.rs"]
+#[path = "../engine/benches/support/gen.rs"]
 #[allow(dead_code)]
 mod gen;
 
@@ -35,10 +35,10 @@ fn prepare(name: &str, xml: &str) -> Option<(Mechanism, String)> {
     }
     let out = pipeline::convert(&bundle, &opts).ok()?;
     let (_, mjcf) = out.files.iter().find(|(p, _)| p.ends_with(".mjcf.xml"))?;
-    let pkg = cad2mo::pipeline::back::modelica::write(
+    let pkg = cad2mo_engine::pipeline::back::modelica::write(
         &a.model,
         &a.validated,
-        &cad2mo::pipeline::back::modelica::Options {
+        &cad2mo_engine::pipeline::back::modelica::Options {
             package_name: out.report.package_name.clone(),
             gravity: out.report.options.gravity,
             converter_version: String::new(),
@@ -103,7 +103,7 @@ fn compare(label: &str, m: &Mechanism, mjcf: &str, samples: usize, seed: u64) ->
                 return Some(Err(format!("{label}: body {name} not in the MJCF model")));
             };
             let f = |v: &serde_json::Value| v.as_f64().unwrap_or(f64::NAN);
-            let pose = m.body_pose(&k, cad2mo::pipeline::ir::BodyId(b as u32)).expect("pose");
+            let pose = m.body_pose(&k, cad2mo_engine::pipeline::ir::BodyId(b as u32)).expect("pose");
             let dp = (pose.translation.vector - Vector3::new(f(&p[0]), f(&p[1]), f(&p[2]))).norm();
             let theirs = nalgebra::UnitQuaternion::from_quaternion(nalgebra::Quaternion::new(f(&r[0]), f(&r[1]), f(&r[2]), f(&r[3])));
             let dr = pose.rotation.angle_to(&theirs);

@@ -10,7 +10,7 @@
 use std::collections::{BTreeMap, BTreeSet};
 use std::time::{Duration, Instant};
 
-use cad2mo::store::integrity;
+use cad2mo_server::store::integrity;
 use cad2mo_tests::app::heavy_pendulum;
 use cad2mo_tests::app_models::upload_form;
 use cad2mo_tests::common::workspace_root;
@@ -27,7 +27,7 @@ fn pendulum(i: usize) -> Vec<u8> {
     assert_eq!(xml.matches("<mass>0.2673</mass>").count(), 1);
     let xml = xml.replace("<mass>0.2673</mass>", &format!("<mass>{}</mass>", 0.2673 + i as f64 * 1e-3));
     let stl = std::fs::read(dir.join("meshes/LINK_prt.stl")).expect("stl");
-    cad2mo::pipeline::back::bundle::write_zip(&[("PENDULUM.xml".into(), xml.into_bytes()), ("meshes/LINK_prt.stl".into(), stl)]).expect("zip")
+    cad2mo_engine::pipeline::back::bundle::write_zip(&[("PENDULUM.xml".into(), xml.into_bytes()), ("meshes/LINK_prt.stl".into(), stl)]).expect("zip")
 }
 
 fn client() -> reqwest::Client {
@@ -62,7 +62,7 @@ async fn assert_consistent(cluster: &Cluster, models: &[String]) {
     assert!(report.orphans.is_empty(), "orphan blobs: {report:?}");
     let mut mine = BTreeSet::new();
     for m in models {
-        for v in cad2mo::store::models::list_versions(&store.pool, m).await.expect("versions") {
+        for v in cad2mo_server::store::models::list_versions(&store.pool, m).await.expect("versions") {
             mine.insert(v.bundle_sha256.clone());
             mine.extend(v.package_sha256.clone());
             mine.extend(v.report_sha256.clone());
@@ -99,7 +99,7 @@ async fn check_blobs_finds_corrupt_and_orphan_blobs() {
     assert!(code == Some(0) && out.contains(&format!("orphan {orphan}")), "{code:?}\n{out}");
 
     // Overwrite the package with other bytes, behind the service's back.
-    let hash = cad2mo::store::blobs::sha256_hex(&package);
+    let hash = cad2mo_server::store::blobs::sha256_hex(&package);
     let mut tampered = package.clone();
     tampered[0] ^= 0xff;
     match &cluster.s3 {

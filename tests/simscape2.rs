@@ -8,10 +8,10 @@
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
-use cad2mo::pipeline::front::simscape2;
-use cad2mo::pipeline::ir::{Model, PrimitiveKind, Warning};
-use cad2mo::pipeline::valid::{Analysis, Validated};
-use cad2mo::pipeline::{back, passes, report, valid, Output, VERSION};
+use cad2mo_engine::pipeline::front::simscape2;
+use cad2mo_engine::pipeline::ir::{Model, PrimitiveKind, Warning};
+use cad2mo_engine::pipeline::valid::{Analysis, Validated};
+use cad2mo_engine::pipeline::{back, passes, report, valid, Output, VERSION};
 use cad2mo_tests::check::fk_check_with_inertia;
 use cad2mo_tests::common::fixtures_dir;
 use cad2mo_tests::xml2_truth::scan;

@@ -9,7 +9,7 @@
 
 use std::path::Path;
 
-use cad2mo::pipeline::Options;
+use cad2mo_engine::pipeline::Options;
 use cad2mo_tests::common::{convert_path, file_text, files_with_ext, fixtures_dir, sorted_dirs, workspace_root};
 use cad2mo_tests::diagram::check_package;
 use cad2mo_tests::fk::{forward_kinematics, parse_mechanics};

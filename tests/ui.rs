@@ -162,7 +162,7 @@ async fn end_to_end_in_chromium() {
     std::fs::create_dir_all(&downloads).expect("downloads");
 
     // The live view's sender: the C source packages ship, compiled into the test harness.
-    let harness = cad2mo_tests::live::build_harness(cad2mo::pipeline::back::modelica::mechatronics::live::C_SOURCE, work.path())
+    let harness = cad2mo_tests::live::build_harness(cad2mo_engine::pipeline::back::modelica::mechatronics::live::C_SOURCE, work.path())
         .map(|p| p.display().to_string())
         .unwrap_or_default();
     let url = app.url("");

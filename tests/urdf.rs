@@ -10,9 +10,9 @@ use std::collections::BTreeMap;
 use std::path::Path;
 use std::process::Command;
 
-use cad2mo::mechanism::{Mechanism, XorShift};
-use cad2mo::pipeline::front::bundle::Bundle;
-use cad2mo::pipeline::{self, Options};
+use cad2mo_engine::mechanism::{Mechanism, XorShift};
+use cad2mo_engine::pipeline::front::bundle::Bundle;
+use cad2mo_engine::pipeline::{self, Options};
 use cad2mo_tests::check::fk_check_with_inertia;
 use cad2mo_tests::common::{fixture_urdfs, fixtures_dir, tools_required, urdf_bundle, workspace_root};
 use cad2mo_tests::urdf_truth::{loops_closed, start_values, urdf_truth, urdf_truth_at};
@@ -52,7 +52,7 @@ fn every_fixture_urdf_converts_and_reproduces_its_poses() {
         let bodies = out.report.bodies.len();
         assert!(stats.frames >= bodies && stats.cgs == bodies && stats.inertias == bodies, "{label}: checked {stats:?} of {bodies} bodies");
         // Joint kinds and counts.
-        let by_cad: BTreeMap<&str, &cad2mo::pipeline::report::JointReport> = out.report.joints.iter().map(|j| (j.cad_name.as_str(), j)).collect();
+        let by_cad: BTreeMap<&str, &cad2mo_engine::pipeline::report::JointReport> = out.report.joints.iter().map(|j| (j.cad_name.as_str(), j)).collect();
         let mut compared = 0;
         for (name, (kind, _, _)) in &t.joints {
             let want = primitives_of(kind);
@@ -174,7 +174,7 @@ fn mujoco_reads_the_urdf_fixtures_as_we_do() {
                 let (Some(p), Some(rq)) = (r["xpos"][s][&body.cad_name].as_array(), r["xquat"][s][&body.cad_name].as_array()) else {
                     panic!("{label}: link {} not in MuJoCo's model", body.cad_name)
                 };
-                let pose = m.body_pose(&k, cad2mo::pipeline::ir::BodyId(b as u32)).expect("pose");
+                let pose = m.body_pose(&k, cad2mo_engine::pipeline::ir::BodyId(b as u32)).expect("pose");
                 let dp = (pose.translation.vector - Vector3::new(f(&p[0]), f(&p[1]), f(&p[2]))).norm();
                 let theirs = nalgebra::UnitQuaternion::from_quaternion(nalgebra::Quaternion::new(f(&rq[0]), f(&rq[1]), f(&rq[2]), f(&rq[3])));
                 let dr = pose.rotation.angle_to(&theirs);
@@ -224,7 +224,7 @@ fn onshape_arm_exported_both_ways_has_the_same_kinematics() {
             .map(|k| {
                 let j = a.model.joints.iter().find(|j| j.cad_name == name(k)).unwrap_or_else(|| panic!("{}: no joint {}", path.display(), name(k)));
                 assert_eq!(j.primitives.len(), 1, "{}", name(k));
-                assert_eq!(j.primitives[0].kind, cad2mo::pipeline::ir::PrimitiveKind::Revolute, "{}", name(k));
+                assert_eq!(j.primitives[0].kind, cad2mo_engine::pipeline::ir::PrimitiveKind::Revolute, "{}", name(k));
                 (a.model.frame(j.base).pose.translation.vector, j.primitives[0].axis_world.normalize())
             })
             .collect()

@@ -9,9 +9,9 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use cad2mo::mechanism::{Mechanism, XorShift};
-use cad2mo::pipeline::front::bundle::Limits;
-use cad2mo::pipeline::{self, Options};
+use cad2mo_engine::mechanism::{Mechanism, XorShift};
+use cad2mo_engine::pipeline::front::bundle::Limits;
+use cad2mo_engine::pipeline::{self, Options};
 use cad2mo_tests::common::{files_with_ext, fixture_bundle, fixtures_dir, sorted_dirs, tools_required, workspace_root};
 use nalgebra::{Isometry3, Matrix3, Quaternion, Rotation3, Translation3, UnitQuaternion, Vector3};
 
@@ -65,7 +65,7 @@ fn off(a: &Isometry3<f64>, b: &Isometry3<f64>) -> (f64, f64) {
 /// Checks one bundle; `None` when MuJoCo is unavailable, `Some(false)` when the bundle does not
 /// convert (broken cases).
 fn check(label: &str, bundle_path: &Path) -> Option<bool> {
-    let Ok(bundle) = cad2mo::cli::read_bundle(bundle_path, &Limits::default()) else { return Some(false) };
+    let Ok(bundle) = cad2mo::read_bundle(bundle_path, &Limits::default()) else { return Some(false) };
     let opts = Options { write_shapes: false, ..Options::default() };
     let out = match pipeline::convert(&bundle, &opts) {
         Ok(out) => out,
@@ -80,10 +80,10 @@ fn check(label: &str, bundle_path: &Path) -> Option<bool> {
     // Our tree mechanisms (no loops, free bodies, sphericals): random coordinates too.
     let a = pipeline::analyse(&bundle, &opts).expect("analyses as it converted");
     let mech = Mechanism::from_validated(&a.model, &a.validated).ok().filter(|m| !m.has_loops() && m.dof() > 0).map(|mut m| {
-        let pkg = cad2mo::pipeline::back::modelica::write(
+        let pkg = cad2mo_engine::pipeline::back::modelica::write(
             &a.model,
             &a.validated,
-            &cad2mo::pipeline::back::modelica::Options {
+            &cad2mo_engine::pipeline::back::modelica::Options {
                 package_name: out.report.package_name.clone(),
                 gravity: out.report.options.gravity,
                 converter_version: String::new(),
@@ -133,7 +133,7 @@ fn check(label: &str, bundle_path: &Path) -> Option<bool> {
             let q: Vec<f64> = m.q0().iter().zip(u).map(|(q0, u)| q0 + u).collect();
             let k = m.forward(&q).expect("fk");
             for (b, name) in m.body_names().iter().enumerate() {
-                let ours = m.body_pose(&k, cad2mo::pipeline::ir::BodyId(b as u32)).expect("pose");
+                let ours = m.body_pose(&k, cad2mo_engine::pipeline::ir::BodyId(b as u32)).expect("pose");
                 let mj = pose_of(&result, s + 1, name).unwrap_or_else(|| panic!("{label}: body {name} not in MuJoCo's model"));
                 let (dp, dr) = off(&ours, &mj);
                 assert!(dp <= TOL && dr <= TOL, "{label}: sample {s}, body {name}: MuJoCo at u is {dp:e} m, {dr:e} rad from ours at q0 + u");

@@ -13,12 +13,12 @@
 use std::collections::BTreeMap;
 use std::path::PathBuf;
 
-use cad2mo::pipeline::back::modelica::{self, Layout};
-use cad2mo::pipeline::back::urdf::{self, DEFAULT_EFFORT, DEFAULT_TRAVEL, DEFAULT_VELOCITY};
-use cad2mo::pipeline::front::urdf as front;
-use cad2mo::pipeline::ir::{FrameOwner, JointLimits, Model, PrimitiveKind};
-use cad2mo::pipeline::passes;
-use cad2mo::pipeline::valid::{self, Analysis, Validated};
+use cad2mo_engine::pipeline::back::modelica::{self, Layout};
+use cad2mo_engine::pipeline::back::urdf::{self, DEFAULT_EFFORT, DEFAULT_TRAVEL, DEFAULT_VELOCITY};
+use cad2mo_engine::pipeline::front::urdf as front;
+use cad2mo_engine::pipeline::ir::{FrameOwner, JointLimits, Model, PrimitiveKind};
+use cad2mo_engine::pipeline::passes;
+use cad2mo_engine::pipeline::valid::{self, Analysis, Validated};
 use cad2mo_tests::common::{files_with_ext, fixtures_dir, sorted_dirs, workspace_root};
 use nalgebra::Isometry3;
 
@@ -76,7 +76,7 @@ fn round_trip(label: &str, bytes: &[u8]) -> (usize, usize, usize) {
     let text = urdf::write(m1, &first.validated, &first.layout, "P", false);
     let second = read(&format!("{label} (written)"), text.as_bytes());
     let m2 = &second.model;
-    let ctx = || format!("{label}; written URDF:\n{}", cad2mo::pipeline::ir::clip(&text, 20_000));
+    let ctx = || format!("{label}; written URDF:\n{}", cad2mo_engine::pipeline::ir::clip(&text, 20_000));
 
     // Bodies.
     let bodies2: BTreeMap<&str, usize> = m2.bodies.iter().enumerate().map(|(i, b)| (b.cad_name.as_str(), i)).collect();
@@ -134,7 +134,7 @@ fn round_trip(label: &str, bytes: &[u8]) -> (usize, usize, usize) {
         }
         let &k = joints2.get(name.as_str()).unwrap_or_else(|| panic!("{label}: joint {name} lost\n{}", ctx()));
         let j2 = &m2.joints[k];
-        let kinds = |j: &cad2mo::pipeline::ir::Joint| j.primitives.iter().map(|p| p.kind).collect::<Vec<_>>();
+        let kinds = |j: &cad2mo_engine::pipeline::ir::Joint| j.primitives.iter().map(|p| p.kind).collect::<Vec<_>>();
         assert_eq!(kinds(j1), kinds(j2), "{label}: joint {name} kinds");
         let (b1, f1) = (body_name(m1, Some(&names1.bodies), j1.base), body_name(m1, Some(&names1.bodies), j1.follower));
         let (b2, f2) = (body_name(m2, None, j2.base), body_name(m2, None, j2.follower));
@@ -164,8 +164,8 @@ fn round_trip(label: &str, bytes: &[u8]) -> (usize, usize, usize) {
     // Couplings and free bodies.
     // Offsets in URDF's coordinates (q − q0 on both sides).
     let couplings = |m: &Model, v: &Validated, names: Option<&Vec<String>>| {
-        let name = |j: cad2mo::pipeline::ir::JointId| names.map_or_else(|| m.joint(j).cad_name.clone(), |n| n[j.index()].clone());
-        let q0 = |j: cad2mo::pipeline::ir::JointId| v.analysis.chains[j.index()].elements.first().map_or(0.0, |e| e.q0);
+        let name = |j: cad2mo_engine::pipeline::ir::JointId| names.map_or_else(|| m.joint(j).cad_name.clone(), |n| n[j.index()].clone());
+        let q0 = |j: cad2mo_engine::pipeline::ir::JointId| v.analysis.chains[j.index()].elements.first().map_or(0.0, |e| e.q0);
         let mut v: Vec<(String, String, f64, f64)> = m
             .couplings
             .iter()

@@ -3,7 +3,7 @@
 //! the world by the body's CS1 pose, lands exactly where the VRML put it (the generator's own
 //! world bounding boxes, `expect.json` `vrml_bbox_m`).
 
-use cad2mo::pipeline::Options;
+use cad2mo_engine::pipeline::Options;
 use cad2mo_tests::common::{convert_path, sorted_dirs, workspace_root};
 use nalgebra::{Matrix3, Vector3};
 use serde_json::Value;

@@ -3,7 +3,7 @@
 //! binaries in `fuzz_targets/` call them, and `server/tests/fuzz_regressions.rs` includes this
 //! file to replay every input under `fuzz/regressions/<target>/` on a normal `cargo test`.
 
-use cad2mo::pipeline::{
+use cad2mo_engine::pipeline::{
     self,
     front::bundle::{Bundle, Limits},
     front::{mesh, simmechanics, stl, vrml},
@@ -64,7 +64,7 @@ pub fn dae(data: &[u8]) {
 /// the service does with it: the summary, variable search, every series (of the first 64
 /// variables) thinned for a plot, and Dymola's visual shapes with their pose stream.
 pub fn mat(data: &[u8]) {
-    use cad2mo::results::{self, mat::Trajectory, shapes::Scene};
+    use cad2mo_engine::results::{self, mat::Trajectory, shapes::Scene};
     let t = match Trajectory::read(data, "fuzz.mat") {
         Ok(t) => t,
         Err(e) => {
@@ -86,7 +86,7 @@ pub fn mat(data: &[u8]) {
 /// A live view datagram -> `live::decode`, then the signature check and the poses, as the relay
 /// does (with a fixed key: a random frame's tag must not verify, and nothing may panic).
 pub fn live(data: &[u8]) {
-    use cad2mo::live;
+    use cad2mo_engine::live;
     let Ok(f) = live::decode(data) else { return };
     let _ = f.model_id();
     let key = [7u8; 32];

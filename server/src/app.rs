@@ -27,13 +27,13 @@ pub struct AppState {
     /// Permits for upload checks (`settings.max_checks`): bounds the bundles analysed at once.
     pub checks: Arc<tokio::sync::Semaphore>,
     /// Analysed versions for motions (a few, most recently used).
-    pub kinematics: crate::motions::Cache,
+    pub kinematics: crate::service::motions::Cache,
     /// The address actually bound (port 0 resolved): the `Host` the service answers to.
     pub addr: SocketAddr,
     /// The live view: frames from running simulations, relayed to browsers.
     pub relay: crate::relay::Relay,
     /// Collision shapes of a few versions (read back from their packages).
-    pub collisions: crate::motions::Cache<crate::collisions::VersionShapes>,
+    pub collisions: crate::service::motions::Cache<crate::service::collisions::VersionShapes>,
 }
 
 pub struct App {

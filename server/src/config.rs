@@ -90,7 +90,7 @@ pub struct Settings {
     pub data_dir: PathBuf,
     pub max_upload: u64,
     pub workers: usize,
-    /// Bytes of the process's collision shape cache (see `crate::collision::MemoryShapeCache`).
+    /// Bytes of the process's collision shape cache (see `cad2mo_engine::collision::MemoryShapeCache`).
     pub shape_cache_bytes: usize,
     /// Require tokens even on loopback.
     pub force_auth: bool,
@@ -150,7 +150,7 @@ impl Settings {
             data_dir: dir.to_path_buf(),
             max_upload: 64 * 1024 * 1024,
             workers: 2,
-            shape_cache_bytes: crate::collision::DEFAULT_CACHE_BYTES,
+            shape_cache_bytes: cad2mo_engine::collision::DEFAULT_CACHE_BYTES,
             force_auth: false,
             max_checks: 2,
             check_wait: std::time::Duration::from_secs(10),

@@ -5,7 +5,7 @@
 //! `settings.workers` permits: with a permit in hand it claims the oldest queued job
 //! (`store::models::claim_next_job`: job and version -> `running`, `started_at`) and runs it on
 //! tokio's blocking pool, so at most `workers` conversions run at once and none on the async
-//! runtime. A run reads the bundle blob, builds the package ([`crate::export::build_package`]),
+//! runtime. A run reads the bundle blob, builds the package ([`crate::service::export::build_package`]),
 //! stores package and report with [`Blobs::put`] (atomic) and only then points the version at
 //! them (`succeeded`, `finished_at`); any error is stored as a problem document on the job and
 //! the version (`failed`).
@@ -50,9 +50,9 @@ use tokio::task::{JoinHandle, JoinSet};
 use tracing::Instrument;
 
 use crate::api::ApiError;
-use crate::collision::{CacheStats, MemoryShapeCache};
-use crate::export::{self, BuildStage, BuildStep, ExportOptions};
-use crate::pipeline::observe::Stage;
+use cad2mo_engine::collision::{CacheStats, MemoryShapeCache};
+use crate::service::export::{self, BuildStage, BuildStep, ExportOptions};
+use cad2mo_engine::pipeline::observe::Stage;
 use crate::store::blobs::Blobs;
 use crate::store::models::{self, ClaimedJob, Claimer, JobOutputs};
 use crate::store::{Engine, Store, StoreError};
@@ -422,7 +422,7 @@ async fn keep_while<T>(ctx: &Ctx, job: &ClaimedJob, work: impl std::future::Futu
 
 /// The Modelica names of the model's latest converted version before this one (re-exports of a
 /// version keep their own earlier names too), so CAD renames keep their Modelica names.
-async fn previous_names(ctx: &Ctx, job: &ClaimedJob) -> Result<crate::pipeline::back::modelica::Hints, ApiError> {
+async fn previous_names(ctx: &Ctx, job: &ClaimedJob) -> Result<cad2mo_engine::pipeline::back::modelica::Hints, ApiError> {
     let versions = models::list_versions(&ctx.store.pool, &job.model_id).await?;
     let earlier = versions
         .iter()
@@ -436,7 +436,7 @@ async fn previous_names(ctx: &Ctx, job: &ClaimedJob) -> Result<crate::pipeline::
         .map_err(|e| ApiError::Internal(e.into()))?
         .map_err(|e| ApiError::Internal(e.into()))?;
     let report: serde_json::Value = bytes.and_then(|b| serde_json::from_slice(&b).ok()).unwrap_or_default();
-    Ok(crate::pipeline::name_hints(&report))
+    Ok(cad2mo_engine::pipeline::name_hints(&report))
 }
 
 struct Stored {
@@ -450,7 +450,7 @@ async fn convert(ctx: &Ctx, job: &ClaimedJob) -> Result<Stored, ApiError> {
     let Some(source) = job.source.clone() else {
         return Err(ApiError::NotFound(format!("version {} of model {}", job.version, job.model_id)));
     };
-    let drives = crate::drives::resolve_for_model(&ctx.store, &job.model_id).await?;
+    let drives = crate::service::drives::resolve_for_model(&ctx.store, &job.model_id).await?;
     let specs: Vec<_> = crate::store::motions::list(&ctx.store, &job.model_id).await?.into_iter().map(|m| m.spec).collect();
     // Limits, drives and the library matter only for motions (their tables and sizing files).
     let motions = if specs.is_empty() {
@@ -460,13 +460,13 @@ async fn convert(ctx: &Ctx, job: &ClaimedJob) -> Result<Stored, ApiError> {
             specs,
             limits: crate::store::motions::limits(&ctx.store, &job.model_id).await?,
             version: job.version,
-            drives: crate::motions::drive_parts(&ctx.store, &job.model_id).await?,
-            catalog: crate::sizing::Catalog::from_library(&crate::store::library::export(&ctx.store).await?),
+            drives: crate::service::motions::drive_parts(&ctx.store, &job.model_id).await?,
+            catalog: cad2mo_engine::sizing::Catalog::from_library(&crate::store::library::export(&ctx.store).await?),
         }
     };
     let hints = previous_names(ctx, job).await?;
     let live = match (&ctx.live, u32::try_from(job.version)) {
-        (Some((host, port)), Ok(version)) => Some(crate::pipeline::back::modelica::mechatronics::live::LiveTarget {
+        (Some((host, port)), Ok(version)) => Some(cad2mo_engine::pipeline::back::modelica::mechatronics::live::LiveTarget {
             model_id: job.model_id.clone(),
             version,
             host: host.clone(),
@@ -475,7 +475,7 @@ async fn convert(ctx: &Ctx, job: &ClaimedJob) -> Result<Stored, ApiError> {
         _ => None,
     };
     let collision_edits = crate::store::collision::edits(&ctx.store, &job.model_id).await?.into_iter().map(|(a, b, x)| ((a, b), x)).collect();
-    let shape_cache: Arc<dyn crate::collision::ShapeCache> = ctx.shapes.clone();
+    let shape_cache: Arc<dyn cad2mo_engine::collision::ShapeCache> = ctx.shapes.clone();
     let context = export::Context { name_hints: hints, live, collision_edits, shape_cache: Some(shape_cache) };
     let blobs = ctx.blobs.clone();
     let board = ctx.board.clone();

@@ -1,5 +1,5 @@
 //! The live view relay: receives the frames running simulations send (UDP, see
-//! docs/live-protocol.md), checks them with [`crate::live`], and hands each version's frames to
+//! docs/live-protocol.md), checks them with [`cad2mo_engine::live`], and hands each version's frames to
 //! the browsers watching it. One task owns the socket; browsers subscribe to a broadcast channel
 //! per version (a slow one skips to the newest frame, it never holds the others up).
 //!
@@ -16,7 +16,7 @@ use serde::Serialize;
 use tokio::net::UdpSocket;
 use tokio::sync::broadcast;
 
-use crate::live::{self, Accept, Drop, RunStats};
+use cad2mo_engine::live::{self, Accept, Drop, RunStats};
 use crate::store::blobs::Blobs;
 use crate::store::Store;
 

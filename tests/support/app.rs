@@ -6,8 +6,8 @@
 
 use std::path::Path;
 
-use cad2mo::app::App;
-use cad2mo::config::Settings;
+use cad2mo_server::app::App;
+use cad2mo_server::config::Settings;
 
 pub struct TestApp {
     pub address: String,
@@ -17,7 +17,7 @@ pub struct TestApp {
     pub client: reqwest::Client,
     dir: Option<tempfile::TempDir>,
     handle: Option<tokio::task::JoinHandle<()>>,
-    jobs: cad2mo::jobs::Jobs,
+    jobs: cad2mo_server::jobs::Jobs,
     database_url: String,
     /// Another app's database (not dropped with this one).
     shared: bool,
@@ -31,7 +31,7 @@ impl Drop for TestApp {
         // Dropped with its data folder (not handed back by `stop`): its PostgreSQL database goes too.
         if let (Some(_), Some(base)) = (&self.dir, postgres_base()) {
             if !self.shared {
-                cad2mo::store::testdb::drop_database_blocking(base, self.database_url.clone());
+                cad2mo_server::store::testdb::drop_database_blocking(base, self.database_url.clone());
             }
         }
     }
@@ -52,7 +52,7 @@ pub async fn database_url_for(dir: &Path) -> String {
     if let Ok(url) = std::fs::read_to_string(&file) {
         return url;
     }
-    let url = cad2mo::store::testdb::create_database(&base).await.expect("a test database on CAD2MO_TEST_DATABASE_URL");
+    let url = cad2mo_server::store::testdb::create_database(&base).await.expect("a test database on CAD2MO_TEST_DATABASE_URL");
     std::fs::write(&file, &url).expect("postgres-url");
     url
 }
@@ -98,7 +98,7 @@ impl TestApp {
 
     /// The data folder (database and blobs).
     /// The counters of the service's collision shape cache (shared by all its jobs).
-    pub fn shape_cache_stats(&self) -> cad2mo::collision::CacheStats {
+    pub fn shape_cache_stats(&self) -> cad2mo_engine::collision::CacheStats {
         self.jobs.shape_cache_stats()
     }
 
@@ -144,7 +144,7 @@ pub fn zip_dir(dir: &Path) -> Vec<u8> {
         let rel = p.strip_prefix(dir).expect("under dir").to_string_lossy().replace('\\', "/");
         files.push((rel, std::fs::read(&p).expect("read")));
     }
-    cad2mo::pipeline::back::bundle::write_zip(&files).expect("zip")
+    cad2mo_engine::pipeline::back::bundle::write_zip(&files).expect("zip")
 }
 
 /// The pendulum case with a binary STL of `triangles` small facets inside its link's box (mm):
@@ -163,5 +163,5 @@ pub fn heavy_pendulum(triangles: u32) -> Vec<u8> {
         }
         stl.extend_from_slice(&[0, 0]);
     }
-    cad2mo::pipeline::back::bundle::write_zip(&[("PENDULUM.xml".into(), xml), ("meshes/LINK_prt.stl".into(), stl)]).expect("zip")
+    cad2mo_engine::pipeline::back::bundle::write_zip(&[("PENDULUM.xml".into(), xml), ("meshes/LINK_prt.stl".into(), stl)]).expect("zip")
 }

@@ -2,7 +2,7 @@
 
 use std::collections::BTreeMap;
 
-use cad2mo::pipeline::Output;
+use cad2mo_engine::pipeline::Output;
 use nalgebra::{Matrix3, Vector3};
 
 use crate::common::file_text;

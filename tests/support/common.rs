@@ -3,8 +3,8 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use cad2mo::pipeline::front::bundle::Limits;
-use cad2mo::pipeline::{self, Options, Output};
+use cad2mo_engine::pipeline::front::bundle::Limits;
+use cad2mo_engine::pipeline::{self, Options, Output};
 
 /// The workspace root (the folder holding `Cargo.toml`, `server/`, `tests/`).
 pub fn workspace_root() -> PathBuf {
@@ -38,7 +38,7 @@ pub fn tools_required() -> bool {
 
 /// Reads a bundle from disk and converts it.
 pub fn convert_path(path: &Path, opts: &Options) -> Result<Output, String> {
-    let bundle = cad2mo::cli::read_bundle(path, &Limits::default())?;
+    let bundle = cad2mo::read_bundle(path, &Limits::default())?;
     pipeline::convert(&bundle, opts).map_err(|e| e.to_string())
 }
 
@@ -157,7 +157,7 @@ pub fn fixture_urdfs(fx: &Path) -> Vec<(PathBuf, PathBuf)> {
 
 /// The URDF and every mesh file of its set, at their paths in the set (so `package://` URIs
 /// resolve as they do in the source repository).
-pub fn urdf_bundle(urdf: &Path, set: &Path) -> cad2mo::pipeline::front::bundle::Bundle {
+pub fn urdf_bundle(urdf: &Path, set: &Path) -> cad2mo_engine::pipeline::front::bundle::Bundle {
     let mut files = Vec::new();
     let mut stack = vec![set.to_path_buf()];
     while let Some(d) = stack.pop() {
@@ -172,6 +172,6 @@ pub fn urdf_bundle(urdf: &Path, set: &Path) -> cad2mo::pipeline::front::bundle::
             }
         }
     }
-    cad2mo::pipeline::front::bundle::Bundle::from_files("urdf-set", files).expect("bundle")
+    cad2mo_engine::pipeline::front::bundle::Bundle::from_files("urdf-set", files).expect("bundle")
 }
 

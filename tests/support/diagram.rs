@@ -6,8 +6,8 @@
 
 use std::collections::BTreeMap;
 
-use cad2mo::pipeline::back::modelica::diagram::svg::{self, Drawing};
-use cad2mo::pipeline::Output;
+use cad2mo_engine::pipeline::back::modelica::diagram::svg::{self, Drawing};
+use cad2mo_engine::pipeline::Output;
 
 use crate::fk::parse_mechanics;
 

@@ -115,7 +115,7 @@ impl Cluster {
         let dir = tempfile::tempdir().expect("tempdir");
         // CAD2MO_TEST_DATABASE_URL names a PostgreSQL server: a fresh database on it.
         let database_url = match std::env::var("CAD2MO_TEST_DATABASE_URL").ok().filter(|u| !u.is_empty()) {
-            Some(base) => cad2mo::store::testdb::create_database(&base).await.expect("a test database on CAD2MO_TEST_DATABASE_URL"),
+            Some(base) => cad2mo_server::store::testdb::create_database(&base).await.expect("a test database on CAD2MO_TEST_DATABASE_URL"),
             None => format!("sqlite://{}?mode=rwc", dir.path().join("shared.db").display()),
         };
         let s3 = crate::s3::try_place(test).await;
@@ -198,10 +198,10 @@ impl Cluster {
     }
 
     /// The shared database and blob store, opened by this process (for the integrity checks).
-    pub async fn open(&self) -> (cad2mo::store::Store, cad2mo::store::blobs::Blobs) {
-        let store = cad2mo::store::Store::open(&self.database_url).await.expect("database");
+    pub async fn open(&self) -> (cad2mo_server::store::Store, cad2mo_server::store::blobs::Blobs) {
+        let store = cad2mo_server::store::Store::open(&self.database_url).await.expect("database");
         let settings = self.s3.as_ref().map(S3Place::settings).unwrap_or_default();
-        let blobs = cad2mo::store::blobs::Blobs::open(&settings, &self.data_dir(0)).await.expect("blobs");
+        let blobs = cad2mo_server::store::blobs::Blobs::open(&settings, &self.data_dir(0)).await.expect("blobs");
         (store, blobs)
     }
 }

@@ -4,7 +4,7 @@
 
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-use cad2mo::store::blobs::BlobSettings;
+use cad2mo_server::store::blobs::BlobSettings;
 
 /// The bucket the tests use (created on first use; moto accepts any credentials).
 pub const BUCKET: &str = "cad2mo-test";

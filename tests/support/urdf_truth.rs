@@ -145,7 +145,7 @@ pub fn urdf_truth_at(text: &str, q: &BTreeMap<String, f64>) -> UrdfTruth {
 
 /// The joint values a conversion started from (each single-coordinate joint's start value, by
 /// CAD name), for [`urdf_truth_at`].
-pub fn start_values(report: &cad2mo::pipeline::report::Report) -> BTreeMap<String, f64> {
+pub fn start_values(report: &cad2mo_engine::pipeline::report::Report) -> BTreeMap<String, f64> {
     report.joints.iter().filter(|j| j.initial_q.len() == 1).map(|j| (j.cad_name.clone(), j.initial_q[0])).collect()
 }
 

@@ -15,8 +15,8 @@ use super::extract::Path;
 use super::motions::{converted_version, find as find_motion, kinematic};
 use super::ApiError;
 use crate::app::AppState;
-use crate::collisions::{self, Edits, VersionShapes};
-use crate::pipeline::back::collision_shapes::InterferenceReport;
+use crate::service::collisions::{self, Edits, VersionShapes};
+use cad2mo_engine::pipeline::back::collision_shapes::InterferenceReport;
 use crate::store;
 
 pub fn router() -> Router<AppState> {
@@ -131,7 +131,7 @@ async fn motion_collisions(
     let limits = store::motions::limits(&state.store, &model_id).await?;
     let edits = edits(&state, &model_id).await?;
     let out = blocking(move || {
-        let p = crate::motions::plan_motion(&k, &limits, &m.spec)?;
+        let p = crate::service::motions::plan_motion(&k, &limits, &m.spec)?;
         collisions::along_motion(&k.mech, &s, &edits, version, &m.name, &p)
     })
     .await?;

@@ -16,7 +16,7 @@ use super::error::FieldError;
 use super::extract::Path;
 use super::ApiError;
 use crate::app::AppState;
-use crate::drives::{self, Assignment, ReferenceSpec};
+use crate::service::drives::{self, Assignment, ReferenceSpec};
 use crate::store;
 
 pub fn router() -> Router<AppState> {
@@ -129,10 +129,10 @@ async fn latest_report(state: &AppState, model_id: &str) -> Result<Option<(i64, 
     Ok(Some((v.version, report)))
 }
 
-fn kind_name(k: crate::pipeline::back::modelica::mechatronics::JointKind) -> &'static str {
+fn kind_name(k: cad2mo_engine::pipeline::back::modelica::mechatronics::JointKind) -> &'static str {
     match k {
-        crate::pipeline::back::modelica::mechatronics::JointKind::Revolute => "revolute",
-        crate::pipeline::back::modelica::mechatronics::JointKind::Prismatic => "prismatic",
+        cad2mo_engine::pipeline::back::modelica::mechatronics::JointKind::Revolute => "revolute",
+        cad2mo_engine::pipeline::back::modelica::mechatronics::JointKind::Prismatic => "prismatic",
     }
 }
 
@@ -196,7 +196,7 @@ async fn put(
             None => errors.push(FieldError { field: format!("{slot}_instance"), message: format!("no library instance {id}") }),
         }
     }
-    let refs: Vec<(&str, &crate::library::Instance, &crate::library::Class)> = slots.iter().map(|(s, i, c)| (*s, i, c)).collect();
+    let refs: Vec<(&str, &cad2mo_engine::library::Instance, &cad2mo_engine::library::Class)> = slots.iter().map(|(s, i, c)| (*s, i, c)).collect();
     let reference = body.reference.unwrap_or(ReferenceSpec::Constant { value: j.start });
     let issues = drives::check_slots(&refs, &body.overrides).into_iter().chain(drives::check_reference(&reference));
     errors.extend(issues.map(|i| FieldError { field: i.field, message: i.message }));
@@ -209,7 +209,7 @@ async fn put(
         if let (Ok(motor), Ok(gear), Ok(controller)) = (choice("motor"), choice("gear"), choice("controller")) {
             let resolved = drives::ResolvedDrive { joint: joint.clone(), motor, gear, controller, reference: reference.clone() };
             let (plans, _) = drives::plans(&report, &[resolved]);
-            if let Err(e) = crate::pipeline::back::modelica::mechatronics::mechatronics("Check", &plans, &[], &Default::default(), "") {
+            if let Err(e) = cad2mo_engine::pipeline::back::modelica::mechatronics::mechatronics("Check", &plans, &[], &Default::default(), "") {
                 errors.push(FieldError { field: "drive".into(), message: e.to_string() });
             }
         }

@@ -8,7 +8,7 @@ use axum::http::{header, StatusCode};
 use axum::response::{IntoResponse, Response};
 use serde::Serialize;
 
-use crate::pipeline::{ConvertError, Diagnostic};
+use cad2mo_engine::pipeline::{ConvertError, Diagnostic};
 use crate::store::StoreError;
 
 /// A field-level validation message.
@@ -132,7 +132,7 @@ impl ApiError {
             title,
             status: status.as_u16(),
             // Bounded whatever the input: a problem document never carries megabytes.
-            detail: crate::pipeline::ir::clip(&self.to_string(), crate::pipeline::MAX_MESSAGE_BYTES),
+            detail: cad2mo_engine::pipeline::ir::clip(&self.to_string(), cad2mo_engine::pipeline::MAX_MESSAGE_BYTES),
             errors: errors.into_iter().take(MAX_LISTED).collect(),
             diagnostics: diagnostics.into_iter().take(MAX_LISTED).collect(),
         };

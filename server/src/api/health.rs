@@ -20,7 +20,7 @@ pub fn router() -> Router<AppState> {
 
 async fn health(State(state): State<AppState>) -> Result<Json<Health>, ApiError> {
     sqlx_ping(&state).await?;
-    Ok(Json(Health { status: "ok", version: crate::pipeline::VERSION }))
+    Ok(Json(Health { status: "ok", version: cad2mo_engine::pipeline::VERSION }))
 }
 
 async fn sqlx_ping(state: &AppState) -> Result<(), ApiError> {

@@ -11,7 +11,7 @@
 //! | `GET /api/library/export` | the library as XML (`docs/library-xml.md`) |
 //! | `POST /api/library/import` | XML in; all or nothing; counts out |
 //!
-//! The rules are in [`crate::library`]; bodies that are not JSON, or not of the expected shape,
+//! The rules are in [`cad2mo_engine::library`]; bodies that are not JSON, or not of the expected shape,
 //! become problem documents like every other error. DTOs are private to this module.
 
 use axum::body::Bytes;
@@ -28,7 +28,7 @@ use super::error::FieldError;
 use super::extract::{Path, Query};
 use super::ApiError;
 use crate::app::AppState;
-use crate::library::{
+use cad2mo_engine::library::{
     self, check_class, check_instance, check_instance_update, migrate_instance, ClassDraft, Instance, InstanceDraft,
     Issue, ParameterDraft,
 };

@@ -40,7 +40,7 @@ use serde_json::Value;
 use super::error::{blocking, FieldError};
 use super::ApiError;
 use crate::app::AppState;
-use crate::export::{self, ExportOptions, Summary};
+use crate::service::export::{self, ExportOptions, Summary};
 use crate::store::models::{self as db, Created, ModelRow, NewVersion, VersionRow};
 
 pub fn router() -> Router<AppState> {
@@ -299,7 +299,7 @@ impl FromRequest<AppState> for Upload {
                     name = Some(text.to_string());
                 }
                 "package_name" => {
-                    if crate::pipeline::back::modelica::sanitize(text, "P") != text {
+                    if cad2mo_engine::pipeline::back::modelica::sanitize(text, "P") != text {
                         return Err(invalid(
                             "package_name",
                             format!("\"{text}\" is not a Modelica identifier ([A-Za-z_][A-Za-z0-9_]*, not a keyword)"),
@@ -604,7 +604,7 @@ async fn diagram_svg(
     };
     let title = format!("{stem}.{which} (version {v})");
     let svg = blocking(move || {
-        use crate::pipeline::back::modelica::diagram::svg;
+        use cad2mo_engine::pipeline::back::modelica::diagram::svg;
         let text = |class: &str| -> Result<String, ApiError> {
             let entry = zip_entry(&bytes, &format!("{stem}/{class}.mo"))?
                 .ok_or_else(|| ApiError::NotFound(format!("{class}.mo in the package of version {v} of model {id}")))?;
@@ -670,7 +670,7 @@ struct DiffView {
     from: i64,
     to: i64,
     #[serde(flatten)]
-    diff: crate::diff::Diff,
+    diff: cad2mo_engine::diff::Diff,
 }
 
 /// The parsed report of a converted version; 409 when it has none.
@@ -700,7 +700,7 @@ async fn diff(
     }
     let old = converted_report(&state, &id, q.from).await?;
     let new = converted_report(&state, &id, q.to).await?;
-    let diff = blocking(move || Ok(crate::diff::diff(&old, &new))).await?;
+    let diff = blocking(move || Ok(cad2mo_engine::diff::diff(&old, &new))).await?;
     Ok(Json(DiffView { model_id: id, from: q.from, to: q.to, diff }))
 }
 

@@ -22,9 +22,9 @@ use super::error::blocking;
 use super::extract::{Path, Query};
 use super::ApiError;
 use crate::app::AppState;
-use crate::export::ExportOptions;
-use crate::motion::plan::{self, LimitsEdit, MotionSpec};
-use crate::motions::{self, Kinematic};
+use crate::service::export::ExportOptions;
+use cad2mo_engine::motion::plan::{self, LimitsEdit, MotionSpec};
+use crate::service::motions::{self, Kinematic};
 use crate::store;
 
 pub fn router() -> Router<AppState> {
@@ -115,7 +115,7 @@ fn body<T: serde::de::DeserializeOwned>(what: &str, b: Result<Json<serde_json::V
     serde_json::from_value(v).map_err(|e| ApiError::BadRequest(format!("invalid {what}: {e}")))
 }
 
-fn issues_invalid(what: String, issues: Vec<crate::library::Issue>) -> ApiError {
+fn issues_invalid(what: String, issues: Vec<cad2mo_engine::library::Issue>) -> ApiError {
     let detail = match issues.first() {
         Some(i) => format!("{what}: {} {}", i.field, i.message),
         None => what,
@@ -140,7 +140,7 @@ async fn put_limits(
     let mut issues = edit.check();
     if let Some([lo, hi]) = edit.position {
         if issues.is_empty() && !(lo..=hi).contains(&c.q0) {
-            issues.push(crate::library::Issue::new(
+            issues.push(cad2mo_engine::library::Issue::new(
                 "position",
                 format!("the range [{lo}, {hi}] must contain the CAD pose {} (the motion's start)", c.q0),
             ));
@@ -273,7 +273,7 @@ async fn sizing(
     let drives = motions::drive_parts(&state.store, &model_id).await?;
     let library = store::library::export(&state.store).await?;
     let report = blocking(move || {
-        let catalog = crate::sizing::Catalog::from_library(&library);
+        let catalog = cad2mo_engine::sizing::Catalog::from_library(&library);
         let p = motions::plan_motion(&k, &edits, &m.spec)?;
         motions::sizing(&k.mech, &k.gravity, version, &m.name, &p, &drives, &catalog)
     })
@@ -313,25 +313,25 @@ async fn ik(
         let axes = plan::axes(&k.mech, &edits);
         let mut issues = Vec::new();
         if b.position.iter().any(|v| !v.is_finite()) {
-            issues.push(crate::library::Issue::new("position", "must be 3 finite numbers (m)"));
+            issues.push(cad2mo_engine::library::Issue::new("position", "must be 3 finite numbers (m)"));
         }
         let target = plan::ik_target(&b.position, &b.rotation);
         if target.is_none() {
-            issues.push(crate::library::Issue::new("rotation", "must be a rotation matrix (orthonormal to 1e-6, determinant +1), rows first"));
+            issues.push(cad2mo_engine::library::Issue::new("rotation", "must be a rotation matrix (orthonormal to 1e-6, determinant +1), rows first"));
         }
         let mut seed: Vec<f64> = axes.iter().map(|a| a.q0).collect();
         for (name, v) in &b.seed {
             match axes.iter().position(|a| &a.name == name) {
                 Some(i) if v.is_finite() => seed[i] = v.clamp(axes[i].limits.position[0], axes[i].limits.position[1]),
-                Some(_) => issues.push(crate::library::Issue::new(format!("seed.{name}"), "must be a finite number")),
-                None => issues.push(crate::library::Issue::new(format!("seed.{name}"), "is not a joint of the model")),
+                Some(_) => issues.push(cad2mo_engine::library::Issue::new(format!("seed.{name}"), "must be a finite number")),
+                None => issues.push(cad2mo_engine::library::Issue::new(format!("seed.{name}"), "is not a joint of the model")),
             }
         }
         let (Some(target), true) = (target, issues.is_empty()) else {
             return Err(issues_invalid("the inverse kinematics request is not valid".into(), issues));
         };
         let (q, r, success) = plan::solve_tool(&k.mech, &axes, &b.frame, &target, &seed).map_err(|e| {
-            issues_invalid("the inverse kinematics request is not valid".into(), vec![crate::library::Issue::new("frame", e)])
+            issues_invalid("the inverse kinematics request is not valid".into(), vec![cad2mo_engine::library::Issue::new("frame", e)])
         })?;
         Ok(IkDto {
             success,

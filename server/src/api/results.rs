@@ -20,7 +20,7 @@ use super::extract::{Path, Query};
 use super::models::{invalid, multipart_error, multipart_upload, safe_file_name};
 use super::ApiError;
 use crate::app::AppState;
-use crate::results::{self, mat::Trajectory};
+use cad2mo_engine::results::{self, mat::Trajectory};
 use crate::store;
 
 pub fn router() -> Router<AppState> {

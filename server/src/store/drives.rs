@@ -3,7 +3,7 @@
 use serde_json::{Map, Value as Json};
 
 use super::{now, Store, StoreError};
-use crate::drives::{Assignment, ReferenceSpec};
+use crate::service::drives::{Assignment, ReferenceSpec};
 
 type Row = (String, String, String, String, String, String, String);
 

@@ -1,6 +1,6 @@
 //! SQL of the motor library: `library_classes`, `library_parameters`, `library_instances`.
 //!
-//! The rules live in [`crate::library`]; the functions that change data take them as a closure
+//! The rules live in [`cad2mo_engine::library`]; the functions that change data take them as a closure
 //! and run it inside one `BEGIN IMMEDIATE` transaction, on the rows as they are in that
 //! transaction: check and write cannot interleave with another writer.
 //!
@@ -15,7 +15,7 @@ use sqlx::AnyConnection;
 use sqlx::{Any, Transaction};
 
 use super::{sql, Engine, Store, StoreError};
-use crate::library::{self, Class, ImportCounts, ImportPlan, Instance, Issue, Library, ParamType, Parameter, Value};
+use cad2mo_engine::library::{self, Class, ImportCounts, ImportPlan, Instance, Issue, Library, ParamType, Parameter, Value};
 
 /// The outcome of a checked change.
 #[derive(Debug)]
@@ -460,7 +460,7 @@ pub async fn seed_if_empty(store: &Store) -> Result<bool, StoreError> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::library::seed;
+    use cad2mo_engine::library::seed;
 
     async fn store() -> (tempfile::TempDir, Store) {
         let dir = tempfile::tempdir().expect("tempdir");

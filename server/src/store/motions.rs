@@ -5,7 +5,7 @@ use std::collections::BTreeMap;
 use serde::Serialize;
 
 use super::{now, Store, StoreError};
-use crate::motion::plan::{LimitsEdit, MotionSpec};
+use cad2mo_engine::motion::plan::{LimitsEdit, MotionSpec};
 
 /// The limit edits of a model, by joint.
 pub async fn limits(store: &Store, model_id: &str) -> Result<BTreeMap<String, LimitsEdit>, StoreError> {

@@ -1,3 +1,0 @@
-fn main() -> std::process::ExitCode {
-    cad2mo::cli::main()
-}

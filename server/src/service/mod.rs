@@ -1,0 +1,14 @@
+//! The service's use cases: what a user can do with a model, between the HTTP routes and the
+//! computation (`cad2mo_engine`). Each returns its own error type; none knows HTTP (the
+//! mapping to problem+json is `api::error`'s) and none writes SQL (that is `store`'s).
+//!
+//! - [`export`]: a version's package from its stored bundle (check, convert, zip).
+//! - [`drives`]: which motor, gear and controller drive which joint, resolved for the package.
+//! - [`motions`]: motions on a version (joints, planning, trajectories, sizing).
+//! - [`collisions`]: a version's collision shapes, the allowed-collision matrix, checks along a
+//!   motion.
+
+pub mod collisions;
+pub mod drives;
+pub mod export;
+pub mod motions;
