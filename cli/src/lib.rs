@@ -487,7 +487,7 @@ fn reexport(settings: cad2mo_server::config::Settings, model: Option<String>) ->
                 }
             }
             let live = settings.live_bind.map(|a| (settings.live_host(), a.port()));
-            let pool = cad2mo_server::jobs::Jobs::start(store.clone(), blobs, settings.workers, live, settings.lease, settings.shape_cache_bytes).await?;
+            let pool = cad2mo_server::app::start_jobs(store.clone(), blobs, &settings, live).await?;
             pool.notify();
             let total = jobs.len();
             let mut done = 0;

@@ -41,6 +41,17 @@ pub struct App {
     state: AppState,
 }
 
+/// Starts the conversion workers with the service's settings; a failed job is stored with the
+/// problem document the API shows for it.
+pub async fn start_jobs(
+    store: Store,
+    blobs: Blobs,
+    settings: &Settings,
+    live: Option<(String, u16)>,
+) -> Result<Jobs, crate::store::StoreError> {
+    Jobs::start(store, blobs, settings.workers, live, settings.lease, settings.shape_cache_bytes, crate::api::error::job_problem).await
+}
+
 impl App {
     pub async fn build(settings: Settings) -> anyhow::Result<App> {
         std::fs::create_dir_all(&settings.data_dir)
@@ -52,9 +63,7 @@ impl App {
         let listener = TcpListener::bind(settings.bind).await.with_context(|| format!("binding {}", settings.bind))?;
         let relay = crate::relay::Relay::start(settings.live_bind, settings.requires_auth(), store.clone(), blobs.clone()).await;
         let live = relay.addr().map(|a| (settings.live_host(), a.port()));
-        let jobs = Jobs::start(store.clone(), blobs.clone(), settings.workers, live, settings.lease, settings.shape_cache_bytes)
-            .await
-            .context("starting the conversion workers")?;
+        let jobs = start_jobs(store.clone(), blobs.clone(), &settings, live).await.context("starting the conversion workers")?;
         let addr = listener.local_addr().unwrap_or(settings.bind);
         let checks = Arc::new(tokio::sync::Semaphore::new(settings.max_checks.max(1)));
         let state =

@@ -49,7 +49,6 @@ use tokio::sync::{mpsc, watch, Semaphore};
 use tokio::task::{JoinHandle, JoinSet};
 use tracing::Instrument;
 
-use crate::api::ApiError;
 use cad2mo_engine::collision::{CacheStats, MemoryShapeCache};
 use crate::service::export::{self, BuildStage, BuildStep, ExportOptions};
 use cad2mo_engine::pipeline::observe::Stage;
@@ -64,6 +63,34 @@ pub const MAX_ATTEMPTS: i64 = 3;
 /// How often a running job's progress is written to the database at most (4 a second), so that
 /// every instance can show it.
 const PROGRESS_EVERY: Duration = Duration::from_millis(250);
+
+/// Why a job failed. Stored with the job as the document `describe` (given to [`Jobs::start`] by
+/// the app: the API's problem+json) makes of it.
+#[derive(Debug, thiserror::Error)]
+pub enum JobError {
+    #[error("{0} not found")]
+    NotFound(String),
+    /// The job was running each time the service stopped (see the module doc).
+    #[error(
+        "the conversion stopped the service {times} times (it was still running at each restart); \
+         it is not tried again: check the bundle (size, meshes) or upload a new version"
+    )]
+    Aborted { times: i64 },
+    /// The bundle does not read or convert (the user's input).
+    #[error(transparent)]
+    Export(#[from] export::ExportError),
+    /// The model's drives no longer resolve against the library.
+    #[error(transparent)]
+    Drive(#[from] crate::service::drives::DriveError),
+    #[error(transparent)]
+    Store(#[from] StoreError),
+    /// Not the input's fault (blobs, a panic in the conversion, corrupt stored options).
+    #[error("internal error")]
+    Internal(#[from] anyhow::Error),
+}
+
+/// What a failed job stores: the document the API shows for it.
+pub type DescribeFailure = fn(JobError) -> serde_json::Value;
 
 /// A handle on the worker pool (cheap to clone): wakes the dispatcher.
 #[derive(Clone, Debug)]
@@ -92,6 +119,8 @@ struct Ctx {
     claimer: Claimer,
     /// Collision shapes by mesh content, shared by every job of the process.
     shapes: Arc<MemoryShapeCache>,
+    /// A failure's stored document.
+    describe: DescribeFailure,
 }
 
 /// Where a running job is.
@@ -199,6 +228,7 @@ impl Jobs {
         live: Option<(String, u16)>,
         lease: Duration,
         shape_cache_bytes: usize,
+        describe: DescribeFailure,
     ) -> Result<Jobs, StoreError> {
         let requeued = models::requeue_unfinished(&store.pool).await?;
         if requeued > 0 {
@@ -210,7 +240,7 @@ impl Jobs {
         tracing::info!(instance = %instance, lease_secs = lease.as_secs_f64(), "job queue instance");
         let claimer = Claimer { instance, lease_secs: lease.as_secs_f64().max(0.1) };
         let shapes = Arc::new(MemoryShapeCache::new(shape_cache_bytes));
-        let ctx = Ctx { store, blobs, board: board.clone(), live, claimer, shapes: shapes.clone() };
+        let ctx = Ctx { store, blobs, board: board.clone(), live, claimer, shapes: shapes.clone(), describe };
         let (signal, halted) = watch::channel(false);
         let dispatcher = tokio::spawn(dispatch(ctx, workers.max(1), rx, halted).instrument(tracing::info_span!("jobs")));
         let halt = Arc::new(Halt { signal, dispatcher: Mutex::new(Some(dispatcher)) });
@@ -336,11 +366,12 @@ async fn run(ctx: &Ctx, job: ClaimedJob) {
     ctx.board.set(&job.id, JobProgress::of(0, 0, 1));
     let result = if job.attempts > MAX_ATTEMPTS {
         tracing::error!(attempts = job.attempts, "the job stopped the service every time it ran: marked failed");
-        Err(ApiError::Aborted { times: job.attempts - 1 })
+        Err(JobError::Aborted { times: job.attempts - 1 })
     } else {
         keep_while(ctx, &job, convert(ctx, &job)).await
     };
     let ms = started.elapsed().as_millis() as u64;
+    let result = result.map_err(|e| (ctx.describe)(e).to_string());
     for attempt in 1..=3 {
         let recorded = match &result {
             Ok(out) => {
@@ -351,7 +382,7 @@ async fn run(ctx: &Ctx, job: ClaimedJob) {
                 };
                 models::finish_succeeded(&ctx.store.pool, &job, &outputs).await
             }
-            Err(e) => models::finish_failed(&ctx.store.pool, &job, &e.problem_json().to_string()).await,
+            Err(e) => models::finish_failed(&ctx.store.pool, &job, e).await,
         };
         match recorded {
             Ok(false) => {
@@ -422,7 +453,7 @@ async fn keep_while<T>(ctx: &Ctx, job: &ClaimedJob, work: impl std::future::Futu
 
 /// The Modelica names of the model's latest converted version before this one (re-exports of a
 /// version keep their own earlier names too), so CAD renames keep their Modelica names.
-async fn previous_names(ctx: &Ctx, job: &ClaimedJob) -> Result<cad2mo_engine::pipeline::back::modelica::Hints, ApiError> {
+async fn previous_names(ctx: &Ctx, job: &ClaimedJob) -> Result<cad2mo_engine::pipeline::back::modelica::Hints, JobError> {
     let versions = models::list_versions(&ctx.store.pool, &job.model_id).await?;
     let earlier = versions
         .iter()
@@ -433,8 +464,8 @@ async fn previous_names(ctx: &Ctx, job: &ClaimedJob) -> Result<cad2mo_engine::pi
     let blobs = ctx.blobs.clone();
     let bytes = tokio::task::spawn_blocking(move || blobs.get(&hash))
         .await
-        .map_err(|e| ApiError::Internal(e.into()))?
-        .map_err(|e| ApiError::Internal(e.into()))?;
+        .map_err(|e| JobError::Internal(e.into()))?
+        .map_err(|e| JobError::Internal(e.into()))?;
     let report: serde_json::Value = bytes.and_then(|b| serde_json::from_slice(&b).ok()).unwrap_or_default();
     Ok(cad2mo_engine::pipeline::name_hints(&report))
 }
@@ -446,9 +477,9 @@ struct Stored {
 }
 
 /// The conversion itself, off the runtime: bundle blob -> package and report blobs.
-async fn convert(ctx: &Ctx, job: &ClaimedJob) -> Result<Stored, ApiError> {
+async fn convert(ctx: &Ctx, job: &ClaimedJob) -> Result<Stored, JobError> {
     let Some(source) = job.source.clone() else {
-        return Err(ApiError::NotFound(format!("version {} of model {}", job.version, job.model_id)));
+        return Err(JobError::NotFound(format!("version {} of model {}", job.version, job.model_id)));
     };
     let drives = crate::service::drives::resolve_for_model(&ctx.store, &job.model_id).await?;
     let specs: Vec<_> = crate::store::motions::list(&ctx.store, &job.model_id).await?.into_iter().map(|m| m.spec).collect();
@@ -484,10 +515,10 @@ async fn convert(ctx: &Ctx, job: &ClaimedJob) -> Result<Stored, ApiError> {
     let task = tokio::task::spawn_blocking(move || {
         span.in_scope(|| {
             let options: ExportOptions = serde_json::from_str(&source.options_json)
-                .map_err(|e| ApiError::Internal(anyhow::anyhow!("stored options are corrupt: {e}")))?;
+                .map_err(|e| JobError::Internal(anyhow::anyhow!("stored options are corrupt: {e}")))?;
             let bundle =
-                blobs.get(&source.bundle_sha256).map_err(|e| ApiError::Internal(e.into()))?.ok_or_else(|| {
-                    ApiError::Internal(anyhow::anyhow!("bundle blob {} is missing", source.bundle_sha256))
+                blobs.get(&source.bundle_sha256).map_err(|e| JobError::Internal(e.into()))?.ok_or_else(|| {
+                    JobError::Internal(anyhow::anyhow!("bundle blob {} is missing", source.bundle_sha256))
                 })?;
             let mut last = 0.0;
             let built = export::build_package(&bundle, &source.bundle_name, &options, &drives, &motions, &context, &mut |step| {
@@ -500,14 +531,14 @@ async fn convert(ctx: &Ctx, job: &ClaimedJob) -> Result<Stored, ApiError> {
             })?;
             tracing::info!(computed = built.shapes.computed, cached = built.shapes.cached, "collision shapes");
             board.set(&job_id, JobProgress::storing());
-            let summary_json = serde_json::to_string(&built.summary).map_err(|e| ApiError::Internal(e.into()))?;
+            let summary_json = serde_json::to_string(&built.summary).map_err(|e| JobError::Internal(e.into()))?;
             // Blobs first: the database points at them only once they are complete on disk.
-            let package_sha256 = blobs.put(&built.package_zip).map_err(|e| ApiError::Internal(e.into()))?;
-            let report_sha256 = blobs.put(&built.report_json).map_err(|e| ApiError::Internal(e.into()))?;
+            let package_sha256 = blobs.put(&built.package_zip).map_err(|e| JobError::Internal(e.into()))?;
+            let report_sha256 = blobs.put(&built.report_json).map_err(|e| JobError::Internal(e.into()))?;
             Ok(Stored { package_sha256, report_sha256, summary_json })
         })
     });
-    task.await.map_err(|e| ApiError::Internal(anyhow::anyhow!("the conversion panicked: {e}")))?
+    task.await.map_err(|e| JobError::Internal(anyhow::anyhow!("the conversion panicked: {e}")))?
 }
 
 #[cfg(test)]

@@ -39,7 +39,7 @@ async fn shapes(state: &AppState, model_id: &str, version: Option<i64>) -> Resul
         let zip = blobs.get(&package).map_err(|e| ApiError::Internal(e.into()))?.ok_or_else(|| missing("package"))?;
         let report = blobs.get(&report).map_err(|e| ApiError::Internal(e.into()))?.ok_or_else(|| missing("report"))?;
         let report: serde_json::Value = serde_json::from_slice(&report).map_err(|e| ApiError::Internal(e.into()))?;
-        VersionShapes::load(&report, &zip)
+        Ok(VersionShapes::load(&report, &zip)?)
     })
     .await?;
     let s = Arc::new(s);
@@ -132,7 +132,7 @@ async fn motion_collisions(
     let edits = edits(&state, &model_id).await?;
     let out = blocking(move || {
         let p = crate::service::motions::plan_motion(&k, &limits, &m.spec)?;
-        collisions::along_motion(&k.mech, &s, &edits, version, &m.name, &p)
+        Ok(collisions::along_motion(&k.mech, &s, &edits, version, &m.name, &p)?)
     })
     .await?;
     Ok(Json(out))

@@ -11,12 +11,12 @@ use serde::Serialize;
 use cad2mo_engine::pipeline::{ConvertError, Diagnostic};
 use crate::store::StoreError;
 
-/// A field-level validation message.
-#[derive(Debug, Clone, Serialize, PartialEq)]
-pub struct FieldError {
-    pub field: String,
-    pub message: String,
-}
+pub use crate::service::FieldError;
+use crate::jobs::JobError;
+use crate::service::collisions::CollisionError;
+use crate::service::drives::DriveError;
+use crate::service::export::ExportError;
+use crate::service::motions::MotionError;
 
 #[derive(Debug, thiserror::Error)]
 pub enum ApiError {
@@ -78,6 +78,79 @@ impl From<StoreError> for ApiError {
             ApiError::Internal(e.into())
         }
     }
+}
+
+// The use cases' errors, each mapped to its problem here and nowhere else.
+
+impl From<ExportError> for ApiError {
+    fn from(e: ExportError) -> Self {
+        match e {
+            ExportError::Bundle(b) => ApiError::Invalid {
+                detail: format!("the bundle cannot be read: {b}"),
+                errors: vec![FieldError { field: "bundle".into(), message: b.to_string() }],
+            },
+            ExportError::Convert(c) => ApiError::Conversion(c),
+            ExportError::Zip(io) => ApiError::Internal(anyhow::Error::new(io).context("writing the package zip")),
+        }
+    }
+}
+
+impl From<DriveError> for ApiError {
+    fn from(e: DriveError) -> Self {
+        match e {
+            DriveError::InstanceGone { .. } => ApiError::Conflict(e.to_string()),
+            DriveError::Overrides { ref errors, .. } => ApiError::Invalid { errors: errors.clone(), detail: e.to_string() },
+            DriveError::Store(s) => s.into(),
+        }
+    }
+}
+
+impl From<MotionError> for ApiError {
+    fn from(e: MotionError) -> Self {
+        match e {
+            MotionError::Unsupported(ref what) => {
+                ApiError::Invalid { errors: vec![FieldError { field: "model".into(), message: what.clone() }], detail: e.to_string() }
+            }
+            MotionError::CannotPlan { detail, errors } => ApiError::MotionInvalid { detail, errors },
+            MotionError::OutOfRange(m) => ApiError::BadRequest(m),
+            MotionError::Dynamics(_) => ApiError::Internal(anyhow::anyhow!(e.to_string())),
+            MotionError::Export(x) => x.into(),
+            MotionError::Drive(d) => d.into(),
+            MotionError::Store(s) => s.into(),
+        }
+    }
+}
+
+impl From<CollisionError> for ApiError {
+    fn from(e: CollisionError) -> Self {
+        match e {
+            CollisionError::Corrupt(what) => ApiError::Internal(anyhow::anyhow!(what)),
+            CollisionError::Motion(m) => m.into(),
+        }
+    }
+}
+
+impl From<JobError> for ApiError {
+    fn from(e: JobError) -> Self {
+        match e {
+            JobError::NotFound(what) => ApiError::NotFound(what),
+            JobError::Aborted { times } => ApiError::Aborted { times },
+            JobError::Export(x) => x.into(),
+            JobError::Drive(d) => d.into(),
+            JobError::Store(s) => s.into(),
+            JobError::Internal(e) => ApiError::Internal(e),
+        }
+    }
+}
+
+/// The document stored with a failed job (and served with it): its problem; an internal error
+/// is logged here as a route's is when it answers.
+pub fn job_problem(e: JobError) -> serde_json::Value {
+    let api = ApiError::from(e);
+    if let ApiError::Internal(cause) = &api {
+        tracing::error!(error = ?cause, "job failed: internal error");
+    }
+    api.problem_json()
 }
 
 /// Most field errors or diagnostics listed in one problem document.
@@ -165,4 +238,31 @@ impl IntoResponse for ApiError {
 pub async fn blocking<T: Send + 'static>(f: impl FnOnce() -> Result<T, ApiError> + Send + 'static) -> Result<T, ApiError> {
     let span = tracing::Span::current();
     tokio::task::spawn_blocking(move || span.in_scope(f)).await.map_err(|e| ApiError::Internal(e.into()))?
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Each use case's error becomes the problem the API promises (status and type).
+    #[test]
+    fn use_case_errors_map_to_problems() {
+        let e = crate::service::export::check_bundle(b"not a zip", "x.zip", &Default::default()).expect_err("not a zip");
+        let p = ApiError::from(e).problem_json();
+        assert_eq!((p["status"].as_u64(), p["type"].as_str()), (Some(422), Some("/problems/invalid")));
+        assert!(p["detail"].as_str().is_some_and(|d| d.contains("x.zip")), "{p}");
+        let cases: [(ApiError, u64, &str); 4] = [
+            (MotionError::OutOfRange("rate".into()).into(), 400, "bad-request"),
+            (MotionError::CannotPlan { detail: "d".into(), errors: vec![] }.into(), 422, "motion-invalid"),
+            (DriveError::InstanceGone { joint: "J".into(), instance: "i".into() }.into(), 409, "conflict"),
+            (CollisionError::Corrupt("no CS1".into()).into(), 500, "internal"),
+        ];
+        for (api, status, slug) in cases {
+            let p = api.problem_json();
+            assert_eq!((p["status"].as_u64(), p["type"].as_str()), (Some(status), Some(format!("/problems/{slug}").as_str())), "{p}");
+        }
+        let stored = job_problem(JobError::Aborted { times: 3 });
+        assert_eq!(stored["type"], "/problems/conversion-aborted");
+        assert!(stored["detail"].as_str().is_some_and(|d| d.contains("3 times")));
+    }
 }

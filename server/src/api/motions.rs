@@ -92,7 +92,7 @@ pub(super) async fn kinematic_at(state: &AppState, model_id: &str, version: Opti
         let report: serde_json::Value = serde_json::from_slice(&report).map_err(|e| ApiError::Internal(e.into()))?;
         let options: ExportOptions =
             serde_json::from_str(&options_json).map_err(|e| ApiError::Internal(anyhow::anyhow!("stored options: {e}")))?;
-        Kinematic::load(&bundle, &bundle_name, &options, &report)
+        Ok(Kinematic::load(&bundle, &bundle_name, &options, &report)?)
     })
     .await?;
     let k = Arc::new(k);
@@ -257,7 +257,7 @@ async fn trajectory(
     let rate = q.rate.unwrap_or(100.0);
     let view = blocking(move || {
         let p = motions::plan_motion(&k, &edits, &m.spec)?;
-        motions::trajectory(&k, version, &m.name, &p, rate)
+        Ok(motions::trajectory(&k, version, &m.name, &p, rate)?)
     })
     .await?;
     Ok(Json(view))
@@ -275,7 +275,7 @@ async fn sizing(
     let report = blocking(move || {
         let catalog = cad2mo_engine::sizing::Catalog::from_library(&library);
         let p = motions::plan_motion(&k, &edits, &m.spec)?;
-        motions::sizing(&k.mech, &k.gravity, version, &m.name, &p, &drives, &catalog)
+        Ok(motions::sizing(&k.mech, &k.gravity, version, &m.name, &p, &drives, &catalog)?)
     })
     .await?;
     Ok(Json(report))

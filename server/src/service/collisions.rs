@@ -8,7 +8,6 @@ use std::collections::{BTreeMap, BTreeSet};
 use nalgebra::{Isometry3, Matrix3, Rotation3, Translation3, UnitQuaternion, Vector3};
 use serde::Serialize;
 
-use crate::api::ApiError;
 use cad2mo_engine::collision::{self, BodyShape, ShapeKind, SweepOptions};
 use cad2mo_engine::mechanism::Mechanism;
 use cad2mo_engine::motion::plan::Planned;
@@ -28,8 +27,20 @@ pub struct VersionShapes {
     pub report_bodies: serde_json::Value,
 }
 
-fn internal(what: String) -> ApiError {
-    ApiError::Internal(anyhow::anyhow!(what))
+/// Why a collision use case failed.
+#[derive(Debug, thiserror::Error)]
+pub enum CollisionError {
+    /// The version's stored report or package does not hold what the check needs (not the
+    /// user's fault: the message says what is missing).
+    #[error("{0}")]
+    Corrupt(String),
+    /// The motion to check cannot be planned.
+    #[error(transparent)]
+    Motion(#[from] crate::service::motions::MotionError),
+}
+
+fn internal(what: String) -> CollisionError {
+    CollisionError::Corrupt(what)
 }
 
 fn vec3(v: &serde_json::Value) -> Option<Vector3<f64>> {
@@ -39,7 +50,7 @@ fn vec3(v: &serde_json::Value) -> Option<Vector3<f64>> {
 
 impl VersionShapes {
     /// From a version's report and package zip.
-    pub fn load(report: &serde_json::Value, package_zip: &[u8]) -> Result<VersionShapes, ApiError> {
+    pub fn load(report: &serde_json::Value, package_zip: &[u8]) -> Result<VersionShapes, CollisionError> {
         let bodies: Vec<String> = report["bodies"]
             .as_array()
             .map(|a| a.iter().filter_map(|b| b["modelica_name"].as_str().map(str::to_string)).collect())
@@ -201,7 +212,7 @@ pub const SWEEP_RATE: f64 = 1000.0;
 
 /// Checks a planned motion: body poses from the mechanism's forward kinematics at every sample
 /// (the mechanism's bodies are the package's, in the same order).
-pub fn along_motion(mech: &Mechanism, v: &VersionShapes, edits: &Edits, version: i64, name: &str, p: &Planned) -> Result<MotionCollisions, ApiError> {
+pub fn along_motion(mech: &Mechanism, v: &VersionShapes, edits: &Edits, version: i64, name: &str, p: &Planned) -> Result<MotionCollisions, CollisionError> {
     let s = p.closed_samples(mech, SWEEP_RATE).map_err(|issues| crate::service::motions::invalid(name, issues))?;
     if mech.body_names() != v.bodies.as_slice() {
         return Err(internal("the mechanism's bodies differ from the package's".into()));

@@ -9,6 +9,8 @@
 use serde::{Deserialize, Serialize};
 use serde_json::{Map, Value as Json};
 
+use super::FieldError;
+use crate::store::StoreError;
 use cad2mo_engine::library::{Class, Instance, Issue, Value};
 use cad2mo_engine::pipeline::back::modelica::mechatronics::{ClassChoice, DrivePlan, JointKind, ParamValue, Reference};
 
@@ -193,24 +195,34 @@ pub fn plans(report: &Json, drives: &[ResolvedDrive]) -> (Vec<DrivePlan>, Vec<St
     (plans, orphans)
 }
 
+/// Why a model's drives cannot be resolved against the library.
+#[derive(Debug, thiserror::Error)]
+pub enum DriveError {
+    /// An assignment names a library instance that was deleted since.
+    #[error("drive of joint {joint}: library instance {instance} is gone")]
+    InstanceGone { joint: String, instance: String },
+    /// An assignment's overrides no longer validate against its (changed) library class.
+    #[error("drive of joint {joint}: its {slot} overrides no longer fit the library")]
+    Overrides { joint: String, slot: &'static str, errors: Vec<FieldError> },
+    #[error(transparent)]
+    Store(#[from] StoreError),
+}
+
 /// Every assignment of a model resolved against the current library (instances' values with
 /// the assignment's overrides). An assignment whose overrides no longer validate (the library
 /// changed) is an error naming it.
-pub async fn resolve_for_model(store: &crate::store::Store, model_id: &str) -> Result<Vec<ResolvedDrive>, crate::api::ApiError> {
-    use crate::api::ApiError;
+pub async fn resolve_for_model(store: &crate::store::Store, model_id: &str) -> Result<Vec<ResolvedDrive>, DriveError> {
     let mut out = Vec::new();
     for a in crate::store::drives::list(store, model_id).await? {
         let mut picked = Vec::new();
         for (slot, id) in [("motor", &a.motor_instance), ("gear", &a.gear_instance), ("controller", &a.controller_instance)] {
             let (inst, class) = crate::store::library::get_instance(store, id)
                 .await?
-                .ok_or_else(|| ApiError::Conflict(format!("drive of joint {}: library instance {id} is gone", a.joint)))?;
-            let c = choice(&class, &inst, a.overrides.get(slot)).map_err(|issues| ApiError::Invalid {
-                detail: format!("drive of joint {}: its {slot} overrides no longer fit the library", a.joint),
-                errors: issues
-                    .into_iter()
-                    .map(|i| crate::api::error::FieldError { field: format!("{}.{slot}.{}", a.joint, i.field), message: i.message })
-                    .collect(),
+                .ok_or_else(|| DriveError::InstanceGone { joint: a.joint.clone(), instance: id.clone() })?;
+            let c = choice(&class, &inst, a.overrides.get(slot)).map_err(|issues| DriveError::Overrides {
+                joint: a.joint.clone(),
+                slot,
+                errors: issues.into_iter().map(|i| FieldError { field: format!("{}.{slot}.{}", a.joint, i.field), message: i.message }).collect(),
             })?;
             picked.push(c);
         }

@@ -13,7 +13,6 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::api::error::{ApiError, FieldError};
 use cad2mo_engine::pipeline::back::bundle::write_zip_observed;
 use cad2mo_engine::pipeline::back::modelica::mechatronics::DrivePlan;
 use cad2mo_engine::pipeline::front::bundle::{Bundle, BundleError, Limits};
@@ -111,19 +110,6 @@ pub enum ExportError {
     /// Writing the output zip failed (not the input's fault).
     #[error("writing the package zip: {0}")]
     Zip(#[source] std::io::Error),
-}
-
-impl From<ExportError> for ApiError {
-    fn from(e: ExportError) -> Self {
-        match e {
-            ExportError::Bundle(b) => ApiError::Invalid {
-                detail: format!("the bundle cannot be read: {b}"),
-                errors: vec![FieldError { field: "bundle".into(), message: b.to_string() }],
-            },
-            ExportError::Convert(c) => ApiError::Conversion(c),
-            ExportError::Zip(io) => ApiError::Internal(anyhow::Error::new(io).context("writing the package zip")),
-        }
-    }
 }
 
 /// Limits for uploaded zips: the pipeline's defaults (1 GiB uncompressed, 20,000 entries,
@@ -323,15 +309,6 @@ mod tests {
         let report: serde_json::Value = serde_json::from_slice(&a.report_json).unwrap();
         assert_eq!(report["package_name"], "PENDULUM");
         assert_eq!(check_bundle(&zip, "p.zip", &opts).unwrap().model_name, "PENDULUM");
-    }
-
-    #[test]
-    fn errors_map_to_problems() {
-        let e = check_bundle(b"not a zip", "x.zip", &ExportOptions::default()).unwrap_err();
-        assert!(matches!(e, ExportError::Bundle(_)));
-        let p = ApiError::from(e).problem_json();
-        assert_eq!(p["status"], 422);
-        assert!(p["detail"].as_str().unwrap().contains("x.zip"));
     }
 
     #[test]

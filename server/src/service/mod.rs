@@ -8,7 +8,22 @@
 //! - [`collisions`]: a version's collision shapes, the allowed-collision matrix, checks along a
 //!   motion.
 
+use serde::Serialize;
+
 pub mod collisions;
 pub mod drives;
 pub mod export;
 pub mod motions;
+
+/// A field-level validation message: which input field (dotted path) and what is wrong with it.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct FieldError {
+    pub field: String,
+    pub message: String,
+}
+
+impl From<cad2mo_engine::library::Issue> for FieldError {
+    fn from(i: cad2mo_engine::library::Issue) -> Self {
+        FieldError { field: i.field, message: i.message }
+    }
+}

@@ -12,7 +12,9 @@ use std::sync::{Arc, Mutex};
 use nalgebra::Vector3;
 use serde::Serialize;
 
-use crate::api::error::{ApiError, FieldError};
+use super::drives::DriveError;
+use super::FieldError;
+use crate::store::StoreError;
 use crate::service::export::{self, ExportOptions};
 use cad2mo_engine::library::Issue;
 use cad2mo_engine::mechanism::{CoordKind, Mechanism};
@@ -50,17 +52,44 @@ pub struct Kinematic {
     pub gravity: Vector3<f64>,
 }
 
-fn unsupported(what: String) -> ApiError {
-    ApiError::Invalid {
-        detail: format!("the motion analysis cannot handle this model: {what}"),
-        errors: vec![FieldError { field: "model".into(), message: what }],
+/// Why a motion use case failed.
+#[derive(Debug, thiserror::Error)]
+pub enum MotionError {
+    /// The model is beyond what the motion analysis handles (the message says what).
+    #[error("the motion analysis cannot handle this model: {0}")]
+    Unsupported(String),
+    /// The motion cannot be planned (IK failed, limits violated, unknown joint, ...).
+    #[error("{detail}")]
+    CannotPlan { detail: String, errors: Vec<FieldError> },
+    /// A request parameter out of range (the message names it and its bounds).
+    #[error("{0}")]
+    OutOfRange(String),
+    /// The inverse dynamics failed on a planned motion (not the user's fault).
+    #[error("inverse dynamics: {0}")]
+    Dynamics(String),
+    /// The version's bundle no longer reads or converts.
+    #[error(transparent)]
+    Export(#[from] export::ExportError),
+    #[error(transparent)]
+    Drive(#[from] DriveError),
+    #[error(transparent)]
+    Store(#[from] StoreError),
+}
+
+impl From<pipeline::ConvertError> for MotionError {
+    fn from(e: pipeline::ConvertError) -> Self {
+        MotionError::Export(export::ExportError::Convert(e))
     }
+}
+
+fn unsupported(what: String) -> MotionError {
+    MotionError::Unsupported(what)
 }
 
 impl Kinematic {
     /// Analyses `bundle` (as stored with the version) with its options; `report` is the version's
     /// report.json (its names are kept).
-    pub fn load(bundle: &[u8], bundle_name: &str, options: &ExportOptions, report: &serde_json::Value) -> Result<Kinematic, ApiError> {
+    pub fn load(bundle: &[u8], bundle_name: &str, options: &ExportOptions, report: &serde_json::Value) -> Result<Kinematic, MotionError> {
         let b = export::read_bundle(bundle, bundle_name).map_err(export::ExportError::from)?;
         let mut opts = options.pipeline();
         opts.write_shapes = false;
@@ -210,21 +239,18 @@ pub fn joints_view(k: &Kinematic, version: i64, edits: &BTreeMap<String, LimitsE
     JointsView { version, joints, frames: k.frames.clone(), orphans }
 }
 
-/// Issues as a 422 problem.
-pub fn invalid(what: &str, issues: Vec<Issue>) -> ApiError {
+/// Issues that stop a motion from being planned, with a one-line summary.
+pub fn invalid(what: &str, issues: Vec<Issue>) -> MotionError {
     let detail = match issues.first() {
         Some(i) if issues.len() == 1 => format!("{what}: {}", i.message),
         Some(i) => format!("{what}: {} (and {} more problems)", i.message, issues.len() - 1),
         None => what.to_string(),
     };
-    ApiError::MotionInvalid {
-        detail,
-        errors: issues.into_iter().map(|i| FieldError { field: i.field, message: i.message }).collect(),
-    }
+    MotionError::CannotPlan { detail, errors: issues.into_iter().map(FieldError::from).collect() }
 }
 
 /// Plans a stored motion on a version.
-pub fn plan_motion(k: &Kinematic, edits: &BTreeMap<String, LimitsEdit>, spec: &MotionSpec) -> Result<Planned, ApiError> {
+pub fn plan_motion(k: &Kinematic, edits: &BTreeMap<String, LimitsEdit>, spec: &MotionSpec) -> Result<Planned, MotionError> {
     let axes: Vec<Axis> = plan::axes(&k.mech, edits);
     plan::plan(&k.mech, &axes, spec).map_err(|i| invalid(&format!("motion \"{}\" cannot be planned", spec.name), i))
 }
@@ -245,12 +271,12 @@ pub struct TrajectoryView {
 }
 
 /// Samples a planned motion at `rate` with the inverse dynamics along it.
-pub fn trajectory(k: &Kinematic, version: i64, name: &str, p: &Planned, rate: f64) -> Result<TrajectoryView, ApiError> {
+pub fn trajectory(k: &Kinematic, version: i64, name: &str, p: &Planned, rate: f64) -> Result<TrajectoryView, MotionError> {
     if !(rate.is_finite() && (1.0..=MAX_RATE).contains(&rate)) {
-        return Err(ApiError::BadRequest(format!("rate must be between 1 and {MAX_RATE} Hz (is {rate})")));
+        return Err(MotionError::OutOfRange(format!("rate must be between 1 and {MAX_RATE} Hz (is {rate})")));
     }
     if p.sample_count(rate) > plan::MAX_SAMPLES {
-        return Err(ApiError::BadRequest(format!(
+        return Err(MotionError::OutOfRange(format!(
             "{} samples is more than {}: lower the rate",
             p.sample_count(rate),
             plan::MAX_SAMPLES
@@ -260,7 +286,7 @@ pub fn trajectory(k: &Kinematic, version: i64, name: &str, p: &Planned, rate: f6
         .closed_samples(&k.mech, rate)
         .map_err(|i| invalid(&format!("motion \"{name}\" cannot be planned"), i))?;
     let (tau, _) = plan::inverse_dynamics(&k.mech, &samples, &k.gravity, usize::MAX)
-        .map_err(|e| ApiError::Internal(anyhow::anyhow!("inverse dynamics: {e}")))?;
+        .map_err(|e| MotionError::Dynamics(e.to_string()))?;
     Ok(TrajectoryView {
         motion: name.to_string(),
         version,
@@ -396,10 +422,10 @@ pub fn sizing(
     p: &Planned,
     drives: &[DriveParts],
     catalog: &cad2mo_engine::sizing::Catalog,
-) -> Result<SizingReport, ApiError> {
+) -> Result<SizingReport, MotionError> {
     let samples = p.closed_samples(mech, SIZING_RATE).map_err(|i| invalid(&format!("motion \"{name}\" cannot be planned"), i))?;
     let (tau, inertia) = plan::inverse_dynamics(mech, &samples, gravity, 10)
-        .map_err(|e| ApiError::Internal(anyhow::anyhow!("inverse dynamics: {e}")))?;
+        .map_err(|e| MotionError::Dynamics(e.to_string()))?;
     let mut report = SizingReport {
         motion: name.to_string(),
         version,
@@ -477,14 +503,14 @@ pub fn sizing(
 }
 
 /// The model's drives with their motor and gear instances.
-pub async fn drive_parts(store: &crate::store::Store, model_id: &str) -> Result<Vec<DriveParts>, ApiError> {
+pub async fn drive_parts(store: &crate::store::Store, model_id: &str) -> Result<Vec<DriveParts>, DriveError> {
     let mut out = Vec::new();
     for a in crate::store::drives::list(store, model_id).await? {
         let mut parts = Vec::new();
         for id in [&a.motor_instance, &a.gear_instance] {
             let p = crate::store::library::get_instance(store, id)
                 .await?
-                .ok_or_else(|| ApiError::Conflict(format!("drive of joint {}: library instance {id} is gone", a.joint)))?;
+                .ok_or_else(|| DriveError::InstanceGone { joint: a.joint.clone(), instance: id.clone() })?;
             parts.push(p);
         }
         let mut it = parts.into_iter();
