@@ -1,6 +1,6 @@
 //! The fuzz targets' bodies, as plain functions: each takes the fuzzer's bytes and panics only on
 //! a bug (a panic in the pipeline, or an output that breaks the target's check). The libFuzzer
-//! binaries in `fuzz_targets/` call them, and `server/tests/fuzz_regressions.rs` includes this
+//! binaries in `fuzz_targets/` call them, and `engine/tests/fuzz_regressions.rs` includes this
 //! file to replay every input under `fuzz/regressions/<target>/` on a normal `cargo test`.
 
 use cad2mo_engine::pipeline::{
