@@ -1371,3 +1371,25 @@ fn error_paths_are_bounded() {
     assert!(text.len() < 800, "{} bytes: {text}", text.len());
     assert!(text.contains("x199") && text.contains("levels") && text.contains("Body \"NNN"), "{text}");
 }
+
+#[test]
+fn a_rotation_far_from_orthonormal_is_an_error_naming_the_frame() {
+    // Rz(30°) printed to 6 digits converts silently; the same with its first column scaled by
+    // 1.08 (determinant 1.08, max |R^T R - I| = 0.166) is corrupt, not rounded.
+    let rounded = "0.866025,0.5,0,-0.5,0.866025,0,0,0,1";
+    let corrupt = "0.935307,0.54,0,-0.5,0.866025,0,0,0,1";
+    let xml = |o: &str| {
+        document(
+            "SimMechanics",
+            &system(&[body("A", "1", &[frame("CG", None, "0,0,0", "mm", "1,0,0,0,1,0,0,0,1"), frame("CS1", None, "0,0,0", "mm", o)])], &[], &[], &[]),
+        )
+    };
+    let (_, warnings) = ok(&xml(rounded));
+    assert!(warnings.is_empty(), "{warnings:?}");
+    let text = xml(corrupt);
+    let e = fails(&text);
+    let shown = e.to_string();
+    assert!(matches!(e.kind, XmlErrorKind::NotARotation { .. }), "{shown}");
+    assert!(shown.contains("frame \"CS1\"") && shown.contains("determinant 1.0799"), "{shown}");
+    assert_eq!(e.line, line_of(&text, corrupt), "{shown}");
+}
