@@ -96,7 +96,7 @@ pub fn write(model: &Model, v: &Validated, layout: &Layout, opts: &Options) -> S
         parent[child.index()] = Some(p);
         children[p.unwrap_or(nb)].push(child.index());
         let c_inv = model.frame(model.body(child).cs1).pose.inverse();
-        let mut cur = model.frame(joint.base).pose;
+        let mut cur = model.frame(joint.base).pose * a.chains[j.index()].pre;
         let mut list = Vec::new();
         for (k, e) in a.chains[j.index()].elements.iter().enumerate() {
             let origin = cur.translation.vector;

@@ -226,9 +226,9 @@ pub fn write(model: &Model, v: &Validated, layout: &Layout, package: &str, write
         let steps = steps(chain, &|k| element_name(ji, k), forward);
         let (b_pose, f_pose) = (model.frame(joint.base).pose, model.frame(joint.follower).pose);
         let (pre, post) = if forward {
-            (parent_pose.inverse() * b_pose, chain.residual * f_pose.inverse() * cs1(child))
+            (parent_pose.inverse() * b_pose * chain.pre, chain.residual * f_pose.inverse() * cs1(child))
         } else {
-            (parent_pose.inverse() * f_pose * chain.residual.inverse(), b_pose.inverse() * cs1(child))
+            (parent_pose.inverse() * f_pose * chain.residual.inverse(), chain.pre.inverse() * b_pose.inverse() * cs1(child))
         };
         if steps.is_empty() {
             ujoints.push(UJoint {
@@ -548,7 +548,7 @@ fn clean(model: &Model, v: &Validated, j: JointId, forward: bool) -> bool {
     let child = if forward { f } else { b };
     let FrameOwner::Body(c) = child.owner else { return false };
     let cs1 = model.frame(model.body(c).cs1).pose;
-    let post = if forward { chain.residual * f.pose.inverse() * cs1 } else { b.pose.inverse() * cs1 };
+    let post = if forward { chain.residual * f.pose.inverse() * cs1 } else { chain.pre.inverse() * b.pose.inverse() * cs1 };
     let steps = steps(chain, &|_| String::new(), forward);
     match steps.as_slice() {
         [] => true,
