@@ -683,7 +683,7 @@ fn explain(cut: &Cut, plain: &str, equations: usize, k: usize, planar: bool) -> 
         Cut::Omitted => format!("the rest of the mechanism already implies all {equations} equations of the {plain}: not emitted"),
         Cut::PlanarLoopConstraint => format!(
             "{head}; the loop is planar{}, so RevolutePlanarLoopConstraint imposes the 2 in-plane position equations",
-            if planar { " (axes parallel within 1e-4 rad, emitted exactly parallel: each joint's corrections state by how much)" } else { "" }
+            if planar { " (axes parallel within 1e-4 rad, emitted exactly parallel; a change beyond 1e-12 rad is in the joint's corrections)" } else { "" }
         ),
         Cut::Constraint(cc) => {
             let mut s = format!("{head}; Joints.Constraints.{} imposes exactly those", cc.class.name());
