@@ -64,6 +64,14 @@ pub fn file(model: &Model, v: &Validated, layout: &Layout, package: &str, write_
     (format!("{package}/{package}.urdf"), text.into_bytes())
 }
 
+/// `(path, bytes)` of the same robot for tools without ROS packages (MuJoCo, PyBullet,
+/// Drake without a package map): `<Pkg>/<Pkg>.mujoco.urdf`, whose mesh paths are relative to
+/// the file (`Resources/Shapes/<stem>.stl`) instead of `package://<Pkg>/...`.
+pub fn relative_file(ros: &(String, Vec<u8>), package: &str) -> (String, Vec<u8>) {
+    let text = String::from_utf8_lossy(&ros.1).replace(&format!("filename=\"package://{}/", attr(package)), "filename=\"");
+    (format!("{package}/{package}.mujoco.urdf"), text.into_bytes())
+}
+
 /// A number, shortest round-trip decimal; `-0` prints as `0`.
 fn n(x: f64) -> String {
     let x = if x == 0.0 { 0.0 } else { x };
