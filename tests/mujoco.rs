@@ -161,3 +161,63 @@ fn rnea_agrees_with_mujoco_on_generated_and_real_trees() {
     }
     assert!(compared >= 3, "only {compared} models compared");
 }
+
+/// A URDF with a virtual link of 1e-7 kg and a singular inertia (MuJoCo: "inertia must have
+/// positive eigenvalues") and a `mimic`: the MJCF loads, the floor is stated on the body, and
+/// the coupling is a joint equality `q_f = 2 q_l` that MuJoCo enforces.
+#[test]
+fn mimic_and_degenerate_virtual_links_load_in_mujoco() {
+    let urdf = r#"<robot name="virt">
+  <link name="world"/>
+  <link name="base"><inertial><mass value="2"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial></link>
+  <link name="virtual"><inertial><mass value="1e-7"/><inertia ixx="1e-9" ixy="1e-9" ixz="0" iyy="1e-9" iyz="0" izz="1e-9"/></inertial></link>
+  <link name="arm"><inertial><origin xyz="0.2 0 0"/><mass value="1"/><inertia ixx="0.001" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial></link>
+  <joint name="fix" type="fixed"><parent link="world"/><child link="base"/></joint>
+  <joint name="lead" type="revolute"><parent link="base"/><child link="virtual"/><origin xyz="0 0 0.1"/><axis xyz="0 0 1"/><limit lower="-2" upper="2" effort="1" velocity="1"/></joint>
+  <joint name="follow" type="revolute"><parent link="virtual"/><child link="arm"/><origin xyz="0 0 0.05"/><axis xyz="0 1 0"/><limit lower="-2" upper="2" effort="1" velocity="1"/><mimic joint="lead" multiplier="2"/></joint>
+</robot>"#;
+    let bundle = Bundle::from_files("x", [("virt.urdf".to_string(), urdf.as_bytes().to_vec())]).expect("bundle");
+    let out = pipeline::convert(&bundle, &Options { write_shapes: false, ..Options::default() }).expect("convert");
+    let (_, mjcf) = out.files.iter().find(|(p, _)| p.ends_with(".mjcf.xml")).expect("mjcf");
+    let mjcf = String::from_utf8(mjcf.clone()).expect("utf-8");
+    assert!(mjcf.contains("boundmass=\"1e-9\" boundinertia=\"1e-14\" balanceinertia=\"true\""), "{mjcf}");
+    assert!(mjcf.contains("smallest principal moment"), "the floor is stated on the body: {mjcf}");
+    assert!(mjcf.contains("<joint name=\"follow_mimic\" joint1=\"follow\" joint2=\"lead\" polycoef=\"0.0 2.0 0 0 0\"/>"), "{mjcf}");
+    let dir = tempfile::tempdir().expect("tempdir");
+    let path = dir.path().join("virt.mjcf.xml");
+    std::fs::write(&path, &mjcf).expect("write");
+    // Drive the leader to 0.3 rad by its own position and let the equality pull the follower.
+    let script = r#"
+import sys
+try:
+    import mujoco
+except Exception as e:
+    print("mujoco not importable:", e); sys.exit(3)
+m = mujoco.MjModel.from_xml_path(sys.argv[1])
+d = mujoco.MjData(m)
+lead = m.joint("lead").qposadr[0]; follow = m.joint("follow").qposadr[0]
+m.opt.gravity[:] = 0
+for _ in range(4000):
+    d.qpos[lead] = 0.3; d.qvel[:] = 0
+    mujoco.mj_step(m, d)
+print(m.neq, d.qpos[lead], d.qpos[follow])
+"#;
+    let run = match Command::new("python3").arg("-c").arg(script).arg(&path).output() {
+        Ok(r) => r,
+        Err(e) => {
+            assert!(!tools_required(), "python3 not runnable: {e}");
+            return;
+        }
+    };
+    if run.status.code() == Some(3) {
+        assert!(!tools_required(), "{}", String::from_utf8_lossy(&run.stdout));
+        println!("NOTICE: mujoco not importable; load check skipped");
+        return;
+    }
+    let text = String::from_utf8_lossy(&run.stdout).to_string();
+    assert!(run.status.success(), "MuJoCo refused the model: {text}{}", String::from_utf8_lossy(&run.stderr));
+    let v: Vec<f64> = text.split_whitespace().map(|t| t.parse().expect("number")).collect();
+    assert_eq!(v[0], 1.0, "one equality: {text}");
+    assert!((v[2] - 2.0 * v[1]).abs() < 1e-3, "the follower tracks 2 x the leader: {text}");
+    println!("MuJoCo: leader {:.6} rad, follower {:.6} rad (mimic 2x)", v[1], v[2]);
+}

@@ -249,6 +249,7 @@ impl Mechanism {
                 *x = Isometry3::identity();
             };
             if forward {
+                x *= chain.pre;
                 for (k, e) in chain.elements.iter().enumerate() {
                     push(k, e, 1.0, &mut link, &mut x);
                 }
@@ -258,6 +259,7 @@ impl Mechanism {
                 for (k, e) in chain.elements.iter().enumerate().rev() {
                     push(k, e, -1.0, &mut link, &mut x);
                 }
+                x *= chain.pre.inverse();
             }
             let to_cs1 = rel_to_cs1(child_frame).map(|r| r.inverse()).unwrap_or_else(Isometry3::identity);
             bodies[child.index()] = Some(Attachment { link, offset: x * to_cs1 });
@@ -320,7 +322,8 @@ impl Mechanism {
                             source_limits: None,
                         });
                     }
-                    Closure { joint: l.closing, a: base, b: follower, form: ClosureForm::Plain { elements, residual: chain.residual } }
+                    let a = Attachment { link: base.link, offset: base.offset * chain.pre };
+                    Closure { joint: l.closing, a, b: follower, form: ClosureForm::Plain { elements, residual: chain.residual } }
                 }
                 Cut::PlanarLoopConstraint => {
                     let e = single()?;

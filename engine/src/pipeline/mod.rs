@@ -435,6 +435,17 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
         .as_ref()
         .filter(|_| (1..=back::modelica::mechatronics::live::MAX_BODIES).contains(&bodies.len()))
         .map(|t| (t, bodies));
+    if opts.live.is_some() && live.is_none() {
+        report.warnings.push(Warning::new(
+            "live-view-omitted",
+            format!(
+                "{} bodies: a live view frame carries 1 to {}, so the package has no LiveView",
+                bodies.len(),
+                back::modelica::mechatronics::live::MAX_BODIES
+            ),
+            "",
+        ));
+    }
     let parts = collision.parts();
     let contacts = back::modelica::mechatronics::collision::declarations(&package_name, &names, &parts, &collision.allowed_pairs());
     files.extend(back::modelica::mechatronics::mechatronics(
@@ -483,7 +494,9 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
     }
     // MuJoCo model beside the Modelica package (back/mjcf).
     files.push(back::mjcf::file(&a.model, &a.validated, &pkg.layout, &package_name, gravity, opts.write_shapes));
-    files.push(back::urdf::file(&a.model, &a.validated, &pkg.layout, &package_name, opts.write_shapes));
+    let urdf = back::urdf::file(&a.model, &a.validated, &pkg.layout, &package_name, opts.write_shapes);
+    files.push(back::urdf::relative_file(&urdf, &package_name));
+    files.push(urdf);
     obs.progress(Stage::Report, 0, 1);
     let json = serde_json::to_vec_pretty(&report).map_err(|e| ConvertError::Options(e.to_string()))?;
     files.push(("report.json".to_string(), json));

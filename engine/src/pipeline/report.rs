@@ -110,6 +110,11 @@ pub struct ElementReport {
     pub axis_world: [f64; 3],
     /// The element's frame_a origin in the world at the CAD pose (m).
     pub origin_world: [f64; 3],
+    /// How far the emitted axis and origin are from the source's and why, when more than
+    /// 1e-12 (rad, m): planar loops' axes made exactly parallel, CAD noise snapped, a rounding
+    /// gap moved onto a prismatic's line. Absent when the element is exactly the source's.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub corrections: Option<kinematics::Correction>,
 }
 
 #[derive(Serialize, Debug, Clone)]
@@ -267,6 +272,7 @@ pub fn build(input: ReportInput) -> Report {
                     initial_q: e.q0,
                     axis_world: e.axis_world.into(),
                     origin_world: e.origin_world.into(),
+                    corrections: e.correction.clone(),
                 })
                 .collect();
             let axis_world = joint

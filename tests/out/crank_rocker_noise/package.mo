@@ -26,7 +26,7 @@ package CRANKROCKER "Modelica model of CAD assembly CRANKROCKER, converted by ca
 </table>
 <h4>Loops and how they were closed</h4>
 <ul>
-<li>ROCKER_RootPart (a planar loop through ROCKER_RootPart, COUPLER_ROCKER, CRANK_COUPLER, RootPart_CRANK): a plain revolute would repeat 3 of its 5 equations (2 independent); the loop is planar (axes parallel within 1e-4 rad), so RevolutePlanarLoopConstraint imposes the 2 in-plane position equations</li>
+<li>ROCKER_RootPart (a planar loop through ROCKER_RootPart, COUPLER_ROCKER, CRANK_COUPLER, RootPart_CRANK): a plain revolute would repeat 3 of its 5 equations (2 independent); the loop is planar (axes parallel within 1e-4 rad, emitted exactly parallel; a change beyond 1e-12 rad is in the joint's corrections), so RevolutePlanarLoopConstraint imposes the 2 in-plane position equations</li>
 </ul>
 <h4>Regenerating</h4>
 <p>Do not edit <code>Mechanics</code>: it is rewritten whenever the CAD model changes. Upload the new CAD export as a new version of the model in cad2mo (the web UI, or <code>POST /api/models/MODEL_ID/versions</code>); body and joint names, diagram places and drives are kept for everything that did not change. Without the service: <code>cad2mo convert EXPORT.zip -o package.zip</code>. Put your own models in another package that uses this one.</p>

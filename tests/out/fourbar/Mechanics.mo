@@ -174,7 +174,7 @@ equation
     Documentation(info="<html>
 <p>Converted by cad2mo 0.1.0 from <code>FOURBAR.xml</code> (SimMechanics), exported by SimMechanics Link Version 4.0 from Pro/E Wildfire Creo 2.0 - 2012360 on 03/14/24||10:20:30 by cad2mo.</p>
 <p>All quantities in SI units. Each body's frame_a is its CAD part frame CS1; joint start values reproduce the CAD pose.</p>
-<ul><li>Joint RootPart--ROCKER closes a loop: a plain revolute would repeat 3 of its 5 equations (2 independent); the loop is planar (axes parallel within 1e-4 rad), so RevolutePlanarLoopConstraint imposes the 2 in-plane position equations.</li></ul>
+<ul><li>Joint RootPart--ROCKER closes a loop: a plain revolute would repeat 3 of its 5 equations (2 independent); the loop is planar (axes parallel within 1e-4 rad, emitted exactly parallel; a change beyond 1e-12 rad is in the joint's corrections), so RevolutePlanarLoopConstraint imposes the 2 in-plane position equations.</li></ul>
 <p>Experiment: 3.0 s, about three swings of a pendulum as long as the mechanism's reach (0.224 m, period 0.95 s), 500 output intervals, tolerance 1e-6.</p>
 <p>Diagram: the kinematic tree from the world (left) to the deepest bodies (right), one column per depth; each body stands with the frames fixed on it; the joints stand between the bodies they connect; dashed red lines close kinematic loops.</p>
 </html>"));

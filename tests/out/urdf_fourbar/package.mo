@@ -26,7 +26,7 @@ package urdf_fourbar "Modelica model of CAD assembly urdf_fourbar, converted by 
 </table>
 <h4>Loops and how they were closed</h4>
 <ul>
-<li>rocker_pivot (a planar loop through rocker_pivot, crank_pivot, crank_coupler, coupler_rocker): a plain revolute would repeat 3 of its 5 equations (2 independent); the loop is planar (axes parallel within 1e-4 rad), so RevolutePlanarLoopConstraint imposes the 2 in-plane position equations</li>
+<li>rocker_pivot (a planar loop through rocker_pivot, crank_pivot, crank_coupler, coupler_rocker): a plain revolute would repeat 3 of its 5 equations (2 independent); the loop is planar (axes parallel within 1e-4 rad, emitted exactly parallel; a change beyond 1e-12 rad is in the joint's corrections), so RevolutePlanarLoopConstraint imposes the 2 in-plane position equations</li>
 </ul>
 <h4>Warnings</h4>
 <ul>

@@ -287,11 +287,19 @@ impl Writer<'_> {
         }
         let count = chain.elements.len();
         let mut prev = base;
-        // Fixed transform from the last element's frame_b to the follower frame.
-        let mut offset = chain.residual;
         // Helper components after the elements in `joint_elements` (whose first entries match
         // the chain's elements one to one).
         let mut extra = Vec::new();
+        if !is_identity(&chain.pre) {
+            let name = self.scope.take(&format!("{jname}_gap"));
+            let want = at(self, &name);
+            self.fixed(&name, &chain.pre, &format!("Gap between the frames of joint {what} that its prismatic axes cannot take (see report.json corrections)"), want);
+            self.connect(&prev, &format!("{name}.frame_a"));
+            prev = format!("{name}.frame_b");
+            extra.push(name);
+        }
+        // Fixed transform from the last element's frame_b to the follower frame.
+        let mut offset = chain.residual;
         for (k, e) in chain.elements.iter().enumerate() {
             let name = if count == 1 { jname.to_string() } else { self.scope.take(&format!("{jname}_{}", k + 1)) };
             let fixed = if e.fixed && !self.coupled[jid.index()] { ", fixed=true" } else { "" };

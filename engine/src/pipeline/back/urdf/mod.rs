@@ -64,6 +64,14 @@ pub fn file(model: &Model, v: &Validated, layout: &Layout, package: &str, write_
     (format!("{package}/{package}.urdf"), text.into_bytes())
 }
 
+/// `(path, bytes)` of the same robot for tools without ROS packages (MuJoCo, PyBullet,
+/// Drake without a package map): `<Pkg>/<Pkg>.mujoco.urdf`, whose mesh paths are relative to
+/// the file (`Resources/Shapes/<stem>.stl`) instead of `package://<Pkg>/...`.
+pub fn relative_file(ros: &(String, Vec<u8>), package: &str) -> (String, Vec<u8>) {
+    let text = String::from_utf8_lossy(&ros.1).replace(&format!("filename=\"package://{}/", attr(package)), "filename=\"");
+    (format!("{package}/{package}.mujoco.urdf"), text.into_bytes())
+}
+
 /// A number, shortest round-trip decimal; `-0` prints as `0`.
 fn n(x: f64) -> String {
     let x = if x == 0.0 { 0.0 } else { x };
@@ -226,9 +234,9 @@ pub fn write(model: &Model, v: &Validated, layout: &Layout, package: &str, write
         let steps = steps(chain, &|k| element_name(ji, k), forward);
         let (b_pose, f_pose) = (model.frame(joint.base).pose, model.frame(joint.follower).pose);
         let (pre, post) = if forward {
-            (parent_pose.inverse() * b_pose, chain.residual * f_pose.inverse() * cs1(child))
+            (parent_pose.inverse() * b_pose * chain.pre, chain.residual * f_pose.inverse() * cs1(child))
         } else {
-            (parent_pose.inverse() * f_pose * chain.residual.inverse(), b_pose.inverse() * cs1(child))
+            (parent_pose.inverse() * f_pose * chain.residual.inverse(), chain.pre.inverse() * b_pose.inverse() * cs1(child))
         };
         if steps.is_empty() {
             ujoints.push(UJoint {
@@ -548,7 +556,7 @@ fn clean(model: &Model, v: &Validated, j: JointId, forward: bool) -> bool {
     let child = if forward { f } else { b };
     let FrameOwner::Body(c) = child.owner else { return false };
     let cs1 = model.frame(model.body(c).cs1).pose;
-    let post = if forward { chain.residual * f.pose.inverse() * cs1 } else { b.pose.inverse() * cs1 };
+    let post = if forward { chain.residual * f.pose.inverse() * cs1 } else { chain.pre.inverse() * b.pose.inverse() * cs1 };
     let steps = steps(chain, &|_| String::new(), forward);
     match steps.as_slice() {
         [] => true,

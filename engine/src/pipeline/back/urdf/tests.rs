@@ -494,3 +494,13 @@ fn loops_at_the_world_are_comments() {
     let poses = link_poses(&robot, &BTreeMap::new());
     assert!(dist(&poses["X"], &m.frame(m.bodies[0].cs1).pose) < 1e-12);
 }
+
+#[test]
+fn the_relative_variant_names_meshes_beside_the_file() {
+    // MuJoCo cannot open package:// paths (measured: it refuses urdf_arm.urdf and opens
+    // urdf_arm.mujoco.urdf with all six meshes).
+    let ros = ("P/P.urdf".to_string(), b"<mesh filename=\"package://P/Resources/Shapes/a.stl\"/><mesh filename=\"package://Q/x.stl\"/>".to_vec());
+    let (path, bytes) = relative_file(&ros, "P");
+    assert_eq!(path, "P/P.mujoco.urdf");
+    assert_eq!(String::from_utf8(bytes).unwrap(), "<mesh filename=\"Resources/Shapes/a.stl\"/><mesh filename=\"package://Q/x.stl\"/>");
+}

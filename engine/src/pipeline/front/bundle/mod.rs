@@ -104,7 +104,9 @@ impl Bundle {
         Ok(b)
     }
 
-    /// Reads a zip archive held in memory, enforcing `limits`.
+    /// Reads a zip archive held in memory, enforcing `limits`. Entry names are UTF-8 when their
+    /// bytes are valid UTF-8, flag or not (Info-ZIP 3.0, Linux `zip`, writes UTF-8 names without
+    /// the flag), else what the archive says (CP437, or its Unicode path field).
     pub fn from_zip(name: &str, bytes: &[u8], limits: &Limits) -> Result<Bundle, BundleError> {
         let bundle = name.to_string();
         let mut archive = zip::ZipArchive::new(std::io::Cursor::new(bytes))
@@ -118,7 +120,7 @@ impl Bundle {
             let mut entry = archive
                 .by_index(i)
                 .map_err(|e| BundleError::NotZip { bundle: bundle.clone(), reason: e.to_string() })?;
-            let raw_name = entry.name().to_string();
+            let raw_name = entry_name(entry.name_raw(), entry.name());
             if entry.is_dir() {
                 continue;
             }
@@ -317,6 +319,17 @@ impl Bundle {
     }
 }
 
+/// An entry's name: the raw bytes when they are non-ASCII valid UTF-8 (a CP437 name that
+/// happens to be valid UTF-8 is vanishingly rare: its high bytes would have to form exact
+/// UTF-8 sequences), else the archive's decoding (`decoded`: CP437 without the UTF-8 flag, the
+/// Unicode path extra field where present).
+fn entry_name(raw: &[u8], decoded: &str) -> String {
+    match std::str::from_utf8(raw) {
+        Ok(s) if !raw.is_ascii() => s.to_string(),
+        _ => decoded.to_string(),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -362,6 +375,29 @@ mod tests {
             Some("model/meshes/simmechanics/arm_prt.stl")
         );
         assert_eq!(b.resolve(xml, "missing.stl").unwrap(), None);
+    }
+
+    #[test]
+    fn utf8_names_without_the_flag_are_utf8_and_others_cp437() {
+        // Info-ZIP 3.0 stores "gehäuse_prt.stl" as UTF-8 bytes with general-purpose bit 11
+        // clear. Written here as a same-length ASCII name (no flag), then patched in place.
+        let z = zip_of(&[("gehXXuse_prt.stl", b"solid x\nendsolid x\n"), ("m\u{e9}.txt", b"y")]);
+        let mut bytes = z.clone();
+        let (from, to) = (b"gehXXuse_prt.stl", "geh\u{e4}use_prt.stl".as_bytes());
+        assert_eq!(from.len(), to.len());
+        let mut patched = 0;
+        while let Some(i) = bytes.windows(from.len()).position(|w| w == from) {
+            bytes[i..i + from.len()].copy_from_slice(to);
+            patched += 1;
+        }
+        assert_eq!(patched, 2, "local and central headers");
+        let b = Bundle::from_zip("b.zip", &bytes, &Limits::default()).unwrap();
+        assert!(b.get("geh\u{e4}use_prt.stl").is_some(), "{:?}", b.paths().collect::<Vec<_>>());
+        assert_eq!(b.resolve("M.xml", "GEH\u{c4}USE_PRT.STL").unwrap(), Some("geh\u{e4}use_prt.stl"));
+        // A flagged UTF-8 name (the zip crate sets the flag) reads the same.
+        assert!(b.get("m\u{e9}.txt").is_some());
+        // Bytes that are not UTF-8 are CP437: 0x84 is "ä" there.
+        assert_eq!(entry_name(b"geh\x84use", "geh\u{e4}use"), "geh\u{e4}use");
     }
 
     #[test]

@@ -120,6 +120,10 @@ pub enum XmlErrorKind {
     /// A joint without any primitive.
     #[error("joint has no primitives")]
     NoPrimitives,
+    /// A frame orientation too far from orthonormal to be a rounded rotation (see
+    /// `pose::TOLERANCE`).
+    #[error("orientation of frame \"{frame}\" is not a rotation: determinant {det:.6}, max |R^T R - I| = {error:.3e}, far beyond what 6-digit rounding explains (about 1.7e-6; refused above 1e-3)")]
+    NotARotation { frame: String, det: f64, error: f64 },
     /// Subsystems nested deeper than the front end follows.
     #[error("subsystems nested deeper than {limit} levels")]
     TooDeep { limit: usize },

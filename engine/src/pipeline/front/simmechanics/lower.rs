@@ -373,6 +373,9 @@ impl<'a> Lower<'_, 'a> {
         let o = orientation.ok_or_else(|| self.missing(node, "orientation"))?;
         let columns = self.numbers::<9>(o)?;
         let (rotation, defect) = pose::nearest_rotation(&Matrix3::from_column_slice(&columns));
+        if let Some(d) = defect.filter(|d| d.error > pose::TOLERANCE || !d.det.is_finite()) {
+            return Err(self.err(o, XmlErrorKind::NotARotation { frame: name.to_string(), det: d.det, error: d.error }));
+        }
         if let Some(d) = defect {
             let what = if d.det < 0.0 {
                 "mirrored (determinant < 0)"

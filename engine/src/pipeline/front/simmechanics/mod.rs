@@ -34,8 +34,10 @@
 //!   position starts at X's origin with components in Y's axes, the orientation is relative to
 //!   Z: `p = origin(X) + R(Y) p`, `R = R(Z) R`, resolved recursively after all joints are read.
 //!   Cycles, unknown names and `ADJOINING` frames used by no joint or by several are errors.
-//!   The matrix as given is projected onto the nearest rotation first; one that is far from a
-//!   rotation (mirrored, scaled) gives a `frame-not-orthonormal` warning.
+//!   The matrix as given is projected onto the nearest rotation first (silently within the
+//!   data's precision); a mirrored one gives a `frame-not-orthonormal` warning, and one whose
+//!   `max |RᵀR − I|` exceeds 1e-3 (600 times what 6-digit rounding can do) is an error naming
+//!   the frame.
 //! - Primitives weld, revolute, prismatic and spherical, axes in `WORLD` or in the axes of the
 //!   joint's `BASE` or `FOLLOWER` frame.
 //! - Elements are found by name; unknown ones are skipped. A non-`SimpleJoint` entry under

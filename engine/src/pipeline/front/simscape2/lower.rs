@@ -23,6 +23,9 @@ const FRAME_TOL: f64 = 1e-6;
 /// A transform's rotation may deviate this much (largest entry) from the nearest rotation
 /// before we warn (the exporters print 9 to 17 digits).
 const ORTHO_TOL: f64 = 1e-5;
+/// Beyond this deviation from the nearest rotation the matrix is no rotation written with
+/// rounding (even 4 significant digits stay below 1e-4): an error naming the transform.
+const ROTATION_REFUSED: f64 = 1e-3;
 /// The dummy axis of weld primitives (as first-generation exports write it).
 const WELD_AXIS: f64 = 0.577_350_269_189_625_8;
 
@@ -256,6 +259,12 @@ impl<'a, 'd> Lower<'a, 'd> {
         let Some((rot, dev)) = nearest_rotation(&m) else {
             return Err(self.err(rn, "the rotation is not a rotation (mirrored or singular)".into()));
         };
+        if dev > ROTATION_REFUSED {
+            return Err(self.err(
+                rn,
+                format!("the rotation is {dev:.3e} from the nearest rotation (determinant {:.6}): far beyond rounding (refused above 1e-3)", m.determinant()),
+            ));
+        }
         if dev > ORTHO_TOL {
             self.warn(
                 "transform-not-orthonormal",

@@ -38,7 +38,10 @@
 //! - Geometry: visuals are preferred; meshes (`package://NAME/...`, `package:///file`, relative
 //!   paths, `file://`) are looked up in the bundle case-insensitively, read by `front::mesh`, scaled
 //!   and placed by the visual's origin into the link frame. A missing file is a warning.
-//! - `xacro` files are refused with a message saying to expand them first.
+//! - `xacro` files (macros, properties, arguments, includes, conditionals, `${...}`/`$(...)`
+//!   substitutions) are refused with a message saying to expand them first; a leftover foreign
+//!   element in an expanded file (one `<xacro:...>` call, a plugin's namespaced tag) is an
+//!   `urdf-element-ignored` warning naming it.
 
 mod assemble;
 mod geometry;
@@ -112,12 +115,15 @@ pub struct Urdf {
     pub geometry: Vec<Vec<GeometryRef>>,
 }
 
-/// Cheap sniff: is the root element `<robot>`? (Skips the declaration, comments and a BOM.)
+/// Cheap sniff: is the root element `<robot>`? (Skips the declaration, a BOM and any number of
+/// comments, processing instructions and blank text before it: licence headers written as many
+/// one-line comments put the root kilobytes into the file. Every event consumes input, so the
+/// loop ends at the root element or the end of the file.)
 pub fn is_urdf(bytes: &[u8]) -> bool {
     let bytes = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes);
     let mut reader = quick_xml::Reader::from_reader(bytes);
     let mut buf = Vec::new();
-    for _ in 0..64 {
+    loop {
         match reader.read_event_into(&mut buf) {
             Ok(quick_xml::events::Event::Start(e)) | Ok(quick_xml::events::Event::Empty(e)) => {
                 return e.local_name().as_ref() == b"robot";
@@ -127,7 +133,6 @@ pub fn is_urdf(bytes: &[u8]) -> bool {
         }
         buf.clear();
     }
-    false
 }
 
 /// Parses a URDF file into the IR (see the module documentation). `file` names it in messages.
@@ -288,10 +293,30 @@ impl<'d, 'i> Reader<'d, 'i> {
         if root.tag_name().name() != "robot" {
             return Err(self.err(root, format!("not a URDF file: the root element is <{}>, expected <robot>", root.tag_name().name())));
         }
-        if let Some(x) = root.descendants().find(|n| n.is_element() && is_xacro(n)) {
+        if let Some(x) = root.descendants().find(|n| is_real_xacro(n)) {
             return Err(self.err(x, xacro_message()));
         }
         let mut warnings = Vec::new();
+        // Expanded files keep stray tool elements (one leftover `<xacro:...>`, a plugin's
+        // namespaced tag): none of them says anything URDF reads, so each is named and ignored.
+        for n in root.descendants().filter(|n| n.is_element() && n.tag_name().namespace().is_some_and(|ns| ns != DRAKE_NS)) {
+            if n.ancestors().skip(1).any(|a| a.is_element() && a.tag_name().namespace().is_some_and(|ns| ns != DRAKE_NS)) {
+                continue; // named with its outermost foreign ancestor
+            }
+            let tag = match n.tag_name().namespace().and_then(|ns| n.lookup_prefix(ns)) {
+                Some(prefix) if !prefix.is_empty() => format!("{prefix}:{}", n.tag_name().name()),
+                _ => n.tag_name().name().to_string(),
+            };
+            warnings.push(self.warning(
+                n,
+                "urdf-element-ignored",
+                format!(
+                    "<{}> (namespace {}) is not URDF; ignored",
+                    ir::clip(&tag, 80),
+                    ir::clip(n.tag_name().namespace().unwrap_or_default(), 120)
+                ),
+            ));
+        }
         let materials = self.named_materials(root)?;
         let mut links: Vec<RawLink> = Vec::new();
         let mut joints: Vec<RawJoint> = Vec::new();
@@ -863,6 +888,19 @@ impl<'d, 'i> Reader<'d, 'i> {
 
 fn is_xacro(n: &roxmltree::Node) -> bool {
     n.tag_name().namespace().is_some_and(|ns| ns.contains("ros.org/wiki/xacro"))
+}
+
+/// What only an unexpanded xacro file has: a macro, property, argument, include or conditional
+/// element, or a `${...}` / `$(...)` substitution in an attribute or text. (A single leftover
+/// `<xacro:...>` call in an otherwise expanded file is not: it is warned about and ignored.)
+fn is_real_xacro(n: &roxmltree::Node) -> bool {
+    const DIRECTIVES: [&str; 6] = ["macro", "property", "arg", "include", "if", "unless"];
+    let substitution = |t: &str| t.contains("${") || t.contains("$(");
+    if n.is_text() {
+        return n.text().is_some_and(substitution);
+    }
+    n.is_element()
+        && ((is_xacro(n) && DIRECTIVES.contains(&n.tag_name().name())) || n.attributes().any(|a| substitution(a.value())))
 }
 
 fn child<'a, 'i>(n: roxmltree::Node<'a, 'i>, tag: &str) -> Option<roxmltree::Node<'a, 'i>> {

@@ -159,3 +159,37 @@ fn package_uris_resolve_inside_the_bundle() {
     // Two candidates by file name alone: an error naming both.
     assert!(locate(&b, from, "package://ex/meshes/link.stl").is_err());
 }
+
+#[test]
+fn the_root_is_found_after_a_long_licence_header() {
+    // A licence written as one comment per line puts <robot> kilobytes into the file (the
+    // iiwa's at byte 3,200): more events than any fixed look-ahead.
+    let header: String = (0..120).map(|i| format!("<!-- licence line {i:03}: permission is hereby granted, free of charge -->\n")).collect();
+    let text = format!("<?xml version=\"1.0\"?>\n{header}{}", two_links(""));
+    assert!(text.find("<robot").expect("root") > 8_000);
+    assert!(is_urdf(text.as_bytes()));
+    assert_eq!(ok(&text).model.bodies.len(), 2);
+}
+
+#[test]
+fn a_leftover_namespaced_element_is_a_warning_and_real_xacro_is_refused() {
+    let leftover = format!(
+        r#"<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro" xmlns:foo="urn:foo"><link name="a">{INERTIAL}</link><link name="b">{INERTIAL}<foo:tag x="1"><foo:inner/></foo:tag></link><xacro:leftover_call name="x"/><gazebo reference="a"/><transmission name="t"/><joint name="j" type="revolute"><parent link="a"/><child link="b"/><axis xyz="0 0 1"/></joint></robot>"#
+    );
+    let u = ok(&leftover);
+    let ignored: Vec<&Warning> = u.warnings.iter().filter(|w| w.code == "urdf-element-ignored").collect();
+    assert_eq!(ignored.len(), 2, "{ignored:?}");
+    assert!(ignored.iter().any(|w| w.message.contains("<xacro:leftover_call>") && w.location.contains("t.urdf:1:")), "{ignored:?}");
+    assert!(ignored.iter().any(|w| w.message.contains("<foo:tag>")), "{ignored:?}");
+    assert_eq!(u.model.joints.len(), 2);
+    // Macros, properties and substitutions are xacro proper: refused, naming the element.
+    for body in [
+        r#"<xacro:property name="l" value="0.3"/>"#,
+        r#"<xacro:macro name="m"><link name="c"/></xacro:macro>"#,
+        r#"<link name="c"><visual><geometry><box size="${l} 1 1"/></geometry></visual></link>"#,
+    ] {
+        let text = format!(r#"<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro"><link name="a"/>{body}</robot>"#);
+        let e = err(&text);
+        assert!(e.contains("xacro file") && e.contains("t.urdf:1:"), "{e}");
+    }
+}
