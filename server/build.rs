@@ -108,10 +108,7 @@ fn build(web: &Path, dist: &Path) -> Result<(), String> {
         _ => true,
     };
     if stale {
-        run(
-            Command::new("npm").args(["ci", "--no-audit", "--no-fund", "--loglevel=error"]).current_dir(web),
-            "npm ci",
-        )?;
+        run(Command::new("npm").args(["ci", "--no-audit", "--no-fund", "--loglevel=error"]).current_dir(web), "npm ci")?;
     }
     run(
         Command::new("node")

@@ -199,7 +199,10 @@ async fn tokens_expire_and_the_scheme_is_case_insensitive() {
     let r = app.client.get(app.url("/api/models")).bearer_auth(&expired).send().await.expect("get");
     assert_eq!(problem_of(r, 401).await["type"], "/problems/unauthorized");
     // Revoked: refused at once.
-    assert!(matches!(cad2mo_server::store::tokens::revoke(&store, "t").await.expect("revoke"), cad2mo_server::store::tokens::Revoked::One(_)));
+    assert!(matches!(
+        cad2mo_server::store::tokens::revoke(&store, "t").await.expect("revoke"),
+        cad2mo_server::store::tokens::Revoked::One(_)
+    ));
     let r = app.client.get(app.url("/api/models")).bearer_auth(&token).send().await.expect("get");
     problem_of(r, 401).await;
 }

@@ -32,8 +32,12 @@ async fn shapes_matrix_interferences_and_motions() {
 
     // Shapes: the three links are boxes (their STL meshes are boxes), the root parts have none.
     let c = json_of(app.get(&format!("/api/models/{id}/versions/{v}/collision")).await, 200).await;
-    let kinds: Vec<(String, String)> =
-        c["bodies"].as_array().expect("bodies").iter().map(|b| (b["body"].as_str().expect("b").into(), b["kind"].as_str().expect("k").into())).collect();
+    let kinds: Vec<(String, String)> = c["bodies"]
+        .as_array()
+        .expect("bodies")
+        .iter()
+        .map(|b| (b["body"].as_str().expect("b").into(), b["kind"].as_str().expect("k").into()))
+        .collect();
     for (body, kind) in &kinds {
         let want = if body.starts_with("RootPart") { "none" } else { "box" };
         assert_eq!(kind, want, "{body}: {c:#}");
@@ -68,7 +72,10 @@ async fn shapes_matrix_interferences_and_motions() {
         (json!({"pairs": [{"a": "BASE", "b": "NOPE", "allowed": true}]}), "NOPE is not a body with a collision shape"),
         (json!({"pairs": [{"a": "BASE", "b": "BASE", "allowed": true}]}), "two bodies"),
         (json!({"pairs": [{"a": "BASE", "b": "RootPart_ARM", "allowed": true}]}), "RootPart_ARM is not a body with a collision shape"),
-        (json!({"pairs": [{"a": "BASE", "b": "LINK_FORE", "allowed": true}, {"a": "LINK_FORE", "b": "BASE", "allowed": false}]}), "given twice"),
+        (
+            json!({"pairs": [{"a": "BASE", "b": "LINK_FORE", "allowed": true}, {"a": "LINK_FORE", "b": "BASE", "allowed": false}]}),
+            "given twice",
+        ),
     ] {
         let p = json_of(put(body).await.expect("put"), 422).await;
         assert!(p["detail"].as_str().expect("detail").contains(what), "{p:#}");

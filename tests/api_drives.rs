@@ -89,9 +89,11 @@ async fn drives_survive_a_cad_change_and_reexport() {
         assert_eq!(r.status(), 200, "{}", r.text().await.unwrap_or_default());
     }
     // Refusals: an out-of-range override, a nameplate override, the wrong domain, an unknown joint.
-    let bad = json!({"motor_instance": motor, "gear_instance": gear, "controller_instance": controller, "overrides": {"gear": {"ratio": "x"}}});
+    let bad =
+        json!({"motor_instance": motor, "gear_instance": gear, "controller_instance": controller, "overrides": {"gear": {"ratio": "x"}}});
     assert_eq!(put_drive(&app, &model, "SLIDER_TOOL", &bad).await.status(), 422);
-    let nameplate = json!({"motor_instance": motor, "gear_instance": gear, "controller_instance": controller, "overrides": {"motor": {"R": 1.0}}});
+    let nameplate =
+        json!({"motor_instance": motor, "gear_instance": gear, "controller_instance": controller, "overrides": {"motor": {"R": 1.0}}});
     let r = put_drive(&app, &model, "SLIDER_TOOL", &nameplate).await;
     assert_eq!(r.status(), 422);
     assert_eq!(r.headers()["content-type"], "application/problem+json");
@@ -103,7 +105,14 @@ async fn drives_survive_a_cad_change_and_reexport() {
     assert_eq!(one["overrides"]["gear"]["ratio"], 100);
     assert_eq!(one["reference"]["kind"], "table");
     assert_eq!(app.get(&format!("/api/models/{model}/drives/NOPE")).await.status(), 404);
-    let r = app.client.put(app.url(&format!("/api/models/{model}/drives/SLIDER_TOOL"))).body("{").header("content-type", "application/json").send().await.expect("put");
+    let r = app
+        .client
+        .put(app.url(&format!("/api/models/{model}/drives/SLIDER_TOOL")))
+        .body("{")
+        .header("content-type", "application/json")
+        .send()
+        .await
+        .expect("put");
     assert_eq!(r.status(), 400);
     assert_eq!(r.headers()["content-type"], "application/problem+json");
 

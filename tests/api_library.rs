@@ -345,8 +345,7 @@ async fn bodies_that_are_not_the_expected_json_are_problems() {
     let p = problem(app.create_library_instance(&json!({"class_id": seed::DC_MOTOR, "name": "x"})).await, 422).await;
     assert!(error_for(&p, "body").contains("values"), "{p}");
     let p = problem(
-        app.library_raw(reqwest::Method::PUT, &format!("/api/library/instances/{}", seed::MAXON_RE40), "application/json", "{,}")
-            .await,
+        app.library_raw(reqwest::Method::PUT, &format!("/api/library/instances/{}", seed::MAXON_RE40), "application/json", "{,}").await,
         400,
     )
     .await;

@@ -127,7 +127,8 @@ async fn a_simulated_motion_reaches_the_browser_and_bad_frames_are_counted() {
     // The package: Mechatronics declares the live view for this model and version, fed from
     // every body in the report's order; the block and its C source are in the package.
     let files = package_files(&app.package(&id, v).await.bytes().await.expect("zip"));
-    let text = |suffix: &str| files.iter().find(|(n, _)| n.ends_with(suffix)).map(|(_, t)| t.clone()).unwrap_or_else(|| panic!("no {suffix}"));
+    let text =
+        |suffix: &str| files.iter().find(|(n, _)| n.ends_with(suffix)).map(|(_, t)| t.clone()).unwrap_or_else(|| panic!("no {suffix}"));
     let mech = text("/Mechatronics.mo");
     assert!(mech.contains("parameter Boolean liveView = false"), "{mech}");
     assert!(mech.contains(&format!("    modelId=\"{id}\",\n    version={v},\n    layout=\"{layout}\"")), "{mech}");
@@ -162,7 +163,11 @@ async fn a_simulated_motion_reaches_the_browser_and_bad_frames_are_counted() {
     let motion = spin_motion(n, 40, 0.02);
     let (h, p, m, l) = (harness.clone(), udp.port(), id.clone(), layout.clone());
     let rows = motion.clone();
-    let out = tokio::task::spawn_blocking(move || run_harness(&h, &Stream { port: p, model: m, version: v, layout: l, token: None, real_time: true }, &rows)).await.expect("harness");
+    let out = tokio::task::spawn_blocking(move || {
+        run_harness(&h, &Stream { port: p, model: m, version: v, layout: l, token: None, real_time: true }, &rows)
+    })
+    .await
+    .expect("harness");
     assert_eq!(out.trim(), "sent 40 failed 0");
     let mut seen = Seen::default();
     read_until_end(&mut ws, &mut seen).await;
@@ -191,7 +196,11 @@ async fn a_simulated_motion_reaches_the_browser_and_bad_frames_are_counted() {
         spin_motion(n, 1, 0.0)[0][1..].chunks(12).map(|c| std::array::from_fn(|k| c[k] + if k == 0 { t } else { 0.0 })).collect()
     };
     let frame = |seq: u32, layout: [u8; 8], version: u32, token: Option<&str>| {
-        cad2mo_engine::live::encode(&cad2mo_engine::live::Header { model, version, layout, run: 7, seq, time: 1.0, last: false }, &body(0.0), token)
+        cad2mo_engine::live::encode(
+            &cad2mo_engine::live::Header { model, version, layout, run: 7, seq, time: 1.0, last: false },
+            &body(0.0),
+            token,
+        )
     };
     let good = frame(5, lay, v as u32, None);
     let mut wrong_magic = good.clone();
@@ -207,9 +216,31 @@ async fn a_simulated_motion_reaches_the_browser_and_bad_frames_are_counted() {
         (good[..good.len() - 7].to_vec(), "truncated"),
         (frame(1, [0; 8], v as u32, None), "foreign"),
         (frame(1, lay, 99, None), "foreign"),
-        (cad2mo_engine::live::encode(&cad2mo_engine::live::Header { model: *uuid_bytes("00000000-0000-4000-8000-000000000000"), version: 1, layout: lay, run: 7, seq: 1, time: 1.0, last: false }, &body(0.0), None), "foreign"),
+        (
+            cad2mo_engine::live::encode(
+                &cad2mo_engine::live::Header {
+                    model: *uuid_bytes("00000000-0000-4000-8000-000000000000"),
+                    version: 1,
+                    layout: lay,
+                    run: 7,
+                    seq: 1,
+                    time: 1.0,
+                    last: false,
+                },
+                &body(0.0),
+                None,
+            ),
+            "foreign",
+        ),
         (frame(2, lay, v as u32, Some("c2m_not_a_token")), "unauthenticated"),
-        (cad2mo_engine::live::encode(&cad2mo_engine::live::Header { model, version: v as u32, layout: lay, run: 7, seq: 3, time: 1.0, last: false }, &nan, None), "invalid"),
+        (
+            cad2mo_engine::live::encode(
+                &cad2mo_engine::live::Header { model, version: v as u32, layout: lay, run: 7, seq: 3, time: 1.0, last: false },
+                &nan,
+                None,
+            ),
+            "invalid",
+        ),
         (good.clone(), "relayed"),
         (good.clone(), "stale"),
         (frame(4, lay, v as u32, None), "stale"),
@@ -276,7 +307,11 @@ async fn where_tokens_are_required_frames_and_viewers_need_one() {
     let (id, v) = (created["model_id"].as_str().expect("id").to_string(), created["version"].as_i64().expect("v"));
     let job = created["job_id"].as_str().expect("job").to_string();
     for _ in 0..600 {
-        let j = json_of(app.client.get(app.url(&format!("/api/jobs/{job}"))).header("authorization", auth.clone()).send().await.expect("job"), 200).await;
+        let j = json_of(
+            app.client.get(app.url(&format!("/api/jobs/{job}"))).header("authorization", auth.clone()).send().await.expect("job"),
+            200,
+        )
+        .await;
         if j["status"] == "succeeded" {
             break;
         }
@@ -301,7 +336,8 @@ async fn where_tokens_are_required_frames_and_viewers_need_one() {
         Err(tokio_tungstenite::tungstenite::Error::Http(r)) => assert_eq!(r.status(), 401),
         other => panic!("a WebSocket without a token opened: {:?}", other.map(|_| ())),
     }
-    let mut ws = connect(&app, &format!("/api/models/{id}/versions/{v}/live/ws"), &format!("cad2mo.live, bearer.{token}")).await.expect("websocket");
+    let mut ws =
+        connect(&app, &format!("/api/models/{id}/versions/{v}/live/ws"), &format!("cad2mo.live, bearer.{token}")).await.expect("websocket");
     let hello = ws.next().await.expect("hello").expect("ok");
     assert!(hello.to_text().expect("text").contains("\"hello\""));
 
@@ -311,11 +347,19 @@ async fn where_tokens_are_required_frames_and_viewers_need_one() {
     for t in [None, Some("c2m_0000")] {
         let (h, m, l, rows) = (harness.clone(), id.clone(), layout.clone(), motion.clone());
         let t = t.map(str::to_string);
-        let out = tokio::task::spawn_blocking(move || run_harness(&h, &Stream { port: udp.port(), model: m, version: v, layout: l, token: t, real_time: false }, &rows)).await.expect("harness");
+        let out = tokio::task::spawn_blocking(move || {
+            run_harness(&h, &Stream { port: udp.port(), model: m, version: v, layout: l, token: t, real_time: false }, &rows)
+        })
+        .await
+        .expect("harness");
         assert_eq!(out.trim(), "sent 10 failed 0");
     }
     let (h, m, l, rows, tk) = (harness.clone(), id.clone(), layout.clone(), motion.clone(), token.clone());
-    tokio::task::spawn_blocking(move || run_harness(&h, &Stream { port: udp.port(), model: m, version: v, layout: l, token: Some(tk), real_time: true }, &rows)).await.expect("harness");
+    tokio::task::spawn_blocking(move || {
+        run_harness(&h, &Stream { port: udp.port(), model: m, version: v, layout: l, token: Some(tk), real_time: true }, &rows)
+    })
+    .await
+    .expect("harness");
     let mut seen = Seen::default();
     read_until_end(&mut ws, &mut seen).await;
     check_poses(&seen, n);

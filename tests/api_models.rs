@@ -62,10 +62,7 @@ async fn upload_convert_and_download() {
 
     let job = app.wait_for_job(job_id).await;
     assert_eq!(job["status"], "succeeded", "{job:#}");
-    assert_eq!(
-        (job["kind"].as_str(), job["model_id"].as_str(), job["version"].as_i64()),
-        (Some("convert"), Some(model_id), Some(1))
-    );
+    assert_eq!((job["kind"].as_str(), job["model_id"].as_str(), job["version"].as_i64()), (Some("convert"), Some(model_id), Some(1)));
     assert!(job.get("error").is_none());
     for t in ["created_at", "started_at", "finished_at"] {
         assert!(job[t].as_str().is_some_and(|s| s.ends_with('Z')), "{t} in {job}");
@@ -141,10 +138,7 @@ async fn versions_list_get_delete() {
     let m = json(app.model(&id).await, 200).await;
     assert_eq!(m["versions"].as_array().map(Vec::len), Some(2));
     let v = json(app.version(&id, 2).await, 200).await;
-    assert_eq!(
-        v["options"],
-        serde_json::json!({"package_name": "Pend", "gravity": [0.0, 0.0, -9.81], "lump_welds": true})
-    );
+    assert_eq!(v["options"], serde_json::json!({"package_name": "Pend", "gravity": [0.0, 0.0, -9.81], "lump_welds": true}));
     assert_eq!(v["summary"]["package_name"], "Pend");
     let r = app.package(&id, 2).await;
     assert!(zip_entries(&r.bytes().await.expect("bytes")).iter().any(|e| e == "Pend/Mechanics.mo"));
@@ -155,10 +149,7 @@ async fn versions_list_get_delete() {
     problem(app.delete_version(&id, 1).await, 404).await;
     problem(app.job(&job1).await, 404).await;
     let versions = json(app.versions(&id).await, 200).await;
-    assert_eq!(
-        versions.as_array().map(|a| a.iter().map(|v| v["version"].as_i64()).collect::<Vec<_>>()),
-        Some(vec![Some(2)])
-    );
+    assert_eq!(versions.as_array().map(|a| a.iter().map(|v| v["version"].as_i64()).collect::<Vec<_>>()), Some(vec![Some(2)]));
     let (_, v3, job3) = app.upload_version_ok(&id, pendulum(), &[]).await;
     assert_eq!(v3, 3);
     app.wait_for_job(&job3).await;
@@ -235,9 +226,7 @@ async fn diff_between_versions() {
 fn raw_zip(entries: &[(&str, &[u8])], level: Option<i64>) -> Vec<u8> {
     let mut out = std::io::Cursor::new(Vec::new());
     let mut z = zip::ZipWriter::new(&mut out);
-    let opts = zip::write::SimpleFileOptions::default()
-        .compression_method(zip::CompressionMethod::Deflated)
-        .compression_level(level);
+    let opts = zip::write::SimpleFileOptions::default().compression_method(zip::CompressionMethod::Deflated).compression_level(level);
     for (name, bytes) in entries {
         z.start_file(*name, opts).expect("start");
         z.write_all(bytes).expect("write");
@@ -293,13 +282,7 @@ async fn bad_bundles_are_refused_with_problems() {
     let form = reqwest::multipart::Form::new().text("name", "x");
     let p = problem(app.post_model_form(form).await, 422).await;
     assert_eq!(p["errors"][0]["field"], "bundle");
-    let r = app
-        .client
-        .post(app.url("/api/models"))
-        .json(&serde_json::json!({"bundle": "x"}))
-        .send()
-        .await
-        .expect("request");
+    let r = app.client.post(app.url("/api/models")).json(&serde_json::json!({"bundle": "x"})).send().await.expect("request");
     problem(r, 400).await;
 
     // Nothing was created.
@@ -352,10 +335,8 @@ fn chunked_upload(addr: &str, bundle: &[u8]) -> (u16, String) {
     let _ = s.read_to_end(&mut answer);
     let text = String::from_utf8_lossy(&answer);
     let status = text.split_whitespace().nth(1).and_then(|s| s.parse().ok()).expect("a status line");
-    let content_type = text
-        .lines()
-        .find_map(|l| l.to_ascii_lowercase().strip_prefix("content-type:").map(|v| v.trim().to_string()))
-        .unwrap_or_default();
+    let content_type =
+        text.lines().find_map(|l| l.to_ascii_lowercase().strip_prefix("content-type:").map(|v| v.trim().to_string())).unwrap_or_default();
     (status, content_type)
 }
 

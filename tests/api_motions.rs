@@ -32,7 +32,6 @@ async fn json_of(r: reqwest::Response, status: u16) -> Value {
     v
 }
 
-
 #[tokio::test]
 async fn limits_motions_trajectories_and_ik() {
     let app = TestApp::spawn().await;
@@ -55,7 +54,10 @@ async fn limits_motions_trajectories_and_ik() {
     let url = |j: &str| app.url(&format!("{base}/joints/{j}/limits"));
     let r = app.client.put(url(&names[1])).json(&json!({"position": [-2.0, 2.0], "speed": 1.5})).send().await.expect("put");
     let v = json_of(r, 200).await;
-    assert_eq!((v["custom"].clone(), v["limits"]["speed"].clone(), v["limits"]["acceleration"].clone()), (json!(true), json!(1.5), json!(15.0)));
+    assert_eq!(
+        (v["custom"].clone(), v["limits"]["speed"].clone(), v["limits"]["acceleration"].clone()),
+        (json!(true), json!(1.5), json!(15.0))
+    );
     let r = app.client.put(url(&names[1])).json(&json!({"position": [1.0, -1.0], "jerk": 0})).send().await.expect("put");
     let p = json_of(r, 422).await;
     let fields: Vec<&str> = p["errors"].as_array().expect("errors").iter().map(|e| e["field"].as_str().expect("f")).collect();
@@ -92,10 +94,17 @@ async fn limits_motions_trajectories_and_ik() {
     json_of(app.get(&format!("{base}/motions/{mid}/trajectory?rate=0")).await, 400).await;
 
     // Live IK.
-    let r = app.client.post(app.url(&format!("{base}/ik"))).json(&json!({"frame": "TOOL", "position": [p0[0], p0[1], p0[2] - 0.02]})).send().await.expect("ik");
+    let r = app
+        .client
+        .post(app.url(&format!("{base}/ik")))
+        .json(&json!({"frame": "TOOL", "position": [p0[0], p0[1], p0[2] - 0.02]}))
+        .send()
+        .await
+        .expect("ik");
     let v = json_of(r, 200).await;
     assert_eq!(v["success"], true, "{v:#}");
-    let r = app.client.post(app.url(&format!("{base}/ik"))).json(&json!({"frame": "NOPE", "position": [0, 0, 0]})).send().await.expect("ik");
+    let r =
+        app.client.post(app.url(&format!("{base}/ik"))).json(&json!({"frame": "NOPE", "position": [0, 0, 0]})).send().await.expect("ik");
     assert_eq!(json_of(r, 422).await["errors"][0]["field"], "frame");
 
     // Problems: unreachable target, form errors.
@@ -182,7 +191,8 @@ async fn limits_motions_trajectories_and_ik() {
     // A new CAD version with five joints: the sixth's limits are orphaned; a motion naming it is
     // refused, naming the keyframe and the joint.
     json_of(app.client.put(url(&names[5])).json(&json!({"speed": 2})).send().await.expect("put"), 200).await;
-    let six = json!({"name": "wrist", "keyframes": [{"kind": "joints", "values": {}}, {"kind": "joints", "values": {names[5].clone(): 0.2}}]});
+    let six =
+        json!({"name": "wrist", "keyframes": [{"kind": "joints", "values": {}}, {"kind": "joints", "values": {names[5].clone(): 0.2}}]});
     let w = json_of(app.client.post(app.url(&format!("{base}/motions"))).json(&six).send().await.expect("post"), 201).await;
     let (_, _, job2) = app.upload_version_ok(&id, arm_zip(5), &[]).await;
     assert_eq!(app.wait_for_job(&job2).await["status"], "succeeded");

@@ -30,7 +30,8 @@ fn f32_at(b: &[u8], k: usize) -> f64 {
 #[tokio::test]
 async fn results_upload_poses_series_and_refusals() {
     let app = TestApp::spawn().await;
-    let zip = cad2mo_engine::pipeline::back::bundle::write_zip(&[("arm.xml".to_string(), gen::serial_arm_xml(6).into_bytes())]).expect("zip");
+    let zip =
+        cad2mo_engine::pipeline::back::bundle::write_zip(&[("arm.xml".to_string(), gen::serial_arm_xml(6).into_bytes())]).expect("zip");
     let (id, _, job) = app.upload_model_ok(zip, &[]).await;
     assert_eq!(app.wait_for_job(&job).await["status"], "succeeded");
     let joints = json_of(app.get(&format!("/api/models/{id}/joints")).await, 200).await;

@@ -90,7 +90,8 @@ async fn api_flow_with_blobs_on_s3() {
     let r = app.package(&model_id, version).await;
     assert_eq!(r.status(), 200);
     let zip = r.bytes().await.expect("bytes");
-    let names: Vec<String> = zip::ZipArchive::new(std::io::Cursor::new(zip.to_vec())).expect("zip").file_names().map(String::from).collect();
+    let names: Vec<String> =
+        zip::ZipArchive::new(std::io::Cursor::new(zip.to_vec())).expect("zip").file_names().map(String::from).collect();
     assert!(names.iter().any(|n| n == "PENDULUM/Mechanics.mo"), "{names:?}");
     let r = app.bundle(&model_id, version).await;
     assert_eq!(r.bytes().await.expect("bytes").to_vec(), bundle, "the bundle round-trips");

@@ -107,7 +107,11 @@ fn random_part_of(rng: &mut Rng, with_radius: bool, min: usize, max: usize) -> (
     let size = Vector3::new(rng.uniform(0.05, 0.5), rng.uniform(0.05, 0.5), rng.uniform(0.05, 0.5));
     let centre = Vector3::new(rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3));
     let pts = (0..n)
-        .map(|_| Point3::from(centre + Vector3::new(rng.uniform(-1.0, 1.0) * size.x, rng.uniform(-1.0, 1.0) * size.y, rng.uniform(-1.0, 1.0) * size.z)))
+        .map(|_| {
+            Point3::from(
+                centre + Vector3::new(rng.uniform(-1.0, 1.0) * size.x, rng.uniform(-1.0, 1.0) * size.y, rng.uniform(-1.0, 1.0) * size.z),
+            )
+        })
         .collect();
     let radius = if with_radius { rng.uniform(0.0, 0.1) } else { 0.0 };
     (pts, radius)
@@ -170,7 +174,10 @@ fn gjk_epa_agree_with_parry_on_random_pairs() {
             _ => random_part(&mut rng, with_radius),
         };
         let (pb, rb) = if k % 10 == 9 { random_part_of(&mut rng, with_radius, 50, 300) } else { random_part(&mut rng, with_radius) };
-        let pose_a = Isometry3::from_parts(Translation3::from(Vector3::new(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0))), rng.rotation());
+        let pose_a = Isometry3::from_parts(
+            Translation3::from(Vector3::new(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0))),
+            rng.rotation(),
+        );
         // B near A: from deep inside to well apart (distances from the frame origins).
         let offset = rng.unit() * rng.uniform(0.0, 1.4);
         let pose_b = Isometry3::from_parts(Translation3::from(pose_a.translation.vector + offset), rng.rotation());
@@ -195,7 +202,13 @@ fn gjk_epa_agree_with_parry_on_random_pairs() {
         input.push('\n');
     }
     let input_lines: Vec<String> = input.lines().map(String::from).collect();
-    let mut child = Command::new(&exe).arg("query").stdin(Stdio::piped()).stdout(Stdio::piped()).stderr(Stdio::piped()).spawn().expect("start the harness");
+    let mut child = Command::new(&exe)
+        .arg("query")
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("start the harness");
     let mut stdin = child.stdin.take().expect("stdin");
     let feeder = std::thread::spawn(move || stdin.write_all(input.as_bytes()).expect("feed the harness"));
     let out = child.wait_with_output().expect("harness");
@@ -215,7 +228,8 @@ fn gjk_epa_agree_with_parry_on_random_pairs() {
         let (dist, pa, pb, n) = (x[1], Vector3::new(x[2], x[3], x[4]), Vector3::new(x[5], x[6], x[7]), Vector3::new(x[8], x[9], x[10]));
         let (shape_a, at, left_out, hb) = &refs[k];
         // parry on the hulls; a radius grows the distance exactly: d - ra - rb along the same normal
-        let contact = parry3d_f64::query::contact(at, shape_a.as_ref(), &c.b.2, hb, 100.0).expect("supported").expect("within the prediction");
+        let contact =
+            parry3d_f64::query::contact(at, shape_a.as_ref(), &c.b.2, hb, 100.0).expect("supported").expect("within the prediction");
         let d_ref = contact.dist - left_out - c.b.1;
         let core = d_ref + c.a.1 + c.b.1; // between the parts' cores (vertices without radii)
         let n_ref = contact.normal1.into_inner();
@@ -236,7 +250,12 @@ fn gjk_epa_agree_with_parry_on_random_pairs() {
         // stopped short), the C answer must be at least as good along parry's own normal
         let cert_ref = gap_along(&n_ref) - d_ref;
         if cert_ref.abs() > 1e-9 {
-            assert!(dist >= gap_along(&n_ref) - 1e-9, "pair {k}: C {dist} worse than the gap {} along parry's normal; harness input:\n{}", gap_along(&n_ref), input_lines[k]);
+            assert!(
+                dist >= gap_along(&n_ref) - 1e-9,
+                "pair {k}: C {dist} worse than the gap {} along parry's normal; harness input:\n{}",
+                gap_along(&n_ref),
+                input_lines[k]
+            );
             parry_off.push(format!("pair {k}: parry {d_ref} (its normal's gap {}), C {dist}", gap_along(&n_ref)));
             continue;
         }
@@ -251,14 +270,22 @@ fn gjk_epa_agree_with_parry_on_random_pairs() {
             normals_checked += 1;
             let en = angle(&n, &n_ref);
             max_n = max_n.max(en);
-            assert!(en <= 1e-9, "pair {k}: normal off by {en} rad (C {n:?}, parry {n_ref:?}, core distance {core}); harness input:\n{}", input_lines[k]);
+            assert!(
+                en <= 1e-9,
+                "pair {k}: normal off by {en} rad (C {n:?}, parry {n_ref:?}, core distance {core}); harness input:\n{}",
+                input_lines[k]
+            );
         }
     }
     println!(
         "collision C vs parry3d on {} pairs ({separated} separated, {penetrating} penetrating; half with radii, 10 % sphere-hull, 10 % capsule-hull, 10 % hulls of 50..=300 points): max |distance - parry| = {max_d:.3e} m, max normal angle = {max_n:.3e} rad over {normals_checked} pairs, max support certificate = {max_cert:.3e} m, max |pb - pa - dist n| = {max_gap:.3e} m; worst: {worst}",
         cases.len()
     );
-    println!("{} pairs where parry's own answer fails its certificate (C at least as good there):\n{}", parry_off.len(), parry_off.join("\n"));
+    println!(
+        "{} pairs where parry's own answer fails its certificate (C at least as good there):\n{}",
+        parry_off.len(),
+        parry_off.join("\n")
+    );
     assert!(separated > 1500 && penetrating > 1500, "a mix of separated ({separated}) and penetrating ({penetrating}) pairs");
     assert!(max_cert <= 1e-9, "support certificate {max_cert}");
     assert!(max_gap <= 1e-9, "witness points {max_gap}");
@@ -279,7 +306,10 @@ fn contact_forces_follow_the_law_and_balance() {
         if ConvexPolyhedron::from_convex_hull(&pa).is_none() || ConvexPolyhedron::from_convex_hull(&pb).is_none() {
             continue;
         }
-        let pose_a = Isometry3::from_parts(Translation3::from(Vector3::new(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0))), rng.rotation());
+        let pose_a = Isometry3::from_parts(
+            Translation3::from(Vector3::new(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0))),
+            rng.rotation(),
+        );
         let offset = rng.unit() * rng.uniform(0.0, 0.8);
         let pose_b = Isometry3::from_parts(Translation3::from(pose_a.translation.vector + offset), rng.rotation());
         let vel: Vec<f64> = (0..12).map(|_| rng.uniform(-1.0, 1.0)).collect();
@@ -291,7 +321,13 @@ fn contact_forces_follow_the_law_and_balance() {
         input.push_str(&format!("{} {} {}\n", fmt(k_pair), fmt(mu), fmt(v_reg)));
         cases.push((pose_a, pose_b, vel));
     }
-    let mut child = Command::new(&exe).arg("eval").stdin(Stdio::piped()).stdout(Stdio::piped()).stderr(Stdio::piped()).spawn().expect("start the harness");
+    let mut child = Command::new(&exe)
+        .arg("eval")
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("start the harness");
     let mut stdin = child.stdin.take().expect("stdin");
     let feeder = std::thread::spawn(move || stdin.write_all(input.as_bytes()).expect("feed the harness"));
     let out = child.wait_with_output().expect("harness");
@@ -329,9 +365,15 @@ fn contact_forces_follow_the_law_and_balance() {
         for e in errs.iter().chain([net_f, net_t].iter()) {
             max_rel = max_rel.max(e / scale);
         }
-        assert!(errs.iter().all(|e| *e <= 1e-12 * scale) && net_f <= 1e-12 * scale && net_t <= 1e-12 * scale, "pair {k}: {errs:?} {net_f} {net_t} (scale {scale}): {line}");
+        assert!(
+            errs.iter().all(|e| *e <= 1e-12 * scale) && net_f <= 1e-12 * scale && net_t <= 1e-12 * scale,
+            "pair {k}: {errs:?} {net_f} {net_t} (scale {scale}): {line}"
+        );
     }
-    println!("contact forces: {touching} touching pairs of {}, largest relative deviation from the law and from balance {max_rel:.3e}", cases.len());
+    println!(
+        "contact forces: {touching} touching pairs of {}, largest relative deviation from the law and from balance {max_rel:.3e}",
+        cases.len()
+    );
     assert!(touching > 300, "{touching} touching pairs");
 }
 
@@ -382,9 +424,16 @@ fn collision_package_passes_msl_check_and_rumoca() {
     let pkg = "CollisionDemo";
     let mut files = collision::files(pkg);
     files.push((format!("{pkg}/package.mo"), format!("within ;\npackage {pkg} \"Collision test package\"\n  extends Modelica.Icons.Package;\n  annotation (uses(Modelica(version=\"4.0.0\")));\nend {pkg};\n").into_bytes()));
-    files.push((format!("{pkg}/Components/package.mo"), format!("within {pkg};\npackage Components \"Components\"\n  extends Modelica.Icons.Package;\nend Components;\n").into_bytes()));
+    files.push((
+        format!("{pkg}/Components/package.mo"),
+        format!("within {pkg};\npackage Components \"Components\"\n  extends Modelica.Icons.Package;\nend Components;\n").into_bytes(),
+    ));
     let bodies: Vec<String> = ["B1", "B2", "B3"].iter().map(|s| s.to_string()).collect();
-    let shapes = vec![Some(vec![cube(0.1, 0.0)]), None, Some(vec![cube(0.05, 0.0), ConvexPart { vertices: vec![[0.0, 0.0, 0.2]], faces: Vec::new(), radius: 0.03 }])];
+    let shapes = vec![
+        Some(vec![cube(0.1, 0.0)]),
+        None,
+        Some(vec![cube(0.05, 0.0), ConvexPart { vertices: vec![[0.0, 0.0, 0.2]], faces: Vec::new(), radius: 0.03 }]),
+    ];
     let contacts = collision::declarations(pkg, &bodies, &shapes, &[]).expect("contacts");
     let decl = contacts.declarations.clone();
     files.push((format!("{pkg}/{}", collision::SHAPE_FILE), contacts.shape_file.clone()));
@@ -396,7 +445,9 @@ fn collision_package_passes_msl_check_and_rumoca() {
     );
     // every modifier of collisionWorld names a component of our World model (msl-check checks
     // only MSL classes)
-    let collision_mo = String::from_utf8(files.iter().find(|(p, _)| p.ends_with("Components/Collision.mo")).expect("Collision.mo").1.clone()).expect("utf-8");
+    let collision_mo =
+        String::from_utf8(files.iter().find(|(p, _)| p.ends_with("Components/Collision.mo")).expect("Collision.mo").1.clone())
+            .expect("utf-8");
     let world_text = &collision_mo[collision_mo.find("model World").expect("World")..collision_mo.find("end World;").expect("end World")];
     let start = decl.find("collisionWorld(").expect("collisionWorld") + "collisionWorld(".len();
     let (mut depth, mut names, mut token) = (0i32, Vec::new(), String::new());
@@ -413,7 +464,8 @@ fn collision_package_passes_msl_check_and_rumoca() {
     }
     assert!(names.len() >= 7, "{names:?}");
     for n in &names {
-        let declared = [format!(" {n}["), format!(" {n}("), format!(" {n} ="), format!(" {n} \"")].iter().any(|p| world_text.contains(p.as_str()));
+        let declared =
+            [format!(" {n}["), format!(" {n}("), format!(" {n} ="), format!(" {n} \"")].iter().any(|p| world_text.contains(p.as_str()));
         assert!(declared, "collisionWorld modifier `{n}` is not a component of Components.Collision.World");
     }
     files.push((format!("{pkg}/Mechatronics.mo"), text.into_bytes()));
@@ -538,7 +590,10 @@ fn shape_file_of_a_converted_package_is_read_by_the_c_code() {
         std::fs::write(&bad, &content).expect("write");
         let (ok, _, stderr) = run_load(&exe, &bad, &names, &stdin);
         assert!(!ok, "{what}: accepted");
-        assert!(stderr.contains(expect) && stderr.contains("bad.txt") && (stderr.contains("line ") || what == "truncated"), "{what}: {stderr}");
+        assert!(
+            stderr.contains(expect) && stderr.contains("bad.txt") && (stderr.contains("line ") || what == "truncated"),
+            "{what}: {stderr}"
+        );
     }
     let (ok, _, stderr) = run_load(&exe, &tmp.path().join("missing.txt"), &names, &stdin);
     assert!(!ok && stderr.contains("cannot open the collision shape file"), "{stderr}");

@@ -29,9 +29,9 @@ const EXAMPLES: u32 = 15;
 /// The schemathesis command: its script on PATH, else the module of `python3` (pip may install
 /// the script where PATH does not look).
 fn schemathesis() -> Option<Vec<&'static str>> {
-    [vec!["schemathesis"], vec!["python3", "-m", "schemathesis.cli"]].into_iter().find(|cmd| {
-        Command::new(cmd[0]).args(&cmd[1..]).arg("--version").output().is_ok_and(|o| o.status.success())
-    })
+    [vec!["schemathesis"], vec!["python3", "-m", "schemathesis.cli"]]
+        .into_iter()
+        .find(|cmd| Command::new(cmd[0]).args(&cmd[1..]).arg("--version").output().is_ok_and(|o| o.status.success()))
 }
 
 /// A client that sends the token (and nothing else the fuzzer would not send).
@@ -118,7 +118,8 @@ async fn the_service_keeps_its_contract() {
     // Motions: one to read and change, a spare to delete.
     let mut motion_ids = Vec::new();
     for name in ["Contract motion", "Contract spare motion"] {
-        let body = json!({"name": name, "keyframes": [{"kind": "joints", "values": {}}, {"kind": "joints", "values": {joint.clone(): 0.1}}]});
+        let body =
+            json!({"name": name, "keyframes": [{"kind": "joints", "values": {}}, {"kind": "joints", "values": {joint.clone(): 0.1}}]});
         let r = app.client.post(app.url(&format!("/api/models/{model}/motions"))).json(&body).send().await.expect("post");
         motion_ids.push(json_of(r, 201).await["id"].as_str().expect("id").to_string());
     }
@@ -243,7 +244,18 @@ async fn the_service_keeps_its_contract() {
             .args(&schemathesis[1..])
             .arg("--config-file")
             .arg(&config_path)
-            .args(["--no-color", "run", &spec_url, "-H", &auth, "--checks", "all", "--exclude-checks", "ensure_resource_availability", "--no-shrink"])
+            .args([
+                "--no-color",
+                "run",
+                &spec_url,
+                "-H",
+                &auth,
+                "--checks",
+                "all",
+                "--exclude-checks",
+                "ensure_resource_availability",
+                "--no-shrink",
+            ])
             .args(["--seed", &seed.to_string()])
             .args(["-n", &examples.to_string()])
             .args(["--generation-database", "none", "--report-dir"])

@@ -88,7 +88,12 @@ fn kept_across_versions(case: &Path, xml_name: &str, removed: &str, renamed: &st
     let second = convert_path(tmp.path(), &opts).expect("v2");
 
     let placements = |out: &Output| -> BTreeMap<String, [Pt; 2]> {
-        let text = out.files.iter().find(|(p, _)| p.ends_with("/Mechanics.mo")).map(|(_, b)| String::from_utf8_lossy(b).to_string()).expect("Mechanics");
+        let text = out
+            .files
+            .iter()
+            .find(|(p, _)| p.ends_with("/Mechanics.mo"))
+            .map(|(_, b)| String::from_utf8_lossy(b).to_string())
+            .expect("Mechanics");
         svg::read(&text).components.into_iter().map(|c| (c.name, c.extent)).collect()
     };
     let (a, b) = (placements(&first), placements(&second));
@@ -97,7 +102,10 @@ fn kept_across_versions(case: &Path, xml_name: &str, removed: &str, renamed: &st
     let free = &second.report.free_bodies;
     assert!(!free.is_empty(), "{xml_name}: removing {removed} frees a body");
     let renamed_body = first.report.bodies.iter().find(|x| x.cad_name == renamed).map(|x| x.modelica_name.clone()).expect("renamed body");
-    assert!(second.report.bodies.iter().any(|x| x.modelica_name == renamed_body && x.cad_name.ends_with("_RENAMED")), "{xml_name}: the renamed body keeps its Modelica name {renamed_body}");
+    assert!(
+        second.report.bodies.iter().any(|x| x.modelica_name == renamed_body && x.cad_name.ends_with("_RENAMED")),
+        "{xml_name}: the renamed body keeps its Modelica name {renamed_body}"
+    );
     let mut kept = 0;
     let mut moved = Vec::new();
     for (name, ea) in &a {
@@ -124,7 +132,8 @@ fn the_layout_is_deterministic_and_kept_across_versions() {
     // move up in a fresh layout), the head renamed.
     let Some(fx) = fixtures_dir("diagram stability on iCub") else { return };
     let dir = fx.join("xml/robotology+icub-models-generator/e780c99f");
-    let kept = kept_across_versions(&dir, "ICUB_2-5_BB_SIM_MODEL.xml", "SIM_SEA_2-5_CHEST_BB--SIM_SEA_2-5_R_SHOULDER_1", "SIM_SEA_2-5_HEAD");
+    let kept =
+        kept_across_versions(&dir, "ICUB_2-5_BB_SIM_MODEL.xml", "SIM_SEA_2-5_CHEST_BB--SIM_SEA_2-5_R_SHOULDER_1", "SIM_SEA_2-5_HEAD");
     assert!(kept >= 100, "only {kept} iCub placements compared");
 }
 
@@ -207,7 +216,12 @@ fn routing_work_grows_linearly_with_the_diagram() {
     for n in [250usize, 500, 1000, 2000] {
         let bundle = Bundle::from_files("gen", urdf_tree(n)).expect("bundle");
         let a = pipeline::analyse(&bundle, &options()).expect("the generated tree analyses");
-        let opts = modelica::Options { package_name: "Gen".to_string(), gravity: [0.0, 0.0, -9.81], converter_version: "test".to_string(), name_hints: Default::default() };
+        let opts = modelica::Options {
+            package_name: "Gen".to_string(),
+            gravity: [0.0, 0.0, -9.81],
+            converter_version: "test".to_string(),
+            name_hints: Default::default(),
+        };
         let pkg = modelica::write(&a.model, &a.validated, &opts);
         let sheet = &pkg.layout.diagram;
         let bodies = pkg.layout.names.as_ref().map(|x| x.bodies.clone()).unwrap_or_default();
@@ -227,10 +241,20 @@ fn routing_work_grows_linearly_with_the_diagram() {
                 files.extend(mechatronics::collision::files("Gen"));
                 files.push(("Gen/Mechatronics.mo".to_string(), mt.into_bytes()));
                 let errors = check_files(&format!("tree of {n}{}", if wired { ", wired" } else { "" }), &files);
-                assert!(errors.is_empty(), "{} layout errors:\n{}", errors.len(), errors.iter().take(20).cloned().collect::<Vec<_>>().join("\n"));
+                assert!(
+                    errors.is_empty(),
+                    "{} layout errors:\n{}",
+                    errors.len(),
+                    errors.iter().take(20).cloned().collect::<Vec<_>>().join("\n")
+                );
             }
         }
-        println!("{n} bodies: {} components, {wires} wires, work {work} ({}), {:.1} per wire", sheet.placed.len(), parts.join(", "), work as f64 / wires as f64);
+        println!(
+            "{n} bodies: {} components, {wires} wires, work {work} ({}), {:.1} per wire",
+            sheet.placed.len(),
+            parts.join(", "),
+            work as f64 / wires as f64
+        );
         // Bounded per wire: the sheet's search budget, plus a fallback's checks.
         let bound = wires as u64 * (modelica::diagram::SHEET_EXPANSIONS_PER_WIRE + 200) + 20_000;
         assert!(work <= bound, "{n} bodies: work {work} over {bound} for {wires} wires");

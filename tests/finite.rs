@@ -2,7 +2,6 @@
 //! binary STL shapes of every golden case and every real export in `../shared/fixtures`.
 //! (Validation refuses non-finite and implausible input; this checks the outputs themselves.)
 
-
 use cad2mo_engine::pipeline::{Options, Output};
 use cad2mo_tests::common::{convert_path, files_with_ext, fixtures_dir, sorted_dirs, workspace_root};
 use serde_json::Value;

@@ -6,7 +6,10 @@ use std::process::Command;
 
 use cad2mo_engine::pipeline::Options;
 use cad2mo_tests::check::fk_check_with_inertia;
-use cad2mo_tests::common::{convert_path, files_with_ext, fixture_bundle, fixtures_dir, modelica_syntax_errors, msl_check, tools_required, workspace_root, write_output};
+use cad2mo_tests::common::{
+    convert_path, files_with_ext, fixture_bundle, fixtures_dir, modelica_syntax_errors, msl_check, tools_required, workspace_root,
+    write_output,
+};
 use cad2mo_tests::truth::{xml_cgs, xml_frames, xml_mass_properties};
 
 fn is_first_generation(text: &str) -> bool {
@@ -37,7 +40,8 @@ fn every_fixture_xml_converts_and_reproduces_the_cad_pose() {
         let joints = text.matches("<SimpleJoint>").count();
         assert_eq!(out.report.bodies.len(), bodies, "{rel}: body count");
         assert_eq!(out.report.joints.len(), joints, "{rel}: joint count");
-        let stats = fk_check_with_inertia(&out, &xml_frames(&text), &xml_cgs(&text), &xml_mass_properties(&text)).unwrap_or_else(|e| panic!("{rel}: {e}"));
+        let stats = fk_check_with_inertia(&out, &xml_frames(&text), &xml_cgs(&text), &xml_mass_properties(&text))
+            .unwrap_or_else(|e| panic!("{rel}: {e}"));
         assert!(stats.frames >= bodies, "{rel}: {} frames checked", stats.frames);
         let named = out.report.bodies.iter().filter(|b| !b.geometry.is_empty()).count();
         let dir = tempfile::tempdir().expect("tempdir");
@@ -92,12 +96,8 @@ fn hand_set_finds_every_mesh_and_dxf_reads_back() {
     }
     for b in with_mesh {
         let shape = b.shape.as_ref().expect("shape path");
-        let st = Command::new("python3")
-            .arg(&script)
-            .arg(dir.path().join(shape))
-            .arg(b.triangles.to_string())
-            .output()
-            .expect("run dxf_check");
+        let st =
+            Command::new("python3").arg(&script).arg(dir.path().join(shape)).arg(b.triangles.to_string()).output().expect("run dxf_check");
         assert!(st.status.success(), "{shape}: {}{}", String::from_utf8_lossy(&st.stdout), String::from_utf8_lossy(&st.stderr));
     }
 }

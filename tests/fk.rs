@@ -68,9 +68,11 @@ fn own_cases_reproduce_cad_pose() {
             let text = std::fs::read_to_string(&xml[0]).expect("xml");
             if cad2mo_tests::xml2_truth::is_second_generation(&text) {
                 let t = cad2mo_tests::xml2_truth::scan(&text);
-                fk_check_with_inertia(&out, &t.frames, &t.cgs, &t.mass).unwrap_or_else(|e| panic!("{name} (second-generation XML truth): {e}"))
+                fk_check_with_inertia(&out, &t.frames, &t.cgs, &t.mass)
+                    .unwrap_or_else(|e| panic!("{name} (second-generation XML truth): {e}"))
             } else {
-                fk_check_with_inertia(&out, &xml_frames(&text), &xml_cgs(&text), &xml_mass_properties(&text)).unwrap_or_else(|e| panic!("{name} (XML truth): {e}"))
+                fk_check_with_inertia(&out, &xml_frames(&text), &xml_cgs(&text), &xml_mass_properties(&text))
+                    .unwrap_or_else(|e| panic!("{name} (XML truth): {e}"))
             }
         };
         assert!(stats.frames >= out.report.bodies.len(), "{name}: only {} frames checked", stats.frames);
@@ -158,7 +160,12 @@ fn lumped_mass_properties_match_the_generator() {
         let cg_want = vec3(&g["cg_world_m"]).expect("cg");
         assert!((cg - cg_want).norm() < TOL, "CG {cg:?} vs {cg_want:?}");
         let i = cad2mo_tests::fk::body_inertia_world(&model, &poses, &body.modelica_name).expect("inertia");
-        let rows: Vec<f64> = g["inertia_world_kgm2"].as_array().expect("rows").iter().flat_map(|r| r.as_array().expect("row").iter().filter_map(Value::as_f64)).collect();
+        let rows: Vec<f64> = g["inertia_world_kgm2"]
+            .as_array()
+            .expect("rows")
+            .iter()
+            .flat_map(|r| r.as_array().expect("row").iter().filter_map(Value::as_f64))
+            .collect();
         let want = Matrix3::from_row_slice(&rows);
         let err = (i - want).abs().max() / want.abs().max();
         assert!(err < 1e-9, "inertia differs by {err:e} (relative):\n{i}\n{want}");

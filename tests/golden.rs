@@ -31,9 +31,7 @@ fn case_options(case: &Path) -> Options {
 }
 
 fn expect_json(case: &Path) -> Value {
-    std::fs::read_to_string(case.join("expect.json"))
-        .map(|t| serde_json::from_str(&t).expect("expect.json is JSON"))
-        .unwrap_or(Value::Null)
+    std::fs::read_to_string(case.join("expect.json")).map(|t| serde_json::from_str(&t).expect("expect.json is JSON")).unwrap_or(Value::Null)
 }
 
 /// Compares `actual` with the file, or writes it when blessing. Returns a mismatch message.
@@ -47,7 +45,8 @@ fn check_file(path: &Path, actual: &str, bless: bool) -> Option<String> {
     if expected == actual {
         return None;
     }
-    let line = expected.lines().zip(actual.lines()).position(|(a, b)| a != b).unwrap_or(expected.lines().count().min(actual.lines().count()));
+    let line =
+        expected.lines().zip(actual.lines()).position(|(a, b)| a != b).unwrap_or(expected.lines().count().min(actual.lines().count()));
     Some(format!(
         "{} differs at line {}:\n  expected: {}\n  actual:   {}",
         path.display(),
@@ -167,7 +166,11 @@ fn golden_inputs_are_what_the_generator_writes() {
         for entry in walk(&case) {
             let rel = entry.strip_prefix(tmp.path()).expect("under tmp");
             let committed = std::fs::read(root.join("tests/in").join(rel)).unwrap_or_default();
-            assert!(std::fs::read(&entry).expect("read") == committed, "tests/in/{} differs from the generator's output: run python3 tests/tools/make_fixtures.py", rel.display());
+            assert!(
+                std::fs::read(&entry).expect("read") == committed,
+                "tests/in/{} differs from the generator's output: run python3 tests/tools/make_fixtures.py",
+                rel.display()
+            );
             compared += 1;
         }
     }

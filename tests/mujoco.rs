@@ -92,7 +92,12 @@ fn compare(label: &str, m: &Mechanism, mjcf: &str, samples: usize, seed: u64) ->
         println!("NOTICE: {}; MuJoCo cross-check skipped (python3 -m pip install mujoco)", String::from_utf8_lossy(&run.stdout).trim());
         return None;
     }
-    assert!(run.status.success(), "{label}: mujoco_check.py failed:\n{}{}", String::from_utf8_lossy(&run.stdout), String::from_utf8_lossy(&run.stderr));
+    assert!(
+        run.status.success(),
+        "{label}: mujoco_check.py failed:\n{}{}",
+        String::from_utf8_lossy(&run.stdout),
+        String::from_utf8_lossy(&run.stderr)
+    );
     let result: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&output).expect("read out")).expect("json");
     assert_eq!(result["nv"].as_u64(), Some(n as u64), "{label}: MuJoCo has a different number of dofs");
     let mut worst_rel = 0.0f64;
@@ -134,11 +139,8 @@ fn compare(label: &str, m: &Mechanism, mjcf: &str, samples: usize, seed: u64) ->
 
 #[test]
 fn rnea_agrees_with_mujoco_on_generated_and_real_trees() {
-    let mut models: Vec<(String, String)> = vec![
-        ("arm6".into(), gen::serial_arm_xml(6)),
-        ("arm7".into(), gen::serial_arm_xml(7)),
-        ("tree50".into(), gen::tree_xml(50)),
-    ];
+    let mut models: Vec<(String, String)> =
+        vec![("arm6".into(), gen::serial_arm_xml(6)), ("arm7".into(), gen::serial_arm_xml(7)), ("tree50".into(), gen::tree_xml(50))];
     if let Some(fx) = fixtures_dir("rnea_agrees_with_mujoco") {
         for xml in files_with_ext(&fx.join("xml"), &[".xml"]) {
             let text = std::fs::read_to_string(&xml).expect("read");
@@ -149,7 +151,9 @@ fn rnea_agrees_with_mujoco_on_generated_and_real_trees() {
     }
     let mut compared = 0;
     for (label, xml) in &models {
-        let Some((m, mjcf)) = prepare(&format!("{}.xml", Path::new(label).file_stem().map(|s| s.to_string_lossy().to_string()).unwrap_or_default()), xml) else {
+        let Some((m, mjcf)) =
+            prepare(&format!("{}.xml", Path::new(label).file_stem().map(|s| s.to_string_lossy().to_string()).unwrap_or_default()), xml)
+        else {
             println!("{label}: not a tree mechanism; skipped");
             continue;
         };

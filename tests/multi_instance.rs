@@ -27,7 +27,8 @@ fn pendulum(i: usize) -> Vec<u8> {
     assert_eq!(xml.matches("<mass>0.2673</mass>").count(), 1);
     let xml = xml.replace("<mass>0.2673</mass>", &format!("<mass>{}</mass>", 0.2673 + i as f64 * 1e-3));
     let stl = std::fs::read(dir.join("meshes/LINK_prt.stl")).expect("stl");
-    cad2mo_engine::pipeline::back::bundle::write_zip(&[("PENDULUM.xml".into(), xml.into_bytes()), ("meshes/LINK_prt.stl".into(), stl)]).expect("zip")
+    cad2mo_engine::pipeline::back::bundle::write_zip(&[("PENDULUM.xml".into(), xml.into_bytes()), ("meshes/LINK_prt.stl".into(), stl)])
+        .expect("zip")
 }
 
 fn client() -> reqwest::Client {
@@ -69,7 +70,8 @@ async fn assert_consistent(cluster: &Cluster, models: &[String]) {
             assert!(v.package_sha256.is_some() && v.report_sha256.is_some(), "{m} v{} has no outputs", v.version);
         }
     }
-    let stored: BTreeSet<String> = tokio::task::spawn_blocking(move || blobs.list()).await.expect("task").expect("list").into_iter().collect();
+    let stored: BTreeSet<String> =
+        tokio::task::spawn_blocking(move || blobs.list()).await.expect("task").expect("list").into_iter().collect();
     assert!(mine.is_subset(&stored), "missing: {:?}", mine.difference(&stored).collect::<Vec<_>>());
     // The operators' command says the same.
     let (code, out) = cluster.check_blobs();
@@ -189,7 +191,8 @@ async fn killed_instance_job_is_finished_by_the_other() {
         return;
     }
     let lease = 3;
-    let mut cluster = Cluster::new("killed_instance_job_is_finished_by_the_other", &["--workers", "1", "--lease-secs", &lease.to_string()]).await;
+    let mut cluster =
+        Cluster::new("killed_instance_job_is_finished_by_the_other", &["--workers", "1", "--lease-secs", &lease.to_string()]).await;
     let mut a = cluster.start().await;
     let (model, id) = upload(&a, heavy_pendulum(400_000)).await;
     // A claims it (B is not started yet) and reports progress.

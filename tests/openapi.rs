@@ -42,9 +42,9 @@ fn router_routes() -> BTreeSet<(String, String)> {
             let handlers = &rest[end + 1..j];
             for m in METHODS {
                 let call = format!("{m}(");
-                let found = handlers.match_indices(&call).any(|(p, _)| {
-                    p == 0 || !handlers.as_bytes()[p - 1].is_ascii_alphanumeric() && handlers.as_bytes()[p - 1] != b'_'
-                });
+                let found = handlers
+                    .match_indices(&call)
+                    .any(|(p, _)| p == 0 || !handlers.as_bytes()[p - 1].is_ascii_alphanumeric() && handlers.as_bytes()[p - 1] != b'_');
                 if found {
                     out.insert((m.to_uppercase(), path.clone()));
                 }

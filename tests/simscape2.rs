@@ -190,7 +190,13 @@ fn every_xml2_fixture_converts_and_reproduces_the_cad_pose() {
                     stats.frames, stats.cgs, stats.inertias, stats.loop_checks, stats.max_position_error, stats.max_rotation_error
                 );
                 if stats.frames != model.bodies.len() || stats.cgs != model.bodies.len() || stats.inertias != model.bodies.len() {
-                    failures.push(format!("{name}: checked {} frames, {} CGs, {} inertias of {} bodies", stats.frames, stats.cgs, stats.inertias, model.bodies.len()));
+                    failures.push(format!(
+                        "{name}: checked {} frames, {} CGs, {} inertias of {} bodies",
+                        stats.frames,
+                        stats.cgs,
+                        stats.inertias,
+                        model.bodies.len()
+                    ));
                 }
             }
             Err(e) => failures.push(format!("{name}: {}", &e[..e.len().min(3000)])),

@@ -34,8 +34,19 @@ fn check(name: &str, mechanics: &str, xml: &str) -> Result<(), String> {
     println!(
         "{name}: model {} rows, rank {}, {} redundant, {} free groups, mobility {}; CAD {} rows, rank {}, {} bodies, \
          mobility {}; singular values kept >= {:.1e} / {:.1e}, dropped <= {:.1e} / {:.1e} (model / CAD)",
-        m.rows, m.rank, m.redundant, m.free_groups, m.mobility, cad.rows, cad.rank, cad.free_groups, cad.mobility,
-        m.smallest_kept, cad.smallest_kept, m.largest_dropped, cad.largest_dropped
+        m.rows,
+        m.rank,
+        m.redundant,
+        m.free_groups,
+        m.mobility,
+        cad.rows,
+        cad.rank,
+        cad.free_groups,
+        cad.mobility,
+        m.smallest_kept,
+        cad.smallest_kept,
+        m.largest_dropped,
+        cad.largest_dropped
     );
     let mut errors = Vec::new();
     if m.redundant != 0 {
@@ -78,7 +89,13 @@ fn own_cases_have_no_redundant_equations() {
                     model_structure(&model, &poses)
                 })
                 .map_err(|e| format!("{name}: {e}"))
-                .and_then(|m| if m.redundant == 0 { Ok(()) } else { Err(format!("{name}: {} redundant equations: {}", m.redundant, m.offenders())) }),
+                .and_then(|m| {
+                    if m.redundant == 0 {
+                        Ok(())
+                    } else {
+                        Err(format!("{name}: {} redundant equations: {}", m.redundant, m.offenders()))
+                    }
+                }),
         };
         if let Err(e) = result {
             failures.push(e);

@@ -28,7 +28,8 @@ fn engine_manifest_has_no_io_frameworks() {
         }
     }
     assert!(deps.len() > 5 && deps.iter().any(|d| d == "nalgebra"), "engine dependencies not found: {deps:?}");
-    for banned in ["tokio", "axum", "sqlx", "object_store", "hyper", "reqwest", "tower", "tower-http", "tracing", "cad2mo-server", "cad2mo"] {
+    for banned in ["tokio", "axum", "sqlx", "object_store", "hyper", "reqwest", "tower", "tower-http", "tracing", "cad2mo-server", "cad2mo"]
+    {
         assert!(!deps.iter().any(|d| d == banned), "engine/Cargo.toml depends on {banned}: computation must stay free of IO frameworks");
     }
 }
@@ -60,8 +61,20 @@ fn sizing_has_no_io_and_no_panics() {
 }
 
 const IO: [&str; 14] = [
-    "std::fs", "std::net", "std::process", "std::env", "File::", "tokio", "axum", "sqlx", "hyper",
-    "println!", "eprintln!", "print!(", "dbg!", "std::io::stdin",
+    "std::fs",
+    "std::net",
+    "std::process",
+    "std::env",
+    "File::",
+    "tokio",
+    "axum",
+    "sqlx",
+    "hyper",
+    "println!",
+    "eprintln!",
+    "print!(",
+    "dbg!",
+    "std::io::stdin",
 ];
 
 fn no_io_and_no_panics(module: &str, min_files: usize) {

@@ -235,7 +235,21 @@ async fn end_to_end_in_chromium() {
     println!("diagram: {diagram}");
     assert!(diagram["components"].as_u64().is_some_and(|n| n >= 6), "components drawn: {diagram}");
     assert!(diagram["drives"].as_u64().is_some_and(|n| n >= 1), "the saved drive in the Mechatronics diagram: {diagram}");
-    for png in ["1-models-empty", "2-model-3d", "6-drives-refused", "7-drives-saved", "8-library", "10-model-versions", "12-narrow-model", "15-job-progress", "26-collision-interference", "27-collision-motion", "13f-narrow-collision", "28-modelica-diagram", "29-mechatronics-diagram"] {
+    for png in [
+        "1-models-empty",
+        "2-model-3d",
+        "6-drives-refused",
+        "7-drives-saved",
+        "8-library",
+        "10-model-versions",
+        "12-narrow-model",
+        "15-job-progress",
+        "26-collision-interference",
+        "27-collision-motion",
+        "13f-narrow-collision",
+        "28-modelica-diagram",
+        "29-mechatronics-diagram",
+    ] {
         assert!(shots.join(format!("{png}.png")).exists(), "screenshot {png}");
     }
     app.stop().await;

@@ -39,8 +39,8 @@ fn every_fixture_urdf_converts_and_reproduces_its_poses() {
         let label = urdf.strip_prefix(&fx).expect("in fixtures").display().to_string();
         let text = std::fs::read_to_string(urdf).expect("read urdf");
         let bundle = urdf_bundle(urdf, set);
-        let out = pipeline::convert(&bundle, &Options { write_shapes: false, ..Options::default() })
-            .unwrap_or_else(|e| panic!("{label}: {e}"));
+        let out =
+            pipeline::convert(&bundle, &Options { write_shapes: false, ..Options::default() }).unwrap_or_else(|e| panic!("{label}: {e}"));
         // The start values are zero unless Drake loops had to be closed; the truth composes the
         // URDF at them and must then have every loop closed.
         let t = urdf_truth_at(&text, &start_values(&out.report));
@@ -52,7 +52,8 @@ fn every_fixture_urdf_converts_and_reproduces_its_poses() {
         let bodies = out.report.bodies.len();
         assert!(stats.frames >= bodies && stats.cgs == bodies && stats.inertias == bodies, "{label}: checked {stats:?} of {bodies} bodies");
         // Joint kinds and counts.
-        let by_cad: BTreeMap<&str, &cad2mo_engine::pipeline::report::JointReport> = out.report.joints.iter().map(|j| (j.cad_name.as_str(), j)).collect();
+        let by_cad: BTreeMap<&str, &cad2mo_engine::pipeline::report::JointReport> =
+            out.report.joints.iter().map(|j| (j.cad_name.as_str(), j)).collect();
         let mut compared = 0;
         for (name, (kind, _, _)) in &t.joints {
             let want = primitives_of(kind);
@@ -81,7 +82,11 @@ fn every_fixture_urdf_converts_and_reproduces_its_poses() {
             for m in &missing {
                 let link = m.split('"').nth(1).expect("the link is named");
                 let b = out.report.bodies.iter().find(|b| b.cad_name == link).expect("named link is a body");
-                assert!(b.shape.is_some() && b.geometry.iter().all(|g| !g.ends_with(".dae")), "{label}: {link}: collision geometry stands in, got {:?}", b.geometry);
+                assert!(
+                    b.shape.is_some() && b.geometry.iter().all(|g| !g.ends_with(".dae")),
+                    "{label}: {link}: collision geometry stands in, got {:?}",
+                    b.geometry
+                );
             }
         } else {
             assert!(missing.is_empty(), "{label}: {missing:?}");
@@ -119,7 +124,12 @@ fn mujoco(label: &str, urdf: &str, samples: &[BTreeMap<String, f64>]) -> Option<
         println!("NOTICE: mujoco not importable; MuJoCo URDF cross-check skipped");
         return None;
     }
-    assert!(run.status.success(), "{label}: mujoco_urdf.py failed:\n{}{}", String::from_utf8_lossy(&run.stdout), String::from_utf8_lossy(&run.stderr));
+    assert!(
+        run.status.success(),
+        "{label}: mujoco_urdf.py failed:\n{}{}",
+        String::from_utf8_lossy(&run.stdout),
+        String::from_utf8_lossy(&run.stderr)
+    );
     Some(serde_json::from_str(&std::fs::read_to_string(&output).expect("out")).expect("json"))
 }
 
@@ -176,7 +186,8 @@ fn mujoco_reads_the_urdf_fixtures_as_we_do() {
                 };
                 let pose = m.body_pose(&k, cad2mo_engine::pipeline::ir::BodyId(b as u32)).expect("pose");
                 let dp = (pose.translation.vector - Vector3::new(f(&p[0]), f(&p[1]), f(&p[2]))).norm();
-                let theirs = nalgebra::UnitQuaternion::from_quaternion(nalgebra::Quaternion::new(f(&rq[0]), f(&rq[1]), f(&rq[2]), f(&rq[3])));
+                let theirs =
+                    nalgebra::UnitQuaternion::from_quaternion(nalgebra::Quaternion::new(f(&rq[0]), f(&rq[1]), f(&rq[2]), f(&rq[3])));
                 let dr = pose.rotation.angle_to(&theirs);
                 assert!(dp < 1e-9 && dr < 1e-9, "{label}: sample {s}, link {}: MuJoCo pose off by {dp:e} m, {dr:e} rad", body.cad_name);
                 worst_p = worst_p.max(dp);
@@ -191,7 +202,13 @@ fn mujoco_reads_the_urdf_fixtures_as_we_do() {
             let scale = theirs.iter().fold(0.0f64, |x, t| x.max(t.abs()));
             for k in 0..n {
                 let err = (tau[k] - theirs[k]).abs();
-                assert!(err <= 1e-9 * scale + 1e-12, "{label}: sample {s}, joint {}: gravity torque {} vs MuJoCo {}", joint_of(k), tau[k], theirs[k]);
+                assert!(
+                    err <= 1e-9 * scale + 1e-12,
+                    "{label}: sample {s}, joint {}: gravity torque {} vs MuJoCo {}",
+                    joint_of(k),
+                    tau[k],
+                    theirs[k]
+                );
                 worst_tau = worst_tau.max(err / (scale + 1e-12));
             }
         }
@@ -219,10 +236,16 @@ fn onshape_arm_exported_both_ways_has_the_same_kinematics() {
     let axes = |path: &Path, name: &dyn Fn(usize) -> String| -> Vec<(Vector3<f64>, Vector3<f64>)> {
         let file = path.file_name().expect("name").to_string_lossy().to_string();
         let bundle = Bundle::from_files("pair", [(file, std::fs::read(path).expect("read"))]).expect("bundle");
-        let a = pipeline::analyse(&bundle, &Options { write_shapes: false, ..Options::default() }).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        let a = pipeline::analyse(&bundle, &Options { write_shapes: false, ..Options::default() })
+            .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
         (1..=5)
             .map(|k| {
-                let j = a.model.joints.iter().find(|j| j.cad_name == name(k)).unwrap_or_else(|| panic!("{}: no joint {}", path.display(), name(k)));
+                let j = a
+                    .model
+                    .joints
+                    .iter()
+                    .find(|j| j.cad_name == name(k))
+                    .unwrap_or_else(|| panic!("{}: no joint {}", path.display(), name(k)));
                 assert_eq!(j.primitives.len(), 1, "{}", name(k));
                 assert_eq!(j.primitives[0].kind, cad2mo_engine::pipeline::ir::PrimitiveKind::Revolute, "{}", name(k));
                 (a.model.frame(j.base).pose.translation.vector, j.primitives[0].axis_world.normalize())

@@ -99,7 +99,9 @@ fn check(label: &str, bundle_path: &Path) -> Option<bool> {
         let mut rng = XorShift::new(7);
         for _ in 0..3 {
             let u: Vec<f64> = (0..m.dof()).map(|_| rng.range(-1.0, 1.0)).collect();
-            samples.push(serde_json::Value::Object(m.coordinates().iter().zip(&u).map(|(c, x)| (c.name.clone(), serde_json::json!(x))).collect()));
+            samples.push(serde_json::Value::Object(
+                m.coordinates().iter().zip(&u).map(|(c, x)| (c.name.clone(), serde_json::json!(x))).collect(),
+            ));
             us.push(u);
         }
     }
@@ -107,12 +109,17 @@ fn check(label: &str, bundle_path: &Path) -> Option<bool> {
     for link in result["inertia_replaced"].as_array().into_iter().flatten() {
         let body = out.report.bodies.iter().find(|b| Some(b.modelica_name.as_str()) == link.as_str());
         let body = body.unwrap_or_else(|| panic!("{label}: MuJoCo replaced the inertia of {link}, which is no body"));
-        let warned = out.report.warnings.iter().any(|w| w.code == "inertia-not-positive" && w.location.contains(&format!("\"{}\"", body.cad_name)));
+        let warned =
+            out.report.warnings.iter().any(|w| w.code == "inertia-not-positive" && w.location.contains(&format!("\"{}\"", body.cad_name)));
         // Without a warning, it must be semi-definite within the validator's tolerance.
         let i = Matrix3::from_fn(|r, c| body.inertia_cg[r][c]);
         let eig = i.symmetric_eigenvalues();
         let semi = eig.min() >= -1e-6 * eig.amax();
-        assert!(warned || semi, "{label}: the inertia of {} is not positive definite ({eig:?}), and the validator did not say so", body.cad_name);
+        assert!(
+            warned || semi,
+            "{label}: the inertia of {} is not positive definite ({eig:?}), and the validator did not say so",
+            body.cad_name
+        );
     }
     let ours: f64 = out.report.bodies.iter().map(|b| b.mass).sum();
     let theirs = result["total_mass"].as_f64().unwrap_or(f64::NAN);
@@ -136,7 +143,10 @@ fn check(label: &str, bundle_path: &Path) -> Option<bool> {
                 let ours = m.body_pose(&k, cad2mo_engine::pipeline::ir::BodyId(b as u32)).expect("pose");
                 let mj = pose_of(&result, s + 1, name).unwrap_or_else(|| panic!("{label}: body {name} not in MuJoCo's model"));
                 let (dp, dr) = off(&ours, &mj);
-                assert!(dp <= TOL && dr <= TOL, "{label}: sample {s}, body {name}: MuJoCo at u is {dp:e} m, {dr:e} rad from ours at q0 + u");
+                assert!(
+                    dp <= TOL && dr <= TOL,
+                    "{label}: sample {s}, body {name}: MuJoCo at u is {dp:e} m, {dr:e} rad from ours at q0 + u"
+                );
                 worst = (worst.0.max(dp), worst.1.max(dr));
             }
         }

@@ -39,7 +39,12 @@ fn read(label: &str, bytes: &[u8]) -> Read {
     let layout = modelica::write(
         &model,
         &validated,
-        &modelica::Options { package_name: "P".into(), gravity: [0.0, 0.0, -9.81], converter_version: String::new(), name_hints: Default::default() },
+        &modelica::Options {
+            package_name: "P".into(),
+            gravity: [0.0, 0.0, -9.81],
+            converter_version: String::new(),
+            name_hints: Default::default(),
+        },
     )
     .layout;
     Read { model, validated, layout }

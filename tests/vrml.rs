@@ -16,10 +16,7 @@ fn v3(v: &Value) -> Vector3<f64> {
 fn stl_vertices(bytes: &[u8]) -> Vec<Vector3<f64>> {
     let n = u32::from_le_bytes(bytes[80..84].try_into().expect("count")) as usize;
     let f = |o: usize| f32::from_le_bytes(bytes[o..o + 4].try_into().expect("f32")) as f64;
-    (0..n)
-        .flat_map(|t| (0..3).map(move |k| 84 + t * 50 + 12 + k * 12))
-        .map(|o| Vector3::new(f(o), f(o + 4), f(o + 8)))
-        .collect()
+    (0..n).flat_map(|t| (0..3).map(move |k| 84 + t * 50 + 12 + k * 12)).map(|o| Vector3::new(f(o), f(o + 4), f(o + 8))).collect()
 }
 
 #[test]

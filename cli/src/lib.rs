@@ -167,7 +167,12 @@ pub fn read_bundle(path: &Path, limits: &Limits) -> Result<Bundle, String> {
                     let bytes = read_bounded(&p, limits.max_total_bytes.saturating_sub(total))?;
                     total += bytes.len() as u64;
                     if total > limits.max_total_bytes || files.len() >= limits.max_entries {
-                        return Err(format!("{}: bundle exceeds {} bytes or {} files", path.display(), limits.max_total_bytes, limits.max_entries));
+                        return Err(format!(
+                            "{}: bundle exceeds {} bytes or {} files",
+                            path.display(),
+                            limits.max_total_bytes,
+                            limits.max_entries
+                        ));
                     }
                     let rel = p.strip_prefix(path).map_err(|e| e.to_string())?;
                     let rel = rel.components().map(|c| c.as_os_str().to_string_lossy()).collect::<Vec<_>>().join("/");
@@ -352,7 +357,11 @@ fn check_blobs(settings: cad2mo_server::config::Settings) -> ExitCode {
                 r.corrupt.len(),
                 r.orphans.len()
             );
-            if r.is_consistent() { ExitCode::SUCCESS } else { ExitCode::from(1) }
+            if r.is_consistent() {
+                ExitCode::SUCCESS
+            } else {
+                ExitCode::from(1)
+            }
         }
         Err(e) => {
             eprintln!("error: {e:#}");
@@ -520,7 +529,11 @@ fn reexport(settings: cad2mo_server::config::Settings, model: Option<String>) ->
                 eprintln!("failed: {f}");
             }
             eprintln!("re-exported {} of {total} models", total.saturating_sub(failed.len()));
-            if failed.is_empty() { ExitCode::SUCCESS } else { ExitCode::from(1) }
+            if failed.is_empty() {
+                ExitCode::SUCCESS
+            } else {
+                ExitCode::from(1)
+            }
         }
         Err(e) => {
             eprintln!("error: {e:#}");

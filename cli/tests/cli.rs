@@ -232,7 +232,13 @@ fn token_list_and_revoke_never_show_tokens() {
 fn token_create_says_which_database_it_wrote_to() {
     let dir = tempfile::tempdir().expect("tempdir");
     // Without --data-dir: the default `data` folder of the working directory.
-    let st = bin().args(["token", "create"]).current_dir(dir.path()).env_remove("CAD2MO_DATA_DIR").env_remove("CAD2MO_DATABASE_URL").output().expect("run");
+    let st = bin()
+        .args(["token", "create"])
+        .current_dir(dir.path())
+        .env_remove("CAD2MO_DATA_DIR")
+        .env_remove("CAD2MO_DATABASE_URL")
+        .output()
+        .expect("run");
     assert!(st.status.success(), "{}", String::from_utf8_lossy(&st.stderr));
     let err = String::from_utf8_lossy(&st.stderr);
     let db = dir.path().canonicalize().expect("canonical").join("data").join("cad2mo.db");

@@ -101,9 +101,7 @@ fn bench(c: &mut Criterion) {
     }
     let mut g = c.benchmark_group("collision");
     g.sample_size(10);
-    g.bench_function("sweep 50 bodies, 10 s at 1 kHz", |b| {
-        b.iter(|| black_box(sweep(&world, &times, &poses, &all, &opts).pairs.len()))
-    });
+    g.bench_function("sweep 50 bodies, 10 s at 1 kHz", |b| b.iter(|| black_box(sweep(&world, &times, &poses, &all, &opts).pairs.len())));
     g.finish();
 }
 

@@ -34,7 +34,9 @@ fn bench(c: &mut Criterion) {
     assert_eq!(out.report.bodies.len(), 2001);
     g.sample_size(10);
     g.throughput(Throughput::Bytes(stl_bytes as u64));
-    g.bench_function("tree_2000_bodies_with_37MB_of_stl", |b| b.iter(|| pipeline::convert(&bundle, &Options::default()).expect("converts")));
+    g.bench_function("tree_2000_bodies_with_37MB_of_stl", |b| {
+        b.iter(|| pipeline::convert(&bundle, &Options::default()).expect("converts"))
+    });
     g.sample_size(20);
 
     if let Some(fx) = fixtures() {
@@ -61,7 +63,8 @@ fn bench(c: &mut Criterion) {
                 b.iter(|| pipeline::convert(&bundle, &Options::default()).expect("converts"))
             });
             // The same with every shape served by the shape cache (a re-export in the service).
-            let cache: std::sync::Arc<dyn cad2mo_engine::collision::ShapeCache> = std::sync::Arc::new(cad2mo_engine::collision::MemoryShapeCache::default());
+            let cache: std::sync::Arc<dyn cad2mo_engine::collision::ShapeCache> =
+                std::sync::Arc::new(cad2mo_engine::collision::MemoryShapeCache::default());
             let cached = Options { shape_cache: Some(cache), ..Options::default() };
             assert_eq!(pipeline::convert(&bundle, &cached).expect("converts").shapes.cached, 0);
             g.bench_function("left_hand_with_11MB_of_stl_shapes_cached", |b| {

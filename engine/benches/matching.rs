@@ -25,7 +25,17 @@ fn push(s: &mut Scene, parent: Option<usize>, name: String, global: Matrix4<f64>
         Some(p) => format!("{}/{name}", s.nodes[p].path),
         None => name.clone(),
     };
-    s.nodes.push(SceneNode { parent, name, named: true, path, file: "asm.wrl".into(), line: 0, global, shapes: vec![shape; shapes], children: vec![] });
+    s.nodes.push(SceneNode {
+        parent,
+        name,
+        named: true,
+        path,
+        file: "asm.wrl".into(),
+        line: 0,
+        global,
+        shapes: vec![shape; shapes],
+        children: vec![],
+    });
     match parent {
         Some(p) => s.nodes[p].children.push(id),
         None => s.roots.push(id),

@@ -19,16 +19,27 @@ mod gen;
 fn bench(c: &mut Criterion) {
     // 100 MB: 2,500 variables x 10,000 instants of float32.
     let time: Vec<f64> = (0..10_000).map(|i| f64::from(i) * 1e-3).collect();
-    let series: Vec<(String, Vec<f64>)> =
-        (0..2_499).map(|k| (format!("model.component{}.sub.signal[{}, {}]", k / 9, k % 3 + 1, k % 9 / 3 + 1), time.iter().map(|t| t * k as f64).collect())).collect();
+    let series: Vec<(String, Vec<f64>)> = (0..2_499)
+        .map(|k| {
+            (format!("model.component{}.sub.signal[{}, {}]", k / 9, k % 3 + 1, k % 9 / 3 + 1), time.iter().map(|t| t * k as f64).collect())
+        })
+        .collect();
     let big = trajectory(&time, &series, true);
     let start = Instant::now();
     let t = Trajectory::read(&big, "big.mat").expect("reads");
     let read = start.elapsed();
-    println!("results: {} MB, {} variables x {} instants read and indexed in {:.1} ms", big.len() / 1_000_000, t.variables.len(), t.len(), read.as_secs_f64() * 1e3);
+    println!(
+        "results: {} MB, {} variables x {} instants read and indexed in {:.1} ms",
+        big.len() / 1_000_000,
+        t.variables.len(),
+        t.len(),
+        read.as_secs_f64() * 1e3
+    );
     let mut g = c.benchmark_group("results");
     g.sample_size(10);
-    g.bench_function("read and index a 100 MB result", |b| b.iter(|| black_box(Trajectory::read(&big, "big.mat").expect("reads").variables.len())));
+    g.bench_function("read and index a 100 MB result", |b| {
+        b.iter(|| black_box(Trajectory::read(&big, "big.mat").expect("reads").variables.len()))
+    });
 
     // Poses: a 50-body tree, every body's frame_a over 10,000 steps.
     let bundle = Bundle::from_files("gen", [("tree.xml".to_string(), gen::tree_xml(50).into_bytes())]).expect("bundle");

@@ -30,8 +30,7 @@ fn axes(t: &[f64]) -> Vec<Axis> {
             let (amp, period) = if prismatic { (0.2, 4.0) } else { (1.0 + 0.2 * k as f64, 2.5 + 0.5 * k as f64) };
             let w = 2.0 * PI / period;
             // Link inertia (kg·m²) and gravity moment (N·m); the slide's mass (kg) and weight (N).
-            let (j, mgl, visc) =
-                if prismatic { (8.0, 8.0 * 9.81, 20.0) } else { (2.0 / (1.0 + k as f64), 30.0 / (1.0 + k as f64), 0.5) };
+            let (j, mgl, visc) = if prismatic { (8.0, 8.0 * 9.81, 20.0) } else { (2.0 / (1.0 + k as f64), 30.0 / (1.0 + k as f64), 0.5) };
             let (mut qd, mut qdd, mut tau) = (Vec::new(), Vec::new(), Vec::new());
             for &x in t {
                 let q = amp * (w * x).sin();
@@ -99,9 +98,7 @@ fn bench(c: &mut Criterion) {
         passing
     );
 
-    c.bench_function("sizing/6 axes, 10 s at 1 kHz, whole seed library", |b| {
-        b.iter(|| black_box(size_all(&t, &axes, &drives, &catalog)))
-    });
+    c.bench_function("sizing/6 axes, 10 s at 1 kHz, whole seed library", |b| b.iter(|| black_box(size_all(&t, &axes, &drives, &catalog))));
 }
 
 /// The service's whole path for one motion on a real mechanism: plan a 10 s motion of the
@@ -117,7 +114,9 @@ fn bench_full(c: &mut Criterion) {
     let mech = Mechanism::from_validated(&a.model, &a.validated).expect("mechanism");
     let axes = mplan::axes(&mech, &Default::default());
     let key = |f: f64| Keyframe {
-        target: Target::Joints { values: axes.iter().enumerate().map(|(i, ax)| (ax.name.clone(), ax.q0 + f * (0.3 + 0.1 * i as f64))).collect() },
+        target: Target::Joints {
+            values: axes.iter().enumerate().map(|(i, ax)| (ax.name.clone(), ax.q0 + f * (0.3 + 0.1 * i as f64))).collect(),
+        },
         interpolation: Interpolation::Ptp,
         duration: Some(2.0),
         dwell: Some(0.5),
@@ -138,7 +137,15 @@ fn bench_full(c: &mut Criterion) {
             .iter()
             .enumerate()
             .map(|(i, ax)| {
-                let load = AxisLoad { joint: &ax.name, kind: JointKind::Revolute, t: &s.t, qd: &s.qd[i], qdd: &s.qdd[i], tau: &tau[i], load_inertia: inertia[i] };
+                let load = AxisLoad {
+                    joint: &ax.name,
+                    kind: JointKind::Revolute,
+                    t: &s.t,
+                    qd: &s.qd[i],
+                    qdd: &s.qdd[i],
+                    tau: &tau[i],
+                    load_inertia: inertia[i],
+                };
                 sizing::size_drive(load, &motor, &gear, Some(&catalog), sizing::TOP).expect("sizes")
             })
             .collect();
@@ -149,7 +156,10 @@ fn bench_full(c: &mut Criterion) {
     for _ in 0..5 {
         black_box(full());
     }
-    println!("sizing (full path): plan + {n} samples + inverse dynamics + 6 drives against the seed library: {:.1} ms", start.elapsed().as_secs_f64() / 5.0 * 1e3);
+    println!(
+        "sizing (full path): plan + {n} samples + inverse dynamics + 6 drives against the seed library: {:.1} ms",
+        start.elapsed().as_secs_f64() / 5.0 * 1e3
+    );
     c.bench_function("sizing/full path, 6-DoF arm, 10 s at 1 kHz", |b| b.iter(|| black_box(full())));
 }
 

@@ -19,8 +19,6 @@ use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 #[path = "support/mod.rs"]
 mod support;
 
-
-
 /// A torus of `2 * nu * nv` triangles, radii 80 and 25 mm.
 fn torus(nu: u32, nv: u32) -> Mesh {
     let mut vertices = Vec::with_capacity((nu * nv) as usize);
@@ -84,12 +82,7 @@ fn bench(c: &mut Criterion) {
     let mesh = torus(400, 250);
     let binary = stl_out::write_binary(&mesh, "torus");
     let text = ascii(&mesh, "TORUS");
-    println!(
-        "generated: {} triangles; binary STL {} bytes, ASCII STL {} bytes",
-        mesh.triangles.len(),
-        binary.len(),
-        text.len()
-    );
+    println!("generated: {} triangles; binary STL {} bytes, ASCII STL {} bytes", mesh.triangles.len(), binary.len(), text.len());
 
     let mut g = c.benchmark_group("stl_read");
     g.sample_size(20);
@@ -99,8 +92,7 @@ fn bench(c: &mut Criterion) {
     g.bench_function("ascii_200k", |b| b.iter(|| stl::parse("torus.stl", &text, 0.001)));
     if let Some(dir) = support::fixtures() {
         let files = support::files_with_ext(&dir.join("stl"), "stl");
-        let mut loaded: Vec<(PathBuf, Vec<u8>)> =
-            files.into_iter().filter_map(|p| Some((p.clone(), std::fs::read(&p).ok()?))).collect();
+        let mut loaded: Vec<(PathBuf, Vec<u8>)> = files.into_iter().filter_map(|p| Some((p.clone(), std::fs::read(&p).ok()?))).collect();
         loaded.sort_by_key(|(_, b)| std::cmp::Reverse(b.len()));
         for (label, want_binary) in [("fixture_ascii_largest", false), ("fixture_binary_largest", true)] {
             if let Some((p, bytes)) = loaded.iter().find(|(_, b)| stl::is_binary(b) == want_binary) {

@@ -35,12 +35,7 @@ fn status_kb(field: &str) -> Option<u64> {
 }
 
 fn mesh_bytes(scene: &vrml::Scene) -> u64 {
-    scene
-        .nodes
-        .iter()
-        .flat_map(|n| &n.shapes)
-        .map(|s| (s.mesh.vertices.len() * 12 + s.mesh.triangles.len() * 12) as u64)
-        .sum()
+    scene.nodes.iter().flat_map(|n| &n.shapes).map(|s| (s.mesh.vertices.len() * 12 + s.mesh.triangles.len() * 12) as u64).sum()
 }
 
 /// Parses once and reports the peak memory of the parse.

@@ -17,8 +17,7 @@ use serde_json::Value;
 /// Body fields compared.
 const BODY_FIELDS: &[&str] = &["cad_name", "modelica_name", "mass", "cg_world", "inertia_cg"];
 /// Joint fields compared.
-const JOINT_FIELDS: &[&str] =
-    &["node_id", "cad_name", "modelica_name", "primitives", "axis_world", "base_body", "follower_body"];
+const JOINT_FIELDS: &[&str] = &["node_id", "cad_name", "modelica_name", "primitives", "axis_world", "base_body", "follower_body"];
 /// Tolerance on numbers.
 const EPS: f64 = 1e-9;
 
@@ -164,9 +163,7 @@ fn same(a: &Value, b: &Value) -> bool {
             _ => x == y,
         },
         (Value::Array(x), Value::Array(y)) => x.len() == y.len() && x.iter().zip(y).all(|(p, q)| same(p, q)),
-        (Value::Object(x), Value::Object(y)) => {
-            x.len() == y.len() && x.iter().all(|(k, v)| y.get(k).is_some_and(|w| same(v, w)))
-        }
+        (Value::Object(x), Value::Object(y)) => x.len() == y.len() && x.iter().all(|(k, v)| y.get(k).is_some_and(|w| same(v, w))),
         _ => a == b,
     }
 }
@@ -220,9 +217,6 @@ mod tests {
         assert_eq!(d.joints.changed.len(), 2);
         assert_eq!(d.joints.changed[0].changes[0].field, "axis_world");
         // Matched by Modelica name: the node ID is the change.
-        assert_eq!(
-            d.joints.changed[1].changes[0],
-            FieldChange { field: "node_id".into(), old: json!("j3"), new: json!("j9") }
-        );
+        assert_eq!(d.joints.changed[1].changes[0], FieldChange { field: "node_id".into(), old: json!("j3"), new: json!("j9") });
     }
 }

@@ -173,8 +173,7 @@ pub fn convert(data: &[u8]) {
         files.push((n, cube.clone()));
     }
     // Names that are unsafe paths or duplicates after normalisation: no meshes then.
-    let bundle = Bundle::from_files("fuzz", files.clone())
-        .or_else(|_| Bundle::from_files("fuzz", files.into_iter().take(1)));
+    let bundle = Bundle::from_files("fuzz", files.clone()).or_else(|_| Bundle::from_files("fuzz", files.into_iter().take(1)));
     let Ok(bundle) = bundle else { return };
     let opts = pipeline::Options { write_shapes: false, ..Default::default() };
     let out = match pipeline::convert(&bundle, &opts) {

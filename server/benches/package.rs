@@ -20,34 +20,51 @@ fn bench(c: &mut Criterion) {
         let hand = fx.join("stl/robotology+icub-models-generator/25e4033/left_hand_mk3");
         if hand.is_dir() {
             let bundle = Bundle::from_files("left_hand_mk3", gen::files_under(&hand)).expect("fixture bundle reads");
-        // The job's whole build: one conversion that plans the drive from its report, then
-        // the zip (deflate of the DXF text dominates).
-        let files: Vec<(String, Vec<u8>)> = bundle.paths().map(|p| (p.to_string(), bundle.get(p).unwrap_or_default().to_vec())).collect();
-        let zip = cad2mo_engine::pipeline::back::bundle::write_zip(&files).expect("zip");
-        let report = serde_json::to_value(&pipeline::convert(&bundle, &Options::default()).expect("converts").report).expect("json");
-        let joint = cad2mo_server::service::drives::drivable_joints(&report).first().expect("a drivable joint").name.clone();
-        let choice = |class: &str, params: &[(&str, f64)]| ClassChoice {
-            modelica_class: class.to_string(),
-            params: params.iter().map(|(n, v)| (n.to_string(), ParamValue::Real(*v))).collect(),
-            instance: String::new(),
-        };
-        let drive = ResolvedDrive {
-            joint,
-            motor: choice("cad2mo.Drives.Motors.DCPermanentMagnet", &[("R", 0.317), ("k", 0.0302)]),
-            gear: choice("Modelica.Mechanics.Rotational.Components.IdealGear", &[("ratio", 100.0)]),
-            controller: choice("cad2mo.Drives.Controllers.CascadePPI", &[("kp", 10.0)]),
-            reference: ReferenceSpec::Constant { value: 0.0 },
-        };
-        let built = build_package(&zip, "hand.zip", &ExportOptions::default(), std::slice::from_ref(&drive), &Default::default(), &Default::default(), &mut |_| {})
+            // The job's whole build: one conversion that plans the drive from its report, then
+            // the zip (deflate of the DXF text dominates).
+            let files: Vec<(String, Vec<u8>)> =
+                bundle.paths().map(|p| (p.to_string(), bundle.get(p).unwrap_or_default().to_vec())).collect();
+            let zip = cad2mo_engine::pipeline::back::bundle::write_zip(&files).expect("zip");
+            let report = serde_json::to_value(&pipeline::convert(&bundle, &Options::default()).expect("converts").report).expect("json");
+            let joint = cad2mo_server::service::drives::drivable_joints(&report).first().expect("a drivable joint").name.clone();
+            let choice = |class: &str, params: &[(&str, f64)]| ClassChoice {
+                modelica_class: class.to_string(),
+                params: params.iter().map(|(n, v)| (n.to_string(), ParamValue::Real(*v))).collect(),
+                instance: String::new(),
+            };
+            let drive = ResolvedDrive {
+                joint,
+                motor: choice("cad2mo.Drives.Motors.DCPermanentMagnet", &[("R", 0.317), ("k", 0.0302)]),
+                gear: choice("Modelica.Mechanics.Rotational.Components.IdealGear", &[("ratio", 100.0)]),
+                controller: choice("cad2mo.Drives.Controllers.CascadePPI", &[("kp", 10.0)]),
+                reference: ReferenceSpec::Constant { value: 0.0 },
+            };
+            let built = build_package(
+                &zip,
+                "hand.zip",
+                &ExportOptions::default(),
+                std::slice::from_ref(&drive),
+                &Default::default(),
+                &Default::default(),
+                &mut |_| {},
+            )
             .expect("builds");
-        assert!(String::from_utf8_lossy(&built.report_json).contains(&format!("\"active\": [\n      \"{}\"", drive.joint)));
-        g.throughput(Throughput::Bytes(zip.len() as u64));
-        g.bench_function("left_hand_package_with_a_drive", |b| {
-            b.iter(|| {
-                build_package(&zip, "hand.zip", &ExportOptions::default(), std::slice::from_ref(&drive), &Default::default(), &Default::default(), &mut |_| {})
+            assert!(String::from_utf8_lossy(&built.report_json).contains(&format!("\"active\": [\n      \"{}\"", drive.joint)));
+            g.throughput(Throughput::Bytes(zip.len() as u64));
+            g.bench_function("left_hand_package_with_a_drive", |b| {
+                b.iter(|| {
+                    build_package(
+                        &zip,
+                        "hand.zip",
+                        &ExportOptions::default(),
+                        std::slice::from_ref(&drive),
+                        &Default::default(),
+                        &Default::default(),
+                        &mut |_| {},
+                    )
                     .expect("builds")
-            })
-        });
+                })
+            });
         }
     }
     g.finish();

@@ -54,8 +54,7 @@ pub async fn start_jobs(
 
 impl App {
     pub async fn build(settings: Settings) -> anyhow::Result<App> {
-        std::fs::create_dir_all(&settings.data_dir)
-            .with_context(|| format!("creating data folder {}", settings.data_dir.display()))?;
+        std::fs::create_dir_all(&settings.data_dir).with_context(|| format!("creating data folder {}", settings.data_dir.display()))?;
         let store = Store::open_with(&settings.database_url, settings.db_pool_size).await.context("opening the database")?;
         crate::store::library::seed_if_empty(&store).await.context("seeding the motor library")?;
         let blobs = Blobs::open(&settings.blobs, &settings.data_dir).await.context("opening the file store")?;
@@ -66,8 +65,17 @@ impl App {
         let jobs = start_jobs(store.clone(), blobs.clone(), &settings, live).await.context("starting the conversion workers")?;
         let addr = listener.local_addr().unwrap_or(settings.bind);
         let checks = Arc::new(tokio::sync::Semaphore::new(settings.max_checks.max(1)));
-        let state =
-            AppState { settings: Arc::new(settings), store, blobs, jobs, checks, addr, kinematics: Default::default(), relay, collisions: Default::default() };
+        let state = AppState {
+            settings: Arc::new(settings),
+            store,
+            blobs,
+            jobs,
+            checks,
+            addr,
+            kinematics: Default::default(),
+            relay,
+            collisions: Default::default(),
+        };
         Ok(App { listener, state })
     }
 
@@ -82,8 +90,7 @@ impl App {
     /// Serves until Ctrl-C (or the task is dropped), then halts the workers: running jobs stay
     /// `running` and the next start redoes them.
     pub async fn run_until_stopped(self) -> anyhow::Result<()> {
-        let router = crate::api::router(self.state.clone())
-            .layer(tower_http::trace::TraceLayer::new_for_http());
+        let router = crate::api::router(self.state.clone()).layer(tower_http::trace::TraceLayer::new_for_http());
         let served = axum::serve(self.listener, router)
             .with_graceful_shutdown(async {
                 let _ = tokio::signal::ctrl_c().await;

@@ -110,13 +110,8 @@ pub struct Settings {
 
 impl Settings {
     pub fn from_args(a: ServeArgs) -> Settings {
-        let database_url = a
-            .database_url
-            .unwrap_or_else(|| format!("sqlite://{}?mode=rwc", a.data_dir.join("cad2mo.db").display()));
-        let workers = a
-            .workers
-            .filter(|w| *w > 0)
-            .unwrap_or_else(|| std::thread::available_parallelism().map(|n| n.get()).unwrap_or(2));
+        let database_url = a.database_url.unwrap_or_else(|| format!("sqlite://{}?mode=rwc", a.data_dir.join("cad2mo.db").display()));
+        let workers = a.workers.filter(|w| *w > 0).unwrap_or_else(|| std::thread::available_parallelism().map(|n| n.get()).unwrap_or(2));
         Settings {
             bind: a.bind,
             database_url,

@@ -49,12 +49,12 @@ use tokio::sync::{mpsc, watch, Semaphore};
 use tokio::task::{JoinHandle, JoinSet};
 use tracing::Instrument;
 
-use cad2mo_engine::collision::{CacheStats, MemoryShapeCache};
 use crate::service::export::{self, BuildStage, BuildStep, ExportOptions};
-use cad2mo_engine::pipeline::observe::Stage;
 use crate::store::blobs::Blobs;
 use crate::store::models::{self, ClaimedJob, Claimer, JobOutputs};
 use crate::store::{Engine, Store, StoreError};
+use cad2mo_engine::collision::{CacheStats, MemoryShapeCache};
+use cad2mo_engine::pipeline::observe::Stage;
 
 /// Claims of one job before it is given up (see the module doc): a job claimed for the
 /// `MAX_ATTEMPTS + 1`-th time fails without running.
@@ -375,11 +375,8 @@ async fn run(ctx: &Ctx, job: ClaimedJob) {
     for attempt in 1..=3 {
         let recorded = match &result {
             Ok(out) => {
-                let outputs = JobOutputs {
-                    package_sha256: &out.package_sha256,
-                    report_sha256: &out.report_sha256,
-                    summary_json: &out.summary_json,
-                };
+                let outputs =
+                    JobOutputs { package_sha256: &out.package_sha256, report_sha256: &out.report_sha256, summary_json: &out.summary_json };
                 models::finish_succeeded(&ctx.store.pool, &job, &outputs).await
             }
             Err(e) => models::finish_failed(&ctx.store.pool, &job, e).await,
@@ -505,7 +502,8 @@ async fn convert(ctx: &Ctx, job: &ClaimedJob) -> Result<Stored, JobError> {
         }),
         _ => None,
     };
-    let collision_edits = crate::store::collision::edits(&ctx.store, &job.model_id).await?.into_iter().map(|(a, b, x)| ((a, b), x)).collect();
+    let collision_edits =
+        crate::store::collision::edits(&ctx.store, &job.model_id).await?.into_iter().map(|(a, b, x)| ((a, b), x)).collect();
     let shape_cache: Arc<dyn cad2mo_engine::collision::ShapeCache> = ctx.shapes.clone();
     let context = export::Context { name_hints: hints, live, collision_edits, shape_cache: Some(shape_cache) };
     let blobs = ctx.blobs.clone();
@@ -516,10 +514,10 @@ async fn convert(ctx: &Ctx, job: &ClaimedJob) -> Result<Stored, JobError> {
         span.in_scope(|| {
             let options: ExportOptions = serde_json::from_str(&source.options_json)
                 .map_err(|e| JobError::Internal(anyhow::anyhow!("stored options are corrupt: {e}")))?;
-            let bundle =
-                blobs.get(&source.bundle_sha256).map_err(|e| JobError::Internal(e.into()))?.ok_or_else(|| {
-                    JobError::Internal(anyhow::anyhow!("bundle blob {} is missing", source.bundle_sha256))
-                })?;
+            let bundle = blobs
+                .get(&source.bundle_sha256)
+                .map_err(|e| JobError::Internal(e.into()))?
+                .ok_or_else(|| JobError::Internal(anyhow::anyhow!("bundle blob {} is missing", source.bundle_sha256)))?;
             let mut last = 0.0;
             let built = export::build_package(&bundle, &source.bundle_name, &options, &drives, &motions, &context, &mut |step| {
                 let p = JobProgress::at(step);
@@ -553,10 +551,8 @@ mod tests {
         assert_eq!((STAGES[PACKAGE].0, STAGES[STORING].0), ("package", "storing"));
         assert_eq!(STAGES.iter().map(|s| s.2).sum::<f64>(), 100.0);
         // Each step's fraction is at least the one before, through every stage and within it.
-        let mut steps: Vec<BuildStep> = Stage::ALL
-            .iter()
-            .flat_map(|&s| (0..=3).map(move |done| BuildStep { stage: BuildStage::Convert(s), done, total: 3 }))
-            .collect();
+        let mut steps: Vec<BuildStep> =
+            Stage::ALL.iter().flat_map(|&s| (0..=3).map(move |done| BuildStep { stage: BuildStage::Convert(s), done, total: 3 })).collect();
         steps.extend((0..=2).map(|done| BuildStep { stage: BuildStage::Package, done, total: 2 }));
         let mut fractions: Vec<f64> = steps.into_iter().map(|s| JobProgress::at(s).fraction).collect();
         fractions.push(JobProgress::storing().fraction);

@@ -16,9 +16,9 @@ use serde::Serialize;
 use tokio::net::UdpSocket;
 use tokio::sync::broadcast;
 
-use cad2mo_engine::live::{self, Accept, Drop, RunStats};
 use crate::store::blobs::Blobs;
 use crate::store::Store;
+use cad2mo_engine::live::{self, Accept, Drop, RunStats};
 
 pub const MAX_VERSIONS: usize = 256;
 pub const MAX_RUNS: usize = 8;
@@ -244,11 +244,8 @@ impl Relay {
         };
         if stale {
             if let Ok(hashes) = crate::store::tokens::live_hashes(&self.inner.store).await {
-                let keys: HashMap<[u8; 8], [u8; 32]> = hashes
-                    .iter()
-                    .filter_map(|h| <[u8; 32]>::try_from(hex::decode(h).ok()?).ok())
-                    .map(|k| (live::key_id(&k), k))
-                    .collect();
+                let keys: HashMap<[u8; 8], [u8; 32]> =
+                    hashes.iter().filter_map(|h| <[u8; 32]>::try_from(hex::decode(h).ok()?).ok()).map(|k| (live::key_id(&k), k)).collect();
                 let mut st = self.lock();
                 st.keys = keys;
                 st.keys_read = Some(Instant::now());
@@ -373,12 +370,7 @@ impl Relay {
 /// seen one without subscribers is forgotten.
 fn channel(st: &mut State, key: (String, u32)) -> &mut Channel {
     if !st.channels.contains_key(&key) && st.channels.len() >= MAX_VERSIONS {
-        let idle = st
-            .channels
-            .iter()
-            .filter(|(_, c)| c.tx.receiver_count() == 0)
-            .min_by_key(|(_, c)| c.seen)
-            .map(|(k, _)| k.clone());
+        let idle = st.channels.iter().filter(|(_, c)| c.tx.receiver_count() == 0).min_by_key(|(_, c)| c.seen).map(|(k, _)| k.clone());
         if let Some(k) = idle {
             st.channels.remove(&k);
         }

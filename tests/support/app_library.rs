@@ -69,23 +69,11 @@ impl TestApp {
 
     /// `POST /api/library/import` with an XML body.
     pub async fn import_library(&self, xml: impl Into<reqwest::Body>) -> reqwest::Response {
-        self.client
-            .post(self.url("/api/library/import"))
-            .header("content-type", "application/xml")
-            .body(xml)
-            .send()
-            .await
-            .expect("request")
+        self.client.post(self.url("/api/library/import")).header("content-type", "application/xml").body(xml).send().await.expect("request")
     }
 
     /// A request with any method, content type and raw body (malformed JSON and the like).
     pub async fn library_raw(&self, method: reqwest::Method, path: &str, content_type: &str, body: &'static str) -> reqwest::Response {
-        self.client
-            .request(method, self.url(path))
-            .header("content-type", content_type)
-            .body(body)
-            .send()
-            .await
-            .expect("request")
+        self.client.request(method, self.url(path)).header("content-type", content_type).body(body).send().await.expect("request")
     }
 }

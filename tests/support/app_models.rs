@@ -31,22 +31,11 @@ impl TestApp {
 
     /// `POST /api/models/{id}/versions` with any form.
     pub async fn post_version_form(&self, model_id: &str, form: Form) -> Response {
-        self.client
-            .post(self.url(&format!("/api/models/{model_id}/versions")))
-            .multipart(form)
-            .send()
-            .await
-            .expect("request")
+        self.client.post(self.url(&format!("/api/models/{model_id}/versions"))).multipart(form).send().await.expect("request")
     }
 
     /// `POST /api/models/{id}/versions`: a new version of a model.
-    pub async fn upload_version(
-        &self,
-        model_id: &str,
-        bundle: Vec<u8>,
-        file_name: &str,
-        fields: &[(&str, &str)],
-    ) -> Response {
+    pub async fn upload_version(&self, model_id: &str, bundle: Vec<u8>, file_name: &str, fields: &[(&str, &str)]) -> Response {
         self.post_version_form(model_id, upload_form(bundle, file_name, fields)).await
     }
 
@@ -56,12 +45,7 @@ impl TestApp {
     }
 
     /// Uploads a new version, expects 202 and returns `(model_id, version, job_id)`.
-    pub async fn upload_version_ok(
-        &self,
-        model_id: &str,
-        bundle: Vec<u8>,
-        fields: &[(&str, &str)],
-    ) -> (String, i64, String) {
+    pub async fn upload_version_ok(&self, model_id: &str, bundle: Vec<u8>, fields: &[(&str, &str)]) -> (String, i64, String) {
         accepted(self.upload_version(model_id, bundle, "bundle.zip", fields).await).await
     }
 
@@ -112,11 +96,7 @@ impl TestApp {
 
     /// `DELETE /api/models/{id}/versions/{v}`.
     pub async fn delete_version(&self, model_id: &str, version: i64) -> Response {
-        self.client
-            .delete(self.url(&format!("/api/models/{model_id}/versions/{version}")))
-            .send()
-            .await
-            .expect("request")
+        self.client.delete(self.url(&format!("/api/models/{model_id}/versions/{version}"))).send().await.expect("request")
     }
 
     /// `GET /api/models/{id}/versions/{v}/package.zip`.

@@ -36,11 +36,7 @@ pub fn nearest_rotation(m: &Matrix3<f64>) -> Matrix3<f64> {
 
 /// Parses `Mechanics.mo` from the output, walks it, and compares every frame the report maps to
 /// a connector, and every body's CG, with `frames` / `cgs` (by node ID).
-pub fn fk_check(
-    out: &Output,
-    frames: &BTreeMap<String, TruthFrame>,
-    cgs: &BTreeMap<String, Vector3<f64>>,
-) -> Result<FkStats, String> {
+pub fn fk_check(out: &Output, frames: &BTreeMap<String, TruthFrame>, cgs: &BTreeMap<String, Vector3<f64>>) -> Result<FkStats, String> {
     fk_check_with_inertia(out, frames, cgs, &BTreeMap::new())
 }
 

@@ -20,9 +20,7 @@ pub fn shared_dir() -> Option<PathBuf> {
 /// The real CAD exports: `$CAD2MO_FIXTURES` or `../shared/fixtures`. `None` (with a printed
 /// notice) when absent, so tests can skip.
 pub fn fixtures_dir(test: &str) -> Option<PathBuf> {
-    let d = std::env::var_os("CAD2MO_FIXTURES")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| workspace_root().join("../shared/fixtures"));
+    let d = std::env::var_os("CAD2MO_FIXTURES").map(PathBuf::from).unwrap_or_else(|| workspace_root().join("../shared/fixtures"));
     if d.is_dir() {
         Some(d)
     } else {
@@ -53,10 +51,7 @@ pub fn write_output(out: &Output, dir: &Path) {
 
 /// The text of one output file.
 pub fn file_text<'a>(out: &'a Output, suffix: &str) -> Option<&'a str> {
-    out.files
-        .iter()
-        .find(|(p, _)| p.ends_with(suffix))
-        .and_then(|(_, b)| std::str::from_utf8(b).ok())
+    out.files.iter().find(|(p, _)| p.ends_with(suffix)).and_then(|(_, b)| std::str::from_utf8(b).ok())
 }
 
 /// Runs `../shared/tools/msl-check` on `dir`. `None` (with a notice) when the tool is absent;
@@ -74,9 +69,8 @@ pub fn msl_check(dir: &Path) -> Option<Result<String, String>> {
 
 /// Every sub-directory of `dir`, sorted.
 pub fn sorted_dirs(dir: &Path) -> Vec<PathBuf> {
-    let mut v: Vec<PathBuf> = std::fs::read_dir(dir)
-        .map(|rd| rd.filter_map(|e| e.ok()).map(|e| e.path()).filter(|p| p.is_dir()).collect())
-        .unwrap_or_default();
+    let mut v: Vec<PathBuf> =
+        std::fs::read_dir(dir).map(|rd| rd.filter_map(|e| e.ok()).map(|e| e.path()).filter(|p| p.is_dir()).collect()).unwrap_or_default();
     v.sort();
     v
 }
@@ -109,9 +103,10 @@ pub fn files_with_ext(dir: &Path, exts: &[&str]) -> Vec<PathBuf> {
 pub fn modelica_syntax_errors(dir: &Path) -> Option<Vec<String>> {
     let candidates = [
         PathBuf::from("rumoca-lint"),
-        std::env::var_os("CARGO_HOME").map(PathBuf::from).unwrap_or_else(|| {
-            PathBuf::from(std::env::var_os("HOME").unwrap_or_default()).join(".cargo")
-        }).join("bin/rumoca-lint"),
+        std::env::var_os("CARGO_HOME")
+            .map(PathBuf::from)
+            .unwrap_or_else(|| PathBuf::from(std::env::var_os("HOME").unwrap_or_default()).join(".cargo"))
+            .join("bin/rumoca-lint"),
     ];
     for tool in candidates {
         let Ok(out) = Command::new(&tool).args(["-l", "error", "-f", "compact"]).arg(dir).output() else { continue };
@@ -174,4 +169,3 @@ pub fn urdf_bundle(urdf: &Path, set: &Path) -> cad2mo_engine::pipeline::front::b
     }
     cad2mo_engine::pipeline::front::bundle::Bundle::from_files("urdf-set", files).expect("bundle")
 }
-

@@ -58,7 +58,11 @@ fn own_ports(files: &[(String, Vec<u8>)]) -> BTreeMap<(String, String), Pt> {
         let lines: Vec<&str> = text.lines().collect();
         for (i, line) in lines.iter().enumerate().skip(1) {
             let t = line.trim_start();
-            let Some(name) = ["model ", "block ", "connector "].iter().find_map(|k| t.strip_prefix(k)).and_then(|r| r.split_whitespace().next()) else { continue };
+            let Some(name) =
+                ["model ", "block ", "connector "].iter().find_map(|k| t.strip_prefix(k)).and_then(|r| r.split_whitespace().next())
+            else {
+                continue;
+            };
             if let Some(end) = lines[i..].iter().position(|l| l.trim() == format!("end {name};")) {
                 read_class(&format!("{class}.{name}"), &lines[i..i + end].join("\n"));
             }
@@ -197,7 +201,6 @@ pub fn check_files(label: &str, files: &[(String, Vec<u8>)]) -> Vec<String> {
     errors
 }
 
-
 /// Classes of the package whose header has no description string (`model X "..."`).
 pub fn undescribed_classes(out: &Output) -> Vec<String> {
     let mut missing = Vec::new();
@@ -207,9 +210,15 @@ pub fn undescribed_classes(out: &Output) -> Vec<String> {
         }
         for (i, line) in String::from_utf8_lossy(bytes).lines().enumerate() {
             let words: Vec<&str> = line.split_whitespace().collect();
-            let Some(k) = words.iter().position(|w| matches!(*w, "model" | "block" | "package" | "connector" | "function" | "record" | "class")) else { continue };
+            let Some(k) =
+                words.iter().position(|w| matches!(*w, "model" | "block" | "package" | "connector" | "function" | "record" | "class"))
+            else {
+                continue;
+            };
             // A class header: only prefixes before the keyword, a name after it.
-            let prefixes_only = words[..k].iter().all(|w| matches!(*w, "partial" | "encapsulated" | "impure" | "pure" | "operator" | "expandable" | "replaceable"));
+            let prefixes_only = words[..k]
+                .iter()
+                .all(|w| matches!(*w, "partial" | "encapsulated" | "impure" | "pure" | "operator" | "expandable" | "replaceable"));
             let Some(name) = words.get(k + 1) else { continue };
             if !prefixes_only || name.starts_with('"') || *name == "=" || words.get(k + 2) == Some(&"=") {
                 continue;

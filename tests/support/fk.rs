@@ -142,12 +142,8 @@ impl Element {
     pub fn transform(&self) -> Option<Isometry3<f64>> {
         match self {
             Element::Rigid(t) => Some(*t),
-            Element::Revolute { n, phi } => {
-                Some(Isometry3::from_parts(Translation3::identity(), UnitQuaternion::from_axis_angle(n, *phi)))
-            }
-            Element::Prismatic { n, s } => {
-                Some(Isometry3::from_parts(Translation3::from(n.into_inner() * *s), UnitQuaternion::identity()))
-            }
+            Element::Revolute { n, phi } => Some(Isometry3::from_parts(Translation3::identity(), UnitQuaternion::from_axis_angle(n, *phi))),
+            Element::Prismatic { n, s } => Some(Isometry3::from_parts(Translation3::from(n.into_inner() * *s), UnitQuaternion::identity())),
             Element::Spherical => Some(Isometry3::identity()),
             Element::World | Element::Leaf | Element::Constraint(_) => None,
         }
@@ -165,9 +161,7 @@ impl Element {
 
 fn vec3_param(c: &Component, key: &str, default: Option<[f64; 3]>) -> Result<Vector3<f64>, String> {
     match c.params.get(key) {
-        None => default
-            .map(Vector3::from)
-            .ok_or_else(|| format!("component `{}` ({}): missing parameter `{key}`", c.name, c.class)),
+        None => default.map(Vector3::from).ok_or_else(|| format!("component `{}` ({}): missing parameter `{key}`", c.name, c.class)),
         Some(Value::Vec(v)) if v.len() == 3 && v.iter().all(|x| x.is_finite()) => Ok(Vector3::new(v[0], v[1], v[2])),
         Some(other) => Err(format!("component `{}` ({}): `{key}` = {other} is not a finite 3-vector", c.name, c.class)),
     }
@@ -463,68 +457,72 @@ pub fn forward_kinematics_tol(model: &Model, pos_tol: f64, angle_tol: f64) -> Re
     let mut queue = VecDeque::from([seed]);
     let mut used = vec![false; links.len()];
     loop {
-    while let Some(c) = queue.pop_front() {
-        let pose_c = poses.connectors[&c];
-        for &i in adjacency.get(c.as_str()).map(Vec::as_slice).unwrap_or_default() {
-            if std::mem::replace(&mut used[i], true) {
-                continue;
-            }
-            let l = &links[i];
-            let (other, pose) = if l.a == c { (&l.b, pose_c * l.t) } else { (&l.a, pose_c * l.t.inverse()) };
-            match poses.connectors.get(other) {
-                None => {
-                    poses.connectors.insert(other.clone(), pose);
-                    source.insert(other.clone(), format!("{} from {c}", l.what));
-                    queue.push_back(other.clone());
+        while let Some(c) = queue.pop_front() {
+            let pose_c = poses.connectors[&c];
+            for &i in adjacency.get(c.as_str()).map(Vec::as_slice).unwrap_or_default() {
+                if std::mem::replace(&mut used[i], true) {
+                    continue;
                 }
-                Some(first) => {
-                    poses.loop_checks += 1;
-                    let (dp, da) = pose_error(first, &pose);
-                    if !(dp <= pos_tol && da <= angle_tol) {
-                        return Err(format!(
-                            "loop closure mismatch between {c} and {other} across {}: {other} was placed at {:?} \
+                let l = &links[i];
+                let (other, pose) = if l.a == c { (&l.b, pose_c * l.t) } else { (&l.a, pose_c * l.t.inverse()) };
+                match poses.connectors.get(other) {
+                    None => {
+                        poses.connectors.insert(other.clone(), pose);
+                        source.insert(other.clone(), format!("{} from {c}", l.what));
+                        queue.push_back(other.clone());
+                    }
+                    Some(first) => {
+                        poses.loop_checks += 1;
+                        let (dp, da) = pose_error(first, &pose);
+                        if !(dp <= pos_tol && da <= angle_tol) {
+                            return Err(format!(
+                                "loop closure mismatch between {c} and {other} across {}: {other} was placed at {:?} \
                              by {}, but {c} puts it at {:?}; position differs by {dp:e} m, rotation by {da:e} rad",
-                            l.what,
-                            first.translation.vector.as_slice(),
-                            source[other],
-                            pose.translation.vector.as_slice(),
-                        ));
+                                l.what,
+                                first.translation.vector.as_slice(),
+                                source[other],
+                                pose.translation.vector.as_slice(),
+                            ));
+                        }
                     }
                 }
             }
         }
-    }
-    // A component with no path to the world starts where its root body's initial conditions
-    // put it: `r_0(start=...)` and `angles_start` (Cardan sequence_start, default {1,2,3}).
-    let Some((name, pose)) = model.components.iter().filter(|c| kinds.get(c.name.as_str()).is_some_and(|k| *k == Element::Leaf) && c.class.ends_with("Parts.Body")).find_map(|c| {
-        let conn = format!("{}.frame_a", c.name);
-        if poses.connectors.contains_key(&conn) {
-            return None;
-        }
-        let r = vec3_param(c, "r_0.start", None).ok()?;
-        let angles = vec3_param(c, "angles_start", Some([0.0; 3])).ok()?;
-        let seq = vec3_param(c, "sequence_start", Some([1.0, 2.0, 3.0])).ok()?;
-        let mut rot = UnitQuaternion::identity();
-        for k in 0..3 {
-            let axis = match seq[k] as i64 {
-                1 => Vector3::x_axis(),
-                2 => Vector3::y_axis(),
-                _ => Vector3::z_axis(),
-            };
-            rot *= UnitQuaternion::from_axis_angle(&axis, angles[k]);
-        }
-        Some((conn, Isometry3::from_parts(r.into(), rot)))
-    }) else {
-        break;
-    };
-    poses.connectors.insert(name.clone(), pose);
-    source.insert(name.clone(), "its initial conditions r_0, angles_start".to_string());
-    queue.push_back(name);
+        // A component with no path to the world starts where its root body's initial conditions
+        // put it: `r_0(start=...)` and `angles_start` (Cardan sequence_start, default {1,2,3}).
+        let Some((name, pose)) = model
+            .components
+            .iter()
+            .filter(|c| kinds.get(c.name.as_str()).is_some_and(|k| *k == Element::Leaf) && c.class.ends_with("Parts.Body"))
+            .find_map(|c| {
+                let conn = format!("{}.frame_a", c.name);
+                if poses.connectors.contains_key(&conn) {
+                    return None;
+                }
+                let r = vec3_param(c, "r_0.start", None).ok()?;
+                let angles = vec3_param(c, "angles_start", Some([0.0; 3])).ok()?;
+                let seq = vec3_param(c, "sequence_start", Some([1.0, 2.0, 3.0])).ok()?;
+                let mut rot = UnitQuaternion::identity();
+                for k in 0..3 {
+                    let axis = match seq[k] as i64 {
+                        1 => Vector3::x_axis(),
+                        2 => Vector3::y_axis(),
+                        _ => Vector3::z_axis(),
+                    };
+                    rot *= UnitQuaternion::from_axis_angle(&axis, angles[k]);
+                }
+                Some((conn, Isometry3::from_parts(r.into(), rot)))
+            })
+        else {
+            break;
+        };
+        poses.connectors.insert(name.clone(), pose);
+        source.insert(name.clone(), "its initial conditions r_0, angles_start".to_string());
+        queue.push_back(name);
     }
 
     for (name, constraint) in constraints {
-        let (Some(a), Some(b)) =
-            (poses.connectors.get(&format!("{name}.frame_a")), poses.connectors.get(&format!("{name}.frame_b")))
+        let (Some(a), Some(b)) = (poses.connectors.get(&format!("{name}.frame_a")), poses.connectors.get(&format!("{name}.frame_b")))
         else {
             continue;
         };
@@ -581,9 +579,7 @@ pub(crate) mod tests {
     }
 
     pub(crate) fn world() -> String {
-        format!(
-            "  inner {MB}.World world(n={{0.0, -1.0, 0.0}}, g=9.81) \"World frame: the CAD assembly's frame\"\n    {PLACE};\n"
-        )
+        format!("  inner {MB}.World world(n={{0.0, -1.0, 0.0}}, g=9.81) \"World frame: the CAD assembly's frame\"\n    {PLACE};\n")
     }
 
     pub(crate) fn body(name: &str, r_cm: [f64; 3], i: [f64; 6]) -> String {
@@ -600,10 +596,7 @@ pub(crate) mod tests {
     }
 
     pub(crate) fn translation(name: &str, r: [f64; 3]) -> String {
-        format!(
-            "  {MB}.Parts.FixedTranslation {name}(r={}, animation=false)\n    \"Frame of {name}\" {PLACE};\n",
-            v3(r)
-        )
+        format!("  {MB}.Parts.FixedTranslation {name}(r={}, animation=false)\n    \"Frame of {name}\" {PLACE};\n", v3(r))
     }
 
     pub(crate) fn rotation(name: &str, r: [f64; 3], nx: [f64; 3], ny: [f64; 3]) -> String {
@@ -810,12 +803,7 @@ pub(crate) mod tests {
                 prismatic("P", [0.0, 0.0, -1.0], 2.0),
                 body("b", [0.0, 0.0, 0.0], [0.001, 0.001, 0.001, 0.0, 0.0, 0.0]),
             ],
-            &[
-                ("world.frame_b", "J.frame_b"),
-                ("J.frame_a", "F.frame_b"),
-                ("F.frame_a", "P.frame_b"),
-                ("P.frame_a", "b.frame_a"),
-            ],
+            &[("world.frame_b", "J.frame_b"), ("J.frame_a", "F.frame_b"), ("F.frame_a", "P.frame_b"), ("P.frame_a", "b.frame_a")],
         );
         let (_, poses) = fk_ok(&text);
         assert_pose(&poses, "J.frame_a", [0.0; 3], rz(-0.5));
@@ -832,18 +820,14 @@ pub(crate) mod tests {
     #[test]
     fn fixed_rotation_follows_from_nxy() {
         // n_x, n_y neither unit nor orthogonal: e_x = unit(n_x), e_z = unit(n_x x n_y), e_y = e_z x e_x.
-        let text = mechanics(
-            &[world(), rotation("F", [0.0, 0.0, 0.0], [2.0, 0.0, 0.0], [1.0, 1.0, 0.0])],
-            &[("world.frame_b", "F.frame_a")],
-        );
+        let text =
+            mechanics(&[world(), rotation("F", [0.0, 0.0, 0.0], [2.0, 0.0, 0.0], [1.0, 1.0, 0.0])], &[("world.frame_b", "F.frame_a")]);
         let (_, poses) = fk_ok(&text);
         assert_pose(&poses, "F.frame_b", [0.0; 3], Matrix3::identity());
 
         // 120 degrees about (1,1,1)/sqrt 3: x -> y, y -> z, z -> x.
-        let text = mechanics(
-            &[world(), rotation("F", [0.5, -2.5e-5, 1e-7], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0])],
-            &[("world.frame_b", "F.frame_a")],
-        );
+        let text =
+            mechanics(&[world(), rotation("F", [0.5, -2.5e-5, 1e-7], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0])], &[("world.frame_b", "F.frame_a")]);
         let (_, poses) = fk_ok(&text);
         let perm = Matrix3::new(0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0);
         assert_pose(&poses, "F.frame_b", [0.5, -2.5e-5, 1e-7], perm);
@@ -863,8 +847,7 @@ pub(crate) mod tests {
         let along = (b * b - c * c + l * l) / (2.0 * l);
         let h = (b * b - along * along).sqrt();
         let (dx, dy) = (cx + (along * ex + h * ey) / l, cy + (along * ey - h * ex) / l);
-        let (dx, dy) =
-            if dy >= 0.0 { (dx, dy) } else { (cx + (along * ex - h * ey) / l, cy + (along * ey + h * ex) / l) };
+        let (dx, dy) = if dy >= 0.0 { (dx, dy) } else { (cx + (along * ex - h * ey) / l, cy + (along * ey + h * ex) / l) };
         let t3 = (dy - cy).atan2(dx - cx);
         let t4 = dy.atan2(dx - d);
         let mut decls = vec![
@@ -1068,12 +1051,7 @@ pub(crate) mod tests {
                 rotation("B", r2, nx, [0.0, 1.0, 0.0]),
                 body("b", [0.0; 3], [0.001, 0.001, 0.001, 0.0, 0.0, 0.0]),
             ],
-            &[
-                ("world.frame_b", "A.frame_a"),
-                ("world.frame_b", "B.frame_a"),
-                ("A.frame_b", "b.frame_a"),
-                ("B.frame_b", "b.frame_a"),
-            ],
+            &[("world.frame_b", "A.frame_a"), ("world.frame_b", "B.frame_a"), ("A.frame_b", "b.frame_a"), ("B.frame_b", "b.frame_a")],
         )
     }
 
@@ -1128,10 +1106,7 @@ pub(crate) mod tests {
     fn model_errors() {
         let base = |extra: String, connects: &[(&str, &str)]| mechanics(&[world(), extra], connects);
 
-        let e = fk_err(&base(
-            format!("  Modelica.Mechanics.MultiBody.Joints.Revolute r(n={{0.0, 0.0, 1.0}}) {PLACE};\n"),
-            &[],
-        ));
+        let e = fk_err(&base(format!("  Modelica.Mechanics.MultiBody.Joints.Revolute r(n={{0.0, 0.0, 1.0}}) {PLACE};\n"), &[]));
         assert!(e.contains("unknown class `Modelica.Mechanics.MultiBody.Joints.Revolute`") && e.contains("`r`"), "{e}");
 
         let e = fk_err(&base(body("b", [0.0; 3], [0.001; 6]), &[("world.frame_b", "c.frame_a")]));
@@ -1150,9 +1125,7 @@ pub(crate) mod tests {
         assert!(e.contains("not a finite 3-vector"), "{e}");
 
         let e = fk_err(&base(
-            format!(
-                "  {MB}.Parts.FixedRotation t(rotationType={MB}.Types.RotationTypes.PlanarRotationSequence) {PLACE};\n"
-            ),
+            format!("  {MB}.Parts.FixedRotation t(rotationType={MB}.Types.RotationTypes.PlanarRotationSequence) {PLACE};\n"),
             &[],
         ));
         assert!(e.contains("PlanarRotationSequence is not supported"), "{e}");

@@ -28,7 +28,15 @@ pub fn binary() -> PathBuf {
     // (ring: CARGO_MANIFEST_DIR), and a change would rebuild the service here and again after.
     for (k, _) in std::env::vars_os() {
         let k = k.to_string_lossy().to_string();
-        let set_by_cargo = ["CARGO_MANIFEST_", "CARGO_PKG_", "CARGO_CRATE_", "CARGO_BIN_", "CARGO_PRIMARY_", "CARGO_TARGET_TMPDIR", "CARGO_RUSTC_CURRENT_DIR"];
+        let set_by_cargo = [
+            "CARGO_MANIFEST_",
+            "CARGO_PKG_",
+            "CARGO_CRATE_",
+            "CARGO_BIN_",
+            "CARGO_PRIMARY_",
+            "CARGO_TARGET_TMPDIR",
+            "CARGO_RUSTC_CURRENT_DIR",
+        ];
         if set_by_cargo.iter().any(|p| k.starts_with(p)) {
             build.env_remove(&k);
         }
@@ -172,7 +180,11 @@ impl Cluster {
                 if client.get(format!("{address}/api/health")).send().await.is_ok_and(|r| r.status().is_success()) {
                     return Instance { name: format!("instance{i}"), address, log, child: Some(child) };
                 }
-                assert!(Instant::now() < deadline, "instance {i} did not answer in 60 s:\n{}", std::fs::read_to_string(&log).unwrap_or_default());
+                assert!(
+                    Instant::now() < deadline,
+                    "instance {i} did not answer in 60 s:\n{}",
+                    std::fs::read_to_string(&log).unwrap_or_default()
+                );
                 tokio::time::sleep(Duration::from_millis(50)).await;
             }
         }

@@ -25,5 +25,5 @@ pub mod modelica;
 pub mod s3;
 pub mod structure;
 pub mod truth;
-pub mod xml2_truth;
 pub mod urdf_truth;
+pub mod xml2_truth;

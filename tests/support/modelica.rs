@@ -256,19 +256,8 @@ fn tokenize(text: &str) -> Result<Vec<Token>, String> {
 // Parser
 
 /// Prefixes a declaration may carry; they do not change what we read.
-const PREFIXES: &[&str] = &[
-    "inner",
-    "outer",
-    "parameter",
-    "constant",
-    "final",
-    "discrete",
-    "input",
-    "output",
-    "flow",
-    "stream",
-    "replaceable",
-];
+const PREFIXES: &[&str] =
+    &["inner", "outer", "parameter", "constant", "final", "discrete", "input", "output", "flow", "stream", "replaceable"];
 
 struct Parser {
     toks: Vec<Token>,
@@ -501,9 +490,7 @@ impl Parser {
                         let at = self.line();
                         match self.expr()? {
                             Value::Num(x) => items.push(x),
-                            other => {
-                                return Err(format!("line {at}: only numbers are supported in an array, found {other}"))
-                            }
+                            other => return Err(format!("line {at}: only numbers are supported in an array, found {other}")),
                         }
                         if self.eat_sym('}') {
                             break;
@@ -553,9 +540,7 @@ fn arith(op: char, a: Value, b: Value) -> Result<Value, String> {
             Ok(Value::Vec(u.iter().zip(&v).map(|(x, y)| f(*x, *y)).collect()))
         }
         (Value::Num(x), Value::Vec(v)) if op == '*' => Ok(Value::Vec(v.iter().map(|y| x * y).collect())),
-        (Value::Vec(v), Value::Num(y)) if op == '*' || op == '/' => {
-            Ok(Value::Vec(v.iter().map(|x| f(*x, y)).collect()))
-        }
+        (Value::Vec(v), Value::Num(y)) if op == '*' || op == '/' => Ok(Value::Vec(v.iter().map(|x| f(*x, y)).collect())),
         (a, b) => Err(format!("unsupported operation {a} {op} {b}")),
     }
 }
@@ -711,10 +696,7 @@ mod tests {
         assert_eq!(link.params.len(), 9);
 
         let fr = m.component("link1_CS2").expect("frame");
-        assert_eq!(
-            fr.params["rotationType"],
-            Value::Ident("Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors".into())
-        );
+        assert_eq!(fr.params["rotationType"], Value::Ident("Modelica.Mechanics.MultiBody.Types.RotationTypes.TwoAxesVectors".into()));
         assert_eq!(fr.vector("n_y"), Some(&[-1.0, 0.0, 0.0][..]));
 
         let j1 = m.component("J1").expect("J1");
@@ -791,7 +773,8 @@ end Mechanics;
 
     #[test]
     fn nested_and_dotted_modifiers() {
-        let text = "within ;\nmodel M\n  A b(phi(start=1, fixed=false, displayUnit=\"deg\"), s.start=2, x(y(z=3)), each final k=4);\nend M;\n";
+        let text =
+            "within ;\nmodel M\n  A b(phi(start=1, fixed=false, displayUnit=\"deg\"), s.start=2, x(y(z=3)), each final k=4);\nend M;\n";
         let m = parse(text);
         assert_eq!(m.package, "");
         let b = m.component("b").expect("b");

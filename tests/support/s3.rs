@@ -83,7 +83,10 @@ pub async fn place(test: &str) -> Option<S3Place> {
 /// [`place`] without the notice (for tests that fall back to something else).
 pub async fn try_place(test: &str) -> Option<S3Place> {
     let Some(endpoint) = std::env::var("CAD2MO_TEST_S3_ENDPOINT").ok().filter(|e| !e.is_empty()) else {
-        assert!(!crate::common::tools_required(), "{test}: CAD2MO_TEST_S3_ENDPOINT is not set but tools are required (scripts/test starts moto)");
+        assert!(
+            !crate::common::tools_required(),
+            "{test}: CAD2MO_TEST_S3_ENDPOINT is not set but tools are required (scripts/test starts moto)"
+        );
         return None;
     };
     let endpoint = endpoint.trim_end_matches('/').to_string();

@@ -272,11 +272,7 @@ pub fn solve(free: usize, groups: usize, couplings: &[Coupling]) -> Structure {
             }
         }
         let origins: Vec<Vector3<f64>> = members.iter().filter_map(|&i| couplings[i].origin).collect();
-        let c = if origins.is_empty() {
-            Vector3::zeros()
-        } else {
-            origins.iter().sum::<Vector3<f64>>() / origins.len() as f64
-        };
+        let c = if origins.is_empty() { Vector3::zeros() } else { origins.iter().sum::<Vector3<f64>>() / origins.len() as f64 };
         let l = origins.iter().map(|o| (o - c).norm()).fold(0.0, f64::max);
         let l = if l > 1e-9 { l } else { 1.0 };
 
@@ -392,7 +388,15 @@ pub fn model_structure(model: &Model, poses: &Poses) -> Result<Structure, String
         let origin = poses.get(&fa).map(|p| p.translation.vector);
         let o = origin.unwrap_or_default();
         let wrenches = axes().iter().map(|e| Wrench::force(*e, o)).chain(axes().map(Wrench::moment)).collect();
-        couplings.push(Coupling { name: c.name.clone(), what: format!("{}, rigid loop", c.class), a: g, b: g, origin, walked: true, wrenches });
+        couplings.push(Coupling {
+            name: c.name.clone(),
+            what: format!("{}, rigid loop", c.class),
+            a: g,
+            b: g,
+            origin,
+            walked: true,
+            wrenches,
+        });
     }
     for (c, e) in &elements {
         let (fa, fb) = (format!("{}.frame_a", c.name), format!("{}.frame_b", c.name));
@@ -427,12 +431,8 @@ pub fn model_structure(model: &Model, poses: &Poses) -> Result<Structure, String
             Element::Constraint(Constraint::Cut(cut)) => {
                 let (a, b) = (pose(&fa)?, pose(&fb)?);
                 let p = b.translation.vector;
-                let mut w: Vec<Wrench> = axes()
-                    .iter()
-                    .zip(cut.locked)
-                    .filter(|(_, locked)| *locked)
-                    .map(|(e, _)| Wrench::force(a.rotation * e, p))
-                    .collect();
+                let mut w: Vec<Wrench> =
+                    axes().iter().zip(cut.locked).filter(|(_, locked)| *locked).map(|(e, _)| Wrench::force(a.rotation * e, p)).collect();
                 match &cut.rotation {
                     CutRotation::Free => {}
                     CutRotation::About(n) => w.extend(perpendicular(&(a.rotation * n)).map(Wrench::moment)),
@@ -732,7 +732,12 @@ mod tests {
         // Unlocking two translations leaves 3 independent rows.
         let s = structure_of(&spatial_loop(
             P,
-            [rev("J1", u1), rev("J2", u2), rev("J3", u3), cut_constraint("J4", "Prismatic", "x_locked=false, y_locked=false, z_locked=false")],
+            [
+                rev("J1", u1),
+                rev("J2", u2),
+                rev("J3", u3),
+                cut_constraint("J4", "Prismatic", "x_locked=false, y_locked=false, z_locked=false"),
+            ],
         ));
         assert_counts(&s, 18, 0, 0);
     }
@@ -741,10 +746,8 @@ mod tests {
     fn rssr_closed_by_a_spherical() {
         // Crank about z at P0, coupler between spherical joints at P1 and P2, rocker about a
         // generic axis at P3: one degree of freedom plus the coupler's spin about P1-P2.
-        let text = spatial_loop(
-            P,
-            [rev("J1", [0.0, 0.0, 1.0]), spherical("J2", false), spherical("J3", false), rev("J4", [0.1, -0.4, 1.0])],
-        );
+        let text =
+            spatial_loop(P, [rev("J1", [0.0, 0.0, 1.0]), spherical("J2", false), spherical("J3", false), rev("J4", [0.1, -0.4, 1.0])]);
         let s = structure_of(&text);
         assert_counts(&s, 16, 0, 2);
         // The walker closed the loop through J4 (the last joint reached), a tree element here:

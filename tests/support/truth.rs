@@ -89,8 +89,7 @@ fn scan(xml: &str) -> Vec<Raw> {
         let Some(len) = xml[start..].find("</Frame>") else { break };
         let block = &xml[start..start + len];
         at = start + len;
-        let (Some(node), Some(pos), Some(orient)) =
-            (element(block, "nodeID"), element(block, "position"), element(block, "orientation"))
+        let (Some(node), Some(pos), Some(orient)) = (element(block, "nodeID"), element(block, "position"), element(block, "orientation"))
         else {
             continue;
         };
@@ -173,10 +172,7 @@ fn resolve(xml: &str, raw: &[Raw]) -> Vec<TruthFrame> {
             let origin = world(&f.refs[0]).map_or(Vector3::zeros(), |t| t.position);
             let axes = world(&f.refs[1]).map_or(Matrix3::identity(), |t| crate::check::nearest_rotation(&t.rotation));
             let orientation = world(&f.refs[2]).map_or(Matrix3::identity(), |t| crate::check::nearest_rotation(&t.rotation));
-            TruthFrame {
-                position: origin + axes * f.position,
-                rotation: orientation * crate::check::nearest_rotation(&f.rotation),
-            }
+            TruthFrame { position: origin + axes * f.position, rotation: orientation * crate::check::nearest_rotation(&f.rotation) }
         };
         memo[i] = Some(placed.clone());
         placed

@@ -96,7 +96,8 @@ pub fn urdf_truth_at(text: &str, q: &BTreeMap<String, f64>) -> UrdfTruth {
                 _ => {}
             }
         }
-        out.joints.insert(j.attribute("name").expect("name").to_string(), (j.attribute("type").unwrap_or("").to_string(), p.clone(), c.clone()));
+        out.joints
+            .insert(j.attribute("name").expect("name").to_string(), (j.attribute("type").unwrap_or("").to_string(), p.clone(), c.clone()));
         parent.insert(c, (p, t, r));
     }
     let world_of = |link: &str| -> (Vector3<f64>, Matrix3<f64>) {

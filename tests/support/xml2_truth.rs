@@ -82,10 +82,7 @@ pub fn scan(xml: &str) -> Truth {
         .find(|(t, _)| t.starts_with("DataUnits"))
         .or_else(|| toks.iter().find(|(t, _)| t.starts_with("ModelUnits")))
         .expect("units");
-    let (lu, mu) = (
-        length_unit(&attr(units_tag.0, "length").expect("length")),
-        mass_unit(&attr(units_tag.0, "mass").expect("mass")),
-    );
+    let (lu, mu) = (length_unit(&attr(units_tag.0, "length").expect("length")), mass_unit(&attr(units_tag.0, "mass").expect("mass")));
     // Parts.
     let mut parts: BTreeMap<String, (f64, Vector3<f64>, Matrix3<f64>)> = BTreeMap::new();
     let mut current: Option<String> = None;

@@ -194,7 +194,11 @@ pub fn serial_arm_xml(n: usize) -> String {
     };
     let tool = {
         let last = pos[n - 1];
-        if n == 6 { [last[0] + 100.0, last[1] + 20.0, last[2] - 30.0] } else { [last[0] + 25.0, last[1], last[2] + 130.0] }
+        if n == 6 {
+            [last[0] + 100.0, last[1] + 20.0, last[2] - 30.0]
+        } else {
+            [last[0] + 25.0, last[1], last[2] + 130.0]
+        }
     };
     let mut bodies = String::new();
     let mut joints = String::new();
@@ -221,7 +225,10 @@ pub fn serial_arm_xml(n: usize) -> String {
         }
         let mut b = String::new();
         body(&mut b, &format!("LINK{}", i + 1), &format!("ARM/LINK{}", i + 1), 3.0 - 0.3 * i as f64, &f);
-        bodies.push_str(&b.replace("<inertia>0.001,0,0,0,0.002,0,0,0,0.0025</inertia>", "<inertia>0.021,0.0013,-0.0021,0.0013,0.018,0.0011,-0.0021,0.0011,0.012</inertia>"));
+        bodies.push_str(&b.replace(
+            "<inertia>0.001,0,0,0,0.002,0,0,0,0.0025</inertia>",
+            "<inertia>0.021,0.0013,-0.0021,0.0013,0.018,0.0011,-0.0021,0.0011,0.012</inertia>",
+        ));
         let parent = if i == 0 { "BASE".to_string() } else { format!("LINK{i}") };
         joint(&mut joints, &format!("{parent}--LINK{}", i + 1), &format!("J{}:-:j", i + 1), 10 + 2 * i, 11 + 2 * i, "revolute", axes[i]);
     }

@@ -40,10 +40,19 @@ impl ShapeKey {
             max_hull_vertices,
             thin_thickness,
         } = opts;
-        for x in [primitive_abs_tolerance, primitive_rel_tolerance, primitive_volume_tolerance, decompose_ratio, simplify_cells, thin_thickness] {
+        for x in
+            [primitive_abs_tolerance, primitive_rel_tolerance, primitive_volume_tolerance, decompose_ratio, simplify_cells, thin_thickness]
+        {
             h.update(x.to_bits().to_le_bytes());
         }
-        for n in [u64::from(*max_parts), u64::from(*vhacd_resolution), *decomposition_budget, *cylinder_sides as u64, *max_triangles as u64, *max_hull_vertices as u64] {
+        for n in [
+            u64::from(*max_parts),
+            u64::from(*vhacd_resolution),
+            *decomposition_budget,
+            *cylinder_sides as u64,
+            *max_triangles as u64,
+            *max_hull_vertices as u64,
+        ] {
             h.update(n.to_le_bytes());
         }
         h.update((mesh.vertices.len() as u64).to_le_bytes());
@@ -136,11 +145,7 @@ impl Default for MemoryShapeCache {
 
 /// Approximate heap and inline size of a shape.
 pub fn shape_bytes(s: &BodyShape) -> usize {
-    let parts: usize = s
-        .parts
-        .iter()
-        .map(|p| std::mem::size_of_val(p) + p.vertices.capacity() * 24 + p.faces.capacity() * 12)
-        .sum();
+    let parts: usize = s.parts.iter().map(|p| std::mem::size_of_val(p) + p.vertices.capacity() * 24 + p.faces.capacity() * 12).sum();
     let warnings: usize = s.warnings.iter().map(|w| std::mem::size_of_val(w) + w.capacity()).sum();
     std::mem::size_of::<BodyShape>() + std::mem::size_of::<Entry>() + parts + warnings + 64
 }

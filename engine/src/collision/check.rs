@@ -390,11 +390,8 @@ pub fn sweep(
         opts.abs_tolerance, opts.rel_tolerance
     );
     let skipped: Vec<usize> = (0..nb).filter(|&i| bad[i] && world.has_shape(i)).collect();
-    let guarantee = if skipped.is_empty() {
-        guarantee
-    } else {
-        format!("{guarantee} Bodies with non-finite poses, not checked: {skipped:?}.")
-    };
+    let guarantee =
+        if skipped.is_empty() { guarantee } else { format!("{guarantee} Bodies with non-finite poses, not checked: {skipped:?}.") };
     Sweep { pairs: states.into_iter().map(|s| s.out).collect(), samples: n, guarantee }
 }
 

@@ -20,6 +20,6 @@ mod shape;
 #[cfg(test)]
 mod tests;
 
-pub use check::{contacts_at, sweep, Contact, PairSweep, Sweep, SweepOptions, World};
 pub use cache::{shape_bytes, CacheStats, MemoryShapeCache, ShapeCache, ShapeKey, DEFAULT_CACHE_BYTES};
+pub use check::{contacts_at, sweep, Contact, PairSweep, Sweep, SweepOptions, World};
 pub use shape::{body_shape, decomposition_plan, obj_text, BodyShape, DecompositionPlan, ShapeKind, ShapeOptions};

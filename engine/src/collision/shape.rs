@@ -240,7 +240,12 @@ fn shape_inner(mesh: &Mesh, opts: &ShapeOptions) -> BodyShape {
                 });
                 let (a, b) = (c + u * mn, c + u * mx);
                 let len = (b - a).norm();
-                Cand { kind: ShapeKind::Capsule, parts: vec![part_of(&[a, b], Vec::new(), t)], err: t, vol: PI * t * t * len + sphere_volume(t) }
+                Cand {
+                    kind: ShapeKind::Capsule,
+                    parts: vec![part_of(&[a, b], Vec::new(), t)],
+                    err: t,
+                    vol: PI * t * t * len + sphere_volume(t),
+                }
             }
         } else {
             what = "flat";
@@ -262,11 +267,7 @@ fn shape_inner(mesh: &Mesh, opts: &ShapeOptions) -> BodyShape {
                 }
             }
         };
-        warnings.push(format!(
-            "degenerate mesh ({what}, {} vertices): a thin fallback shape {:.1e} m thick",
-            pts.len(),
-            t
-        ));
+        warnings.push(format!("degenerate mesh ({what}, {} vertices): a thin fallback shape {:.1e} m thick", pts.len(), t));
         let vol = cand.vol;
         return finish(cand, vol, source_triangles, warnings);
     }
@@ -288,9 +289,8 @@ fn shape_inner(mesh: &Mesh, opts: &ShapeOptions) -> BodyShape {
     let denom = if use_mesh_volume {
         mesh_volume
     } else {
-        warnings.push(format!(
-            "mesh not closed ({open_edges} open or non-manifold edges): volume ratio against the hull, no decomposition"
-        ));
+        warnings
+            .push(format!("mesh not closed ({open_edges} open or non-manifold edges): volume ratio against the hull, no decomposition"));
         full_vol
     };
     let tol = opts.primitive_abs_tolerance.max(opts.primitive_rel_tolerance * diag);
@@ -341,10 +341,7 @@ fn shape_inner(mesh: &Mesh, opts: &ShapeOptions) -> BodyShape {
             cands.push(c);
         }
     }
-    let best = cands
-        .into_iter()
-        .filter(|c| ok(c))
-        .min_by(|a, b| a.err.total_cmp(&b.err));
+    let best = cands.into_iter().filter(|c| ok(c)).min_by(|a, b| a.err.total_cmp(&b.err));
     if let Some(c) = best {
         return finish(c, denom, source_triangles, warnings);
     }
@@ -376,10 +373,7 @@ fn shape_inner(mesh: &Mesh, opts: &ShapeOptions) -> BodyShape {
                     let err = shape_error(&parts, &samples);
                     return finish(Cand { kind: ShapeKind::Decomposition, parts, err, vol }, denom, source_triangles, warnings);
                 }
-                _ => warnings.push(format!(
-                    "hull is {:.2}× the mesh volume but the convex decomposition failed: hull",
-                    full_vol / denom
-                )),
+                _ => warnings.push(format!("hull is {:.2}× the mesh volume but the convex decomposition failed: hull", full_vol / denom)),
             }
         } else {
             warnings.push(format!(
@@ -567,7 +561,9 @@ fn capped(part: ConvexPart, max: usize, simplified: &mut Simplified) -> ConvexPa
             let cell = diag / cells;
             let mut seen = std::collections::HashSet::new();
             let sub: Vec<usize> = (0..pts.len())
-                .filter(|&i| seen.insert(((pts[i].x / cell).floor() as i64, (pts[i].y / cell).floor() as i64, (pts[i].z / cell).floor() as i64)))
+                .filter(|&i| {
+                    seen.insert(((pts[i].x / cell).floor() as i64, (pts[i].y / cell).floor() as i64, (pts[i].z / cell).floor() as i64))
+                })
                 .collect();
             if sub.len() <= 8 * max {
                 open = sub;
@@ -602,7 +598,8 @@ fn capped(part: ConvexPart, max: usize, simplified: &mut Simplified) -> ConvexPa
         Some((h, out)) => {
             // How far the exact hull reaches beyond (over every vertex, not just the candidates).
             let pl = planes(&h);
-            let out = pts.iter().map(|p| pl.iter().map(|(n, d)| n.dot(&p.coords) - d).fold(f64::MIN, f64::max)).fold(out, f64::max).max(0.0);
+            let out =
+                pts.iter().map(|p| pl.iter().map(|(n, d)| n.dot(&p.coords) - d).fold(f64::MIN, f64::max)).fold(out, f64::max).max(0.0);
             simplified.parts += 1;
             simplified.before = simplified.before.max(part.vertices.len());
             simplified.after = simplified.after.max(h.vertices.len());
@@ -616,9 +613,7 @@ fn capped(part: ConvexPart, max: usize, simplified: &mut Simplified) -> ConvexPa
 /// Fit samples: every vertex and every triangle centroid.
 fn sample_points(pts: &[P3], tris: &[[u32; 3]]) -> Vec<P3> {
     let mut s = pts.to_vec();
-    s.extend(tris.iter().map(|t| {
-        P3::from((pts[t[0] as usize].coords + pts[t[1] as usize].coords + pts[t[2] as usize].coords) / 3.0)
-    }));
+    s.extend(tris.iter().map(|t| P3::from((pts[t[0] as usize].coords + pts[t[1] as usize].coords + pts[t[2] as usize].coords) / 3.0)));
     s
 }
 
@@ -712,11 +707,7 @@ fn shape_error_limited(parts: &[ConvexPart], samples: &[P3], limit: f64) -> f64 
     let pls: Vec<Vec<(V3, f64)>> = parts.iter().map(planes).collect();
     let mut worst = 0.0f64;
     for x in samples {
-        let e = parts
-            .iter()
-            .zip(&pls)
-            .map(|(p, pl)| part_sd(p, pl, x).abs())
-            .fold(f64::INFINITY, f64::min);
+        let e = parts.iter().zip(&pls).map(|(p, pl)| part_sd(p, pl, x).abs()).fold(f64::INFINITY, f64::min);
         worst = worst.max(e);
         if worst > limit {
             break;
@@ -744,9 +735,18 @@ fn box_from_axes(pts: &[P3], axes: &Matrix3<f64>) -> Cand {
     let vol = (0..3).map(|i| (hi[i] - lo[i]).max(0.0)).product();
     // Faces of the box (corner k: bit i set = hi on axis i), outward for a right-handed frame.
     let faces: Vec<[u32; 3]> = vec![
-        [0, 2, 1], [1, 2, 3], [4, 5, 6], [5, 7, 6], // z lo, z hi
-        [0, 1, 4], [1, 5, 4], [2, 6, 3], [3, 6, 7], // y lo, y hi
-        [0, 4, 2], [2, 4, 6], [1, 3, 5], [3, 7, 5], // x lo, x hi
+        [0, 2, 1],
+        [1, 2, 3],
+        [4, 5, 6],
+        [5, 7, 6], // z lo, z hi
+        [0, 1, 4],
+        [1, 5, 4],
+        [2, 6, 3],
+        [3, 6, 7], // y lo, y hi
+        [0, 4, 2],
+        [2, 4, 6],
+        [1, 3, 5],
+        [3, 7, 5], // x lo, x hi
     ];
     let mut faces = faces;
     if axes.determinant() < 0.0 {
@@ -931,7 +931,12 @@ pub fn decomposition_plan(triangles: usize, opts: &ShapeOptions) -> Option<Decom
 /// the budget) the mesh clustered on ever coarser grids until they fit, with how far vertices
 /// moved; `None` when even then no plan fits the budget.
 #[allow(clippy::type_complexity)]
-fn decomposition_input(pts: &[P3], tris: &[[u32; 3]], diag: f64, opts: &ShapeOptions) -> Option<(DecompositionPlan, Vec<P3>, Vec<[u32; 3]>, Option<f64>)> {
+fn decomposition_input(
+    pts: &[P3],
+    tris: &[[u32; 3]],
+    diag: f64,
+    opts: &ShapeOptions,
+) -> Option<(DecompositionPlan, Vec<P3>, Vec<[u32; 3]>, Option<f64>)> {
     if decomposition_work(0, 0, tris.len()) <= opts.decomposition_budget / 2 {
         return decomposition_plan(tris.len(), opts).map(|p| (p, pts.to_vec(), tris.to_vec(), None));
     }
@@ -949,17 +954,9 @@ fn decomposition_input(pts: &[P3], tris: &[[u32; 3]], diag: f64, opts: &ShapeOpt
 
 /// VHACD convex decomposition; parts are hulls of the original triangles in each voxel part.
 fn decompose(pts: &[P3], tris: &[[u32; 3]], opts: &ShapeOptions, plan: &DecompositionPlan) -> Option<Vec<ConvexPart>> {
-    let params = VHACDParameters {
-        resolution: plan.resolution,
-        max_convex_hulls: opts.max_parts.max(2),
-        ..VHACDParameters::default()
-    };
+    let params = VHACDParameters { resolution: plan.resolution, max_convex_hulls: opts.max_parts.max(2), ..VHACDParameters::default() };
     let v = VHACD::decompose(&params, pts, tris, true);
-    let parts: Vec<ConvexPart> = v
-        .compute_exact_convex_hulls(pts, tris)
-        .into_iter()
-        .filter_map(|(vs, _)| hull_part(&vs))
-        .collect();
+    let parts: Vec<ConvexPart> = v.compute_exact_convex_hulls(pts, tris).into_iter().filter_map(|(vs, _)| hull_part(&vs)).collect();
     (!parts.is_empty()).then_some(parts)
 }
 

@@ -6,21 +6,25 @@ use super::*;
 use crate::pipeline::ir::Mesh;
 
 fn mesh(vs: &[[f64; 3]], ts: &[[u32; 3]]) -> Mesh {
-    Mesh {
-        vertices: vs.iter().map(|v| [v[0] as f32, v[1] as f32, v[2] as f32]).collect(),
-        triangles: ts.to_vec(),
-    }
+    Mesh { vertices: vs.iter().map(|v| [v[0] as f32, v[1] as f32, v[2] as f32]).collect(), triangles: ts.to_vec() }
 }
 
 /// Axis-aligned box mesh [lo, hi], outward triangles.
 fn box_mesh(lo: [f64; 3], hi: [f64; 3]) -> (Vec<[f64; 3]>, Vec<[u32; 3]>) {
-    let vs: Vec<[f64; 3]> = (0..8)
-        .map(|k| std::array::from_fn(|i| if k & (1 << i) != 0 { hi[i] } else { lo[i] }))
-        .collect();
+    let vs: Vec<[f64; 3]> = (0..8).map(|k| std::array::from_fn(|i| if k & (1 << i) != 0 { hi[i] } else { lo[i] })).collect();
     let ts = vec![
-        [0, 2, 1], [1, 2, 3], [4, 5, 6], [5, 7, 6],
-        [0, 1, 4], [1, 5, 4], [2, 6, 3], [3, 6, 7],
-        [0, 4, 2], [2, 4, 6], [1, 3, 5], [3, 7, 5],
+        [0, 2, 1],
+        [1, 2, 3],
+        [4, 5, 6],
+        [5, 7, 6],
+        [0, 1, 4],
+        [1, 5, 4],
+        [2, 6, 3],
+        [3, 6, 7],
+        [0, 4, 2],
+        [2, 4, 6],
+        [1, 3, 5],
+        [3, 7, 5],
     ];
     (vs, ts)
 }
@@ -446,9 +450,8 @@ fn broad_phase_scales_with_touching_pairs() {
     let (nx, ny, nz) = (20usize, 10usize, 5usize);
     let cube = box_shape(0.05);
     let shapes: Vec<Option<BodyShape>> = (0..nx * ny * nz).map(|_| Some(cube.clone())).collect();
-    let poses: Vec<Isometry3<f64>> = (0..nx * ny * nz)
-        .map(|k| at((k % nx) as f64 * 0.095, ((k / nx) % ny) as f64 * 0.12, (k / (nx * ny)) as f64 * 0.12))
-        .collect();
+    let poses: Vec<Isometry3<f64>> =
+        (0..nx * ny * nz).map(|k| at((k % nx) as f64 * 0.095, ((k / nx) % ny) as f64 * 0.12, (k / (nx * ny)) as f64 * 0.12)).collect();
     let w = World::new(&shapes);
     check::NARROW_PHASE.with(|n| n.set(0));
     let c = contacts_at(&w, &poses, &|_, _| true, 0.0);

@@ -33,8 +33,8 @@ mod tests;
 use serde::Serialize;
 
 pub use validate::{
-    check_class, check_instance, check_instance_update, check_value, check_values, migrate_instance, plan_import,
-    resolved_values, validate_overrides, ClassDraft, ImportCounts, ImportPlan, InstanceDraft, ParameterDraft,
+    check_class, check_instance, check_instance_update, check_value, check_values, migrate_instance, plan_import, resolved_values,
+    validate_overrides, ClassDraft, ImportCounts, ImportPlan, InstanceDraft, ParameterDraft,
 };
 
 /// The Modelica type of a parameter.
@@ -227,8 +227,7 @@ impl Library {
     /// Classes by name, instances by class name then name (ids break ties): the export order.
     pub fn sort(&mut self) {
         self.classes.sort_by(|a, b| (&a.name, &a.id).cmp(&(&b.name, &b.id)));
-        let rank: std::collections::HashMap<&str, usize> =
-            self.classes.iter().enumerate().map(|(i, c)| (c.id.as_str(), i)).collect();
+        let rank: std::collections::HashMap<&str, usize> = self.classes.iter().enumerate().map(|(i, c)| (c.id.as_str(), i)).collect();
         self.instances.sort_by(|a, b| {
             let ra = rank.get(a.class_id.as_str()).copied().unwrap_or(usize::MAX);
             let rb = rank.get(b.class_id.as_str()).copied().unwrap_or(usize::MAX);

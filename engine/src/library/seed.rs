@@ -34,15 +34,7 @@ pub const BALL_SCREW_16X5: &str = "111ab6e0-9fec-4319-a1f0-7823f62e5ae4";
 pub const ROBOT_R3_CONTROLLER: &str = "42d928a7-a033-47a5-8545-33f2b4153faa";
 
 /// A Real parameter: (name, unit, min, max, editable, default, comment).
-fn real(
-    name: &str,
-    unit: &str,
-    min: Option<f64>,
-    max: Option<f64>,
-    editable: bool,
-    default: Option<f64>,
-    comment: &str,
-) -> ParameterDraft {
+fn real(name: &str, unit: &str, min: Option<f64>, max: Option<f64>, editable: bool, default: Option<f64>, comment: &str) -> ParameterDraft {
     ParameterDraft {
         name: name.to_string(),
         ty: "Real".to_string(),

@@ -14,17 +14,7 @@ fn obj(v: Json) -> Map<String, Json> {
 }
 
 fn param(name: &str, ty: ParamType, unit: &str, min: Option<f64>, max: Option<f64>, editable: bool) -> Parameter {
-    Parameter {
-        name: name.into(),
-        ty,
-        unit: unit.into(),
-        min,
-        max,
-        editable,
-        datasheet: false,
-        default: None,
-        comment: String::new(),
-    }
+    Parameter { name: name.into(), ty, unit: unit.into(), min, max, editable, datasheet: false, default: None, comment: String::new() }
 }
 
 fn motor_class() -> Class {
@@ -206,8 +196,7 @@ fn class_defaults_are_checked_and_converted() {
 // Instances: nameplate values, overrides, migration
 
 fn instance(c: &Class) -> Instance {
-    check_instance("i1", c, &InstanceDraft { name: "RE 40".into(), source: "datasheet".into(), values: good_values() })
-        .expect("valid")
+    check_instance("i1", c, &InstanceDraft { name: "RE 40".into(), source: "datasheet".into(), values: good_values() }).expect("valid")
 }
 
 #[test]
@@ -240,10 +229,7 @@ fn nameplate_values_cannot_change_editable_ones_can() {
 #[test]
 fn datasheet_values_are_optional_but_checked() {
     let mut c = Class { id: "6f0c0f5e-3a57-4d7e-9a38-1c1b1e8f6d01".into(), ..motor_class() };
-    c.parameters.push(Parameter {
-        datasheet: true,
-        ..param("T_nom", ParamType::Real, "N.m", Some(0.0), None, false)
-    });
+    c.parameters.push(Parameter { datasheet: true, ..param("T_nom", ParamType::Real, "N.m", Some(0.0), None, false) });
     let without = instance(&c);
     assert_eq!(without.value("T_nom"), None);
     let mut v = good_values();
@@ -289,8 +275,7 @@ fn datasheet_values_are_optional_but_checked() {
 fn overrides_touch_editable_parameters_only() {
     let c = motor_class();
     let inst = instance(&c);
-    let ok = validate_overrides(&c, &obj(json!({"eta": {"value": 80, "unit": "%"}, "ratio": 50})))
-        .expect("editable overrides");
+    let ok = validate_overrides(&c, &obj(json!({"eta": {"value": 80, "unit": "%"}, "ratio": 50}))).expect("editable overrides");
     assert_eq!(ok, vec![("ratio".to_string(), Value::Real(50.0)), ("eta".to_string(), Value::Real(0.8))]);
     let issues = validate_overrides(&c, &obj(json!({"R": 1, "nope": 1, "eta": 3}))).expect_err("bad overrides");
     let f = fields(&issues);
@@ -392,12 +377,8 @@ fn seeded_classes_match_the_generator() {
             .find(|k| k.modelica_class == c.modelica_class)
             .unwrap_or_else(|| panic!("{} is not a class of known_classes()", c.modelica_class));
         assert_eq!(k.domain, c.domain, "{}", c.modelica_class);
-        let ours: Vec<(&str, &str, &str)> = c
-            .parameters
-            .iter()
-            .filter(|p| !p.datasheet)
-            .map(|p| (p.name.as_str(), p.ty.as_str(), p.unit.as_str()))
-            .collect();
+        let ours: Vec<(&str, &str, &str)> =
+            c.parameters.iter().filter(|p| !p.datasheet).map(|p| (p.name.as_str(), p.ty.as_str(), p.unit.as_str())).collect();
         let mut theirs: Vec<(&str, &str, &str)> = k.params.to_vec();
         let mut ours_sorted = ours.clone();
         ours_sorted.sort();
@@ -505,10 +486,8 @@ fn import_updates_by_id_and_migrates_instances_not_in_the_file() {
     // A file with only the efficiency gear class, its eta no longer editable and a new
     // parameter with a default.
     let mut gear = current.class(seed::EFFICIENCY_GEAR).expect("gear").clone();
-    gear.parameters.push(Parameter {
-        default: Some(Value::Real(0.0)),
-        ..param("backlash", ParamType::Real, "rad", Some(0.0), None, false)
-    });
+    gear.parameters
+        .push(Parameter { default: Some(Value::Real(0.0)), ..param("backlash", ParamType::Real, "rad", Some(0.0), None, false) });
     let text = xml::write(&Library { classes: vec![gear], instances: vec![] });
     let doc = xml::read(&text).expect("read");
     let plan = plan_import(&current, &doc).expect("plan");

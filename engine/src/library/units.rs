@@ -55,8 +55,30 @@ impl Unit {
 
 /// SI units a parameter may be declared in (dimension "1" is a pure number).
 const SI: &[&str] = &[
-    "1", "m", "kg", "s", "A", "K", "rad", "V", "Ohm", "H", "W", "N", "N.m", "N.m/A", "kg.m2", "N.m.s/rad", "rad/s",
-    "rad/s2", "m/s", "m/s2", "1/s", "1/K", "A.s/rad", "V.s/rad",
+    "1",
+    "m",
+    "kg",
+    "s",
+    "A",
+    "K",
+    "rad",
+    "V",
+    "Ohm",
+    "H",
+    "W",
+    "N",
+    "N.m",
+    "N.m/A",
+    "kg.m2",
+    "N.m.s/rad",
+    "rad/s",
+    "rad/s2",
+    "m/s",
+    "m/s2",
+    "1/s",
+    "1/K",
+    "A.s/rad",
+    "V.s/rad",
 ];
 
 /// Base units that take the SI prefixes: (symbol, SI unit, num, den).

@@ -53,8 +53,7 @@ pub struct InstanceDraft {
 
 fn is_identifier(s: &str) -> bool {
     let mut chars = s.chars();
-    matches!(chars.next(), Some(c) if c.is_ascii_alphabetic() || c == '_')
-        && chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
+    matches!(chars.next(), Some(c) if c.is_ascii_alphabetic() || c == '_') && chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
 }
 
 fn check_name(field: &str, what: &str, name: &str, issues: &mut Vec<Issue>) {
@@ -156,20 +155,12 @@ pub fn check_value(p: &Parameter, raw: &Json) -> Result<Value, String> {
             let v = value.as_f64().unwrap_or(x_si);
             if let Some(min) = p.min {
                 if v < min {
-                    return Err(format!(
-                        "{name} = {} is below the minimum {}",
-                        value.describe(&p.unit),
-                        describe_number(min, &p.unit)
-                    ));
+                    return Err(format!("{name} = {} is below the minimum {}", value.describe(&p.unit), describe_number(min, &p.unit)));
                 }
             }
             if let Some(max) = p.max {
                 if v > max {
-                    return Err(format!(
-                        "{name} = {} is above the maximum {}",
-                        value.describe(&p.unit),
-                        describe_number(max, &p.unit)
-                    ));
+                    return Err(format!("{name} = {} is above the maximum {}", value.describe(&p.unit), describe_number(max, &p.unit)));
                 }
             }
             value
@@ -199,10 +190,8 @@ pub fn check_class(id: &str, d: &ClassDraft) -> Result<Class, Vec<Issue>> {
         && d.domain.starts_with(|c: char| c.is_ascii_lowercase())
         && d.domain.chars().all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_' || c == '-'))
     {
-        issues.push(Issue::new(
-            "domain",
-            format!("the domain \"{}\" must be a lower-case word such as motor, gear or controller", d.domain),
-        ));
+        issues
+            .push(Issue::new("domain", format!("the domain \"{}\" must be a lower-case word such as motor, gear or controller", d.domain)));
     }
     let segments: Vec<&str> = d.modelica_class.split('.').collect();
     if d.modelica_class.len() > 300 || segments.len() < 2 || !segments.iter().all(|s| is_identifier(s)) {
@@ -241,12 +230,7 @@ pub fn check_class(id: &str, d: &ClassDraft) -> Result<Class, Vec<Issue>> {
                             "parameter {}: \"{}\" is not an SI unit; declare \"{si}\" (values may still be given in {})",
                             pd.name, pd.unit, pd.unit
                         ),
-                        None => format!(
-                            "parameter {}: unknown unit \"{}\"; use one of {}",
-                            pd.name,
-                            pd.unit,
-                            units::si_units().join(", ")
-                        ),
+                        None => format!("parameter {}: unknown unit \"{}\"; use one of {}", pd.name, pd.unit, units::si_units().join(", ")),
                     };
                     issues.push(Issue::new(field("unit"), msg));
                 }
@@ -378,13 +362,7 @@ pub fn check_instance(id: &str, class: &Class, d: &InstanceDraft) -> Result<Inst
     if !issues.is_empty() {
         return Err(issues);
     }
-    Ok(Instance {
-        id: id.to_string(),
-        class_id: class.id.clone(),
-        name: d.name.clone(),
-        source: d.source.clone(),
-        values,
-    })
+    Ok(Instance { id: id.to_string(), class_id: class.id.clone(), name: d.name.clone(), source: d.source.clone(), values })
 }
 
 /// Checks a change of an existing instance: its name, source and editable values may change;
@@ -487,9 +465,7 @@ pub fn resolved_values(class: &Class, instance: &Instance, overrides: &[(String,
         .iter()
         .filter_map(|p| {
             let over = if p.editable { overrides.iter().find(|(n, _)| n == &p.name).map(|(_, v)| v) } else { None };
-            over.or_else(|| instance.value(&p.name))
-                .or(p.default.as_ref())
-                .map(|v| (p.name.clone(), v.clone()))
+            over.or_else(|| instance.value(&p.name)).or(p.default.as_ref()).map(|v| (p.name.clone(), v.clone()))
         })
         .collect()
 }
@@ -522,10 +498,7 @@ pub fn migrate_instance(old_class: &Class, new_class: &Class, inst: &Instance) -
                 None if p.datasheet => {}
                 None => issues.push(Issue::new(
                     field,
-                    format!(
-                        "instance \"{}\" has no value for the new parameter {}: give the parameter a default",
-                        inst.name, p.name
-                    ),
+                    format!("instance \"{}\" has no value for the new parameter {}: give the parameter a default", inst.name, p.name),
                 )),
             },
         }
@@ -559,8 +532,7 @@ fn class_field(c: &XmlClass, field: &str) -> String {
     // `parameters[3].unit` -> the line of that <parameter>.
     if let Some(rest) = field.strip_prefix("parameters[") {
         if let Some((idx, tail)) = rest.split_once(']') {
-            if let Some((line, name)) = idx.parse::<usize>().ok().and_then(|i| c.param_lines.get(i).zip(c.draft.parameters.get(i)))
-            {
+            if let Some((line, name)) = idx.parse::<usize>().ok().and_then(|i| c.param_lines.get(i).zip(c.draft.parameters.get(i))) {
                 return format!("line {line} <parameter name={:?}>{tail}", name.name);
             }
         }
@@ -696,9 +668,10 @@ pub fn plan_import(current: &Library, doc: &Document) -> Result<ImportPlan, Vec<
                     instances.insert(m.id.clone(), m);
                 }
             }
-            Err(errs) => issues.extend(errs.into_iter().map(|e| {
-                Issue::new(format!("library {}", e.field), format!("{} (the instance is not in the file)", e.message))
-            })),
+            Err(errs) => issues.extend(
+                errs.into_iter()
+                    .map(|e| Issue::new(format!("library {}", e.field), format!("{} (the instance is not in the file)", e.message))),
+            ),
         }
     }
 

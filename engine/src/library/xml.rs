@@ -93,12 +93,7 @@ fn start<'a>(name: &'a str, attrs: &[(&'a str, String)]) -> BytesStart<'a> {
 }
 
 /// Writes `<name attrs>text</name>`, or `<name attrs/>` when `text` is empty.
-fn element<W: std::io::Write>(
-    w: &mut Writer<W>,
-    name: &str,
-    attrs: &[(&str, String)],
-    text: &str,
-) -> std::io::Result<()> {
+fn element<W: std::io::Write>(w: &mut Writer<W>, name: &str, attrs: &[(&str, String)], text: &str) -> std::io::Result<()> {
     if text.is_empty() {
         w.write_event(Event::Empty(start(name, attrs)))
     } else {
@@ -130,12 +125,7 @@ fn parameter_attrs(p: &Parameter) -> Vec<(&'static str, String)> {
 }
 
 fn write_class<W: std::io::Write>(w: &mut Writer<W>, c: &Class) -> std::io::Result<()> {
-    let attrs = [
-        ("id", c.id.clone()),
-        ("name", c.name.clone()),
-        ("domain", c.domain.clone()),
-        ("modelicaClass", c.modelica_class.clone()),
-    ];
+    let attrs = [("id", c.id.clone()), ("name", c.name.clone()), ("domain", c.domain.clone()), ("modelicaClass", c.modelica_class.clone())];
     w.write_event(Event::Start(start("class", &attrs)))?;
     element(w, "description", &[], &c.description)?;
     for p in &c.parameters {
@@ -154,12 +144,7 @@ pub fn write(lib: &Library) -> String {
             write_class(&mut w, c)?;
         }
         for i in &lib.instances {
-            let attrs = [
-                ("id", i.id.clone()),
-                ("class", i.class_id.clone()),
-                ("name", i.name.clone()),
-                ("source", i.source.clone()),
-            ];
+            let attrs = [("id", i.id.clone()), ("class", i.class_id.clone()), ("name", i.name.clone()), ("source", i.source.clone())];
             if i.values.is_empty() {
                 w.write_event(Event::Empty(start("instance", &attrs)))?;
                 continue;
@@ -225,10 +210,7 @@ fn attributes(e: &BytesStart<'_>, at: &At, allowed: &[&str], issues: &mut Vec<Is
             }
         };
         if !allowed.contains(&key.as_str()) {
-            issues.push(Issue::new(
-                at.field(),
-                format!("unknown attribute \"{key}\" (allowed: {})", allowed.join(", ")),
-            ));
+            issues.push(Issue::new(at.field(), format!("unknown attribute \"{key}\" (allowed: {})", allowed.join(", "))));
         } else if out.iter().any(|(k, _)| *k == key) {
             issues.push(Issue::new(at.field(), format!("attribute \"{key}\" appears twice")));
         } else {
@@ -308,10 +290,7 @@ impl XmlInstance {
                         None => x,
                     },
                     None => {
-                        issues.push(Issue::new(
-                            at,
-                            format!("{}: \"{}\" is not {} ({})", p.name, v.text, type_words(p.ty), p.ty.as_str()),
-                        ));
+                        issues.push(Issue::new(at, format!("{}: \"{}\" is not {} ({})", p.name, v.text, type_words(p.ty), p.ty.as_str())));
                         continue;
                     }
                 },

@@ -4,7 +4,17 @@ const MODEL: [u8; 16] = [0x12, 0x3e, 0x45, 0x67, 0xe8, 0x9b, 0x12, 0xd3, 0xa4, 0
 
 /// [`encode`] with the header's fields in line.
 #[allow(clippy::too_many_arguments)]
-fn enc(model: [u8; 16], version: u32, layout: [u8; 8], run: u32, seq: u32, time: f64, bodies: &[[f64; 12]], last: bool, token: Option<&str>) -> Vec<u8> {
+fn enc(
+    model: [u8; 16],
+    version: u32,
+    layout: [u8; 8],
+    run: u32,
+    seq: u32,
+    time: f64,
+    bodies: &[[f64; 12]],
+    last: bool,
+    token: Option<&str>,
+) -> Vec<u8> {
     encode(&Header { model, version, layout, run, seq, time, last }, bodies, token)
 }
 

@@ -42,9 +42,7 @@ impl Mechanism {
             .map(|c| match &c.form {
                 ClosureForm::Plain { .. } => 6,
                 ClosureForm::Planar { .. } => 2,
-                ClosureForm::Constraint { class, locked, .. } => {
-                    locked.iter().filter(|l| **l).count() + class.rotation_equations()
-                }
+                ClosureForm::Constraint { class, locked, .. } => locked.iter().filter(|l| **l).count() + class.rotation_equations(),
             })
             .sum()
     }

@@ -60,7 +60,9 @@ pub use rng::XorShift;
 pub enum MechanismError {
     #[error("body \"{body}\" (nodeID \"{node_id}\") has no path to a ground (a free body): free bodies are not supported yet by the motion analysis")]
     FreeBody { body: String, node_id: String },
-    #[error("joint \"{joint}\" (nodeID \"{node_id}\") has a spherical element: spherical joints are not supported yet by the motion analysis")]
+    #[error(
+        "joint \"{joint}\" (nodeID \"{node_id}\") has a spherical element: spherical joints are not supported yet by the motion analysis"
+    )]
     Spherical { joint: String, node_id: String },
     #[error("{what}: expected {expected} values, got {got}")]
     Length { what: &'static str, expected: usize, got: usize },
@@ -180,9 +182,10 @@ impl Mechanism {
             return Err(MechanismError::FreeBody { body: body.cad_name.clone(), node_id: body.node_id.clone() });
         }
         let omitted = |j: JointId| {
-            h.loops.iter().position(|l| l.closing == j).is_some_and(|i| {
-                h.loops[i].kind == LoopKind::Rigid || a.loops.loops.get(i).is_some_and(|info| info.cut == Cut::Omitted)
-            })
+            h.loops
+                .iter()
+                .position(|l| l.closing == j)
+                .is_some_and(|i| h.loops[i].kind == LoopKind::Rigid || a.loops.loops.get(i).is_some_and(|info| info.cut == Cut::Omitted))
         };
         for (j, joint) in model.joints.iter().enumerate() {
             let spherical = joint.primitives.iter().any(|p| p.kind == PrimitiveKind::Spherical);
@@ -193,7 +196,11 @@ impl Mechanism {
         let names = assign_with_hints(model, &Hints::default());
         let element_name = |j: JointId, k: usize| {
             let base = &names.joints[j.index()];
-            if a.chains[j.index()].elements.len() == 1 { base.clone() } else { format!("{base}_{}", k + 1) }
+            if a.chains[j.index()].elements.len() == 1 {
+                base.clone()
+            } else {
+                format!("{base}_{}", k + 1)
+            }
         };
         let kind_of = |k: PrimitiveKind| if k == PrimitiveKind::Prismatic { CoordKind::Prismatic } else { CoordKind::Revolute };
 
@@ -226,7 +233,11 @@ impl Mechanism {
             };
             let chain = &a.chains[j.index()];
             let (mut link, mut x) = (parent.link, parent.offset);
-            let mut push = |k: usize, e: &crate::pipeline::passes::kinematics::Element, sign: f64, link: &mut Option<usize>, x: &mut Isometry3<f64>| {
+            let mut push = |k: usize,
+                            e: &crate::pipeline::passes::kinematics::Element,
+                            sign: f64,
+                            link: &mut Option<usize>,
+                            x: &mut Isometry3<f64>| {
                 links.push(Link {
                     parent: *link,
                     x_tree: *x,
@@ -285,7 +296,8 @@ impl Mechanism {
         let mut frames = Vec::with_capacity(model.frames.len());
         let mut frame_ids = BTreeMap::new();
         for (i, f) in model.frames.iter().enumerate() {
-            let at = attachment_of(&bodies, FrameId(i as u32)).ok_or_else(|| MechanismError::Internal(format!("frame {} unplaced", f.node_id)))?;
+            let at = attachment_of(&bodies, FrameId(i as u32))
+                .ok_or_else(|| MechanismError::Internal(format!("frame {} unplaced", f.node_id)))?;
             frames.push(at);
             frame_ids.insert(f.node_id.clone(), FrameId(i as u32));
         }
@@ -303,9 +315,11 @@ impl Mechanism {
             let base = frames[joint.base.index()];
             let follower = frames[joint.follower.index()];
             let single = || {
-                chain.elements.first().filter(|_| chain.elements.len() == 1).ok_or_else(|| {
-                    MechanismError::Internal(format!("loop cut \"{}\" is not a single element", joint.cad_name))
-                })
+                chain
+                    .elements
+                    .first()
+                    .filter(|_| chain.elements.len() == 1)
+                    .ok_or_else(|| MechanismError::Internal(format!("loop cut \"{}\" is not a single element", joint.cad_name)))
             };
             let closure = match &info.cut {
                 Cut::Joint | Cut::Redundant => {

@@ -144,7 +144,11 @@ fn loops_close_at_start_values_and_after_moving_the_crank() {
                 assert_eq!(q[i], q0[i] + 0.1);
             }
         }
-        println!("{name}: {} equations, moved {moved} independent coordinates, {} iterations, residual {r:e}", m.closure_equations(), asm.iterations);
+        println!(
+            "{name}: {} equations, moved {moved} independent coordinates, {} iterations, residual {r:e}",
+            m.closure_equations(),
+            asm.iterations
+        );
     }
 }
 

@@ -275,8 +275,11 @@ impl JerkLimited {
         let step = 1e-3;
         let count = (duration / step).ceil() as usize;
         let mut samples = Vec::with_capacity(count + 1);
-        let (mut q, mut qd, mut qdd) =
-            (DataArrayOrVec::<f64, 0>::new(Some(n), 0.0), DataArrayOrVec::<f64, 0>::new(Some(n), 0.0), DataArrayOrVec::<f64, 0>::new(Some(n), 0.0));
+        let (mut q, mut qd, mut qdd) = (
+            DataArrayOrVec::<f64, 0>::new(Some(n), 0.0),
+            DataArrayOrVec::<f64, 0>::new(Some(n), 0.0),
+            DataArrayOrVec::<f64, 0>::new(Some(n), 0.0),
+        );
         for k in 0..=count {
             let t = (k as f64 * step).min(duration);
             trajectory.at_time(t, &mut Some(&mut q), &mut Some(&mut qd), &mut Some(&mut qdd), &mut None, &mut None);

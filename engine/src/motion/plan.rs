@@ -109,12 +109,9 @@ impl AxisLimits {
     /// 20 m/s³.
     pub fn defaults(kind: CoordKind, q0: f64) -> AxisLimits {
         match kind {
-            CoordKind::Revolute => AxisLimits {
-                position: [q0 - std::f64::consts::PI, q0 + std::f64::consts::PI],
-                speed: 3.0,
-                acceleration: 15.0,
-                jerk: 150.0,
-            },
+            CoordKind::Revolute => {
+                AxisLimits { position: [q0 - std::f64::consts::PI, q0 + std::f64::consts::PI], speed: 3.0, acceleration: 15.0, jerk: 150.0 }
+            }
             CoordKind::Prismatic => AxisLimits { position: [q0 - 0.1, q0 + 0.1], speed: 0.5, acceleration: 2.0, jerk: 20.0 },
         }
     }
@@ -436,7 +433,8 @@ pub fn solve_tool(
     seed: &[f64],
 ) -> Result<(Vec<f64>, IkReport, bool), String> {
     let tool = mech.frame_by_node_id(frame).map_err(|e| e.to_string())?;
-    let opts = IkOptions { limits: Some(axes.iter().map(|a| (a.limits.position[0], a.limits.position[1])).collect()), ..IkOptions::default() };
+    let opts =
+        IkOptions { limits: Some(axes.iter().map(|a| (a.limits.position[0], a.limits.position[1])).collect()), ..IkOptions::default() };
     // Seeded by the frame so that the same spec always plans the same way.
     let seed_rng = frame.bytes().fold(0x9e37_79b9_7f4a_7c15_u64, |h, b| (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3));
     let mut rng = XorShift::new(seed_rng);
@@ -452,9 +450,8 @@ pub fn plan(mech: &Mechanism, axes: &[Axis], spec: &MotionSpec) -> Result<Planne
         return Err(issues);
     }
     let loops = mech.has_loops();
-    let driven_names = || -> String {
-        mech.driven().iter().map(|&i| axes.get(i).map_or("", |a| a.name.as_str())).collect::<Vec<_>>().join(", ")
-    };
+    let driven_names =
+        || -> String { mech.driven().iter().map(|&i| axes.get(i).map_or("", |a| a.name.as_str())).collect::<Vec<_>>().join(", ") };
     let index: BTreeMap<&str, usize> = axes.iter().enumerate().map(|(i, a)| (a.name.as_str(), i)).collect();
     let n = axes.len();
     let mut prev: Vec<f64> = axes.iter().map(|a| a.q0).collect();
@@ -524,7 +521,9 @@ pub fn plan(mech: &Mechanism, axes: &[Axis], spec: &MotionSpec) -> Result<Planne
             let mut st = ClosedState { q: q.clone(), qd: vec![0.0; n], qdd: vec![0.0; n], cut: mech.cut_q0() };
             match mech.close(&mut st) {
                 Ok(()) => q = st.q,
-                Err(e) => issues.push(Issue::new(at.clone(), format!("keyframe {k}: the loops cannot be closed at these joint values: {e}"))),
+                Err(e) => {
+                    issues.push(Issue::new(at.clone(), format!("keyframe {k}: the loops cannot be closed at these joint values: {e}")))
+                }
             }
         }
         prev = q.clone();
@@ -545,8 +544,8 @@ pub fn plan(mech: &Mechanism, axes: &[Axis], spec: &MotionSpec) -> Result<Planne
         if k > 0 {
             let from = &poses[k - 1].0;
             let shape = match kf.interpolation {
-                Interpolation::Ptp => {
-                    Ptp2::new(from, q, &speeds, &accels).and_then(|p| match kf.duration {
+                Interpolation::Ptp => Ptp2::new(from, q, &speeds, &accels)
+                    .and_then(|p| match kf.duration {
                         Some(d) if d > p.duration() && p.duration() > 0.0 => {
                             let s = d / p.duration();
                             Ptp2::new(
@@ -558,8 +557,7 @@ pub fn plan(mech: &Mechanism, axes: &[Axis], spec: &MotionSpec) -> Result<Planne
                         }
                         _ => Ok(p),
                     })
-                    .map(Shape::Ptp)
-                }
+                    .map(Shape::Ptp),
                 Interpolation::Quintic => match kf.duration {
                     Some(d) => Quintic::new(from, q, d).map(Shape::Quintic),
                     None => Quintic::fastest(from, q, &speeds, &accels).map(Shape::Quintic),

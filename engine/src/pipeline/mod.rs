@@ -143,9 +143,7 @@ impl ConvertError {
             ConvertError::Geometry(GeometryError::Stl(e)) => {
                 Diagnostic { file: e.file.clone(), line: e.line, column: 0, message: e.kind.to_string() }
             }
-            ConvertError::Vrml(e) => {
-                Diagnostic { file: e.file.clone(), line: e.line, column: e.column, message: e.kind.to_string() }
-            }
+            ConvertError::Vrml(e) => Diagnostic { file: e.file.clone(), line: e.line, column: e.column, message: e.kind.to_string() },
             ConvertError::Validation(e) => {
                 let loc = e.loc();
                 let text = e.to_string();
@@ -200,16 +198,12 @@ pub fn analyse_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
     let (mut model, mut warnings) = match kind {
         SourceKind::SecondGeneration => {
             let (mut model, mut warnings) = front::simscape2::parse(&path, bytes)?;
-            warnings.extend(passes::geometry::read_meshes(&mut model, bundle, &path, &mut |i, n| {
-                obs.progress(Stage::Meshes, i, n)
-            })?);
+            warnings.extend(passes::geometry::read_meshes(&mut model, bundle, &path, &mut |i, n| obs.progress(Stage::Meshes, i, n))?);
             (model, warnings)
         }
         SourceKind::FirstGeneration => {
             let (mut model, mut warnings) = front::simmechanics::parse(&path, bytes)?;
-            warnings.extend(passes::geometry::read_meshes(&mut model, bundle, &path, &mut |i, n| {
-                obs.progress(Stage::Meshes, i, n)
-            })?);
+            warnings.extend(passes::geometry::read_meshes(&mut model, bundle, &path, &mut |i, n| obs.progress(Stage::Meshes, i, n))?);
             (model, warnings)
         }
         SourceKind::Urdf => {
@@ -430,11 +424,8 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
     );
     // A live view frame carries at most MAX_BODIES bodies: larger models are written without one.
     let bodies: &[String] = pkg.layout.names.as_ref().map(|n| n.bodies.as_slice()).unwrap_or_default();
-    let live = opts
-        .live
-        .as_ref()
-        .filter(|_| (1..=back::modelica::mechatronics::live::MAX_BODIES).contains(&bodies.len()))
-        .map(|t| (t, bodies));
+    let live =
+        opts.live.as_ref().filter(|_| (1..=back::modelica::mechatronics::live::MAX_BODIES).contains(&bodies.len())).map(|t| (t, bodies));
     if opts.live.is_some() && live.is_none() {
         report.warnings.push(Warning::new(
             "live-view-omitted",

@@ -339,7 +339,11 @@ pub fn build(input: ReportInput) -> Report {
             closing_equations: info.closing_equations,
             independent_equations: info.independent,
             redundant_equations: info.closing_equations - info.independent.min(info.closing_equations),
-            redundant_emitted: if info.cut == Cut::Redundant { info.closing_equations - info.independent.min(info.closing_equations) } else { 0 },
+            redundant_emitted: if info.cut == Cut::Redundant {
+                info.closing_equations - info.independent.min(info.closing_equations)
+            } else {
+                0
+            },
             planar_normal: info.planar_normal.map(Into::into),
             cut: layout.emitted_as[l.closing.index()].to_string(),
             why: info.why.clone(),

@@ -363,8 +363,11 @@ impl<'a> Trajectory<'a> {
         if names.len() != data.cols {
             return Err(not(&format!("{} names for {} data columns", names.len(), data.cols)));
         }
-        let variables =
-            names.into_iter().enumerate().map(|(k, name)| Variable { name, description: String::new(), source: Source::Series(k), negated: false }).collect();
+        let variables = names
+            .into_iter()
+            .enumerate()
+            .map(|(k, name)| Variable { name, description: String::new(), source: Source::Series(k), negated: false })
+            .collect();
         let precision_bytes = data.elem.size();
         Ok(Self::finish(bytes, variables, None, data.clone(), false, true, precision_bytes))
     }

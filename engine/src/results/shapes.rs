@@ -75,13 +75,15 @@ impl Scene {
                 let three = |what: &str| -> Option<[usize; 3]> {
                     Some([t.find(&format!("{p}.{what}[1]"))?, t.find(&format!("{p}.{what}[2]"))?, t.find(&format!("{p}.{what}[3]"))?])
                 };
-                let (Some(rx), Some(ry), Some(r), Some(size)) = (three("rxvisobj"), three("ryvisobj"), three("rvisobj"), three("size")) else {
+                let (Some(rx), Some(ry), Some(r), Some(size)) = (three("rxvisobj"), three("ryvisobj"), three("rvisobj"), three("size"))
+                else {
                     continue;
                 };
                 let material = t.find(&format!("{p}.Material"));
                 let form = if t.is_empty() { 0.0 } else { t.value(k, 0) };
                 let code = (form / 1e20).round() as i64 - 987_000;
-                let (color, specular) = material.filter(|_| !t.is_empty()).map_or(([128, 128, 128], 0.5), |m| super::shapes::material(t.value(m, 0)));
+                let (color, specular) =
+                    material.filter(|_| !t.is_empty()).map_or(([128, 128, 128], 0.5), |m| super::shapes::material(t.value(m, 0)));
                 let file = (code == 213).then(|| v.description.clone()).filter(|d| !d.is_empty());
                 shapes.push(Shape { name: p.to_string(), kind: kind(code), code, color, specular, file });
                 shape_vars.push(ShapeVars { rx, ry, r, size });

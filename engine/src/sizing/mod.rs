@@ -550,13 +550,7 @@ fn check_fit(axis: &Axis, gear: &Gear) -> Result<(), SizingError> {
 
 /// Sizes the drive of one joint (motor and gear with the drive's overrides applied) and, with a
 /// catalog, ranks the `top` best alternatives of the library for the same joint.
-pub fn size_drive(
-    load: AxisLoad,
-    motor: &Motor,
-    gear: &Gear,
-    catalog: Option<&Catalog>,
-    top: usize,
-) -> Result<DriveSizing, SizingError> {
+pub fn size_drive(load: AxisLoad, motor: &Motor, gear: &Gear, catalog: Option<&Catalog>, top: usize) -> Result<DriveSizing, SizingError> {
     let axis = Axis::new(load)?;
     check_fit(&axis, gear)?;
     let o = evaluate(&axis, motor, gear, gear.ratio);

@@ -225,8 +225,7 @@ fn ranking_order() {
     let big = Motor { part: part("big"), j: 5e-5, ..motor() };
     let unknown = Motor { part: part("unknown"), j: 1e-5, t_nom: None, ..motor() };
     let fixed = Gear { part: part("fixed 20"), ..gear(20.0, 0.9) };
-    let free =
-        Gear { part: part("free"), ratio_editable: true, ratio_min: Some(-100.0), ratio_max: Some(50.0), ..gear(12.0, 1.0) };
+    let free = Gear { part: part("free"), ratio_editable: true, ratio_min: Some(-100.0), ratio_max: Some(50.0), ..gear(12.0, 1.0) };
     let screw = Gear { part: part("screw"), lead: Some(0.01), ..gear(1.0, 1.0) };
     assert_eq!(ratios(&free), vec![12.0, 1.0, 3.0, 5.0, 7.0, 10.0, 15.0, 20.0, 30.0, 50.0]);
     let cat = Catalog { motors: vec![big, unknown, small, mid], gears: vec![screw, free, fixed], skipped: vec![] };

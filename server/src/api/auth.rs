@@ -49,9 +49,7 @@ pub struct Guard {
 }
 
 pub async fn guard(State(Guard { state, hosts }): State<Guard>, req: Request, next: Next) -> Result<Response, ApiError> {
-    let host = hosts
-        .check_host(req.headers(), req.uri().authority().map(|a| a.as_str()))
-        .map_err(ApiError::MisdirectedHost)?;
+    let host = hosts.check_host(req.headers(), req.uri().authority().map(|a| a.as_str())).map_err(ApiError::MisdirectedHost)?;
     let valid = match bearer(req.headers()) {
         Some(token) => crate::store::tokens::verify(&state.store, token).await?,
         None => false,
@@ -89,7 +87,14 @@ mod tests {
     #[test]
     fn bearer_scheme_in_any_case() {
         let mut h = HeaderMap::new();
-        for (v, want) in [("Bearer abc", Some("abc")), ("bearer abc", Some("abc")), ("BEARER  abc ", Some("abc")), ("Basic abc", None), ("Bearer", None), ("Bearer ", None)] {
+        for (v, want) in [
+            ("Bearer abc", Some("abc")),
+            ("bearer abc", Some("abc")),
+            ("BEARER  abc ", Some("abc")),
+            ("Basic abc", None),
+            ("Bearer", None),
+            ("Bearer ", None),
+        ] {
             h.insert(header::AUTHORIZATION, v.parse().unwrap());
             assert_eq!(bearer(&h), want, "{v}");
         }

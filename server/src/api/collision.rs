@@ -16,8 +16,8 @@ use super::motions::{converted_version, find as find_motion, kinematic};
 use super::ApiError;
 use crate::app::AppState;
 use crate::service::collisions::{self, Edits, VersionShapes};
-use cad2mo_engine::pipeline::back::collision_shapes::InterferenceReport;
 use crate::store;
+use cad2mo_engine::pipeline::back::collision_shapes::InterferenceReport;
 
 pub fn router() -> Router<AppState> {
     Router::new()
@@ -60,7 +60,10 @@ struct VersionCollision {
     interferences: Vec<InterferenceReport>,
 }
 
-async fn version_collision(State(state): State<AppState>, Path((model_id, version)): Path<(String, i64)>) -> Result<Json<VersionCollision>, ApiError> {
+async fn version_collision(
+    State(state): State<AppState>,
+    Path((model_id, version)): Path<(String, i64)>,
+) -> Result<Json<VersionCollision>, ApiError> {
     let (version, s) = shapes(&state, &model_id, Some(version)).await?;
     let edits = edits(&state, &model_id).await?;
     let shared = s.clone();
@@ -106,7 +109,10 @@ async fn put_matrix(
             errors.push(FieldError { field, message: format!("a pair needs two bodies, not {} twice", p.a) });
         } else if let Some(missing) = [&p.a, &p.b].into_iter().find(|n| !with.contains(n.as_str())) {
             let known: Vec<&str> = with.iter().copied().take(20).collect();
-            errors.push(FieldError { field, message: format!("{missing} is not a body with a collision shape (bodies: {})", known.join(", ")) });
+            errors.push(FieldError {
+                field,
+                message: format!("{missing} is not a body with a collision shape (bodies: {})", known.join(", ")),
+            });
         } else if !seen.insert(store::collision::ordered(&p.a, &p.b)) {
             errors.push(FieldError { field, message: format!("the pair {} / {} is given twice", p.a, p.b) });
         }

@@ -196,7 +196,8 @@ async fn put(
             None => errors.push(FieldError { field: format!("{slot}_instance"), message: format!("no library instance {id}") }),
         }
     }
-    let refs: Vec<(&str, &cad2mo_engine::library::Instance, &cad2mo_engine::library::Class)> = slots.iter().map(|(s, i, c)| (*s, i, c)).collect();
+    let refs: Vec<(&str, &cad2mo_engine::library::Instance, &cad2mo_engine::library::Class)> =
+        slots.iter().map(|(s, i, c)| (*s, i, c)).collect();
     let reference = body.reference.unwrap_or(ReferenceSpec::Constant { value: j.start });
     let issues = drives::check_slots(&refs, &body.overrides).into_iter().chain(drives::check_reference(&reference));
     errors.extend(issues.map(|i| FieldError { field: i.field, message: i.message }));
@@ -209,7 +210,9 @@ async fn put(
         if let (Ok(motor), Ok(gear), Ok(controller)) = (choice("motor"), choice("gear"), choice("controller")) {
             let resolved = drives::ResolvedDrive { joint: joint.clone(), motor, gear, controller, reference: reference.clone() };
             let (plans, _) = drives::plans(&report, &[resolved]);
-            if let Err(e) = cad2mo_engine::pipeline::back::modelica::mechatronics::mechatronics("Check", &plans, &[], &Default::default(), "") {
+            if let Err(e) =
+                cad2mo_engine::pipeline::back::modelica::mechatronics::mechatronics("Check", &plans, &[], &Default::default(), "")
+            {
                 errors.push(FieldError { field: "drive".into(), message: e.to_string() });
             }
         }

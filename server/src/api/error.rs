@@ -8,15 +8,15 @@ use axum::http::{header, StatusCode};
 use axum::response::{IntoResponse, Response};
 use serde::Serialize;
 
-use cad2mo_engine::pipeline::{ConvertError, Diagnostic};
 use crate::store::StoreError;
+use cad2mo_engine::pipeline::{ConvertError, Diagnostic};
 
-pub use crate::service::FieldError;
 use crate::jobs::JobError;
 use crate::service::collisions::CollisionError;
 use crate::service::drives::DriveError;
 use crate::service::export::ExportError;
 use crate::service::motions::MotionError;
+pub use crate::service::FieldError;
 
 #[derive(Debug, thiserror::Error)]
 pub enum ApiError {
@@ -219,8 +219,7 @@ impl IntoResponse for ApiError {
             tracing::error!(error = ?e, "internal error");
         }
         let (status, _, _) = self.parts();
-        let mut resp = (status, [(header::CONTENT_TYPE, "application/problem+json")], self.problem_json().to_string())
-            .into_response();
+        let mut resp = (status, [(header::CONTENT_TYPE, "application/problem+json")], self.problem_json().to_string()).into_response();
         match &self {
             ApiError::Unauthorized => {
                 resp.headers_mut().insert(header::WWW_AUTHENTICATE, axum::http::HeaderValue::from_static("Bearer"));

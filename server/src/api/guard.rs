@@ -93,8 +93,7 @@ impl Hosts {
         }
         let Some((host, port)) = split_authority(authority) else { return false };
         let port = port.unwrap_or(default_port);
-        (port == self.port && self.own.contains(&host))
-            || self.extra.iter().any(|(h, p)| *h == host && p.is_none_or(|p| p == port))
+        (port == self.port && self.own.contains(&host)) || self.extra.iter().any(|(h, p)| *h == host && p.is_none_or(|p| p == port))
     }
 
     /// Rule 1: the request's host (`Host`, or the URI's authority in HTTP/2). `Err` says why not.
@@ -114,19 +113,14 @@ impl Hosts {
         let Some(origin) = headers.get(header::ORIGIN) else { return Ok(()) };
         let text = origin.to_str().unwrap_or("(not text)");
         let ours = origin.to_str().ok().and_then(|o| {
-            let (authority, default_port) = if let Some(a) = o.strip_prefix("http://") {
-                (a, 80)
-            } else {
-                (o.strip_prefix("https://")?, 443)
-            };
+            let (authority, default_port) =
+                if let Some(a) = o.strip_prefix("http://") { (a, 80) } else { (o.strip_prefix("https://")?, 443) };
             Some(authority.eq_ignore_ascii_case(host) || (!self.any && self.allows(authority, default_port)))
         });
         if ours == Some(true) {
             Ok(())
         } else {
-            Err(format!(
-                "requests that change data are refused from the web origin {text}: only pages of this service may send them"
-            ))
+            Err(format!("requests that change data are refused from the web origin {text}: only pages of this service may send them"))
         }
     }
 }
@@ -146,9 +140,7 @@ pub fn check_client(headers: &HeaderMap) -> Result<(), String> {
         .and_then(|v| v.to_str().ok())
         .map(|v| v.split(';').next().unwrap_or_default().trim().to_ascii_lowercase());
     match essence.as_deref() {
-        Some(t) if !t.is_empty() && !["text/plain", "multipart/form-data", "application/x-www-form-urlencoded"].contains(&t) => {
-            Ok(())
-        }
+        Some(t) if !t.is_empty() && !["text/plain", "multipart/form-data", "application/x-www-form-urlencoded"].contains(&t) => Ok(()),
         _ => Err(format!(
             "without an API token, requests that change data must send the header `X-Requested-With: cad2mo` \
              (or a JSON/XML body with its Content-Type); got Content-Type {}",
@@ -172,7 +164,9 @@ mod tests {
     #[test]
     fn hosts_on_loopback() {
         let h = Hosts::new("127.0.0.1:8080".parse().unwrap(), &["cad.example.org".into(), "box:9000".into()]);
-        for ok in ["127.0.0.1:8080", "localhost:8080", "LOCALHOST.:8080", "[::1]:8080", "cad.example.org", "cad.example.org:443", "box:9000"] {
+        for ok in
+            ["127.0.0.1:8080", "localhost:8080", "LOCALHOST.:8080", "[::1]:8080", "cad.example.org", "cad.example.org:443", "box:9000"]
+        {
             assert!(h.allows(ok, 80), "{ok}");
         }
         for bad in ["evil.com:8080", "localhost:8081", "localhost", "127.0.0.1", "box:9001", "", "a@localhost:8080", "[::1"] {

@@ -46,10 +46,7 @@ struct QueueView {
     running: i64,
 }
 
-async fn get_job(
-    State(state): State<AppState>,
-    path: Result<Path<String>, PathRejection>,
-) -> Result<Json<JobView>, ApiError> {
+async fn get_job(State(state): State<AppState>, path: Result<Path<String>, PathRejection>) -> Result<Json<JobView>, ApiError> {
     let Path(id) = path.map_err(|e| ApiError::BadRequest(e.body_text()))?;
     let job = db::get_job(&state.store.pool, &id).await?.ok_or_else(|| ApiError::NotFound(format!("job {id}")))?;
     let error = job

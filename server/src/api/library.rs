@@ -28,13 +28,12 @@ use super::error::FieldError;
 use super::extract::{Path, Query};
 use super::ApiError;
 use crate::app::AppState;
-use cad2mo_engine::library::{
-    self, check_class, check_instance, check_instance_update, migrate_instance, ClassDraft, Instance, InstanceDraft,
-    Issue, ParameterDraft,
-};
 use crate::store::library as db;
 use crate::store::library::{Change, Removal};
 use crate::store::StoreError;
+use cad2mo_engine::library::{
+    self, check_class, check_instance, check_instance_update, migrate_instance, ClassDraft, Instance, InstanceDraft, Issue, ParameterDraft,
+};
 
 /// Largest accepted import file.
 const IMPORT_LIMIT: usize = 16 * 1024 * 1024;
@@ -293,9 +292,7 @@ async fn get_class(State(s): State<AppState>, Path(id): Path<String>) -> Result<
 async fn create_class(State(s): State<AppState>, b: Result<Json<ClassIn>, JsonRejection>) -> Result<Response, ApiError> {
     let draft = body(b)?.draft();
     let class = check_class(&library::new_id(), &draft).map_err(|e| invalid("the class is invalid", e))?;
-    db::insert_class(&s.store, &class)
-        .await
-        .map_err(|e| unique_conflict(e, format!("a class named \"{}\" already exists", class.name)))?;
+    db::insert_class(&s.store, &class).await.map_err(|e| unique_conflict(e, format!("a class named \"{}\" already exists", class.name)))?;
     Ok(created(format!("/api/library/classes/{}", class.id), class_out(&class)))
 }
 
@@ -347,10 +344,7 @@ async fn delete_class(State(s): State<AppState>, Path(id): Path<String>) -> Resu
 // ---------------------------------------------------------------------------------------------
 // Instances
 
-async fn list_instances(
-    State(s): State<AppState>,
-    Query(f): Query<InstanceFilter>,
-) -> Result<Response, ApiError> {
+async fn list_instances(State(s): State<AppState>, Query(f): Query<InstanceFilter>) -> Result<Response, ApiError> {
     let class_id = f.class_id.as_deref().map(canonical);
     let list = db::list_instances(&s.store, class_id.as_deref(), f.domain.as_deref()).await?;
     Ok(Json(list.iter().map(|(i, c)| instance_out(i, c)).collect::<Vec<_>>()).into_response())
@@ -358,21 +352,14 @@ async fn list_instances(
 
 async fn get_instance(State(s): State<AppState>, Path(id): Path<String>) -> Result<Response, ApiError> {
     let id = canonical(&id);
-    let (i, c) =
-        db::get_instance(&s.store, &id).await?.ok_or_else(|| ApiError::NotFound(format!("library instance {id}")))?;
+    let (i, c) = db::get_instance(&s.store, &id).await?.ok_or_else(|| ApiError::NotFound(format!("library instance {id}")))?;
     Ok(Json(instance_out(&i, &c)).into_response())
 }
 
-async fn create_instance(
-    State(s): State<AppState>,
-    b: Result<Json<InstanceIn>, JsonRejection>,
-) -> Result<Response, ApiError> {
+async fn create_instance(State(s): State<AppState>, b: Result<Json<InstanceIn>, JsonRejection>) -> Result<Response, ApiError> {
     let b = body(b)?;
     let no_class = || {
-        invalid(
-            "the instance is invalid",
-            vec![Issue::new("class_id", format!("there is no library class with id \"{}\"", b.class_id))],
-        )
+        invalid("the instance is invalid", vec![Issue::new("class_id", format!("there is no library class with id \"{}\"", b.class_id))])
     };
     let Some(class_id) = library::parse_id(&b.class_id) else {
         return Err(no_class());
@@ -468,11 +455,9 @@ async fn import(State(s): State<AppState>, b: Result<Bytes, BytesRejection>) -> 
         }
     })?;
     const NOTHING: &str = "the library file was not imported (nothing changed)";
-    let text = std::str::from_utf8(&bytes)
-        .map_err(|e| invalid(NOTHING, vec![Issue::new("body", format!("the file is not UTF-8 text: {e}"))]))?;
+    let text =
+        std::str::from_utf8(&bytes).map_err(|e| invalid(NOTHING, vec![Issue::new("body", format!("the file is not UTF-8 text: {e}"))]))?;
     let doc = library::xml::read(text).map_err(|e| invalid(NOTHING, e))?;
-    let counts = db::import(&s.store, |current| library::plan_import(current, &doc))
-        .await?
-        .map_err(|e| invalid(NOTHING, e))?;
+    let counts = db::import(&s.store, |current| library::plan_import(current, &doc)).await?.map_err(|e| invalid(NOTHING, e))?;
     Ok(Json(counts).into_response())
 }

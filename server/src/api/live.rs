@@ -74,7 +74,10 @@ async fn bodies(state: &AppState, model_id: &str, version: u32) -> Result<std::s
         .ok_or_else(|| ApiError::NotFound(format!("converted version {version} of model {model_id}")))
 }
 
-async fn version_info(State(state): State<AppState>, Path((model_id, version)): Path<(String, i64)>) -> Result<Json<VersionLive>, ApiError> {
+async fn version_info(
+    State(state): State<AppState>,
+    Path((model_id, version)): Path<(String, i64)>,
+) -> Result<Json<VersionLive>, ApiError> {
     let version = version_of(&model_id, version)?;
     let b = bodies(&state, &model_id, version).await?;
     Ok(Json(VersionLive {
@@ -96,10 +99,7 @@ async fn watch(
     let version = version_of(&model_id, version)?;
     let b = bodies(&state, &model_id, version).await?;
     let ws = ws.map_err(|e| {
-        ApiError::BadRequest(format!(
-            "this is a WebSocket endpoint: open it with the sub-protocol {PROTOCOL} ({})",
-            e.body_text()
-        ))
+        ApiError::BadRequest(format!("this is a WebSocket endpoint: open it with the sub-protocol {PROTOCOL} ({})", e.body_text()))
     })?;
     let rx = state.relay.subscribe(&model_id, version);
     let hello = serde_json::json!({ "type": "hello", "model": model_id, "version": version, "bodies": b.bodies }).to_string();

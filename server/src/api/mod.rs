@@ -10,12 +10,12 @@ mod extract;
 mod guard;
 mod health;
 mod jobs;
-mod live;
 mod library;
+mod live;
 mod models;
 mod motions;
-mod results;
 mod openapi;
+mod results;
 mod web;
 
 use axum::Router;

@@ -134,8 +134,7 @@ impl From<ModelRow> for ModelView {
 }
 
 fn version_view(v: VersionRow) -> Result<VersionView, ApiError> {
-    let corrupt =
-        |what: &str, e: serde_json::Error| ApiError::Internal(anyhow::anyhow!("stored {what} is corrupt: {e}"));
+    let corrupt = |what: &str, e: serde_json::Error| ApiError::Internal(anyhow::anyhow!("stored {what} is corrupt: {e}"));
     let options = serde_json::from_str(&v.options_json).map_err(|e| corrupt("options", e))?;
     let error = v.error_json.as_deref().map(serde_json::from_str).transpose().map_err(|e| corrupt("problem", e))?;
     let summary = v.summary_json.as_deref().map(serde_json::from_str).transpose().map_err(|e| corrupt("summary", e))?;
@@ -164,9 +163,7 @@ fn version_view(v: VersionRow) -> Result<VersionView, ApiError> {
 fn accepted(c: Created) -> Response {
     tracing::info!(model_id = %c.model_id, version = c.version, job_id = %c.job_id, "upload accepted");
     let location = HeaderValue::from_str(&format!("/api/jobs/{}", c.job_id)).ok();
-    let mut resp =
-        (StatusCode::ACCEPTED, Json(Accepted { model_id: c.model_id, version: c.version, job_id: c.job_id }))
-            .into_response();
+    let mut resp = (StatusCode::ACCEPTED, Json(Accepted { model_id: c.model_id, version: c.version, job_id: c.job_id })).into_response();
     if let Some(l) = location {
         resp.headers_mut().insert(header::LOCATION, l);
     }
@@ -232,10 +229,7 @@ struct Upload {
 
 pub(super) fn invalid(field: &str, message: impl Into<String>) -> ApiError {
     let message = message.into();
-    ApiError::Invalid {
-        detail: format!("{field}: {message}"),
-        errors: vec![FieldError { field: field.into(), message }],
-    }
+    ApiError::Invalid { detail: format!("{field}: {message}"), errors: vec![FieldError { field: field.into(), message }] }
 }
 
 /// A multipart upload within `--max-upload` (413 beyond it, from the declared length when there
@@ -247,9 +241,9 @@ pub(super) async fn multipart_upload(mut req: Request, state: &AppState, part: &
         return Err(ApiError::PayloadTooLarge { limit });
     }
     DefaultBodyLimit::max(usize::try_from(limit).unwrap_or(usize::MAX)).apply(&mut req);
-    let multipart = Multipart::from_request(req, state).await.map_err(|e| {
-        ApiError::BadRequest(format!("expected a multipart/form-data upload with a `{part}` part: {}", e.body_text()))
-    })?;
+    let multipart = Multipart::from_request(req, state)
+        .await
+        .map_err(|e| ApiError::BadRequest(format!("expected a multipart/form-data upload with a `{part}` part: {}", e.body_text())))?;
     Ok((multipart, limit))
 }
 
@@ -331,8 +325,7 @@ fn parse_gravity(s: &str) -> Result<[f64; 3], String> {
     };
     let mut g = [0.0; 3];
     for (k, p) in [x, y, z].into_iter().enumerate() {
-        g[k] =
-            p.parse::<f64>().ok().filter(|v| v.is_finite()).ok_or_else(|| format!("\"{p}\" is not a finite number"))?;
+        g[k] = p.parse::<f64>().ok().filter(|v| v.is_finite()).ok_or_else(|| format!("\"{p}\" is not a finite number"))?;
     }
     Ok(g)
 }
@@ -341,11 +334,7 @@ fn parse_gravity(s: &str) -> Result<[f64; 3], String> {
 /// ASCII letters, digits and `._-+()` kept, anything else `_`; `bundle.zip` when empty.
 pub(super) fn safe_file_name(raw: &str) -> String {
     let last = raw.rsplit(['/', '\\']).next().unwrap_or_default();
-    let cleaned: String = last
-        .chars()
-        .take(200)
-        .map(|c| if c.is_ascii_alphanumeric() || "._-+()".contains(c) { c } else { '_' })
-        .collect();
+    let cleaned: String = last.chars().take(200).map(|c| if c.is_ascii_alphanumeric() || "._-+()".contains(c) { c } else { '_' }).collect();
     if cleaned.trim_matches(['.', '_']).is_empty() {
         "bundle.zip".to_string()
     } else {
@@ -375,9 +364,7 @@ async fn accept_upload(state: &AppState, upload: Upload) -> Result<(Upload, Stri
     blocking(move || {
         let _permit = permit;
         let checked = export::check_bundle(&upload.bundle, &upload.bundle_name, &upload.options)?;
-        let sha = blobs
-            .put(&upload.bundle)
-            .map_err(|e| ApiError::Internal(anyhow::Error::new(e).context("storing the bundle")))?;
+        let sha = blobs.put(&upload.bundle).map_err(|e| ApiError::Internal(anyhow::Error::new(e).context("storing the bundle")))?;
         Ok((upload, sha, checked.model_name))
     })
     .await
@@ -420,9 +407,7 @@ async fn create_version(
         bundle_size: i64::try_from(upload.bundle.len()).unwrap_or(i64::MAX),
         options_json: &options,
     };
-    let created = db::create_version(&state.store.pool, &id, &nv)
-        .await?
-        .ok_or_else(|| ApiError::NotFound(format!("model {id}")))?;
+    let created = db::create_version(&state.store.pool, &id, &nv).await?.ok_or_else(|| ApiError::NotFound(format!("model {id}")))?;
     state.jobs.notify();
     Ok(accepted(created))
 }
@@ -434,22 +419,14 @@ async fn list_models(State(state): State<AppState>) -> Result<Json<Vec<ModelView
     Ok(Json(db::list_models(&state.store.pool).await?.into_iter().map(ModelView::from).collect()))
 }
 
-async fn get_model(
-    State(state): State<AppState>,
-    path: Result<Path<String>, PathRejection>,
-) -> Result<Json<ModelDetail>, ApiError> {
+async fn get_model(State(state): State<AppState>, path: Result<Path<String>, PathRejection>) -> Result<Json<ModelDetail>, ApiError> {
     let id = model_id(path)?;
-    let model =
-        db::get_model(&state.store.pool, &id).await?.ok_or_else(|| ApiError::NotFound(format!("model {id}")))?;
-    let versions =
-        db::list_versions(&state.store.pool, &id).await?.into_iter().map(version_view).collect::<Result<_, _>>()?;
+    let model = db::get_model(&state.store.pool, &id).await?.ok_or_else(|| ApiError::NotFound(format!("model {id}")))?;
+    let versions = db::list_versions(&state.store.pool, &id).await?.into_iter().map(version_view).collect::<Result<_, _>>()?;
     Ok(Json(ModelDetail { model: model.into(), versions }))
 }
 
-async fn delete_model(
-    State(state): State<AppState>,
-    path: Result<Path<String>, PathRejection>,
-) -> Result<StatusCode, ApiError> {
+async fn delete_model(State(state): State<AppState>, path: Result<Path<String>, PathRejection>) -> Result<StatusCode, ApiError> {
     let id = model_id(path)?;
     if db::delete_model(&state.store.pool, &id).await? {
         tracing::info!(model_id = %id, "model deleted");
@@ -467,15 +444,12 @@ async fn list_versions(
     if db::get_model(&state.store.pool, &id).await?.is_none() {
         return Err(ApiError::NotFound(format!("model {id}")));
     }
-    let versions =
-        db::list_versions(&state.store.pool, &id).await?.into_iter().map(version_view).collect::<Result<_, _>>()?;
+    let versions = db::list_versions(&state.store.pool, &id).await?.into_iter().map(version_view).collect::<Result<_, _>>()?;
     Ok(Json(versions))
 }
 
 async fn find_version(state: &AppState, id: &str, v: i64) -> Result<VersionRow, ApiError> {
-    db::get_version(&state.store.pool, id, v)
-        .await?
-        .ok_or_else(|| ApiError::NotFound(format!("version {v} of model {id}")))
+    db::get_version(&state.store.pool, id, v).await?.ok_or_else(|| ApiError::NotFound(format!("version {v} of model {id}")))
 }
 
 async fn get_version(
@@ -510,11 +484,8 @@ fn not_converted(v: &VersionRow) -> Response {
         }
     }
     let poll = v.job_id.as_ref().map(|j| format!("; poll /api/jobs/{j}")).unwrap_or_default();
-    ApiError::Conflict(format!(
-        "version {} of model {} is not converted yet (status {}){poll}",
-        v.version, v.model_id, v.status
-    ))
-    .into_response()
+    ApiError::Conflict(format!("version {} of model {} is not converted yet (status {}){poll}", v.version, v.model_id, v.status))
+        .into_response()
 }
 
 async fn read_blob(state: &AppState, hash: String) -> Result<Vec<u8>, ApiError> {
@@ -536,10 +507,7 @@ fn outputs(v: &VersionRow) -> Option<(String, String)> {
     }
 }
 
-async fn package(
-    State(state): State<AppState>,
-    path: Result<Path<(String, String)>, PathRejection>,
-) -> Result<Response, ApiError> {
+async fn package(State(state): State<AppState>, path: Result<Path<(String, String)>, PathRejection>) -> Result<Response, ApiError> {
     let (id, v) = version_ids(path)?;
     let (bytes, stem, package) = match stored_package(&state, &id, v).await? {
         Ok(found) => found,
@@ -560,10 +528,7 @@ async fn stored_package(state: &AppState, id: &str, v: i64) -> Result<Result<(Ve
 }
 
 /// The URDF inside the version's package (`<Pkg>/<Pkg>.urdf`, written by `back::urdf`).
-async fn robot_urdf(
-    State(state): State<AppState>,
-    path: Result<Path<(String, String)>, PathRejection>,
-) -> Result<Response, ApiError> {
+async fn robot_urdf(State(state): State<AppState>, path: Result<Path<(String, String)>, PathRejection>) -> Result<Response, ApiError> {
     let (id, v) = version_ids(path)?;
     let (bytes, stem, package) = match stored_package(&state, &id, v).await? {
         Ok(found) => found,
@@ -634,10 +599,7 @@ fn zip_entry(zip_bytes: &[u8], wanted: &str) -> Result<Option<Vec<u8>>, ApiError
     Ok(Some(out))
 }
 
-async fn report(
-    State(state): State<AppState>,
-    path: Result<Path<(String, String)>, PathRejection>,
-) -> Result<Response, ApiError> {
+async fn report(State(state): State<AppState>, path: Result<Path<(String, String)>, PathRejection>) -> Result<Response, ApiError> {
     let (id, v) = version_ids(path)?;
     let row = find_version(&state, &id, v).await?;
     let Some((_, report)) = outputs(&row) else { return Ok(not_converted(&row)) };
@@ -645,10 +607,7 @@ async fn report(
     Ok(file(bytes, "application/json", None, &report))
 }
 
-async fn bundle(
-    State(state): State<AppState>,
-    path: Result<Path<(String, String)>, PathRejection>,
-) -> Result<Response, ApiError> {
+async fn bundle(State(state): State<AppState>, path: Result<Path<(String, String)>, PathRejection>) -> Result<Response, ApiError> {
     let (id, v) = version_ids(path)?;
     let row = find_version(&state, &id, v).await?;
     let bytes = read_blob(&state, row.bundle_sha256.clone()).await?;
@@ -677,10 +636,7 @@ struct DiffView {
 async fn converted_report(state: &AppState, id: &str, v: i64) -> Result<Value, ApiError> {
     let row = find_version(state, id, v).await?;
     let Some((_, report)) = outputs(&row) else {
-        return Err(ApiError::Conflict(format!(
-            "version {v} of model {id} has no report to compare (status {})",
-            row.status
-        )));
+        return Err(ApiError::Conflict(format!("version {v} of model {id} has no report to compare (status {})", row.status)));
     };
     let bytes = read_blob(state, report).await?;
     serde_json::from_slice(&bytes).map_err(|e| ApiError::Internal(anyhow::anyhow!("stored report is corrupt: {e}")))
@@ -692,9 +648,8 @@ async fn diff(
     query: Result<Query<DiffQuery>, QueryRejection>,
 ) -> Result<Json<DiffView>, ApiError> {
     let id = model_id(path)?;
-    let Query(q) = query.map_err(|e| {
-        ApiError::BadRequest(format!("expected ?from=<version>&to=<version> (numbers): {}", e.body_text()))
-    })?;
+    let Query(q) =
+        query.map_err(|e| ApiError::BadRequest(format!("expected ?from=<version>&to=<version> (numbers): {}", e.body_text())))?;
     if db::get_model(&state.store.pool, &id).await?.is_none() {
         return Err(ApiError::NotFound(format!("model {id}")));
     }

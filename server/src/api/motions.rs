@@ -23,9 +23,9 @@ use super::extract::{Path, Query};
 use super::ApiError;
 use crate::app::AppState;
 use crate::service::export::ExportOptions;
-use cad2mo_engine::motion::plan::{self, LimitsEdit, MotionSpec};
 use crate::service::motions::{self, Kinematic};
 use crate::store;
+use cad2mo_engine::motion::plan::{self, LimitsEdit, MotionSpec};
 
 pub fn router() -> Router<AppState> {
     Router::new()
@@ -64,7 +64,10 @@ pub(super) async fn converted_version(
     let v = match version {
         None => versions.into_iter().filter(|v| v.report_sha256.is_some()).max_by_key(|v| v.version),
         Some(n) => {
-            let v = versions.into_iter().find(|v| v.version == n).ok_or_else(|| ApiError::NotFound(format!("version {n} of model {model_id}")))?;
+            let v = versions
+                .into_iter()
+                .find(|v| v.version == n)
+                .ok_or_else(|| ApiError::NotFound(format!("version {n} of model {model_id}")))?;
             if v.report_sha256.is_none() {
                 return Err(ApiError::Conflict(format!("version {n} of model {model_id} is not converted (yet)")));
             }
@@ -152,17 +155,10 @@ async fn put_limits(
     store::motions::put_limits(&state.store, &model_id, &joint, &edit).await?;
     let edits = store::motions::limits(&state.store, &model_id).await?;
     let view = motions::joints_view(&k, version, &edits);
-    view.joints
-        .into_iter()
-        .find(|j| j.name == joint)
-        .map(Json)
-        .ok_or_else(|| ApiError::Internal(anyhow::anyhow!("joint {joint} vanished")))
+    view.joints.into_iter().find(|j| j.name == joint).map(Json).ok_or_else(|| ApiError::Internal(anyhow::anyhow!("joint {joint} vanished")))
 }
 
-async fn delete_limits(
-    State(state): State<AppState>,
-    Path((model_id, joint)): Path<(String, String)>,
-) -> Result<StatusCode, ApiError> {
+async fn delete_limits(State(state): State<AppState>, Path((model_id, joint)): Path<(String, String)>) -> Result<StatusCode, ApiError> {
     model_exists(&state, &model_id).await?;
     if store::motions::delete_limits(&state.store, &model_id, &joint).await? {
         Ok(StatusCode::NO_CONTENT)
@@ -212,7 +208,10 @@ pub(super) async fn find(state: &AppState, model_id: &str, motion_id: &str) -> R
     store::motions::get(&state.store, model_id, motion_id).await?.ok_or_else(|| ApiError::NotFound(format!("motion {motion_id}")))
 }
 
-async fn get_one(State(state): State<AppState>, Path((model_id, motion_id)): Path<(String, String)>) -> Result<Json<store::motions::Motion>, ApiError> {
+async fn get_one(
+    State(state): State<AppState>,
+    Path((model_id, motion_id)): Path<(String, String)>,
+) -> Result<Json<store::motions::Motion>, ApiError> {
     Ok(Json(find(&state, &model_id, &motion_id).await?))
 }
 
@@ -317,7 +316,10 @@ async fn ik(
         }
         let target = plan::ik_target(&b.position, &b.rotation);
         if target.is_none() {
-            issues.push(cad2mo_engine::library::Issue::new("rotation", "must be a rotation matrix (orthonormal to 1e-6, determinant +1), rows first"));
+            issues.push(cad2mo_engine::library::Issue::new(
+                "rotation",
+                "must be a rotation matrix (orthonormal to 1e-6, determinant +1), rows first",
+            ));
         }
         let mut seed: Vec<f64> = axes.iter().map(|a| a.q0).collect();
         for (name, v) in &b.seed {

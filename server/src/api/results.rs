@@ -20,8 +20,8 @@ use super::extract::{Path, Query};
 use super::models::{invalid, multipart_error, multipart_upload, safe_file_name};
 use super::ApiError;
 use crate::app::AppState;
-use cad2mo_engine::results::{self, mat::Trajectory};
 use crate::store;
+use cad2mo_engine::results::{self, mat::Trajectory};
 
 pub fn router() -> Router<AppState> {
     Router::new()
@@ -49,8 +49,8 @@ struct ResultDto {
 }
 
 fn dto(r: store::results::ResultRow) -> Result<ResultDto, ApiError> {
-    let summary: results::Summary = serde_json::from_str(&r.summary_json)
-        .map_err(|e| ApiError::Internal(anyhow::anyhow!("summary of result {}: {e}", r.id)))?;
+    let summary: results::Summary =
+        serde_json::from_str(&r.summary_json).map_err(|e| ApiError::Internal(anyhow::anyhow!("summary of result {}: {e}", r.id)))?;
     Ok(ResultDto { id: r.id, model_id: r.model_id, version: r.version, name: r.name, size: r.size, created_at: r.created_at, summary })
 }
 
@@ -101,7 +101,11 @@ fn unreadable(name: &str, message: String) -> ApiError {
 
 type Created = (StatusCode, [(header::HeaderName, String); 1], Json<ResultDto>);
 
-async fn upload(State(state): State<AppState>, Path((model_id, version)): Path<(String, i64)>, up: ResultUpload) -> Result<Created, ApiError> {
+async fn upload(
+    State(state): State<AppState>,
+    Path((model_id, version)): Path<(String, i64)>,
+    up: ResultUpload,
+) -> Result<Created, ApiError> {
     let (version, k) = super::motions::kinematic_at(&state, &model_id, Some(version)).await?;
     store_upload(&state, up, Some((&model_id, version)), move |t, name| {
         results::summarise(t, &k.mech, name).map(|(summary, _)| summary).map_err(|m| unreadable(name, m))
@@ -227,11 +231,7 @@ struct SeriesList {
 }
 
 /// `?name=a&name=b&width=800`: repeated `name`s, parsed from the raw query.
-async fn series(
-    State(state): State<AppState>,
-    Path(id): Path<String>,
-    uri: axum::http::Uri,
-) -> Result<Json<SeriesList>, ApiError> {
+async fn series(State(state): State<AppState>, Path(id): Path<String>, uri: axum::http::Uri) -> Result<Json<SeriesList>, ApiError> {
     let mut names = Vec::new();
     let mut width = 1000usize;
     for (k, v) in url_pairs(uri.query().unwrap_or_default()) {

@@ -158,7 +158,14 @@ pub fn matrix(v: &VersionShapes, edits: &Edits) -> MatrixView {
     let orphans = edits
         .iter()
         .filter(|(k, _)| !seen.contains(*k))
-        .map(|((a, b), x)| PairView { a: a.clone(), b: b.clone(), allowed: *x, default: false, custom: true, why: "a body is not in this version".into() })
+        .map(|((a, b), x)| PairView {
+            a: a.clone(),
+            b: b.clone(),
+            allowed: *x,
+            default: false,
+            custom: true,
+            why: "a body is not in this version".into(),
+        })
         .collect();
     MatrixView { bodies: with.iter().map(|&i| v.bodies[i].clone()).collect(), pairs, orphans }
 }
@@ -212,7 +219,14 @@ pub const SWEEP_RATE: f64 = 1000.0;
 
 /// Checks a planned motion: body poses from the mechanism's forward kinematics at every sample
 /// (the mechanism's bodies are the package's, in the same order).
-pub fn along_motion(mech: &Mechanism, v: &VersionShapes, edits: &Edits, version: i64, name: &str, p: &Planned) -> Result<MotionCollisions, CollisionError> {
+pub fn along_motion(
+    mech: &Mechanism,
+    v: &VersionShapes,
+    edits: &Edits,
+    version: i64,
+    name: &str,
+    p: &Planned,
+) -> Result<MotionCollisions, CollisionError> {
     let s = p.closed_samples(mech, SWEEP_RATE).map_err(|issues| crate::service::motions::invalid(name, issues))?;
     if mech.body_names() != v.bodies.as_slice() {
         return Err(internal("the mechanism's bodies differ from the package's".into()));
@@ -234,15 +248,20 @@ pub fn along_motion(mech: &Mechanism, v: &VersionShapes, edits: &Edits, version:
     }
     let world = collision::World::new(&v.shapes);
     let sweep = collision::sweep(&world, &s.t, &|k| poses[k].clone(), &|i, j| checked(v, edits, i, j), &SweepOptions::default());
-    let mut pairs: Vec<PairSweepView> = sweep
-        .pairs
-        .iter()
-        .map(|p| PairSweepView { a: v.bodies[p.a].clone(), b: v.bodies[p.b].clone(), sweep: p.clone() })
-        .collect();
+    let mut pairs: Vec<PairSweepView> =
+        sweep.pairs.iter().map(|p| PairSweepView { a: v.bodies[p.a].clone(), b: v.bodies[p.b].clone(), sweep: p.clone() }).collect();
     pairs.sort_by(|x, y| x.sweep.min_distance.total_cmp(&y.sweep.min_distance));
     let first_contact = pairs
         .iter()
         .filter_map(|p| p.sweep.first_contact.map(|t| FirstContact { a: p.a.clone(), b: p.b.clone(), time: t }))
         .min_by(|x, y| x.time.total_cmp(&y.time));
-    Ok(MotionCollisions { motion: name.to_string(), version, samples: sweep.samples, rate_hz: SWEEP_RATE, guarantee: sweep.guarantee, first_contact, pairs })
+    Ok(MotionCollisions {
+        motion: name.to_string(),
+        version,
+        samples: sweep.samples,
+        rate_hz: SWEEP_RATE,
+        guarantee: sweep.guarantee,
+        first_contact,
+        pairs,
+    })
 }

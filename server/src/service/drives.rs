@@ -222,7 +222,10 @@ pub async fn resolve_for_model(store: &crate::store::Store, model_id: &str) -> R
             let c = choice(&class, &inst, a.overrides.get(slot)).map_err(|issues| DriveError::Overrides {
                 joint: a.joint.clone(),
                 slot,
-                errors: issues.into_iter().map(|i| FieldError { field: format!("{}.{slot}.{}", a.joint, i.field), message: i.message }).collect(),
+                errors: issues
+                    .into_iter()
+                    .map(|i| FieldError { field: format!("{}.{slot}.{}", a.joint, i.field), message: i.message })
+                    .collect(),
             })?;
             picked.push(c);
         }

@@ -14,8 +14,8 @@ use serde::Serialize;
 
 use super::drives::DriveError;
 use super::FieldError;
-use crate::store::StoreError;
 use crate::service::export::{self, ExportOptions};
+use crate::store::StoreError;
 use cad2mo_engine::library::Issue;
 use cad2mo_engine::mechanism::{CoordKind, Mechanism};
 use cad2mo_engine::motion::plan::{self, Axis, AxisLimits, LimitsEdit, MotionSpec, Planned, Samples};
@@ -122,7 +122,12 @@ impl Kinematic {
                 rotation: [0, 1, 2].map(|i| [0, 1, 2].map(|j| r[(i, j)])),
             });
         }
-        Ok(Kinematic { mech, joint_node_ids, frames, gravity: Vector3::from(options.gravity.unwrap_or_else(|| pipeline::default_gravity(&a.model))) })
+        Ok(Kinematic {
+            mech,
+            joint_node_ids,
+            frames,
+            gravity: Vector3::from(options.gravity.unwrap_or_else(|| pipeline::default_gravity(&a.model))),
+        })
     }
 }
 
@@ -282,11 +287,8 @@ pub fn trajectory(k: &Kinematic, version: i64, name: &str, p: &Planned, rate: f6
             plan::MAX_SAMPLES
         )));
     }
-    let samples = p
-        .closed_samples(&k.mech, rate)
-        .map_err(|i| invalid(&format!("motion \"{name}\" cannot be planned"), i))?;
-    let (tau, _) = plan::inverse_dynamics(&k.mech, &samples, &k.gravity, usize::MAX)
-        .map_err(|e| MotionError::Dynamics(e.to_string()))?;
+    let samples = p.closed_samples(&k.mech, rate).map_err(|i| invalid(&format!("motion \"{name}\" cannot be planned"), i))?;
+    let (tau, _) = plan::inverse_dynamics(&k.mech, &samples, &k.gravity, usize::MAX).map_err(|e| MotionError::Dynamics(e.to_string()))?;
     Ok(TrajectoryView {
         motion: name.to_string(),
         version,
@@ -424,8 +426,7 @@ pub fn sizing(
     catalog: &cad2mo_engine::sizing::Catalog,
 ) -> Result<SizingReport, MotionError> {
     let samples = p.closed_samples(mech, SIZING_RATE).map_err(|i| invalid(&format!("motion \"{name}\" cannot be planned"), i))?;
-    let (tau, inertia) = plan::inverse_dynamics(mech, &samples, gravity, 10)
-        .map_err(|e| MotionError::Dynamics(e.to_string()))?;
+    let (tau, inertia) = plan::inverse_dynamics(mech, &samples, gravity, 10).map_err(|e| MotionError::Dynamics(e.to_string()))?;
     let mut report = SizingReport {
         motion: name.to_string(),
         version,
@@ -470,18 +471,17 @@ pub fn sizing(
             }
             continue;
         };
-        let overrides = |slot: &str, class: &cad2mo_engine::library::Class| -> Result<Vec<(String, cad2mo_engine::library::Value)>, String> {
+        let overrides = |slot: &str,
+                         class: &cad2mo_engine::library::Class|
+         -> Result<Vec<(String, cad2mo_engine::library::Value)>, String> {
             match d.overrides.get(slot).and_then(serde_json::Value::as_object) {
-                Some(map) => cad2mo_engine::library::validate_overrides(class, map).map_err(|issues| {
-                    issues.iter().map(|i| format!("{slot} {}: {}", i.field, i.message)).collect::<Vec<_>>().join("; ")
-                }),
+                Some(map) => cad2mo_engine::library::validate_overrides(class, map)
+                    .map_err(|issues| issues.iter().map(|i| format!("{slot} {}: {}", i.field, i.message)).collect::<Vec<_>>().join("; ")),
                 None => Ok(Vec::new()),
             }
         };
         let sized = overrides("motor", &d.motor.1)
-            .and_then(|mo| {
-                cad2mo_engine::sizing::parts::motor(&d.motor.1, &d.motor.0, &mo).map_err(|e| e.to_string())
-            })
+            .and_then(|mo| cad2mo_engine::sizing::parts::motor(&d.motor.1, &d.motor.0, &mo).map_err(|e| e.to_string()))
             .and_then(|motor| {
                 let go = overrides("gear", &d.gear.1)?;
                 let gear = cad2mo_engine::sizing::parts::gear(&d.gear.1, &d.gear.0, &go).map_err(|e| e.to_string())?;

@@ -106,13 +106,11 @@ impl Blobs {
         if bucket.is_empty() {
             return Err(std::io::Error::other(format!("blob URL {url}: no bucket")));
         }
-        let mut builder = object_store::aws::AmazonS3Builder::from_env().with_bucket_name(bucket).with_retry(
-            object_store::RetryConfig {
-                max_retries: 4,
-                retry_timeout: std::time::Duration::from_secs(60),
-                backoff: Default::default(),
-            },
-        );
+        let mut builder = object_store::aws::AmazonS3Builder::from_env().with_bucket_name(bucket).with_retry(object_store::RetryConfig {
+            max_retries: 4,
+            retry_timeout: std::time::Duration::from_secs(60),
+            backoff: Default::default(),
+        });
         if let Some(endpoint) = &settings.s3_endpoint {
             builder = builder.with_endpoint(endpoint).with_allow_http(endpoint.starts_with("http://"));
         }
@@ -278,7 +276,11 @@ impl Blobs {
                 })
                 .map_err(object_error)?;
                 for key in keys {
-                    let rel = if prefix.is_empty() { Some(key.as_str()) } else { key.strip_prefix(prefix.as_str()).and_then(|k| k.strip_prefix('/')) };
+                    let rel = if prefix.is_empty() {
+                        Some(key.as_str())
+                    } else {
+                        key.strip_prefix(prefix.as_str()).and_then(|k| k.strip_prefix('/'))
+                    };
                     if let Some((dir, name)) = rel.and_then(|r| r.split_once('/')) {
                         if is_hash(name) && name[..2] == *dir {
                             hashes.push(name.to_string());
@@ -427,7 +429,9 @@ mod tests {
             assert_eq!(b.get("../x").unwrap(), None);
             // Other keys under the prefix are not blobs.
             handle.block_on(store.put(&ObjectPath::from("some/prefix/notes.txt"), PutPayload::from_static(b"x"))).unwrap();
-            handle.block_on(store.put(&ObjectPath::from("elsewhere/aa/".to_string() + &"a".repeat(64)), PutPayload::from_static(b"x"))).unwrap();
+            handle
+                .block_on(store.put(&ObjectPath::from("elsewhere/aa/".to_string() + &"a".repeat(64)), PutPayload::from_static(b"x")))
+                .unwrap();
             assert_eq!(b.list().unwrap(), vec![h.clone()]);
             // Overwritten with other bytes (same size): an error on read, never served.
             handle.block_on(store.put(&key, PutPayload::from_static(b"jello"))).unwrap();

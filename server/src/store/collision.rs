@@ -4,7 +4,11 @@ use super::{now, Store, StoreError};
 
 /// A pair's names in storage order (`a < b`).
 pub fn ordered<'a>(a: &'a str, b: &'a str) -> (&'a str, &'a str) {
-    if a < b { (a, b) } else { (b, a) }
+    if a < b {
+        (a, b)
+    } else {
+        (b, a)
+    }
 }
 
 /// The edited pairs of a model: (a, b, allowed) with `a < b`.

@@ -63,6 +63,10 @@ pub async fn put(store: &Store, model_id: &str, a: &Assignment) -> Result<(), St
 
 /// Removes an assignment; false when there was none.
 pub async fn delete(store: &Store, model_id: &str, joint: &str) -> Result<bool, StoreError> {
-    let r = sqlx::query(&store.pool.sql("DELETE FROM drives WHERE model_id = ? AND joint = ?")).bind(model_id).bind(joint).execute(&store.pool).await?;
+    let r = sqlx::query(&store.pool.sql("DELETE FROM drives WHERE model_id = ? AND joint = ?"))
+        .bind(model_id)
+        .bind(joint)
+        .execute(&store.pool)
+        .await?;
     Ok(r.rows_affected() > 0)
 }

@@ -72,8 +72,8 @@ fn decode_value(ty: ParamType, raw: &str) -> Option<Value> {
 
 /// Values in class order; stored values of parameters the class no longer has are ignored.
 fn decode_values(class: &Class, instance: &str, json: &str) -> Result<Vec<(String, Value)>, StoreError> {
-    let raw: BTreeMap<String, Box<RawValue>> = serde_json::from_str(json)
-        .map_err(|e| corrupt(format!("values of instance {instance}: {e}")))?;
+    let raw: BTreeMap<String, Box<RawValue>> =
+        serde_json::from_str(json).map_err(|e| corrupt(format!("values of instance {instance}: {e}")))?;
     let mut values = Vec::with_capacity(class.parameters.len());
     for p in &class.parameters {
         if let Some(r) = raw.get(&p.name) {
@@ -94,9 +94,7 @@ fn decode_param(row: ParamRow) -> Result<(String, Parameter), StoreError> {
     let ty = ParamType::parse(&ty).ok_or_else(|| corrupt(format!("parameter {name} of class {class_id}: type {ty}")))?;
     let default = match default_json {
         None => None,
-        Some(j) => Some(
-            decode_value(ty, &j).ok_or_else(|| corrupt(format!("default of parameter {name} of class {class_id}: {j}")))?,
-        ),
+        Some(j) => Some(decode_value(ty, &j).ok_or_else(|| corrupt(format!("default of parameter {name} of class {class_id}: {j}")))?),
     };
     Ok((class_id, Parameter { name, ty, unit, min, max, editable: editable != 0, datasheet: datasheet != 0, default, comment }))
 }
@@ -106,14 +104,16 @@ fn decode_param(row: ParamRow) -> Result<(String, Parameter), StoreError> {
 
 /// Classes (all, or the one with `id`), by name, with their parameters in order.
 async fn load_classes(conn: &mut AnyConnection, id: Option<&str>) -> Result<Vec<Class>, StoreError> {
-    let rows: Vec<ClassRow> = sqlx::query_as(&sql(Engine::of(conn),
+    let rows: Vec<ClassRow> = sqlx::query_as(&sql(
+        Engine::of(conn),
         "SELECT id, name, domain, modelica_class, description FROM library_classes
          WHERE ?1 IS NULL OR id = ?1 ORDER BY name, id",
     ))
     .bind(id)
     .fetch_all(&mut *conn)
     .await?;
-    let params: Vec<ParamRow> = sqlx::query_as(&sql(Engine::of(conn),
+    let params: Vec<ParamRow> = sqlx::query_as(&sql(
+        Engine::of(conn),
         "SELECT class_id, name, type, unit, min_value, max_value, editable, datasheet, default_json, comment
          FROM library_parameters WHERE ?1 IS NULL OR class_id = ?1 ORDER BY class_id, position, name",
     ))
@@ -141,7 +141,8 @@ async fn load_instances(
     class_id: Option<&str>,
     domain: Option<&str>,
 ) -> Result<Vec<(Instance, Class)>, StoreError> {
-    let rows: Vec<InstanceRow> = sqlx::query_as(&sql(Engine::of(conn),
+    let rows: Vec<InstanceRow> = sqlx::query_as(&sql(
+        Engine::of(conn),
         "SELECT i.id, i.class_id, i.name, i.values_json, i.source
          FROM library_instances i JOIN library_classes c ON c.id = i.class_id
          WHERE (?1 IS NULL OR i.id = ?1) AND (?2 IS NULL OR i.class_id = ?2) AND (?3 IS NULL OR c.domain = ?3)
@@ -189,11 +190,7 @@ pub async fn get_class(store: &Store, id: &str) -> Result<Option<Class>, StoreEr
 }
 
 /// Instances, optionally of one class or one domain, each with its class.
-pub async fn list_instances(
-    store: &Store,
-    class_id: Option<&str>,
-    domain: Option<&str>,
-) -> Result<Vec<(Instance, Class)>, StoreError> {
+pub async fn list_instances(store: &Store, class_id: Option<&str>, domain: Option<&str>) -> Result<Vec<(Instance, Class)>, StoreError> {
     let mut conn = store.pool.acquire().await?;
     load_instances(&mut conn, None, class_id, domain).await
 }
@@ -215,7 +212,8 @@ pub async fn export(store: &Store) -> Result<Library, StoreError> {
 
 /// Creates or replaces a class row and all its parameters.
 async fn write_class(conn: &mut AnyConnection, c: &Class) -> Result<(), StoreError> {
-    sqlx::query(&sql(Engine::of(conn),
+    sqlx::query(&sql(
+        Engine::of(conn),
         "INSERT INTO library_classes (id, name, domain, modelica_class, description) VALUES (?1, ?2, ?3, ?4, ?5)
          ON CONFLICT(id) DO UPDATE SET name = excluded.name, domain = excluded.domain,
              modelica_class = excluded.modelica_class, description = excluded.description",
@@ -229,7 +227,8 @@ async fn write_class(conn: &mut AnyConnection, c: &Class) -> Result<(), StoreErr
     .await?;
     sqlx::query(&sql(Engine::of(conn), "DELETE FROM library_parameters WHERE class_id = ?1")).bind(&c.id).execute(&mut *conn).await?;
     for (position, p) in c.parameters.iter().enumerate() {
-        sqlx::query(&sql(Engine::of(conn),
+        sqlx::query(&sql(
+            Engine::of(conn),
             "INSERT INTO library_parameters
                  (class_id, name, position, type, unit, min_value, max_value, editable, datasheet, default_json, comment)
              VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11)",
@@ -256,7 +255,8 @@ async fn write_class(conn: &mut AnyConnection, c: &Class) -> Result<(), StoreErr
 
 /// Creates or replaces an instance row.
 async fn write_instance(conn: &mut AnyConnection, i: &Instance) -> Result<(), StoreError> {
-    sqlx::query(&sql(Engine::of(conn),
+    sqlx::query(&sql(
+        Engine::of(conn),
         "INSERT INTO library_instances (id, class_id, name, values_json, source) VALUES (?1, ?2, ?3, ?4, ?5)
          ON CONFLICT(id) DO UPDATE SET class_id = excluded.class_id, name = excluded.name,
              values_json = excluded.values_json, source = excluded.source",
@@ -291,8 +291,7 @@ pub async fn update_class(
     let Some(old) = load_classes(&mut tx, Some(id)).await?.into_iter().next() else {
         return Ok(Change::NotFound);
     };
-    let instances: Vec<Instance> =
-        load_instances(&mut tx, None, Some(id), None).await?.into_iter().map(|(i, _)| i).collect();
+    let instances: Vec<Instance> = load_instances(&mut tx, None, Some(id), None).await?.into_iter().map(|(i, _)| i).collect();
     let (class, migrated) = match check(&old, &instances) {
         Ok(x) => x,
         Err(issues) => return Ok(Change::Rejected(issues)),
@@ -318,10 +317,11 @@ pub async fn delete_class(store: &Store, id: &str) -> Result<Removal, StoreError
     let Some((name,)) = found else {
         return Ok(Removal::NotFound);
     };
-    let users: Vec<(String,)> = sqlx::query_as(&sql(Engine::of(&tx), "SELECT name FROM library_instances WHERE class_id = ?1 ORDER BY name"))
-        .bind(id)
-        .fetch_all(&mut *tx)
-        .await?;
+    let users: Vec<(String,)> =
+        sqlx::query_as(&sql(Engine::of(&tx), "SELECT name FROM library_instances WHERE class_id = ?1 ORDER BY name"))
+            .bind(id)
+            .fetch_all(&mut *tx)
+            .await?;
     if !users.is_empty() {
         let names: Vec<String> = users.iter().take(5).map(|(n,)| format!("\"{n}\"")).collect();
         let more = if users.len() > 5 { format!(" and {} more", users.len() - 5) } else { String::new() };
@@ -382,7 +382,8 @@ pub async fn delete_instance(store: &Store, id: &str) -> Result<Removal, StoreEr
     let Some((name,)) = found else {
         return Ok(Removal::NotFound);
     };
-    let drives: Vec<(String, String)> = sqlx::query_as(&sql(Engine::of(&tx),
+    let drives: Vec<(String, String)> = sqlx::query_as(&sql(
+        Engine::of(&tx),
         "SELECT model_id, joint FROM drives
          WHERE motor_instance = ?1 OR gear_instance = ?1 OR controller_instance = ?1 ORDER BY model_id, joint",
     ))
@@ -407,10 +408,18 @@ pub async fn delete_instance(store: &Store, id: &str) -> Result<Removal, StoreEr
 /// move between items of the same file without tripping the UNIQUE constraints midway.
 async fn apply_plan(conn: &mut AnyConnection, plan: &ImportPlan) -> Result<(), StoreError> {
     for c in &plan.classes {
-        sqlx::query(&sql(Engine::of(conn), "UPDATE library_classes SET name = ?2 || id WHERE id = ?1")).bind(&c.id).bind("\u{1}").execute(&mut *conn).await?;
+        sqlx::query(&sql(Engine::of(conn), "UPDATE library_classes SET name = ?2 || id WHERE id = ?1"))
+            .bind(&c.id)
+            .bind("\u{1}")
+            .execute(&mut *conn)
+            .await?;
     }
     for i in &plan.instances {
-        sqlx::query(&sql(Engine::of(conn), "UPDATE library_instances SET name = ?2 || id WHERE id = ?1")).bind(&i.id).bind("\u{1}").execute(&mut *conn).await?;
+        sqlx::query(&sql(Engine::of(conn), "UPDATE library_instances SET name = ?2 || id WHERE id = ?1"))
+            .bind(&i.id)
+            .bind("\u{1}")
+            .execute(&mut *conn)
+            .await?;
     }
     for c in &plan.classes {
         write_class(conn, c).await?;

@@ -179,10 +179,7 @@ impl<'p> sqlx::Executor<'p> for &Pool {
         (&self.any).fetch_many(query)
     }
 
-    fn fetch_optional<'e, 'q: 'e, E>(
-        self,
-        query: E,
-    ) -> futures_core::future::BoxFuture<'e, Result<Option<sqlx::any::AnyRow>, sqlx::Error>>
+    fn fetch_optional<'e, 'q: 'e, E>(self, query: E) -> futures_core::future::BoxFuture<'e, Result<Option<sqlx::any::AnyRow>, sqlx::Error>>
     where
         'p: 'e,
         E: 'q + sqlx::Execute<'q, sqlx::Any>,
@@ -201,10 +198,7 @@ impl<'p> sqlx::Executor<'p> for &Pool {
         (&self.any).prepare_with(sql, parameters)
     }
 
-    fn describe<'e, 'q: 'e>(
-        self,
-        sql: &'q str,
-    ) -> futures_core::future::BoxFuture<'e, Result<sqlx::Describe<sqlx::Any>, sqlx::Error>>
+    fn describe<'e, 'q: 'e>(self, sql: &'q str) -> futures_core::future::BoxFuture<'e, Result<sqlx::Describe<sqlx::Any>, sqlx::Error>>
     where
         'p: 'e,
     {
@@ -318,14 +312,20 @@ mod tests {
     fn applied_sqlite_migrations_are_byte_identical() {
         use sha2::Digest;
         let applied = [
-        ("0001_init.sql", "403287fe7abb052666819f310348e437edbeebcace0ad4ee7dd63829a7f1db9d3da21c4bd8eeefce4ba1c7719c7ac96f"),
-        ("0002_versions.sql", "99699dea2b0a2ca99ea552f78b9f2b139e4cbeb087feddceefdc4aaff6c76ee2cda680ced48a43ebbc3cafbc3b26d649"),
-        ("0003_job_attempts.sql", "9e8ec94eb2fa73b054d7764b736ba8936c40c1d63a00b7eb16bbd1945bdbd52af5d6b68e671959ecc68adac977075364"),
-        ("0004_token_expiry.sql", "9fa0a47517a8dcd09680a4f33ef8dac826549fe9448dfc23a1ef1f4fa7f5b6732c89650335777ab3ae624f89f1bbdf3f"),
-        ("0005_library_datasheet.sql", "a9c0c613806d5cc48c19ba8ad992328c3672b716168e17cf79594a8712ece0d3a4a5694b4aee7cbec82cea9718c93743"),
-        ("0006_motions.sql", "dc0f3117036c9a715bf11e9df6ef1109cd5a57473af28ff279bbfaad0a5d6ab415a544aa8eda4cb524b709c0018299c1"),
-        ("0007_results.sql", "6ae9fa4e16e2467df3021a2780f4dcf9e3f82d35e08ba6f86c84dc28fedc98471fcf51a97a0d7e0b500463e09b63ac71"),
-        ("0008_collision_pairs.sql", "bcd3412e4defa56bb1820c6d436498fc8e8f771bc59d193b6a35b001ed179accd66955b35777bc1bc6c3c758c22bc471"),
+            ("0001_init.sql", "403287fe7abb052666819f310348e437edbeebcace0ad4ee7dd63829a7f1db9d3da21c4bd8eeefce4ba1c7719c7ac96f"),
+            ("0002_versions.sql", "99699dea2b0a2ca99ea552f78b9f2b139e4cbeb087feddceefdc4aaff6c76ee2cda680ced48a43ebbc3cafbc3b26d649"),
+            ("0003_job_attempts.sql", "9e8ec94eb2fa73b054d7764b736ba8936c40c1d63a00b7eb16bbd1945bdbd52af5d6b68e671959ecc68adac977075364"),
+            ("0004_token_expiry.sql", "9fa0a47517a8dcd09680a4f33ef8dac826549fe9448dfc23a1ef1f4fa7f5b6732c89650335777ab3ae624f89f1bbdf3f"),
+            (
+                "0005_library_datasheet.sql",
+                "a9c0c613806d5cc48c19ba8ad992328c3672b716168e17cf79594a8712ece0d3a4a5694b4aee7cbec82cea9718c93743",
+            ),
+            ("0006_motions.sql", "dc0f3117036c9a715bf11e9df6ef1109cd5a57473af28ff279bbfaad0a5d6ab415a544aa8eda4cb524b709c0018299c1"),
+            ("0007_results.sql", "6ae9fa4e16e2467df3021a2780f4dcf9e3f82d35e08ba6f86c84dc28fedc98471fcf51a97a0d7e0b500463e09b63ac71"),
+            (
+                "0008_collision_pairs.sql",
+                "bcd3412e4defa56bb1820c6d436498fc8e8f771bc59d193b6a35b001ed179accd66955b35777bc1bc6c3c758c22bc471",
+            ),
         ];
         let migrator = sqlx::migrate!("../migrations/sqlite");
         for (file, digest) in applied {

@@ -121,16 +121,14 @@ fn new_id() -> String {
 }
 
 /// Inserts the version row and its convert job (inside the caller's transaction).
-async fn insert_version_and_job(
-    tx: &mut AnyConnection,
-    model_id: &str,
-    version: i64,
-    v: &NewVersion<'_>,
-) -> Result<String, StoreError> {
-    sqlx::query(&sql(Engine::of(tx), format!(
-        "INSERT INTO versions (model_id, version, created_at, bundle_name, bundle_sha256, bundle_size, options_json, status)
+async fn insert_version_and_job(tx: &mut AnyConnection, model_id: &str, version: i64, v: &NewVersion<'_>) -> Result<String, StoreError> {
+    sqlx::query(&sql(
+        Engine::of(tx),
+        format!(
+            "INSERT INTO versions (model_id, version, created_at, bundle_name, bundle_sha256, bundle_size, options_json, status)
          VALUES (?, ?, {NOW}, ?, ?, ?, ?, 'queued')"
-    )))
+        ),
+    ))
     .bind(model_id)
     .bind(version)
     .bind(v.bundle_name)
@@ -145,9 +143,10 @@ async fn insert_version_and_job(
 /// Inserts a queued job of `kind` for a version (inside the caller's transaction).
 async fn insert_job(tx: &mut AnyConnection, kind: &str, model_id: &str, version: i64) -> Result<String, StoreError> {
     let job_id = new_id();
-    sqlx::query(&sql(Engine::of(tx), format!(
-        "INSERT INTO jobs (id, kind, model_id, version, status, created_at) VALUES (?, ?, ?, ?, 'queued', {NOW})"
-    )))
+    sqlx::query(&sql(
+        Engine::of(tx),
+        format!("INSERT INTO jobs (id, kind, model_id, version, status, created_at) VALUES (?, ?, ?, ?, 'queued', {NOW})"),
+    ))
     .bind(&job_id)
     .bind(kind)
     .bind(model_id)
@@ -173,11 +172,7 @@ pub async fn create_model(pool: &Pool, name: &str, v: &NewVersion<'_>) -> Result
 
 /// Adds a version (numbered after every version the model ever had) and its job, in one
 /// transaction. `None` when the model does not exist.
-pub async fn create_version(
-    pool: &Pool,
-    model_id: &str,
-    v: &NewVersion<'_>,
-) -> Result<Option<Created>, StoreError> {
+pub async fn create_version(pool: &Pool, model_id: &str, v: &NewVersion<'_>) -> Result<Option<Created>, StoreError> {
     let mut tx = pool.begin().await?;
     // A write first, so the transaction takes the write lock at once (no read-then-upgrade).
     let next: Option<(i64,)> =
@@ -215,8 +210,7 @@ pub async fn delete_model(pool: &Pool, id: &str) -> Result<bool, StoreError> {
     Ok(r.rows_affected() > 0)
 }
 
-const VERSION_SELECT: &str =
-    "SELECT v.model_id, v.version, v.created_at, v.bundle_name, v.bundle_sha256, v.bundle_size,
+const VERSION_SELECT: &str = "SELECT v.model_id, v.version, v.created_at, v.bundle_name, v.bundle_sha256, v.bundle_size,
             v.options_json, v.status, v.package_sha256, v.report_sha256, v.error_json, v.summary_json,
             (SELECT j.id FROM jobs j WHERE j.model_id = v.model_id AND j.version = v.version
               ORDER BY j.created_at DESC, j.rowid DESC LIMIT 1) AS job_id
@@ -247,11 +241,7 @@ pub async fn delete_version(pool: &Pool, model_id: &str, version: i64) -> Result
         .bind(version)
         .execute(&mut *tx)
         .await?;
-    sqlx::query(&pool.sql("DELETE FROM jobs WHERE model_id = ? AND version = ?"))
-        .bind(model_id)
-        .bind(version)
-        .execute(&mut *tx)
-        .await?;
+    sqlx::query(&pool.sql("DELETE FROM jobs WHERE model_id = ? AND version = ?")).bind(model_id).bind(version).execute(&mut *tx).await?;
     tx.commit().await?;
     Ok(r.rows_affected() > 0)
 }
@@ -596,4 +586,3 @@ mod tests {
         assert_eq!(list_models(&s.pool).await.unwrap().len(), 1);
     }
 }
-

@@ -9,10 +9,11 @@ use cad2mo_engine::motion::plan::{LimitsEdit, MotionSpec};
 
 /// The limit edits of a model, by joint.
 pub async fn limits(store: &Store, model_id: &str) -> Result<BTreeMap<String, LimitsEdit>, StoreError> {
-    let rows: Vec<(String, String)> = sqlx::query_as(&store.pool.sql("SELECT joint, limits_json FROM joint_limits WHERE model_id = ? ORDER BY joint"))
-        .bind(model_id)
-        .fetch_all(&store.pool)
-        .await?;
+    let rows: Vec<(String, String)> =
+        sqlx::query_as(&store.pool.sql("SELECT joint, limits_json FROM joint_limits WHERE model_id = ? ORDER BY joint"))
+            .bind(model_id)
+            .fetch_all(&store.pool)
+            .await?;
     rows.into_iter()
         .map(|(j, text)| {
             let e: LimitsEdit = serde_json::from_str(&text).map_err(|e| StoreError::Corrupt(format!("limits of {j}: {e}")))?;
@@ -67,10 +68,11 @@ fn from_row((id, name, spec, created_at, updated_at): Row) -> Result<Motion, Sto
 
 /// The motions of a model, oldest first.
 pub async fn list(store: &Store, model_id: &str) -> Result<Vec<Motion>, StoreError> {
-    let rows: Vec<Row> = sqlx::query_as(&store.pool.sql(format!("SELECT {COLUMNS} FROM motions WHERE model_id = ? ORDER BY created_at, rowid")))
-        .bind(model_id)
-        .fetch_all(&store.pool)
-        .await?;
+    let rows: Vec<Row> =
+        sqlx::query_as(&store.pool.sql(format!("SELECT {COLUMNS} FROM motions WHERE model_id = ? ORDER BY created_at, rowid")))
+            .bind(model_id)
+            .fetch_all(&store.pool)
+            .await?;
     rows.into_iter().map(from_row).collect()
 }
 
@@ -118,6 +120,10 @@ pub async fn update(store: &Store, model_id: &str, id: &str, spec: &MotionSpec) 
 
 /// Removes a motion; false when there was none.
 pub async fn delete(store: &Store, model_id: &str, id: &str) -> Result<bool, StoreError> {
-    let r = sqlx::query(&store.pool.sql("DELETE FROM motions WHERE model_id = ? AND id = ?")).bind(model_id).bind(id).execute(&store.pool).await?;
+    let r = sqlx::query(&store.pool.sql("DELETE FROM motions WHERE model_id = ? AND id = ?"))
+        .bind(model_id)
+        .bind(id)
+        .execute(&store.pool)
+        .await?;
     Ok(r.rows_affected() > 0)
 }

@@ -60,20 +60,22 @@ pub async fn insert(
 
 /// The results of a model version, oldest first.
 pub async fn list(store: &Store, model_id: &str, version: i64) -> Result<Vec<ResultRow>, StoreError> {
-    let rows: Vec<Row> =
-        sqlx::query_as(&store.pool.sql(format!("SELECT {COLUMNS} FROM results WHERE model_id = ? AND version = ? ORDER BY created_at, rowid")))
-            .bind(model_id)
-            .bind(version)
-            .fetch_all(&store.pool)
-            .await?;
+    let rows: Vec<Row> = sqlx::query_as(
+        &store.pool.sql(format!("SELECT {COLUMNS} FROM results WHERE model_id = ? AND version = ? ORDER BY created_at, rowid")),
+    )
+    .bind(model_id)
+    .bind(version)
+    .fetch_all(&store.pool)
+    .await?;
     Ok(rows.into_iter().map(from_row).collect())
 }
 
 /// The standalone results (no model), oldest first.
 pub async fn list_standalone(store: &Store) -> Result<Vec<ResultRow>, StoreError> {
-    let rows: Vec<Row> = sqlx::query_as(&store.pool.sql(format!("SELECT {COLUMNS} FROM results WHERE model_id IS NULL ORDER BY created_at, rowid")))
-        .fetch_all(&store.pool)
-        .await?;
+    let rows: Vec<Row> =
+        sqlx::query_as(&store.pool.sql(format!("SELECT {COLUMNS} FROM results WHERE model_id IS NULL ORDER BY created_at, rowid")))
+            .fetch_all(&store.pool)
+            .await?;
     Ok(rows.into_iter().map(from_row).collect())
 }
 

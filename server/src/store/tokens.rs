@@ -34,10 +34,11 @@ pub enum Revoked {
 pub async fn create(store: &Store, name: &str, expires_in_secs: Option<u64>) -> Result<String, StoreError> {
     let token = format!("c2m_{}{}", uuid::Uuid::new_v4().simple(), uuid::Uuid::new_v4().simple());
     let created = now(&store.pool).await?;
-    let expires = match expires_in_secs {
-        Some(secs) => {
-            let secs = i64::try_from(secs).map_err(|_| StoreError::Corrupt("expiry out of range".into()))?;
-            let (t,): (Option<String>,) = match store.pool.engine() {
+    let expires =
+        match expires_in_secs {
+            Some(secs) => {
+                let secs = i64::try_from(secs).map_err(|_| StoreError::Corrupt("expiry out of range".into()))?;
+                let (t,): (Option<String>,) = match store.pool.engine() {
                 Engine::Sqlite => sqlx::query_as("SELECT strftime('%Y-%m-%dT%H:%M:%fZ', ?, ?)")
                     .bind(&created)
                     .bind(format!("+{secs} seconds"))
@@ -51,10 +52,10 @@ pub async fn create(store: &Store, name: &str, expires_in_secs: Option<u64>) -> 
                 .fetch_one(&store.pool)
                 .await?,
             };
-            Some(t.ok_or_else(|| StoreError::Corrupt(format!("expiry {secs} s is out of range")))?)
-        }
-        None => None,
-    };
+                Some(t.ok_or_else(|| StoreError::Corrupt(format!("expiry {secs} s is out of range")))?)
+            }
+            None => None,
+        };
     sqlx::query(&store.pool.sql("INSERT INTO tokens (id, name, sha256, created_at, expires_at) VALUES (?, ?, ?, ?, ?)"))
         .bind(uuid::Uuid::new_v4().to_string())
         .bind(name)
@@ -68,12 +69,11 @@ pub async fn create(store: &Store, name: &str, expires_in_secs: Option<u64>) -> 
 
 /// Whether `token` is a stored token that has not expired.
 pub async fn verify(store: &Store, token: &str) -> Result<bool, StoreError> {
-    let row: Option<(String,)> = sqlx::query_as(&store.pool.sql(format!(
-        "SELECT id FROM tokens WHERE sha256 = ? AND (expires_at IS NULL OR expires_at > {NOW})"
-    )))
-    .bind(sha256_hex(token.as_bytes()))
-    .fetch_optional(&store.pool)
-    .await?;
+    let row: Option<(String,)> =
+        sqlx::query_as(&store.pool.sql(format!("SELECT id FROM tokens WHERE sha256 = ? AND (expires_at IS NULL OR expires_at > {NOW})")))
+            .bind(sha256_hex(token.as_bytes()))
+            .fetch_optional(&store.pool)
+            .await?;
     Ok(row.is_some())
 }
 
@@ -89,7 +89,14 @@ pub async fn list(store: &Store) -> Result<Vec<TokenInfo>, StoreError> {
     .await?;
     Ok(rows
         .into_iter()
-        .map(|(id, name, created_at, expires_at, sha256, expired)| TokenInfo { id, name, created_at, expires_at, sha256, expired: expired != 0 })
+        .map(|(id, name, created_at, expires_at, sha256, expired)| TokenInfo {
+            id,
+            name,
+            created_at,
+            expires_at,
+            sha256,
+            expired: expired != 0,
+        })
         .collect())
 }
 
@@ -111,13 +118,16 @@ pub async fn revoke(store: &Store, name_or_id: &str) -> Result<Revoked, StoreErr
 /// The SHA-256 (hex) of every token that has not expired: the keys live view frames are signed with.
 pub async fn live_hashes(store: &Store) -> Result<Vec<String>, StoreError> {
     let rows: Vec<(String,)> =
-        sqlx::query_as(&store.pool.sql(format!("SELECT sha256 FROM tokens WHERE expires_at IS NULL OR expires_at > {NOW}"))).fetch_all(&store.pool).await?;
+        sqlx::query_as(&store.pool.sql(format!("SELECT sha256 FROM tokens WHERE expires_at IS NULL OR expires_at > {NOW}")))
+            .fetch_all(&store.pool)
+            .await?;
     Ok(rows.into_iter().map(|(h,)| h).collect())
 }
 
 /// The stored hashes (for tests and audits).
 pub async fn hashes(store: &Store) -> Result<Vec<String>, StoreError> {
-    let rows: Vec<(String,)> = sqlx::query_as(&store.pool.sql("SELECT sha256 FROM tokens ORDER BY created_at")).fetch_all(&store.pool).await?;
+    let rows: Vec<(String,)> =
+        sqlx::query_as(&store.pool.sql("SELECT sha256 FROM tokens ORDER BY created_at")).fetch_all(&store.pool).await?;
     Ok(rows.into_iter().map(|(h,)| h).collect())
 }
 

@@ -139,7 +139,11 @@ fn problems_name_the_keyframe_and_joint() {
     let e = plan(&m, &axes, &spec).err().expect("refused");
     let text: Vec<String> = e.iter().map(|i| format!("{}: {}", i.field, i.message)).collect();
     assert!(text.iter().any(|t| t.starts_with("keyframes[1].values.GONE") && t.contains("not a joint")), "{text:?}");
-    assert!(text.iter().any(|t| t.starts_with("keyframes[2]") && t.contains(&format!("{} = 2.5 rad is outside its position limits [-1, 1]", n[1]))), "{text:?}");
+    assert!(
+        text.iter()
+            .any(|t| t.starts_with("keyframes[2]") && t.contains(&format!("{} = 2.5 rad is outside its position limits [-1, 1]", n[1]))),
+        "{text:?}"
+    );
     assert!(text.iter().any(|t| t.starts_with("keyframes[3]") && t.contains("inverse kinematics failed for frame \"TOOL\"")), "{text:?}");
     // The quintic's speed problem only shows once positions are fine.
     let spec2 = MotionSpec { name: "q".into(), keyframes: vec![spec.keyframes[0].clone(), spec.keyframes[4].clone()] };
@@ -156,7 +160,10 @@ fn gravity_torques_along_a_motion_match_a_static_solve() {
     let n = names(&m);
     let spec = MotionSpec {
         name: "m".into(),
-        keyframes: vec![joints(&[], Interpolation::Ptp, None), Keyframe { dwell: Some(1.0), ..joints(&[(&n[1], 0.3)], Interpolation::Ptp, None) }],
+        keyframes: vec![
+            joints(&[], Interpolation::Ptp, None),
+            Keyframe { dwell: Some(1.0), ..joints(&[(&n[1], 0.3)], Interpolation::Ptp, None) },
+        ],
     };
     let p = plan(&m, &axes, &spec).expect("plans");
     let s = p.samples(100.0);
@@ -187,7 +194,10 @@ fn loop_mechanisms_are_driven_at_their_independent_joints() {
     let follower = axes.iter().enumerate().find(|(i, _)| !driven.contains(i)).map(|(_, a)| a.name.clone()).expect("a follower");
     let spec = MotionSpec {
         name: "crank".into(),
-        keyframes: vec![joints(&[], Interpolation::Ptp, None), joints(&[(&d, axes[driven[0]].q0 + 0.3)], Interpolation::Quintic, Some(1.0))],
+        keyframes: vec![
+            joints(&[], Interpolation::Ptp, None),
+            joints(&[(&d, axes[driven[0]].q0 + 0.3)], Interpolation::Quintic, Some(1.0)),
+        ],
     };
     let p = plan(&m, &axes, &spec).expect("plans");
     let s = p.closed_samples(&m, 100.0).expect("closes");
@@ -203,7 +213,10 @@ fn loop_mechanisms_are_driven_at_their_independent_joints() {
     assert!(tau[f].iter().all(|t| *t == 0.0));
     assert!(tau[driven[0]].iter().any(|t| t.abs() > 0.0) && inertia[driven[0]] > 0.0);
     // A keyframe on a follower is refused, naming the driven joints.
-    let bad = MotionSpec { name: "x".into(), keyframes: vec![joints(&[], Interpolation::Ptp, None), joints(&[(&follower, 0.1)], Interpolation::Ptp, None)] };
+    let bad = MotionSpec {
+        name: "x".into(),
+        keyframes: vec![joints(&[], Interpolation::Ptp, None), joints(&[(&follower, 0.1)], Interpolation::Ptp, None)],
+    };
     let e = plan(&m, &axes, &bad).err().expect("refused");
     assert!(e[0].message.contains("follows the closure of a kinematic loop") && e[0].message.contains(&d), "{e:?}");
 }

@@ -318,7 +318,13 @@ impl Collision {
             let more = if bare.len() > shown.len() { format!(" and {} more", bare.len() - shown.len()) } else { String::new() };
             warnings.push(Warning::new(
                 "no-collision-shape",
-                format!("{} bod{} with mass but no mesh ha{} no collision shape and cannot collide: {}{more}", bare.len(), if bare.len() == 1 { "y" } else { "ies" }, if bare.len() == 1 { "s" } else { "ve" }, shown.join(", ")),
+                format!(
+                    "{} bod{} with mass but no mesh ha{} no collision shape and cannot collide: {}{more}",
+                    bare.len(),
+                    if bare.len() == 1 { "y" } else { "ies" },
+                    if bare.len() == 1 { "s" } else { "ve" },
+                    shown.join(", ")
+                ),
                 "collision shapes".to_string(),
             ));
         }

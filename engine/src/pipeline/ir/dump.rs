@@ -30,7 +30,15 @@ pub fn dump(model: &Model) -> String {
         let _ = writeln!(
             s,
             "  inertia_cg [[{:.9e}, {:.9e}, {:.9e}], [{:.9e}, {:.9e}, {:.9e}], [{:.9e}, {:.9e}, {:.9e}]]",
-            i[(0, 0)], i[(0, 1)], i[(0, 2)], i[(1, 0)], i[(1, 1)], i[(1, 2)], i[(2, 0)], i[(2, 1)], i[(2, 2)]
+            i[(0, 0)],
+            i[(0, 1)],
+            i[(0, 2)],
+            i[(1, 0)],
+            i[(1, 1)],
+            i[(1, 2)],
+            i[(2, 0)],
+            i[(2, 1)],
+            i[(2, 2)]
         );
         if let Some(m) = &b.material {
             let _ = writeln!(s, "  material {:?}", m.color);

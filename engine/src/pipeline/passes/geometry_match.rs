@@ -195,8 +195,7 @@ pub fn match_scene(
         while let Some((v, done)) = stack.pop() {
             if done {
                 tout[v] = clock;
-                has_geometry[v] = !scene.nodes[v].shapes.is_empty()
-                    || scene.nodes[v].children.iter().any(|c| has_geometry[*c]);
+                has_geometry[v] = !scene.nodes[v].shapes.is_empty() || scene.nodes[v].children.iter().any(|c| has_geometry[*c]);
                 continue;
             }
             tin[v] = clock;
@@ -209,16 +208,12 @@ pub fn match_scene(
     }
     let contains = |a: NodeId, b: NodeId| tin[a] <= tin[b] && tin[b] < tout[a] && a != b;
     let geo_nodes: Vec<NodeId> = (0..n).filter(|&v| has_geometry[v]).collect();
-    let raw_origins: Vec<Vector3<f64>> = geo_nodes
-        .iter()
-        .map(|&v| scene.nodes[v].global.fixed_view::<3, 1>(0, 3).into_owned())
-        .collect();
+    let raw_origins: Vec<Vector3<f64>> = geo_nodes.iter().map(|&v| scene.nodes[v].global.fixed_view::<3, 1>(0, 3).into_owned()).collect();
     let rotations: Vec<Rotation3<f64>> = geo_nodes.iter().map(|&v| rotation_of(&scene.nodes[v].global)).collect();
 
     // Bodies to match: those without a mesh, except RootParts.
-    let targets: Vec<usize> = (0..model.bodies.len())
-        .filter(|&i| model.bodies[i].mesh.is_none() && !is_root_part(&model.bodies[i]))
-        .collect();
+    let targets: Vec<usize> =
+        (0..model.bodies.len()).filter(|&i| model.bodies[i].mesh.is_none() && !is_root_part(&model.bodies[i])).collect();
     let cs1_poses: Vec<nalgebra::Isometry3<f64>> = model.bodies.iter().map(|b| model.frame(b.cs1).pose).collect();
     let cs1 = |i: usize| cs1_poses[i];
     let size = {
@@ -229,7 +224,11 @@ pub fn match_scene(
             lo = lo.inf(p);
             hi = hi.sup(p);
         }
-        if pts.is_empty() { 0.0 } else { (hi - lo).norm() }
+        if pts.is_empty() {
+            0.0
+        } else {
+            (hi - lo).norm()
+        }
     };
     let tol = opts.tolerance_m.unwrap_or((size * 1e-4).max(1e-6));
     let angle_tol = opts.angle_tolerance.unwrap_or(1e-3);
@@ -262,9 +261,7 @@ pub fn match_scene(
     for (body, paths) in pins {
         let &bi = body_by_node.get(body.as_str()).ok_or_else(|| MatchError::UnknownPinnedBody(body.clone()))?;
         for p in paths {
-            let &node = path_index
-                .get(p.as_str())
-                .ok_or_else(|| MatchError::UnknownPinnedNode { body: body.clone(), path: p.clone() })?;
+            let &node = path_index.get(p.as_str()).ok_or_else(|| MatchError::UnknownPinnedNode { body: body.clone(), path: p.clone() })?;
             pinned_nodes.insert(node);
             chosen.entry(bi).or_default().push((node, Rule::Pinned));
         }
@@ -289,11 +286,8 @@ pub fn match_scene(
         }
         let r = body_rot(i);
         let oriented: Vec<usize> = pos.iter().copied().filter(|k| angle_between(&r, &rotations[*k]) <= angle_tol).collect();
-        let (mut c, mut rule) = if !oriented.is_empty() && oriented.len() < pos.len() {
-            (oriented, Rule::Orientation)
-        } else {
-            (pos, Rule::Position)
-        };
+        let (mut c, mut rule) =
+            if !oriented.is_empty() && oriented.len() < pos.len() { (oriented, Rule::Orientation) } else { (pos, Rule::Position) };
         let stem = name_stem(&model.bodies[i].cad_name);
         let named: Vec<usize> = c.iter().copied().filter(|k| name_stem(&scene.nodes[geo_nodes[*k]].name) == stem).collect();
         if !named.is_empty() && named.len() < c.len() {
@@ -310,7 +304,13 @@ pub fn match_scene(
     tour.sort_unstable();
     let mut next_other = vec![tour.len(); tour.len()];
     for i in (0..tour.len()).rev() {
-        next_other[i] = if i + 1 < tour.len() && tour[i + 1].1 != tour[i].1 { i + 1 } else if i + 1 < tour.len() { next_other[i + 1] } else { tour.len() };
+        next_other[i] = if i + 1 < tour.len() && tour[i + 1].1 != tour[i].1 {
+            i + 1
+        } else if i + 1 < tour.len() {
+            next_other[i + 1]
+        } else {
+            tour.len()
+        };
     }
     // Whether a strict descendant of `node` is another body's candidate (an assembly group).
     let holds_other = |node: NodeId, body: usize| -> bool {
@@ -375,13 +375,8 @@ pub fn match_scene(
     }
 
     // Merge shapes into meshes in CS1, metres.
-    let mut report = MatchReport {
-        files: scene.files.clone(),
-        scale,
-        scale_score: (best.1, targets.len()),
-        tolerance_m: tol,
-        ..MatchReport::default()
-    };
+    let mut report =
+        MatchReport { files: scene.files.clone(), scale, scale_score: (best.1, targets.len()), tolerance_m: tol, ..MatchReport::default() };
     let mut covered = vec![false; n];
     for (&i, nodes) in &chosen {
         let pose = cs1(i);

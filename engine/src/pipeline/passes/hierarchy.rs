@@ -169,8 +169,7 @@ pub fn build_with(model: &Model, cut_last: &BTreeSet<JointId>) -> Hierarchy {
         }
     };
     bfs(world, &mut depth, &mut tree);
-    let mut free_bodies: Vec<BodyId> =
-        (0..nb).filter(|&i| depth[i].is_none()).map(|i| BodyId(i as u32)).collect();
+    let mut free_bodies: Vec<BodyId> = (0..nb).filter(|&i| depth[i].is_none()).map(|i| BodyId(i as u32)).collect();
     free_bodies.sort_by(|a, b| model.body(*a).node_id.cmp(&model.body(*b).node_id));
     let mut free_depth = depth.clone();
     let mut free_roots = Vec::new();
@@ -213,12 +212,7 @@ fn sort_key(model: &Model, j: JointId) -> (bool, &str) {
 
 /// Tree joints between nodes `a` and `b` (via their lowest common ancestor): those from `a` up,
 /// then those down to `b`, and how many are on `a`'s side.
-fn tree_path(
-    mut a: usize,
-    mut b: usize,
-    parent: &[Option<(JointId, usize)>],
-    depth: &[Option<u32>],
-) -> (Vec<JointId>, usize) {
+fn tree_path(mut a: usize, mut b: usize, parent: &[Option<(JointId, usize)>], depth: &[Option<u32>]) -> (Vec<JointId>, usize) {
     let d = |n: usize| depth[n].unwrap_or(0);
     let (mut up_a, mut up_b) = (Vec::new(), Vec::new());
     while d(a) > d(b) {

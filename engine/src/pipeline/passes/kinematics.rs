@@ -82,7 +82,9 @@ pub struct Chain {
 /// (revolute) or a translation along it by `q` m (prismatic); the identity for the others.
 pub fn element_motion(kind: PrimitiveKind, axis: &Vector3<f64>, q: f64) -> Isometry3<f64> {
     match kind {
-        PrimitiveKind::Revolute => Isometry3::from_parts(Translation3::identity(), UnitQuaternion::from_axis_angle(&Unit::new_unchecked(*axis), q)),
+        PrimitiveKind::Revolute => {
+            Isometry3::from_parts(Translation3::identity(), UnitQuaternion::from_axis_angle(&Unit::new_unchecked(*axis), q))
+        }
         PrimitiveKind::Prismatic => Isometry3::translation(axis.x * q, axis.y * q, axis.z * q),
         PrimitiveKind::Spherical | PrimitiveKind::Weld => Isometry3::identity(),
     }
@@ -382,9 +384,7 @@ mod tests {
         let mut cur = *b;
         for e in &c.elements {
             match e.kind {
-                PrimitiveKind::Revolute => {
-                    cur.rotation *= UnitQuaternion::from_axis_angle(&Unit::new_normalize(e.axis), e.q0)
-                }
+                PrimitiveKind::Revolute => cur.rotation *= UnitQuaternion::from_axis_angle(&Unit::new_normalize(e.axis), e.q0),
                 PrimitiveKind::Prismatic => cur.translation.vector += cur.rotation * (e.axis * e.q0),
                 _ => {}
             }
@@ -397,8 +397,7 @@ mod tests {
         let rb = Rotation3::from_euler_angles(0.3, -0.2, 1.1);
         let b = Isometry3::from_parts(Translation3::new(0.1, 0.2, 0.3), rb.into());
         let axis_world = rb * Vector3::new(0.0, 0.0, 1.0);
-        let f_rot = UnitQuaternion::from_rotation_matrix(&rb)
-            * UnitQuaternion::from_axis_angle(&Vector3::z_axis(), 0.5);
+        let f_rot = UnitQuaternion::from_rotation_matrix(&rb) * UnitQuaternion::from_axis_angle(&Vector3::z_axis(), 0.5);
         let f = Isometry3::from_parts(b.translation, f_rot);
         let (m, j) = model_with(b, f, &[(PrimitiveKind::Revolute, axis_world.into())]);
         let c = chain(&m, &j);
@@ -412,10 +411,7 @@ mod tests {
     #[test]
     fn six_dof_chain_reproduces_pose() {
         let b = Isometry3::translation(0.0, 0.0, 0.0);
-        let f = Isometry3::from_parts(
-            Translation3::new(0.01, -0.02, 0.03),
-            UnitQuaternion::from_euler_angles(0.2, 0.1, -0.4),
-        );
+        let f = Isometry3::from_parts(Translation3::new(0.01, -0.02, 0.03), UnitQuaternion::from_euler_angles(0.2, 0.1, -0.4));
         let (m, j) = model_with(
             b,
             f,

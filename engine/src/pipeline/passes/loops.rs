@@ -221,8 +221,7 @@ fn better_cut(model: &Model, chains: &[Chain], l: &hierarchy::Loop) -> Option<Jo
         return pick(&|c| single(c, PrimitiveKind::Revolute));
     }
     if closing.elements.len() > 1 {
-        return pick(&|c| single(c, PrimitiveKind::Revolute))
-            .or_else(|| pick(&|c| c.elements.len() == 1));
+        return pick(&|c| single(c, PrimitiveKind::Revolute)).or_else(|| pick(&|c| c.elements.len() == 1));
     }
     None
 }
@@ -230,11 +229,8 @@ fn better_cut(model: &Model, chains: &[Chain], l: &hierarchy::Loop) -> Option<Jo
 /// Replaces the axes of every planar loop's joints by the loop's common normal (loops that share
 /// joints share one normal) and recomputes their chains. Returns each loop's normal.
 fn snap_planar(model: &Model, h: &Hierarchy, chains: &mut [Chain]) -> Vec<Option<Vector3<f64>>> {
-    let normals: Vec<Option<Vector3<f64>>> = h
-        .loops
-        .iter()
-        .map(|l| if l.kind == LoopKind::Kinematic { planar_normal(&loop_joints(l), chains) } else { None })
-        .collect();
+    let normals: Vec<Option<Vector3<f64>>> =
+        h.loops.iter().map(|l| if l.kind == LoopKind::Kinematic { planar_normal(&loop_joints(l), chains) } else { None }).collect();
     // Groups of planar loops sharing a joint, merged by union-find over loop indices.
     let mut group = hierarchy::Dsu::new(normals.len());
     let mut owner = vec![None; model.joints.len()];
@@ -344,10 +340,7 @@ fn annihilator(t: &[Vector6<f64>]) -> Vec<Vector6<f64>> {
     }
     let svd = nalgebra::linalg::SVD::new(m.clone() * m.transpose(), true, false);
     let Some(u) = svd.u else { return Vec::new() };
-    (0..6)
-        .filter(|&i| svd.singular_values[i] <= RANK_TOL * RANK_TOL)
-        .map(|i| Vector6::from_iterator(u.column(i).iter().copied()))
-        .collect()
+    (0..6).filter(|&i| svd.singular_values[i] <= RANK_TOL * RANK_TOL).map(|i| Vector6::from_iterator(u.column(i).iter().copied())).collect()
 }
 
 /// The rows `w . M` of constraint wrenches acting through the relative-twist map `m`.
@@ -381,10 +374,7 @@ impl RowBasis {
         }
         let svd = m.svd(false, true);
         let Some(v_t) = svd.v_t else { return Vec::new() };
-        (0..svd.singular_values.len())
-            .filter(|&i| svd.singular_values[i] > RANK_TOL)
-            .map(|i| v_t.row(i).transpose())
-            .collect()
+        (0..svd.singular_values.len()).filter(|&i| svd.singular_values[i] > RANK_TOL).map(|i| v_t.row(i).transpose()).collect()
     }
 
     fn accept(&mut self, rows: Vec<DVector<f64>>) {
@@ -508,12 +498,7 @@ fn candidates(e: &Element, frame_a: &Matrix3<f64>, planar: Option<Vector3<f64>>,
 }
 
 /// Chooses every loop's cut and the fixed start values.
-fn choose_cuts(
-    model: &Model,
-    h: &Hierarchy,
-    chains: &mut [Chain],
-    normals: &[Option<Vector3<f64>>],
-) -> (Vec<LoopInfo>, Vec<Warning>) {
+fn choose_cuts(model: &Model, h: &Hierarchy, chains: &mut [Chain], normals: &[Option<Vector3<f64>>]) -> (Vec<LoopInfo>, Vec<Warning>) {
     let kinematic: Vec<usize> = (0..h.loops.len()).filter(|&i| h.loops[i].kind == LoopKind::Kinematic).collect();
     // Scale: the centroid and extent of every loop joint's element origins.
     let origins: Vec<Vector3<f64>> = kinematic
@@ -683,7 +668,11 @@ fn explain(cut: &Cut, plain: &str, equations: usize, k: usize, planar: bool) -> 
         Cut::Omitted => format!("the rest of the mechanism already implies all {equations} equations of the {plain}: not emitted"),
         Cut::PlanarLoopConstraint => format!(
             "{head}; the loop is planar{}, so RevolutePlanarLoopConstraint imposes the 2 in-plane position equations",
-            if planar { " (axes parallel within 1e-4 rad, emitted exactly parallel; a change beyond 1e-12 rad is in the joint's corrections)" } else { "" }
+            if planar {
+                " (axes parallel within 1e-4 rad, emitted exactly parallel; a change beyond 1e-12 rad is in the joint's corrections)"
+            } else {
+                ""
+            }
         ),
         Cut::Constraint(cc) => {
             let mut s = format!("{head}; Joints.Constraints.{} imposes exactly those", cc.class.name());
@@ -815,7 +804,11 @@ mod tests {
         let p = plan(&m).expect("plan");
         let (_, info) = only_loop(&p);
         assert_eq!((info.rank, info.mobility, info.independent, info.planar_normal), (4, 0, 3, None));
-        assert!(matches!(&info.cut, Cut::Constraint(c) if c.class == ConstraintClass::Spherical && c.locked == [true; 3]), "{:?}", info.cut);
+        assert!(
+            matches!(&info.cut, Cut::Constraint(c) if c.class == ConstraintClass::Spherical && c.locked == [true; 3]),
+            "{:?}",
+            info.cut
+        );
     }
 
     #[test]
@@ -824,7 +817,11 @@ mod tests {
         // The closing joint becomes a universal joint: the cut moves to a single revolute and the
         // universal joint joins the tree.
         let closing = plan(&m).expect("plan").hierarchy.loops[0].closing;
-        m.joints[closing.index()].primitives.push(Primitive { kind: PrimitiveKind::Revolute, axis_world: Vector3::x(), loc: SourceLoc::default() });
+        m.joints[closing.index()].primitives.push(Primitive {
+            kind: PrimitiveKind::Revolute,
+            axis_world: Vector3::x(),
+            loc: SourceLoc::default(),
+        });
         let p = plan(&m).expect("plan");
         let (l, info) = only_loop(&p);
         assert_ne!(l.closing, closing);

@@ -47,9 +47,7 @@ pub fn lump(model: &Model, h: &Hierarchy) -> Lumped {
         if !joint.is_weld() {
             continue;
         }
-        if let (Node::Body(a), Node::Body(b)) =
-            (hierarchy::node_of(model, joint.base), hierarchy::node_of(model, joint.follower))
-        {
+        if let (Node::Body(a), Node::Body(b)) = (hierarchy::node_of(model, joint.base), hierarchy::node_of(model, joint.follower)) {
             group.union(a.index(), b.index());
             internal.push(j);
         }
@@ -82,8 +80,7 @@ pub fn lump(model: &Model, h: &Hierarchy) -> Lumped {
         }
         if list.len() > 1 {
             combine(model, &mut out, rep, list);
-            let mut names: Vec<String> =
-                list.iter().filter(|b| **b != rep).map(|b| model.body(*b).node_id.clone()).collect();
+            let mut names: Vec<String> = list.iter().filter(|b| **b != rep).map(|b| model.body(*b).node_id.clone()).collect();
             names.sort();
             merged.insert(model.body(rep).node_id.clone(), names);
         }
@@ -121,11 +118,7 @@ pub fn lump(model: &Model, h: &Hierarchy) -> Lumped {
             }
         })
         .collect();
-    out.joints = model
-        .joint_ids()
-        .filter(|j| internal.binary_search(j).is_err())
-        .map(|j| model.joint(j).clone())
-        .collect();
+    out.joints = model.joint_ids().filter(|j| internal.binary_search(j).is_err()).map(|j| model.joint(j).clone()).collect();
     // Couplings refer to movable joints, which all survive; their indices shift.
     let kept: Vec<_> = model.joint_ids().filter(|j| internal.binary_search(j).is_err()).collect();
     out.couplings = model
@@ -143,18 +136,14 @@ pub fn lump(model: &Model, h: &Hierarchy) -> Lumped {
 fn combine(model: &Model, out: &mut Model, rep: BodyId, list: &[BodyId]) {
     let mass: f64 = list.iter().map(|b| model.body(*b).mass).sum();
     let cg_of = |b: BodyId| model.frame(model.body(b).cg).pose.translation.vector;
-    let c: Vector3<f64> = if mass > 0.0 {
-        list.iter().map(|b| cg_of(*b) * model.body(*b).mass).sum::<Vector3<f64>>() / mass
-    } else {
-        cg_of(rep)
-    };
+    let c: Vector3<f64> =
+        if mass > 0.0 { list.iter().map(|b| cg_of(*b) * model.body(*b).mass).sum::<Vector3<f64>>() / mass } else { cg_of(rep) };
     let mut inertia_world = Matrix3::zeros();
     for b in list {
         let body = model.body(*b);
         let r = model.frame(body.cg).pose.rotation.to_rotation_matrix().into_inner();
         let d = cg_of(*b) - c;
-        inertia_world += r * body.inertia_cg * r.transpose()
-            + (Matrix3::identity() * d.norm_squared() - d * d.transpose()) * body.mass;
+        inertia_world += r * body.inertia_cg * r.transpose() + (Matrix3::identity() * d.norm_squared() - d * d.transpose()) * body.mass;
     }
     let rep_body = model.body(rep);
     let rep_cg = rep_body.cg;

@@ -110,9 +110,13 @@ fn check_magnitudes(model: &Model) -> Result<(), ValidationError> {
         }
         if let Some(mesh) = &b.mesh {
             // The largest coordinate, or the first one that is not finite.
-            let worst = mesh.vertices.iter().flatten().map(|c| f64::from(c.abs())).find(|c| !c.is_finite()).unwrap_or_else(|| {
-                mesh.vertices.iter().flatten().map(|c| f64::from(c.abs())).fold(0.0, f64::max)
-            });
+            let worst = mesh
+                .vertices
+                .iter()
+                .flatten()
+                .map(|c| f64::from(c.abs()))
+                .find(|c| !c.is_finite())
+                .unwrap_or_else(|| mesh.vertices.iter().flatten().map(|c| f64::from(c.abs())).fold(0.0, f64::max));
             let what = || format!("a vertex coordinate of the mesh of {} ({})", name(), b.geometry_sources.join(", "));
             check(&b.loc, &what, worst, MAX_LENGTH_M, "m")?;
         }
@@ -146,11 +150,7 @@ pub fn validate(model: &Model, analysis: Analysis) -> Result<Validated, Validati
     let mut warnings = Vec::new();
     for body in &model.bodies {
         if body.mass < 0.0 {
-            return Err(ValidationError::NegativeMass {
-                loc: body.loc.clone(),
-                body: body.cad_name.clone(),
-                mass: body.mass,
-            });
+            return Err(ValidationError::NegativeMass { loc: body.loc.clone(), body: body.cad_name.clone(), mass: body.mass });
         }
         check_inertia(body, &mut warnings);
         check_density(body, &mut warnings);
@@ -225,9 +225,7 @@ fn body_location(b: &Body) -> String {
 }
 
 fn fmt_matrix(m: &Matrix3<f64>) -> String {
-    let rows: Vec<String> = (0..3)
-        .map(|r| format!("[{:e}, {:e}, {:e}]", m[(r, 0)], m[(r, 1)], m[(r, 2)]))
-        .collect();
+    let rows: Vec<String> = (0..3).map(|r| format!("[{:e}, {:e}, {:e}]", m[(r, 0)], m[(r, 1)], m[(r, 2)])).collect();
     format!("[{}]", rows.join(", "))
 }
 

@@ -24,7 +24,8 @@ fn small() -> Vec<u8> {
     text_cols(&mut f, "name", &["Time", "x", "k", "y", "R.T[1, 2]", "a.der(b)"]);
     text_cols(&mut f, "description", &["Time in [s]", "Position [m]", "Gain", "Mirror [m]", "", "Δ speed [m/s]"]);
     // dataInfo 4 x 6 (transposed): block, column, 0, -1.
-    let info = [0.0, 1.0, 0.0, -1.0, 2.0, 2.0, 0.0, -1.0, 1.0, 1.0, 0.0, -1.0, 2.0, -2.0, 0.0, -1.0, 2.0, 3.0, 0.0, -1.0, 2.0, 4.0, 0.0, -1.0];
+    let info =
+        [0.0, 1.0, 0.0, -1.0, 2.0, 2.0, 0.0, -1.0, 1.0, 1.0, 0.0, -1.0, 2.0, -2.0, 0.0, -1.0, 2.0, 3.0, 0.0, -1.0, 2.0, 4.0, 0.0, -1.0];
     matrix(&mut f, "dataInfo", 2, false, 4, 6, &info);
     matrix(&mut f, "data_1", 1, false, 1, 2, &[2.5, 2.5]);
     // data_2: 4 variables x 3 instants, one instant per column.
@@ -69,7 +70,10 @@ fn refusals_say_what_the_file_is() {
     if let Some(b) = fixture("kdavies4+ModelicaRes/PID_1_dslin.mat") {
         assert!(matches!(Trajectory::read(&b, "dslin.mat"), Err(MatError::Linearisation { .. })));
     }
-    assert!(matches!(Trajectory::read(b"hello world, not a mat file at all", "x.mat"), Err(MatError::BadMatrix { .. } | MatError::Truncated { .. })));
+    assert!(matches!(
+        Trajectory::read(b"hello world, not a mat file at all", "x.mat"),
+        Err(MatError::BadMatrix { .. } | MatError::Truncated { .. })
+    ));
     assert!(Trajectory::read(&[], "empty.mat").is_err());
 }
 
@@ -122,7 +126,8 @@ fn frame(t: &Trajectory, prefix: &str, i: usize) -> (Vector3<f64>, Matrix3<f64>)
 /// the box's pose agrees at every common instant, and both rotations are orthonormal.
 #[test]
 fn the_same_model_from_two_tools_has_the_same_poses() {
-    let (Some(om), Some(dy)) = (fixture("mechanomy+ModelicaMAT/FallingBodyBox_om1.19.0.mat"), fixture("mechanomy+ModelicaMAT/FallingBodyBox_dymola2021.mat"))
+    let (Some(om), Some(dy)) =
+        (fixture("mechanomy+ModelicaMAT/FallingBodyBox_om1.19.0.mat"), fixture("mechanomy+ModelicaMAT/FallingBodyBox_dymola2021.mat"))
     else {
         return;
     };

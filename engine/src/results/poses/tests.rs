@@ -27,10 +27,8 @@ fn result(m: &Mechanism, frames: bool) -> (Vec<f64>, Vec<u8>) {
     }
     if frames {
         for (b, name) in m.body_names().iter().enumerate() {
-            let poses: Vec<Isometry3<f64>> = time
-                .iter()
-                .map(|t| m.body_pose(&m.forward(&q_at(m, *t)).expect("fk"), BodyId(b as u32)).expect("pose"))
-                .collect();
+            let poses: Vec<Isometry3<f64>> =
+                time.iter().map(|t| m.body_pose(&m.forward(&q_at(m, *t)).expect("fk"), BodyId(b as u32)).expect("pose")).collect();
             for k in 0..3 {
                 series.push((format!("{name}.frame_a.r_0[{}]", k + 1), poses.iter().map(|p| p.translation.vector[k]).collect()));
             }
@@ -68,7 +66,12 @@ fn poses_from_frames_agree_with_our_kinematics() {
     let at = p.data.len() - 7;
     let pos = Vector3::new(p.data[at].into(), p.data[at + 1].into(), p.data[at + 2].into());
     assert!((pos - last.translation.vector).norm() < 1e-5);
-    let qn = UnitQuaternion::from_quaternion(nalgebra::Quaternion::new(p.data[at + 6].into(), p.data[at + 3].into(), p.data[at + 4].into(), p.data[at + 5].into()));
+    let qn = UnitQuaternion::from_quaternion(nalgebra::Quaternion::new(
+        p.data[at + 6].into(),
+        p.data[at + 3].into(),
+        p.data[at + 4].into(),
+        p.data[at + 5].into(),
+    ));
     assert!(qn.angle_to(&last.rotation) < 1e-5, "rotation off by {}", qn.angle_to(&last.rotation));
 }
 

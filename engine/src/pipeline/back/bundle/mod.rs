@@ -93,9 +93,8 @@ mod tests {
     /// run, and every file reads back.
     #[test]
     fn pieces_give_the_bytes_of_one_run() {
-        let files: Vec<(String, Vec<u8>)> = (0..40)
-            .map(|i| (format!("P/f{i}.txt"), (0..200_000u32).map(|k| ((k * 7 + i) % 251) as u8).collect()))
-            .collect();
+        let files: Vec<(String, Vec<u8>)> =
+            (0..40).map(|i| (format!("P/f{i}.txt"), (0..200_000u32).map(|k| ((k * 7 + i) % 251) as u8).collect())).collect();
         let total: usize = files.iter().map(|(_, b)| b.len()).sum();
         assert!(total >= super::PARALLEL_BYTES);
         let parallel = super::write_zip(&files).unwrap();

@@ -66,9 +66,7 @@ const GREYS: [u8; 9] = [7, 8, 9, 250, 251, 252, 253, 254, 255];
 /// and white to 7.
 pub fn nearest_aci(rgb: [u8; 3]) -> u8 {
     let (lo, hi) = (rgb.iter().min().copied().unwrap_or(0), rgb.iter().max().copied().unwrap_or(0));
-    let dist = |i: u8| {
-        self::rgb(i).map_or(u32::MAX, |c| (0..3).map(|k| (i32::from(c[k]) - i32::from(rgb[k])).pow(2) as u32).sum())
-    };
+    let dist = |i: u8| self::rgb(i).map_or(u32::MAX, |c| (0..3).map(|k| (i32::from(c[k]) - i32::from(rgb[k])).pow(2) as u32).sum());
     let best = |candidates: &mut dyn Iterator<Item = u8>| candidates.min_by_key(|&i| (dist(i), i)).unwrap_or(7);
     if hi - lo <= 16 {
         best(&mut GREYS.iter().copied())

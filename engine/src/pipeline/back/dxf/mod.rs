@@ -33,11 +33,8 @@ use std::io::Write;
 
 /// `name` as an R12 table name.
 fn layer_name(name: &str) -> String {
-    let s: String = name
-        .chars()
-        .take(31)
-        .map(|c| if c.is_ascii_alphanumeric() || matches!(c, '_' | '-' | '$') { c } else { '_' })
-        .collect();
+    let s: String =
+        name.chars().take(31).map(|c| if c.is_ascii_alphanumeric() || matches!(c, '_' | '-' | '$') { c } else { '_' }).collect();
     if s.is_empty() {
         "0".to_string()
     } else {
@@ -94,12 +91,8 @@ pub fn write(mesh: &ir::Mesh, color: [u8; 3], layer: &str) -> Vec<u8> {
     group(&mut face_head, 0, "3DFACE");
     group(&mut face_head, 8, &layer);
     group(&mut face_head, 62, "256");
-    const CODES: [[&[u8]; 3]; 4] = [
-        [b" 10\n", b" 20\n", b" 30\n"],
-        [b" 11\n", b" 21\n", b" 31\n"],
-        [b" 12\n", b" 22\n", b" 32\n"],
-        [b" 13\n", b" 23\n", b" 33\n"],
-    ];
+    const CODES: [[&[u8]; 3]; 4] =
+        [[b" 10\n", b" 20\n", b" 30\n"], [b" 11\n", b" 21\n", b" 31\n"], [b" 12\n", b" 22\n", b" 32\n"], [b" 13\n", b" 23\n", b" 33\n"]];
     let avg_coord = text.len() / offs.len().max(1) + 1;
     let per_face = face_head.len() + 12 * (4 + avg_coord + 1);
     let mut out = Vec::with_capacity(1024 + per_face * mesh.triangles.len());

@@ -6,13 +6,7 @@ use std::process::Command;
 
 fn mesh() -> ir::Mesh {
     ir::Mesh {
-        vertices: vec![
-            [0.0, 0.0, 0.0],
-            [0.1, 0.0, -0.0],
-            [0.0, 0.2, 1e-7],
-            [-0.123_456_79, 3.5e-9, 12345.678],
-            [0.3, 0.3, 0.3],
-        ],
+        vertices: vec![[0.0, 0.0, 0.0], [0.1, 0.0, -0.0], [0.0, 0.2, 1e-7], [-0.123_456_79, 3.5e-9, 12345.678], [0.3, 0.3, 0.3]],
         triangles: vec![[0, 1, 2], [1, 3, 2], [0, 3, 4], [4, 4, 4]],
     }
 }
@@ -127,22 +121,13 @@ fn ezdxf_reads_the_output() {
     for (name, m, color) in cases {
         let path = dir.path().join(format!("{name}.dxf"));
         std::fs::write(&path, write(&m, color, name)).expect("write");
-        let out = Command::new("python3")
-            .arg(&script)
-            .arg(&path)
-            .arg(m.triangles.len().to_string())
-            .output()
-            .expect("run dxf_check.py");
+        let out = Command::new("python3").arg(&script).arg(&path).arg(m.triangles.len().to_string()).output().expect("run dxf_check.py");
         let stdout = String::from_utf8_lossy(&out.stdout);
         eprintln!("{stdout}{}", String::from_utf8_lossy(&out.stderr));
         assert!(out.status.success(), "dxf_check.py failed on {name}");
         // The wrong count must fail.
-        let bad = Command::new("python3")
-            .arg(&script)
-            .arg(&path)
-            .arg((m.triangles.len() + 1).to_string())
-            .output()
-            .expect("run dxf_check.py");
+        let bad =
+            Command::new("python3").arg(&script).arg(&path).arg((m.triangles.len() + 1).to_string()).output().expect("run dxf_check.py");
         assert_eq!(bad.status.code(), Some(1));
     }
 }

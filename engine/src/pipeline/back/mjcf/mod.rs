@@ -138,10 +138,9 @@ pub fn write(model: &Model, v: &Validated, layout: &Layout, opts: &Options) -> S
             let axis = cur.rotation * e.axis;
             let (kind, motion) = match e.kind {
                 PrimitiveKind::Prismatic => ("slide", Isometry3::translation(e.axis.x * e.q0, e.axis.y * e.q0, e.axis.z * e.q0)),
-                PrimitiveKind::Revolute => (
-                    "hinge",
-                    Isometry3::from_parts(nalgebra::Translation3::identity(), UnitQuaternion::from_scaled_axis(e.axis * e.q0)),
-                ),
+                PrimitiveKind::Revolute => {
+                    ("hinge", Isometry3::from_parts(nalgebra::Translation3::identity(), UnitQuaternion::from_scaled_axis(e.axis * e.q0)))
+                }
                 _ => ("ball", Isometry3::identity()),
             };
             cur *= motion;
@@ -233,15 +232,7 @@ pub fn write(model: &Model, v: &Validated, layout: &Layout, opts: &Options) -> S
         let inertia = if i.amax() == 0.0 {
             "diaginertia=\"0 0 0\"".to_string()
         } else {
-            format!(
-                "fullinertia=\"{} {} {} {} {} {}\"",
-                n(i[(0, 0)]),
-                n(i[(1, 1)]),
-                n(i[(2, 2)]),
-                n(i[(0, 1)]),
-                n(i[(0, 2)]),
-                n(i[(1, 2)])
-            )
+            format!("fullinertia=\"{} {} {} {} {} {}\"", n(i[(0, 0)]), n(i[(1, 1)]), n(i[(2, 2)]), n(i[(0, 1)]), n(i[(0, 2)]), n(i[(1, 2)]))
         };
         if let Some(why) = &floored[b] {
             let _ = writeln!(
@@ -309,7 +300,9 @@ pub fn write(model: &Model, v: &Validated, layout: &Layout, opts: &Options) -> S
     }
     // Couplings (URDF mimic) between single-element joints.
     let single = |j: crate::pipeline::ir::JointId| match a.chains[j.index()].elements.as_slice() {
-        [e] if matches!(e.kind, PrimitiveKind::Revolute | PrimitiveKind::Prismatic) && !h.loops.iter().any(|l| l.closing == j) => Some(e.q0),
+        [e] if matches!(e.kind, PrimitiveKind::Revolute | PrimitiveKind::Prismatic) && !h.loops.iter().any(|l| l.closing == j) => {
+            Some(e.q0)
+        }
         _ => None,
     };
     for c in &model.couplings {
@@ -332,7 +325,11 @@ pub fn write(model: &Model, v: &Validated, layout: &Layout, opts: &Options) -> S
         let _ = writeln!(out, "  <equality>\n{eq}  </equality>");
     }
     if !skipped_couplings.is_empty() {
-        let _ = writeln!(out, "  <!-- Couplings whose sides are not single joints are not expressed: {} -->", comment(&skipped_couplings.join(", ")));
+        let _ = writeln!(
+            out,
+            "  <!-- Couplings whose sides are not single joints are not expressed: {} -->",
+            comment(&skipped_couplings.join(", "))
+        );
     }
     if !skipped.is_empty() {
         let _ = writeln!(out, "  <!-- Loop cuts with prismatic elements are not expressed: {} -->", attr(&skipped.join(", ")));

@@ -76,17 +76,34 @@ fn info(report: &Report, drives: &[DrivePlan], provenance: &str) -> String {
     if !report.loops.is_empty() {
         let _ = writeln!(s, "<h4>Loops and how they were closed</h4>\n<ul>");
         for l in &report.loops {
-            let _ = writeln!(s, "<li>{} (a {} loop through {}): {}</li>", html(&l.closing_joint), html(l.kind), html(&l.joints.join(", ")), html(&l.why));
+            let _ = writeln!(
+                s,
+                "<li>{} (a {} loop through {}): {}</li>",
+                html(&l.closing_joint),
+                html(l.kind),
+                html(&l.joints.join(", ")),
+                html(&l.why)
+            );
         }
         let _ = writeln!(s, "</ul>");
     }
     if !report.free_bodies.is_empty() {
-        let _ = writeln!(s, "<p>Free bodies (no path to the ground; they start at their CAD pose and fall): {}.</p>", html(&report.free_bodies.join(", ")));
+        let _ = writeln!(
+            s,
+            "<p>Free bodies (no path to the ground; they start at their CAD pose and fall): {}.</p>",
+            html(&report.free_bodies.join(", "))
+        );
     }
     if !report.warnings.is_empty() {
         let _ = writeln!(s, "<h4>Warnings</h4>\n<ul>");
         for w in report.warnings.iter().take(MAX_WARNINGS) {
-            let _ = writeln!(s, "<li><code>{}</code> {}{}</li>", html(w.code), if w.location.is_empty() { String::new() } else { format!("{}: ", html(&w.location)) }, html(&w.message));
+            let _ = writeln!(
+                s,
+                "<li><code>{}</code> {}{}</li>",
+                html(w.code),
+                if w.location.is_empty() { String::new() } else { format!("{}: ", html(&w.location)) },
+                html(&w.message)
+            );
         }
         if report.warnings.len() > MAX_WARNINGS {
             let _ = writeln!(s, "<li>and {} more (see report.json)</li>", report.warnings.len() - MAX_WARNINGS);
@@ -103,7 +120,14 @@ fn info(report: &Report, drives: &[DrivePlan], provenance: &str) -> String {
             }
         };
         for d in drives {
-            let _ = writeln!(s, "<tr><td><code>{}</code></td><td>{}</td><td>{}</td><td>{}</td></tr>", html(&d.joint), cell(&d.motor), cell(&d.gear), cell(&d.controller));
+            let _ = writeln!(
+                s,
+                "<tr><td><code>{}</code></td><td>{}</td><td>{}</td><td>{}</td></tr>",
+                html(&d.joint),
+                cell(&d.motor),
+                cell(&d.gear),
+                cell(&d.controller)
+            );
         }
         let _ = writeln!(s, "</table>");
     }

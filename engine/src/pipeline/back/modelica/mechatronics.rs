@@ -337,7 +337,14 @@ static SPECS: &[Spec] = &[
             real("TaNominal", "K", "SI.Temperature", "293.15", Range::Positive, "Nominal armature temperature"),
             real("Ra", "Ohm", "SI.Resistance", "0.05", Range::NonNegative, "Armature resistance at TaRef"),
             real("TaRef", "K", "SI.Temperature", "293.15", Range::Positive, "Reference temperature of the armature resistance"),
-            real("alpha20a", "1/K", "Modelica.Electrical.Machines.Thermal.LinearTemperatureCoefficient20", "0", Range::Any, "Temperature coefficient of the armature resistance at 20 degC"),
+            real(
+                "alpha20a",
+                "1/K",
+                "Modelica.Electrical.Machines.Thermal.LinearTemperatureCoefficient20",
+                "0",
+                Range::Any,
+                "Temperature coefficient of the armature resistance at 20 degC",
+            ),
             real("La", "H", "SI.Inductance", "0.0015", Range::Positive, "Armature inductance"),
             real("Jr", "kg.m2", "SI.Inertia", "0.15", Range::Positive, "Rotor inertia"),
             real("Js", "kg.m2", "SI.Inertia", "Jr", Range::Positive, "Stator inertia (the stator is fixed here)"),
@@ -358,10 +365,7 @@ static SPECS: &[Spec] = &[
         class: "Gears.Efficiency",
         fits: Some(JointKind::Revolute),
         doc: "Gear with a constant efficiency (MSL LossyGear, lossTable=[0, eta, eta, 0, 0])",
-        params: &[
-            inherited(RATIO),
-            real("eta", "1", "Real", "1", Range::Efficiency, "Efficiency in both directions of power flow"),
-        ],
+        params: &[inherited(RATIO), real("eta", "1", "Real", "1", Range::Efficiency, "Efficiency in both directions of power flow")],
     },
     Spec {
         path: "cad2mo.Drives.Gears.LeadScrew",
@@ -396,8 +400,7 @@ fn spec(path: &str) -> Option<&'static Spec> {
 pub fn known_classes() -> Vec<KnownClass> {
     type Params = Vec<(&'static str, &'static str, &'static str)>;
     static PARAMS: OnceLock<Vec<Params>> = OnceLock::new();
-    let params =
-        PARAMS.get_or_init(|| SPECS.iter().map(|s| s.params.iter().map(|p| (p.name, p.ty.name(), p.unit)).collect()).collect());
+    let params = PARAMS.get_or_init(|| SPECS.iter().map(|s| s.params.iter().map(|p| (p.name, p.ty.name(), p.unit)).collect()).collect());
     SPECS
         .iter()
         .zip(params.iter())
@@ -507,11 +510,7 @@ fn slot(joint: &str, kind: JointKind, domain: Domain, choice: &ClassChoice) -> R
         };
         let p = &spec.params[i];
         if given[i].is_some() {
-            return Err(MechatronicsError::DuplicateParameter {
-                joint: joint.to_string(),
-                class: class.to_string(),
-                param: name.clone(),
-            });
+            return Err(MechatronicsError::DuplicateParameter { joint: joint.to_string(), class: class.to_string(), param: name.clone() });
         }
         // Modelica widens Integer to Real; every other mismatch is an error.
         let x = match (p.ty, value) {
@@ -770,7 +769,11 @@ pub fn mechatronics(
             slot_html(&d.motor),
             slot_html(&d.gear),
             slot_html(&d.controller),
-            html(&if follows { "the selected motion (position, speed fed forward)".to_string() } else { reference_html(&d.reference, p.kind, p.start) })
+            html(&if follows {
+                "the selected motion (position, speed fed forward)".to_string()
+            } else {
+                reference_html(&d.reference, p.kind, p.start)
+            })
         );
     }
     let mut motion_decl = String::new();
@@ -785,11 +788,7 @@ pub fn mechatronics(
             choices.join(", ")
         );
         for (k, (m, mname)) in motions.iter().zip(&motion_names).enumerate() {
-            let _ = writeln!(
-                motion_decl,
-                "  Motions.{mname} motion_{mname} \"Motion {}\"\n    {PLACEHOLDER};",
-                mstr(&m.label)
-            );
+            let _ = writeln!(motion_decl, "  Motions.{mname} motion_{mname} \"Motion {}\"\n    {PLACEHOLDER};", mstr(&m.label));
             let _ = write!(
                 motion_rows,
                 "\n<tr><td>{}</td><td><code>Motions.{mname}</code></td><td>{}</td><td>{}</td></tr>",
@@ -840,10 +839,18 @@ pub fn mechatronics(
     let experiment = match (motions.first(), additions.experiment) {
         (Some(first), _) => Experiment::of(
             stop_time,
-            format!("Experiment: {} s, the motion {} ({} s) and half a second to settle; 500 output intervals, tolerance 1e-6.", num(stop_time), first.label, num(first.t.last().copied().unwrap_or(0.0))),
+            format!(
+                "Experiment: {} s, the motion {} ({} s) and half a second to settle; 500 output intervals, tolerance 1e-6.",
+                num(stop_time),
+                first.label,
+                num(first.t.last().copied().unwrap_or(0.0))
+            ),
         ),
         (None, Some(e)) if e.stop >= stop_time => Experiment::of(e.stop, e.why.clone()),
-        (None, _) => Experiment::of(stop_time, format!("Experiment: {} s, the longest reference table; 500 output intervals, tolerance 1e-6.", num(stop_time))),
+        (None, _) => Experiment::of(
+            stop_time,
+            format!("Experiment: {} s, the longest reference table; 500 output intervals, tolerance 1e-6.", num(stop_time)),
+        ),
     };
     let text = format!(
         "within {pkg};\nmodel Mechatronics \"Mechatronic model of {pkg}: Mechanics with {count}\"\n  extends {pkg}.Mechanics;\n{decl}\nequation\n{conn}  annotation (\n    {},\n    Diagram(\u{1}),\n    Icon(graphics={{{MECHATRONICS_ICON}}}),\n    Documentation(info=\"<html>\n{}\n<p><code>Mechatronics</code> extends <code>Mechanics</code> and refers to joints by name only: a <code>Mechanics</code> regenerated after a CAD change slots under it unchanged. Generated by cad2mo {}.</p>\n{}\n<p>{}</p>\n<p>Diagram: the Mechanics diagram, with each drive above the joint it moves, each contact force beside its body, and the reference tables and the collision and live-view blocks in a column left of the world.</p>\n</html>\"));\nend Mechatronics;\n",

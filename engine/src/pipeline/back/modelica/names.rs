@@ -11,13 +11,65 @@ use crate::pipeline::ir::Model;
 
 /// Modelica 3.x keywords.
 pub const KEYWORDS: &[&str] = &[
-    "algorithm", "and", "annotation", "block", "break", "class", "connect", "connector", "constant",
-    "constrainedby", "der", "discrete", "each", "else", "elseif", "elsewhen", "encapsulated", "end",
-    "enumeration", "equation", "expandable", "extends", "external", "false", "final", "flow", "for",
-    "function", "if", "import", "impure", "in", "initial", "inner", "input", "loop", "model", "not",
-    "operator", "or", "outer", "output", "package", "parameter", "partial", "protected", "public",
-    "pure", "record", "redeclare", "replaceable", "return", "stream", "then", "true", "type", "when",
-    "while", "within",
+    "algorithm",
+    "and",
+    "annotation",
+    "block",
+    "break",
+    "class",
+    "connect",
+    "connector",
+    "constant",
+    "constrainedby",
+    "der",
+    "discrete",
+    "each",
+    "else",
+    "elseif",
+    "elsewhen",
+    "encapsulated",
+    "end",
+    "enumeration",
+    "equation",
+    "expandable",
+    "extends",
+    "external",
+    "false",
+    "final",
+    "flow",
+    "for",
+    "function",
+    "if",
+    "import",
+    "impure",
+    "in",
+    "initial",
+    "inner",
+    "input",
+    "loop",
+    "model",
+    "not",
+    "operator",
+    "or",
+    "outer",
+    "output",
+    "package",
+    "parameter",
+    "partial",
+    "protected",
+    "public",
+    "pure",
+    "record",
+    "redeclare",
+    "replaceable",
+    "return",
+    "stream",
+    "then",
+    "true",
+    "type",
+    "when",
+    "while",
+    "within",
 ];
 
 /// Names the model itself uses.
@@ -97,7 +149,11 @@ pub struct Names {
 fn distinguishing(node_id: &str, cad_name: &str) -> String {
     let stripped = node_id.replacen(cad_name, "", 1);
     let s = sanitize(&stripped, "n");
-    if s == "n" { sanitize(node_id, "n") } else { s }
+    if s == "n" {
+        sanitize(node_id, "n")
+    } else {
+        s
+    }
 }
 
 /// FNV-1a, for a last-resort suffix that depends only on the node ID.
@@ -170,10 +226,8 @@ pub fn assign_with_hints(model: &Model, hints: &Hints) -> Names {
             wanted[*only] = entities[*only].base.clone();
             continue;
         }
-        let by_subsystem: Vec<Option<String>> = members
-            .iter()
-            .map(|k| entities[*k].subsystem.map(|s| format!("{}_{}", entities[*k].base, sanitize(s, "s"))))
-            .collect();
+        let by_subsystem: Vec<Option<String>> =
+            members.iter().map(|k| entities[*k].subsystem.map(|s| format!("{}_{}", entities[*k].base, sanitize(s, "s")))).collect();
         for (m, k) in members.iter().enumerate() {
             let e = &entities[*k];
             let unique = by_subsystem[m].as_ref().filter(|name| {

@@ -9,8 +9,8 @@ use super::diagram::plan::{half_for, Plan};
 use super::diagram::{Class, Sheet, Style, Want};
 use super::names::{self, sanitize, Names, Scope};
 use crate::pipeline::ir::{FrameId, FrameOwner, JointId, Model, PrimitiveKind};
-use crate::pipeline::passes::loops::{ConstraintClass, Cut};
 use crate::pipeline::passes::kinematics::is_identity;
+use crate::pipeline::passes::loops::{ConstraintClass, Cut};
 use crate::pipeline::valid::{is_root_part, Validated};
 
 const MB: &str = "Modelica.Mechanics.MultiBody";
@@ -208,12 +208,7 @@ impl Writer<'_> {
                     let label = if frame.display_name.is_empty() { &frame.name } else { &frame.display_name };
                     let name = self.scope.take(&format!("{bname}_{}", sanitize(label, "f")));
                     let want = self.plan.frame(self.model, f, half_for(&name));
-                    self.fixed(
-                        &name,
-                        &rel,
-                        &format!("Frame {} of {} (nodeID {})", frame.name, body.cad_name, frame.node_id),
-                        want,
-                    );
+                    self.fixed(&name, &rel, &format!("Frame {} of {} (nodeID {})", frame.name, body.cad_name, frame.node_id), want);
                     self.connect(&format!("{bname}.frame_a"), &format!("{name}.frame_a"));
                     format!("{name}.frame_b")
                 }
@@ -225,12 +220,7 @@ impl Writer<'_> {
                 } else {
                     let name = self.scope.take(&sanitize(&ground.name, "g"));
                     let want = self.plan.frame(self.model, f, half_for(&name));
-                    self.fixed(
-                        &name,
-                        &frame.pose,
-                        &format!("Ground {} (nodeID {}) in the world frame", ground.name, ground.node_id),
-                        want,
-                    );
+                    self.fixed(&name, &frame.pose, &format!("Ground {} (nodeID {}) in the world frame", ground.name, ground.node_id), want);
                     self.connect("world.frame_b", &format!("{name}.frame_a"));
                     format!("{name}.frame_b")
                 }
@@ -293,7 +283,12 @@ impl Writer<'_> {
         if !is_identity(&chain.pre) {
             let name = self.scope.take(&format!("{jname}_gap"));
             let want = at(self, &name);
-            self.fixed(&name, &chain.pre, &format!("Gap between the frames of joint {what} that its prismatic axes cannot take (see report.json corrections)"), want);
+            self.fixed(
+                &name,
+                &chain.pre,
+                &format!("Gap between the frames of joint {what} that its prismatic axes cannot take (see report.json corrections)"),
+                want,
+            );
             self.connect(&prev, &format!("{name}.frame_a"));
             prev = format!("{name}.frame_b");
             extra.push(name);
@@ -736,7 +731,10 @@ impl Experiment {
             }
         }
         if !(g > 0.0 && reach > 0.0 && reach.is_finite()) {
-            return Experiment { stop: 1.0, why: "Experiment: 1 s (no gravity or no mass to set a time scale), 500 output intervals, tolerance 1e-6.".into() };
+            return Experiment {
+                stop: 1.0,
+                why: "Experiment: 1 s (no gravity or no mass to set a time scale), 500 output intervals, tolerance 1e-6.".into(),
+            };
         }
         let period = 2.0 * std::f64::consts::PI * (reach / g).sqrt();
         let stop = nice_up((3.0 * period).clamp(1.0, 20.0));
@@ -766,7 +764,15 @@ pub fn interval(stop: f64) -> f64 {
     let raw = stop / 500.0;
     let p = 10f64.powf(raw.log10().floor());
     let m = raw / p;
-    let m = if m <= 1.0 { 1.0 } else if m <= 2.0 { 2.0 } else if m <= 5.0 { 5.0 } else { 10.0 };
+    let m = if m <= 1.0 {
+        1.0
+    } else if m <= 2.0 {
+        2.0
+    } else if m <= 5.0 {
+        5.0
+    } else {
+        10.0
+    };
     let v = m * p;
     format!("{v:.12e}").parse().unwrap_or(v)
 }
@@ -778,7 +784,15 @@ fn nice_up(x: f64) -> f64 {
     }
     let p = 10f64.powf(x.log10().floor());
     let m = x / p;
-    let m = if m <= 1.0 { 1.0 } else if m <= 2.0 { 2.0 } else if m <= 5.0 { 5.0 } else { 10.0 };
+    let m = if m <= 1.0 {
+        1.0
+    } else if m <= 2.0 {
+        2.0
+    } else if m <= 5.0 {
+        5.0
+    } else {
+        10.0
+    };
     m * p
 }
 
@@ -821,7 +835,9 @@ mod tests {
 
     #[test]
     fn cardan_angles_rebuild_the_rotation() {
-        for (x, y, z) in [(0.3, -0.2, 1.1), (2.9, 0.1, -3.0), (0.0, std::f64::consts::FRAC_PI_2, 0.4), (1.0, -std::f64::consts::FRAC_PI_2, 0.0)] {
+        for (x, y, z) in
+            [(0.3, -0.2, 1.1), (2.9, 0.1, -3.0), (0.0, std::f64::consts::FRAC_PI_2, 0.4), (1.0, -std::f64::consts::FRAC_PI_2, 0.0)]
+        {
             let r = Rotation3::from_euler_angles(x, y, z).into_inner();
             let a = cardan_xyz(&r);
             assert!((rebuild(&a) - r).abs().max() < 1e-12, "{x} {y} {z}: {a:?}");

@@ -425,7 +425,10 @@ pub fn write(model: &Model, v: &Validated, layout: &Layout, package: &str, write
                 n(c[2]),
                 n(alpha)
             );
-            let _ = writeln!(out, "    <collision>\n      <origin xyz=\"0 0 0\" rpy=\"0 0 0\"/>\n      <geometry>{mesh}</geometry>\n    </collision>");
+            let _ = writeln!(
+                out,
+                "    <collision>\n      <origin xyz=\"0 0 0\" rpy=\"0 0 0\"/>\n      <geometry>{mesh}</geometry>\n    </collision>"
+            );
         }
         let _ = writeln!(out, "  </link>");
     }
@@ -465,7 +468,11 @@ pub fn write(model: &Model, v: &Validated, layout: &Layout, package: &str, write
         if l.kind == LoopKind::Rigid {
             let _ = writeln!(out, "  <!-- {} -->", comment(&format!("weld {jname} closes a rigid loop: redundant, not written")));
         } else if a.loops.loops.get(i).is_none_or(|info| info.cut == Cut::Omitted) {
-            let _ = writeln!(out, "  <!-- {} -->", comment(&format!("joint {jname} closes a loop the rest of the mechanism already closes: not written")));
+            let _ = writeln!(
+                out,
+                "  <!-- {} -->",
+                comment(&format!("joint {jname} closes a loop the rest of the mechanism already closes: not written"))
+            );
         }
     }
     for &closing in &tree.cuts {
@@ -475,7 +482,11 @@ pub fn write(model: &Model, v: &Validated, layout: &Layout, package: &str, write
         let kind = match chain.elements.as_slice() {
             [] => "fixed",
             [e] if e.kind == PrimitiveKind::Revolute => {
-                if joint.limits.as_ref().is_some_and(|l| l.lower.is_some() || l.upper.is_some()) { "revolute" } else { "continuous" }
+                if joint.limits.as_ref().is_some_and(|l| l.lower.is_some() || l.upper.is_some()) {
+                    "revolute"
+                } else {
+                    "continuous"
+                }
             }
             [e] if e.kind == PrimitiveKind::Prismatic => "prismatic",
             _ => {
@@ -667,9 +678,7 @@ fn limit_element(kind: &str, l: Option<&JointLimits>) -> Option<String> {
     let effort = n(l.effort.unwrap_or(DEFAULT_EFFORT));
     let velocity = n(l.velocity.unwrap_or(DEFAULT_VELOCITY));
     match kind {
-        "continuous" if l.effort.is_some() || l.velocity.is_some() => {
-            Some(format!("<limit effort=\"{effort}\" velocity=\"{velocity}\"/>"))
-        }
+        "continuous" if l.effort.is_some() || l.velocity.is_some() => Some(format!("<limit effort=\"{effort}\" velocity=\"{velocity}\"/>")),
         "revolute" | "prismatic" => {
             let lower = n(l.lower.unwrap_or(-DEFAULT_TRAVEL));
             let upper = n(l.upper.unwrap_or(DEFAULT_TRAVEL));

@@ -75,10 +75,7 @@ fn pose_of(origin: Option<&Node>) -> Isometry3<f64> {
     let Some(o) = origin else { return Isometry3::identity() };
     let xyz = o.nums("xyz");
     let rpy = o.nums("rpy");
-    Isometry3::from_parts(
-        Translation3::new(xyz[0], xyz[1], xyz[2]),
-        UnitQuaternion::from_euler_angles(rpy[0], rpy[1], rpy[2]),
-    )
+    Isometry3::from_parts(Translation3::new(xyz[0], xyz[1], xyz[2]), UnitQuaternion::from_euler_angles(rpy[0], rpy[1], rpy[2]))
 }
 
 /// World pose of every link with the joints at `u` (by joint name; 0 when absent).
@@ -166,7 +163,14 @@ fn body(m: &mut Model, name: &str, cs1: Isometry3<f64>, cg_local: Isometry3<f64>
     id
 }
 
-fn joint(m: &mut Model, name: &str, base: FrameId, follower: FrameId, prims: &[(PrimitiveKind, Vector3<f64>)], limits: Option<JointLimits>) -> JointId {
+fn joint(
+    m: &mut Model,
+    name: &str,
+    base: FrameId,
+    follower: FrameId,
+    prims: &[(PrimitiveKind, Vector3<f64>)],
+    limits: Option<JointLimits>,
+) -> JointId {
     let id = JointId(m.joints.len() as u32);
     m.joints.push(Joint {
         cad_name: name.into(),
@@ -499,7 +503,8 @@ fn loops_at_the_world_are_comments() {
 fn the_relative_variant_names_meshes_beside_the_file() {
     // MuJoCo cannot open package:// paths (measured: it refuses urdf_arm.urdf and opens
     // urdf_arm.mujoco.urdf with all six meshes).
-    let ros = ("P/P.urdf".to_string(), b"<mesh filename=\"package://P/Resources/Shapes/a.stl\"/><mesh filename=\"package://Q/x.stl\"/>".to_vec());
+    let ros =
+        ("P/P.urdf".to_string(), b"<mesh filename=\"package://P/Resources/Shapes/a.stl\"/><mesh filename=\"package://Q/x.stl\"/>".to_vec());
     let (path, bytes) = relative_file(&ros, "P");
     assert_eq!(path, "P/P.mujoco.urdf");
     assert_eq!(String::from_utf8(bytes).unwrap(), "<mesh filename=\"Resources/Shapes/a.stl\"/><mesh filename=\"package://Q/x.stl\"/>");

@@ -89,14 +89,10 @@ pub fn normalise(path: &str) -> Option<String> {
 impl Bundle {
     /// A bundle from files the caller read (paths relative to the bundle's root).
     /// Unsafe paths are rejected like zip entries.
-    pub fn from_files(
-        name: &str,
-        files: impl IntoIterator<Item = (String, Vec<u8>)>,
-    ) -> Result<Bundle, BundleError> {
+    pub fn from_files(name: &str, files: impl IntoIterator<Item = (String, Vec<u8>)>) -> Result<Bundle, BundleError> {
         let mut b = Bundle { name: name.to_string(), files: BTreeMap::new() };
         for (path, bytes) in files {
-            let norm = normalise(&path)
-                .ok_or_else(|| BundleError::UnsafePath { bundle: name.into(), entry: path.clone() })?;
+            let norm = normalise(&path).ok_or_else(|| BundleError::UnsafePath { bundle: name.into(), entry: path.clone() })?;
             if b.files.insert(norm.clone(), bytes).is_some() {
                 return Err(BundleError::DuplicateEntry { bundle: name.into(), entry: norm });
             }
@@ -117,15 +113,12 @@ impl Bundle {
         let mut files = BTreeMap::new();
         let mut total: u64 = 0;
         for i in 0..archive.len() {
-            let mut entry = archive
-                .by_index(i)
-                .map_err(|e| BundleError::NotZip { bundle: bundle.clone(), reason: e.to_string() })?;
+            let mut entry = archive.by_index(i).map_err(|e| BundleError::NotZip { bundle: bundle.clone(), reason: e.to_string() })?;
             let raw_name = entry_name(entry.name_raw(), entry.name());
             if entry.is_dir() {
                 continue;
             }
-            let path = normalise(&raw_name)
-                .ok_or_else(|| BundleError::UnsafePath { bundle: bundle.clone(), entry: raw_name.clone() })?;
+            let path = normalise(&raw_name).ok_or_else(|| BundleError::UnsafePath { bundle: bundle.clone(), entry: raw_name.clone() })?;
             let declared = entry.size();
             let compressed = entry.compressed_size().max(1);
             if declared / compressed > limits.max_ratio {
@@ -141,19 +134,13 @@ impl Bundle {
             }
             // Never trust the declared size: inflate at most one byte past it (and past what
             // the limits still allow), so a header that lies costs no more than it declares.
-            let budget = (limits.max_total_bytes - total)
-                .min(compressed.saturating_mul(limits.max_ratio))
-                .min(declared)
-                .saturating_add(1);
+            let budget = (limits.max_total_bytes - total).min(compressed.saturating_mul(limits.max_ratio)).min(declared).saturating_add(1);
             let mut data = Vec::with_capacity(declared.min(budget) as usize);
-            (&mut entry)
-                .take(budget)
-                .read_to_end(&mut data)
-                .map_err(|e| BundleError::CorruptEntry {
-                    bundle: bundle.clone(),
-                    entry: raw_name.clone(),
-                    reason: e.to_string(),
-                })?;
+            (&mut entry).take(budget).read_to_end(&mut data).map_err(|e| BundleError::CorruptEntry {
+                bundle: bundle.clone(),
+                entry: raw_name.clone(),
+                reason: e.to_string(),
+            })?;
             if data.len() as u64 >= budget {
                 return Err(if data.len() as u64 > declared {
                     BundleError::CorruptEntry {
@@ -252,18 +239,13 @@ impl Bundle {
             let looks_xml = path.to_ascii_lowercase().ends_with(".xml");
             if looks_xml && is_export(bytes) {
                 if let Some(first) = found {
-                    return Err(BundleError::TwoXml {
-                        bundle: self.name.clone(),
-                        first: first.to_string(),
-                        second: path.clone(),
-                    });
+                    return Err(BundleError::TwoXml { bundle: self.name.clone(), first: first.to_string(), second: path.clone() });
                 }
                 found = Some(path);
             }
         }
         found.ok_or_else(|| {
-            let xmls: Vec<&str> =
-                self.paths().filter(|p| p.to_ascii_lowercase().ends_with(".xml")).collect();
+            let xmls: Vec<&str> = self.paths().filter(|p| p.to_ascii_lowercase().ends_with(".xml")).collect();
             let hint = if xmls.is_empty() {
                 " (the bundle holds no .xml file)".to_string()
             } else {
@@ -288,25 +270,16 @@ impl Bundle {
             return Ok(Some(k.as_str()));
         }
         let lower = wanted.to_lowercase();
-        let by_path: Vec<&str> =
-            self.paths().filter(|p| p.to_lowercase() == lower).collect();
+        let by_path: Vec<&str> = self.paths().filter(|p| p.to_lowercase() == lower).collect();
         if let Some(found) = self.one(referenced_from, name, by_path)? {
             return Ok(Some(found));
         }
         let file_name = lower.rsplit('/').next().unwrap_or(&lower).to_string();
-        let by_name: Vec<&str> = self
-            .paths()
-            .filter(|p| p.rsplit('/').next().unwrap_or(p).to_lowercase() == file_name)
-            .collect();
+        let by_name: Vec<&str> = self.paths().filter(|p| p.rsplit('/').next().unwrap_or(p).to_lowercase() == file_name).collect();
         self.one(referenced_from, name, by_name)
     }
 
-    fn one<'a>(
-        &self,
-        referenced_from: &str,
-        name: &str,
-        candidates: Vec<&'a str>,
-    ) -> Result<Option<&'a str>, BundleError> {
+    fn one<'a>(&self, referenced_from: &str, name: &str, candidates: Vec<&'a str>) -> Result<Option<&'a str>, BundleError> {
         match candidates.len() {
             0 => Ok(None),
             1 => Ok(Some(candidates[0])),
@@ -339,8 +312,7 @@ mod tests {
         let mut out = Vec::new();
         {
             let mut w = zip::ZipWriter::new(std::io::Cursor::new(&mut out));
-            let opts = zip::write::SimpleFileOptions::default()
-                .compression_method(zip::CompressionMethod::Deflated);
+            let opts = zip::write::SimpleFileOptions::default().compression_method(zip::CompressionMethod::Deflated);
             for (name, data) in entries {
                 w.start_file(*name, opts).unwrap();
                 w.write_all(data).unwrap();
@@ -362,18 +334,12 @@ mod tests {
 
     #[test]
     fn zip_round_trip_and_lookup() {
-        let z = zip_of(&[
-            ("model/ARM.xml", b"<PhysicalModelingXMLFile/>"),
-            ("model/meshes/simmechanics/arm_prt.stl", b"solid x"),
-        ]);
+        let z = zip_of(&[("model/ARM.xml", b"<PhysicalModelingXMLFile/>"), ("model/meshes/simmechanics/arm_prt.stl", b"solid x")]);
         let b = Bundle::from_zip("b.zip", &z, &Limits::default()).unwrap();
         assert_eq!(b.len(), 2);
         let xml = b.find_export(|bytes| bytes.starts_with(b"<Phys")).unwrap();
         assert_eq!(xml, "model/ARM.xml");
-        assert_eq!(
-            b.resolve(xml, "ARM_PRT.STL").unwrap(),
-            Some("model/meshes/simmechanics/arm_prt.stl")
-        );
+        assert_eq!(b.resolve(xml, "ARM_PRT.STL").unwrap(), Some("model/meshes/simmechanics/arm_prt.stl"));
         assert_eq!(b.resolve(xml, "missing.stl").unwrap(), None);
     }
 
@@ -403,10 +369,7 @@ mod tests {
     #[test]
     fn zip_slip_is_refused() {
         let z = zip_of(&[("../evil.txt", b"x")]);
-        assert!(matches!(
-            Bundle::from_zip("b.zip", &z, &Limits::default()),
-            Err(BundleError::UnsafePath { .. })
-        ));
+        assert!(matches!(Bundle::from_zip("b.zip", &z, &Limits::default()), Err(BundleError::UnsafePath { .. })));
     }
 
     #[test]

@@ -179,10 +179,8 @@ impl<'a> Reader<'a> {
             return Err(self.err(n, format!("<{what}> has no {key} attribute")));
         };
         let Some(id) = url.strip_prefix(b"#") else {
-            return Err(self.err(
-                n,
-                format!("{key}=\"{}\" of <{what}> is not a reference into this file (#id): other files are not read", show(url)),
-            ));
+            return Err(self
+                .err(n, format!("{key}=\"{}\" of <{what}> is not a reference into this file (#id): other files are not read", show(url))));
         };
         self.ids
             .get(id)
@@ -195,9 +193,10 @@ impl<'a> Reader<'a> {
         for t in tokens(self.doc.text(n)) {
             let v = match parse_f64(t, 0) {
                 Some((v, end)) if end == t.len() => v,
-                _ => std::str::from_utf8(t).ok().and_then(|s| s.parse::<f64>().ok()).ok_or_else(|| {
-                    self.err(n, format!("bad number \"{}\" in <{}>", show(t), show(self.name(n))))
-                })?,
+                _ => std::str::from_utf8(t)
+                    .ok()
+                    .and_then(|s| s.parse::<f64>().ok())
+                    .ok_or_else(|| self.err(n, format!("bad number \"{}\" in <{}>", show(t), show(self.name(n)))))?,
             };
             out.push(v);
         }
@@ -275,10 +274,7 @@ impl<'a> Reader<'a> {
                 return Err(self.err(g, format!("more than {} vertices in all", 3 * MAX_TRIANGLES)));
             }
         }
-        let mut mesh = ir::Mesh {
-            vertices: Vec::with_capacity(total_points),
-            triangles: Vec::with_capacity(total_triangles),
-        };
+        let mut mesh = ir::Mesh { vertices: Vec::with_capacity(total_points), triangles: Vec::with_capacity(total_triangles) };
         for (g, m) in &instances {
             let Some(geom) = geoms.get(g) else { continue };
             let t = pre * m;
@@ -330,7 +326,9 @@ impl<'a> Reader<'a> {
                     b"instance_geometry" => {
                         let g = self.resolve(c, "url")?;
                         if self.name(g) != b"geometry" {
-                            return Err(self.err(c, format!("url of <instance_geometry> names a <{}>, not a <geometry>", show(self.name(g)))));
+                            return Err(
+                                self.err(c, format!("url of <instance_geometry> names a <{}>, not a <geometry>", show(self.name(g))))
+                            );
                         }
                         if out.len() >= MAX_NODE_VISITS {
                             return Err(self.err(c, format!("more than {MAX_NODE_VISITS} geometry instances")));
@@ -478,10 +476,7 @@ impl<'a> Reader<'a> {
                 Some(&b) => b,
                 None => {
                     let pts = self.points(source)?;
-                    let b = (
-                        u32::try_from(geom.points.len()).unwrap_or(u32::MAX),
-                        u32::try_from(pts.len()).unwrap_or(u32::MAX),
-                    );
+                    let b = (u32::try_from(geom.points.len()).unwrap_or(u32::MAX), u32::try_from(pts.len()).unwrap_or(u32::MAX));
                     if geom.points.len() + pts.len() > 3 * MAX_TRIANGLES {
                         return Err(self.err(source, format!("more than {} vertices", 3 * MAX_TRIANGLES)));
                     }
@@ -514,7 +509,11 @@ impl<'a> Reader<'a> {
                     if sum != c.len() as u64 {
                         return Err(self.err(
                             p,
-                            format!("<vcount> adds up to {sum} corners but <p> has {} ({} indices for {stride} inputs)", c.len(), c.len() * stride as usize),
+                            format!(
+                                "<vcount> adds up to {sum} corners but <p> has {} ({} indices for {stride} inputs)",
+                                c.len(),
+                                c.len() * stride as usize
+                            ),
                         ));
                     }
                     let mut at = 0usize;
@@ -568,19 +567,15 @@ impl Prim<'_, '_> {
     fn corners(&self, p: NodeId) -> Result<Vec<u32>, MeshError> {
         let idx = self.r.uints(p)?;
         if idx.len() % self.stride != 0 {
-            return Err(self.r.err(
-                p,
-                format!("<p> of <{}> has {} indices, not a multiple of its {} inputs", show(self.kind), idx.len(), self.stride),
-            ));
+            return Err(self
+                .r
+                .err(p, format!("<p> of <{}> has {} indices, not a multiple of its {} inputs", show(self.kind), idx.len(), self.stride)));
         }
         idx.chunks_exact(self.stride)
             .map(|c| {
                 let i = c[self.voff];
                 if i >= self.npoints {
-                    Err(self.r.err(
-                        p,
-                        format!("<p> index {i} is out of range: the position source has {} points", self.npoints),
-                    ))
+                    Err(self.r.err(p, format!("<p> index {i} is out of range: the position source has {} points", self.npoints)))
                 } else {
                     Ok(self.base + i)
                 }

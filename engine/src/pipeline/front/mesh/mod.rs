@@ -110,9 +110,7 @@ fn extension(path: &str) -> String {
 /// `.obj` or `.dae`. `path` also names the file in errors. See the module docs for the output.
 pub fn read(path: &str, bytes: &[u8]) -> Result<ir::Mesh, MeshError> {
     let mesh = match extension(path).as_str() {
-        "stl" => {
-            super::stl::parse(path, bytes, 1.0).map_err(|e| MeshError::new(path, e.line, MeshErrorKind::Stl(e.kind)))?
-        }
+        "stl" => super::stl::parse(path, bytes, 1.0).map_err(|e| MeshError::new(path, e.line, MeshErrorKind::Stl(e.kind)))?,
         "obj" => obj::read(path, bytes)?,
         "dae" => collada::read(path, bytes)?,
         other => return Err(MeshError::new(path, 0, MeshErrorKind::UnsupportedFormat { ext: other.to_string() })),
@@ -170,10 +168,6 @@ pub fn scaled(file: &str, mesh: &ir::Mesh, scale: [f64; 3]) -> Result<ir::Mesh, 
         vertices.push(s);
     }
     let mirrored = scale.iter().filter(|s| **s < 0.0).count() % 2 == 1;
-    let triangles = if mirrored {
-        mesh.triangles.iter().map(|t| [t[0], t[2], t[1]]).collect()
-    } else {
-        mesh.triangles.clone()
-    };
+    let triangles = if mirrored { mesh.triangles.iter().map(|t| [t[0], t[2], t[1]]).collect() } else { mesh.triangles.clone() };
     Ok(ir::Mesh { vertices, triangles })
 }

@@ -152,7 +152,10 @@ fn dae_tolerates_versions_and_unknown_elements() {
     let variants = [
         text.replace("2005/11/COLLADASchema\" version=\"1.4.1\"", "2008/03/COLLADASchema\" version=\"1.5.0\""),
         text.replace(" xmlns=\"http://www.collada.org/2005/11/COLLADASchema\"", ""),
-        text.replace("<library_geometries>", "<library_cameras><camera id=\"c\"/></library_cameras><extra_stuff a=\"1\"/><library_geometries>"),
+        text.replace(
+            "<library_geometries>",
+            "<library_cameras><camera id=\"c\"/></library_cameras><extra_stuff a=\"1\"/><library_geometries>",
+        ),
         format!("\u{feff}{text}"),
     ];
     for v in variants {
@@ -258,24 +261,56 @@ fn dae_primitive_kinds() {
 fn dae_errors_name_file_line_and_problem() {
     let cases: Vec<(String, &str)> = vec![
         // Index 7 of a 4-point source (the <p> is on line 6 of the document).
-        (tetra(&format!("<triangles count=\"4\">{V}<p>0 2 1 0 1 7 0 3 2 1 2 3</p></triangles>")), "t.dae:6: COLLADA: <p> index 7 is out of range: the position source has 4 points"),
+        (
+            tetra(&format!("<triangles count=\"4\">{V}<p>0 2 1 0 1 7 0 3 2 1 2 3</p></triangles>")),
+            "t.dae:6: COLLADA: <p> index 7 is out of range: the position source has 4 points",
+        ),
         (tetra(&format!("<triangles count=\"1\">{V}<p>0 2 1 0</p></triangles>")), "not a multiple of 3"),
-        (tetra(&format!("<polylist count=\"1\">{V}<vcount>4</vcount><p>0 2 1</p></polylist>")), "<vcount> adds up to 4 corners but <p> has 3"),
+        (
+            tetra(&format!("<polylist count=\"1\">{V}<vcount>4</vcount><p>0 2 1</p></polylist>")),
+            "<vcount> adds up to 4 corners but <p> has 3",
+        ),
         (tetra(&format!("<polylist count=\"1\">{V}<p>0 2 1</p></polylist>")), "<polylist> has no <vcount>"),
         (tetra(&format!("<triangles count=\"1\">{V}<p>0 x 1</p></triangles>")), "bad index \"x\""),
         (tetra(&format!("<triangles count=\"1\">{V}<p>0 -1 1</p></triangles>")), "bad index \"-1\""),
         (tetra("<triangles count=\"1\"><p>0 1 2</p></triangles>"), "<triangles> has no VERTEX input"),
-        (tetra(&format!("<triangles count=\"1\">{}<p>0 1 2</p></triangles>", V.replace("#t-v", "#nowhere"))), "no element has id \"nowhere\""),
-        (tetra(&format!("<triangles count=\"1\">{}<p>0 1 2</p></triangles>", V.replace("#t-v", "other.dae#t-v"))), "other files are not read"),
-        (tetra(&format!("<triangles>{V}<p>0 2 3</p></triangles>")).replace("0 0 1</float_array>", "0 0 nan</float_array>"), "t.dae: vertex 3 is not finite"),
+        (
+            tetra(&format!("<triangles count=\"1\">{}<p>0 1 2</p></triangles>", V.replace("#t-v", "#nowhere"))),
+            "no element has id \"nowhere\"",
+        ),
+        (
+            tetra(&format!("<triangles count=\"1\">{}<p>0 1 2</p></triangles>", V.replace("#t-v", "other.dae#t-v"))),
+            "other files are not read",
+        ),
+        (
+            tetra(&format!("<triangles>{V}<p>0 2 3</p></triangles>")).replace("0 0 1</float_array>", "0 0 nan</float_array>"),
+            "t.dae: vertex 3 is not finite",
+        ),
         (tetra(&format!("<triangles>{V}<p>0 2 3</p></triangles>")).replace("0 0 1</float_array>", "0 0 1e999</float_array>"), "not finite"),
-        (tetra(&format!("<triangles>{V}<p>0 2 1</p></triangles>")).replace("0 0 1</float_array>", "0 0 1,5</float_array>"), "bad number \"1,5\" in <float_array>"),
-        (tetra(&format!("<triangles>{V}<p>0 2 1</p></triangles>")).replace("count=\"4\" stride", "count=\"5\" stride"), "reads past its <float_array>"),
+        (
+            tetra(&format!("<triangles>{V}<p>0 2 1</p></triangles>")).replace("0 0 1</float_array>", "0 0 1,5</float_array>"),
+            "bad number \"1,5\" in <float_array>",
+        ),
+        (
+            tetra(&format!("<triangles>{V}<p>0 2 1</p></triangles>")).replace("count=\"4\" stride", "count=\"5\" stride"),
+            "reads past its <float_array>",
+        ),
         (tetra(&format!("<triangles>{V}<p>0 2 1</p></triangles>")).replace("stride=\"3\"", "stride=\"2\""), "stride 2"),
-        (tetra(&format!("<triangles>{V}<p>0 2 1</p></triangles>")).replace("<up_axis>Z_UP", "<unit meter=\"-1\"/><up_axis>Z_UP"), "<unit meter=\"-1\"> is not a positive number"),
+        (
+            tetra(&format!("<triangles>{V}<p>0 2 1</p></triangles>")).replace("<up_axis>Z_UP", "<unit meter=\"-1\"/><up_axis>Z_UP"),
+            "<unit meter=\"-1\"> is not a positive number",
+        ),
         (tetra(&format!("<triangles>{V}<p>0 2 1</p></triangles>")).replace("Z_UP", "W_UP"), "<up_axis> \"W_UP\" is not X_UP"),
-        (tetra(&format!("<triangles>{V}<p>0 2 1</p></triangles>")).replace("<node id=\"n-t\">", "<node id=\"n-t\"><lookat>0 0 0 1 0 0 0 0 1</lookat>"), "<lookat> node transforms are not supported"),
-        (tetra(&format!("<triangles>{V}<p>0 2 1</p></triangles>")).replace("<node id=\"n-t\">", "<node id=\"n-t\"><matrix>1 0 0</matrix>"), "<matrix> needs 16 numbers, found 3"),
+        (
+            tetra(&format!("<triangles>{V}<p>0 2 1</p></triangles>"))
+                .replace("<node id=\"n-t\">", "<node id=\"n-t\"><lookat>0 0 0 1 0 0 0 0 1</lookat>"),
+            "<lookat> node transforms are not supported",
+        ),
+        (
+            tetra(&format!("<triangles>{V}<p>0 2 1</p></triangles>"))
+                .replace("<node id=\"n-t\">", "<node id=\"n-t\"><matrix>1 0 0</matrix>"),
+            "<matrix> needs 16 numbers, found 3",
+        ),
         (tetra(&format!("<triangles>{V}<p></p></triangles>")), "t.dae: no triangles in the file"),
         ("<COLLADA><asset></asset><library_geometries>".to_string(), "t.dae:1: XML: unexpected end of file"),
         ("<html><body/></html>".to_string(), "the root element is <html>, not <COLLADA>"),
@@ -295,7 +330,11 @@ fn dae_errors_name_file_line_and_problem() {
 
 #[test]
 fn dae_truncated_or_mutated_never_panics() {
-    let text = dae("<unit meter=\"0.001\"/><up_axis>Y_UP</up_axis>", &box_geometry("b", [1.0, 2.0, 3.0], true), Some(&node("<rotate>1 0 0 30</rotate>", "b")));
+    let text = dae(
+        "<unit meter=\"0.001\"/><up_axis>Y_UP</up_axis>",
+        &box_geometry("b", [1.0, 2.0, 3.0], true),
+        Some(&node("<rotate>1 0 0 30</rotate>", "b")),
+    );
     let bytes = text.as_bytes();
     for cut in 0..bytes.len() {
         let _ = read("t.dae", &bytes[..cut]);
@@ -525,7 +564,8 @@ fn up_axis_evidence_icub() {
     let turned = com_in_parts(&urdf, &root, true);
     let raw = com_in_parts(&urdf, &root, false);
     assert!(turned.len() >= 20, "{} iCub links with meshes", turned.len());
-    let decisive = ["chest", "l_upper_arm", "l_forearm", "l_upper_leg", "l_lower_leg", "r_upper_arm", "r_forearm", "r_upper_leg", "r_lower_leg"];
+    let decisive =
+        ["chest", "l_upper_arm", "l_forearm", "l_upper_leg", "l_lower_leg", "r_upper_arm", "r_forearm", "r_upper_leg", "r_lower_leg"];
     for name in decisive {
         let t = turned.iter().find(|l| l.0 == name).expect("link");
         let r = raw.iter().find(|l| l.0 == name).expect("link");

@@ -78,30 +78,14 @@ pub(crate) fn root_element(bytes: &[u8]) -> Root<'_> {
             Ok(Event::Start(e)) | Ok(Event::Empty(e)) => {
                 let end = before + 1 + e.name().as_ref().len();
                 return match bytes.get(before + 1..end) {
-                    Some(name) => Root::Element {
-                        name,
-                        offset: before,
-                    },
-                    None => Root::Error {
-                        offset: before,
-                        message: "bad start tag".into(),
-                    },
+                    Some(name) => Root::Element { name, offset: before },
+                    None => Root::Error { offset: before, message: "bad start tag".into() },
                 };
             }
             Ok(Event::Eof) => return Root::Missing,
-            Ok(Event::End(_)) => {
-                return Root::Error {
-                    offset: before,
-                    message: "end tag before any start tag".into(),
-                }
-            }
+            Ok(Event::End(_)) => return Root::Error { offset: before, message: "end tag before any start tag".into() },
             Ok(_) => {}
-            Err(e) => {
-                return Root::Error {
-                    offset: reader.error_position() as usize,
-                    message: e.to_string(),
-                }
-            }
+            Err(e) => return Root::Error { offset: reader.error_position() as usize, message: e.to_string() },
         }
     }
 }
@@ -113,22 +97,14 @@ fn pos<R>(reader: &Reader<R>) -> usize {
 impl<'a> Doc<'a> {
     /// Reads the whole document. `bytes.len()` must fit in `u32` (the caller checks).
     pub fn build(bytes: &'a [u8]) -> Result<Doc<'a>, Box<BuildError<'a>>> {
-        let mut doc = Doc {
-            bytes,
-            nodes: Vec::with_capacity((bytes.len() / 48 + 16).min(MAX_ELEMENTS)),
-        };
+        let mut doc = Doc { bytes, nodes: Vec::with_capacity((bytes.len() / 48 + 16).min(MAX_ELEMENTS)) };
         let mut reader = Reader::from_reader(bytes);
         // (node, last child so far) of every open element, innermost last.
         let mut stack: Vec<(u32, u32)> = Vec::with_capacity(32);
         let mut root_done = false;
         let fail = |doc: Doc<'a>, stack: &[(u32, u32)], offset: usize, message: String| {
             let open = stack.last().map(|&(n, _)| n);
-            Err(Box::new(BuildError {
-                offset,
-                message,
-                doc,
-                open,
-            }))
+            Err(Box::new(BuildError { offset, message, doc, open }))
         };
         loop {
             let before = pos(&reader);
@@ -175,9 +151,7 @@ impl<'a> Doc<'a> {
             }
             let id = doc.nodes.len() as u32;
             let name_end = (before + 1 + name_len) as u32;
-            let attrs_end = after
-                .saturating_sub(if empty { 2 } else { 1 })
-                .max(name_end as usize);
+            let attrs_end = after.saturating_sub(if empty { 2 } else { 1 }).max(name_end as usize);
             let parent = stack.last().map_or(NONE, |&(p, _)| p);
             doc.nodes.push(Node {
                 start: before as u32,
@@ -209,16 +183,8 @@ impl<'a> Doc<'a> {
         }
         if !stack.is_empty() {
             let len = bytes.len();
-            let name = stack
-                .last()
-                .map(|&(n, _)| String::from_utf8_lossy(doc.name(n)).into_owned())
-                .unwrap_or_default();
-            return fail(
-                doc,
-                &stack,
-                len,
-                format!("unexpected end of file: <{name}> is not closed (truncated file?)"),
-            );
+            let name = stack.last().map(|&(n, _)| String::from_utf8_lossy(doc.name(n)).into_owned()).unwrap_or_default();
+            return fail(doc, &stack, len, format!("unexpected end of file: <{name}> is not closed (truncated file?)"));
         }
         if doc.nodes.is_empty() {
             return fail(doc, &stack, bytes.len(), "no root element".into());
@@ -237,16 +203,12 @@ impl<'a> Doc<'a> {
 
     /// The element's name (empty for an invalid id).
     pub fn name(&self, id: NodeId) -> &'a [u8] {
-        self.node(id)
-            .and_then(|n| self.bytes.get(n.start as usize + 1..n.name_end as usize))
-            .unwrap_or_default()
+        self.node(id).and_then(|n| self.bytes.get(n.start as usize + 1..n.name_end as usize)).unwrap_or_default()
     }
 
     /// Raw text directly inside the element (entities not decoded, not trimmed).
     pub fn text(&self, id: NodeId) -> &'a [u8] {
-        self.node(id)
-            .and_then(|n| self.bytes.get(n.text_start as usize..n.text_end as usize))
-            .unwrap_or_default()
+        self.node(id).and_then(|n| self.bytes.get(n.text_start as usize..n.text_end as usize)).unwrap_or_default()
     }
 
     /// Byte offset of the element's start tag.
@@ -260,10 +222,7 @@ impl<'a> Doc<'a> {
 
     /// Child elements in document order.
     pub fn children(&self, id: NodeId) -> Children<'_, 'a> {
-        Children {
-            doc: self,
-            next: self.node(id).map_or(NONE, |n| n.first_child),
-        }
+        Children { doc: self, next: self.node(id).map_or(NONE, |n| n.first_child) }
     }
 
     /// The first child element called `name`.
@@ -285,12 +244,8 @@ impl<'a> Doc<'a> {
         if n.attrs_end <= n.name_end {
             return Ok(None);
         }
-        let tag = self
-            .bytes
-            .get(n.start as usize + 1..n.attrs_end as usize)
-            .unwrap_or_default();
-        let tag =
-            std::str::from_utf8(tag).map_err(|_| "attribute is not valid UTF-8".to_owned())?;
+        let tag = self.bytes.get(n.start as usize + 1..n.attrs_end as usize).unwrap_or_default();
+        let tag = std::str::from_utf8(tag).map_err(|_| "attribute is not valid UTF-8".to_owned())?;
         let name_len = (n.name_end - n.start - 1) as usize;
         for attr in Attributes::new(tag, name_len) {
             let attr = attr.map_err(|e| e.to_string())?;

@@ -71,11 +71,7 @@ pub enum XmlErrorKind {
     MissingBodyFrame { name: &'static str },
     /// A unit string that is not in the table.
     #[error("unknown {quantity} unit \"{unit}\" (expected one of {allowed})")]
-    UnknownUnit {
-        quantity: &'static str,
-        unit: String,
-        allowed: &'static str,
-    },
+    UnknownUnit { quantity: &'static str, unit: String, allowed: &'static str },
     /// A joint names a frame `ref` that no frame carries.
     #[error("frame ref=\"{ref_id}\" does not match any frame in the file")]
     DanglingRef { ref_id: u32 },
@@ -85,17 +81,12 @@ pub enum XmlErrorKind {
     /// `positionOrigin`, `positionReferenceFrame`, `orientationReferenceFrame` or a primitive's
     /// `referenceFrame` names something the format does not allow there.
     #[error("reference frame \"{value}\" is not supported (expected {expected})")]
-    UnsupportedReferenceFrame {
-        value: String,
-        expected: &'static str,
-    },
+    UnsupportedReferenceFrame { value: String, expected: &'static str },
     /// A frame is placed relative to a frame name its body does not have.
     #[error("frame \"{frame}\" refers to frame \"{name}\", which its body does not have")]
     UnknownFrameName { frame: String, name: String },
     /// A frame is placed relative to `ADJOINING`, but not exactly one joint uses it.
-    #[error(
-        "frame \"{frame}\" refers to ADJOINING, but {joints} joints use it (expected exactly one)"
-    )]
+    #[error("frame \"{frame}\" refers to ADJOINING, but {joints} joints use it (expected exactly one)")]
     AdjoiningNotOneJoint { frame: String, joints: usize },
     /// Frames placed relative to each other in a circle.
     #[error("frame references form a cycle: {cycle}")]
@@ -113,9 +104,7 @@ pub enum XmlErrorKind {
     #[error("expected {expected} comma-separated numbers, found {got}")]
     WrongCount { expected: usize, got: usize },
     /// A joint primitive other than weld, revolute, prismatic or spherical.
-    #[error(
-        "unknown joint primitive \"{name}\" (expected weld, revolute, prismatic or spherical)"
-    )]
+    #[error("unknown joint primitive \"{name}\" (expected weld, revolute, prismatic or spherical)")]
     UnknownPrimitive { name: String },
     /// A joint without any primitive.
     #[error("joint has no primitives")]
@@ -131,21 +120,9 @@ pub enum XmlErrorKind {
 
 impl XmlError {
     /// Builds an error at byte `offset` of `bytes`, computing the line and column now.
-    pub(crate) fn at(
-        file: &str,
-        bytes: &[u8],
-        offset: usize,
-        element: String,
-        kind: XmlErrorKind,
-    ) -> Self {
+    pub(crate) fn at(file: &str, bytes: &[u8], offset: usize, element: String, kind: XmlErrorKind) -> Self {
         let (line, column) = line_col(bytes, offset);
-        XmlError {
-            file: file.to_owned(),
-            line,
-            column,
-            element,
-            kind,
-        }
+        XmlError { file: file.to_owned(), line, column, element, kind }
     }
 }
 
@@ -182,9 +159,7 @@ pub(crate) fn line_cols_sorted(bytes: &[u8], sorted: &[u32]) -> Vec<(u32, u32)> 
 /// Number of `\n` in `bytes`, 64 bytes at a time (the per-chunk `u8` sum vectorises).
 fn newlines(bytes: &[u8]) -> usize {
     let mut chunks = bytes.chunks_exact(64);
-    let mut n: usize = (&mut chunks)
-        .map(|c| usize::from(c.iter().map(|&b| u8::from(b == b'\n')).sum::<u8>()))
-        .sum();
+    let mut n: usize = (&mut chunks).map(|c| usize::from(c.iter().map(|&b| u8::from(b == b'\n')).sum::<u8>())).sum();
     n += chunks.remainder().iter().filter(|&&b| b == b'\n').count();
     n
 }
@@ -232,11 +207,7 @@ mod tests {
             line: 123,
             column: 9,
             element: "Body \"ARM\" (nodeID \"59\") / positionUnits".into(),
-            kind: XmlErrorKind::UnknownUnit {
-                quantity: "length",
-                unit: "furlong".into(),
-                allowed: "mm, cm, m, in, ft",
-            },
+            kind: XmlErrorKind::UnknownUnit { quantity: "length", unit: "furlong".into(), allowed: "mm, cm, m, in, ft" },
         };
         assert_eq!(
             e.to_string(),

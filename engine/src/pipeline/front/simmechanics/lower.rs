@@ -18,8 +18,8 @@ use super::error::{line_cols_sorted, XmlError, XmlErrorKind};
 use super::pose;
 use super::units::Quantity;
 use crate::pipeline::ir::{
-    Body, BodyId, Frame, FrameId, FrameOwner, Ground, GroundId, Joint, Material, Model, Primitive,
-    PrimitiveKind, SourceInfo, SourceLoc, Warning,
+    Body, BodyId, Frame, FrameId, FrameOwner, Ground, GroundId, Joint, Material, Model, Primitive, PrimitiveKind, SourceInfo, SourceLoc,
+    Warning,
 };
 use place::{AxisFrame, FrameRefs};
 
@@ -105,11 +105,7 @@ impl<'a> Lower<'_, 'a> {
     fn document(&mut self) -> Result<()> {
         let doc = self.doc;
         let root = doc.root();
-        let mut source = SourceInfo {
-            file: self.file.to_owned(),
-            format: "simmechanics".into(),
-            ..SourceInfo::default()
-        };
+        let mut source = SourceInfo { file: self.file.to_owned(), format: "simmechanics".into(), ..SourceInfo::default() };
         let mut container = None;
         for c in doc.children(root) {
             match doc.name(c) {
@@ -153,10 +149,7 @@ impl<'a> Lower<'_, 'a> {
                     (b"subsystems", b"Subsystem") => self.subsystem(c, path)?,
                     (b"joints", other) => {
                         // Not an element to skip silently: a constraint would be lost.
-                        let message = format!(
-                            "joint entry <{}> is not a SimpleJoint and was ignored",
-                            String::from_utf8_lossy(other)
-                        );
+                        let message = format!("joint entry <{}> is not a SimpleJoint and was ignored", String::from_utf8_lossy(other));
                         self.warn("joint-element-skipped", message, c);
                     }
                     _ => {}
@@ -167,10 +160,7 @@ impl<'a> Lower<'_, 'a> {
     }
 
     fn subsystem(&mut self, node: NodeId, path: &mut Vec<String>) -> Result<()> {
-        let name = self
-            .doc
-            .child(node, b"name")
-            .ok_or_else(|| self.missing(node, "name"))?;
+        let name = self.doc.child(node, b"name").ok_or_else(|| self.missing(node, "name"))?;
         path.push(self.string(name)?);
         self.system(node, path)?;
         path.pop();
@@ -181,8 +171,7 @@ impl<'a> Lower<'_, 'a> {
 
     fn body(&mut self, node: NodeId, path: &[String]) -> Result<()> {
         let doc = self.doc;
-        let (mut name, mut node_id, mut frames, mut geometry, mut material) =
-            (None, None, None, None, None);
+        let (mut name, mut node_id, mut frames, mut geometry, mut material) = (None, None, None, None, None);
         let (mut mass, mut mass_u, mut inertia, mut inertia_u) = (None, None, None, None);
         let (mut volume, mut volume_u, mut area, mut area_u) = (None, None, None, None);
         for c in doc.children(node) {
@@ -206,38 +195,13 @@ impl<'a> Lower<'_, 'a> {
         let cad_name = self.required_string(node, name, "name")?;
         let node_id = self.required_string(node, node_id, "nodeID")?;
         let mass = self.quantity::<1>(node, mass, "mass", mass_u, "massUnits", Quantity::Mass)?;
-        let inertia = self.quantity::<9>(
-            node,
-            inertia,
-            "inertia",
-            inertia_u,
-            "inertiaUnits",
-            Quantity::Inertia,
-        )?;
+        let inertia = self.quantity::<9>(node, inertia, "inertia", inertia_u, "inertiaUnits", Quantity::Inertia)?;
         let volume = match volume {
-            Some(v) => Some(
-                self.quantity::<1>(
-                    node,
-                    Some(v),
-                    "volume",
-                    volume_u,
-                    "volumeUnits",
-                    Quantity::Volume,
-                )?[0],
-            ),
+            Some(v) => Some(self.quantity::<1>(node, Some(v), "volume", volume_u, "volumeUnits", Quantity::Volume)?[0]),
             None => None,
         };
         let surface_area = match area {
-            Some(a) => Some(
-                self.quantity::<1>(
-                    node,
-                    Some(a),
-                    "surfaceArea",
-                    area_u,
-                    "surfaceAreaUnits",
-                    Quantity::Area,
-                )?[0],
-            ),
+            Some(a) => Some(self.quantity::<1>(node, Some(a), "surfaceArea", area_u, "surfaceAreaUnits", Quantity::Area)?[0]),
             None => None,
         };
         let geometry_file = match geometry {
@@ -269,8 +233,7 @@ impl<'a> Lower<'_, 'a> {
             frame_ids.push(fid);
         }
         let cg = cg.ok_or_else(|| self.err(node, XmlErrorKind::MissingBodyFrame { name: "CG" }))?;
-        let cs1 =
-            cs1.ok_or_else(|| self.err(node, XmlErrorKind::MissingBodyFrame { name: "CS1" }))?;
+        let cs1 = cs1.ok_or_else(|| self.err(node, XmlErrorKind::MissingBodyFrame { name: "CS1" }))?;
 
         self.locs.push((self.offset(node), Slot::Body(id.0)));
         self.model.bodies.push(Body {
@@ -305,14 +268,8 @@ impl<'a> Lower<'_, 'a> {
             }
         }
         let color = self.numbers::<3>(color.ok_or_else(|| self.missing(node, "color"))?)?;
-        let scalar = |n: Option<NodeId>| -> Result<f64> {
-            n.map_or(Ok(0.0), |n| self.numbers::<1>(n).map(|[v]| v))
-        };
-        Ok(Material {
-            color,
-            transparency: scalar(transparency)?,
-            specular: scalar(specular)?,
-        })
+        let scalar = |n: Option<NodeId>| -> Result<f64> { n.map_or(Ok(0.0), |n| self.numbers::<1>(n).map(|[v]| v)) };
+        Ok(Material { color, transparency: scalar(transparency)?, specular: scalar(specular)? })
     }
 
     /// Reads a frame definition, appends it to the model and registers its `ref`. Returns its
@@ -320,8 +277,7 @@ impl<'a> Lower<'_, 'a> {
     fn frame(&mut self, node: NodeId, owner: FrameOwner) -> Result<(FrameId, f64)> {
         let doc = self.doc;
         let (mut name, mut display, mut node_id) = (None, None, None);
-        let (mut position, mut pos_units, mut orientation, mut o_type, mut o_units) =
-            (None, None, None, None, None);
+        let (mut position, mut pos_units, mut orientation, mut o_type, mut o_units) = (None, None, None, None, None);
         let mut ref_nodes = [None; 3];
         for c in doc.children(node) {
             match doc.name(c) {
@@ -353,8 +309,7 @@ impl<'a> Lower<'_, 'a> {
             }
         }
 
-        let [x, y, z] =
-            self.numbers::<3>(position.ok_or_else(|| self.missing(node, "position"))?)?;
+        let [x, y, z] = self.numbers::<3>(position.ok_or_else(|| self.missing(node, "position"))?)?;
         let units = pos_units.ok_or_else(|| self.missing(node, "positionUnits"))?;
         let scale = self.unit(units, Quantity::Length)?;
         // Orientation type and units first, so that an unsupported type is reported as such
@@ -377,11 +332,7 @@ impl<'a> Lower<'_, 'a> {
             return Err(self.err(o, XmlErrorKind::NotARotation { frame: name.to_string(), det: d.det, error: d.error }));
         }
         if let Some(d) = defect {
-            let what = if d.det < 0.0 {
-                "mirrored (determinant < 0)"
-            } else {
-                "not orthonormal"
-            };
+            let what = if d.det < 0.0 { "mirrored (determinant < 0)" } else { "not orthonormal" };
             self.warn(
                 "frame-not-orthonormal",
                 format!(
@@ -391,10 +342,8 @@ impl<'a> Lower<'_, 'a> {
                 o,
             );
         }
-        let pose = Isometry3::from_parts(
-            Translation3::from(Vector3::new(x, y, z) * scale),
-            UnitQuaternion::from_rotation_matrix(&rotation),
-        );
+        let pose =
+            Isometry3::from_parts(Translation3::from(Vector3::new(x, y, z) * scale), UnitQuaternion::from_rotation_matrix(&rotation));
 
         let id = FrameId(self.model.frames.len() as u32);
         if let Some(r) = ref_id {
@@ -407,22 +356,13 @@ impl<'a> Lower<'_, 'a> {
         self.first_frame_scale.get_or_insert(scale);
         self.frame_refs.push(frame_refs);
         self.locs.push((self.offset(node), Slot::Frame(id.0)));
-        self.model.frames.push(Frame {
-            name,
-            display_name,
-            node_id,
-            owner,
-            ref_id,
-            pose,
-            loc: SourceLoc::default(),
-        });
+        self.model.frames.push(Frame { name, display_name, node_id, owner, ref_id, pose, loc: SourceLoc::default() });
         Ok((id, scale))
     }
 
     fn joint(&mut self, node: NodeId, path: &[String]) -> Result<()> {
         let doc = self.doc;
-        let (mut name, mut node_id, mut base, mut follower, mut prims) =
-            (None, None, None, None, None);
+        let (mut name, mut node_id, mut base, mut follower, mut prims) = (None, None, None, None, None);
         for c in doc.children(node) {
             match doc.name(c) {
                 b"name" => first(&mut name, c),
@@ -446,23 +386,14 @@ impl<'a> Lower<'_, 'a> {
                 let (primitive, axis_frame) = self.primitive(p)?;
                 primitives.push(primitive);
                 axis_frames.push(axis_frame);
-                self.locs
-                    .push((self.offset(p), Slot::Primitive { joint, index }));
+                self.locs.push((self.offset(p), Slot::Primitive { joint, index }));
             }
         }
         if primitives.is_empty() {
             return Err(self.err(prims, XmlErrorKind::NoPrimitives));
         }
         self.locs.push((self.offset(node), Slot::Joint(joint)));
-        self.joints.push(PendingJoint {
-            cad_name,
-            node_id,
-            subsystem_path: path.to_vec(),
-            base,
-            follower,
-            primitives,
-            axis_frames,
-        });
+        self.joints.push(PendingJoint { cad_name, node_id, subsystem_path: path.to_vec(), base, follower, primitives, axis_frames });
         Ok(())
     }
 
@@ -472,9 +403,7 @@ impl<'a> Lower<'_, 'a> {
             .doc
             .descend(node, &[b"JointSide", b"connection", b"Frame"])
             .ok_or_else(|| self.missing(node, "JointSide/connection/Frame"))?;
-        let r = self
-            .ref_attr(frame)?
-            .ok_or_else(|| self.err(frame, XmlErrorKind::MissingAttribute { name: "ref" }))?;
+        let r = self.ref_attr(frame)?.ok_or_else(|| self.err(frame, XmlErrorKind::MissingAttribute { name: "ref" }))?;
         Ok((r, frame))
     }
 
@@ -502,11 +431,7 @@ impl<'a> Lower<'_, 'a> {
             }
         };
         let axis = self.numbers::<3>(axis.ok_or_else(|| self.missing(node, "axis"))?)?;
-        let primitive = Primitive {
-            kind,
-            axis_world: Vector3::from(axis),
-            loc: SourceLoc::default(),
-        };
+        let primitive = Primitive { kind, axis_world: Vector3::from(axis), loc: SourceLoc::default() };
         Ok((primitive, axis_frame))
     }
 
@@ -522,18 +447,11 @@ impl<'a> Lower<'_, 'a> {
         }
         let name = self.required_string(node, name, "name")?;
         let node_id = self.required_string(node, node_id, "nodeID")?;
-        let frame = doc
-            .descend(node, &[b"frame", b"Frame"])
-            .ok_or_else(|| self.missing(node, "frame/Frame"))?;
+        let frame = doc.descend(node, &[b"frame", b"Frame"]).ok_or_else(|| self.missing(node, "frame/Frame"))?;
         let id = GroundId(self.model.grounds.len() as u32);
         let (frame, _) = self.frame(frame, FrameOwner::Ground(id))?;
         self.locs.push((self.offset(node), Slot::Ground(id.0)));
-        self.model.grounds.push(Ground {
-            name,
-            node_id,
-            frame,
-            loc: SourceLoc::default(),
-        });
+        self.model.grounds.push(Ground { name, node_id, frame, loc: SourceLoc::default() });
         Ok(())
     }
 
@@ -568,21 +486,15 @@ impl<'a> Lower<'_, 'a> {
         let positions = line_cols_sorted(self.doc.bytes, &offsets);
         let m = &mut self.model;
         for (&(_, slot), (line, column)) in self.locs.iter().zip(positions) {
-            let loc = SourceLoc {
-                file: self.file.to_owned(),
-                line,
-                column,
-            };
+            let loc = SourceLoc { file: self.file.to_owned(), line, column };
             let target = match slot {
                 Slot::Body(i) => m.bodies.get_mut(i as usize).map(|b| &mut b.loc),
                 Slot::Frame(i) => m.frames.get_mut(i as usize).map(|f| &mut f.loc),
                 Slot::Joint(i) => m.joints.get_mut(i as usize).map(|j| &mut j.loc),
                 Slot::Ground(i) => m.grounds.get_mut(i as usize).map(|g| &mut g.loc),
-                Slot::Primitive { joint, index } => m
-                    .joints
-                    .get_mut(joint as usize)
-                    .and_then(|j| j.primitives.get_mut(index as usize))
-                    .map(|p| &mut p.loc),
+                Slot::Primitive { joint, index } => {
+                    m.joints.get_mut(joint as usize).and_then(|j| j.primitives.get_mut(index as usize)).map(|p| &mut p.loc)
+                }
             };
             if let Some(target) = target {
                 *target = loc;
@@ -608,34 +520,21 @@ impl<'a> Lower<'_, 'a> {
         if !s.contains('&') {
             return Ok(Cow::Borrowed(s));
         }
-        quick_xml::escape::unescape(s).map_err(|e| {
-            self.err(
-                node,
-                XmlErrorKind::Syntax {
-                    message: e.to_string(),
-                },
-            )
-        })
+        quick_xml::escape::unescape(s).map_err(|e| self.err(node, XmlErrorKind::Syntax { message: e.to_string() }))
     }
 
     fn string(&self, node: NodeId) -> Result<String> {
         self.value(node).map(Cow::into_owned)
     }
 
-    fn required_string(
-        &self,
-        parent: NodeId,
-        node: Option<NodeId>,
-        name: &'static str,
-    ) -> Result<String> {
+    fn required_string(&self, parent: NodeId, node: Option<NodeId>, name: &'static str) -> Result<String> {
         self.string(node.ok_or_else(|| self.missing(parent, name))?)
     }
 
     /// Exactly `N` comma-separated finite numbers.
     fn numbers<const N: usize>(&self, node: NodeId) -> Result<[f64; N]> {
         let text = self.doc.text(node).trim_ascii();
-        let text =
-            std::str::from_utf8(text).map_err(|_| self.err(node, XmlErrorKind::InvalidUtf8))?;
+        let text = std::str::from_utf8(text).map_err(|_| self.err(node, XmlErrorKind::InvalidUtf8))?;
         let mut out = [0.0; N];
         let mut got = 0;
         if !text.is_empty() {
@@ -663,10 +562,7 @@ impl<'a> Lower<'_, 'a> {
         quantity: Quantity,
     ) -> Result<[f64; N]> {
         let mut v = self.numbers::<N>(value.ok_or_else(|| self.missing(parent, value_name))?)?;
-        let factor = self.unit(
-            unit.ok_or_else(|| self.missing(parent, unit_name))?,
-            quantity,
-        )?;
+        let factor = self.unit(unit.ok_or_else(|| self.missing(parent, unit_name))?, quantity)?;
         for x in &mut v {
             *x *= factor;
         }
@@ -677,33 +573,16 @@ impl<'a> Lower<'_, 'a> {
     fn unit(&self, node: NodeId, quantity: Quantity) -> Result<f64> {
         let unit = self.value(node)?;
         quantity.factor(&unit).ok_or_else(|| {
-            self.err(
-                node,
-                XmlErrorKind::UnknownUnit {
-                    quantity: quantity.name(),
-                    unit: unit.into_owned(),
-                    allowed: quantity.allowed(),
-                },
-            )
+            self.err(node, XmlErrorKind::UnknownUnit { quantity: quantity.name(), unit: unit.into_owned(), allowed: quantity.allowed() })
         })
     }
 
     /// The `ref` attribute as a number.
     fn ref_attr(&self, node: NodeId) -> Result<Option<u32>> {
-        let raw = self
-            .doc
-            .attr(node, b"ref")
-            .map_err(|message| self.err(node, XmlErrorKind::Syntax { message }))?;
+        let raw = self.doc.attr(node, b"ref").map_err(|message| self.err(node, XmlErrorKind::Syntax { message }))?;
         let Some(raw) = raw else { return Ok(None) };
         let text = String::from_utf8_lossy(raw.trim_ascii());
-        text.parse::<u32>().map(Some).map_err(|_| {
-            self.err(
-                node,
-                XmlErrorKind::BadNumber {
-                    text: text.into_owned(),
-                },
-            )
-        })
+        text.parse::<u32>().map(Some).map_err(|_| self.err(node, XmlErrorKind::BadNumber { text: text.into_owned() }))
     }
 
     // ----- diagnostics -------------------------------------------------------------------
@@ -713,13 +592,7 @@ impl<'a> Lower<'_, 'a> {
     }
 
     fn err(&self, node: NodeId, kind: XmlErrorKind) -> XmlError {
-        XmlError::at(
-            self.file,
-            self.doc.bytes,
-            self.doc.offset(node),
-            describe(self.doc, node),
-            kind,
-        )
+        XmlError::at(self.file, self.doc.bytes, self.doc.offset(node), describe(self.doc, node), kind)
     }
 
     fn missing(&self, parent: NodeId, name: &'static str) -> XmlError {
@@ -729,24 +602,12 @@ impl<'a> Lower<'_, 'a> {
     /// `file:line:column: element` for messages that point at another element.
     fn located(&self, node: NodeId) -> String {
         let (line, column) = super::error::line_col(self.doc.bytes, self.doc.offset(node));
-        format!(
-            "{} at {}:{}:{}",
-            describe(self.doc, node),
-            self.file,
-            line,
-            column
-        )
+        format!("{} at {}:{}:{}", describe(self.doc, node), self.file, line, column)
     }
 
     fn warn(&mut self, code: &'static str, message: String, node: NodeId) {
         let (line, column) = super::error::line_col(self.doc.bytes, self.doc.offset(node));
-        let location = format!(
-            "{}:{}:{}: {}",
-            self.file,
-            line,
-            column,
-            describe(self.doc, node)
-        );
+        let location = format!("{}:{}:{}: {}", self.file, line, column, describe(self.doc, node));
         self.warnings.push(Warning::new(code, message, location));
     }
 }
@@ -756,16 +617,10 @@ fn number(piece: &str) -> std::result::Result<f64, XmlErrorKind> {
     let piece = piece.trim_ascii();
     match piece.parse::<f64>() {
         Ok(v) if v.is_finite() => Ok(v),
-        Ok(_) => Err(XmlErrorKind::NonFinite {
-            text: piece.to_owned(),
-        }),
+        Ok(_) => Err(XmlErrorKind::NonFinite { text: piece.to_owned() }),
         // MSVC-style spellings: 1.#INF, -1.#IND, 1.#QNAN.
-        Err(_) if piece.contains('#') => Err(XmlErrorKind::NonFinite {
-            text: piece.to_owned(),
-        }),
-        Err(_) => Err(XmlErrorKind::BadNumber {
-            text: piece.to_owned(),
-        }),
+        Err(_) if piece.contains('#') => Err(XmlErrorKind::NonFinite { text: piece.to_owned() }),
+        Err(_) => Err(XmlErrorKind::BadNumber { text: piece.to_owned() }),
     }
 }
 
@@ -821,11 +676,7 @@ pub(crate) fn describe(doc: &Doc<'_>, node: NodeId) -> String {
     let mut prev_described = false;
     for (i, (described, text)) in segments.iter().rev().enumerate() {
         if i > 0 {
-            out.push_str(if prev_described || *described {
-                " / "
-            } else {
-                "/"
-            });
+            out.push_str(if prev_described || *described { " / " } else { "/" });
         }
         out.push_str(text);
         prev_described = *described;
@@ -836,11 +687,8 @@ pub(crate) fn describe(doc: &Doc<'_>, node: NodeId) -> String {
 /// `Kind "name" (nodeID "id") ref="N"`, leaving out what the element does not have.
 fn describe_one(doc: &Doc<'_>, id: NodeId) -> String {
     let mut s = String::from_utf8_lossy(doc.name(id)).into_owned();
-    let child = |name: &[u8]| {
-        doc.child(id, name)
-            .map(|c| String::from_utf8_lossy(unquote(doc.text(c))).into_owned())
-            .filter(|v| !v.is_empty())
-    };
+    let child =
+        |name: &[u8]| doc.child(id, name).map(|c| String::from_utf8_lossy(unquote(doc.text(c))).into_owned()).filter(|v| !v.is_empty());
     if let Some(name) = child(b"name") {
         let _ = write!(s, " \"{name}\"");
     }

@@ -79,13 +79,7 @@ pub fn parse(file: &str, bytes: &[u8]) -> Result<(ir::Model, Vec<ir::Warning>), 
     let bytes = strip_bom(bytes);
     if bytes.len() > MAX_XML_BYTES {
         let kind = XmlErrorKind::TooLarge { size: bytes.len() };
-        return Err(XmlError {
-            file: file.to_owned(),
-            line: 0,
-            column: 0,
-            element: String::new(),
-            kind,
-        });
+        return Err(XmlError { file: file.to_owned(), line: 0, column: 0, element: String::new(), kind });
     }
     match dom::root_element(bytes) {
         Root::Element { name, .. } if name == ROOT => {}
@@ -99,9 +93,7 @@ pub fn parse(file: &str, bytes: &[u8]) -> Result<(ir::Model, Vec<ir::Warning>), 
             return Err(XmlError::at(file, bytes, offset, root, kind));
         }
         Root::Missing => {
-            let kind = XmlErrorKind::Syntax {
-                message: "no root element".into(),
-            };
+            let kind = XmlErrorKind::Syntax { message: "no root element".into() };
             return Err(XmlError::at(file, bytes, bytes.len(), String::new(), kind));
         }
         Root::Error { offset, message } => {
@@ -110,17 +102,8 @@ pub fn parse(file: &str, bytes: &[u8]) -> Result<(ir::Model, Vec<ir::Warning>), 
         }
     }
     let doc = Doc::build(bytes).map_err(|e| {
-        let element = e
-            .open
-            .map(|n| lower::describe(&e.doc, n))
-            .unwrap_or_default();
-        XmlError::at(
-            file,
-            bytes,
-            e.offset,
-            element,
-            XmlErrorKind::Syntax { message: e.message },
-        )
+        let element = e.open.map(|n| lower::describe(&e.doc, n)).unwrap_or_default();
+        XmlError::at(file, bytes, e.offset, element, XmlErrorKind::Syntax { message: e.message })
     })?;
     lower::lower(file, &doc)
 }

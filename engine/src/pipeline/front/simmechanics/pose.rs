@@ -103,9 +103,7 @@ mod tests {
     #[test]
     fn six_digit_noise_is_removed() {
         // fourbar.xml: the columns are the frame axes in world.
-        let m = Matrix3::from_column_slice(&[
-            -0.319989, 0.947421, 0.0, 0.0, 0.0, 1.0, 0.947421, 0.319989, 0.0,
-        ]);
+        let m = Matrix3::from_column_slice(&[-0.319989, 0.947421, 0.0, 0.0, 0.0, 1.0, 0.947421, 0.319989, 0.0]);
         let (r, d) = nearest_rotation(&m);
         assert!(d.is_none());
         assert!(is_rotation(&r));

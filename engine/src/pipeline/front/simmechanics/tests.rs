@@ -14,14 +14,7 @@ fn frame(name: &str, r: Option<u32>, pos: &str, units: &str, orientation: &str) 
 
 /// A frame whose `positionOrigin`, `positionReferenceFrame` and `orientationReferenceFrame`
 /// are `refs`.
-fn frame_in(
-    name: &str,
-    r: Option<u32>,
-    pos: &str,
-    units: &str,
-    orientation: &str,
-    [origin, axes, orient_ref]: [&str; 3],
-) -> String {
+fn frame_in(name: &str, r: Option<u32>, pos: &str, units: &str, orientation: &str, [origin, axes, orient_ref]: [&str; 3]) -> String {
     let r = r.map(|r| format!(" ref=\"{r}\"")).unwrap_or_default();
     format!(
         r#"<Frame{r}>
@@ -68,11 +61,7 @@ fn simple_body(name: &str, r: u32, pos: &str) -> String {
     body(
         name,
         name,
-        &[
-            frame("CG", None, pos, "mm", IDENTITY),
-            frame("CS1", None, "0,0,0", "mm", IDENTITY),
-            frame("CS2", Some(r), pos, "mm", IDENTITY),
-        ],
+        &[frame("CG", None, pos, "mm", IDENTITY), frame("CS1", None, "0,0,0", "mm", IDENTITY), frame("CS2", Some(r), pos, "mm", IDENTITY)],
     )
 }
 
@@ -109,12 +98,7 @@ fn ground(r: u32) -> String {
     )
 }
 
-fn system(
-    bodies: &[String],
-    joints: &[String],
-    grounds: &[String],
-    subsystems: &[String],
-) -> String {
+fn system(bodies: &[String], joints: &[String], grounds: &[String], subsystems: &[String]) -> String {
     format!(
         "<bodies>\n{}</bodies>\n<joints>\n{}</joints>\n<grounds>\n{}</grounds>\n<subsystems>\n{}</subsystems>\n<connectionPorts></connectionPorts>\n<id>0</id>\n",
         bodies.concat(),
@@ -154,15 +138,7 @@ fn two_bodies(container: &str) -> String {
         container,
         &system(
             &[simple_body("A", 1, "10,0,0"), simple_body("B", 2, "20,0,0")],
-            &[
-                joint(
-                    "RootGround--A",
-                    9,
-                    1,
-                    &[("weld", "0.57735,0.57735,0.57735")],
-                ),
-                joint("A--B", 1, 2, &[("revolute", "0,0,1")]),
-            ],
+            &[joint("RootGround--A", 9, 1, &[("weld", "0.57735,0.57735,0.57735")]), joint("A--B", 1, 2, &[("revolute", "0,0,1")])],
             &[ground(9)],
             &[],
         ),
@@ -205,15 +181,7 @@ fn reads_header_bodies_joints_grounds() {
     assert_eq!(m.source.created_on, "11/10/09||14:08:16");
     assert_eq!(m.source.created_by, "someone");
     assert_eq!(m.length_scale, 1e-3);
-    assert_eq!(
-        (
-            m.bodies.len(),
-            m.joints.len(),
-            m.grounds.len(),
-            m.frames.len()
-        ),
-        (2, 2, 1, 7)
-    );
+    assert_eq!((m.bodies.len(), m.joints.len(), m.grounds.len(), m.frames.len()), (2, 2, 1, 7));
 
     let a = &m.bodies[0];
     assert_eq!(a.cad_name, "A");
@@ -232,10 +200,7 @@ fn reads_header_bodies_joints_grounds() {
 
     let g = &m.grounds[0];
     assert_eq!(g.name, "RootGround");
-    assert_eq!(
-        m.frame(g.frame).owner,
-        FrameOwner::Ground(crate::pipeline::ir::GroundId(0))
-    );
+    assert_eq!(m.frame(g.frame).owner, FrameOwner::Ground(crate::pipeline::ir::GroundId(0)));
     assert_eq!(m.frame(g.frame).ref_id, Some(9));
 
     let weld = &m.joints[0];
@@ -255,18 +220,12 @@ fn source_locations_point_at_start_tags() {
     let (m, _) = ok(&xml);
     let body_line = line_of(&xml, "<Body>");
     assert_eq!(m.bodies[0].loc.file, "t.xml");
-    assert_eq!(
-        (m.bodies[0].loc.line, m.bodies[0].loc.column),
-        (body_line, 1)
-    );
+    assert_eq!((m.bodies[0].loc.line, m.bodies[0].loc.column), (body_line, 1));
     let cs1_line = line_of(&xml, "<name>\"CS1\"") - 1;
     assert_eq!(m.frame(m.bodies[0].cs1).loc.line, cs1_line);
     let joint_line = line_of(&xml, "<name>\"A--B\"") - 1;
     assert_eq!(m.joints[1].loc.line, joint_line);
-    assert_eq!(
-        m.joints[1].primitives[0].loc.line,
-        line_of(&xml, "<Primitive><name>\"revolute\"")
-    );
+    assert_eq!(m.joints[1].primitives[0].loc.line, line_of(&xml, "<Primitive><name>\"revolute\""));
     assert_eq!(m.joints[1].primitives[0].loc.column, 1);
     assert_eq!(m.grounds[0].loc.line, line_of(&xml, "<Ground>"));
     for f in &m.frames {
@@ -309,14 +268,7 @@ fn imperial_units_convert_exactly() {
 
 #[test]
 fn mixed_length_units_convert_each_frame_and_scale_comes_from_the_first() {
-    let b = body(
-        "A",
-        "1",
-        &[
-            frame("CG", None, "1,0,0", "m", IDENTITY),
-            frame("CS1", None, "100,0,0", "cm", IDENTITY),
-        ],
-    );
+    let b = body("A", "1", &[frame("CG", None, "1,0,0", "m", IDENTITY), frame("CS1", None, "100,0,0", "cm", IDENTITY)]);
     let (m, _) = ok(&document("SimMechanics", &system(&[b], &[], &[], &[])));
     assert_eq!(m.length_scale, 1.0);
     assert!((m.frame(m.bodies[0].cs1).pose.translation.x - 1.0).abs() < 1e-15);
@@ -324,30 +276,16 @@ fn mixed_length_units_convert_each_frame_and_scale_comes_from_the_first() {
 
 #[test]
 fn inertia_keeps_all_nine_entries_row_major() {
-    let xml = two_bodies("SimMechanics").replacen(
-        "<inertia>1,0,0,0,2,0,0,0,3</inertia>",
-        "<inertia>1,2,3,4,5,6,7,8,9</inertia>",
-        1,
-    );
+    let xml = two_bodies("SimMechanics").replacen("<inertia>1,0,0,0,2,0,0,0,3</inertia>", "<inertia>1,2,3,4,5,6,7,8,9</inertia>", 1);
     let (m, _) = ok(&xml);
     let i = m.bodies[0].inertia_cg;
-    assert_eq!(
-        (i[(0, 1)], i[(0, 2)], i[(1, 0)], i[(2, 1)]),
-        (2.0, 3.0, 4.0, 8.0)
-    );
+    assert_eq!((i[(0, 1)], i[(0, 2)], i[(1, 0)], i[(2, 1)]), (2.0, 3.0, 4.0, 8.0));
 }
 
 #[test]
 fn orientation_is_read_as_columns() {
     // Rotated 90 degrees about z: the frame's x axis is world y, its y axis is world -x.
-    let b = body(
-        "A",
-        "1",
-        &[
-            frame("CG", None, "0,0,0", "mm", "0,1,0,-1,0,0,0,0,1"),
-            frame("CS1", None, "0,0,0", "mm", IDENTITY),
-        ],
-    );
+    let b = body("A", "1", &[frame("CG", None, "0,0,0", "mm", "0,1,0,-1,0,0,0,0,1"), frame("CS1", None, "0,0,0", "mm", IDENTITY)]);
     let (m, warnings) = ok(&document("SimMechanics", &system(&[b], &[], &[], &[])));
     assert!(warnings.is_empty());
     let pose = m.frame(m.bodies[0].cg).pose;
@@ -364,53 +302,23 @@ fn orientation_is_read_as_columns() {
 fn cad_noise_is_orthonormalised_silently_and_mirrors_warn() {
     let noisy = "-0.319989,0.947421,0,0,0,1,0.947421,0.319989,0";
     let mirrored = "1,0,0,0,1,0,0,0,-1";
-    let b = body(
-        "A",
-        "1",
-        &[
-            frame("CG", None, "0,0,0", "mm", noisy),
-            frame("CS1", None, "0,0,0", "mm", mirrored),
-        ],
-    );
+    let b = body("A", "1", &[frame("CG", None, "0,0,0", "mm", noisy), frame("CS1", None, "0,0,0", "mm", mirrored)]);
     let (m, warnings) = ok(&document("SimMechanics", &system(&[b], &[], &[], &[])));
     let r = m.frame(m.bodies[0].cg).pose.rotation.to_rotation_matrix();
     assert!((r.matrix().determinant() - 1.0).abs() < 1e-12);
     assert!((r * Vector3::x() - Vector3::new(-0.319989, 0.947421, 0.0)).norm() < 1e-5);
     assert_eq!(warnings.len(), 1, "{warnings:?}");
     assert_eq!(warnings[0].code, "frame-not-orthonormal");
-    assert!(
-        warnings[0].message.contains("mirrored"),
-        "{}",
-        warnings[0].message
-    );
-    assert!(
-        warnings[0].location.starts_with("t.xml:"),
-        "{}",
-        warnings[0].location
-    );
-    assert!(
-        warnings[0].location.contains("Frame \"CS1\""),
-        "{}",
-        warnings[0].location
-    );
+    assert!(warnings[0].message.contains("mirrored"), "{}", warnings[0].message);
+    assert!(warnings[0].location.starts_with("t.xml:"), "{}", warnings[0].location);
+    assert!(warnings[0].location.contains("Frame \"CS1\""), "{}", warnings[0].location);
 }
 
 #[test]
 fn nested_subsystems_and_cross_subsystem_refs() {
     // The parent's joint names frame 2, which lives in a body two subsystems down.
-    let inner = subsystem(
-        "INNER",
-        &system(&[simple_body("C", 2, "0,5,0")], &[], &[], &[]),
-    );
-    let outer = subsystem(
-        "OUTER",
-        &system(
-            &[simple_body("B", 3, "0,0,5")],
-            &[joint("B--C", 3, 4, &[("weld", "1,1,1")])],
-            &[],
-            &[inner],
-        ),
-    );
+    let inner = subsystem("INNER", &system(&[simple_body("C", 2, "0,5,0")], &[], &[], &[]));
+    let outer = subsystem("OUTER", &system(&[simple_body("B", 3, "0,0,5")], &[joint("B--C", 3, 4, &[("weld", "1,1,1")])], &[], &[inner]));
     // A frame referenced before it is defined is fine too (ref 4 is in the last body).
     let last = simple_body("D", 4, "1,1,1");
     let xml = document(
@@ -432,16 +340,10 @@ fn nested_subsystems_and_cross_subsystem_refs() {
     let j = &m.joints[0];
     assert_eq!(j.cad_name, "A--C");
     assert!(j.subsystem_path.is_empty());
-    assert_eq!(
-        m.frame(j.follower).owner,
-        FrameOwner::Body(crate::pipeline::ir::BodyId(2))
-    );
+    assert_eq!(m.frame(j.follower).owner, FrameOwner::Body(crate::pipeline::ir::BodyId(2)));
     let j = &m.joints[1];
     assert_eq!(j.subsystem_path, ["OUTER"]);
-    assert_eq!(
-        m.frame(j.follower).owner,
-        FrameOwner::Body(crate::pipeline::ir::BodyId(3))
-    );
+    assert_eq!(m.frame(j.follower).owner, FrameOwner::Body(crate::pipeline::ir::BodyId(3)));
 }
 
 #[test]
@@ -450,21 +352,8 @@ fn multiple_primitives_and_material() {
         "</Body>",
         "<MaterialProp><color>0.5,0.25,1</color><ambient>0.4</ambient><specular>0.9</specular><transparency>0.1</transparency></MaterialProp></Body>",
     );
-    let prims = [
-        ("prismatic", "1,0,0"),
-        ("prismatic", "0,1,0"),
-        ("PRISMATIC", "0,0,1"),
-        ("Spherical", "0,0,1"),
-    ];
-    let xml = document(
-        "SimMechanics",
-        &system(
-            &[b, simple_body("B", 2, "0,0,0")],
-            &[joint("A--B", 1, 2, &prims)],
-            &[],
-            &[],
-        ),
-    );
+    let prims = [("prismatic", "1,0,0"), ("prismatic", "0,1,0"), ("PRISMATIC", "0,0,1"), ("Spherical", "0,0,1")];
+    let xml = document("SimMechanics", &system(&[b, simple_body("B", 2, "0,0,0")], &[joint("A--B", 1, 2, &prims)], &[], &[]));
     let (m, _) = ok(&xml);
     let kinds: Vec<_> = m.joints[0].primitives.iter().map(|p| p.kind).collect();
     use PrimitiveKind::*;
@@ -494,13 +383,11 @@ fn elements_are_found_by_name_not_position_and_unknown_ones_skipped() {
 
 #[test]
 fn strings_unquote_exactly_once_and_decode_entities() {
-    let xml = two_bodies("SimMechanics")
-        .replacen("<name>\"A\"</name>", "<name>\"\"A&amp;B\"\"</name>", 1)
-        .replacen(
-            "<createdBy>\"someone\"</createdBy>",
-            "<createdBy>\"\"</createdBy>",
-            1,
-        );
+    let xml = two_bodies("SimMechanics").replacen("<name>\"A\"</name>", "<name>\"\"A&amp;B\"\"</name>", 1).replacen(
+        "<createdBy>\"someone\"</createdBy>",
+        "<createdBy>\"\"</createdBy>",
+        1,
+    );
     let (m, _) = ok(&xml);
     assert_eq!(m.bodies[0].cad_name, "\"A&B\"");
     assert_eq!(m.source.created_by, "");
@@ -508,8 +395,7 @@ fn strings_unquote_exactly_once_and_decode_entities() {
 
 #[test]
 fn three_digit_exponents() {
-    let xml =
-        two_bodies("SimMechanics").replacen("<mass>1.5</mass>", "<mass>6.63933e-005</mass>", 1);
+    let xml = two_bodies("SimMechanics").replacen("<mass>1.5</mass>", "<mass>6.63933e-005</mass>", 1);
     let (m, _) = ok(&xml);
     assert_eq!(m.bodies[0].mass, 6.63933e-5);
 }
@@ -518,24 +404,16 @@ fn three_digit_exponents() {
 fn bom_comments_and_sniffing() {
     let xml = format!(
         "\u{feff}<!-- exported --><?pi x?>{}",
-        two_bodies("SimMechanics").replacen(
-            r#"<?xml version="1.0" encoding="UTF-8" standalone="no" ?>"#,
-            "",
-            1,
-        )
+        two_bodies("SimMechanics").replacen(r#"<?xml version="1.0" encoding="UTF-8" standalone="no" ?>"#, "", 1,)
     );
     assert!(is_physical_modeling_xml(xml.as_bytes()));
     let (m, _) = ok(&xml);
     assert_eq!(m.bodies.len(), 2);
-    assert!(is_physical_modeling_xml(
-        two_bodies("SimMechanics").as_bytes()
-    ));
+    assert!(is_physical_modeling_xml(two_bodies("SimMechanics").as_bytes()));
     assert!(!is_physical_modeling_xml(b"<SimMechanicsImportXML/>"));
     assert!(!is_physical_modeling_xml(b"solid x\nfacet normal 0 0 1"));
     assert!(!is_physical_modeling_xml(b""));
-    assert!(!is_physical_modeling_xml(
-        b"<?xml version=\"1.0\"?><!-- <PhysicalModelingXMLFile> --><other/>"
-    ));
+    assert!(!is_physical_modeling_xml(b"<?xml version=\"1.0\"?><!-- <PhysicalModelingXMLFile> --><other/>"));
 }
 
 // ----- errors ----------------------------------------------------------------------------------
@@ -553,107 +431,53 @@ fn second_generation_is_rejected() {
 #[test]
 fn other_roots_are_rejected() {
     let e = fails("<svg></svg>");
-    assert_eq!(
-        e.kind,
-        XmlErrorKind::NotPhysicalModelingXml { root: "svg".into() }
-    );
+    assert_eq!(e.kind, XmlErrorKind::NotPhysicalModelingXml { root: "svg".into() });
     let e = fails("<PhysicalModelingXMLFile><name>\"x\"</name></PhysicalModelingXMLFile>");
     assert_eq!(e.kind, XmlErrorKind::NoContainer);
 }
 
 #[test]
 fn dangling_ref_names_joint_and_ref_with_position() {
-    let xml = two_bodies("SimMechanics")
-        .replace(r#"<Frame ref="2"></Frame>"#, r#"<Frame ref="42"></Frame>"#);
+    let xml = two_bodies("SimMechanics").replace(r#"<Frame ref="2"></Frame>"#, r#"<Frame ref="42"></Frame>"#);
     let e = fails(&xml);
     assert_eq!(e.kind, XmlErrorKind::DanglingRef { ref_id: 42 });
     let at = xml.find(r#"<Frame ref="42">"#).expect("present");
     let line = xml[..at].matches('\n').count() as u32 + 1;
     let column = (at - xml[..at].rfind('\n').map_or(0, |i| i + 1)) as u32 + 1;
     assert_eq!((e.line, e.column), (line, column));
-    assert!(
-        e.element
-            .starts_with("SimpleJoint \"A--B\" (nodeID \"A--B\")"),
-        "{}",
-        e.element
-    );
+    assert!(e.element.starts_with("SimpleJoint \"A--B\" (nodeID \"A--B\")"), "{}", e.element);
     assert!(e.element.ends_with("Frame ref=\"42\""), "{}", e.element);
     let text = e.to_string();
-    assert!(
-        text.starts_with(&format!("t.xml:{line}:{column}: in SimpleJoint \"A--B\"")),
-        "{text}"
-    );
+    assert!(text.starts_with(&format!("t.xml:{line}:{column}: in SimpleJoint \"A--B\"")), "{text}");
     assert!(text.contains("ref=\"42\""), "{text}");
 }
 
 #[test]
 fn duplicate_ref_is_an_error() {
-    let xml = document(
-        "SimMechanics",
-        &system(
-            &[simple_body("A", 1, "0,0,0"), simple_body("B", 1, "0,0,0")],
-            &[],
-            &[],
-            &[],
-        ),
-    );
+    let xml = document("SimMechanics", &system(&[simple_body("A", 1, "0,0,0"), simple_body("B", 1, "0,0,0")], &[], &[], &[]));
     let e = fails(&xml);
-    assert!(
-        matches!(&e.kind, XmlErrorKind::DuplicateRef { ref_id: 1, first } if first.contains("Body")),
-        "{e}"
-    );
+    assert!(matches!(&e.kind, XmlErrorKind::DuplicateRef { ref_id: 1, first } if first.contains("Body")), "{e}");
 }
 
 #[test]
 fn unknown_unit_error() {
-    let xml = two_bodies("SimMechanics").replacen(
-        "<positionUnits>\"mm\"</positionUnits>",
-        "<positionUnits>\"furlong\"</positionUnits>",
-        1,
-    );
+    let xml = two_bodies("SimMechanics").replacen("<positionUnits>\"mm\"</positionUnits>", "<positionUnits>\"furlong\"</positionUnits>", 1);
     let e = fails(&xml);
-    assert_eq!(
-        e.kind,
-        XmlErrorKind::UnknownUnit {
-            quantity: "length",
-            unit: "furlong".into(),
-            allowed: "mm, cm, m, in, ft"
-        }
-    );
+    assert_eq!(e.kind, XmlErrorKind::UnknownUnit { quantity: "length", unit: "furlong".into(), allowed: "mm, cm, m, in, ft" });
     assert_eq!(e.line, line_of(&xml, "furlong"));
-    assert_eq!(
-        e.element,
-        "Body \"A\" (nodeID \"A\") / frames / Frame \"CG\" (nodeID \"CG-id0\") / positionUnits"
-    );
+    assert_eq!(e.element, "Body \"A\" (nodeID \"A\") / frames / Frame \"CG\" (nodeID \"CG-id0\") / positionUnits");
     assert!(e.to_string().ends_with(
         ": in Body \"A\" (nodeID \"A\") / frames / Frame \"CG\" (nodeID \"CG-id0\") / positionUnits: unknown length unit \"furlong\" (expected one of mm, cm, m, in, ft)"
     ), "{e}");
     let xml = two_bodies("SimMechanics").replacen("\"kg*m^2\"", "\"stone*m^2\"", 1);
-    assert!(matches!(
-        fails(&xml).kind,
-        XmlErrorKind::UnknownUnit {
-            quantity: "inertia",
-            ..
-        }
-    ));
+    assert!(matches!(fails(&xml).kind, XmlErrorKind::UnknownUnit { quantity: "inertia", .. }));
 }
 
 #[test]
 fn non_finite_and_bad_numbers_are_rejected() {
-    for (bad, non_finite) in [
-        ("NaN", true),
-        ("nan", true),
-        ("inf", true),
-        ("-1.#IND", true),
-        ("1.2.3", false),
-        ("", false),
-        ("1e", false),
-    ] {
-        let xml = two_bodies("SimMechanics").replacen(
-            "<position>10,0,0</position>",
-            &format!("<position>10,{bad},0</position>"),
-            1,
-        );
+    for (bad, non_finite) in [("NaN", true), ("nan", true), ("inf", true), ("-1.#IND", true), ("1.2.3", false), ("", false), ("1e", false)]
+    {
+        let xml = two_bodies("SimMechanics").replacen("<position>10,0,0</position>", &format!("<position>10,{bad},0</position>"), 1);
         let e = fails(&xml);
         match e.kind {
             XmlErrorKind::NonFinite { ref text } => {
@@ -673,48 +497,18 @@ fn non_finite_and_bad_numbers_are_rejected() {
 
 #[test]
 fn wrong_counts_are_rejected() {
-    let xml = two_bodies("SimMechanics").replacen(
-        "<position>10,0,0</position>",
-        "<position>10,0</position>",
-        1,
-    );
-    assert_eq!(
-        fails(&xml).kind,
-        XmlErrorKind::WrongCount {
-            expected: 3,
-            got: 2
-        }
-    );
-    let xml = two_bodies("SimMechanics").replacen(
-        "<inertia>1,0,0,0,2,0,0,0,3</inertia>",
-        "<inertia>1,0,0,0,2,0,0,0,3,4</inertia>",
-        1,
-    );
-    assert_eq!(
-        fails(&xml).kind,
-        XmlErrorKind::WrongCount {
-            expected: 9,
-            got: 10
-        }
-    );
+    let xml = two_bodies("SimMechanics").replacen("<position>10,0,0</position>", "<position>10,0</position>", 1);
+    assert_eq!(fails(&xml).kind, XmlErrorKind::WrongCount { expected: 3, got: 2 });
+    let xml = two_bodies("SimMechanics").replacen("<inertia>1,0,0,0,2,0,0,0,3</inertia>", "<inertia>1,0,0,0,2,0,0,0,3,4</inertia>", 1);
+    assert_eq!(fails(&xml).kind, XmlErrorKind::WrongCount { expected: 9, got: 10 });
     let xml = two_bodies("SimMechanics").replacen("<axis>0,0,1</axis>", "<axis></axis>", 1);
-    assert_eq!(
-        fails(&xml).kind,
-        XmlErrorKind::WrongCount {
-            expected: 3,
-            got: 0
-        }
-    );
+    assert_eq!(fails(&xml).kind, XmlErrorKind::WrongCount { expected: 3, got: 0 });
 }
 
 #[test]
 fn unsupported_frames_orientations_and_primitives() {
     let base = two_bodies("SimMechanics");
-    let e = fails(&base.replacen(
-        "<positionReferenceFrame>\"WORLD\"",
-        "<positionReferenceFrame>\"CS1 of BASE\"",
-        1,
-    ));
+    let e = fails(&base.replacen("<positionReferenceFrame>\"WORLD\"", "<positionReferenceFrame>\"CS1 of BASE\"", 1));
     assert_eq!(
         e.kind,
         XmlErrorKind::UnsupportedReferenceFrame {
@@ -726,64 +520,23 @@ fn unsupported_frames_orientations_and_primitives() {
     // A ground's frame has no sibling to name.
     let ground_frame = base.find("<Ground>").expect("ground");
     let (head, tail) = base.split_at(ground_frame);
-    let grounded = format!(
-        "{head}{}",
-        tail.replacen(
-            "<orientationReferenceFrame>\"WORLD\"",
-            "<orientationReferenceFrame>\"CS1\"",
-            1
-        )
-    );
+    let grounded = format!("{head}{}", tail.replacen("<orientationReferenceFrame>\"WORLD\"", "<orientationReferenceFrame>\"CS1\"", 1));
     let e = fails(&grounded);
-    assert_eq!(
-        e.kind,
-        XmlErrorKind::UnsupportedReferenceFrame {
-            value: "CS1".into(),
-            expected: "WORLD or ADJOINING",
-        }
-    );
-    assert_eq!(
-        e.line,
-        line_of(&grounded, "<orientationReferenceFrame>\"CS1\"")
-    );
+    assert_eq!(e.kind, XmlErrorKind::UnsupportedReferenceFrame { value: "CS1".into(), expected: "WORLD or ADJOINING" });
+    assert_eq!(e.line, line_of(&grounded, "<orientationReferenceFrame>\"CS1\""));
     assert!(e.element.starts_with("Ground \"RootGround\""), "{e}");
     let e = fails(&base.replacen(
         "<orientation>1,0,0,0,1,0,0,0,1</orientation>\n            <orientationType>\"3x3 Transform\"",
         "<orientation>1,0,0,0</orientation>\n            <orientationType>\"Quaternion\"",
         1,
     ));
-    assert_eq!(
-        e.kind,
-        XmlErrorKind::UnsupportedOrientationType {
-            value: "Quaternion".into()
-        }
-    );
+    assert_eq!(e.kind, XmlErrorKind::UnsupportedOrientationType { value: "Quaternion".into() });
     let e = fails(&base.replacen("\"revolute\"", "\"planar\"", 1));
-    assert_eq!(
-        e.kind,
-        XmlErrorKind::UnknownPrimitive {
-            name: "planar".into()
-        }
-    );
+    assert_eq!(e.kind, XmlErrorKind::UnknownPrimitive { name: "planar".into() });
     let e = fails(&base.replacen("<referenceFrame>\"WORLD\"", "<referenceFrame>\"CS2\"", 1));
-    assert_eq!(
-        e.kind,
-        XmlErrorKind::UnsupportedReferenceFrame {
-            value: "CS2".into(),
-            expected: "WORLD, BASE or FOLLOWER",
-        }
-    );
+    assert_eq!(e.kind, XmlErrorKind::UnsupportedReferenceFrame { value: "CS2".into(), expected: "WORLD, BASE or FOLLOWER" });
     let e = fails(&base.replacen("<orientationUnits>\"rad\"", "<orientationUnits>\"grad\"", 1));
-    assert!(
-        matches!(
-            e.kind,
-            XmlErrorKind::UnknownUnit {
-                quantity: "angle",
-                ..
-            }
-        ),
-        "{e}"
-    );
+    assert!(matches!(e.kind, XmlErrorKind::UnknownUnit { quantity: "angle", .. }), "{e}");
     // Missing reference-frame elements mean WORLD.
     let (m, _) = ok(&base.replace("<positionOrigin>\"WORLD\"</positionOrigin>", ""));
     assert_eq!(m.bodies.len(), 2);
@@ -797,49 +550,26 @@ const RZ90: &str = "0,1,0,-1,0,0,0,0,1";
 const RX90: &str = "1,0,0,0,0,1,0,-1,0";
 
 fn rot(columns: &str) -> nalgebra::Rotation3<f64> {
-    let v: Vec<f64> = columns
-        .split(',')
-        .map(|x| x.parse().expect("number"))
-        .collect();
+    let v: Vec<f64> = columns.split(',').map(|x| x.parse().expect("number")).collect();
     nalgebra::Rotation3::from_matrix_unchecked(nalgebra::Matrix3::from_column_slice(&v))
 }
 
-fn assert_pose(
-    m: &Model,
-    id: crate::pipeline::ir::FrameId,
-    p_mm: [f64; 3],
-    r: nalgebra::Rotation3<f64>,
-) {
+fn assert_pose(m: &Model, id: crate::pipeline::ir::FrameId, p_mm: [f64; 3], r: nalgebra::Rotation3<f64>) {
     let f = m.frame(id);
     let p = Vector3::from(p_mm) * 1e-3;
-    assert!(
-        (f.pose.translation.vector - p).norm() < 1e-15,
-        "{}: {} vs {p}",
-        f.name,
-        f.pose.translation.vector
-    );
+    assert!((f.pose.translation.vector - p).norm() < 1e-15, "{}: {} vs {p}", f.name, f.pose.translation.vector);
     let got = f.pose.rotation.to_rotation_matrix();
-    assert!(
-        (got.matrix() - r.matrix()).amax() < 1e-15,
-        "{}: {got} vs {r}",
-        f.name
-    );
+    assert!((got.matrix() - r.matrix()).amax() < 1e-15, "{}: {got} vs {r}", f.name);
 }
 
 /// The body's frame called `name`.
 fn named(m: &Model, body: usize, name: &str) -> crate::pipeline::ir::FrameId {
     let b = &m.bodies[body];
-    *b.frames
-        .iter()
-        .find(|&&f| m.frame(f).name == name)
-        .expect("frame")
+    *b.frames.iter().find(|&&f| m.frame(f).name == name).expect("frame")
 }
 
 fn one_body(frames: &[String]) -> String {
-    document(
-        "SimMechanics",
-        &system(&[body("A", "A", frames)], &[], &[], &[]),
-    )
+    document("SimMechanics", &system(&[body("A", "A", frames)], &[], &[], &[]))
 }
 
 #[test]
@@ -854,12 +584,7 @@ fn frame_chain_cs2_cg_cs1_world() {
     assert!(warnings.is_empty());
     assert_pose(&m, named(&m, 0, "CS1"), [10.0, 0.0, 0.0], rot(RZ90));
     assert_pose(&m, named(&m, 0, "CG"), [10.0, 5.0, 0.0], rot(RZ90));
-    assert_pose(
-        &m,
-        named(&m, 0, "CS2"),
-        [10.0, 5.0, 2.0],
-        rot(RZ90) * rot(RX90),
-    );
+    assert_pose(&m, named(&m, 0, "CS2"), [10.0, 5.0, 2.0], rot(RZ90) * rot(RX90));
 }
 
 #[test]
@@ -876,12 +601,7 @@ fn position_origin_axes_and_orientation_from_different_frames() {
     ]);
     let (m, _) = ok(&xml);
     assert_pose(&m, named(&m, 0, "CG"), [100.0, 1.0, 0.0], rot(RZ90));
-    assert_pose(
-        &m,
-        named(&m, 0, "CS3"),
-        [0.0, 0.0, 3.0],
-        rot(RX90) * rot(RZ90),
-    );
+    assert_pose(&m, named(&m, 0, "CS3"), [0.0, 0.0, 3.0], rot(RX90) * rot(RZ90));
     assert_pose(&m, named(&m, 0, "CS4"), [0.0, 0.0, 1000.0], rot(RZ90));
 }
 
@@ -907,45 +627,22 @@ fn adjoining_pair(prims: &[(&str, &str)]) -> String {
             frame_in("CS2", Some(2), "0,0,0", "mm", RZ90, adj),
         ],
     );
-    document(
-        "SimMechanics",
-        &system(&[a, b], &[joint("A--B", 1, 2, prims)], &[], &[]),
-    )
+    document("SimMechanics", &system(&[a, b], &[joint("A--B", 1, 2, prims)], &[], &[]))
 }
 
 #[test]
 fn adjoining_follower_frame_is_placed_from_the_base_frame_and_axes_in_joint_frames() {
-    let xml = adjoining_pair(&[
-        ("revolute", "1,0,0"),
-        ("prismatic", "1,0,0"),
-        ("prismatic", "0,0,1"),
-    ])
-    .replacen("<referenceFrame>\"WORLD\"", "<referenceFrame>\"BASE\"", 1)
-    .replacen(
-        "<referenceFrame>\"WORLD\"",
-        "<referenceFrame>\"FOLLOWER\"",
-        1,
-    );
+    let xml = adjoining_pair(&[("revolute", "1,0,0"), ("prismatic", "1,0,0"), ("prismatic", "0,0,1")])
+        .replacen("<referenceFrame>\"WORLD\"", "<referenceFrame>\"BASE\"", 1)
+        .replacen("<referenceFrame>\"WORLD\"", "<referenceFrame>\"FOLLOWER\"", 1);
     let (m, _) = ok(&xml);
     let rz180 = rot(RZ90) * rot(RZ90);
     assert_pose(&m, named(&m, 1, "CS2"), [20.0, 30.0, 0.0], rz180);
     // B's CG: 10 mm along B's CS2 x axis, which points along -x.
     assert_pose(&m, named(&m, 1, "CG"), [10.0, 30.0, 0.0], rz180);
-    let axes: Vec<_> = m.joints[0]
-        .primitives
-        .iter()
-        .map(|p| p.axis_world)
-        .collect();
-    assert!(
-        (axes[0] - Vector3::new(0.0, 1.0, 0.0)).norm() < 1e-15,
-        "BASE: {}",
-        axes[0]
-    );
-    assert!(
-        (axes[1] - Vector3::new(-1.0, 0.0, 0.0)).norm() < 1e-15,
-        "FOLLOWER: {}",
-        axes[1]
-    );
+    let axes: Vec<_> = m.joints[0].primitives.iter().map(|p| p.axis_world).collect();
+    assert!((axes[0] - Vector3::new(0.0, 1.0, 0.0)).norm() < 1e-15, "BASE: {}", axes[0]);
+    assert!((axes[1] - Vector3::new(-1.0, 0.0, 0.0)).norm() < 1e-15, "FOLLOWER: {}", axes[1]);
     assert_eq!(axes[2], Vector3::new(0.0, 0.0, 1.0), "WORLD");
 }
 
@@ -953,50 +650,20 @@ fn adjoining_follower_frame_is_placed_from_the_base_frame_and_axes_in_joint_fram
 fn frame_reference_errors_name_frames_and_lines() {
     // A cycle inside one body: CG -> CS1 -> CG.
     let xml = one_body(&[
-        frame_in(
-            "CG",
-            None,
-            "0,0,0",
-            "mm",
-            IDENTITY,
-            ["CS1", "WORLD", "WORLD"],
-        ),
-        frame_in(
-            "CS1",
-            None,
-            "0,0,0",
-            "mm",
-            IDENTITY,
-            ["WORLD", "WORLD", "CG"],
-        ),
+        frame_in("CG", None, "0,0,0", "mm", IDENTITY, ["CS1", "WORLD", "WORLD"]),
+        frame_in("CS1", None, "0,0,0", "mm", IDENTITY, ["WORLD", "WORLD", "CG"]),
     ]);
     let e = fails(&xml);
     assert_eq!(e.line, line_of(&xml, "<positionOrigin>\"CS1\""));
     assert!(
-        e.to_string().ends_with(
-            "Frame \"CG\" (nodeID \"CG-id0\") / positionOrigin: frame references form a cycle: CG -> CS1 -> CG"
-        ),
+        e.to_string().ends_with("Frame \"CG\" (nodeID \"CG-id0\") / positionOrigin: frame references form a cycle: CG -> CS1 -> CG"),
         "{e}"
     );
     // A frame relative to itself.
-    let xml = one_body(&[
-        frame("CG", None, "0,0,0", "mm", IDENTITY),
-        frame_in(
-            "CS1",
-            None,
-            "0,0,0",
-            "mm",
-            IDENTITY,
-            ["WORLD", "CS1", "WORLD"],
-        ),
-    ]);
+    let xml =
+        one_body(&[frame("CG", None, "0,0,0", "mm", IDENTITY), frame_in("CS1", None, "0,0,0", "mm", IDENTITY, ["WORLD", "CS1", "WORLD"])]);
     let e = fails(&xml);
-    assert_eq!(
-        e.kind,
-        XmlErrorKind::FrameCycle {
-            cycle: "CS1 -> CS1".into()
-        }
-    );
+    assert_eq!(e.kind, XmlErrorKind::FrameCycle { cycle: "CS1 -> CS1".into() });
     // Two joint frames ADJOINING each other.
     let xml = adjoining_pair(&[("revolute", "0,0,1")]).replacen(
         "<positionOrigin>\"WORLD\"</positionOrigin>\n            <positionReferenceFrame>\"WORLD\"</positionReferenceFrame>\n            <positionUnits>\"mm\"</positionUnits>\n            <orientation>0,1,0",
@@ -1004,25 +671,11 @@ fn frame_reference_errors_name_frames_and_lines() {
         1,
     );
     let e = fails(&xml);
-    assert_eq!(
-        e.kind,
-        XmlErrorKind::FrameCycle {
-            cycle: "CS2 -> CS2 of body \"B\" -> CS2".into()
-        }
-    );
+    assert_eq!(e.kind, XmlErrorKind::FrameCycle { cycle: "CS2 -> CS2 of body \"B\" -> CS2".into() });
     assert_eq!(e.line, line_of(&xml, "<positionOrigin>\"ADJOINING\""));
     // A name the body does not have.
-    let xml = one_body(&[
-        frame_in(
-            "CG",
-            None,
-            "0,0,0",
-            "mm",
-            IDENTITY,
-            ["WORLD", "CS9", "WORLD"],
-        ),
-        frame("CS1", None, "0,0,0", "mm", IDENTITY),
-    ]);
+    let xml =
+        one_body(&[frame_in("CG", None, "0,0,0", "mm", IDENTITY, ["WORLD", "CS9", "WORLD"]), frame("CS1", None, "0,0,0", "mm", IDENTITY)]);
     let e = fails(&xml);
     assert_eq!(e.line, line_of(&xml, "<positionReferenceFrame>\"CS9\""));
     assert!(
@@ -1034,37 +687,16 @@ fn frame_reference_errors_name_frames_and_lines() {
     // ADJOINING on a frame no joint uses.
     let xml = one_body(&[
         frame("CG", None, "0,0,0", "mm", IDENTITY),
-        frame_in(
-            "CS1",
-            None,
-            "0,0,0",
-            "mm",
-            IDENTITY,
-            ["WORLD", "WORLD", "ADJOINING"],
-        ),
+        frame_in("CS1", None, "0,0,0", "mm", IDENTITY, ["WORLD", "WORLD", "ADJOINING"]),
     ]);
     let e = fails(&xml);
-    assert_eq!(
-        e.line,
-        line_of(&xml, "<orientationReferenceFrame>\"ADJOINING\"")
-    );
-    assert_eq!(
-        e.kind.to_string(),
-        "frame \"CS1\" refers to ADJOINING, but 0 joints use it (expected exactly one)"
-    );
+    assert_eq!(e.line, line_of(&xml, "<orientationReferenceFrame>\"ADJOINING\""));
+    assert_eq!(e.kind.to_string(), "frame \"CS1\" refers to ADJOINING, but 0 joints use it (expected exactly one)");
     // ... or that two joints use.
-    let xml = adjoining_pair(&[("revolute", "0,0,1")]).replace(
-        "</joints>",
-        &format!("{}</joints>", joint("A--B 2", 1, 2, &[("weld", "1,1,1")])),
-    );
+    let xml =
+        adjoining_pair(&[("revolute", "0,0,1")]).replace("</joints>", &format!("{}</joints>", joint("A--B 2", 1, 2, &[("weld", "1,1,1")])));
     let e = fails(&xml);
-    assert_eq!(
-        e.kind,
-        XmlErrorKind::AdjoiningNotOneJoint {
-            frame: "CS2".into(),
-            joints: 2
-        }
-    );
+    assert_eq!(e.kind, XmlErrorKind::AdjoiningNotOneJoint { frame: "CS2".into(), joints: 2 });
 }
 
 #[test]
@@ -1077,21 +709,17 @@ fn structural_errors() {
     assert_eq!(e.kind, XmlErrorKind::MissingBodyFrame { name: "CS1" });
     let e = fails(&base.replacen("<mass>1.5</mass>", "", 1));
     assert_eq!(e.kind, XmlErrorKind::MissingElement { name: "mass" });
-    let e = fails(&base.replacen("<Primitive><name>\"revolute\"</name><nodeID>\"\"</nodeID><referenceFrame>\"WORLD\"</referenceFrame><axis>0,0,1</axis></Primitive>", "", 1));
+    let e = fails(&base.replacen(
+        "<Primitive><name>\"revolute\"</name><nodeID>\"\"</nodeID><referenceFrame>\"WORLD\"</referenceFrame><axis>0,0,1</axis></Primitive>",
+        "",
+        1,
+    ));
     assert_eq!(e.kind, XmlErrorKind::NoPrimitives);
     let e = fails(&base.replacen(r#"<Frame ref="2"></Frame>"#, "<Frame></Frame>", 1));
     assert_eq!(e.kind, XmlErrorKind::MissingAttribute { name: "ref" });
-    let e = fails(&base.replacen(
-        r#"<Frame ref="2"></Frame>"#,
-        r#"<Frame ref="two"></Frame>"#,
-        1,
-    ));
+    let e = fails(&base.replacen(r#"<Frame ref="2"></Frame>"#, r#"<Frame ref="two"></Frame>"#, 1));
     assert_eq!(e.kind, XmlErrorKind::BadNumber { text: "two".into() });
-    let doubled = base.replacen(
-        "<SimMechanics>",
-        "<SimMechanics></SimMechanics><SimMechanics>",
-        1,
-    );
+    let doubled = base.replacen("<SimMechanics>", "<SimMechanics></SimMechanics><SimMechanics>", 1);
     assert_eq!(fails(&doubled).kind, XmlErrorKind::MultipleContainers);
 }
 
@@ -1149,92 +777,24 @@ fn malformed_xml_is_an_error_at_every_truncation() {
 
 /// Body and joint counts from `MANIFEST.md` (path relative to the fixtures directory).
 const EXPECTED: [(&str, usize, usize); 18] = [
-    (
-        "xml/robotology+icub-models-generator/6af98216/iCubGenova02_SIM_MODEL.xml",
-        39,
-        39,
-    ),
-    (
-        "xml/robotology+icub-models-generator/e780c99f/ICUB_2-5_BB_SIM_MODEL.xml",
-        47,
-        47,
-    ),
-    (
-        "xml/robotology+icub-models-generator/47ce5a54/ICUB_2-5_BB_SIM_MODEL.xml",
-        47,
-        47,
-    ),
-    (
-        "xml/robotology+icub-models-generator/08c7f3a5/ICUB_2-5_BB_SIM_MODEL.xml",
-        47,
-        47,
-    ),
-    (
-        "xml/robotology+icub-models-generator/4dd88947/ICUB_2-5_plus_BB_SIM_MODEL.xml",
-        47,
-        47,
-    ),
-    (
-        "xml/robotology+icub-models-generator/67275682/SIM_LEFT_HAND_Mk3.xml",
-        13,
-        13,
-    ),
-    (
-        "xml/robotology+icub-models-generator/85fdaa3f/SIM_L_WRIST.xml",
-        5,
-        5,
-    ),
-    (
-        "xml/robotology+icub-models-generator/2d4a19cf/ICUB3_UPPERBODY_SIM_MODEL.xml",
-        13,
-        13,
-    ),
-    (
-        "xml/robotology+icub-models-generator/d1456816/ICUB3_L_LEG_SIM_MODEL.xml",
-        10,
-        10,
-    ),
-    (
-        "xml/robotology+icub-models-generator/d1456816/ICUB3_R_LEG_SIM_MODEL.xml",
-        10,
-        10,
-    ),
-    (
-        "xml/robotology+icub-models-generator/3ca3b152/ICUB3_ALL_SIM_MODEL.xml",
-        43,
-        43,
-    ),
-    (
-        "xml/robotology+icub-models-generator/cf367280/ICUB3_ALL_SIM_MODEL.xml",
-        43,
-        43,
-    ),
-    (
-        "xml/robotology+simmechanics-to-urdf/a83a61f/LEGS_MECHANISM.xml",
-        29,
-        33,
-    ),
-    (
-        "xml/robotology+simmechanics-to-urdf/5beb5f5/LEGS_MECHANISM.xml",
-        14,
-        14,
-    ),
+    ("xml/robotology+icub-models-generator/6af98216/iCubGenova02_SIM_MODEL.xml", 39, 39),
+    ("xml/robotology+icub-models-generator/e780c99f/ICUB_2-5_BB_SIM_MODEL.xml", 47, 47),
+    ("xml/robotology+icub-models-generator/47ce5a54/ICUB_2-5_BB_SIM_MODEL.xml", 47, 47),
+    ("xml/robotology+icub-models-generator/08c7f3a5/ICUB_2-5_BB_SIM_MODEL.xml", 47, 47),
+    ("xml/robotology+icub-models-generator/4dd88947/ICUB_2-5_plus_BB_SIM_MODEL.xml", 47, 47),
+    ("xml/robotology+icub-models-generator/67275682/SIM_LEFT_HAND_Mk3.xml", 13, 13),
+    ("xml/robotology+icub-models-generator/85fdaa3f/SIM_L_WRIST.xml", 5, 5),
+    ("xml/robotology+icub-models-generator/2d4a19cf/ICUB3_UPPERBODY_SIM_MODEL.xml", 13, 13),
+    ("xml/robotology+icub-models-generator/d1456816/ICUB3_L_LEG_SIM_MODEL.xml", 10, 10),
+    ("xml/robotology+icub-models-generator/d1456816/ICUB3_R_LEG_SIM_MODEL.xml", 10, 10),
+    ("xml/robotology+icub-models-generator/3ca3b152/ICUB3_ALL_SIM_MODEL.xml", 43, 43),
+    ("xml/robotology+icub-models-generator/cf367280/ICUB3_ALL_SIM_MODEL.xml", 43, 43),
+    ("xml/robotology+simmechanics-to-urdf/a83a61f/LEGS_MECHANISM.xml", 29, 33),
+    ("xml/robotology+simmechanics-to-urdf/5beb5f5/LEGS_MECHANISM.xml", 14, 14),
     ("xml/steventen+SimMechanics-Parsing-Tools/fourbar.xml", 5, 6),
-    (
-        "xml/icub-tech-iit+ergocub-software/0a049c74/SIM_ERGOCUB_1-0.xml",
-        43,
-        42,
-    ),
-    (
-        "xml/icub-tech-iit+ergocub-software/1fe125d3/SIM_ERGOCUB_1-0.xml",
-        67,
-        67,
-    ),
-    (
-        "stl/robotology+icub-models-generator/25e4033/left_hand_mk3/SIM_LEFT_HAND.xml",
-        13,
-        13,
-    ),
+    ("xml/icub-tech-iit+ergocub-software/0a049c74/SIM_ERGOCUB_1-0.xml", 43, 42),
+    ("xml/icub-tech-iit+ergocub-software/1fe125d3/SIM_ERGOCUB_1-0.xml", 67, 67),
+    ("stl/robotology+icub-models-generator/25e4033/left_hand_mk3/SIM_LEFT_HAND.xml", 13, 13),
 ];
 
 #[test]
@@ -1246,11 +806,7 @@ fn real_fixtures_parse_with_manifest_counts() {
     let mut parsed = 0;
     let mut checked = 0;
     for path in &files {
-        let rel = path
-            .strip_prefix(&dir)
-            .unwrap_or(path)
-            .to_string_lossy()
-            .replace('\\', "/");
+        let rel = path.strip_prefix(&dir).unwrap_or(path).to_string_lossy().replace('\\', "/");
         let bytes = std::fs::read(path).expect("readable fixture");
         if !is_physical_modeling_xml(&bytes) {
             continue;
@@ -1283,11 +839,7 @@ fn real_fixtures_parse_with_manifest_counts() {
         }
         for f in &m.frames {
             let r = f.pose.rotation.to_rotation_matrix();
-            assert!(
-                (r.matrix().determinant() - 1.0).abs() < 1e-9,
-                "{rel} {}",
-                f.node_id
-            );
+            assert!((r.matrix().determinant() - 1.0).abs() < 1e-9, "{rel} {}", f.node_id);
         }
         if rel.ends_with("fourbar.xml") {
             assert_eq!(m.length_scale, 0.0254);
@@ -1299,37 +851,21 @@ fn real_fixtures_parse_with_manifest_counts() {
             assert_eq!(m.source.container, "SimscapeMultibody");
         }
         if rel.contains("3ca3b152") {
-            let prismatic = m
-                .joints
-                .iter()
-                .flat_map(|j| &j.primitives)
-                .filter(|p| p.kind == PrimitiveKind::Prismatic);
+            let prismatic = m.joints.iter().flat_map(|j| &j.primitives).filter(|p| p.kind == PrimitiveKind::Prismatic);
             assert_eq!(prismatic.count(), 1);
         }
         if rel.contains("0a049c74") {
             use PrimitiveKind::*;
             for j in &m.joints {
                 let kinds: Vec<_> = j.primitives.iter().map(|p| p.kind).collect();
-                assert_eq!(
-                    kinds,
-                    [Prismatic, Prismatic, Prismatic, Spherical],
-                    "{}",
-                    j.node_id
-                );
+                assert_eq!(kinds, [Prismatic, Prismatic, Prismatic, Spherical], "{}", j.node_id);
             }
         }
         if rel.contains("6af98216") {
-            assert!(
-                m.bodies.iter().any(|b| b.subsystem_path.len() >= 2),
-                "nested subsystems"
-            );
+            assert!(m.bodies.iter().any(|b| b.subsystem_path.len() >= 2), "nested subsystems");
         }
     }
-    assert_eq!(
-        checked,
-        EXPECTED.len(),
-        "every manifest file was found and checked"
-    );
+    assert_eq!(checked, EXPECTED.len(), "every manifest file was found and checked");
     assert_eq!(parsed, EXPECTED.len());
 
     let second = dir.join("xml/yoggi56+hexapod_simmechanics/Link1.xml");
@@ -1345,11 +881,7 @@ fn real_fixtures_parse_with_manifest_counts() {
 
 #[test]
 fn non_simple_joint_entries_warn() {
-    let xml = two_bodies("SimMechanics").replacen(
-        "</joints>",
-        "<UnknownConstraint><name>\"x\"</name></UnknownConstraint>\n</joints>",
-        1,
-    );
+    let xml = two_bodies("SimMechanics").replacen("</joints>", "<UnknownConstraint><name>\"x\"</name></UnknownConstraint>\n</joints>", 1);
     let (m, warnings) = ok(&xml);
     assert_eq!(m.joints.len(), 2);
     assert_eq!(warnings.len(), 1);
@@ -1381,7 +913,12 @@ fn a_rotation_far_from_orthonormal_is_an_error_naming_the_frame() {
     let xml = |o: &str| {
         document(
             "SimMechanics",
-            &system(&[body("A", "1", &[frame("CG", None, "0,0,0", "mm", "1,0,0,0,1,0,0,0,1"), frame("CS1", None, "0,0,0", "mm", o)])], &[], &[], &[]),
+            &system(
+                &[body("A", "1", &[frame("CG", None, "0,0,0", "mm", "1,0,0,0,1,0,0,0,1"), frame("CS1", None, "0,0,0", "mm", o)])],
+                &[],
+                &[],
+                &[],
+            ),
         )
     };
     let (_, warnings) = ok(&xml(rounded));
@@ -1430,10 +967,15 @@ fn random_mechanism(rng: &mut crate::mechanism::XorShift) -> (String, Vec<(&'sta
     let s = 0.05 + 0.1 * r01();
     let slide = (ex * r01() + ey * (r01() + 0.1)).normalize();
     let theta = u(-1.0, 1.0);
-    let pose = || Isometry3::from_parts(Translation3::new(u(-1.0, 1.0), u(-1.0, 1.0), u(-1.0, 1.0)), UnitQuaternion::from_euler_angles(u(-3.0, 3.0), u(-1.5, 1.5), u(-3.0, 3.0)));
+    let pose = || {
+        Isometry3::from_parts(
+            Translation3::new(u(-1.0, 1.0), u(-1.0, 1.0), u(-1.0, 1.0)),
+            UnitQuaternion::from_euler_angles(u(-3.0, 3.0), u(-1.5, 1.5), u(-3.0, 3.0)),
+        )
+    };
     let cs1: Vec<(&'static str, Isometry3<f64>)> = vec![("CRANK", pose()), ("COUPLER", pose()), ("ROCKER", pose()), ("SLIDER", pose())];
     let world = |name: &str, r: Option<u32>, p: &Vector3<f64>, rot: &Rotation3<f64>| frame(name, r, &v6(p), "m", &r6(rot));
-    let plain = |name: &'static str, iso: &Isometry3<f64>, joints: &[(u32, Vector3<f64>)]| {
+    let plain = |_name: &'static str, iso: &Isometry3<f64>, joints: &[(u32, Vector3<f64>)]| {
         let rot = iso.rotation.to_rotation_matrix();
         let mut frames = vec![world("CG", None, &iso.translation.vector, &rot), world("CS1", None, &iso.translation.vector, &rot)];
         for (k, (r, p)) in joints.iter().enumerate() {
@@ -1477,7 +1019,8 @@ fn random_mechanisms_convert_exactly_within_their_stated_corrections() {
     let cases = 300;
     for case in 0..cases {
         let (xml, truth) = random_mechanism(&mut rng);
-        let bundle = crate::pipeline::front::bundle::Bundle::from_files("gen", [("GEN.xml".to_string(), xml.into_bytes())]).expect("bundle");
+        let bundle =
+            crate::pipeline::front::bundle::Bundle::from_files("gen", [("GEN.xml".to_string(), xml.into_bytes())]).expect("bundle");
         let opts = crate::pipeline::Options { write_shapes: false, ..Default::default() };
         let a = crate::pipeline::analyse(&bundle, &opts).unwrap_or_else(|e| panic!("case {case}: {e}"));
         let (m, v) = (&a.model, &a.validated);
@@ -1495,8 +1038,16 @@ fn random_mechanisms_convert_exactly_within_their_stated_corrections() {
                 let miss = if e.kind == PrimitiveKind::Revolute { (point - e.origin_world).cross(&e.axis_world).norm() } else { 0.0 };
                 let said = e.correction.as_ref();
                 let (ca, co) = said.map_or((0.0, 0.0), |c| (c.axis_rad, c.origin_m));
-                assert!(angle <= 1e-12 || (angle - ca).abs() <= 1e-12, "case {case}, {}: axis moved {angle:e} rad, stated {said:?}", joint.cad_name);
-                assert!(miss <= 1e-12 || (miss - co).abs() <= 1e-12, "case {case}, {}: hinge misses its point by {miss:e} m, stated {said:?}", joint.cad_name);
+                assert!(
+                    angle <= 1e-12 || (angle - ca).abs() <= 1e-12,
+                    "case {case}, {}: axis moved {angle:e} rad, stated {said:?}",
+                    joint.cad_name
+                );
+                assert!(
+                    miss <= 1e-12 || (miss - co).abs() <= 1e-12,
+                    "case {case}, {}: hinge misses its point by {miss:e} m, stated {said:?}",
+                    joint.cad_name
+                );
                 assert!(ca <= 1e-5 && co <= 1e-5, "case {case}, {}: {said:?} beyond the data's precision", joint.cad_name);
                 worst_axis = worst_axis.max(ca);
                 worst_origin = worst_origin.max(co);

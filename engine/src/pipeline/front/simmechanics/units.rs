@@ -15,13 +15,7 @@ pub(crate) const POUND: f64 = 0.45359237;
 pub(crate) const SLUG: f64 = 14.5939029372;
 
 /// Length units, metres per unit.
-const LENGTH: [(&str, f64); 5] = [
-    ("mm", 1e-3),
-    ("cm", 1e-2),
-    ("m", 1.0),
-    ("in", INCH),
-    ("ft", FOOT),
-];
+const LENGTH: [(&str, f64); 5] = [("mm", 1e-3), ("cm", 1e-2), ("m", 1.0), ("in", INCH), ("ft", FOOT)];
 
 /// Mass units, kilograms per unit.
 const MASS: [(&str, f64); 4] = [("kg", 1.0), ("g", 1e-3), ("lbm", POUND), ("slug", SLUG)];
@@ -30,22 +24,10 @@ const MASS: [(&str, f64); 4] = [("kg", 1.0), ("g", 1e-3), ("lbm", POUND), ("slug
 const ANGLE: [(&str, f64); 2] = [("rad", 1.0), ("deg", std::f64::consts::PI / 180.0)];
 
 /// Area units: (spelling, length unit squared).
-const AREA: [(&str, &str); 5] = [
-    ("mm^2", "mm"),
-    ("cm^2", "cm"),
-    ("m^2", "m"),
-    ("in^2", "in"),
-    ("ft^2", "ft"),
-];
+const AREA: [(&str, &str); 5] = [("mm^2", "mm"), ("cm^2", "cm"), ("m^2", "m"), ("in^2", "in"), ("ft^2", "ft")];
 
 /// Volume units: (spelling, length unit cubed).
-const VOLUME: [(&str, &str); 5] = [
-    ("mm^3", "mm"),
-    ("cm^3", "cm"),
-    ("m^3", "m"),
-    ("in^3", "in"),
-    ("ft^3", "ft"),
-];
+const VOLUME: [(&str, &str); 5] = [("mm^3", "mm"), ("cm^3", "cm"), ("m^3", "m"), ("in^3", "in"), ("ft^3", "ft")];
 
 /// Inertia units: (spelling, mass unit, length unit squared).
 const INERTIA: [(&str, &str, &str); 9] = [
@@ -89,9 +71,7 @@ impl Quantity {
         match self {
             Quantity::Length => "mm, cm, m, in, ft",
             Quantity::Mass => "kg, g, lbm, slug",
-            Quantity::Inertia => {
-                "kg*m^2, kg*cm^2, kg*mm^2, g*cm^2, g*mm^2, lbm*in^2, lbm*ft^2, slug*in^2, slug*ft^2"
-            }
+            Quantity::Inertia => "kg*m^2, kg*cm^2, kg*mm^2, g*cm^2, g*mm^2, lbm*in^2, lbm*ft^2, slug*in^2, slug*ft^2",
             Quantity::Volume => "mm^3, cm^3, m^3, in^3, ft^3",
             Quantity::Area => "mm^2, cm^2, m^2, in^2, ft^2",
             Quantity::Angle => "rad, deg",
@@ -161,14 +141,8 @@ mod tests {
         assert_eq!(Quantity::Length.factor("ft"), Some(0.3048));
         assert_eq!(Quantity::Mass.factor("lbm"), Some(0.45359237));
         assert_eq!(Quantity::Mass.factor("slug"), Some(14.5939029372));
-        assert_eq!(
-            Quantity::Inertia.factor("lbm*in^2"),
-            Some(0.45359237 * (0.0254 * 0.0254))
-        );
-        assert_eq!(
-            Quantity::Volume.factor("in^3"),
-            Some(0.0254 * 0.0254 * 0.0254)
-        );
+        assert_eq!(Quantity::Inertia.factor("lbm*in^2"), Some(0.45359237 * (0.0254 * 0.0254)));
+        assert_eq!(Quantity::Volume.factor("in^3"), Some(0.0254 * 0.0254 * 0.0254));
         assert_eq!(Quantity::Area.factor("mm^2"), Some(1e-3 * 1e-3));
         assert_eq!(Quantity::Inertia.factor("kg*m^2"), Some(1.0));
         assert_eq!(Quantity::Length.factor("furlong"), None);

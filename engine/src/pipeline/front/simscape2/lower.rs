@@ -9,8 +9,8 @@ use super::error::Simscape2Error;
 use super::mates::{self, Geom, GeomKind, MateKind, Reduction};
 use crate::pipeline::front::simmechanics::dom::{Doc, NodeId};
 use crate::pipeline::ir::{
-    self, Body, BodyId, Frame, FrameId, FrameOwner, Ground, GroundId, Joint, Material, Model, Primitive, PrimitiveKind,
-    SourceInfo, SourceLoc, Warning,
+    self, Body, BodyId, Frame, FrameId, FrameOwner, Ground, GroundId, Joint, Material, Model, Primitive, PrimitiveKind, SourceInfo,
+    SourceLoc, Warning,
 };
 
 type Result<T> = std::result::Result<T, Simscape2Error>;
@@ -191,8 +191,7 @@ impl<'a, 'd> Lower<'a, 'd> {
     }
 
     fn req(&self, node: NodeId, name: &'static str) -> Result<NodeId> {
-        self.child(node, name.as_bytes())
-            .ok_or_else(|| self.err(node, format!("missing element <{name}>")))
+        self.child(node, name.as_bytes()).ok_or_else(|| self.err(node, format!("missing element <{name}>")))
     }
 
     fn attr(&self, node: NodeId, key: &str) -> Result<Option<String>> {
@@ -230,9 +229,7 @@ impl<'a, 'd> Lower<'a, 'd> {
         let text = self.text(node)?;
         let mut out = Vec::with_capacity(n);
         for piece in text.split(|c: char| c.is_whitespace() || c == ',').filter(|p| !p.is_empty()) {
-            let v: f64 = piece
-                .parse()
-                .map_err(|_| self.err(node, format!("cannot read \"{}\" as a number", ir::clip(piece, 40))))?;
+            let v: f64 = piece.parse().map_err(|_| self.err(node, format!("cannot read \"{}\" as a number", ir::clip(piece, 40))))?;
             if !v.is_finite() {
                 return Err(self.err(node, format!("non-finite number \"{}\"", ir::clip(piece, 40))));
             }
@@ -262,7 +259,10 @@ impl<'a, 'd> Lower<'a, 'd> {
         if dev > ROTATION_REFUSED {
             return Err(self.err(
                 rn,
-                format!("the rotation is {dev:.3e} from the nearest rotation (determinant {:.6}): far beyond rounding (refused above 1e-3)", m.determinant()),
+                format!(
+                    "the rotation is {dev:.3e} from the nearest rotation (determinant {:.6}): far beyond rounding (refused above 1e-3)",
+                    m.determinant()
+                ),
             ));
         }
         if dev > ORTHO_TOL {
@@ -374,9 +374,9 @@ impl<'a, 'd> Lower<'a, 'd> {
     fn units(&mut self, root: NodeId) -> Result<()> {
         let node = match self.child(root, b"DataUnits") {
             Some(d) => d,
-            None => self.child(root, b"ModelUnits").ok_or_else(|| {
-                self.err(root, "neither <DataUnits> nor <ModelUnits>: the units of the numbers are unknown".into())
-            })?,
+            None => self
+                .child(root, b"ModelUnits")
+                .ok_or_else(|| self.err(root, "neither <DataUnits> nor <ModelUnits>: the units of the numbers are unknown".into()))?,
         };
         let l = self.req_attr(node, "length")?;
         let m = self.req_attr(node, "mass")?;
@@ -394,7 +394,11 @@ impl<'a, 'd> Lower<'a, 'd> {
         let Some(d) = self.child(vp, b"Diffuse") else { return Ok(None) };
         let comp = |k: &str| -> Result<f64> {
             let s = self.attr(d, k)?.unwrap_or_else(|| "1".into());
-            s.trim().parse::<f64>().ok().filter(|v| v.is_finite()).ok_or_else(|| self.err(d, format!("attribute {k}=\"{}\" is not a number", ir::clip(&s, 40))))
+            s.trim()
+                .parse::<f64>()
+                .ok()
+                .filter(|v| v.is_finite())
+                .ok_or_else(|| self.err(d, format!("attribute {k}=\"{}\" is not a number", ir::clip(&s, 40))))
         };
         let color = [comp("r")?, comp("g")?, comp("b")?];
         let alpha = comp("a")?;
@@ -475,7 +479,9 @@ impl<'a, 'd> Lower<'a, 'd> {
             if self.assemblies.contains_key(&entity) {
                 self.warn("empty-sub-assembly", "sub-assembly instance without any part: ignored".into(), node);
             } else {
-                return Err(self.err(node, format!("entityUid \"{}\" names no <Part> and the instance has no children", ir::clip(&entity, 80))));
+                return Err(
+                    self.err(node, format!("entityUid \"{}\" names no <Part> and the instance has no children", ir::clip(&entity, 80)))
+                );
             }
         }
         self.insts.push(Inst {
@@ -512,10 +518,8 @@ impl<'a, 'd> Lower<'a, 'd> {
             let node_id = self.insts[i].path_id.clone();
             let loc = self.loc(self.insts[i].node);
             let cs1 = self.push_frame(FrameOwner::Body(bid), "CS1", "", format!("{node_id}::CS1"), world, loc.clone());
-            let cg_pose = Isometry3::from_parts(
-                Translation3::from(world.transform_point(&nalgebra::Point3::from(com)).coords),
-                world.rotation,
-            );
+            let cg_pose =
+                Isometry3::from_parts(Translation3::from(world.transform_point(&nalgebra::Point3::from(com)).coords), world.rotation);
             let cg = self.push_frame(FrameOwner::Body(bid), "CG", "", format!("{node_id}::CG"), cg_pose, loc.clone());
             let geometry_file = match &self.parts[p].geometry {
                 Some((name, _)) => {
@@ -581,17 +585,17 @@ impl<'a, 'd> Lower<'a, 'd> {
         }
     }
 
-    fn push_frame(&mut self, owner: FrameOwner, name: &str, display: &str, node_id: String, pose: Isometry3<f64>, loc: SourceLoc) -> FrameId {
+    fn push_frame(
+        &mut self,
+        owner: FrameOwner,
+        name: &str,
+        display: &str,
+        node_id: String,
+        pose: Isometry3<f64>,
+        loc: SourceLoc,
+    ) -> FrameId {
         let id = FrameId(self.model.frames.len() as u32);
-        self.model.frames.push(Frame {
-            name: name.into(),
-            display_name: display.into(),
-            node_id,
-            owner,
-            ref_id: None,
-            pose,
-            loc,
-        });
+        self.model.frames.push(Frame { name: name.into(), display_name: display.into(), node_id, owner, ref_id: None, pose, loc });
         id
     }
 
@@ -600,7 +604,8 @@ impl<'a, 'd> Lower<'a, 'd> {
         match owner {
             Owner::Body(b) => {
                 let n = self.model.bodies[b.index()].frames.len();
-                let f = self.push_frame(FrameOwner::Body(b), &format!("CS{n}"), display, format!("{joint_node}::{side}"), pose, loc.clone());
+                let f =
+                    self.push_frame(FrameOwner::Body(b), &format!("CS{n}"), display, format!("{joint_node}::{side}"), pose, loc.clone());
                 self.model.bodies[b.index()].frames.push(f);
                 f
             }
@@ -640,20 +645,8 @@ impl<'a, 'd> Lower<'a, 'd> {
         let loc = self.loc(node);
         let b = self.end_frame(base, pose, &node_id, "base", &format!("{cad_name} base"), &loc);
         let f = self.end_frame(follower, pose, &node_id, "follower", &format!("{cad_name} follower"), &loc);
-        let primitives = primitives
-            .into_iter()
-            .map(|(kind, axis_world)| Primitive { kind, axis_world, loc: loc.clone() })
-            .collect();
-        self.model.joints.push(Joint {
-            cad_name,
-            node_id,
-            subsystem_path,
-            base: b,
-            follower: f,
-            primitives,
-            limits: None,
-            loc,
-        });
+        let primitives = primitives.into_iter().map(|(kind, axis_world)| Primitive { kind, axis_world, loc: loc.clone() }).collect();
+        self.model.joints.push(Joint { cad_name, node_id, subsystem_path, base: b, follower: f, primitives, limits: None, loc });
     }
 
     // ----- connecting ---------------------------------------------------------------------
@@ -774,7 +767,16 @@ impl<'a, 'd> Lower<'a, 'd> {
                 let cad_name = if g == grounded { format!("{} (grounded)", inst.name) } else { format!("{} (rigid)", inst.name) };
                 let (sub, pose, node, path_id) = (inst.subsystem_path.clone(), inst.world, inst.node, inst.path_id.clone());
                 let node_id = self.joint_id(format!("weld:{path_id}"));
-                self.add_joint(cad_name, node_id, sub, anchor, Owner::Body(b), pose, vec![(PrimitiveKind::Weld, Vector3::repeat(WELD_AXIS))], node);
+                self.add_joint(
+                    cad_name,
+                    node_id,
+                    sub,
+                    anchor,
+                    Owner::Body(b),
+                    pose,
+                    vec![(PrimitiveKind::Weld, Vector3::repeat(WELD_AXIS))],
+                    node,
+                );
             }
         }
         for (container, j) in joints {
@@ -785,7 +787,8 @@ impl<'a, 'd> Lower<'a, 'd> {
             let root = self.root;
             self.warn(
                 "no-ground",
-                "no instance is grounded and nothing is fixed to the assembly's frame: every body group floats freely from its CAD pose".into(),
+                "no instance is grounded and nothing is fixed to the assembly's frame: every body group floats freely from its CAD pose"
+                    .into(),
                 root,
             );
         }
@@ -911,7 +914,10 @@ impl<'a, 'd> Lower<'a, 'd> {
                 match self.resolve(container, &path) {
                     Some(t) => nodes.push(t),
                     None => {
-                        let msg = format!("mate \"{name}\": instance path {} names no instance in the tree; the mate is left out", ir::clip(&path.join(" / "), 300));
+                        let msg = format!(
+                            "mate \"{name}\": instance path {} names no instance in the tree; the mate is left out",
+                            ir::clip(&path.join(" / "), 300)
+                        );
                         self.warn("mate-dangling", msg, p);
                         return Ok(None);
                     }
@@ -929,7 +935,10 @@ impl<'a, 'd> Lower<'a, 'd> {
                 None => Vec::new(),
             };
             let Some(target) = self.resolve(container, &path) else {
-                let msg = format!("mate \"{name}\": instance path {} names no instance in the tree; the mate is left out", ir::clip(&path.join(" / "), 300));
+                let msg = format!(
+                    "mate \"{name}\": instance path {} names no instance in the tree; the mate is left out",
+                    ir::clip(&path.join(" / "), 300)
+                );
                 self.warn("mate-dangling", msg, g);
                 return Ok(None);
             };
@@ -943,18 +952,20 @@ impl<'a, 'd> Lower<'a, 'd> {
             let gk = GeomKind::from_attr(&gt);
             let needs_axis = !matches!(gk, Some(GeomKind::Point) | None);
             let geom = match gk {
-                Some(kind) if !needs_axis || axis.norm() > 1e-12 => Some(Geom {
-                    kind,
-                    point: pos.coords,
-                    axis: if axis.norm() > 1e-12 { axis.normalize() } else { axis },
-                }),
+                Some(kind) if !needs_axis || axis.norm() > 1e-12 => {
+                    Some(Geom { kind, point: pos.coords, axis: if axis.norm() > 1e-12 { axis.normalize() } else { axis } })
+                }
                 _ => None,
             };
             match geom {
                 Some(geom) => geoms.push((target, geom, gt)),
                 None => {
                     // Recorded with a placeholder: the pair will be reported, never guessed.
-                    geoms.push((target, Geom { kind: GeomKind::Point, point: pos.coords, axis: Vector3::zeros() }, format!("unsupported:{gt}")));
+                    geoms.push((
+                        target,
+                        Geom { kind: GeomKind::Point, point: pos.coords, axis: Vector3::zeros() },
+                        format!("unsupported:{gt}"),
+                    ));
                 }
             }
         }
@@ -1067,7 +1078,10 @@ impl<'a, 'd> Lower<'a, 'd> {
                 Reduction::Free => {
                     self.warn(
                         "mate-free",
-                        format!("mates between {na} and {nb} leave all six degrees of freedom: no joint (mates: {})", ir::bounded_list(&names, 8)),
+                        format!(
+                            "mates between {na} and {nb} leave all six degrees of freedom: no joint (mates: {})",
+                            ir::bounded_list(&names, 8)
+                        ),
                         node,
                     );
                     continue;
@@ -1085,14 +1099,16 @@ impl<'a, 'd> Lower<'a, 'd> {
                 }
                 Reduction::Weld { origin } => (vec![(PrimitiveKind::Weld, Vector3::repeat(WELD_AXIS))], *origin, Vector3::z()),
                 Reduction::Revolute { origin, axis } => (vec![(PrimitiveKind::Revolute, *axis)], *origin, *axis),
-                Reduction::Prismatic { origin, axes } => {
-                    (axes.iter().map(|a| (PrimitiveKind::Prismatic, *a)).collect(), *origin, axes[0])
-                }
+                Reduction::Prismatic { origin, axes } => (axes.iter().map(|a| (PrimitiveKind::Prismatic, *a)).collect(), *origin, axes[0]),
                 Reduction::Cylindrical { origin, axis } => {
                     (vec![(PrimitiveKind::Prismatic, *axis), (PrimitiveKind::Revolute, *axis)], *origin, *axis)
                 }
                 Reduction::Planar { origin, normal, in_plane } => (
-                    vec![(PrimitiveKind::Prismatic, in_plane[0]), (PrimitiveKind::Prismatic, in_plane[1]), (PrimitiveKind::Revolute, *normal)],
+                    vec![
+                        (PrimitiveKind::Prismatic, in_plane[0]),
+                        (PrimitiveKind::Prismatic, in_plane[1]),
+                        (PrimitiveKind::Revolute, *normal),
+                    ],
                     *origin,
                     *normal,
                 ),

@@ -192,9 +192,7 @@ pub fn mate_rows(kind: MateKind, a: &Geom, b: &Geom) -> Result<MateRows, String>
         }
         (MateKind::Parallel, Plane, Plane) | (MateKind::Parallel, Line, Line) => Some(parallel(&g2.axis, &g1.axis, r)),
         (MateKind::Parallel, Plane, Line) => Some(perpendicular(&g2.axis, &g1.axis, r)),
-        (MateKind::Perpendicular, Plane, Plane) | (MateKind::Perpendicular, Line, Line) => {
-            Some(perpendicular(&g2.axis, &g1.axis, r))
-        }
+        (MateKind::Perpendicular, Plane, Plane) | (MateKind::Perpendicular, Line, Line) => Some(perpendicular(&g2.axis, &g1.axis, r)),
         (MateKind::Perpendicular, Plane, Line) => Some(parallel(&g2.axis, &g1.axis, r)),
         (MateKind::Angle, Plane, Plane) | (MateKind::Angle, Line, Line) | (MateKind::Angle, Plane, Line) => {
             angle(&g2.axis, &g1.axis, r);
@@ -243,15 +241,37 @@ pub fn mate_rows(kind: MateKind, a: &Geom, b: &Geom) -> Result<MateRows, String>
 pub enum Reduction {
     /// The mates leave every motion free (no joint between the pair).
     Free,
-    Weld { origin: Vector3<f64> },
-    Revolute { origin: Vector3<f64>, axis: Vector3<f64> },
-    Prismatic { origin: Vector3<f64>, axes: Vec<Vector3<f64>> },
-    Cylindrical { origin: Vector3<f64>, axis: Vector3<f64> },
-    Planar { origin: Vector3<f64>, normal: Vector3<f64>, in_plane: [Vector3<f64>; 2] },
-    Universal { origin: Vector3<f64>, axes: [Vector3<f64>; 2] },
-    Spherical { origin: Vector3<f64> },
+    Weld {
+        origin: Vector3<f64>,
+    },
+    Revolute {
+        origin: Vector3<f64>,
+        axis: Vector3<f64>,
+    },
+    Prismatic {
+        origin: Vector3<f64>,
+        axes: Vec<Vector3<f64>>,
+    },
+    Cylindrical {
+        origin: Vector3<f64>,
+        axis: Vector3<f64>,
+    },
+    Planar {
+        origin: Vector3<f64>,
+        normal: Vector3<f64>,
+        in_plane: [Vector3<f64>; 2],
+    },
+    Universal {
+        origin: Vector3<f64>,
+        axes: [Vector3<f64>; 2],
+    },
+    Spherical {
+        origin: Vector3<f64>,
+    },
     /// What the free motion is, in words.
-    Unreducible { what: String },
+    Unreducible {
+        what: String,
+    },
 }
 
 impl Reduction {
@@ -303,10 +323,7 @@ fn null_space(m: &DMatrix<f64>, tol: f64) -> Vec<nalgebra::DVector<f64>> {
     a.view_mut((0, 0), (m.nrows(), cols)).copy_from(m);
     let Some(svd) = a.try_svd(false, true, f64::EPSILON, MAX_SVD_ITERATIONS) else { return Vec::new() };
     let Some(v_t) = svd.v_t else { return Vec::new() };
-    (0..cols)
-        .filter(|&i| svd.singular_values[i] <= tol)
-        .map(|i| v_t.row(i).transpose())
-        .collect()
+    (0..cols).filter(|&i| svd.singular_values[i] <= tol).map(|i| v_t.row(i).transpose()).collect()
 }
 
 /// Reduces constraint rows (twists about the world origin) to a joint. `points` are the mates'

@@ -123,7 +123,10 @@ pub fn parse(file: &str, bytes: &[u8]) -> Result<(ir::Model, Vec<ir::Warning>), 
             return Err(fail(
                 offset,
                 root.clone(),
-                format!("not a second-generation Simscape Multibody XML file: the root element is <{}>, expected <SimscapeMultibodyImportXML>", ir::clip(&root, 80)),
+                format!(
+                    "not a second-generation Simscape Multibody XML file: the root element is <{}>, expected <SimscapeMultibodyImportXML>",
+                    ir::clip(&root, 80)
+                ),
             ));
         }
         Root::Missing => return Err(fail(bytes.len(), String::new(), "malformed XML: no root element".into())),

@@ -144,7 +144,8 @@ fn coincident_circles_fix_the_centre_and_axis() {
 
 #[test]
 fn inconsistent_mates_report_a_residual_and_unknown_pairs_are_errors() {
-    let r = mate_rows(MateKind::Coincident, &plane([0.0, 0.0, 0.0], [0.0, 0.0, 1.0]), &plane([0.0, 0.0, 0.002], [0.0, 0.0, 1.0])).expect("rows");
+    let r = mate_rows(MateKind::Coincident, &plane([0.0, 0.0, 0.0], [0.0, 0.0, 1.0]), &plane([0.0, 0.0, 0.002], [0.0, 0.0, 1.0]))
+        .expect("rows");
     assert!((r.residual.expect("checked") - 0.002).abs() < 1e-12);
     assert!(mate_rows(MateKind::Tangent, &point([0.0; 3]), &point([0.0; 3])).is_err());
 }
@@ -235,7 +236,10 @@ fn unknown_joint_kind_and_bad_numbers_are_located_errors() {
 
 #[test]
 fn follower_frame_off_axis_is_warned() {
-    let off = ONSHAPE.replace("<Translation>0 0 0.1</Translation></Transform></FollowerFrame>", "<Translation>0.01 0 0.1</Translation></Transform></FollowerFrame>");
+    let off = ONSHAPE.replace(
+        "<Translation>0 0 0.1</Translation></Transform></FollowerFrame>",
+        "<Translation>0.01 0 0.1</Translation></Transform></FollowerFrame>",
+    );
     let (_, w) = parse("t.xml", off.as_bytes()).expect("parses");
     assert!(w.iter().any(|w| w.code == "joint-frames-mismatch"), "{w:?}");
 }
@@ -295,7 +299,10 @@ fn solidworks_inconsistent_and_unreducible_pairs_are_warned() {
     let slot = SOLIDWORKS
         .replace("<Concentric name=\"Concentric1\">", "<Coincident name=\"Slot\">")
         .replace("</Concentric>", "</Coincident>")
-        .replace("geomType=\"cylinder\"><InstancePath><Uid>frame-1</Uid></InstancePath><Position>100 0 0</Position><Axis>0 0 1</Axis>", "geomType=\"plane\"><InstancePath><Uid>frame-1</Uid></InstancePath><Position>100 0 0</Position><Axis>0 1 0</Axis>");
+        .replace(
+            "geomType=\"cylinder\"><InstancePath><Uid>frame-1</Uid></InstancePath><Position>100 0 0</Position><Axis>0 0 1</Axis>",
+            "geomType=\"plane\"><InstancePath><Uid>frame-1</Uid></InstancePath><Position>100 0 0</Position><Axis>0 1 0</Axis>",
+        );
     let (m, w) = parse("sw.xml", slot.as_bytes()).expect("parses");
     assert!(w.iter().any(|w| w.code == "mate-unreducible" && w.message.contains("\"Slot\"")), "{w:?}");
     assert_eq!(m.joints.len(), 1, "only the ground weld");

@@ -134,9 +134,7 @@ fn ascii_start(bytes: &[u8]) -> Option<usize> {
 fn binary_size_error(bytes: &[u8]) -> ErrorKind {
     match declared_count(bytes) {
         None => ErrorKind::TooShort { len: bytes.len() },
-        Some(n) if binary_len(&n) > bytes.len() as u64 => {
-            ErrorKind::TruncatedBinary { declared: n, available: bytes.len() }
-        }
+        Some(n) if binary_len(&n) > bytes.len() as u64 => ErrorKind::TruncatedBinary { declared: n, available: bytes.len() },
         Some(n) => ErrorKind::NotStl { len: bytes.len(), declared: n },
     }
 }
@@ -144,8 +142,7 @@ fn binary_size_error(bytes: &[u8]) -> ErrorKind {
 /// Reads an STL file (binary or ASCII, see the module docs). `file` names it in errors; `scale` is
 /// metres per unit of the file (0.001 for mm).
 pub fn parse(file: &str, bytes: &[u8], scale: f64) -> Result<ir::Mesh, StlError> {
-    let err =
-        |line: usize, kind| StlError { file: file.to_string(), line: u32::try_from(line).unwrap_or(u32::MAX), kind };
+    let err = |line: usize, kind| StlError { file: file.to_string(), line: u32::try_from(line).unwrap_or(u32::MAX), kind };
     if is_binary(bytes) {
         return parse_binary(bytes, scale).map_err(|kind| err(0, kind));
     }

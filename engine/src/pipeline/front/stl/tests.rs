@@ -105,10 +105,7 @@ fn ascii_errors_name_file_and_line() {
     assert_eq!(e.to_string(), "meshes/arm.stl:6: expected \"vertex\", found \"endloop\"");
     let four = two.replace("endloop", "vertex 0 1 0\nvertex 1 1 0\nendloop");
     let e = parse("a.stl", four.as_bytes(), 1.0).expect_err("four vertices");
-    assert_eq!(
-        (e.line, e.kind),
-        (7, ErrorKind::UnexpectedToken { expected: "\"endloop\"", found: Some("vertex".into()) })
-    );
+    assert_eq!((e.line, e.kind), (7, ErrorKind::UnexpectedToken { expected: "\"endloop\"", found: Some("vertex".into()) }));
     let bad = two.replace("vertex 1 0 0", "vertex 1 0x 0");
     let e = parse("a.stl", bad.as_bytes(), 1.0).expect_err("bad number");
     assert_eq!((e.line, e.kind), (5, ErrorKind::BadNumber { text: "0x".into() }));
@@ -136,7 +133,10 @@ fn whole_file_errors() {
     b[80] = 2;
     let e = parse("a.stl", &b, 1.0).expect_err("too long");
     assert_eq!(e.kind, ErrorKind::NotStl { len: 234, declared: 2 });
-    assert_eq!(e.to_string(), "a.stl: not an STL file: it does not begin with \"solid\" (ASCII) and its size, 234 bytes, is not 84 + 50 × 2 = 184 (binary)");
+    assert_eq!(
+        e.to_string(),
+        "a.stl: not an STL file: it does not begin with \"solid\" (ASCII) and its size, 234 bytes, is not 84 + 50 × 2 = 184 (binary)"
+    );
     b[80] = 3;
     assert_eq!(parse("a.stl", &b, 1.0).expect("binary").triangles.len(), 3);
     // A NaN corner in a binary file.

@@ -44,7 +44,9 @@ pub(super) struct LoopSpec {
 
 pub(super) fn motion(m: Motion, axis: &Vector3<f64>, q: f64) -> Isometry3<f64> {
     match m {
-        Motion::Revolute => Isometry3::from_parts(Translation3::identity(), UnitQuaternion::from_axis_angle(&Unit::new_unchecked(*axis), q)),
+        Motion::Revolute => {
+            Isometry3::from_parts(Translation3::identity(), UnitQuaternion::from_axis_angle(&Unit::new_unchecked(*axis), q))
+        }
         Motion::Prismatic => Isometry3::translation(axis.x * q, axis.y * q, axis.z * q),
         Motion::None => Isometry3::identity(),
     }

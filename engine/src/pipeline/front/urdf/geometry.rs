@@ -41,21 +41,32 @@ pub fn locate<'b>(bundle: &'b Bundle, urdf_path: &str, filename: &str) -> Result
     }
     let lower = rest.to_lowercase();
     let suffix = format!("/{lower}");
-    let by_suffix: Vec<&str> = bundle.paths().filter(|p| {
-        let p = p.to_lowercase();
-        p == lower || p.ends_with(&suffix)
-    }).collect();
+    let by_suffix: Vec<&str> = bundle
+        .paths()
+        .filter(|p| {
+            let p = p.to_lowercase();
+            p == lower || p.ends_with(&suffix)
+        })
+        .collect();
     let chosen: Vec<&str> = match (by_suffix.len(), package) {
         (0, _) => Vec::new(),
         (1, _) => by_suffix,
         (_, Some(pkg)) => {
             let seg = format!("/{}/", pkg.to_lowercase());
             let start = format!("{}/", pkg.to_lowercase());
-            let under: Vec<&str> = by_suffix.iter().copied().filter(|p| {
-                let p = p.to_lowercase();
-                p.contains(&seg) || p.starts_with(&start)
-            }).collect();
-            if under.is_empty() { by_suffix } else { under }
+            let under: Vec<&str> = by_suffix
+                .iter()
+                .copied()
+                .filter(|p| {
+                    let p = p.to_lowercase();
+                    p.contains(&seg) || p.starts_with(&start)
+                })
+                .collect();
+            if under.is_empty() {
+                by_suffix
+            } else {
+                under
+            }
         }
         _ => by_suffix,
     };
@@ -122,7 +133,13 @@ pub fn attach_meshes(
             }
         }
         for (name, loc, collision) in missing {
-            let used = if mesh.triangles.is_empty() { "the body converts without a shape" } else if collision { "the other geometry is used" } else { "its other geometry is used" };
+            let used = if mesh.triangles.is_empty() {
+                "the body converts without a shape"
+            } else if collision {
+                "the other geometry is used"
+            } else {
+                "its other geometry is used"
+            };
             warnings.push(Warning::new(
                 "geometry-missing",
                 format!(

@@ -53,8 +53,8 @@ use std::collections::{BTreeMap, HashMap, VecDeque};
 use nalgebra::{Isometry3, Matrix3, Translation3, UnitQuaternion, Vector3};
 
 use crate::pipeline::ir::{
-    self, Body, Coupling, Frame, FrameId, FrameOwner, Ground, Joint, JointLimits, Material, Model, Primitive,
-    PrimitiveKind, SourceInfo, SourceLoc, Warning,
+    self, Body, Coupling, Frame, FrameId, FrameOwner, Ground, Joint, JointLimits, Material, Model, Primitive, PrimitiveKind, SourceInfo,
+    SourceLoc, Warning,
 };
 
 /// Largest URDF read (real ones are well under a megabyte).
@@ -246,10 +246,8 @@ impl<'d, 'i> Reader<'d, 'i> {
     }
 
     fn number(&self, node: roxmltree::Node, key: &str, text: &str) -> Result<f64, UrdfError> {
-        let v: f64 = text
-            .trim()
-            .parse()
-            .map_err(|_| self.err(node, format!("attribute `{key}` = \"{}\" is not a number", ir::clip(text, 80))))?;
+        let v: f64 =
+            text.trim().parse().map_err(|_| self.err(node, format!("attribute `{key}` = \"{}\" is not a number", ir::clip(text, 80))))?;
         if !v.is_finite() {
             return Err(self.err(node, format!("attribute `{key}` = \"{}\" is not finite", ir::clip(text, 80))));
         }
@@ -328,7 +326,9 @@ impl<'d, 'i> Reader<'d, 'i> {
                 ("joint", _) => joints.push(self.joint(n, drake, &mut warnings)?),
                 ("loop_joint", _) => loops.push(n),
                 ("material", false) | ("gazebo", _) | ("transmission", _) | ("sensor", _) => {}
-                ("inertial", false) => warnings.push(self.warning(n, "urdf-element-ignored", "an <inertial> outside any <link> belongs to no body; ignored")),
+                ("inertial", false) => {
+                    warnings.push(self.warning(n, "urdf-element-ignored", "an <inertial> outside any <link> belongs to no body; ignored"))
+                }
                 _ => {}
             }
         }
@@ -437,7 +437,11 @@ impl<'d, 'i> Reader<'d, 'i> {
             },
             "sphere" => Shape::Sphere(positive(self.number(s, "radius", self.attr(s, "radius")?)?, "sphere radius")?),
             other => {
-                warnings.push(self.warning(s, "urdf-element-ignored", format!("geometry <{other}> is not supported (mesh, box, cylinder, sphere are); ignored")));
+                warnings.push(self.warning(
+                    s,
+                    "urdf-element-ignored",
+                    format!("geometry <{other}> is not supported (mesh, box, cylinder, sphere are); ignored"),
+                ));
                 return Ok(None);
             }
         }))
@@ -452,10 +456,7 @@ impl<'d, 'i> Reader<'d, 'i> {
             &["revolute", "continuous", "prismatic", "fixed", "floating", "planar"]
         };
         if !known.contains(&kind.as_str()) {
-            return Err(self.err(
-                n,
-                format!("unknown joint type \"{}\" (URDF knows {})", ir::clip(&kind, 80), known.join(", ")),
-            ));
+            return Err(self.err(n, format!("unknown joint type \"{}\" (URDF knows {})", ir::clip(&kind, 80), known.join(", "))));
         }
         let link_of = |tag: &str| -> Result<String, UrdfError> {
             let c = child(n, tag).ok_or_else(|| self.err(n, format!("missing <{tag} link=\"...\"/>")))?;
@@ -469,7 +470,11 @@ impl<'d, 'i> Reader<'d, 'i> {
                 if v.norm() < 1e-12 && matches!(kind.as_str(), "revolute" | "continuous" | "prismatic" | "planar" | "screw") {
                     return Err(self.err(a, "the joint axis is the zero vector"));
                 }
-                if v.norm() < 1e-12 { Vector3::x() } else { v.normalize() }
+                if v.norm() < 1e-12 {
+                    Vector3::x()
+                } else {
+                    v.normalize()
+                }
             }
             None => Vector3::x(),
         };
@@ -494,7 +499,11 @@ impl<'d, 'i> Reader<'d, 'i> {
                         // ROS writes lower = upper = 0 for "unset" in some exporters.
                         lim.lower = None;
                         lim.upper = None;
-                        warnings.push(self.warning(l, "urdf-limits-ignored", "lower = upper = 0 read as \"no position limits\" (the joint could not move otherwise)"));
+                        warnings.push(self.warning(
+                            l,
+                            "urdf-limits-ignored",
+                            "lower = upper = 0 read as \"no position limits\" (the joint could not move otherwise)",
+                        ));
                     }
                 }
                 for (k, v) in [("velocity", lim.velocity), ("effort", lim.effort)] {
@@ -535,7 +544,11 @@ impl<'d, 'i> Reader<'d, 'i> {
         }
         if let Some(&w) = index.get("world") {
             if links[w].mass > 0.0 {
-                warnings.push(self.warning(links[w].node, "urdf-element-ignored", "the link \"world\" is the fixed world; its inertial is ignored"));
+                warnings.push(self.warning(
+                    links[w].node,
+                    "urdf-element-ignored",
+                    "the link \"world\" is the fixed world; its inertial is ignored",
+                ));
             }
         }
         let mut joint_names: HashMap<&str, usize> = HashMap::new();
@@ -547,7 +560,9 @@ impl<'d, 'i> Reader<'d, 'i> {
             if j.child == "world" {
                 return Err(self.err(j.node, "the link \"world\" cannot be a joint's child"));
             }
-            let c = *index.get(j.child.as_str()).ok_or_else(|| self.err(j.node, format!("child link \"{}\" is not declared", ir::clip(&j.child, 200))))?;
+            let c = *index
+                .get(j.child.as_str())
+                .ok_or_else(|| self.err(j.node, format!("child link \"{}\" is not declared", ir::clip(&j.child, 200))))?;
             if j.parent != "world" && !index.contains_key(j.parent.as_str()) {
                 return Err(self.err(j.node, format!("parent link \"{}\" is not declared", ir::clip(&j.parent, 200))));
             }
@@ -622,7 +637,10 @@ impl<'d, 'i> Reader<'d, 'i> {
                 "continuous" | "revolute" => assemble::Motion::Revolute,
                 "prismatic" => assemble::Motion::Prismatic,
                 "fixed" => assemble::Motion::None,
-                other => return Err(self.err(n, format!("unknown loop joint type \"{}\" (continuous, revolute, prismatic, fixed)", ir::clip(other, 80)))),
+                other => {
+                    return Err(self
+                        .err(n, format!("unknown loop joint type \"{}\" (continuous, revolute, prismatic, fixed)", ir::clip(other, 80))))
+                }
             };
             let side = |tag: &str| -> Result<(usize, Isometry3<f64>), UrdfError> {
                 let c = child(n, tag).ok_or_else(|| self.err(n, format!("missing <{tag} link=\"...\" xyz rpy/>")))?;
@@ -767,7 +785,11 @@ impl<'d, 'i> Reader<'d, 'i> {
             let c = index[j.child.as_str()];
             let Some(child_body) = body_of[c] else { continue };
             let follower = model.body(child_body).cs1;
-            let parent_pose = if j.parent == "world" { Isometry3::identity() } else { pose[index[j.parent.as_str()]].unwrap_or_else(Isometry3::identity) };
+            let parent_pose = if j.parent == "world" {
+                Isometry3::identity()
+            } else {
+                pose[index[j.parent.as_str()]].unwrap_or_else(Isometry3::identity)
+            };
             let frame_pose = parent_pose * j.origin;
             let r = frame_pose.rotation;
             let world_axis = r * j.axis;
@@ -784,12 +806,18 @@ impl<'d, 'i> Reader<'d, 'i> {
                     ]
                 }
                 "ball" => vec![prim(PrimitiveKind::Spherical, Vector3::x(), loc.clone())],
-                "universal" => vec![prim(PrimitiveKind::Revolute, r * Vector3::x(), loc.clone()), prim(PrimitiveKind::Revolute, r * Vector3::y(), loc.clone())],
+                "universal" => vec![
+                    prim(PrimitiveKind::Revolute, r * Vector3::x(), loc.clone()),
+                    prim(PrimitiveKind::Revolute, r * Vector3::y(), loc.clone()),
+                ],
                 "floating" => {
                     warnings.push(self.warning(
                         j.node,
                         "urdf-floating",
-                        format!("floating joint: link \"{}\" and what hangs on it form a free body (6 degrees of freedom)", ir::clip(&j.child, 200)),
+                        format!(
+                            "floating joint: link \"{}\" and what hangs on it form a free body (6 degrees of freedom)",
+                            ir::clip(&j.child, 200)
+                        ),
                     ));
                     continue;
                 }
@@ -874,7 +902,9 @@ impl<'d, 'i> Reader<'d, 'i> {
                 Some(_) => None,
             };
             match (why, joint_id.get(leader.as_str())) {
-                (None, Some(&l)) => model.couplings.push(Coupling { follower, leader: l, multiplier: *multiplier, offset: *offset, loc: self.loc(*node) }),
+                (None, Some(&l)) => {
+                    model.couplings.push(Coupling { follower, leader: l, multiplier: *multiplier, offset: *offset, loc: self.loc(*node) })
+                }
                 (why, _) => warnings.push(self.warning(
                     *node,
                     "mimic-not-expressible",
@@ -899,8 +929,7 @@ fn is_real_xacro(n: &roxmltree::Node) -> bool {
     if n.is_text() {
         return n.text().is_some_and(substitution);
     }
-    n.is_element()
-        && ((is_xacro(n) && DIRECTIVES.contains(&n.tag_name().name())) || n.attributes().any(|a| substitution(a.value())))
+    n.is_element() && ((is_xacro(n) && DIRECTIVES.contains(&n.tag_name().name())) || n.attributes().any(|a| substitution(a.value())))
 }
 
 fn child<'a, 'i>(n: roxmltree::Node<'a, 'i>, tag: &str) -> Option<roxmltree::Node<'a, 'i>> {
@@ -926,15 +955,7 @@ fn prim(kind: PrimitiveKind, axis_world: Vector3<f64>, loc: SourceLoc) -> Primit
 
 fn push_frame(model: &mut Model, name: &str, node_id: String, owner: FrameOwner, pose: Isometry3<f64>, loc: &SourceLoc) -> FrameId {
     let id = FrameId(model.frames.len() as u32);
-    model.frames.push(Frame {
-        name: name.to_string(),
-        display_name: String::new(),
-        node_id,
-        owner,
-        ref_id: None,
-        pose,
-        loc: loc.clone(),
-    });
+    model.frames.push(Frame { name: name.to_string(), display_name: String::new(), node_id, owner, ref_id: None, pose, loc: loc.clone() });
     id
 }
 

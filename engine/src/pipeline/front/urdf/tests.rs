@@ -152,7 +152,10 @@ fn package_uris_resolve_inside_the_bundle() {
     )
     .expect("bundle");
     let from = "set/robots/r_description/urdf/r.urdf";
-    assert_eq!(locate(&b, from, "package://ex/robots/r_description/meshes/link.stl").unwrap(), Some("set/robots/r_description/meshes/Link.STL"));
+    assert_eq!(
+        locate(&b, from, "package://ex/robots/r_description/meshes/link.stl").unwrap(),
+        Some("set/robots/r_description/meshes/Link.STL")
+    );
     assert_eq!(locate(&b, from, "package:///local.stl").unwrap(), Some("set/robots/r_description/urdf/local.stl"));
     assert_eq!(locate(&b, from, "local.stl").unwrap(), Some("set/robots/r_description/urdf/local.stl"));
     assert_eq!(locate(&b, from, "package://ex/robots/none.stl").unwrap(), None);
@@ -164,7 +167,8 @@ fn package_uris_resolve_inside_the_bundle() {
 fn the_root_is_found_after_a_long_licence_header() {
     // A licence written as one comment per line puts <robot> kilobytes into the file (the
     // iiwa's at byte 3,200): more events than any fixed look-ahead.
-    let header: String = (0..120).map(|i| format!("<!-- licence line {i:03}: permission is hereby granted, free of charge -->\n")).collect();
+    let header: String =
+        (0..120).map(|i| format!("<!-- licence line {i:03}: permission is hereby granted, free of charge -->\n")).collect();
     let text = format!("<?xml version=\"1.0\"?>\n{header}{}", two_links(""));
     assert!(text.find("<robot").expect("root") > 8_000);
     assert!(is_urdf(text.as_bytes()));

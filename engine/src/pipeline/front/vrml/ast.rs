@@ -107,9 +107,7 @@ impl Kind {
         };
         match self {
             Kind::Group { children, .. } => one.add(Cost::sum(children)),
-            Kind::Switch { which, choice } => {
-                one.add(Cost::sum(usize::try_from(*which).ok().and_then(|w| choice.get(w))))
-            }
+            Kind::Switch { which, choice } => one.add(Cost::sum(usize::try_from(*which).ok().and_then(|w| choice.get(w)))),
             Kind::Lod { level } => one.add(Cost::sum(level.first())),
             Kind::Inline { .. } | Kind::V1Inline { .. } => one,
             Kind::Shape { geometry, .. } => {
@@ -214,16 +212,37 @@ pub(super) struct Ifs {
 pub(super) enum Kind {
     /// Transform (with its matrix), Group, Anchor, Collision, Billboard, and the instances of
     /// an unresolved EXTERNPROTO.
-    Group { children: Vec<NodeRef>, matrix: Option<Box<Matrix4<f64>>> },
-    Switch { which: i32, choice: Vec<NodeRef> },
-    Lod { level: Vec<NodeRef> },
-    Inline { urls: Vec<String> },
-    Shape { appearance: Option<NodeRef>, geometry: Option<NodeRef> },
-    Appearance { material: Option<NodeRef> },
-    Material { diffuse: [f32; 3] },
+    Group {
+        children: Vec<NodeRef>,
+        matrix: Option<Box<Matrix4<f64>>>,
+    },
+    Switch {
+        which: i32,
+        choice: Vec<NodeRef>,
+    },
+    Lod {
+        level: Vec<NodeRef>,
+    },
+    Inline {
+        urls: Vec<String>,
+    },
+    Shape {
+        appearance: Option<NodeRef>,
+        geometry: Option<NodeRef>,
+    },
+    Appearance {
+        material: Option<NodeRef>,
+    },
+    Material {
+        diffuse: [f32; 3],
+    },
     /// Coordinate (VRML 97) or Coordinate3 (VRML 1.0).
-    Coordinate { points: Vec<[f32; 3]> },
-    Color { colors: Vec<[f32; 3]> },
+    Coordinate {
+        points: Vec<[f32; 3]>,
+    },
+    Color {
+        colors: Vec<[f32; 3]>,
+    },
     Ifs(Box<Ifs>),
     Prim(Prim),
     /// A PROTO instance: the body's first node (`None` for an empty body).
@@ -233,16 +252,28 @@ pub(super) enum Kind {
     /// Anything else: skipped.
     Other,
     // VRML 1.0
-    V1Group { kind: V1GroupKind, children: Vec<NodeRef> },
-    V1Inline { name: String },
+    V1Group {
+        kind: V1GroupKind,
+        children: Vec<NodeRef>,
+    },
+    V1Inline {
+        name: String,
+    },
     /// Transform, MatrixTransform, Translation, Rotation, Scale: post-multiplied into the state.
     V1Xform(Box<Matrix4<f64>>),
     /// ShapeHints: `Some(true)` for CLOCKWISE vertex ordering.
-    V1ShapeHints { clockwise: Option<bool> },
+    V1ShapeHints {
+        clockwise: Option<bool>,
+    },
     /// IndexedFaceSet over the current Coordinate3.
-    V1Ifs { coord_index: Vec<i32> },
+    V1Ifs {
+        coord_index: Vec<i32>,
+    },
     /// FaceSet over the current Coordinate3.
-    V1FaceSet { start: i32, num_vertices: Vec<i32> },
+    V1FaceSet {
+        start: i32,
+        num_vertices: Vec<i32>,
+    },
 }
 
 /// A field's declared type (VRML 97, plus the VRML 1.0 types the reader needs).

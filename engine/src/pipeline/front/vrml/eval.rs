@@ -182,13 +182,7 @@ impl<'l, 'b> Eval<'l, 'b> {
         Ok(())
     }
 
-    fn file_roots(
-        &mut self,
-        file: &ParsedFile,
-        parent: Option<NodeId>,
-        global: &Matrix4<f64>,
-        depth: u32,
-    ) -> R<()> {
+    fn file_roots(&mut self, file: &ParsedFile, parent: Option<NodeId>, global: &Matrix4<f64>, depth: u32) -> R<()> {
         match file.version {
             Version::V2 => {
                 for r in &file.roots {
@@ -207,14 +201,7 @@ impl<'l, 'b> Eval<'l, 'b> {
 
     /// A VRML 97 node. `ident` names the scene node it makes (the outermost PROTO instance
     /// when `n` is an instance's body).
-    fn node2(
-        &mut self,
-        n: &Node,
-        ident: &Node,
-        parent: Option<NodeId>,
-        pglobal: &Matrix4<f64>,
-        depth: u32,
-    ) -> R<()> {
+    fn node2(&mut self, n: &Node, ident: &Node, parent: Option<NodeId>, pglobal: &Matrix4<f64>, depth: u32) -> R<()> {
         if depth > MAX_DEPTH {
             return Err(node_error(n, VrmlErrorKind::TooDeep { limit: MAX_DEPTH }));
         }
@@ -294,14 +281,7 @@ impl<'l, 'b> Eval<'l, 'b> {
     }
 
     /// A VRML 1.0 node, updating the traversal state.
-    fn node1(
-        &mut self,
-        n: &NodeRef,
-        st: &mut V1State,
-        parent: Option<NodeId>,
-        pglobal: &Matrix4<f64>,
-        depth: u32,
-    ) -> R<()> {
+    fn node1(&mut self, n: &NodeRef, st: &mut V1State, parent: Option<NodeId>, pglobal: &Matrix4<f64>, depth: u32) -> R<()> {
         if depth > MAX_DEPTH {
             return Err(node_error(n, VrmlErrorKind::TooDeep { limit: MAX_DEPTH }));
         }
@@ -310,10 +290,7 @@ impl<'l, 'b> Eval<'l, 'b> {
                 // The transforms a Separator or Group starts with (before its first shape, group
                 // or inline; property nodes may come between) place the node itself: they go
                 // into its global transform instead of its geometry.
-                let folds = matches!(
-                    kind,
-                    V1GroupKind::Separator | V1GroupKind::TransformSeparator | V1GroupKind::Group
-                );
+                let folds = matches!(kind, V1GroupKind::Separator | V1GroupKind::TransformSeparator | V1GroupKind::Group);
                 let mut lead = Matrix4::identity();
                 let mut skip = 0;
                 if folds {
@@ -379,10 +356,7 @@ impl<'l, 'b> Eval<'l, 'b> {
                 let end = i64::from(*start) + total;
                 if *start < 0 || end > points.len() as i64 {
                     let index = if *start < 0 { i64::from(*start) } else { end - 1 };
-                    return Err(node_error(
-                        n,
-                        VrmlErrorKind::IndexOutOfRange { node: describe(n), index, count: points.len() },
-                    ));
+                    return Err(node_error(n, VrmlErrorKind::IndexOutOfRange { node: describe(n), index, count: points.len() }));
                 }
                 let mut index = Vec::with_capacity(total as usize + num_vertices.len());
                 let mut next = *start;
@@ -426,14 +400,7 @@ impl<'l, 'b> Eval<'l, 'b> {
 
     /// Follows an Inline (VRML 97 `url`, VRML 1.0 `name`): the first url found in the bundle is
     /// read and its roots hang from `parent`.
-    fn inline(
-        &mut self,
-        urls: &[String],
-        at: &Node,
-        parent: NodeId,
-        g: &Matrix4<f64>,
-        depth: u32,
-    ) -> R<()> {
+    fn inline(&mut self, urls: &[String], at: &Node, parent: NodeId, g: &Matrix4<f64>, depth: u32) -> R<()> {
         let mut target = None;
         for u in urls {
             match resolve_url(self.ld.bundle, &at.file, u) {

@@ -199,9 +199,7 @@ impl<'s> Lexer<'s> {
                 self.pos = end;
                 Ok(v)
             }
-            _ if !text.is_empty() && !is_delim(text[0]) => {
-                Err(LexError::BadNumber(String::from_utf8_lossy(text).into_owned()))
-            }
+            _ if !text.is_empty() && !is_delim(text[0]) => Err(LexError::BadNumber(String::from_utf8_lossy(text).into_owned())),
             _ => Err(self.expected("a number")),
         }
     }

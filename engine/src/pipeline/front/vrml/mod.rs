@@ -233,12 +233,7 @@ impl Limits {
 
 impl Default for Limits {
     fn default() -> Self {
-        Limits {
-            parsed_nodes: MAX_PARSED_NODES,
-            scene_nodes: MAX_SCENE_NODES,
-            shapes: MAX_SHAPES,
-            triangles: MAX_TRIANGLES,
-        }
+        Limits { parsed_nodes: MAX_PARSED_NODES, scene_nodes: MAX_SCENE_NODES, shapes: MAX_SHAPES, triangles: MAX_TRIANGLES }
     }
 }
 
@@ -330,12 +325,7 @@ pub fn parse_in(bundle: &Bundle, main: &str, gz: &Gunzip) -> Result<(Scene, Vec<
 }
 
 /// [`parse_in`] with other limits.
-pub(crate) fn parse_with(
-    bundle: &Bundle,
-    main: &str,
-    limits: Limits,
-    gz: &Gunzip,
-) -> Result<(Scene, Vec<Warning>), VrmlError> {
+pub(crate) fn parse_with(bundle: &Bundle, main: &str, limits: Limits, gz: &Gunzip) -> Result<(Scene, Vec<Warning>), VrmlError> {
     let mut ld = parse::Loader::new(bundle, limits, gz);
     let file = ld.load(main).map_err(|e| *e)?;
     let scene = {

@@ -573,12 +573,7 @@ impl<'s> Parser<'_, '_, 's> {
                     Some(n) => Ok(Some(n.clone())),
                     None => {
                         let name = String::from_utf8_lossy(name).into_owned();
-                        self.warn(
-                            "vrml-undefined-use",
-                            format!("USE {name}: no node was DEF'd with that name before; ignored"),
-                            line,
-                            col,
-                        );
+                        self.warn("vrml-undefined-use", format!("USE {name}: no node was DEF'd with that name before; ignored"), line, col);
                         Ok(None)
                     }
                 }
@@ -611,9 +606,7 @@ impl<'s> Parser<'_, '_, 's> {
                     self.skip_body()?;
                     Kind::IgnoredGeometry
                 }
-                Some(
-                    kt @ (Kt::V1Separator | Kt::V1TransformSeparator | Kt::V1Group | Kt::V1Switch | Kt::V1Lod),
-                ) => self.v1_group(kt)?,
+                Some(kt @ (Kt::V1Separator | Kt::V1TransformSeparator | Kt::V1Group | Kt::V1Switch | Kt::V1Lod)) => self.v1_group(kt)?,
                 Some(kt) => self.known_body(kt)?,
                 None => {
                     self.skip_body()?;
@@ -650,10 +643,7 @@ impl<'s> Parser<'_, '_, 's> {
     fn is_value(&mut self) -> R<Option<Value>> {
         self.lx.word();
         let name = self.word("a PROTO field name after IS")?;
-        Ok(self
-            .env
-            .as_ref()
-            .and_then(|env| env.iter().find(|(n, _)| n.as_bytes() == name).map(|(_, v)| v.clone())))
+        Ok(self.env.as_ref().and_then(|env| env.iter().find(|(n, _)| n.as_bytes() == name).map(|(_, v)| v.clone())))
     }
 
     /// Fields of a known node up to its closing brace.
@@ -972,9 +962,7 @@ impl<'s> Parser<'_, '_, 's> {
                     _ if self.lx.peek_second_byte() == Some(b'{') => {
                         self.node()?;
                     }
-                    _ if self.version == Version::V1
-                        && w.iter().all(|c| c.is_ascii_uppercase() || c.is_ascii_digit() || *c == b'_') =>
-                    {
+                    _ if self.version == Version::V1 && w.iter().all(|c| c.is_ascii_uppercase() || c.is_ascii_digit() || *c == b'_') => {
                         self.lx.word();
                     }
                     // Not a value: the next field name.
@@ -1048,12 +1036,7 @@ impl<'s> Parser<'_, '_, 's> {
         let start = self.lx.pos;
         self.lx.skip_balanced_raw().map_err(|e| self.lex(e))?;
         let end = self.lx.pos - 1;
-        let body = ProtoBody {
-            text: Rc::from(&self.lx.b[line_start..end]),
-            start: start - line_start,
-            line,
-            file: self.file.clone(),
-        };
+        let body = ProtoBody { text: Rc::from(&self.lx.b[line_start..end]), start: start - line_start, line, file: self.file.clone() };
         let def = ProtoDef { name, fields, body: Some(body), scope: self.protos.clone(), parse_cost: Cell::new(None) };
         self.protos = self.protos.push(Rc::new(def));
         Ok(())
@@ -1118,13 +1101,7 @@ impl<'s> Parser<'_, '_, 's> {
                     found = self.protos.find(wanted);
                 } else {
                     let parsed = self.ld.load(&path)?;
-                    found = parsed.protos.find(wanted).or_else(|| {
-                        if frag.is_empty() {
-                            parsed.protos.first()
-                        } else {
-                            None
-                        }
-                    });
+                    found = parsed.protos.find(wanted).or_else(|| if frag.is_empty() { parsed.protos.first() } else { None });
                 }
             }
             if found.is_some() {
@@ -1291,9 +1268,7 @@ fn build(kt: Kt, mut v: Vals) -> Kind {
             );
             Kind::Group { children: v.nodes("children"), matrix: Some(Box::new(m)) }
         }
-        Kt::Group | Kt::Anchor | Kt::Collision | Kt::Billboard => {
-            Kind::Group { children: v.nodes("children"), matrix: None }
-        }
+        Kt::Group | Kt::Anchor | Kt::Collision | Kt::Billboard => Kind::Group { children: v.nodes("children"), matrix: None },
         Kt::Switch => Kind::Switch { which: v.int("whichChoice", -1), choice: v.nodes("choice") },
         Kt::Lod => Kind::Lod { level: v.nodes("level") },
         Kt::Inline => Kind::Inline { urls: v.strings("url") },
@@ -1330,9 +1305,7 @@ fn build(kt: Kt, mut v: Vals) -> Kind {
             side: v.bool("side", true),
             bottom: v.bool("bottom", true),
         }),
-        Kt::V1Cube => Kind::Prim(Prim::Box {
-            size: [v.float("width", 2.0), v.float("height", 2.0), v.float("depth", 2.0)],
-        }),
+        Kt::V1Cube => Kind::Prim(Prim::Box { size: [v.float("width", 2.0), v.float("height", 2.0), v.float("depth", 2.0)] }),
         Kt::V1Cylinder => {
             let parts = v.strings("parts");
             Kind::Prim(Prim::Cylinder {

@@ -34,9 +34,10 @@ fn error(src: &str) -> VrmlError {
 }
 
 fn node<'s>(s: &'s Scene, path: &str) -> &'s SceneNode {
-    s.nodes.iter().find(|n| n.path == path).unwrap_or_else(|| {
-        panic!("no node {path}; paths: {:?}", s.nodes.iter().map(|n| &n.path).collect::<Vec<_>>())
-    })
+    s.nodes
+        .iter()
+        .find(|n| n.path == path)
+        .unwrap_or_else(|| panic!("no node {path}; paths: {:?}", s.nodes.iter().map(|n| &n.path).collect::<Vec<_>>()))
 }
 
 fn paths(s: &Scene) -> Vec<&str> {
@@ -171,8 +172,7 @@ fn fast_float_agrees_with_std_on_every_fixture_number() {
         let mut i = 0;
         while i < b.len() {
             let c = b[i];
-            let starts = (c.is_ascii_digit() || c == b'-' || c == b'+' || c == b'.')
-                && (i == 0 || lexer::is_delim(b[i - 1]));
+            let starts = (c.is_ascii_digit() || c == b'-' || c == b'+' || c == b'.') && (i == 0 || lexer::is_delim(b[i - 1]));
             if !starts {
                 i += 1;
                 continue;
@@ -325,9 +325,7 @@ fn undefined_use_is_a_warning() {
 #[test]
 fn switch_and_lod() {
     let one = |which: &str| {
-        let (s, _) = scene(&format!(
-            "Switch {{ whichChoice {which} choice [ DEF A Group {{}} DEF B Group {{ children {TRI} }} ] }}"
-        ));
+        let (s, _) = scene(&format!("Switch {{ whichChoice {which} choice [ DEF A Group {{}} DEF B Group {{ children {TRI} }} ] }}"));
         s
     };
     assert_eq!(paths(&one("1")), ["Switch[0]", "Switch[0]/B"]);
@@ -339,9 +337,7 @@ fn switch_and_lod() {
     let (s, _) = scene("Switch { choice [ Group {} ] }");
     assert_eq!(paths(&s), ["Switch[0]"]);
     // LOD: only the first level.
-    let (s, _) = scene(&format!(
-        "LOD {{ range [10] level [ DEF Hi Transform {{ children {TRI} }} DEF Lo Group {{ }} ] }}"
-    ));
+    let (s, _) = scene(&format!("LOD {{ range [10] level [ DEF Hi Transform {{ children {TRI} }} DEF Lo Group {{ }} ] }}"));
     assert_eq!(paths(&s), ["LOD[0]", "LOD[0]/Hi"]);
 }
 
@@ -406,9 +402,8 @@ fn indexed_face_set_polygons() {
 
 #[test]
 fn ccw_false_flips_winding() {
-    let (s, _) = scene(
-        "Shape { geometry IndexedFaceSet { ccw FALSE coord Coordinate { point [0 0 0, 1 0 0, 0 1 0] } coordIndex [0 1 2 -1] } }",
-    );
+    let (s, _) =
+        scene("Shape { geometry IndexedFaceSet { ccw FALSE coord Coordinate { point [0 0 0, 1 0 0, 0 1 0] } coordIndex [0 1 2 -1] } }");
     assert_eq!(s.nodes[0].shapes[0].mesh.triangles, [[0, 2, 1]]);
 }
 
@@ -427,9 +422,7 @@ fn colours() {
     // Material wins; a Material without diffuseColor is 0.8 grey; without Material the first
     // Color; nothing at all: None.
     let ifs = |extra: &str| {
-        format!(
-            "geometry IndexedFaceSet {{ coord Coordinate {{ point [0 0 0, 1 0 0, 0 1 0] }} coordIndex [0 1 2] {extra} }}"
-        )
+        format!("geometry IndexedFaceSet {{ coord Coordinate {{ point [0 0 0, 1 0 0, 0 1 0] }} coordIndex [0 1 2] {extra} }}")
     };
     let (s, _) = scene(&format!(
         "Group {{ children [\n\
@@ -552,7 +545,15 @@ fn proto_with_is_bindings_and_mfnode_children() {
     assert!(w.is_empty(), "{w:?}");
     assert_eq!(
         paths(&s),
-        ["Robot", "Robot/Group[0]", "Robot/Group[0]/J1", "Robot/Group[0]/J1/L1", "Robot/Group[0]/J1/J2", "Robot/Group[0]/J1/J2/Segment[0]", "Robot/Group[0]/J1/Joint[0]"]
+        [
+            "Robot",
+            "Robot/Group[0]",
+            "Robot/Group[0]/J1",
+            "Robot/Group[0]/J1/L1",
+            "Robot/Group[0]/J1/J2",
+            "Robot/Group[0]/J1/J2/Segment[0]",
+            "Robot/Group[0]/J1/Joint[0]"
+        ]
     );
     let robot = node(&s, "Robot");
     assert_eq!(robot.name, "Robot");
@@ -680,20 +681,13 @@ fn inline_missing_warns_and_keeps_the_node() {
 
 #[test]
 fn inline_cycle_is_an_error_but_repeats_are_not() {
-    let e = parse_files(
-        &[("a.wrl", "Group { children Inline { url \"b.wrl\" } }"), ("b.wrl", "Inline { url \"A.wrl\" }")],
-        "a.wrl",
-    )
-    .unwrap_err();
+    let e = parse_files(&[("a.wrl", "Group { children Inline { url \"b.wrl\" } }"), ("b.wrl", "Inline { url \"A.wrl\" }")], "a.wrl")
+        .unwrap_err();
     assert_eq!(e.to_string(), "b.wrl:1:1: Inline cycle: a.wrl -> b.wrl -> a.wrl");
     let e = parse_files(&[("a.wrl", "Inline { url \"a.wrl\" }")], "a.wrl").unwrap_err();
     assert!(matches!(e.kind, VrmlErrorKind::InlineCycle { .. }), "{e}");
     // The same part twice is fine (parsed once, in the scene twice).
-    let (s, _) = parse_files(
-        &[("a.wrl", "Inline { url \"p.wrl\" } Inline { url \"p.wrl\" }"), ("p.wrl", TRI)],
-        "a.wrl",
-    )
-    .unwrap();
+    let (s, _) = parse_files(&[("a.wrl", "Inline { url \"p.wrl\" } Inline { url \"p.wrl\" }"), ("p.wrl", TRI)], "a.wrl").unwrap();
     assert_eq!(s.triangle_count(), 2);
     assert_eq!(s.files, ["a.wrl", "p.wrl"]);
 }
@@ -726,7 +720,8 @@ fn headers() {
 
 #[test]
 fn gzip_by_magic_whatever_the_extension() {
-    let part = gzip(b"#VRML V1.0 ascii\nSeparator { Coordinate3 { point [0 0 0, 1 0 0, 0 1 0] } IndexedFaceSet { coordIndex [0, 1, 2, -1] } }");
+    let part =
+        gzip(b"#VRML V1.0 ascii\nSeparator { Coordinate3 { point [0 0 0, 1 0 0, 0 1 0] } IndexedFaceSet { coordIndex [0, 1, 2, -1] } }");
     let main = gzip(b"#VRML V2.0 utf8\nDEF T Transform { translation 0 0 3 children Inline { url \"part.wrz\" } }");
     let b = bundle_of(&[("main.wrl", &main), ("part.wrz", &part)]);
     let (s, _) = parse(&b, "main.wrl").unwrap();
@@ -918,13 +913,10 @@ fn deep_nesting_is_an_error_not_a_stack_overflow() {
     }
     assert!(matches!(error(&src).kind, VrmlErrorKind::TooDeep { .. }));
     // Nested PROTO instances.
-    let src = "PROTO P [ field MFNode c [] ] { Group { children IS c } }\n".to_string()
-        + &"P { c ".repeat(n)
-        + &"} ".repeat(n);
+    let src = "PROTO P [ field MFNode c [] ] { Group { children IS c } }\n".to_string() + &"P { c ".repeat(n) + &"} ".repeat(n);
     assert!(matches!(error(&src).kind, VrmlErrorKind::TooDeep { .. }));
     // Inlines nested deeper than the limit.
-    let files: Vec<(String, String)> =
-        (0..300).map(|i| (format!("f{i}.wrl"), format!("Inline {{ url \"f{}.wrl\" }}", i + 1))).collect();
+    let files: Vec<(String, String)> = (0..300).map(|i| (format!("f{i}.wrl"), format!("Inline {{ url \"f{}.wrl\" }}", i + 1))).collect();
     let refs: Vec<(&str, &str)> = files.iter().map(|(a, b)| (a.as_str(), b.as_str())).collect();
     let e = parse_files(&refs, "f0.wrl").unwrap_err();
     assert!(matches!(e.kind, VrmlErrorKind::TooDeep { .. }), "{e}");
@@ -998,17 +990,11 @@ fn expansion_bombs_are_refused_before_expanding() {
     let src = proto_bomb();
     assert!(src.len() < 2500, "{}", src.len());
     // P0 parses 2 nodes, P_i 1 + 2 (1 + P_{i-1}) = 5 * 2^i - 3, plus the instance itself.
-    assert_eq!(
-        error(&src).to_string(),
-        "main.wrl:42:1: PROTO instance P39 would expand to 2748779069438 parsed nodes (limit 2000000)"
-    );
+    assert_eq!(error(&src).to_string(), "main.wrl:42:1: PROTO instance P39 would expand to 2748779069438 parsed nodes (limit 2000000)");
     // Each level doubles the Sphere's 528 triangles; every root is expanded, so N0 .. N17
     // together pass 10^8 at the root N17.
     let src = use_bomb();
-    assert_eq!(
-        error(&src).to_string(),
-        "main.wrl:19:1: Group \"N17\" would expand to 138411504 triangles (limit 100000000)"
-    );
+    assert_eq!(error(&src).to_string(), "main.wrl:19:1: Group \"N17\" would expand to 138411504 triangles (limit 100000000)");
     // The same chain kept out of the scene (an empty Switch): a node whose own expansion
     // passes a limit is refused all the same, at the USE that passes it.
     let body: String = use_bomb().lines().skip(1).collect::<Vec<_>>().join("\n");
@@ -1017,7 +1003,8 @@ fn expansion_bombs_are_refused_before_expanding() {
     assert_eq!(e.to_string(), "main.wrl:21:36: USE N17 would expand to 138412032 triangles (limit 100000000)");
     // Through IS: a PROTO whose body uses its MFNode field twice, nested 40 deep (linear to
     // parse), is refused at the node whose expansion passes the limit.
-    let mut src = String::from("PROTO D [ field MFNode c [] ] { Group { children [ Group { children IS c } Group { children IS c } ] } }\n");
+    let mut src =
+        String::from("PROTO D [ field MFNode c [] ] { Group { children [ Group { children IS c } Group { children IS c } ] } }\n");
     src += &"D { c ".repeat(40);
     src += "Shape { geometry Box { } }";
     src += &" }".repeat(40);
@@ -1186,8 +1173,7 @@ fn folder_bundle(dir: &Path) -> Bundle {
 /// exports (so `../vrml/` Inlines of the Pro/E set resolve).
 fn fixture_sets() -> Vec<PathBuf> {
     let Some(dir) = fixtures_dir() else { return Vec::new() };
-    let mut out: Vec<PathBuf> =
-        std::fs::read_dir(dir.join("vrml")).unwrap().flatten().map(|e| e.path()).filter(|p| p.is_dir()).collect();
+    let mut out: Vec<PathBuf> = std::fs::read_dir(dir.join("vrml")).unwrap().flatten().map(|e| e.path()).filter(|p| p.is_dir()).collect();
     out.sort();
     out
 }

@@ -23,19 +23,7 @@ pub(super) fn scale(s: [f64; 3]) -> Matrix4<f64> {
 }
 
 /// The VRML 97 Transform: `T * C * R * SR * S * -SR * -C`.
-pub(super) fn vrml_transform(
-    t: [f64; 3],
-    r: [f64; 4],
-    s: [f64; 3],
-    sr: [f64; 4],
-    c: [f64; 3],
-) -> Matrix4<f64> {
+pub(super) fn vrml_transform(t: [f64; 3], r: [f64; 4], s: [f64; 3], sr: [f64; 4], c: [f64; 3]) -> Matrix4<f64> {
     let srm = rotation(sr);
-    translation(t)
-        * translation(c)
-        * rotation(r)
-        * srm
-        * scale(s)
-        * srm.transpose()
-        * translation([-c[0], -c[1], -c[2]])
+    translation(t) * translation(c) * rotation(r) * srm * scale(s) * srm.transpose() * translation([-c[0], -c[1], -c[2]])
 }

@@ -20,11 +20,16 @@ fn declaration(line: &str) -> Option<(&str, &str)> {
     }
     let mut words = t.split_whitespace().skip_while(|w| matches!(*w, "inner" | "outer"));
     let class = words.next()?;
-    if matches!(class, "parameter" | "connect(" | "extends" | "equation" | "public" | "protected" | "annotation") || class.starts_with("connect(") {
+    if matches!(class, "parameter" | "connect(" | "extends" | "equation" | "public" | "protected" | "annotation")
+        || class.starts_with("connect(")
+    {
         return None;
     }
     let name = words.next()?.split(['(', ';', '[']).next()?;
-    let ok = |s: &str| s.chars().next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_') && s.chars().all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '.');
+    let ok = |s: &str| {
+        s.chars().next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+            && s.chars().all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '.')
+    };
     (ok(class) && ok(name)).then_some((class, name))
 }
 

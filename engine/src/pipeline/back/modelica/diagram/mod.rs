@@ -7,8 +7,8 @@
 
 pub mod extend;
 pub mod plan;
-pub mod svg;
 mod route;
+pub mod svg;
 
 use std::collections::{BTreeMap, HashMap};
 
@@ -127,10 +127,7 @@ impl Placed {
     pub fn annotation(&self) -> String {
         let h = self.half;
         let (a, b) = if self.flip { (h, -h) } else { (-h, h) };
-        format!(
-            "annotation (Placement(transformation(extent={{{{{a},{}}},{{{b},{h}}}}}, origin={{{},{}}})))",
-            -h, self.x, self.y
-        )
+        format!("annotation (Placement(transformation(extent={{{{{a},{}}},{{{b},{h}}}}}, origin={{{},{}}})))", -h, self.x, self.y)
     }
 
     /// A connector's position in the diagram and the direction a line leaves it in.

@@ -241,7 +241,8 @@ impl Plan {
         for (j, at) in joint_at.iter().enumerate() {
             if let Some((g, _, _)) = at {
                 let chain = &v.analysis.chains[j];
-                let count = chain.elements.len().max(1) + usize::from(!is_identity(&chain.residual)) + usize::from(!is_identity(&chain.pre)) + 1;
+                let count =
+                    chain.elements.len().max(1) + usize::from(!is_identity(&chain.residual)) + usize::from(!is_identity(&chain.pre)) + 1;
                 let gap = col[*g].max(1);
                 slots[gap] = slots[gap].max(count);
             }

@@ -116,7 +116,13 @@ fn numbers_after(s: &str, key: &str) -> Option<Vec<f64>> {
             _ => {}
         }
     }
-    Some(rest[..end].split(|c: char| !(c.is_ascii_digit() || c == '.' || c == '-' || c == 'e' || c == 'E')).filter(|t| !t.is_empty()).filter_map(|t| t.parse().ok()).collect())
+    Some(
+        rest[..end]
+            .split(|c: char| !(c.is_ascii_digit() || c == '.' || c == '-' || c == 'e' || c == 'E'))
+            .filter(|t| !t.is_empty())
+            .filter_map(|t| t.parse().ok())
+            .collect(),
+    )
 }
 
 /// Reads the diagram of one model's text.
@@ -156,8 +162,17 @@ pub fn read(text: &str) -> Drawing {
             let (a, b) = (rest[..comma].trim().to_string(), rest[comma + 1..close].trim().to_string());
             match numbers_after(st, "points=") {
                 Some(p) if p.len() >= 4 => {
-                    let color = numbers_after(st, "color=").filter(|c| c.len() == 3).map(|c| (c[0] as u8, c[1] as u8, c[2] as u8)).unwrap_or((0, 0, 0));
-                    d.lines.push(Line { a, b, points: p.chunks(2).map(|c| (c[0], c[1])).collect(), color, dashed: st.contains("LinePattern.Dash") });
+                    let color = numbers_after(st, "color=")
+                        .filter(|c| c.len() == 3)
+                        .map(|c| (c[0] as u8, c[1] as u8, c[2] as u8))
+                        .unwrap_or((0, 0, 0));
+                    d.lines.push(Line {
+                        a,
+                        b,
+                        points: p.chunks(2).map(|c| (c[0], c[1])).collect(),
+                        color,
+                        dashed: st.contains("LinePattern.Dash"),
+                    });
                 }
                 _ => d.unrouted.push((a, b)),
             }

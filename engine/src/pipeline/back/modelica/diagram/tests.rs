@@ -172,15 +172,27 @@ fn contact_forces_stand_beside_their_bodies_with_short_wires() {
     let (out, _, work) = extend::lay_out_counted(&text, &base);
     assert!(!out.contains(ph), "{out}");
     let drawing = svg::read(&out);
-    let at = |name: &str| drawing.components.iter().find(|c| c.name == name).map(|c| ((c.extent[0].0 + c.extent[1].0) / 2.0, (c.extent[0].1 + c.extent[1].1) / 2.0));
+    let at = |name: &str| {
+        drawing
+            .components
+            .iter()
+            .find(|c| c.name == name)
+            .map(|c| ((c.extent[0].0 + c.extent[1].0) / 2.0, (c.extent[0].1 + c.extent[1].1) / 2.0))
+    };
     // The collision world: in the column left of everything.
     let (wx, _) = at("collisionWorld").unwrap_or_else(|| panic!("collisionWorld placed: {out}"));
     assert!(wx < -20.0, "{out}");
     for b in ["B1", "B2", "B3"] {
         let body = base.placed[b];
         let (fx, fy) = at(&format!("collisionForce_{b}")).unwrap_or_else(|| panic!("force of {b}: {out}"));
-        assert!((fx - f64::from(body.x)).abs() <= 60.0 && (fy - f64::from(body.y)).abs() <= 60.0, "{b}: force at {fx},{fy}, body at {},{}", body.x, body.y);
-        let line = drawing.lines.iter().find(|l| l.a == format!("collisionForce_{b}.frame_b")).unwrap_or_else(|| panic!("wire of {b}: {out}"));
+        assert!(
+            (fx - f64::from(body.x)).abs() <= 60.0 && (fy - f64::from(body.y)).abs() <= 60.0,
+            "{b}: force at {fx},{fy}, body at {},{}",
+            body.x,
+            body.y
+        );
+        let line =
+            drawing.lines.iter().find(|l| l.a == format!("collisionForce_{b}.frame_b")).unwrap_or_else(|| panic!("wire of {b}: {out}"));
         assert!(line.points.len() <= 4, "{b}: {:?}", line.points);
         let length: f64 = line.points.windows(2).map(|p| (p[0].0 - p[1].0).abs() + (p[0].1 - p[1].1).abs()).sum();
         assert!(length <= 80.0, "{b}: {length} long: {:?}", line.points);
@@ -190,7 +202,8 @@ fn contact_forces_stand_beside_their_bodies_with_short_wires() {
 
 #[test]
 fn declarations_may_start_with_inner() {
-    let text = format!("  inner P.Components.Collision.World collisionWorld(nBodies=3) if collisions \"World\"\n    {};\n", extend::PLACEHOLDER);
+    let text =
+        format!("  inner P.Components.Collision.World collisionWorld(nBodies=3) if collisions \"World\"\n    {};\n", extend::PLACEHOLDER);
     let (out, _) = extend::lay_out(&text, &Sheet::default());
     assert!(!out.contains(extend::PLACEHOLDER), "{out}");
     assert_eq!(svg::read(&out).components.first().map(|c| c.name.as_str()), Some("collisionWorld"), "{out}");

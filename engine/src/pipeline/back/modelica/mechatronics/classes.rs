@@ -14,19 +14,13 @@ fn param_decl(p: &Param) -> String {
     // of RobotR3's controller): its unit goes into the description instead.
     let range = p.range.attributes();
     let attrs = if range.is_empty() || matches!(p.ty, Ty::Boolean | Ty::String) { String::new() } else { format!("({range})") };
-    let doc = if p.mtype == "Real" && !p.unit.is_empty() && p.unit != "1" {
-        format!("{}, {}", p.doc, p.unit)
-    } else {
-        p.doc.to_string()
-    };
+    let doc = if p.mtype == "Real" && !p.unit.is_empty() && p.unit != "1" { format!("{}, {}", p.doc, p.unit) } else { p.doc.to_string() };
     format!("  parameter {} {}{attrs} = {} \"{}\";", p.mtype, p.name, p.default, super::mstr(&doc))
 }
 
 /// Declarations of the parameters a class declares itself (not those of its interface).
 fn params_of(path: &str) -> String {
-    spec(path)
-        .map(|s| s.params.iter().filter(|p| !p.inherited).map(param_decl).collect::<Vec<_>>().join("\n"))
-        .unwrap_or_default()
+    spec(path).map(|s| s.params.iter().filter(|p| !p.inherited).map(param_decl).collect::<Vec<_>>().join("\n")).unwrap_or_default()
 }
 
 /// HTML table of a class's library parameters.

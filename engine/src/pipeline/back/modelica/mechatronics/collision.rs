@@ -191,7 +191,10 @@ pub fn declarations(pkg: &str, bodies: &[String], shapes: &[Option<Vec<ConvexPar
     let mut f = String::new();
     let _ = writeln!(f, "cad2mo-collision 1");
     let _ = writeln!(f, "# The convex parts of the bodies' collision shapes for {pkg}.Components.Collision.World (written by cad2mo):");
-    let _ = writeln!(f, "# bodies in the order of the world's inputs; \"part <body> <radius m> <vertices>\" then the vertices in the body's frame_a (m);");
+    let _ = writeln!(
+        f,
+        "# bodies in the order of the world's inputs; \"part <body> <radius m> <vertices>\" then the vertices in the body's frame_a (m);"
+    );
     let _ = writeln!(f, "# \"allow <body> <body>\": a pair allowed to touch (no contact force); every other pair is checked.");
     let _ = writeln!(f, "bodies {n}");
     for (k, &i) in shaped.iter().enumerate() {

@@ -143,10 +143,7 @@ pub fn declarations(pkg: &str, target: &LiveTarget, bodies: &[String]) -> String
     let r: Vec<String> = bodies.iter().map(|b| format!("{b}.frame_a.r_0")).collect();
     let t: Vec<String> = bodies.iter().map(|b| format!("{b}.frame_a.R.T")).collect();
     let mut s = String::new();
-    let _ = writeln!(
-        s,
-        "\n  // Live view: the bodies' poses to the cad2mo service while simulating (see Components.Visualization)"
-    );
+    let _ = writeln!(s, "\n  // Live view: the bodies' poses to the cad2mo service while simulating (see Components.Visualization)");
     let _ = writeln!(
         s,
         "  parameter Boolean liveView = false \"Send the bodies' poses to the cad2mo live view while simulating\"\n    annotation (Dialog(group=\"Live view\"), choices(checkBox=true));"

@@ -232,7 +232,10 @@ fn html_stays_inside_string_literals() {
 #[test]
 fn no_drives_is_still_a_model() {
     let s = mechatronics_text(&[]);
-    assert!(s.starts_with("within P;\nmodel Mechatronics \"Mechatronic model of P: Mechanics with no joint drive\"\n  extends P.Mechanics;\n"), "{s}");
+    assert!(
+        s.starts_with("within P;\nmodel Mechatronics \"Mechatronic model of P: Mechanics with no joint drive\"\n  extends P.Mechanics;\n"),
+        "{s}"
+    );
     assert!(s.contains("No drive is assigned"), "{s}");
     assert!(s.contains("<p>From \\\"x.xml\\\".</p>"), "provenance escaped for the string: {s}");
     assert!(s.trim_end().ends_with("end Mechatronics;"));
@@ -503,18 +506,25 @@ fn plans_for(report: &crate::pipeline::report::Report) -> Vec<DrivePlan> {
         let motor = if n % 2 == 0 {
             choice(MOTOR, &[("R", r(0.299)), ("L", r(8.2e-5)), ("k", r(0.0302)), ("J", r(1.42e-5)), ("V_max", r(24.0)), ("I_max", r(10.0))])
         } else {
-            choice(MSL_MOTOR, &[("VaNominal", r(24.0)), ("IaNominal", r(5.77)), ("wNominal", r(726.0)), ("Ra", r(0.299)), ("La", r(8.2e-5)), ("Jr", r(1.42e-5))])
+            choice(
+                MSL_MOTOR,
+                &[
+                    ("VaNominal", r(24.0)),
+                    ("IaNominal", r(5.77)),
+                    ("wNominal", r(726.0)),
+                    ("Ra", r(0.299)),
+                    ("La", r(8.2e-5)),
+                    ("Jr", r(1.42e-5)),
+                ],
+            )
         };
         let gear = match (kind, n % 2) {
             (JointKind::Prismatic, _) => choice(SCREW, &[("ratio", r(1.0)), ("lead", r(0.005))]),
             (_, 0) => choice(IDEAL, &[("ratio", r(50.0))]),
             _ => choice(EFFICIENCY, &[("ratio", r(100.0)), ("eta", r(0.8))]),
         };
-        let reference = if n % 2 == 0 {
-            Reference::Constant(start + 0.1)
-        } else {
-            Reference::Table(vec![(0.2, start), (0.8, start + 0.01)])
-        };
+        let reference =
+            if n % 2 == 0 { Reference::Constant(start + 0.1) } else { Reference::Table(vec![(0.2, start), (0.8, start + 0.01)]) };
         plans.push(DrivePlan {
             joint: j.elements[0].modelica_name.clone(),
             kind,
@@ -589,14 +599,20 @@ fn drives_following_motions_pass_the_tools() {
         "{text}"
     );
     assert!(
-        text.contains(&format!("drive_{first}.qd_motion = if motion == 1 then motion_pick_place.y[{}] else motion_pick_place_2.y[{}];", n + 1, 2 * n)),
+        text.contains(&format!(
+            "drive_{first}.qd_motion = if motion == 1 then motion_pick_place.y[{}] else motion_pick_place_2.y[{}];",
+            n + 1,
+            2 * n
+        )),
         "{text}"
     );
     assert!(text.contains("useMotion=true") && !text.contains("useTable"), "{text}");
     let table = std::fs::read_to_string(tmp.path().join(&pkg).join("Motions/pick_place.mo")).expect("table");
     assert!(table.contains("extends Modelica.Blocks.Sources.CombiTimeTable("), "{table}");
     // 11 rows of 1 + 3n columns: the last row is t = 1, q = 0.1, qd = 0.2, qdd = 0.2.
-    let last = std::iter::once("1".to_string()).chain(std::iter::repeat_n("0.1".to_string(), n)).chain(std::iter::repeat_n("0.2".to_string(), 2 * n));
+    let last = std::iter::once("1".to_string())
+        .chain(std::iter::repeat_n("0.1".to_string(), n))
+        .chain(std::iter::repeat_n("0.2".to_string(), 2 * n));
     assert!(table.contains(&format!("{}]", last.collect::<Vec<_>>().join(", "))), "{table}");
     assert!(text.contains("experiment(StopTime=1.5, Interval=0.005, Tolerance=1e-06)"), "{text}");
     check_with_tools(&tmp.path().join(&pkg));
@@ -757,7 +773,11 @@ fn an_observer_sees_the_stages_and_chooses_drives_from_the_report() {
         fn drives(&mut self, report: &crate::pipeline::report::Report, planned: &[DrivePlan]) -> Vec<DrivePlan> {
             assert!(planned.is_empty());
             self.joints_seen = report.joints.iter().map(|j| j.modelica_name.clone()).collect();
-            let j = report.joints.iter().find(|j| j.elements.iter().any(|e| e.kind == crate::pipeline::ir::PrimitiveKind::Revolute)).expect("a revolute");
+            let j = report
+                .joints
+                .iter()
+                .find(|j| j.elements.iter().any(|e| e.kind == crate::pipeline::ir::PrimitiveKind::Revolute))
+                .expect("a revolute");
             vec![DrivePlan { start: j.elements[0].initial_q, ..plan(&j.modelica_name) }]
         }
     }

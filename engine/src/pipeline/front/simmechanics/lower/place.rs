@@ -60,11 +60,7 @@ enum Visit {
 
 impl Lower<'_, '_> {
     /// Reads a frame reference element; `None` is `WORLD`.
-    pub(super) fn frame_reference(
-        &self,
-        node: NodeId,
-        owner: FrameOwner,
-    ) -> Result<Option<Reference>> {
+    pub(super) fn frame_reference(&self, node: NodeId, owner: FrameOwner) -> Result<Option<Reference>> {
         let value = self.value(node)?;
         match (&*value, owner) {
             ("WORLD", _) => Ok(None),
@@ -86,10 +82,7 @@ impl Lower<'_, '_> {
 
     fn unsupported(&self, node: NodeId, expected: &'static str) -> XmlError {
         let value = self.value(node).map(|v| v.into_owned()).unwrap_or_default();
-        self.err(
-            node,
-            XmlErrorKind::UnsupportedReferenceFrame { value, expected },
-        )
+        self.err(node, XmlErrorKind::UnsupportedReferenceFrame { value, expected })
     }
 
     /// Replaces every frame's pose as given by its world pose. Needs the joints resolved.
@@ -118,10 +111,7 @@ impl Lower<'_, '_> {
             visit[start] = Visit::Open;
             stack.push(FrameId(start as u32));
             while let Some(&f) = stack.last() {
-                let next = targets[f.index()]
-                    .iter()
-                    .flatten()
-                    .find(|t| visit[t.index()] != Visit::Placed);
+                let next = targets[f.index()].iter().flatten().find(|t| visit[t.index()] != Visit::Placed);
                 match next {
                     Some(&t) if visit[t.index()] == Visit::Open => {
                         return Err(self.cycle(&stack, t, &targets, &refs));
@@ -159,15 +149,11 @@ impl Lower<'_, '_> {
 
     /// The world pose of `f` from its pose as given and its (placed) reference frames.
     fn world_pose(&self, f: FrameId, targets: &[Option<FrameId>; 3]) -> Isometry3<f64> {
-        let world =
-            |t: Option<FrameId>| t.map_or_else(Isometry3::identity, |t| self.model.frame(t).pose);
+        let world = |t: Option<FrameId>| t.map_or_else(Isometry3::identity, |t| self.model.frame(t).pose);
         let given = self.model.frame(f).pose;
         let origin = world(targets[ORIGIN]).translation.vector;
         let position = origin + world(targets[AXES]).rotation * given.translation.vector;
-        Isometry3::from_parts(
-            Translation3::from(position),
-            world(targets[ORIENTATION]).rotation * given.rotation,
-        )
+        Isometry3::from_parts(Translation3::from(position), world(targets[ORIENTATION]).rotation * given.rotation)
     }
 
     /// Per frame: how many joints use it and the other frame of the last one.
@@ -184,22 +170,13 @@ impl Lower<'_, '_> {
     }
 
     /// The frame `reference` (read from `node`, a reference of frame `f`) points at.
-    fn target(
-        &self,
-        f: FrameId,
-        reference: &Reference,
-        node: NodeId,
-        joints: &[(usize, Option<FrameId>)],
-    ) -> Result<FrameId> {
+    fn target(&self, f: FrameId, reference: &Reference, node: NodeId, joints: &[(usize, Option<FrameId>)]) -> Result<FrameId> {
         let frame = self.model.frame(f);
         match reference {
             Reference::Adjoining => match joints.get(f.index()) {
                 Some(&(1, Some(other))) => Ok(other),
                 other => {
-                    let kind = XmlErrorKind::AdjoiningNotOneJoint {
-                        frame: frame.name.clone(),
-                        joints: other.map_or(0, |o| o.0),
-                    };
+                    let kind = XmlErrorKind::AdjoiningNotOneJoint { frame: frame.name.clone(), joints: other.map_or(0, |o| o.0) };
                     Err(self.err(node, kind))
                 }
             },
@@ -208,32 +185,20 @@ impl Lower<'_, '_> {
                     FrameOwner::Body(b) => self.model.bodies[b.index()].frames.as_slice(),
                     FrameOwner::Ground(_) => &[],
                 };
-                if let Some(&id) = siblings
-                    .iter()
-                    .find(|&&s| self.model.frame(s).name == *name)
-                {
+                if let Some(&id) = siblings.iter().find(|&&s| self.model.frame(s).name == *name) {
                     return Ok(id);
                 }
                 if !is_frame_name(name) {
                     return Err(self.unsupported(node, BODY_FRAME_REFS));
                 }
-                let kind = XmlErrorKind::UnknownFrameName {
-                    frame: frame.name.clone(),
-                    name: name.clone(),
-                };
+                let kind = XmlErrorKind::UnknownFrameName { frame: frame.name.clone(), name: name.clone() };
                 Err(self.err(node, kind))
             }
         }
     }
 
     /// The error for the cycle closed by `back` (a frame on `stack`, which is a reference path).
-    fn cycle(
-        &self,
-        stack: &[FrameId],
-        back: FrameId,
-        targets: &[[Option<FrameId>; 3]],
-        refs: &[FrameRefs],
-    ) -> XmlError {
+    fn cycle(&self, stack: &[FrameId], back: FrameId, targets: &[[Option<FrameId>; 3]], refs: &[FrameRefs]) -> XmlError {
         let start = stack.iter().position(|&f| f == back).unwrap_or(0);
         let cycle = &stack[start..];
         // The element of `back`'s reference to the next frame on the cycle (always there).
@@ -249,33 +214,20 @@ impl Lower<'_, '_> {
             match frame.owner {
                 o if o == owner => frame.name.clone(),
                 FrameOwner::Body(b) => {
-                    format!(
-                        "{} of body \"{}\"",
-                        frame.name,
-                        self.model.bodies[b.index()].cad_name
-                    )
+                    format!("{} of body \"{}\"", frame.name, self.model.bodies[b.index()].cad_name)
                 }
                 FrameOwner::Ground(g) => {
-                    format!(
-                        "{} of ground \"{}\"",
-                        frame.name,
-                        self.model.grounds[g.index()].name
-                    )
+                    format!("{} of ground \"{}\"", frame.name, self.model.grounds[g.index()].name)
                 }
             }
         };
         let names: Vec<String> = cycle.iter().chain([&back]).map(|&f| label(f)).collect();
-        let kind = XmlErrorKind::FrameCycle {
-            cycle: names.join(" -> "),
-        };
+        let kind = XmlErrorKind::FrameCycle { cycle: names.join(" -> ") };
         self.err(node, kind)
     }
 }
 
 /// `CG` or `CS` and digits: what exports call body frames.
 fn is_frame_name(name: &str) -> bool {
-    name == "CG"
-        || name
-            .strip_prefix("CS")
-            .is_some_and(|n| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()))
+    name == "CG" || name.strip_prefix("CS").is_some_and(|n| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()))
 }
