@@ -48,6 +48,11 @@ pub struct Options {
     pub meshes: bool,
 }
 
+/// Deepest indentation level of the body tree; deeper bodies are written at this one.
+const MAX_INDENT: usize = 32;
+const INDENT: &str = "                                                                ";
+const _: () = assert!(INDENT.len() == 2 * MAX_INDENT);
+
 fn n(x: f64) -> String {
     let x = if x == 0.0 { 0.0 } else { x };
     format!("{x:?}")
@@ -206,10 +211,11 @@ pub fn write(model: &Model, v: &Validated, layout: &Layout, opts: &Options) -> S
         let _ = writeln!(out, "  </asset>");
     }
     let _ = writeln!(out, "  <worldbody>");
-    // Depth-first emission with an explicit stack: (body, depth, closing?).
+    // Depth-first emission with an explicit stack: (body, depth, closing?). Indentation stops
+    // growing at MAX_INDENT levels: a chain of n bodies would otherwise write O(n²) spaces.
     let mut stack: Vec<(usize, usize, bool)> = children[nb].iter().rev().map(|&c| (c, 2, false)).collect();
     while let Some((b, depth, close)) = stack.pop() {
-        let ind = "  ".repeat(depth);
+        let ind = &INDENT[..2 * depth.min(MAX_INDENT)];
         if close {
             let _ = writeln!(out, "{ind}</body>");
             continue;

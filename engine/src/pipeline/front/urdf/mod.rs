@@ -61,6 +61,9 @@ use crate::pipeline::ir::{
 pub const MAX_URDF_BYTES: usize = 64 << 20;
 /// Most XML nodes read.
 const MAX_NODES: u32 = 2_000_000;
+/// At most this many `<link>`s (so a chain at most this deep): every later stage walks the
+/// tree iteratively, but its work and memory grow with the link count.
+pub const MAX_LINKS: usize = 10_000;
 
 /// A fatal problem in a URDF file: where, in which element, and what.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -322,7 +325,12 @@ impl<'d, 'i> Reader<'d, 'i> {
         for n in root.children().filter(|n| n.is_element()) {
             let drake = n.tag_name().namespace() == Some(DRAKE_NS);
             match (n.tag_name().name(), drake) {
-                ("link", false) => links.push(self.link(n, &materials, &mut warnings)?),
+                ("link", false) => {
+                    if links.len() == MAX_LINKS {
+                        return Err(self.err(n, format!("more than {MAX_LINKS} links (the limit on links, and so on a chain's depth)")));
+                    }
+                    links.push(self.link(n, &materials, &mut warnings)?)
+                }
                 ("joint", _) => joints.push(self.joint(n, drake, &mut warnings)?),
                 ("loop_joint", _) => loops.push(n),
                 ("material", false) | ("gazebo", _) | ("transmission", _) | ("sensor", _) => {}

@@ -197,3 +197,53 @@ fn a_leftover_namespaced_element_is_a_warning_and_real_xacro_is_refused() {
         assert!(e.contains("xacro file") && e.contains("t.urdf:1:"), "{e}");
     }
 }
+
+/// A serial chain of `n` links (`l0` the root), revolute joints 0.1 m apart about alternating axes.
+fn chain(n: usize) -> String {
+    use std::fmt::Write as _;
+    let mut u = String::from("<robot name=\"chain\">\n");
+    for i in 0..n {
+        let _ = writeln!(u, "<link name=\"l{i}\">{INERTIAL}</link>");
+    }
+    for i in 1..n {
+        let axis = ["0 0 1", "0 1 0", "1 0 0"][i % 3];
+        let _ = writeln!(
+            u,
+            "<joint name=\"j{i}\" type=\"revolute\"><parent link=\"l{}\"/><child link=\"l{i}\"/><origin xyz=\"0 0 0.1\"/><axis xyz=\"{axis}\"/><limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/></joint>",
+            i - 1
+        );
+    }
+    u.push_str("</robot>\n");
+    u
+}
+
+#[test]
+fn a_chain_past_the_link_limit_is_refused_naming_the_limit() {
+    let e = err(&chain(20_000));
+    assert!(e.contains("more than 10000 links") && e.contains("link \"l10000\""), "{e}");
+}
+
+#[test]
+fn a_chain_just_under_the_link_limit_converts_on_a_default_thread_stack() {
+    let n = MAX_LINKS;
+    let text = chain(n);
+    // The default stack of a spawned thread (2 MiB), as the service's workers have.
+    let out = std::thread::Builder::new()
+        .stack_size(2 << 20)
+        .spawn(move || {
+            let b = crate::pipeline::front::bundle::Bundle::from_files("chain", [("chain.urdf".to_string(), text.into_bytes())])
+                .expect("bundle");
+            // The service's mechanism (forward kinematics along the chain) too.
+            let a = crate::pipeline::analyse(&b, &crate::pipeline::Options::default()).expect("analyses");
+            let m = crate::mechanism::Mechanism::from_validated(&a.model, &a.validated).expect("mechanism");
+            m.forward(&m.q0()).expect("forward kinematics");
+            crate::pipeline::convert(&b, &crate::pipeline::Options::default())
+                .map(|o| o.files.iter().find(|(p, _)| p.ends_with(".mjcf.xml")).map(|(_, bytes)| bytes.len()).expect("an MJCF"))
+        })
+        .expect("thread")
+        .join()
+        .expect("no stack overflow, no panic");
+    // Linear in the links (indentation stops growing): about 500 bytes a body, not O(n²).
+    let mjcf = out.expect("converts");
+    assert!(mjcf < 1_000 * n, "MJCF of {mjcf} bytes for {n} links");
+}

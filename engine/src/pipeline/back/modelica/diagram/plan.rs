@@ -199,8 +199,11 @@ impl Plan {
                 }
             }
         }
+        // Each group at the first free row from `desired` in its column, its children below one
+        // another from its row on; returns the subtree's bottom. Iterative (an explicit stack of
+        // (group, next child, next row, bottom so far)): a chain's depth is not the thread's stack.
         fn place(
-            g: usize,
+            root: usize,
             desired: i32,
             col: &[usize],
             rows: &[i32],
@@ -208,27 +211,42 @@ impl Plan {
             taken: &mut [Vec<(i32, i32)>],
             row: &mut [Option<i32>],
         ) -> i32 {
-            let r = match row[g] {
-                Some(r) => r,
-                None => {
-                    let t = &mut taken[col[g]];
-                    let mut r = desired;
-                    while let Some(&(_, b)) = t.iter().find(|&&(a, b)| r < b && a < r + rows[g]) {
-                        r = b;
+            let mut start = |g: usize, desired: i32| -> i32 {
+                match row[g] {
+                    Some(r) => r,
+                    None => {
+                        let t = &mut taken[col[g]];
+                        let mut r = desired;
+                        while let Some(&(_, b)) = t.iter().find(|&&(a, b)| r < b && a < r + rows[g]) {
+                            r = b;
+                        }
+                        t.push((r, r + rows[g]));
+                        row[g] = Some(r);
+                        r
                     }
-                    t.push((r, r + rows[g]));
-                    row[g] = Some(r);
-                    r
                 }
             };
-            let mut next = r;
-            let mut bottom = r + rows[g];
-            for &(c, _) in &children[g] {
-                let b = place(c, next, col, rows, children, taken, row);
-                next = b;
-                bottom = bottom.max(b);
+            let r = start(root, desired);
+            let mut stack: Vec<(usize, usize, i32, i32)> = vec![(root, 0, r, r + rows[root])];
+            loop {
+                let Some(top) = stack.last_mut() else { return 0 };
+                let (g, k, next) = (top.0, top.1, top.2);
+                if let Some(&(c, _)) = children[g].get(k) {
+                    top.1 += 1;
+                    let r = start(c, next);
+                    stack.push((c, 0, r, r + rows[c]));
+                    continue;
+                }
+                let bottom = top.3;
+                stack.pop();
+                match stack.last_mut() {
+                    Some(parent) => {
+                        parent.2 = bottom;
+                        parent.3 = parent.3.max(bottom);
+                    }
+                    None => return bottom,
+                }
             }
-            bottom
         }
         let mut next = 0;
         for &r in &roots {
