@@ -16,7 +16,17 @@ pub enum UrdfGeometryError {
     Bundle(#[from] BundleError),
     #[error(transparent)]
     Mesh(#[from] MeshError),
+    #[error(
+        "{file}: link \"{link}\" brings the bundle to {total} triangles, over the limit of {max} triangles per bundle \
+         (every link and visual naming a mesh counts its triangles again)"
+    )]
+    TriangleBudget { file: String, link: String, total: usize, max: usize },
 }
+
+/// At most this many triangles in all the bodies' meshes of one bundle, counted after
+/// instancing: a mesh file named by several links or visuals counts once per use (each body
+/// holds its own copy, placed in its link frame), checked before the copy is made.
+pub const MAX_BUNDLE_TRIANGLES: usize = 20_000_000;
 
 /// Finds the bundle file a URDF mesh `filename` names, as seen from the URDF at `urdf_path`:
 /// `package://NAME/rest` is the file whose path ends with `rest` (preferring one under a folder
@@ -91,6 +101,42 @@ pub fn attach_meshes(
 ) -> Result<Vec<Warning>, UrdfGeometryError> {
     let mut warnings = Vec::new();
     let mut cache: HashMap<String, Mesh> = HashMap::new();
+    // Triangles after instancing (the geometry each body will use: its visuals that can be read,
+    // else its collisions), counted before any copy is made.
+    let mut triangles = 0usize;
+    for (b, refs) in urdf.geometry.iter().enumerate() {
+        let mut body_total = 0usize;
+        for collision in [false, true] {
+            if body_total > 0 {
+                break;
+            }
+            for g in refs.iter().filter(|g| g.collision == collision) {
+                let (file, n) = match &g.shape {
+                    Shape::Mesh { filename, .. } => {
+                        let Some(path) = locate(bundle, urdf_path, filename)? else { continue };
+                        if !cache.contains_key(path) {
+                            let read = mesh::read(path, bundle.get(path).unwrap_or_default())?;
+                            cache.insert(path.to_string(), read);
+                        }
+                        (path, cache[path].triangles.len())
+                    }
+                    Shape::Box(size) => (urdf_path, mesh::box_mesh(*size).triangles.len()),
+                    Shape::Cylinder { radius, length } => (urdf_path, mesh::cylinder_mesh(*radius, *length).triangles.len()),
+                    Shape::Sphere(r) => (urdf_path, mesh::sphere_mesh(*r).triangles.len()),
+                };
+                body_total += n;
+                triangles = triangles.saturating_add(n);
+                if triangles > MAX_BUNDLE_TRIANGLES {
+                    return Err(UrdfGeometryError::TriangleBudget {
+                        file: ir::clip(file, 300),
+                        link: ir::clip(&urdf.model.bodies[b].cad_name, 200),
+                        total: triangles,
+                        max: MAX_BUNDLE_TRIANGLES,
+                    });
+                }
+            }
+        }
+    }
     let total = urdf.geometry.iter().filter(|g| !g.is_empty()).count();
     let mut k = 0;
     for (b, refs) in urdf.geometry.iter().enumerate() {

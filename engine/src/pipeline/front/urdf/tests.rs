@@ -247,3 +247,53 @@ fn a_chain_just_under_the_link_limit_converts_on_a_default_thread_stack() {
     let mjcf = out.expect("converts");
     assert!(mjcf < 1_000 * n, "MJCF of {mjcf} bytes for {n} links");
 }
+
+/// A flat square grid of `k` × `k` vertices as OBJ text: 2 (k - 1)² triangles in a few MB.
+fn grid_obj(k: usize) -> Vec<u8> {
+    use std::fmt::Write as _;
+    let mut s = String::new();
+    for i in 0..k {
+        for j in 0..k {
+            let _ = writeln!(s, "v {i} {j} 0");
+        }
+    }
+    for i in 0..k - 1 {
+        for j in 0..k - 1 {
+            let (a, b, c, d) = (i * k + j + 1, i * k + j + 2, (i + 1) * k + j + 1, (i + 1) * k + j + 2);
+            let _ = writeln!(s, "f {a} {b} {d}\nf {a} {d} {c}");
+        }
+    }
+    s.into_bytes()
+}
+
+#[test]
+fn a_mesh_named_by_many_links_counts_every_use_against_the_bundle_budget() {
+    // 199,712 triangles in one 4 MB file, named by 101 links: 20.2 M triangles after instancing.
+    let obj = grid_obj(317);
+    let per = 2 * 316 * 316;
+    let links = 101;
+    assert!(per * (links - 1) <= geometry::MAX_BUNDLE_TRIANGLES && per * links > geometry::MAX_BUNDLE_TRIANGLES);
+    let mut u = String::from("<robot name=\"many\">\n");
+    for i in 0..links {
+        u.push_str(&format!(
+            "<link name=\"l{i}\">{INERTIAL}<visual><geometry><mesh filename=\"package://many/meshes/plate.obj\"/></geometry></visual></link>\n"
+        ));
+    }
+    for i in 1..links {
+        u.push_str(&format!("<joint name=\"j{i}\" type=\"fixed\"><parent link=\"l{}\"/><child link=\"l{i}\"/></joint>\n", i - 1));
+    }
+    u.push_str("</robot>\n");
+    let b = crate::pipeline::front::bundle::Bundle::from_files(
+        "many",
+        [("many/urdf/many.urdf".to_string(), u.into_bytes()), ("many/meshes/plate.obj".to_string(), obj)],
+    )
+    .expect("bundle");
+    let e = crate::pipeline::analyse(&b, &crate::pipeline::Options::default()).err().expect("over the budget").to_string();
+    assert!(
+        e.contains("many/meshes/plate.obj")
+            && e.contains("link \"l100\"")
+            && e.contains("20170912 triangles")
+            && e.contains("limit of 20000000 triangles per bundle"),
+        "{e}"
+    );
+}
