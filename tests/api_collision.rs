@@ -140,3 +140,65 @@ async fn shapes_matrix_interferences_and_motions() {
     json_of(app.get(&format!("/api/models/{id}/motions/nope/collisions")).await, 404).await;
     json_of(app.get("/api/models/nope/collision-matrix").await, 404).await;
 }
+
+/// A generated three-link arm (box visuals, two revolute joints): the base and the fore link are
+/// checked against each other.
+fn box_arm() -> Vec<u8> {
+    let inertial = r#"<inertial><mass value="1"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial>"#;
+    let link = |name: &str, z: f64| {
+        format!(
+            r#"<link name="{name}">{inertial}<visual><origin xyz="0 0 {z}"/><geometry><box size="0.05 0.05 0.2"/></geometry></visual></link>"#
+        )
+    };
+    let joint = |name: &str, parent: &str, child: &str| {
+        format!(
+            r#"<joint name="{name}" type="revolute"><parent link="{parent}"/><child link="{child}"/><origin xyz="0 0 0.2"/><axis xyz="0 1 0"/><limit lower="-3" upper="3" effort="10" velocity="2"/></joint>"#
+        )
+    };
+    let urdf = format!(
+        r#"<robot name="boxarm">{}{}{}{}{}</robot>"#,
+        link("base", 0.1),
+        link("upper", 0.1),
+        link("fore", 0.1),
+        joint("shoulder", "base", "upper"),
+        joint("elbow", "upper", "fore")
+    );
+    cad2mo_engine::pipeline::back::bundle::write_zip(&[("boxarm/boxarm.urdf".into(), urdf.into_bytes())]).expect("zip")
+}
+
+/// A legal motion too long to check is refused before any sampling, naming the limit; a short
+/// one on the same arm is checked.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn motion_checks_have_a_budget() {
+    let app = TestApp::spawn().await;
+    let (id, _, job) = app.upload_model_ok(box_arm(), &[]).await;
+    assert_eq!(app.wait_for_job(&job).await["status"], "succeeded");
+    let check = |seconds: f64| {
+        let app = &app;
+        let id = id.clone();
+        async move {
+            let motion = json!({"name": format!("hold {seconds}"), "keyframes": [
+                {"kind": "joints", "values": {}},
+                {"kind": "joints", "values": {"shoulder": 0.5}, "duration": seconds}]});
+            let r = app.client.post(app.url(&format!("/api/models/{id}/motions"))).json(&motion).send().await.expect("post");
+            let mid = json_of(r, 201).await["id"].as_str().expect("id").to_string();
+            let start = std::time::Instant::now();
+            let r = app.get(&format!("/api/models/{id}/motions/{mid}/collisions")).await;
+            (r, start.elapsed())
+        }
+    };
+    // 700 s at 1 kHz: under the 2 M samples, but 2.1 M body poses (3 bodies).
+    let (r, took) = check(700.0).await;
+    let p = json_of(r, 422).await;
+    let detail = p["detail"].as_str().expect("detail");
+    assert!(detail.contains("700001 samples × 3 bodies") && detail.contains("limit of 2000000 body poses"), "{p:#}");
+    assert_eq!(p["errors"][0]["field"], "motion", "{p:#}");
+    assert!(took < std::time::Duration::from_secs(2), "refused before sampling: {took:?}");
+    // 2,100 s: over the trajectory's 2 M samples.
+    let p = json_of(check(2100.0).await.0, 422).await;
+    assert!(p["detail"].as_str().expect("detail").contains("2100001 samples is more than the limit of 2000000 samples"), "{p:#}");
+    // 2 s: checked (one pair: the base and the fore link).
+    let s = json_of(check(2.0).await.0, 200).await;
+    assert_eq!(s["samples"], 2001, "{s:#}");
+    assert_eq!(s["pairs"].as_array().map(Vec::len), Some(1), "{s:#}");
+}

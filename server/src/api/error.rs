@@ -126,6 +126,9 @@ impl From<CollisionError> for ApiError {
         match e {
             CollisionError::Corrupt(what) => ApiError::Internal(anyhow::anyhow!(what)),
             CollisionError::Motion(m) => m.into(),
+            CollisionError::TooLarge(detail) => {
+                ApiError::Invalid { errors: vec![FieldError { field: "motion".into(), message: detail.clone() }], detail }
+            }
         }
     }
 }
@@ -250,11 +253,12 @@ mod tests {
         let p = ApiError::from(e).problem_json();
         assert_eq!((p["status"].as_u64(), p["type"].as_str()), (Some(422), Some("/problems/invalid")));
         assert!(p["detail"].as_str().is_some_and(|d| d.contains("x.zip")), "{p}");
-        let cases: [(ApiError, u64, &str); 4] = [
+        let cases: [(ApiError, u64, &str); 5] = [
             (MotionError::OutOfRange("rate".into()).into(), 400, "bad-request"),
             (MotionError::CannotPlan { detail: "d".into(), errors: vec![] }.into(), 422, "motion-invalid"),
             (DriveError::InstanceGone { joint: "J".into(), instance: "i".into() }.into(), 409, "conflict"),
             (CollisionError::Corrupt("no CS1".into()).into(), 500, "internal"),
+            (CollisionError::TooLarge("limit".into()).into(), 422, "invalid"),
         ];
         for (api, status, slug) in cases {
             let p = api.problem_json();

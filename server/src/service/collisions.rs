@@ -37,6 +37,9 @@ pub enum CollisionError {
     /// The motion to check cannot be planned.
     #[error(transparent)]
     Motion(#[from] crate::service::motions::MotionError),
+    /// The check would exceed its work or memory budget (the message names the limit).
+    #[error("{0}")]
+    TooLarge(String),
 }
 
 fn internal(what: String) -> CollisionError {
@@ -216,6 +219,13 @@ pub struct MotionCollisions {
 
 /// The rate motions are checked at.
 pub const SWEEP_RATE: f64 = 1000.0;
+/// Most samples one check takes: the trajectory route's cap.
+pub const MAX_SWEEP_SAMPLES: usize = cad2mo_engine::motion::plan::MAX_SAMPLES;
+/// Most body poses one check holds (samples × bodies): with the samples, step bounds and
+/// the sweep's state, about 1.5 GB of peak memory for 5 M poses, so 2 M.
+pub const MAX_SWEEP_POSES: usize = 2_000_000;
+/// Most pair tests one check makes (samples × checked pairs).
+pub const MAX_SWEEP_PAIR_SAMPLES: usize = 20_000_000;
 
 /// Checks a planned motion: body poses from the mechanism's forward kinematics at every sample
 /// (the mechanism's bodies are the package's, in the same order).
@@ -227,27 +237,56 @@ pub fn along_motion(
     name: &str,
     p: &Planned,
 ) -> Result<MotionCollisions, CollisionError> {
-    let s = p.closed_samples(mech, SWEEP_RATE).map_err(|issues| crate::service::motions::invalid(name, issues))?;
     if mech.body_names() != v.bodies.as_slice() {
         return Err(internal("the mechanism's bodies differ from the package's".into()));
     }
-    let n = mech.dof();
+    // The budgets, checked before anything is sampled.
+    let samples = p.sample_count(SWEEP_RATE);
     let bodies = v.bodies.len();
-    let mut poses: Vec<Vec<Isometry3<f64>>> = Vec::with_capacity(s.t.len());
-    let mut q = vec![0.0; n];
-    for i in 0..s.t.len() {
-        for (a, qa) in q.iter_mut().enumerate() {
-            *qa = s.q[a][i];
-        }
-        let k = mech.forward(&q).map_err(|e| internal(e.to_string()))?;
-        let mut row = Vec::with_capacity(bodies);
-        for b in 0..bodies {
-            row.push(mech.body_pose(&k, BodyId(b as u32)).unwrap_or_else(|_| v.cad[b]));
-        }
-        poses.push(row);
+    let with: Vec<usize> = (0..bodies).filter(|&i| v.shapes[i].is_some()).collect();
+    let pairs_checked = with
+        .iter()
+        .enumerate()
+        .flat_map(|(x, &i)| with[x + 1..].iter().map(move |&j| (i, j)))
+        .filter(|&(i, j)| checked(v, edits, i, j))
+        .count();
+    let over = |what: String| {
+        Err(CollisionError::TooLarge(format!(
+            "motion \"{}\" ({:.1} s) is too long to check for collisions at {SWEEP_RATE} Hz: {what}; shorten the motion",
+            cad2mo_engine::pipeline::ir::clip(name, 200),
+            p.duration
+        )))
+    };
+    if samples > MAX_SWEEP_SAMPLES {
+        return over(format!("{samples} samples is more than the limit of {MAX_SWEEP_SAMPLES} samples"));
     }
+    if samples.saturating_mul(bodies) > MAX_SWEEP_POSES {
+        return over(format!("{samples} samples × {bodies} bodies is more than the limit of {MAX_SWEEP_POSES} body poses per check"));
+    }
+    if samples.saturating_mul(pairs_checked) > MAX_SWEEP_PAIR_SAMPLES {
+        return over(format!(
+            "{samples} samples × {pairs_checked} checked pairs is more than the limit of {MAX_SWEEP_PAIR_SAMPLES} pair tests per check"
+        ));
+    }
+    let s = p.closed_samples(mech, SWEEP_RATE).map_err(|issues| crate::service::motions::invalid(name, issues))?;
+    let n = mech.dof();
+    // Poses computed on demand (the sweep asks once per sample), not kept here as well.
+    let failed: std::cell::RefCell<Option<String>> = std::cell::RefCell::new(None);
+    let pose_at = |i: usize| -> Vec<Isometry3<f64>> {
+        let q: Vec<f64> = (0..n).map(|a| s.q[a][i]).collect();
+        match mech.forward(&q) {
+            Ok(k) => (0..bodies).map(|b| mech.body_pose(&k, BodyId(b as u32)).unwrap_or_else(|_| v.cad[b])).collect(),
+            Err(e) => {
+                failed.borrow_mut().get_or_insert_with(|| e.to_string());
+                v.cad.clone()
+            }
+        }
+    };
     let world = collision::World::new(&v.shapes);
-    let sweep = collision::sweep(&world, &s.t, &|k| poses[k].clone(), &|i, j| checked(v, edits, i, j), &SweepOptions::default());
+    let sweep = collision::sweep(&world, &s.t, &pose_at, &|i, j| checked(v, edits, i, j), &SweepOptions::default());
+    if let Some(e) = failed.into_inner() {
+        return Err(internal(e));
+    }
     let mut pairs: Vec<PairSweepView> =
         sweep.pairs.iter().map(|p| PairSweepView { a: v.bodies[p.a].clone(), b: v.bodies[p.b].clone(), sweep: p.clone() }).collect();
     pairs.sort_by(|x, y| x.sweep.min_distance.total_cmp(&y.sweep.min_distance));
