@@ -191,3 +191,35 @@ async fn oversized_result_uploads_are_413() {
     assert!(answer.contains("application/problem+json"), "{answer}");
     assert_eq!(json_of(app.get("/api/results").await, 200).await, serde_json::json!([]), "nothing stored");
 }
+
+/// A result with a non-finite value is refused at upload naming the matrix, row and column (and
+/// nothing is stored); a stored row whose summary no longer reads is left out of the list, which
+/// answers for everyone else.
+#[tokio::test]
+async fn non_finite_results_are_refused_and_one_bad_stored_result_spoils_no_list() {
+    let app = TestApp::spawn().await;
+    let x = |v: Vec<f64>| vec![("x".to_string(), v)];
+    let bad_time = trajectory(&[0.0, 1.0, f64::NAN, 3.0], &x(vec![0.0, 1.0, 2.0, 3.0]), false);
+    let p = json_of(upload(&app, "/api/results", "nan.mat", bad_time).await, 422).await;
+    let detail = p["detail"].as_str().expect("detail");
+    assert!(detail.contains("nan.mat: matrix \"data_2\" row 1, column 3 holds NaN (variable \"time\" at time instant 3)"), "{p:#}");
+    assert_eq!(p["errors"][0]["field"], "file", "{p:#}");
+    let bad_value = trajectory(&[0.0, 1.0, 2.0], &x(vec![0.0, f64::INFINITY, 2.0]), true);
+    let p = json_of(upload(&app, "/api/results", "inf.mat", bad_value).await, 422).await;
+    assert!(p["detail"].as_str().expect("detail").contains("row 2, column 2 holds inf (variable \"x\" at time instant 2)"), "{p:#}");
+    assert_eq!(json_of(app.get("/api/results").await, 200).await, serde_json::json!([]), "nothing stored");
+
+    let good = json_of(upload(&app, "/api/results", "good.mat", trajectory(&[0.0, 1.0], &x(vec![0.0, 1.0]), false)).await, 201).await;
+    // A row stored before these checks, whose summary does not read back (a null start time).
+    let store = cad2mo_server::store::Store::open(app.database_url()).await.expect("store");
+    let poisoned = cad2mo_server::store::results::insert(&store, None, None, "old.mat", 10, &"0".repeat(64), r#"{"start": null}"#)
+        .await
+        .expect("insert");
+    let list = json_of(app.get("/api/results").await, 200).await;
+    let ids: Vec<&str> = list.as_array().expect("list").iter().filter_map(|r| r["id"].as_str()).collect();
+    assert_eq!(ids, [good["id"].as_str().expect("id")], "the bad row is left out, the list answers: {list:#}");
+    // That item alone answers an error, and can be deleted.
+    assert_eq!(app.get(&format!("/api/results/{}", poisoned.id)).await.status().as_u16(), 500);
+    let r = app.client.delete(app.url(&format!("/api/results/{}", poisoned.id))).send().await.expect("delete");
+    assert_eq!(r.status().as_u16(), 204);
+}

@@ -35,6 +35,8 @@ pub enum MatError {
     Truncated { file: String, matrix: String, offset: usize, needed: usize, left: usize },
     #[error("{file}: variable \"{name}\": {what}")]
     BadVariable { file: String, name: String, what: String },
+    #[error("{file}: matrix \"{matrix}\" row {row}, column {column} holds {value} ({what}); results must be finite")]
+    NonFinite { file: String, matrix: String, row: usize, column: usize, value: String, what: String },
 }
 
 /// Element type of a matrix.
@@ -437,6 +439,41 @@ impl<'a> Trajectory<'a> {
         } else {
             x
         }
+    }
+
+    /// The first non-finite value of the data matrices (`data_1`, then `data_2`; rows and
+    /// columns counted from 1 as stored), naming the variable and time instant it belongs to.
+    pub fn check_finite(&self, file: &str) -> Result<(), MatError> {
+        let blocks = [(self.data_1.as_ref(), true), (Some(&self.data_2), false)];
+        for (m, constant) in blocks.into_iter().filter_map(|(m, c)| m.map(|m| (m, c))) {
+            if !matches!(m.elem, Elem::F64 | Elem::F32) {
+                continue;
+            }
+            for c in 0..m.cols {
+                for r in 0..m.rows {
+                    let x = m.get(self.bytes, r, c);
+                    if x.is_finite() {
+                        continue;
+                    }
+                    let (var, instant) = if self.transposed { (r, c) } else { (c, r) };
+                    let name = self
+                        .variables
+                        .iter()
+                        .find(|v| if constant { v.source == Source::Constant(var) } else { v.source == Source::Series(var) })
+                        .map_or_else(|| "no variable".to_string(), |v| format!("variable \"{}\"", crate::pipeline::ir::clip(&v.name, 200)));
+                    let what = if constant { name } else { format!("{name} at time instant {}", instant + 1) };
+                    return Err(MatError::NonFinite {
+                        file: file.into(),
+                        matrix: m.name.clone(),
+                        row: r + 1,
+                        column: c + 1,
+                        value: format!("{x}"),
+                        what,
+                    });
+                }
+            }
+        }
+        Ok(())
     }
 
     /// The whole series of variable `v`.

@@ -129,21 +129,37 @@ async fn store_upload(
     let (name, bytes) = (up.name.clone(), up.bytes.clone());
     let summary = blocking(move || {
         let t = Trajectory::read(&bytes, &name).map_err(|e| unreadable(&name, e.to_string()))?;
+        t.check_finite(&name).map_err(|e| unreadable(&name, e.to_string()))?;
         summarise(&t, &name)
     })
     .await?;
     let (blobs, bytes) = (state.blobs.clone(), up.bytes.clone());
     let sha = blocking(move || blobs.put(&bytes).map_err(|e| ApiError::Internal(e.into()))).await?;
     let summary_json = serde_json::to_string(&summary).map_err(|e| ApiError::Internal(e.into()))?;
+    // Stored only when it reads back (a summary that cannot be served is never stored).
+    serde_json::from_str::<results::Summary>(&summary_json)
+        .map_err(|e| ApiError::Internal(anyhow::anyhow!("summary of {}: {e}", up.name)))?;
     let (model_id, version) = (owner.map(|o| o.0), owner.map(|o| o.1));
     let row = store::results::insert(&state.store, model_id, version, &up.name, up.bytes.len() as i64, &sha, &summary_json).await?;
     let location = format!("/api/results/{}", row.id);
     Ok((StatusCode::CREATED, [(header::LOCATION, location)], Json(dto(row)?)))
 }
 
+/// The rows that can be served: one stored before its summary was checked and that no longer
+/// reads is left out of the list (logged with its id; it answers alone at its own URL and can
+/// be deleted), never failing the list for everyone.
+fn servable(rows: Vec<store::results::ResultRow>) -> Vec<ResultDto> {
+    rows.into_iter()
+        .filter_map(|r| {
+            let id = r.id.clone();
+            dto(r).map_err(|e| tracing::warn!(result = %id, error = %e, "a stored result cannot be listed")).ok()
+        })
+        .collect()
+}
+
 async fn list_standalone(State(state): State<AppState>) -> Result<Json<Vec<ResultDto>>, ApiError> {
     let rows = store::results::list_standalone(&state.store).await?;
-    Ok(Json(rows.into_iter().map(dto).collect::<Result<_, _>>()?))
+    Ok(Json(servable(rows)))
 }
 
 async fn list(State(state): State<AppState>, Path((model_id, version)): Path<(String, i64)>) -> Result<Json<Vec<ResultDto>>, ApiError> {
@@ -152,7 +168,7 @@ async fn list(State(state): State<AppState>, Path((model_id, version)): Path<(St
         return Err(ApiError::NotFound(format!("version {version} of model {model_id}")));
     }
     let rows = store::results::list(&state.store, &model_id, version).await?;
-    Ok(Json(rows.into_iter().map(dto).collect::<Result<_, _>>()?))
+    Ok(Json(servable(rows)))
 }
 
 async fn find(state: &AppState, id: &str) -> Result<store::results::ResultRow, ApiError> {
