@@ -106,6 +106,27 @@ async fn limits_motions_trajectories_and_ik() {
     let r =
         app.client.post(app.url(&format!("{base}/ik"))).json(&json!({"frame": "NOPE", "position": [0, 0, 0]})).send().await.expect("ik");
     assert_eq!(json_of(r, 422).await["errors"][0]["field"], "frame");
+    // A target beyond any reach: a 422 naming the bound, never `position_error: null`.
+    let r = app
+        .client
+        .post(app.url(&format!("{base}/ik")))
+        .json(&json!({"frame": "TOOL", "position": [1e308, 0, 0]}))
+        .send()
+        .await
+        .expect("ik");
+    let p = json_of(r, 422).await;
+    assert_eq!(p["errors"][0]["field"], "position", "{p:#}");
+    assert!(p["errors"][0]["message"].as_str().expect("message").contains("within ±1000000 m"), "{p:#}");
+    let r =
+        app.client.post(app.url(&format!("{base}/ik"))).json(&json!({"frame": "TOOL", "position": [1e6, 0, 0]})).send().await.expect("ik");
+    let v = json_of(r, 200).await;
+    assert!(v["success"] == false && v["position_error"].as_f64().is_some_and(|e| e > 9e5), "{v:#}");
+    // 100,000 keyframes (3 MB of JSON): too large, 413 naming the limit, not a 400.
+    let many: Vec<Value> = (0..100_000).map(|_| json!({"kind": "joints", "values": {}})).collect();
+    let r =
+        app.client.post(app.url(&format!("{base}/motions"))).json(&json!({"name": "many", "keyframes": many})).send().await.expect("post");
+    let p = json_of(r, 413).await;
+    assert!(p["detail"].as_str().expect("detail").contains("limit of 2097152 bytes"), "{p:#}");
 
     // Problems: unreachable target, form errors.
     let far = json!({"name": "far", "keyframes": [{"kind": "joints", "values": {}}, {"kind": "tool", "frame": "TOOL", "position": [40.0, 0, 0]}]});

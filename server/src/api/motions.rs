@@ -109,9 +109,18 @@ async fn joints(State(state): State<AppState>, Path(model_id): Path<String>) -> 
     Ok(Json(motions::joints_view(&k, version, &edits)))
 }
 
+/// axum's default limit on a JSON body (2 MiB), which these routes keep.
+const JSON_BODY_LIMIT: u64 = 2 << 20;
+
 /// A JSON object body as `T` (serde would also take an array for a struct: refused here).
 fn body<T: serde::de::DeserializeOwned>(what: &str, b: Result<Json<serde_json::Value>, JsonRejection>) -> Result<T, ApiError> {
-    let v = b.map(|Json(v)| v).map_err(|e| ApiError::BadRequest(format!("invalid {what}: {}", e.body_text())))?;
+    let v = b.map(|Json(v)| v).map_err(|e| {
+        if e.status() == axum::http::StatusCode::PAYLOAD_TOO_LARGE {
+            ApiError::PayloadTooLarge { limit: JSON_BODY_LIMIT }
+        } else {
+            ApiError::BadRequest(format!("invalid {what}: {}", e.body_text()))
+        }
+    })?;
     if !v.is_object() {
         return Err(ApiError::BadRequest(format!("invalid {what}: expected a JSON object")));
     }
@@ -291,6 +300,10 @@ struct IkBody {
     seed: BTreeMap<String, f64>,
 }
 
+/// The farthest IK target from the world origin on any axis, m: the errors of a solution stay
+/// finite numbers (the schema's `position_error` is a number, never null).
+const MAX_IK_POSITION: f64 = 1e6;
+
 #[derive(Serialize)]
 struct IkDto {
     success: bool,
@@ -311,8 +324,8 @@ async fn ik(
     let out = blocking(move || {
         let axes = plan::axes(&k.mech, &edits);
         let mut issues = Vec::new();
-        if b.position.iter().any(|v| !v.is_finite()) {
-            issues.push(cad2mo_engine::library::Issue::new("position", "must be 3 finite numbers (m)"));
+        if b.position.iter().any(|v| !(v.is_finite() && v.abs() <= MAX_IK_POSITION)) {
+            issues.push(cad2mo_engine::library::Issue::new("position", format!("must be 3 finite numbers within ±{MAX_IK_POSITION} m")));
         }
         let target = plan::ik_target(&b.position, &b.rotation);
         if target.is_none() {
@@ -335,6 +348,12 @@ async fn ik(
         let (q, r, success) = plan::solve_tool(&k.mech, &axes, &b.frame, &target, &seed).map_err(|e| {
             issues_invalid("the inverse kinematics request is not valid".into(), vec![cad2mo_engine::library::Issue::new("frame", e)])
         })?;
+        if !(r.position_error.is_finite() && r.rotation_error.is_finite()) {
+            return Err(issues_invalid(
+                "the inverse kinematics request is not valid".into(),
+                vec![cad2mo_engine::library::Issue::new("position", "the solution's error is not finite (the target is out of any reach)")],
+            ));
+        }
         Ok(IkDto {
             success,
             q: axes.iter().zip(q).map(|(a, v)| (a.name.clone(), v)).collect(),
