@@ -270,7 +270,11 @@ impl JerkLimited {
         }
         input.minimum_duration = min_duration;
         let mut trajectory = Trajectory::<0>::new(Some(n));
-        otg.calculate(&input, &mut trajectory).map_err(|e| ProfileError::Ruckig(e.to_string()))?;
+        otg.calculate(&input, &mut trajectory).map_err(|e| {
+            // Its first line: the rest is the planner's input dump (kilobytes of internal state).
+            let m = e.to_string();
+            ProfileError::Ruckig(crate::pipeline::ir::clip(m.lines().next().unwrap_or_default(), 300))
+        })?;
         let duration = trajectory.get_duration();
         let step = 1e-3;
         let count = (duration / step).ceil() as usize;

@@ -208,12 +208,37 @@ impl ApiError {
             title,
             status: status.as_u16(),
             // Bounded whatever the input: a problem document never carries megabytes.
-            detail: cad2mo_engine::pipeline::ir::clip(&self.to_string(), cad2mo_engine::pipeline::MAX_MESSAGE_BYTES),
-            errors: errors.into_iter().take(MAX_LISTED).collect(),
+            detail: cad2mo_engine::pipeline::ir::clip(&compact_numbers(&self.to_string()), cad2mo_engine::pipeline::MAX_MESSAGE_BYTES),
+            errors: errors.into_iter().take(MAX_LISTED).map(|e| FieldError { message: compact_numbers(&e.message), ..e }).collect(),
             diagnostics: diagnostics.into_iter().take(MAX_LISTED).collect(),
         };
         serde_json::to_value(p).unwrap_or_default()
     }
+}
+
+/// Numbers written out in more than 24 characters (Rust prints `1e308` as 309 digits) in
+/// scientific notation: a problem echoes a user's number without its every digit.
+fn compact_numbers(text: &str) -> String {
+    const LONGEST: usize = 24;
+    let mut out = String::with_capacity(text.len().min(4096));
+    let mut run = String::new();
+    let flush = |run: &mut String, out: &mut String| {
+        match run.parse::<f64>() {
+            Ok(x) if run.len() > LONGEST => out.push_str(&format!("{x:e}")),
+            _ => out.push_str(run),
+        }
+        run.clear();
+    };
+    for ch in text.chars() {
+        if ch.is_ascii_digit() || (ch == '.' && !run.is_empty()) {
+            run.push(ch);
+        } else {
+            flush(&mut run, &mut out);
+            out.push(ch);
+        }
+    }
+    flush(&mut run, &mut out);
+    out
 }
 
 impl IntoResponse for ApiError {
@@ -245,6 +270,15 @@ pub async fn blocking<T: Send + 'static>(f: impl FnOnce() -> Result<T, ApiError>
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn huge_numbers_are_compacted_in_problems() {
+        let rate = 1e308;
+        let p = ApiError::BadRequest(format!("rate must be between 1 and 10000 Hz (is {rate}). 0.5 stays")).problem_json();
+        assert_eq!(p["detail"], "rate must be between 1 and 10000 Hz (is 1e308). 0.5 stays", "{p}");
+        let tiny = 1e-30;
+        assert_eq!(compact_numbers(&format!("{tiny} and 12345")), "1e-30 and 12345");
+    }
 
     /// Each use case's error becomes the problem the API promises (status and type).
     #[test]
