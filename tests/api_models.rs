@@ -612,3 +612,28 @@ async fn a_job_that_keeps_stopping_the_service_is_failed() {
         dir = app.stop().await;
     }
 }
+
+/// A deep URDF chain (20,000 links, a few hundred KB) is refused at upload with the link limit
+/// named; nothing is stored and the service answers on.
+#[tokio::test]
+async fn a_urdf_chain_over_the_link_limit_is_refused_at_upload() {
+    use std::fmt::Write as _;
+    let app = TestApp::spawn().await;
+    let mut u = String::from("<robot name=\"deep\">");
+    for i in 0..20_000 {
+        let _ = write!(u, "<link name=\"l{i}\"/>");
+    }
+    for i in 1..20_000 {
+        let _ = write!(
+            u,
+            "<joint name=\"j{i}\" type=\"revolute\"><parent link=\"l{}\"/><child link=\"l{i}\"/><axis xyz=\"0 0 1\"/></joint>",
+            i - 1
+        );
+    }
+    u.push_str("</robot>");
+    let bundle = write_zip(&[("deep/deep.urdf".into(), u.into_bytes())]).expect("zip");
+    let p = problem(app.upload_model(bundle, "deep.zip", &[]).await, 422).await;
+    assert!(p["detail"].as_str().expect("detail").contains("more than 10000 links"), "{p}");
+    assert_eq!(json(app.get("/api/models").await, 200).await, serde_json::json!([]));
+    assert_eq!(app.get("/api/health").await.status().as_u16(), 200);
+}
