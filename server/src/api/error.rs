@@ -15,6 +15,7 @@ use crate::jobs::JobError;
 use crate::service::collisions::CollisionError;
 use crate::service::drives::DriveError;
 use crate::service::export::ExportError;
+use crate::service::models::ModelError;
 use crate::service::motions::MotionError;
 pub use crate::service::FieldError;
 
@@ -91,6 +92,19 @@ impl From<ExportError> for ApiError {
             },
             ExportError::Convert(c) => ApiError::Conversion(c),
             ExportError::Zip(io) => ApiError::Internal(anyhow::Error::new(io).context("writing the package zip")),
+        }
+    }
+}
+
+impl From<ModelError> for ApiError {
+    fn from(e: ModelError) -> Self {
+        match e {
+            ModelError::NotFound(what) => ApiError::NotFound(what),
+            ModelError::Busy { retry_after } => ApiError::Busy { retry_after },
+            ModelError::Conflict(why) => ApiError::Conflict(why),
+            ModelError::Export(x) => x.into(),
+            ModelError::Store(s) => s.into(),
+            ModelError::Internal(e) => ApiError::Internal(e),
         }
     }
 }

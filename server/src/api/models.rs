@@ -40,8 +40,9 @@ use serde_json::Value;
 use super::error::{blocking, FieldError};
 use super::ApiError;
 use crate::app::AppState;
-use crate::service::export::{self, ExportOptions, Summary};
-use crate::store::models::{self as db, Created, ModelRow, NewVersion, VersionRow};
+use crate::service::export::{ExportOptions, Summary};
+use crate::service::models::{self, Output};
+use crate::store::models::{self as db, Created, ModelRow, VersionRow};
 
 pub fn router() -> Router<AppState> {
     Router::new()
@@ -216,9 +217,6 @@ fn version_ids(path: Result<Path<(String, String)>, PathRejection>) -> Result<(S
     }
 }
 
-/// `Retry-After` of a 503 when every upload check is busy.
-const RETRY_AFTER_SECS: u64 = 3;
-
 /// A parsed upload.
 struct Upload {
     bundle: Bytes,
@@ -345,48 +343,24 @@ pub(super) fn safe_file_name(raw: &str) -> String {
 // ---------------------------------------------------------------------------------------------
 // Uploads
 
-/// Checks the bundle (off the runtime) and stores its blob. Returns the stored version's fields
-/// and the model name the XML gives.
-///
-/// At most `settings.max_checks` checks run at once (a check holds the bundle analysed in memory,
-/// many times its size): an upload waits up to `settings.check_wait` for a permit, then is a 503
-/// with `Retry-After`. The permit moves into the blocking task, so a client that hangs up does not
-/// free it before its check has really finished.
-async fn accept_upload(state: &AppState, upload: Upload) -> Result<(Upload, String, String), ApiError> {
-    let permit = match tokio::time::timeout(state.settings.check_wait, state.checks.clone().acquire_owned()).await {
-        Ok(Ok(permit)) => permit,
-        Ok(Err(_)) | Err(_) => {
-            tracing::warn!(max_checks = state.settings.max_checks, "upload refused: every check is busy");
-            return Err(ApiError::Busy { retry_after: RETRY_AFTER_SECS });
-        }
-    };
-    let blobs = state.blobs.clone();
-    blocking(move || {
-        let _permit = permit;
-        let checked = export::check_bundle(&upload.bundle, &upload.bundle_name, &upload.options)?;
-        let sha = blobs.put(&upload.bundle).map_err(|e| ApiError::Internal(anyhow::Error::new(e).context("storing the bundle")))?;
-        Ok((upload, sha, checked.model_name))
-    })
-    .await
+/// The upload use cases' view of the service.
+fn ctx(state: &AppState) -> models::Ctx<'_> {
+    models::Ctx {
+        store: &state.store,
+        blobs: &state.blobs,
+        jobs: &state.jobs,
+        checks: models::Checks { permits: &state.checks, wait: state.settings.check_wait },
+    }
 }
 
-fn options_json(o: &ExportOptions) -> Result<String, ApiError> {
-    serde_json::to_string(o).map_err(|e| ApiError::Internal(e.into()))
+impl From<Upload> for models::Upload {
+    fn from(u: Upload) -> Self {
+        models::Upload { bundle: u.bundle.to_vec(), bundle_name: u.bundle_name, name: u.name, options: u.options }
+    }
 }
 
 async fn create_model(State(state): State<AppState>, upload: Upload) -> Result<Response, ApiError> {
-    let (upload, sha, model_name) = accept_upload(&state, upload).await?;
-    let name = upload.name.clone().unwrap_or(model_name);
-    let options = options_json(&upload.options)?;
-    let nv = NewVersion {
-        bundle_name: &upload.bundle_name,
-        bundle_sha256: &sha,
-        bundle_size: i64::try_from(upload.bundle.len()).unwrap_or(i64::MAX),
-        options_json: &options,
-    };
-    let created = db::create_model(&state.store.pool, &name, &nv).await?;
-    state.jobs.notify();
-    Ok(accepted(created))
+    Ok(accepted(models::create_model(ctx(&state), upload.into()).await?))
 }
 
 async fn create_version(
@@ -395,21 +369,7 @@ async fn create_version(
     upload: Upload,
 ) -> Result<Response, ApiError> {
     let id = model_id(path)?;
-    // Refuse early (before analysing) when the model is unknown; the insert checks again.
-    if db::get_model(&state.store.pool, &id).await?.is_none() {
-        return Err(ApiError::NotFound(format!("model {id}")));
-    }
-    let (upload, sha, _) = accept_upload(&state, upload).await?;
-    let options = options_json(&upload.options)?;
-    let nv = NewVersion {
-        bundle_name: &upload.bundle_name,
-        bundle_sha256: &sha,
-        bundle_size: i64::try_from(upload.bundle.len()).unwrap_or(i64::MAX),
-        options_json: &options,
-    };
-    let created = db::create_version(&state.store.pool, &id, &nv).await?.ok_or_else(|| ApiError::NotFound(format!("model {id}")))?;
-    state.jobs.notify();
-    Ok(accepted(created))
+    Ok(accepted(models::create_version(ctx(&state), &id, upload.into()).await?))
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -421,19 +381,15 @@ async fn list_models(State(state): State<AppState>) -> Result<Json<Vec<ModelView
 
 async fn get_model(State(state): State<AppState>, path: Result<Path<String>, PathRejection>) -> Result<Json<ModelDetail>, ApiError> {
     let id = model_id(path)?;
-    let model = db::get_model(&state.store.pool, &id).await?.ok_or_else(|| ApiError::NotFound(format!("model {id}")))?;
-    let versions = db::list_versions(&state.store.pool, &id).await?.into_iter().map(version_view).collect::<Result<_, _>>()?;
+    let model = models::model(&state.store, &id).await?;
+    let versions = models::versions(&state.store, &id).await?.into_iter().map(version_view).collect::<Result<_, _>>()?;
     Ok(Json(ModelDetail { model: model.into(), versions }))
 }
 
 async fn delete_model(State(state): State<AppState>, path: Result<Path<String>, PathRejection>) -> Result<StatusCode, ApiError> {
     let id = model_id(path)?;
-    if db::delete_model(&state.store.pool, &id).await? {
-        tracing::info!(model_id = %id, "model deleted");
-        Ok(StatusCode::NO_CONTENT)
-    } else {
-        Err(ApiError::NotFound(format!("model {id}")))
-    }
+    models::delete_model(&state.store, &id).await?;
+    Ok(StatusCode::NO_CONTENT)
 }
 
 async fn list_versions(
@@ -441,15 +397,9 @@ async fn list_versions(
     path: Result<Path<String>, PathRejection>,
 ) -> Result<Json<Vec<VersionView>>, ApiError> {
     let id = model_id(path)?;
-    if db::get_model(&state.store.pool, &id).await?.is_none() {
-        return Err(ApiError::NotFound(format!("model {id}")));
-    }
-    let versions = db::list_versions(&state.store.pool, &id).await?.into_iter().map(version_view).collect::<Result<_, _>>()?;
+    models::model(&state.store, &id).await?;
+    let versions = models::versions(&state.store, &id).await?.into_iter().map(version_view).collect::<Result<_, _>>()?;
     Ok(Json(versions))
-}
-
-async fn find_version(state: &AppState, id: &str, v: i64) -> Result<VersionRow, ApiError> {
-    db::get_version(&state.store.pool, id, v).await?.ok_or_else(|| ApiError::NotFound(format!("version {v} of model {id}")))
 }
 
 async fn get_version(
@@ -457,7 +407,7 @@ async fn get_version(
     path: Result<Path<(String, String)>, PathRejection>,
 ) -> Result<Json<VersionView>, ApiError> {
     let (id, v) = version_ids(path)?;
-    Ok(Json(version_view(find_version(&state, &id, v).await?)?))
+    Ok(Json(version_view(models::version(&state.store, &id, v).await?)?))
 }
 
 async fn delete_version(
@@ -465,12 +415,8 @@ async fn delete_version(
     path: Result<Path<(String, String)>, PathRejection>,
 ) -> Result<StatusCode, ApiError> {
     let (id, v) = version_ids(path)?;
-    if db::delete_version(&state.store.pool, &id, v).await? {
-        tracing::info!(model_id = %id, version = v, "version deleted");
-        Ok(StatusCode::NO_CONTENT)
-    } else {
-        Err(ApiError::NotFound(format!("version {v} of model {id}")))
-    }
+    models::delete_version(&state.store, &id, v).await?;
+    Ok(StatusCode::NO_CONTENT)
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -488,49 +434,27 @@ fn not_converted(v: &VersionRow) -> Response {
         .into_response()
 }
 
-async fn read_blob(state: &AppState, hash: String) -> Result<Vec<u8>, ApiError> {
-    let blobs = state.blobs.clone();
-    blocking(move || {
-        blobs
-            .get(&hash)
-            .map_err(|e| ApiError::Internal(e.into()))?
-            .ok_or_else(|| ApiError::Internal(anyhow::anyhow!("blob {hash} is missing from the file store")))
-    })
-    .await
-}
-
-/// The version's outputs once converted: (package hash, report hash).
-fn outputs(v: &VersionRow) -> Option<(String, String)> {
-    match (v.status.as_str(), &v.package_sha256, &v.report_sha256) {
-        ("succeeded", Some(p), Some(r)) => Some((p.clone(), r.clone())),
-        _ => None,
-    }
-}
-
 async fn package(State(state): State<AppState>, path: Result<Path<(String, String)>, PathRejection>) -> Result<Response, ApiError> {
     let (id, v) = version_ids(path)?;
-    let (bytes, stem, package) = match stored_package(&state, &id, v).await? {
+    let p = match stored_package(&state, &id, v).await? {
         Ok(found) => found,
         Err(not_yet) => return Ok(not_yet),
     };
-    Ok(file(bytes, "application/zip", Some(&format!("{stem}-v{v}.zip")), &package))
+    Ok(file(p.bytes, "application/zip", Some(&format!("{}-v{v}.zip", p.stem)), &p.sha256))
 }
 
-/// A version's stored package: its bytes, the package name (file stem) and its blob reference;
-/// `Err` with the response for a version that has none (yet).
-async fn stored_package(state: &AppState, id: &str, v: i64) -> Result<Result<(Vec<u8>, String, String), Response>, ApiError> {
-    let row = find_version(state, id, v).await?;
-    let Some((package, _)) = outputs(&row) else { return Ok(Err(not_converted(&row))) };
-    let bytes = read_blob(state, package.clone()).await?;
-    let summary: Option<Summary> = row.summary_json.as_deref().and_then(|s| serde_json::from_str(s).ok());
-    let stem = summary.map_or_else(|| "package".to_string(), |s| s.package_name);
-    Ok(Ok((bytes, stem, package)))
+/// A version's stored package; `Err` with the response for a version that has none (yet).
+async fn stored_package(state: &AppState, id: &str, v: i64) -> Result<Result<models::Package, Response>, ApiError> {
+    Ok(match models::package(&state.store, &state.blobs, id, v).await? {
+        Output::Ready(p) => Ok(p),
+        Output::NotConverted(row) => Err(not_converted(&row)),
+    })
 }
 
 /// The URDF inside the version's package (`<Pkg>/<Pkg>.urdf`, written by `back::urdf`).
 async fn robot_urdf(State(state): State<AppState>, path: Result<Path<(String, String)>, PathRejection>) -> Result<Response, ApiError> {
     let (id, v) = version_ids(path)?;
-    let (bytes, stem, package) = match stored_package(&state, &id, v).await? {
+    let models::Package { bytes, stem, sha256: package } = match stored_package(&state, &id, v).await? {
         Ok(found) => found,
         Err(not_yet) => return Ok(not_yet),
     };
@@ -563,7 +487,7 @@ async fn diagram_svg(
         Some("Mechatronics") => "Mechatronics",
         Some(other) => return Err(ApiError::BadRequest(format!("model must be Mechanics or Mechatronics, not \"{other}\""))),
     };
-    let (bytes, stem, package) = match stored_package(&state, &id, v).await? {
+    let models::Package { bytes, stem, sha256: package } = match stored_package(&state, &id, v).await? {
         Ok(found) => found,
         Err(not_yet) => return Ok(not_yet),
     };
@@ -601,16 +525,15 @@ fn zip_entry(zip_bytes: &[u8], wanted: &str) -> Result<Option<Vec<u8>>, ApiError
 
 async fn report(State(state): State<AppState>, path: Result<Path<(String, String)>, PathRejection>) -> Result<Response, ApiError> {
     let (id, v) = version_ids(path)?;
-    let row = find_version(&state, &id, v).await?;
-    let Some((_, report)) = outputs(&row) else { return Ok(not_converted(&row)) };
-    let bytes = read_blob(&state, report.clone()).await?;
-    Ok(file(bytes, "application/json", None, &report))
+    match models::report(&state.store, &state.blobs, &id, v).await? {
+        Output::Ready((bytes, report)) => Ok(file(bytes, "application/json", None, &report)),
+        Output::NotConverted(row) => Ok(not_converted(&row)),
+    }
 }
 
 async fn bundle(State(state): State<AppState>, path: Result<Path<(String, String)>, PathRejection>) -> Result<Response, ApiError> {
     let (id, v) = version_ids(path)?;
-    let row = find_version(&state, &id, v).await?;
-    let bytes = read_blob(&state, row.bundle_sha256.clone()).await?;
+    let (bytes, row) = models::bundle(&state.store, &state.blobs, &id, v).await?;
     Ok(file(bytes, "application/zip", Some(&row.bundle_name), &row.bundle_sha256))
 }
 
@@ -632,16 +555,6 @@ struct DiffView {
     diff: cad2mo_engine::diff::Diff,
 }
 
-/// The parsed report of a converted version; 409 when it has none.
-async fn converted_report(state: &AppState, id: &str, v: i64) -> Result<Value, ApiError> {
-    let row = find_version(state, id, v).await?;
-    let Some((_, report)) = outputs(&row) else {
-        return Err(ApiError::Conflict(format!("version {v} of model {id} has no report to compare (status {})", row.status)));
-    };
-    let bytes = read_blob(state, report).await?;
-    serde_json::from_slice(&bytes).map_err(|e| ApiError::Internal(anyhow::anyhow!("stored report is corrupt: {e}")))
-}
-
 async fn diff(
     State(state): State<AppState>,
     path: Result<Path<String>, PathRejection>,
@@ -650,12 +563,7 @@ async fn diff(
     let id = model_id(path)?;
     let Query(q) =
         query.map_err(|e| ApiError::BadRequest(format!("expected ?from=<version>&to=<version> (numbers): {}", e.body_text())))?;
-    if db::get_model(&state.store.pool, &id).await?.is_none() {
-        return Err(ApiError::NotFound(format!("model {id}")));
-    }
-    let old = converted_report(&state, &id, q.from).await?;
-    let new = converted_report(&state, &id, q.to).await?;
-    let diff = blocking(move || Ok(cad2mo_engine::diff::diff(&old, &new))).await?;
+    let diff = models::diff(&state.store, &state.blobs, &id, q.from, q.to).await?;
     Ok(Json(DiffView { model_id: id, from: q.from, to: q.to, diff }))
 }
 

@@ -2,6 +2,8 @@
 //! computation (`cad2mo_engine`). Each returns its own error type; none knows HTTP (the
 //! mapping to problem+json is `api::error`'s) and none writes SQL (that is `store`'s).
 //!
+//! - [`models`]: models and versions: uploads checked and stored, conversions queued, stored
+//!   outputs, diffs.
 //! - [`export`]: a version's package from its stored bundle (check, convert, zip).
 //! - [`drives`]: which motor, gear and controller drive which joint, resolved for the package.
 //! - [`motions`]: motions on a version (joints, planning, trajectories, sizing).
@@ -13,6 +15,7 @@ use serde::Serialize;
 pub mod collisions;
 pub mod drives;
 pub mod export;
+pub mod models;
 pub mod motions;
 
 /// A field-level validation message: which input field (dotted path) and what is wrong with it.
