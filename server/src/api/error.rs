@@ -17,6 +17,7 @@ use crate::service::drives::DriveError;
 use crate::service::export::ExportError;
 use crate::service::models::ModelError;
 use crate::service::motions::MotionError;
+use crate::service::results::ResultError;
 pub use crate::service::FieldError;
 
 #[derive(Debug, thiserror::Error)]
@@ -105,6 +106,20 @@ impl From<ModelError> for ApiError {
             ModelError::Export(x) => x.into(),
             ModelError::Store(s) => s.into(),
             ModelError::Internal(e) => ApiError::Internal(e),
+        }
+    }
+}
+
+impl From<ResultError> for ApiError {
+    fn from(e: ResultError) -> Self {
+        match e {
+            ResultError::Unreadable { name, message } => ApiError::Invalid {
+                errors: vec![FieldError { field: "file".into(), message: format!("{name}: {message}") }],
+                detail: message,
+            },
+            ResultError::NotFound(what) => ApiError::NotFound(what),
+            ResultError::Store(s) => s.into(),
+            ResultError::Internal(e) => ApiError::Internal(e),
         }
     }
 }

@@ -15,11 +15,11 @@ use axum::routing::get;
 use axum::{Json, Router};
 use serde::{Deserialize, Serialize};
 
-use super::error::{blocking, FieldError};
 use super::extract::{Path, Query};
 use super::models::{invalid, multipart_error, multipart_upload, safe_file_name};
 use super::ApiError;
 use crate::app::AppState;
+use crate::service::{self, results::ResultError, results::Stored};
 use crate::store;
 use cad2mo_engine::results::{self, mat::Trajectory};
 
@@ -48,10 +48,10 @@ struct ResultDto {
     summary: results::Summary,
 }
 
-fn dto(r: store::results::ResultRow) -> Result<ResultDto, ApiError> {
-    let summary: results::Summary =
-        serde_json::from_str(&r.summary_json).map_err(|e| ApiError::Internal(anyhow::anyhow!("summary of result {}: {e}", r.id)))?;
-    Ok(ResultDto { id: r.id, model_id: r.model_id, version: r.version, name: r.name, size: r.size, created_at: r.created_at, summary })
+impl From<Stored> for ResultDto {
+    fn from(Stored { row: r, summary }: Stored) -> Self {
+        ResultDto { id: r.id, model_id: r.model_id, version: r.version, name: r.name, size: r.size, created_at: r.created_at, summary }
+    }
 }
 
 /// The uploaded file: multipart part `file`, optional `name`.
@@ -95,10 +95,6 @@ impl FromRequest<AppState> for ResultUpload {
     }
 }
 
-fn unreadable(name: &str, message: String) -> ApiError {
-    ApiError::Invalid { detail: message.clone(), errors: vec![FieldError { field: "file".into(), message: format!("{name}: {message}") }] }
-}
-
 type Created = (StatusCode, [(header::HeaderName, String); 1], Json<ResultDto>);
 
 async fn upload(
@@ -107,102 +103,54 @@ async fn upload(
     up: ResultUpload,
 ) -> Result<Created, ApiError> {
     let (version, k) = super::motions::kinematic_at(&state, &model_id, Some(version)).await?;
-    store_upload(&state, up, Some((&model_id, version)), move |t, name| {
-        results::summarise(t, &k.mech, name).map(|(summary, _)| summary).map_err(|m| unreadable(name, m))
-    })
-    .await
+    let stored =
+        service::results::upload(&state.store, &state.blobs, Some((&model_id, version)), up.name, up.bytes.to_vec(), move |t, name| {
+            results::summarise(t, &k.mech, name).map(|(summary, _)| summary)
+        })
+        .await?;
+    Ok(created(stored))
 }
 
 /// A result of any Modelica model: read, summarised (its shapes and frames), stored.
 async fn upload_standalone(State(state): State<AppState>, up: ResultUpload) -> Result<Created, ApiError> {
-    store_upload(&state, up, None, |t, _| Ok(results::standalone(t))).await
+    let stored =
+        service::results::upload(&state.store, &state.blobs, None, up.name, up.bytes.to_vec(), |t, _| Ok(results::standalone(t))).await?;
+    Ok(created(stored))
 }
 
-/// Reads an upload (a 422 naming the file when it is not a result), summarises it with
-/// `summarise`, then stores the file and its row: nothing is stored for a refused file.
-async fn store_upload(
-    state: &AppState,
-    up: ResultUpload,
-    owner: Option<(&str, i64)>,
-    summarise: impl FnOnce(&Trajectory, &str) -> Result<results::Summary, ApiError> + Send + 'static,
-) -> Result<Created, ApiError> {
-    let (name, bytes) = (up.name.clone(), up.bytes.clone());
-    let summary = blocking(move || {
-        let t = Trajectory::read(&bytes, &name).map_err(|e| unreadable(&name, e.to_string()))?;
-        t.check_finite(&name).map_err(|e| unreadable(&name, e.to_string()))?;
-        summarise(&t, &name)
-    })
-    .await?;
-    let (blobs, bytes) = (state.blobs.clone(), up.bytes.clone());
-    let sha = blocking(move || blobs.put(&bytes).map_err(|e| ApiError::Internal(e.into()))).await?;
-    let summary_json = serde_json::to_string(&summary).map_err(|e| ApiError::Internal(e.into()))?;
-    // Stored only when it reads back (a summary that cannot be served is never stored).
-    serde_json::from_str::<results::Summary>(&summary_json)
-        .map_err(|e| ApiError::Internal(anyhow::anyhow!("summary of {}: {e}", up.name)))?;
-    let (model_id, version) = (owner.map(|o| o.0), owner.map(|o| o.1));
-    let row = store::results::insert(&state.store, model_id, version, &up.name, up.bytes.len() as i64, &sha, &summary_json).await?;
-    let location = format!("/api/results/{}", row.id);
-    Ok((StatusCode::CREATED, [(header::LOCATION, location)], Json(dto(row)?)))
-}
-
-/// The rows that can be served: one stored before its summary was checked and that no longer
-/// reads is left out of the list (logged with its id; it answers alone at its own URL and can
-/// be deleted), never failing the list for everyone.
-fn servable(rows: Vec<store::results::ResultRow>) -> Vec<ResultDto> {
-    rows.into_iter()
-        .filter_map(|r| {
-            let id = r.id.clone();
-            dto(r).map_err(|e| tracing::warn!(result = %id, error = %e, "a stored result cannot be listed")).ok()
-        })
-        .collect()
+fn created(stored: Stored) -> Created {
+    let location = format!("/api/results/{}", stored.row.id);
+    (StatusCode::CREATED, [(header::LOCATION, location)], Json(stored.into()))
 }
 
 async fn list_standalone(State(state): State<AppState>) -> Result<Json<Vec<ResultDto>>, ApiError> {
-    let rows = store::results::list_standalone(&state.store).await?;
-    Ok(Json(servable(rows)))
+    Ok(Json(service::results::list_standalone(&state.store).await?.into_iter().map(ResultDto::from).collect()))
 }
 
 async fn list(State(state): State<AppState>, Path((model_id, version)): Path<(String, i64)>) -> Result<Json<Vec<ResultDto>>, ApiError> {
-    let versions = store::models::list_versions(&state.store.pool, &model_id).await?;
-    if !versions.iter().any(|v| v.version == version) {
-        return Err(ApiError::NotFound(format!("version {version} of model {model_id}")));
-    }
-    let rows = store::results::list(&state.store, &model_id, version).await?;
-    Ok(Json(servable(rows)))
+    Ok(Json(service::results::list(&state.store, &model_id, version).await?.into_iter().map(ResultDto::from).collect()))
 }
 
 async fn find(state: &AppState, id: &str) -> Result<store::results::ResultRow, ApiError> {
-    store::results::get(&state.store, id).await?.ok_or_else(|| ApiError::NotFound(format!("result {id}")))
+    Ok(service::results::find(&state.store, id).await?)
 }
 
 async fn get_one(State(state): State<AppState>, Path(id): Path<String>) -> Result<Json<ResultDto>, ApiError> {
-    Ok(Json(dto(find(&state, &id).await?)?))
+    Ok(Json(Stored::try_from(find(&state, &id).await?)?.into()))
 }
 
 async fn delete(State(state): State<AppState>, Path(id): Path<String>) -> Result<StatusCode, ApiError> {
-    if store::results::delete(&state.store, &id).await? {
-        Ok(StatusCode::NO_CONTENT)
-    } else {
-        Err(ApiError::NotFound(format!("result {id}")))
-    }
+    service::results::delete(&state.store, &id).await?;
+    Ok(StatusCode::NO_CONTENT)
 }
 
 /// Runs `f` on the stored file of result `row`.
 async fn with_file<T: Send + 'static>(
     state: &AppState,
     row: store::results::ResultRow,
-    f: impl FnOnce(&Trajectory) -> Result<T, ApiError> + Send + 'static,
+    f: impl FnOnce(&Trajectory) -> Result<T, ResultError> + Send + 'static,
 ) -> Result<T, ApiError> {
-    let blobs = state.blobs.clone();
-    blocking(move || {
-        let bytes = blobs
-            .get(&row.blob_sha256)
-            .map_err(|e| ApiError::Internal(e.into()))?
-            .ok_or_else(|| ApiError::Internal(anyhow::anyhow!("the file of result {} is missing", row.id)))?;
-        let t = Trajectory::read(&bytes, &row.name).map_err(|e| ApiError::Internal(anyhow::anyhow!("stored result: {e}")))?;
-        f(&t)
-    })
-    .await
+    Ok(service::results::with_file(&state.blobs, row, f).await?)
 }
 
 #[derive(Deserialize)]
@@ -269,7 +217,7 @@ async fn series(State(state): State<AppState>, Path(id): Path<String>, uri: axum
         let time = t.time();
         let mut list = Vec::with_capacity(names.len());
         for n in names {
-            let v = t.find(&n).ok_or_else(|| ApiError::NotFound(format!("variable \"{n}\" in the result")))?;
+            let v = t.find(&n).ok_or_else(|| ResultError::NotFound(format!("variable \"{n}\" in the result")))?;
             let (dt, dy) = results::decimate(&time, &t.series(v), width);
             let unit = t.variables[v].unit().to_string();
             list.push(SeriesDto { name: t.variables[v].name.clone(), unit, t: dt, y: dy });

@@ -7,6 +7,7 @@
 //! - [`export`]: a version's package from its stored bundle (check, convert, zip).
 //! - [`drives`]: which motor, gear and controller drive which joint, resolved for the package.
 //! - [`motions`]: motions on a version (joints, planning, trajectories, sizing).
+//! - [`results`]: simulation result files checked, stored and read.
 //! - [`collisions`]: a version's collision shapes, the allowed-collision matrix, checks along a
 //!   motion.
 
@@ -17,6 +18,7 @@ pub mod drives;
 pub mod export;
 pub mod models;
 pub mod motions;
+pub mod results;
 
 /// A field-level validation message: which input field (dotted path) and what is wrong with it.
 #[derive(Debug, Clone, Serialize, PartialEq)]
