@@ -41,7 +41,7 @@ pub enum ApiError {
     #[error("conversion failed: {0}")]
     Conversion(#[from] ConvertError),
     #[error(
-        "the conversion stopped the service {times} times (it was still running at each restart); \
+        "the conversion stopped the service {times} times (it was running alone at each stop); \
          it is not tried again: check the bundle (size, meshes) or upload a new version"
     )]
     Aborted { times: i64 },
