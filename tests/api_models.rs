@@ -582,29 +582,34 @@ async fn uploads_beyond_the_check_bound_get_503() {
     assert_eq!(app.wait_for_job(&job).await["status"], "succeeded");
 }
 
-/// A job whose conversion kills the service (simulated: left `running` by a "crash" after each
-/// start) is run at most MAX_ATTEMPTS times, then failed with a clear problem, not run again.
+/// A job whose conversion kills the service (simulated: left `running`, alone, by a "crash"
+/// after each start) is run until it has stopped the service MAX_ABORTS times, then quarantined:
+/// failed with a clear problem, not run again, listed by `GET /api/jobs`.
 #[tokio::test]
 async fn a_job_that_keeps_stopping_the_service_is_failed() {
+    let max = cad2mo_server::jobs::MAX_ABORTS;
     let app = TestApp::spawn().await;
     let (id, _, job) = app.upload_model_ok(pendulum(), &[]).await;
-    app.wait_for_job(&job).await; // attempt 1
+    app.wait_for_job(&job).await;
     let mut dir = app.stop().await;
-    for attempt in 2..=cad2mo_server::jobs::MAX_ATTEMPTS + 1 {
+    for stops in 1..=max {
         let store = open_store(dir.path()).await;
         assert!(cad2mo_server::store::models::mark_interrupted(&store.pool, &job).await.expect("mark"));
         store.pool.close().await;
         let app = TestApp::spawn_in(dir, |_| {}).await;
         let done = app.wait_for_job(&job).await;
-        if attempt <= cad2mo_server::jobs::MAX_ATTEMPTS {
-            assert_eq!(done["status"], "succeeded", "attempt {attempt} runs: {done:#}");
+        if stops < max {
+            assert_eq!(done["status"], "succeeded", "after {stops} stop(s) it runs: {done:#}");
+            assert_eq!(app.get("/api/jobs").await.json::<serde_json::Value>().await.expect("json")["quarantined"], serde_json::json!([]));
         } else {
-            assert_eq!(done["status"], "failed", "attempt {attempt} is not run: {done:#}");
+            assert_eq!(done["status"], "failed", "after {stops} stops it is not run: {done:#}");
             assert_eq!(done["error"]["type"], "/problems/conversion-aborted", "{done:#}");
             let detail = done["error"]["detail"].as_str().expect("detail");
-            assert!(detail.contains(&format!("stopped the service {} times", cad2mo_server::jobs::MAX_ATTEMPTS)), "{detail}");
+            assert!(detail.contains(&format!("stopped the service {max} times")), "{detail}");
             let p = problem(app.package(&id, 1).await, 422).await;
             assert_eq!(p, done["error"]);
+            let list: serde_json::Value = app.get("/api/jobs").await.json().await.expect("json");
+            assert_eq!(list["quarantined"][0]["id"], job.as_str(), "{list:#}");
             // A new version is a new job: it runs.
             let (_, _, job2) = app.upload_version_ok(&id, pendulum(), &[]).await;
             assert_eq!(app.wait_for_job(&job2).await["status"], "succeeded");

@@ -59,11 +59,19 @@ impl App {
         crate::store::library::seed_if_empty(&store).await.context("seeding the motor library")?;
         let blobs = Blobs::open(&settings.blobs, &settings.data_dir).await.context("opening the file store")?;
         tracing::info!(blobs = %blobs.location(), "file store open");
+        let fd_limit = crate::api::serve::raise_fd_limit();
         let listener = TcpListener::bind(settings.bind).await.with_context(|| format!("binding {}", settings.bind))?;
         let relay = crate::relay::Relay::start(settings.live_bind, settings.requires_auth(), store.clone(), blobs.clone()).await;
         let live = relay.addr().map(|a| (settings.live_host(), a.port()));
         let jobs = start_jobs(store.clone(), blobs.clone(), &settings, live).await.context("starting the conversion workers")?;
         let addr = listener.local_addr().unwrap_or(settings.bind);
+        let mut settings = settings;
+        let cap = crate::api::serve::connection_cap(settings.max_connections, fd_limit);
+        if cap < settings.max_connections {
+            tracing::warn!(wanted = settings.max_connections, cap, fd_limit, "--max-connections lowered to fit under the open-file limit");
+        }
+        settings.max_connections = cap;
+        tracing::info!(max_connections = cap, fd_limit, "connection limit");
         let checks = Arc::new(tokio::sync::Semaphore::new(settings.max_checks.max(1)));
         let state = AppState {
             settings: Arc::new(settings),
@@ -91,12 +99,18 @@ impl App {
     /// `running` and the next start redoes them.
     pub async fn run_until_stopped(self) -> anyhow::Result<()> {
         let router = crate::api::router(self.state.clone()).layer(tower_http::trace::TraceLayer::new_for_http());
-        let served = axum::serve(self.listener, router)
-            .with_graceful_shutdown(async {
-                let _ = tokio::signal::ctrl_c().await;
-            })
-            .await
-            .context("serving");
+        let s = &self.state.settings;
+        let limits = crate::api::serve::Limits {
+            max_connections: s.max_connections,
+            header_timeout: s.header_timeout,
+            body_timeout: s.body_timeout,
+            keep_alive: s.keep_alive_timeout,
+        };
+        let served = crate::api::serve::serve(self.listener, router, limits, async {
+            let _ = tokio::signal::ctrl_c().await;
+        })
+        .await
+        .context("serving");
         self.state.jobs.halt().await;
         served
     }

@@ -46,6 +46,21 @@ pub struct ServeArgs {
     /// Seconds an upload may wait for a free check before 503.
     #[arg(long, env = "CAD2MO_CHECK_WAIT", default_value_t = 10.0)]
     pub check_wait: f64,
+    /// HTTP connections served at once (lowered at start to fit under the open-file limit, which
+    /// is first raised to its hard limit). Beyond it, 16 more connections answer only
+    /// /api/health (others get 503 `busy`), the oldest of those dropped for the newest.
+    #[arg(long, env = "CAD2MO_MAX_CONNECTIONS", default_value_t = 1000)]
+    pub max_connections: usize,
+    /// Seconds a client has to send a request's head (line and headers); the clock also runs
+    /// while a kept-alive connection waits for its next request.
+    #[arg(long, env = "CAD2MO_HEADER_TIMEOUT", default_value_t = 15.0)]
+    pub header_timeout: f64,
+    /// Longest pause, in seconds, while a request body is read (a stalled upload is dropped).
+    #[arg(long, env = "CAD2MO_BODY_TIMEOUT", default_value_t = 30.0)]
+    pub body_timeout: f64,
+    /// Seconds an idle connection (no request in flight, no byte either way) is kept open.
+    #[arg(long, env = "CAD2MO_KEEP_ALIVE_TIMEOUT", default_value_t = 5.0)]
+    pub keep_alive_timeout: f64,
     /// Extra host names the service answers to (`name` for any port, `name:port`), e.g. behind
     /// a reverse proxy; repeat or separate by commas. Others get 421.
     #[arg(long = "allowed-host", env = "CAD2MO_ALLOWED_HOSTS", value_delimiter = ',')]
@@ -78,6 +93,12 @@ fn parse_live_bind(s: &str) -> Result<LiveBind, String> {
     s.parse::<SocketAddr>().map(|a| LiveBind(Some(a))).map_err(|e| format!("{s}: {e} (an address such as 127.0.0.1:7878, or off)"))
 }
 
+/// A timeout setting: `secs` within 0.05 s .. 1 hour (`default` when not a number).
+fn seconds(secs: f64, default: f64) -> std::time::Duration {
+    let secs = if secs.is_nan() { default } else { secs.clamp(0.05, 3600.0) };
+    std::time::Duration::try_from_secs_f64(secs).unwrap_or(std::time::Duration::from_secs(30))
+}
+
 /// The service's settings.
 #[derive(Debug, Clone)]
 pub struct Settings {
@@ -98,6 +119,14 @@ pub struct Settings {
     pub max_checks: usize,
     /// How long an upload waits for a check before 503.
     pub check_wait: std::time::Duration,
+    /// HTTP connections served at once (before the open-file limit lowers it, see `App::build`).
+    pub max_connections: usize,
+    /// Time to send a request head (also the longest wait for the next request on a connection).
+    pub header_timeout: std::time::Duration,
+    /// Longest pause while a request body is read.
+    pub body_timeout: std::time::Duration,
+    /// How long an idle connection is kept open.
+    pub keep_alive_timeout: std::time::Duration,
     /// Extra `Host` names (`name` or `name:port`), beyond the bound address.
     pub allowed_hosts: Vec<String>,
     /// Where the live view receives frames (`None`: off).
@@ -124,6 +153,10 @@ impl Settings {
             force_auth: a.require_auth,
             max_checks: a.max_checks.filter(|n| *n > 0).unwrap_or(workers),
             check_wait: std::time::Duration::try_from_secs_f64(a.check_wait.clamp(0.0, 600.0)).unwrap_or_default(),
+            max_connections: a.max_connections.max(1),
+            header_timeout: seconds(a.header_timeout, 15.0),
+            body_timeout: seconds(a.body_timeout, 30.0),
+            keep_alive_timeout: seconds(a.keep_alive_timeout, 5.0),
             allowed_hosts: a.allowed_hosts.into_iter().map(|h| h.trim().to_string()).filter(|h| !h.is_empty()).collect(),
             live_bind: a.live_bind.0,
             live_host: a.live_host.map(|h| h.trim().to_string()).filter(|h| !h.is_empty()),
@@ -149,6 +182,10 @@ impl Settings {
             force_auth: false,
             max_checks: 2,
             check_wait: std::time::Duration::from_secs(10),
+            max_connections: 1000,
+            header_timeout: std::time::Duration::from_secs(15),
+            body_timeout: std::time::Duration::from_secs(30),
+            keep_alive_timeout: std::time::Duration::from_secs(5),
             allowed_hosts: Vec::new(),
             live_bind: Some(SocketAddr::from(([127, 0, 0, 1], 0))),
             live_host: None,

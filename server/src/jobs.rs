@@ -13,10 +13,16 @@
 //! Restart: [`Jobs::start`] (called by `App::build`) first re-queues the jobs a stopped server
 //! left `running` (`store::models::requeue_unfinished`), then runs them.
 //!
-//! Poison jobs: every claim counts an attempt (`jobs.attempts`). A job claimed again after
-//! [`MAX_ATTEMPTS`] claims was running each time the service stopped: its conversion most likely
-//! kills the process (out of memory, a crash), so it is marked failed (`/problems/conversion-aborted`)
-//! instead of being run again and taking the service down at every start. Conversion
+//! Poison jobs (crash accounting, issue 26): a start finds the jobs a stopped instance left
+//! `running` (`store::models::requeue_unfinished`). The only job running there is charged the
+//! stop (`jobs.aborts`); jobs that were running together are charged nothing but marked
+//! `isolate`, and the dispatcher then runs one job at a time (waiting for the others to end)
+//! until no such job is queued, so a crash during such a run is charged to the one job running.
+//! A job charged [`MAX_ABORTS`] times is quarantined: failed with `/problems/conversion-aborted`
+//! without running again (listed by `GET /api/jobs`), instead of taking the service down at
+//! every start; a bystander is re-run, not blamed. Every claim also counts an attempt
+//! (`jobs.attempts`) and more than [`MAX_ATTEMPTS`] fail a job whatever the cause (a backstop for
+//! leases taken over on PostgreSQL, which do not pass through a start). Conversion
 //! is deterministic and idempotent and blobs are content-addressed, so redoing a half-done job is
 //! harmless; a crash between the blob writes and the database update leaves at worst an
 //! unreferenced blob.
@@ -56,9 +62,14 @@ use crate::store::{Engine, Store, StoreError};
 use cad2mo_engine::collision::{CacheStats, MemoryShapeCache};
 use cad2mo_engine::pipeline::observe::Stage;
 
-/// Claims of one job before it is given up (see the module doc): a job claimed for the
-/// `MAX_ATTEMPTS + 1`-th time fails without running.
-pub const MAX_ATTEMPTS: i64 = 3;
+/// Stops of the service while a job was the only one running before it is quarantined (see the
+/// module doc): failed with `/problems/conversion-aborted` without running again.
+pub const MAX_ABORTS: i64 = 2;
+
+/// Claims of one job before it is given up whatever the reason (a backstop: leases taken over
+/// on PostgreSQL, stops beside other jobs): a job claimed for the `MAX_ATTEMPTS + 1`-th time
+/// fails without running.
+pub const MAX_ATTEMPTS: i64 = 10;
 
 /// How often a running job's progress is written to the database at most (4 a second), so that
 /// every instance can show it.
@@ -72,7 +83,7 @@ pub enum JobError {
     NotFound(String),
     /// The job was running each time the service stopped (see the module doc).
     #[error(
-        "the conversion stopped the service {times} times (it was still running at each restart); \
+        "the conversion stopped the service {times} times (it was running alone at each stop); \
          it is not tried again: check the bundle (size, meshes) or upload a new version"
     )]
     Aborted { times: i64 },
@@ -292,9 +303,23 @@ async fn dispatch(ctx: Ctx, workers: usize, mut wake: mpsc::Receiver<()>, mut ha
         if halted_now(&halted) {
             break;
         }
+        // Crash accounting: while a job waits to be run alone, jobs run one at a time.
+        let alone = models::isolation_pending(&ctx.store.pool).await.unwrap_or(false);
+        if alone {
+            while !running.is_empty() {
+                tokio::select! {
+                    _ = running.join_next() => {}
+                    () = halt_requested(&mut halted) => break,
+                }
+            }
+            if halted_now(&halted) {
+                break;
+            }
+        }
         match models::claim_next_job(&ctx.store.pool, &ctx.claimer).await {
             Ok(Some(job)) => {
-                let span = tracing::info_span!("job", job_id = %job.id, kind = %job.kind, model_id = %job.model_id, version = job.version);
+                let span =
+                    tracing::info_span!("job", job_id = %job.id, kind = %job.kind, model_id = %job.model_id, version = job.version, alone);
                 let ctx = ctx.clone();
                 running.spawn(
                     async move {
@@ -303,6 +328,12 @@ async fn dispatch(ctx: Ctx, workers: usize, mut wake: mpsc::Receiver<()>, mut ha
                     }
                     .instrument(span),
                 );
+                if alone {
+                    tokio::select! {
+                        _ = running.join_next() => {}
+                        () = halt_requested(&mut halted) => break,
+                    }
+                }
             }
             Ok(None) => {
                 drop(permit);
@@ -364,8 +395,11 @@ async fn run(ctx: &Ctx, job: ClaimedJob) {
     tracing::info!("job running");
     let started = std::time::Instant::now();
     ctx.board.set(&job.id, JobProgress::of(0, 0, 1));
-    let result = if job.attempts > MAX_ATTEMPTS {
-        tracing::error!(attempts = job.attempts, "the job stopped the service every time it ran: marked failed");
+    let result = if job.aborts >= MAX_ABORTS {
+        tracing::error!(aborts = job.aborts, "the job stopped the service while running alone: quarantined (failed)");
+        Err(JobError::Aborted { times: job.aborts })
+    } else if job.attempts > MAX_ATTEMPTS {
+        tracing::error!(attempts = job.attempts, "the job was claimed too often (stops, lost leases): marked failed");
         Err(JobError::Aborted { times: job.attempts - 1 })
     } else {
         keep_while(ctx, &job, convert(ctx, &job)).await

@@ -35,17 +35,23 @@ pub enum ApiError {
     Conflict(String),
     #[error("the upload exceeds the limit of {limit} bytes")]
     PayloadTooLarge { limit: u64 },
+    /// A request body that paused longer than `--body-timeout` (the connection is closed after).
+    #[error("the request body stalled longer than the body timeout (--body-timeout); the upload is dropped")]
+    BodyTimeout,
     #[error("a valid bearer token is required")]
     Unauthorized,
     #[error("conversion failed: {0}")]
     Conversion(#[from] ConvertError),
     #[error(
-        "the conversion stopped the service {times} times (it was still running at each restart); \
+        "the conversion stopped the service {times} times (it was running alone at each stop); \
          it is not tried again: check the bundle (size, meshes) or upload a new version"
     )]
     Aborted { times: i64 },
     #[error("too many uploads are being checked right now; retry in {retry_after} s")]
     Busy { retry_after: u64 },
+    /// A request over the connection cap (`--max-connections`); only health is answered there.
+    #[error("the service is serving its limit of {limit} connections (--max-connections); retry in 1 s")]
+    TooManyConnections { limit: usize },
     /// A state-changing request from another web origin.
     #[error("{0}")]
     CrossOrigin(String),
@@ -211,10 +217,11 @@ impl ApiError {
             ApiError::MotionInvalid { .. } => (StatusCode::UNPROCESSABLE_ENTITY, "motion-invalid", "Motion cannot be planned"),
             ApiError::Conflict(_) => (StatusCode::CONFLICT, "conflict", "Conflict"),
             ApiError::PayloadTooLarge { .. } => (StatusCode::PAYLOAD_TOO_LARGE, "payload-too-large", "Upload too large"),
+            ApiError::BodyTimeout => (StatusCode::REQUEST_TIMEOUT, "request-timeout", "Request timeout"),
             ApiError::Unauthorized => (StatusCode::UNAUTHORIZED, "unauthorized", "Unauthorized"),
             ApiError::Conversion(_) => (StatusCode::UNPROCESSABLE_ENTITY, "conversion-failed", "Conversion failed"),
             ApiError::Aborted { .. } => (StatusCode::UNPROCESSABLE_ENTITY, "conversion-aborted", "Conversion aborted"),
-            ApiError::Busy { .. } => (StatusCode::SERVICE_UNAVAILABLE, "busy", "Busy"),
+            ApiError::Busy { .. } | ApiError::TooManyConnections { .. } => (StatusCode::SERVICE_UNAVAILABLE, "busy", "Busy"),
             ApiError::CrossOrigin(_) => (StatusCode::FORBIDDEN, "cross-origin", "Cross-origin request refused"),
             ApiError::ClientHeaderRequired(_) => {
                 (StatusCode::FORBIDDEN, "client-header-required", "Request refused without a token or client header")
@@ -283,6 +290,10 @@ impl IntoResponse for ApiError {
             }
             ApiError::Busy { retry_after } => {
                 resp.headers_mut().insert(header::RETRY_AFTER, axum::http::HeaderValue::from(*retry_after));
+            }
+            ApiError::TooManyConnections { .. } => {
+                resp.headers_mut().insert(header::RETRY_AFTER, axum::http::HeaderValue::from(1u64));
+                resp.headers_mut().insert(header::CONNECTION, axum::http::HeaderValue::from_static("close"));
             }
             _ => {}
         }

@@ -17,7 +17,7 @@ use crate::jobs::JobProgress;
 use crate::store::models as db;
 
 pub fn router() -> Router<AppState> {
-    Router::new().route("/api/jobs/{job_id}", get(get_job))
+    Router::new().route("/api/jobs", get(list_jobs)).route("/api/jobs/{job_id}", get(get_job))
 }
 
 #[derive(Serialize)]
@@ -44,6 +44,51 @@ struct QueueView {
     ahead: i64,
     /// Jobs converting now (at most the number of workers).
     running: i64,
+}
+
+/// Jobs listed by `GET /api/jobs`.
+const LISTED: i64 = 50;
+
+#[derive(Serialize)]
+struct JobList {
+    /// The latest jobs, newest first.
+    jobs: Vec<JobView>,
+    /// Jobs quarantined for stopping the service while running alone (`conversion-aborted`).
+    quarantined: Vec<JobView>,
+}
+
+/// `GET /api/jobs`: the latest jobs and the quarantined ones (a stored row that cannot be shown
+/// is left out and logged, never failing the list).
+async fn list_jobs(State(state): State<AppState>) -> Result<Json<JobList>, ApiError> {
+    let view = |rows: Vec<db::JobRow>| {
+        rows.into_iter()
+            .filter_map(|job| {
+                let error = match job.error_json.as_deref().map(serde_json::from_str::<Value>).transpose() {
+                    Ok(e) => e,
+                    Err(e) => {
+                        tracing::error!(job_id = %job.id, error = %e, "stored problem is corrupt: job left out of the list");
+                        return None;
+                    }
+                };
+                Some(JobView {
+                    id: job.id,
+                    kind: job.kind,
+                    model_id: job.model_id,
+                    version: job.version,
+                    status: job.status,
+                    error,
+                    queue: None,
+                    progress: None,
+                    created_at: job.created_at,
+                    started_at: job.started_at,
+                    finished_at: job.finished_at,
+                })
+            })
+            .collect()
+    };
+    let jobs = view(db::recent_jobs(&state.store.pool, LISTED).await?);
+    let quarantined = view(db::quarantined_jobs(&state.store.pool, crate::jobs::MAX_ABORTS, LISTED).await?);
+    Ok(Json(JobList { jobs, quarantined }))
 }
 
 async fn get_job(State(state): State<AppState>, path: Result<Path<String>, PathRejection>) -> Result<Json<JobView>, ApiError> {

@@ -16,6 +16,7 @@ mod models;
 mod motions;
 mod openapi;
 mod results;
+pub mod serve;
 mod web;
 
 use axum::Router;

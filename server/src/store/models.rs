@@ -92,6 +92,8 @@ pub struct ClaimedJob {
     /// How many times the job was claimed, this claim included (a job claimed again after a
     /// restart found it `running` has attempts > 1).
     pub attempts: i64,
+    /// Stops of the service while this job was the only one running (see [`requeue_unfinished`]).
+    pub aborts: i64,
     /// `None` when the version no longer exists (deleted meanwhile).
     pub source: Option<JobSource>,
     /// This claim's lease token (`<instance>:<claim>`): renewing the lease, recording progress
@@ -282,6 +284,27 @@ pub async fn requeue_unfinished(pool: &Pool) -> Result<u64, StoreError> {
         Engine::Postgres => "status = 'running' AND (lease_until IS NULL OR lease_until < %NOW%)",
     };
     let mut tx = pool.begin().await?;
+    // Crash accounting (issue 26): the jobs each stopped instance was running. A job that was the
+    // only one running there is charged the stop (`aborts`); jobs that ran together are marked to
+    // be re-run alone (`isolate`), nobody charged, so that a crash of such a run names its job.
+    // On SQLite every running job is the one stopped server's; on PostgreSQL they are grouped by
+    // the instance part of their lease token (jobs without one form one group).
+    let running: Vec<(String, Option<String>)> =
+        sqlx::query_as(&pool.sql(format!("SELECT id, lease_owner FROM jobs WHERE {stale}"))).fetch_all(&mut *tx).await?;
+    let mut by_instance: std::collections::BTreeMap<String, Vec<String>> = Default::default();
+    for (id, owner) in running {
+        let instance = match pool.engine() {
+            Engine::Sqlite => String::new(),
+            Engine::Postgres => owner.as_deref().and_then(|o| o.split_once(':')).map(|(i, _)| i.to_string()).unwrap_or_default(),
+        };
+        by_instance.entry(instance).or_default().push(id);
+    }
+    for ids in by_instance.values() {
+        let set = if ids.len() == 1 { "aborts = aborts + 1, isolate = 1" } else { "isolate = 1" };
+        for id in ids {
+            sqlx::query(&pool.sql(format!("UPDATE jobs SET {set} WHERE id = ?"))).bind(id).execute(&mut *tx).await?;
+        }
+    }
     let requeued: Vec<(String, i64)> = sqlx::query_as(&pool.sql(format!(
         "UPDATE jobs SET status = 'queued', started_at = NULL, lease_owner = NULL, lease_until = NULL, progress_json = NULL
          WHERE {stale} RETURNING model_id, version"
@@ -297,6 +320,38 @@ pub async fn requeue_unfinished(pool: &Pool) -> Result<u64, StoreError> {
     }
     tx.commit().await?;
     Ok(requeued.len() as u64)
+}
+
+/// Whether a queued job waits to be run alone (see [`requeue_unfinished`]): the worker pool then
+/// runs one job at a time until none does.
+pub async fn isolation_pending(pool: &Pool) -> Result<bool, StoreError> {
+    let row: Option<(i64,)> =
+        sqlx::query_as(&pool.sql("SELECT 1 FROM jobs WHERE isolate = 1 AND status = 'queued' LIMIT 1")).fetch_optional(pool).await?;
+    Ok(row.is_some())
+}
+
+/// Jobs quarantined for stopping the service (failed with at least `min_aborts` aborts while
+/// running alone), newest first, at most `limit`.
+pub async fn quarantined_jobs(pool: &Pool, min_aborts: i64, limit: i64) -> Result<Vec<JobRow>, StoreError> {
+    Ok(sqlx::query_as(&pool.sql(
+        "SELECT id, kind, model_id, version, status, error_json, created_at, started_at, finished_at, progress_json, attempts
+         FROM jobs WHERE status = 'failed' AND aborts >= ? ORDER BY created_at DESC, rowid DESC LIMIT ?",
+    ))
+    .bind(min_aborts)
+    .bind(limit)
+    .fetch_all(pool)
+    .await?)
+}
+
+/// The latest jobs, newest first, at most `limit`.
+pub async fn recent_jobs(pool: &Pool, limit: i64) -> Result<Vec<JobRow>, StoreError> {
+    Ok(sqlx::query_as(&pool.sql(
+        "SELECT id, kind, model_id, version, status, error_json, created_at, started_at, finished_at, progress_json, attempts
+         FROM jobs ORDER BY created_at DESC, rowid DESC LIMIT ?",
+    ))
+    .bind(limit)
+    .fetch_all(pool)
+    .await?)
 }
 
 /// A job is claimable when it is queued, or running under a lease that has passed (its instance
@@ -318,15 +373,16 @@ pub async fn claim_next_job(pool: &Pool, claimer: &Claimer) -> Result<Option<Cla
     let owner = format!("{}:{}", claimer.instance, new_id());
     let set = "status = 'running', started_at = %NOW%, finished_at = NULL, error_json = NULL, progress_json = NULL,
                attempts = attempts + 1, lease_owner = ?, lease_until = %UNTIL%";
+    // Jobs to be run alone first (the dispatcher runs nothing beside them).
     let mut tx;
-    let job: Option<(String, String, String, i64, i64)> = match pool.engine() {
+    let job: Option<(String, String, String, i64, i64, i64)> = match pool.engine() {
         Engine::Postgres => {
             tx = pool.begin().await?;
             sqlx::query_as(&pool.sql(format!(
                 "WITH c AS (SELECT j.id FROM jobs j WHERE {CLAIMABLE}
-                            ORDER BY j.created_at, j.rowid LIMIT 1 FOR UPDATE OF j SKIP LOCKED)
+                            ORDER BY j.isolate DESC, j.created_at, j.rowid LIMIT 1 FOR UPDATE OF j SKIP LOCKED)
                  UPDATE jobs SET {set} FROM c WHERE jobs.id = c.id
-                 RETURNING jobs.id, jobs.kind, jobs.model_id, jobs.version, jobs.attempts"
+                 RETURNING jobs.id, jobs.kind, jobs.model_id, jobs.version, jobs.attempts, jobs.aborts"
             )))
             .bind(&owner)
             .bind(claimer.lease_secs)
@@ -336,15 +392,16 @@ pub async fn claim_next_job(pool: &Pool, claimer: &Claimer) -> Result<Option<Cla
         Engine::Sqlite => {
             // Read first, outside any transaction: an idle poll must not take SQLite's write lock,
             // or a concurrent read-then-write transaction elsewhere would fail with "database is locked".
-            let candidate: Option<(String,)> =
-                sqlx::query_as(&pool.sql(format!("SELECT j.id FROM jobs j WHERE {CLAIMABLE} ORDER BY j.created_at, j.rowid LIMIT 1")))
-                    .fetch_optional(pool)
-                    .await?;
+            let candidate: Option<(String,)> = sqlx::query_as(
+                &pool.sql(format!("SELECT j.id FROM jobs j WHERE {CLAIMABLE} ORDER BY j.isolate DESC, j.created_at, j.rowid LIMIT 1")),
+            )
+            .fetch_optional(pool)
+            .await?;
             let Some((candidate,)) = candidate else { return Ok(None) };
             tx = pool.begin().await?;
             sqlx::query_as(&pool.sql(format!(
                 "UPDATE jobs SET {set} WHERE id = ? AND id IN (SELECT j.id FROM jobs j WHERE {CLAIMABLE})
-                 RETURNING id, kind, model_id, version, attempts"
+                 RETURNING id, kind, model_id, version, attempts, aborts"
             )))
             .bind(&owner)
             .bind(claimer.lease_secs)
@@ -353,7 +410,7 @@ pub async fn claim_next_job(pool: &Pool, claimer: &Claimer) -> Result<Option<Cla
             .await?
         }
     };
-    let Some((id, kind, model_id, version, attempts)) = job else {
+    let Some((id, kind, model_id, version, attempts, aborts)) = job else {
         tx.rollback().await?;
         return Ok(None);
     };
@@ -367,7 +424,7 @@ pub async fn claim_next_job(pool: &Pool, claimer: &Claimer) -> Result<Option<Cla
     .fetch_optional(&mut *tx)
     .await?;
     tx.commit().await?;
-    Ok(Some(ClaimedJob { id, kind, model_id, version, attempts, source, lease_owner: owner }))
+    Ok(Some(ClaimedJob { id, kind, model_id, version, attempts, aborts, source, lease_owner: owner }))
 }
 
 /// Extends a running job's lease by `lease_secs` from now. False when the job no longer holds
@@ -555,6 +612,59 @@ mod tests {
         assert_eq!((m.latest_version, m.latest_status.as_deref()), (Some(3), Some("queued")));
         let v = get_version(&s.pool, &c.model_id, 3).await.unwrap().unwrap();
         assert_eq!(v.job_id.as_deref(), Some(c3.job_id.as_str()));
+    }
+
+    /// Issue 26, crash accounting: a stop while several jobs run charges none of them; they are
+    /// re-run alone first, and only a job that is running alone at a stop is charged.
+    #[tokio::test]
+    async fn a_stop_charges_only_a_job_running_alone() {
+        let (_d, s) = store().await;
+        let a = create_model(&s.pool, "a", &upload()).await.unwrap();
+        let b = create_model(&s.pool, "b", &upload()).await.unwrap();
+        let c = create_model(&s.pool, "c", &upload()).await.unwrap();
+        let aborts = |id: String| {
+            let pool = s.pool.clone();
+            async move {
+                let (n, iso): (i64, i64) =
+                    sqlx::query_as(&pool.sql("SELECT aborts, isolate FROM jobs WHERE id = ?")).bind(id).fetch_one(&pool).await.unwrap();
+                (n, iso)
+            }
+        };
+        // Three jobs running when the process aborts: nobody is charged, all are to run alone.
+        for _ in 0..3 {
+            claim_next_job(&s.pool, &claimer()).await.unwrap().unwrap();
+        }
+        assert!(!isolation_pending(&s.pool).await.unwrap());
+        assert_eq!(requeue_unfinished(&s.pool).await.unwrap(), 3);
+        for j in [&a.job_id, &b.job_id, &c.job_id] {
+            assert_eq!(aborts(j.clone()).await, (0, 1), "a bystander is not charged");
+        }
+        assert!(isolation_pending(&s.pool).await.unwrap());
+        // Re-run alone: a (innocent) finishes; b aborts the process while alone: charged.
+        let ja = claim_next_job(&s.pool, &claimer()).await.unwrap().unwrap();
+        assert_eq!((ja.id.as_str(), ja.aborts), (a.job_id.as_str(), 0));
+        let out = JobOutputs { package_sha256: "p", report_sha256: "r", summary_json: "{}" };
+        assert!(finish_succeeded(&s.pool, &ja, &out).await.unwrap());
+        let jb = claim_next_job(&s.pool, &claimer()).await.unwrap().unwrap();
+        assert_eq!(jb.id, b.job_id);
+        assert_eq!(requeue_unfinished(&s.pool).await.unwrap(), 1);
+        assert_eq!(aborts(b.job_id.clone()).await, (1, 1));
+        assert_eq!(aborts(c.job_id.clone()).await, (0, 1), "c was queued, not running");
+        // A queued job to be run alone comes before older ones.
+        let new = create_model(&s.pool, "d", &upload()).await.unwrap();
+        let jb = claim_next_job(&s.pool, &claimer()).await.unwrap().unwrap();
+        assert_eq!((jb.id.as_str(), jb.aborts), (b.job_id.as_str(), 1));
+        assert_eq!(requeue_unfinished(&s.pool).await.unwrap(), 1);
+        let jb = claim_next_job(&s.pool, &claimer()).await.unwrap().unwrap();
+        assert_eq!((jb.id.as_str(), jb.aborts), (b.job_id.as_str(), 2), "twice alone: the worker quarantines it");
+        assert!(finish_failed(&s.pool, &jb, "{\"type\":\"/problems/conversion-aborted\"}").await.unwrap());
+        let q = quarantined_jobs(&s.pool, 2, 50).await.unwrap();
+        assert_eq!(q.iter().map(|j| j.id.as_str()).collect::<Vec<_>>(), [b.job_id.as_str()]);
+        let jc = claim_next_job(&s.pool, &claimer()).await.unwrap().unwrap();
+        assert_eq!((jc.id.as_str(), jc.aborts), (c.job_id.as_str(), 0));
+        assert!(finish_succeeded(&s.pool, &jc, &out).await.unwrap());
+        assert!(!isolation_pending(&s.pool).await.unwrap());
+        assert_eq!(claim_next_job(&s.pool, &claimer()).await.unwrap().unwrap().id, new.job_id);
     }
 
     #[tokio::test]
