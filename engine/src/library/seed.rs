@@ -413,8 +413,11 @@ const FAULHABER_1331_DOC: &str = "Document: FAULHABER data sheet \"DC-Micromotor
 /// The FAULHABER manual of the 2232 … BX4 S and 2250 … BX4 S series, chapter 7 Technical Data.
 const FAULHABER_BX4_DOC: &str = "FAULHABER technical manual of the Brushless DC-Servomotor series 2232 … BX4 S / 2250 … BX4 S (as published at https://manualshive.com/ru/manual/faulhaber/2232-bx4s-series/3671951), chapter 7 Technical Data";
 
+/// (id, class id, name, source, values), the source made from the document's words.
+type CatalogueInstance = (&'static str, &'static str, &'static str, String, Map<String, Json>);
+
 /// Catalogue instances: values exactly as the datasheet prints them, with the line each one is.
-fn catalogue() -> Vec<(&'static str, &'static str, &'static str, String, Map<String, Json>)> {
+fn catalogue() -> Vec<CatalogueInstance> {
     let not_peak = |stall: &str| {
         format!("T_peak missing: FAULHABER prints no short-time torque limit, only the stall torque {stall} at the nominal voltage (a point of the speed-torque line, not a permitted load), so the peak check is not evaluated.")
     };
