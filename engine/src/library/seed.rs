@@ -33,6 +33,30 @@ pub const MAXON_GP42C_74: &str = "7255aafb-a3a5-4ca2-83a5-e57f136ff918";
 pub const BALL_SCREW_16X5: &str = "111ab6e0-9fec-4319-a1f0-7823f62e5ae4";
 pub const ROBOT_R3_CONTROLLER: &str = "42d928a7-a033-47a5-8545-33f2b4153faa";
 
+/// Catalogue instances (issue 27): every value copied from a maker's datasheet, each source names
+/// the maker, the document (title and URL) and the page or table, and says for every value which
+/// datasheet line it is (`R = ...`) and for every datasheet value left out why (`T_peak missing: ...`).
+pub const FAULHABER_1331_006: &str = "da1dde4d-e9b1-4281-9921-d1d0b0fdf19f";
+pub const FAULHABER_1331_012: &str = "950945b9-8dd7-4d7a-89bd-f9ffd9a7ea50";
+pub const FAULHABER_2232_012_BX4_S: &str = "54ecc996-330c-49c3-bd20-795783a35323";
+pub const FAULHABER_2232_024_BX4_S: &str = "1d2c3b37-7d3c-44a9-9545-8c0e9674fe40";
+pub const FAULHABER_2232_012_BX4: &str = "3585e02d-f18d-4661-aadd-156bbfa1cd03";
+pub const FAULHABER_2232_024_BX4: &str = "faafd86a-a4ab-4bab-839c-2cb26e26da09";
+pub const FAULHABER_2250_024_BX4_S: &str = "fe020295-15b6-41b6-9eb1-90b054352db7";
+pub const FAULHABER_2250_024_BX4: &str = "7d376960-2b76-4917-9ff3-217613970da5";
+
+/// The catalogue instances of the seed (see above); `seed::library` holds them all.
+pub const CATALOGUE: [&str; 8] = [
+    FAULHABER_1331_006,
+    FAULHABER_1331_012,
+    FAULHABER_2232_012_BX4_S,
+    FAULHABER_2232_024_BX4_S,
+    FAULHABER_2232_012_BX4,
+    FAULHABER_2232_024_BX4,
+    FAULHABER_2250_024_BX4_S,
+    FAULHABER_2250_024_BX4,
+];
+
 /// A Real parameter: (name, unit, min, max, editable, default, comment).
 fn real(name: &str, unit: &str, min: Option<f64>, max: Option<f64>, editable: bool, default: Option<f64>, comment: &str) -> ParameterDraft {
     ParameterDraft {
@@ -363,12 +387,14 @@ pub fn library() -> Result<Library, Vec<Issue>> {
             Err(e) => issues.extend(e.into_iter().map(|i| Issue::new(format!("seed class {}: {}", draft.name, i.field), i.message))),
         }
     }
-    for (id, class_id, name, source, values) in instances() {
+    let all =
+        instances().into_iter().map(|(id, class, name, source, values)| (id, class, name, source.to_string(), values)).chain(catalogue());
+    for (id, class_id, name, source, values) in all {
         let Some(class) = lib.class(class_id) else {
             issues.push(Issue::new(format!("seed instance {name}"), format!("no seed class {class_id}")));
             continue;
         };
-        let draft = InstanceDraft { name: name.to_string(), source: source.to_string(), values };
+        let draft = InstanceDraft { name: name.to_string(), source, values };
         match check_instance(id, class, &draft) {
             Ok(i) => lib.instances.push(i),
             Err(e) => issues.extend(e.into_iter().map(|i| Issue::new(format!("seed instance {name}: {}", i.field), i.message))),
@@ -379,4 +405,194 @@ pub fn library() -> Result<Library, Vec<Issue>> {
     }
     lib.sort();
     Ok(lib)
+}
+
+/// The FAULHABER DC-Micromotor series 1331 … SR data sheet (one page, lines 1–29).
+const FAULHABER_1331_DOC: &str = "Document: FAULHABER data sheet \"DC-Micromotors, Precious Metal Commutation, 3,2 mNm, Series 1331 … SR\" (https://paperzz.com/doc/7782699/3-2-mnm-dc-micromotors), data sheet table lines 1–29.";
+
+/// The FAULHABER manual of the 2232 … BX4 S and 2250 … BX4 S series, chapter 7 Technical Data.
+const FAULHABER_BX4_DOC: &str = "FAULHABER technical manual of the Brushless DC-Servomotor series 2232 … BX4 S / 2250 … BX4 S (as published at https://manualshive.com/ru/manual/faulhaber/2232-bx4s-series/3671951), chapter 7 Technical Data";
+
+/// (id, class id, name, source, values), the source made from the document's words.
+type CatalogueInstance = (&'static str, &'static str, &'static str, String, Map<String, Json>);
+
+/// Catalogue instances: values exactly as the datasheet prints them, with the line each one is.
+fn catalogue() -> Vec<CatalogueInstance> {
+    let not_peak = |stall: &str| {
+        format!("T_peak missing: FAULHABER prints no short-time torque limit, only the stall torque {stall} at the nominal voltage (a point of the speed-torque line, not a permitted load), so the peak check is not evaluated.")
+    };
+    let sr = |winding: &str, col: &str, r: &str, l: &str, k: &str, j: &str, u: &str, i: &str, stall: &str| {
+        format!(
+            "FAULHABER DC-Micromotor 1331 T {winding} SR (brushed, precious metal commutation). {FAULHABER_1331_DOC} Values (column {col}): V_max = line 1 nominal voltage {u} V; R = line 2 terminal resistance {r} Ω; k = line 11 torque constant {k} mNm/A; L = line 14 rotor inductance {l} µH; J = line 16 rotor inertia {j} gcm²; w_max = line 27 speed up to 12 000 rpm; T_nom = line 28 torque up to (thermal limit, recommended continuous value) 3,2 mNm; I_max = line 29 current up to (thermal limit) {i} A. d = 0: the data sheet prints only a (Coulomb) friction torque of 0,12 mNm (line 8), no viscous coefficient, and d = 0 is the class's rule for that case. Tc = 0.001 s is the class's drive-setting default, not a motor value. {}",
+            not_peak(stall)
+        )
+    };
+    #[allow(clippy::too_many_arguments)]
+    let bx4 = |name: &str,
+               section: &str,
+               col: &str,
+               r: &str,
+               l: &str,
+               k: &str,
+               j: &str,
+               cv: &str,
+               u: &str,
+               i: &str,
+               m: &str,
+               n: &str,
+               stall: &str| {
+        format!(
+            "FAULHABER Brushless DC-Servomotor {name} (block-commutated brushless, modelled as a DC motor with the phase-phase values). {FAULHABER_BX4_DOC}, {section}, operating data table. Values (column {col}): V_max = nominal voltage {u} V; R = terminal resistance phase-phase {r} Ω; d = friction torque, dynamic {cv} mNm/rpm; k = torque constant {k} mNm/A; L = terminal inductance phase-phase {l} µH; J = rotor inertia {j} gcm²; w_max = speed up to {n} rpm; T_nom = torque up to (recommended continuous value at 5 000 rpm, thermal resistance Rth2 not reduced) {m} mNm; I_max = current up to (same conditions) {i} A. Tc = 0.001 s is the class's drive-setting default, not a motor value. {}",
+            not_peak(stall)
+        )
+    };
+    let p40 = "7.2 \"Motor 2232 … BX4 with encoder IE3\", page 40";
+    let p46 = "7.5 \"Motor 2250 … BX4 without attachment\", page 46";
+    #[allow(clippy::too_many_arguments)]
+    let dc = |r: f64, l: f64, k: f64, j: f64, d: Option<f64>, u: f64, i: f64, m: f64, n: f64| {
+        let mut v = json!({
+            "R": {"value": r, "unit": "Ohm"},
+            "L": {"value": l, "unit": "uH"},
+            "k": {"value": k, "unit": "mNm/A"},
+            "J": {"value": j, "unit": "g.cm2"},
+            "d": 0,
+            "V_max": {"value": u, "unit": "V"},
+            "I_max": {"value": i, "unit": "A"},
+            "Tc": 0.001,
+            "T_nom": {"value": m, "unit": "mNm"},
+            "w_max": {"value": n, "unit": "rpm"}
+        });
+        if let Some(d) = d {
+            v["d"] = json!({"value": d, "unit": "mNm/rpm"});
+        }
+        values(v)
+    };
+    vec![
+        (
+            FAULHABER_1331_006,
+            DC_MOTOR,
+            "Faulhaber 1331 T 006 SR",
+            sr("006", "1331 T 006 SR", "2,83", "70", "5,35", "0,71", "6", "0,81", "11,20 mNm"),
+            dc(2.83, 70.0, 5.35, 0.71, None, 6.0, 0.81, 3.2, 12000.0),
+        ),
+        (
+            FAULHABER_1331_012,
+            DC_MOTOR,
+            "Faulhaber 1331 T 012 SR",
+            sr("012", "1331 T 012 SR", "13,7", "310", "11,4", "0,67", "12", "0,37", "9,90 mNm"),
+            dc(13.7, 310.0, 11.4, 0.67, None, 12.0, 0.37, 3.2, 12000.0),
+        ),
+        (
+            FAULHABER_2232_012_BX4_S,
+            DC_MOTOR,
+            "Faulhaber 2232 S 012 BX4 S with encoder IE3",
+            bx4(
+                "2232 S 012 BX4 S with encoder IE3",
+                p40,
+                "2232 S 012 BX4 S",
+                "3.5",
+                "130",
+                "8.14",
+                "4.2",
+                "5.5·10⁻⁵",
+                "12",
+                "0.99",
+                "7",
+                "16 700",
+                "27.3 mNm",
+            ),
+            dc(3.5, 130.0, 8.14, 4.2, Some(5.5e-5), 12.0, 0.99, 7.0, 16700.0),
+        ),
+        (
+            FAULHABER_2232_024_BX4_S,
+            DC_MOTOR,
+            "Faulhaber 2232 S 024 BX4 S with encoder IE3",
+            bx4(
+                "2232 S 024 BX4 S with encoder IE3",
+                p40,
+                "2232 S 024 BX4 S",
+                "12.4",
+                "470",
+                "15.50",
+                "4.2",
+                "5.5·10⁻⁵",
+                "24",
+                "0.52",
+                "7",
+                "16 700",
+                "29.4 mNm",
+            ),
+            dc(12.4, 470.0, 15.5, 4.2, Some(5.5e-5), 24.0, 0.52, 7.0, 16700.0),
+        ),
+        (
+            FAULHABER_2232_012_BX4,
+            DC_MOTOR,
+            "Faulhaber 2232 S 012 BX4 with encoder IE3",
+            bx4(
+                "2232 S 012 BX4 with encoder IE3",
+                p40,
+                "2232 S 012 BX4",
+                "3.5",
+                "120",
+                "16.50",
+                "5.2",
+                "1.5·10⁻⁴",
+                "12",
+                "0.95",
+                "13",
+                "10 500",
+                "55.7 mNm",
+            ),
+            dc(3.5, 120.0, 16.5, 5.2, Some(1.5e-4), 12.0, 0.95, 13.0, 10500.0),
+        ),
+        (
+            FAULHABER_2232_024_BX4,
+            DC_MOTOR,
+            "Faulhaber 2232 S 024 BX4 with encoder IE3",
+            bx4(
+                "2232 S 024 BX4 with encoder IE3",
+                p40,
+                "2232 S 024 BX4",
+                "12.4",
+                "440",
+                "31.40",
+                "5.2",
+                "1.5·10⁻⁴",
+                "24",
+                "0.50",
+                "13",
+                "10 500",
+                "59.9 mNm",
+            ),
+            dc(12.4, 440.0, 31.4, 5.2, Some(1.5e-4), 24.0, 0.5, 13.0, 10500.0),
+        ),
+        (
+            FAULHABER_2250_024_BX4_S,
+            DC_MOTOR,
+            "Faulhaber 2250 S 024 BX4 S",
+            bx4(
+                "2250 S 024 BX4 S",
+                p46,
+                "2250 S 024 BX4 S",
+                "5.9",
+                "250",
+                "21.1",
+                "5.3",
+                "1.4·10⁻⁴",
+                "24",
+                "0.79",
+                "14",
+                "12 300",
+                "84,7 mNm",
+            ),
+            dc(5.9, 250.0, 21.1, 5.3, Some(1.4e-4), 24.0, 0.79, 14.0, 12300.0),
+        ),
+        (
+            FAULHABER_2250_024_BX4,
+            DC_MOTOR,
+            "Faulhaber 2250 S 024 BX4",
+            bx4("2250 S 024 BX4", p46, "2250 S 024 BX4", "5.9", "240", "36.9", "10", "2.4·10⁻⁴", "24", "0.74", "23", "9 000", "149 mNm"),
+            dc(5.9, 240.0, 36.9, 10.0, Some(2.4e-4), 24.0, 0.74, 23.0, 9000.0),
+        ),
+    ]
 }

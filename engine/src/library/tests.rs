@@ -327,7 +327,8 @@ fn the_seed_is_valid_and_ids_are_unique() {
         assert!(ids.insert(id.clone()), "{id} twice");
     }
     let motors = lib.instances.iter().filter(|i| i.class_id == seed::DC_MOTOR).count();
-    assert!(motors >= 3, "{motors} motors of our own class");
+    assert_eq!(motors, 12, "motors of our own class: 4 of the first seed and 8 catalogue motors");
+    assert_eq!(lib.instances.len(), 17, "instances: 9 of the first seed and 8 catalogue motors");
     for i in &lib.instances {
         assert!(!i.source.is_empty(), "{} has a source", i.name);
         let class = lib.class(&i.class_id).expect("class");
@@ -362,6 +363,83 @@ fn the_seed_is_valid_and_ids_are_unique() {
             assert_eq!(p.editable, should, "{}.{}", c.name, p.name);
         }
     }
+}
+
+/// The makers a catalogue source may name.
+const MAKERS: [&str; 9] = ["FAULHABER", "maxon", "Portescap", "Nanotec", "Harmonic Drive", "Neugart", "Bosch Rexroth", "HIWIN", "THK"];
+
+/// Why a catalogue instance's source is not good enough, if it is not: it names a maker, a
+/// document (a URL) and a page, table or line; says for every value it has which datasheet line it
+/// is (`R = ...`) and for every datasheet value it lacks why (`T_peak missing: ...`).
+fn catalogue_source_problem(lib: &Library, i: &Instance) -> Option<String> {
+    let s = &i.source;
+    if s.chars().count() < 200 {
+        return Some(format!("{}: source too short ({} characters)", i.name, s.chars().count()));
+    }
+    if !MAKERS.iter().any(|m| s.contains(m)) {
+        return Some(format!("{}: source names no maker", i.name));
+    }
+    if !s.contains("Document") && !s.contains("manual") && !s.contains("catalog") {
+        return Some(format!("{}: source names no document", i.name));
+    }
+    if !s.contains("https://") {
+        return Some(format!("{}: source has no URL of the document", i.name));
+    }
+    if !["page ", "table", "line "].iter().any(|w| s.contains(w)) {
+        return Some(format!("{}: source names no page, table or line", i.name));
+    }
+    let class = lib.class(&i.class_id)?;
+    for p in &class.parameters {
+        let has = i.value(&p.name).is_some();
+        if has && !s.contains(&format!("{} = ", p.name)) {
+            return Some(format!("{}: the source does not say where {} comes from", i.name, p.name));
+        }
+        if !has && p.datasheet && !s.contains(&format!("{} missing: ", p.name)) {
+            return Some(format!("{}: the source does not say why {} is missing", i.name, p.name));
+        }
+    }
+    None
+}
+
+/// Every catalogue instance carries its source: maker, document, page, and a line per value.
+#[test]
+fn every_catalogue_value_has_a_source() {
+    let lib = seed::library().expect("seed");
+    for id in seed::CATALOGUE {
+        let i = lib.instances.iter().find(|i| i.id == id).unwrap_or_else(|| panic!("{id} in the seed"));
+        assert_eq!(catalogue_source_problem(&lib, i), None);
+    }
+    // Mutations: a blank source, one without its URL, one value's line dropped.
+    let i = lib.instances.iter().find(|i| i.id == seed::FAULHABER_2250_024_BX4).expect("2250");
+    let blank = Instance { source: String::new(), ..i.clone() };
+    assert!(catalogue_source_problem(&lib, &blank).expect("blank").contains("too short"));
+    let no_url = Instance { source: i.source.replace("https://", "at "), ..i.clone() };
+    assert!(catalogue_source_problem(&lib, &no_url).expect("no URL").contains("URL"));
+    let no_k = Instance { source: i.source.replace("k = ", "k is "), ..i.clone() };
+    assert!(catalogue_source_problem(&lib, &no_k).expect("no k").contains("where k comes from"));
+    let no_reason = Instance { source: i.source.replace("T_peak missing: ", ""), ..i.clone() };
+    assert!(catalogue_source_problem(&lib, &no_reason).expect("no reason").contains("why T_peak is missing"));
+}
+
+/// Catalogue values as printed, in SI units (one motor per document).
+#[test]
+fn catalogue_values_are_the_datasheets() {
+    let lib = seed::library().expect("seed");
+    let get = |id: &str, p: &str| lib.instances.iter().find(|i| i.id == id).and_then(|i| i.value(p)).and_then(Value::as_f64);
+    let close = |a: Option<f64>, b: f64| a.is_some_and(|a| (a - b).abs() <= 1e-12 * b.abs());
+    let m = seed::FAULHABER_1331_012;
+    assert!(close(get(m, "R"), 13.7) && close(get(m, "L"), 310e-6) && close(get(m, "k"), 0.0114) && close(get(m, "J"), 0.67e-7));
+    assert!(
+        close(get(m, "I_max"), 0.37) && close(get(m, "T_nom"), 0.0032) && close(get(m, "w_max"), 12000.0 * std::f64::consts::PI / 30.0)
+    );
+    assert_eq!(get(m, "T_peak"), None);
+    assert_eq!(get(m, "d"), Some(0.0));
+    let m = seed::FAULHABER_2250_024_BX4;
+    assert!(close(get(m, "R"), 5.9) && close(get(m, "L"), 240e-6) && close(get(m, "k"), 0.0369) && close(get(m, "J"), 1e-6));
+    assert!(close(get(m, "d"), 2.4e-7 * 30.0 / std::f64::consts::PI) && close(get(m, "T_nom"), 0.023));
+    // The datasheet's own consistency: the mechanical time constant R·J/k² it prints (4.3 ms).
+    let tau = get(m, "R").unwrap_or(0.0) * get(m, "J").unwrap_or(0.0) / get(m, "k").unwrap_or(1.0).powi(2);
+    assert!((tau - 4.3e-3).abs() < 0.05e-3, "{tau}");
 }
 
 /// Every seeded class is a class the Modelica generator knows, with exactly its parameters

@@ -461,9 +461,81 @@ pub async fn seed_if_empty(store: &Store) -> Result<bool, StoreError> {
     })?;
     let plan = ImportPlan { classes: seed.classes, instances: seed.instances, ..ImportPlan::default() };
     apply_plan(&mut tx, &plan).await?;
+    for i in &plan.instances {
+        mark_offered(&mut tx, &i.id).await?;
+    }
     tx.commit().await?;
     tracing::info!(classes = plan.classes.len(), instances = plan.instances.len(), "seeded the motor library");
     Ok(true)
+}
+
+async fn mark_offered(conn: &mut AnyConnection, id: &str) -> Result<(), StoreError> {
+    sqlx::query(&sql(Engine::of(conn), "INSERT INTO library_seed_offered (id) VALUES (?1) ON CONFLICT(id) DO NOTHING"))
+        .bind(id)
+        .execute(&mut *conn)
+        .await?;
+    Ok(())
+}
+
+/// Brings a library seeded by an earlier seed the seed instances it has not been offered yet
+/// (`library_seed_offered`, migration 0011): each is inserted when its fixed id is absent, its
+/// class exists (its values carried over to the class as the installation has it,
+/// [`library::migrate_instance`]) and its name is free in the class; otherwise it is skipped and
+/// logged. Either way it is recorded as offered, so an instance the user deletes is not brought
+/// back, and an existing row is never written. Returns the number inserted.
+pub async fn seed_new_instances(store: &Store) -> Result<usize, StoreError> {
+    let seed = library::seed::library().map_err(|issues| {
+        let text: Vec<String> = issues.iter().map(|i| format!("{}: {}", i.field, i.message)).collect();
+        corrupt(format!("the built-in seed library is invalid: {}", text.join("; ")))
+    })?;
+    let mut tx = begin(store).await?;
+    let offered: Vec<(String,)> = sqlx::query_as("SELECT id FROM library_seed_offered").fetch_all(&mut *tx).await?;
+    let offered: std::collections::HashSet<String> = offered.into_iter().map(|(id,)| id).collect();
+    let current = load_library(&mut tx).await?;
+    let mut inserted = 0;
+    for i in seed.instances.iter().filter(|i| !offered.contains(&i.id)) {
+        if current.instances.iter().any(|c| c.id == i.id) {
+            mark_offered(&mut tx, &i.id).await?;
+            continue;
+        }
+        let (Some(seed_class), Some(class)) = (seed.class(&i.class_id), current.class(&i.class_id)) else {
+            tracing::warn!(instance = %i.name, "seed instance not added: its class is not in the library");
+            mark_offered(&mut tx, &i.id).await?;
+            continue;
+        };
+        if current.instances.iter().any(|c| c.class_id == i.class_id && c.name == i.name) {
+            tracing::warn!(instance = %i.name, "seed instance not added: its name is taken in its class");
+            mark_offered(&mut tx, &i.id).await?;
+            continue;
+        }
+        match library::migrate_instance(seed_class, class, i) {
+            Ok(carried) => {
+                sqlx::query(&sql(
+                    Engine::of(&tx),
+                    "INSERT INTO library_instances (id, class_id, name, values_json, source) VALUES (?1, ?2, ?3, ?4, ?5)
+                     ON CONFLICT(id) DO NOTHING",
+                ))
+                .bind(&carried.id)
+                .bind(&carried.class_id)
+                .bind(&carried.name)
+                .bind(encode_values(&carried.values))
+                .bind(&carried.source)
+                .execute(&mut *tx)
+                .await?;
+                inserted += 1;
+            }
+            Err(issues) => {
+                let text: Vec<String> = issues.iter().map(|x| format!("{}: {}", x.field, x.message)).collect();
+                tracing::warn!(instance = %i.name, problems = %text.join("; "), "seed instance not added: it does not fit its class as changed here");
+            }
+        }
+        mark_offered(&mut tx, &i.id).await?;
+    }
+    tx.commit().await?;
+    if inserted > 0 {
+        tracing::info!(instances = inserted, "added new seed instances to the motor library");
+    }
+    Ok(inserted)
 }
 
 #[cfg(test)]
@@ -572,6 +644,55 @@ mod tests {
         let data = sql.split_once("DEFAULT 0;").expect("the ALTER TABLE").1;
         sqlx::raw_sql(data).execute(&store.pool).await.expect("migrate");
         assert_eq!(export(&store).await.expect("export"), new);
+    }
+
+    /// An installation seeded with the first seed (nine instances, one since deleted by its user,
+    /// one changed) receives the catalogue instances once, and nothing it had is rewritten or
+    /// brought back.
+    #[tokio::test]
+    async fn an_old_seed_receives_the_new_instances_once() {
+        let (_dir2, fresh) = store().await;
+        let (_dir, store) = store().await;
+        seed_if_empty(&store).await.expect("seed");
+        let new = export(&store).await.expect("export");
+        // Back to the first seed, as migration 0011 finds it: catalogue rows absent, nothing offered.
+        for id in seed::CATALOGUE {
+            sqlx::query(&store.pool.sql("DELETE FROM library_instances WHERE id = ?1"))
+                .bind(id)
+                .execute(&store.pool)
+                .await
+                .expect("delete");
+        }
+        sqlx::query("DELETE FROM library_seed_offered").execute(&store.pool).await.expect("offered");
+        let sql = include_str!("../../../migrations/sqlite/0011_library_seed_offered.sql");
+        let data = sql.split_once(");\n").expect("the CREATE TABLE").1;
+        sqlx::raw_sql(data).execute(&store.pool).await.expect("migrate");
+        // The user deleted one first-seed instance and renamed another.
+        assert_eq!(delete_instance(&store, seed::FAULHABER_1331).await.expect("delete"), Removal::Deleted);
+        let r = update_instance(&store, seed::MAXON_RE40, |_, old| Ok(Instance { name: "my RE 40".into(), ..old.clone() }))
+            .await
+            .expect("rename");
+        assert!(matches!(r, Change::Done(_)));
+        let before = export(&store).await.expect("before");
+        assert_eq!(seed_new_instances(&store).await.expect("upgrade"), seed::CATALOGUE.len());
+        let after = export(&store).await.expect("after");
+        for i in &before.instances {
+            assert_eq!(after.instances.iter().find(|a| a.id == i.id), Some(i), "{} unchanged", i.name);
+        }
+        assert!(!after.instances.iter().any(|i| i.id == seed::FAULHABER_1331), "a deleted instance stays deleted");
+        for id in seed::CATALOGUE {
+            let want = new.instances.iter().find(|i| i.id == id).expect("seed");
+            assert_eq!(after.instances.iter().find(|i| i.id == id), Some(want));
+        }
+        assert_eq!(after.instances.len(), before.instances.len() + seed::CATALOGUE.len());
+        // Once only: deleting a catalogue instance and starting again does not bring it back.
+        assert_eq!(delete_instance(&store, seed::FAULHABER_2250_024_BX4).await.expect("delete"), Removal::Deleted);
+        assert_eq!(seed_new_instances(&store).await.expect("again"), 0);
+        assert!(get_instance(&store, seed::FAULHABER_2250_024_BX4).await.expect("get").is_none());
+        // A fresh installation has been offered everything: nothing to add.
+        seed_if_empty(&fresh).await.expect("seed");
+        assert_eq!(seed_new_instances(&fresh).await.expect("fresh"), 0);
+        assert_eq!(export(&fresh).await.expect("export"), seed::library().expect("seed"));
     }
 
     #[tokio::test]
