@@ -403,6 +403,22 @@ def dae_seeds():
     write("dae", "truncated.dae", dae_doc("", dae_geometry(poly), node)[:700])
 
 
+def urdf_tree_seeds():
+    """Byte strings for `urdf_tree` (12 bytes a link): a revolute chain, a branching tree with
+    a prismatic and a floating joint, degenerate axes and masses, a mimic, and a loop joint."""
+    chain = b"".join(bytes([i, 1, 0, 0, 64, 0, 0, 32, 16, 8, 32, 0]) for i in range(6))
+    write("urdf_tree", "chain.bin", chain)
+    tree = bytes([0, 1, 64, 0, 0, 10, 0, 0, 16, 8, 0, 0,
+                  0, 3, 0, 64, 0, 0, 10, 0, 32, 4, 8, 0,
+                  1, 4, 0, 0, 0, 0, 0, 20, 8, 8, 0, 0,
+                  2, 5, 0, 0, 64, 5, 5, 5, 0, 0, 0, 0])
+    write("urdf_tree", "tree.bin", tree)
+    write("urdf_tree", "degenerate.bin", bytes([0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0] * 3))
+    write("urdf_tree", "mimic.bin", bytes([0, 1, 0, 0, 64, 16, 0, 0, 16, 8, 0, 0,
+                                           1, 201, 0, 0, 64, 16, 0, 64, 16, 8, 0, 0]))
+    write("urdf_tree", "loop.bin", chain[:48] + bytes([0, 3]))
+
+
 def main():
     if os.path.isdir(SEEDS):
         shutil.rmtree(SEEDS)
@@ -417,6 +433,7 @@ def main():
     mat_seeds()
     live_seeds()
     dae_seeds()
+    urdf_tree_seeds()
     for t in sorted(os.listdir(SEEDS)):
         files = os.listdir(os.path.join(SEEDS, t))
         size = sum(os.path.getsize(os.path.join(SEEDS, t, f)) for f in files)

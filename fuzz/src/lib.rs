@@ -13,7 +13,7 @@ use cad2mo_engine::pipeline::{
 pub type Target = (&'static str, fn(&[u8]));
 
 /// The targets by name, as `fuzz/regressions/<name>/` and `cargo fuzz run <name>` call them.
-pub const TARGETS: [Target; 9] = [
+pub const TARGETS: [Target; 10] = [
     ("xml", xml),
     ("stl", stl),
     ("vrml", vrml),
@@ -23,6 +23,7 @@ pub const TARGETS: [Target; 9] = [
     ("live", live),
     ("urdf", urdf),
     ("dae", dae),
+    ("urdf_tree", urdf_tree),
 ];
 
 /// A URDF -> `front::urdf::parse`; when it parses, the whole conversion of a bundle holding just
@@ -81,6 +82,13 @@ pub fn mat(data: &[u8]) {
     }
     let scene = Scene::find(&t);
     let _ = scene.stream(&t);
+    // What the service stores: only a file whose every value is finite, and then its summary
+    // must survive JSON (a non-finite number would not).
+    if t.check_finite("fuzz.mat").is_ok() {
+        let summary = results::standalone(&t);
+        let json = serde_json::to_string(&summary).expect("a finite result's summary serialises");
+        serde_json::from_str::<results::Summary>(&json).expect("a finite result's summary reads back");
+    }
 }
 
 /// A live view datagram -> `live::decode`, then the signature check and the poses, as the relay
@@ -259,4 +267,71 @@ pub fn non_finite_tokens(mo: &str) -> Vec<usize> {
         }
     }
     out
+}
+
+/// A URDF built from the bytes, so that the fuzzer explores structures rather than syntax:
+/// every 12 bytes are one link hanging from an earlier link (or the base) by a joint of a type,
+/// axis (zero allowed), origin and rotation the bytes choose, with a mass and inertia the bytes
+/// choose (zero and degenerate allowed); a joint byte may also make it a mimic of the previous
+/// joint, and the last bytes may close a Drake loop joint between two links. The conversion
+/// may refuse it (errors are fine); it must not panic, and what it accepts is finite.
+pub fn urdf_tree(data: &[u8]) {
+    let text = urdf_of_bytes(data);
+    let Ok(bundle) = Bundle::from_files("fuzz", [("robot.urdf".to_string(), text.into_bytes())]) else { return };
+    let opts = pipeline::Options { write_shapes: false, ..Default::default() };
+    if let Ok(out) = pipeline::convert(&bundle, &opts) {
+        for b in &out.report.bodies {
+            assert!(b.mass.is_finite(), "a converted mass is not finite");
+        }
+    }
+}
+
+/// The URDF text `urdf_tree` converts (at most 64 links).
+pub fn urdf_of_bytes(data: &[u8]) -> String {
+    use std::fmt::Write as _;
+    const KINDS: [&str; 6] = ["fixed", "revolute", "continuous", "prismatic", "floating", "planar"];
+    let signed = |b: u8| f64::from(b as i8) / 64.0;
+    let mut links = String::from("  <link name=\"base\"/>\n");
+    let mut joints = String::new();
+    let chunks: Vec<&[u8]> = data.chunks_exact(12).take(64).collect();
+    for (i, c) in chunks.iter().enumerate() {
+        let parent = if c[0] as usize % (i + 1) == 0 { "base".to_string() } else { format!("l{}", c[0] as usize % (i + 1) - 1) };
+        let kind = KINDS[c[1] as usize % KINDS.len()];
+        let (mass, inertia) = (f64::from(c[8]) / 16.0, f64::from(c[9]) / 256.0);
+        let _ = writeln!(
+            links,
+            "  <link name=\"l{i}\"><inertial><mass value=\"{mass}\"/><origin xyz=\"{} 0 0\"/><inertia ixx=\"{inertia}\" iyy=\"{inertia}\" izz=\"{}\" ixy=\"{}\" ixz=\"0\" iyz=\"0\"/></inertial></link>",
+            signed(c[10]),
+            inertia * 2.0,
+            signed(c[11]) / 64.0,
+        );
+        let limit =
+            if kind == "revolute" || kind == "prismatic" { "<limit lower=\"-1\" upper=\"1\" effort=\"10\" velocity=\"1\"/>" } else { "" };
+        let mimic =
+            if c[1] >= 200 && i > 0 { format!("<mimic joint=\"j{}\" multiplier=\"{}\"/>", i - 1, signed(c[7])) } else { String::new() };
+        let _ = writeln!(
+            joints,
+            "  <joint name=\"j{i}\" type=\"{kind}\"><parent link=\"{parent}\"/><child link=\"l{i}\"/><origin xyz=\"{} {} {}\" rpy=\"{} {} {}\"/><axis xyz=\"{} {} {}\"/>{limit}{mimic}</joint>",
+            signed(c[5]),
+            signed(c[6]),
+            signed(c[7]) / 4.0,
+            signed(c[2]) * 3.0,
+            signed(c[3]) * 3.0,
+            signed(c[4]) * 3.0,
+            signed(c[2]).round(),
+            signed(c[3]).round(),
+            signed(c[4]),
+        );
+    }
+    let rest = &data[chunks.len() * 12..];
+    if let [a, b, ..] = rest {
+        if !chunks.is_empty() {
+            let (a, b) = (*a as usize % chunks.len(), *b as usize % chunks.len());
+            let _ = writeln!(
+                joints,
+                "  <loop_joint name=\"loop\" type=\"revolute\"><axis xyz=\"0 0 1\"/><link1 link=\"l{a}\" xyz=\"0 0 0\" rpy=\"0 0 0\"/><link2 link=\"l{b}\" xyz=\"0 0 0\" rpy=\"0 0 0\"/></loop_joint>"
+            );
+        }
+    }
+    format!("<?xml version=\"1.0\"?>\n<robot name=\"fuzz\">\n{links}{joints}</robot>\n")
 }
