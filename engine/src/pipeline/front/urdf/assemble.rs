@@ -88,12 +88,33 @@ fn residual(loops: &[LoopSpec], pose: &[Isometry3<f64>]) -> DVector<f64> {
 /// Largest loop violation accepted as closed (m, or rad for the axis terms).
 pub(super) const CLOSED: f64 = 1e-12;
 
-/// Joint values closing every loop, nearest to zero; `Err(violation)` when Gauss-Newton does not
-/// get below [`CLOSED`] (the loops cannot close near the zero configuration).
-pub(super) fn assemble(nlinks: usize, joints: &[TreeJoint], order: &[usize], loops: &[LoopSpec]) -> Result<Vec<f64>, f64> {
+/// Gauss-Newton iterations per group of coupled loops.
+const ITERATIONS: usize = 100;
+
+/// Most assembly work, in units of one link pose composed (or one residual row) per Jacobian
+/// column evaluated plus one multiply-add of the pseudo-inverse's decomposition, summed over the
+/// iterations of every group (about 2 s in a release build). Many independent loops (a gripper's
+/// four-bars) cost little each; what is refused is a loop across a very long chain or many loops
+/// coupled through one chain.
+pub(super) const MAX_ASSEMBLY_WORK: u64 = 50_000_000;
+
+/// Why the loops were not closed.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) enum NotClosed {
+    /// Gauss-Newton stopped above [`CLOSED`] (the largest violation left).
+    Open(f64),
+    /// The next iteration would pass [`MAX_ASSEMBLY_WORK`]: `work` units were needed.
+    TooCostly { work: u64 },
+}
+
+/// Joint values closing every loop, nearest to zero; [`NotClosed::Open`] when Gauss-Newton does
+/// not get below [`CLOSED`] (the loops cannot close near the zero configuration).
+///
+/// Loops that share no movable joint on their paths to the root are independent (neither moves
+/// the other's links), so each group of coupled loops is solved on its own over the joints it
+/// depends on: the work is the sum of the groups', not the square of all of them.
+pub(super) fn assemble(nlinks: usize, joints: &[TreeJoint], order: &[usize], loops: &[LoopSpec]) -> Result<Vec<f64>, NotClosed> {
     let mut q = vec![0.0; joints.len()];
-    // Unknowns: movable joints on the path from either loop link up to (not past) their common
-    // ancestor.
     let parent_joint = {
         let mut pj = vec![None; nlinks];
         for (k, j) in joints.iter().enumerate() {
@@ -114,46 +135,122 @@ pub(super) fn assemble(nlinks: usize, joints: &[TreeJoint], order: &[usize], loo
         }
         out
     };
-    let mut vars: Vec<usize> = Vec::new();
-    for l in loops {
-        let (pa, pb) = (ancestors(l.a), ancestors(l.b));
-        for k in pa.iter().filter(|k| !pb.contains(k)).chain(pb.iter().filter(|k| !pa.contains(k))) {
-            if joints[*k].motion != Motion::None && !vars.contains(k) {
-                vars.push(*k);
+    let paths: Vec<(Vec<usize>, Vec<usize>)> = loops.iter().map(|l| (ancestors(l.a), ancestors(l.b))).collect();
+    // Groups: loops joined when a movable joint is an ancestor of a link of each.
+    let mut group: Vec<usize> = (0..loops.len()).collect();
+    fn find(group: &mut [usize], mut i: usize) -> usize {
+        while group[i] != i {
+            group[i] = group[group[i]];
+            i = group[i];
+        }
+        i
+    }
+    let mut owner: Vec<Option<usize>> = vec![None; joints.len()];
+    for (i, (pa, pb)) in paths.iter().enumerate() {
+        for &k in pa.iter().chain(pb) {
+            if joints[k].motion == Motion::None {
+                continue;
+            }
+            match owner[k] {
+                Some(o) => {
+                    let (ro, ri) = (find(&mut group, o), find(&mut group, i));
+                    group[ro.max(ri)] = ro.min(ri);
+                }
+                None => owner[k] = Some(i),
             }
         }
     }
-    vars.sort_unstable();
-    let violation = |q: &[f64]| residual(loops, &poses(nlinks, joints, order, q));
-    let mut r = violation(&q);
-    for _ in 0..100 {
-        if r.amax() <= CLOSED || vars.is_empty() {
-            break;
-        }
-        let h = 1e-6;
-        let mut jac = DMatrix::zeros(r.len(), vars.len());
-        for (c, &k) in vars.iter().enumerate() {
-            let mut qp = q.clone();
-            qp[k] += h;
-            let mut qm = q.clone();
-            qm[k] -= h;
-            jac.set_column(c, &((violation(&qp) - violation(&qm)) / (2.0 * h)));
-        }
-        let Ok(pinv) = jac.pseudo_inverse(1e-10) else { break };
-        let mut step = -(pinv * &r);
-        let norm = step.norm();
-        if norm > 0.5 {
-            step *= 0.5 / norm;
-        }
-        for (c, &k) in vars.iter().enumerate() {
-            q[k] += step[c];
-        }
-        r = violation(&q);
+    let mut members: Vec<Vec<usize>> = vec![Vec::new(); loops.len()];
+    for i in 0..loops.len() {
+        let r = find(&mut group, i);
+        members[r].push(i);
     }
-    if r.amax() <= CLOSED {
+    let position = {
+        let mut at = vec![usize::MAX; joints.len()];
+        for (i, &k) in order.iter().enumerate() {
+            at[k] = i;
+        }
+        at
+    };
+    let mut pose = vec![Isometry3::identity(); nlinks];
+    let mut work = 0u64;
+    let mut worst = 0.0f64;
+    let mut mark = vec![false; joints.len()];
+    for ids in members.iter().filter(|m| !m.is_empty()) {
+        let specs: Vec<LoopSpec> = ids.iter().map(|&i| loops[i].clone()).collect();
+        // Unknowns: movable joints on the path from either loop link up to (not past) their
+        // common ancestor. The joints to evaluate: every ancestor of a loop link, parents first.
+        let mut vars: Vec<usize> = Vec::new();
+        let mut eval: Vec<usize> = Vec::new();
+        for &i in ids {
+            let (pa, pb) = &paths[i];
+            for &k in pb {
+                mark[k] = true;
+            }
+            let in_a: Vec<usize> = pa.iter().copied().filter(|&k| !mark[k]).collect();
+            for &k in pb {
+                mark[k] = false;
+            }
+            for &k in pa {
+                mark[k] = true;
+            }
+            let in_b: Vec<usize> = pb.iter().copied().filter(|&k| !mark[k]).collect();
+            for &k in pa {
+                mark[k] = false;
+            }
+            vars.extend(in_a.into_iter().chain(in_b).filter(|&k| joints[k].motion != Motion::None));
+            eval.extend(pa.iter().chain(pb).copied().filter(|&k| position[k] != usize::MAX));
+        }
+        vars.sort_unstable();
+        vars.dedup();
+        eval.sort_unstable_by_key(|&k| position[k]);
+        eval.dedup();
+        let rows = 6 * specs.len() as u64;
+        let v = vars.len() as u64;
+        let iteration = (2 * v + 1) * (eval.len() as u64 + specs.len() as u64) + rows * v * rows.min(v);
+        let mut violation = |q: &[f64]| {
+            for &k in &eval {
+                let j = &joints[k];
+                let p = j.parent.map_or(Isometry3::identity(), |p| pose[p]);
+                pose[j.child] = p * j.origin * motion(j.motion, &j.axis, q[k]);
+            }
+            residual(&specs, &pose)
+        };
+        let mut r = violation(&q);
+        for _ in 0..ITERATIONS {
+            if r.amax() <= CLOSED || vars.is_empty() {
+                break;
+            }
+            work = work.saturating_add(iteration);
+            if work > MAX_ASSEMBLY_WORK {
+                return Err(NotClosed::TooCostly { work });
+            }
+            let h = 1e-6;
+            let mut jac = DMatrix::zeros(r.len(), vars.len());
+            for (c, &k) in vars.iter().enumerate() {
+                let mut qp = q.clone();
+                qp[k] += h;
+                let mut qm = q.clone();
+                qm[k] -= h;
+                jac.set_column(c, &((violation(&qp) - violation(&qm)) / (2.0 * h)));
+            }
+            let Ok(pinv) = jac.pseudo_inverse(1e-10) else { break };
+            let mut step = -(pinv * &r);
+            let norm = step.norm();
+            if norm > 0.5 {
+                step *= 0.5 / norm;
+            }
+            for (c, &k) in vars.iter().enumerate() {
+                q[k] += step[c];
+            }
+            r = violation(&q);
+        }
+        worst = worst.max(r.amax());
+    }
+    if worst <= CLOSED {
         Ok(q)
     } else {
-        Err(r.amax())
+        Err(NotClosed::Open(worst))
     }
 }
 

@@ -64,6 +64,9 @@ const MAX_NODES: u32 = 2_000_000;
 /// At most this many `<link>`s (so a chain at most this deep): every later stage walks the
 /// tree iteratively, but its work and memory grow with the link count.
 pub const MAX_LINKS: usize = 10_000;
+/// At most this many `<loop_joint>`s: each closes one independent loop, and the loop analysis
+/// takes at most [`crate::pipeline::passes::loops::MAX_LOOPS`].
+pub const MAX_LOOP_JOINTS: usize = crate::pipeline::passes::loops::MAX_LOOPS;
 
 /// A fatal problem in a URDF file: where, in which element, and what.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -332,7 +335,17 @@ impl<'d, 'i> Reader<'d, 'i> {
                     links.push(self.link(n, &materials, &mut warnings)?)
                 }
                 ("joint", _) => joints.push(self.joint(n, drake, &mut warnings)?),
-                ("loop_joint", _) => loops.push(n),
+                ("loop_joint", _) => {
+                    // Each loop joint closes one independent loop; refused here, before the
+                    // assembly and the rank tests whose work grows with the loops' count.
+                    if loops.len() == MAX_LOOP_JOINTS {
+                        return Err(self.err(
+                            n,
+                            format!("more than {MAX_LOOP_JOINTS} loop joints (the limit on independent closed loops; a real mechanism has a few)"),
+                        ));
+                    }
+                    loops.push(n)
+                }
                 ("material", false) | ("gazebo", _) | ("transmission", _) | ("sensor", _) => {}
                 ("inertial", false) => {
                     warnings.push(self.warning(n, "urdf-element-ignored", "an <inertial> outside any <link> belongs to no body; ignored"))
@@ -707,7 +720,18 @@ impl<'d, 'i> Reader<'d, 'i> {
                         }
                     }
                 }
-                Err(v) => warnings.push(self.warning(
+                Err(assemble::NotClosed::TooCostly { work }) => {
+                    return Err(self.err(
+                        loops[0],
+                        format!(
+                            "closing the {} loop joints needs more than {} units of assembly work (the limit is {}: a loop across a very long chain, or many loops coupled through one)",
+                            loop_specs.len(),
+                            work,
+                            assemble::MAX_ASSEMBLY_WORK
+                        ),
+                    ))
+                }
+                Err(assemble::NotClosed::Open(v)) => warnings.push(self.warning(
                     loops[0],
                     "urdf-loops-open",
                     format!("the loop joints cannot be closed near the zero configuration (violation {v:.3e}); the model keeps the zero configuration and each loop joint its offset"),

@@ -297,3 +297,55 @@ fn a_mesh_named_by_many_links_counts_every_use_against_the_bundle_budget() {
         "{e}"
     );
 }
+
+/// `n` parallelogram four-bars on one base, each built 0.1 rad open and closed by a loop joint.
+fn four_bars(n: usize) -> String {
+    let mut s = format!(r#"<robot name="r"><link name="g">{INERTIAL}</link>"#);
+    for k in 0..n {
+        let z = 3 * k;
+        s += &format!(
+            r#"<link name="a{k}">{INERTIAL}</link><link name="b{k}">{INERTIAL}</link><link name="c{k}">{INERTIAL}</link>
+            <joint name="ja{k}" type="revolute"><parent link="g"/><child link="a{k}"/><origin xyz="0 0 {z}"/><axis xyz="0 0 1"/></joint>
+            <joint name="jb{k}" type="revolute"><parent link="a{k}"/><child link="b{k}"/><origin xyz="0 1 0" rpy="0 0 0.1"/><axis xyz="0 0 1"/></joint>
+            <joint name="jc{k}" type="revolute"><parent link="g"/><child link="c{k}"/><origin xyz="2 0 {z}"/><axis xyz="0 0 1"/></joint>
+            <loop_joint name="q{k}" type="revolute"><link1 link="b{k}" xyz="2 0 0"/><link2 link="c{k}" xyz="0 1 0"/><axis xyz="0 0 1"/></loop_joint>"#
+        );
+    }
+    s + "</robot>"
+}
+
+#[test]
+fn more_loop_joints_than_the_loop_analysis_takes_are_refused_before_assembly() {
+    // 300 open four-bars: refused at the 257th loop joint, before Gauss-Newton (which took a
+    // minute for all of them together) and the rank tests.
+    let e = err(&four_bars(MAX_LOOP_JOINTS + 44));
+    assert!(e.starts_with("t.urdf:") && e.contains("loop_joint \"q256\"") && e.contains("more than 256 loop joints"), "{e}");
+}
+
+#[test]
+fn independent_loops_are_assembled_one_group_at_a_time() {
+    // 256 four-bars, each open: closed group by group, within the assembly budget.
+    let u = ok(&four_bars(MAX_LOOP_JOINTS));
+    assert!(u.warnings.iter().any(|w| w.code == "urdf-loops-assembled"));
+    for k in [0, 255] {
+        let close = u.model.joints.iter().find(|j| j.cad_name == format!("q{k}")).expect("loop joint");
+        let (a, b) = (u.model.frame(close.base).pose, u.model.frame(close.follower).pose);
+        assert!((a.translation.vector - b.translation.vector).norm() < 1e-12);
+    }
+}
+
+#[test]
+fn a_loop_across_a_chain_too_long_to_assemble_is_refused_naming_the_limit() {
+    // One loop joint from the tip of a 6,000-link chain back to its base, open: one Gauss-Newton
+    // step evaluates the chain for each of its 6,000 joints: past the work limit before the first step.
+    let mut s = format!(r#"<robot name="r"><link name="l0">{INERTIAL}</link>"#);
+    for k in 1..6_000 {
+        s += &format!(
+            r#"<link name="l{k}">{INERTIAL}</link><joint name="j{k}" type="revolute"><parent link="l{}"/><child link="l{k}"/><origin xyz="0 0 0.001"/><axis xyz="0 1 0"/></joint>"#,
+            k - 1
+        );
+    }
+    s += r#"<loop_joint name="close" type="revolute"><link1 link="l5999" xyz="0 0 0"/><link2 link="l0" xyz="1 0 0"/><axis xyz="0 0 1"/></loop_joint></robot>"#;
+    let e = err(&s);
+    assert!(e.contains("loop_joint \"close\"") && e.contains(&format!("the limit is {}", assemble::MAX_ASSEMBLY_WORK)), "{e}");
+}

@@ -206,7 +206,13 @@ pub struct Sheet {
     work: u64,
     /// A* expansions spent so far: with the wires made, this bounds the next searches.
     spent: u64,
+    /// The lowest keep-out edge of the components placed (no component below it).
+    bottom: i32,
 }
+
+/// Spots [`Sheet::add`] tries for one component before it takes the first spot under
+/// everything placed (about 22 rings around the wanted spot).
+pub const SPOTS_PER_ADD: u64 = 2_000;
 
 /// Adds the open interval (a, b) to disjoint open intervals, merging what it overlaps.
 fn add_interval(map: &mut BTreeMap<i32, i32>, a: i32, b: i32) {
@@ -264,12 +270,21 @@ impl Sheet {
         let at = |x: i32, y: i32| Placed { x, y, half: want.half, flip: want.flip, class };
         let mut p = at(wx, wy);
         let step = 2 * GRID;
+        let mut tried = 0u64;
         'search: for ring in 0..10_000 {
             if ring == 0 {
+                tried += 1;
+                self.work += 1;
                 if self.free(&p.rect()) {
                     break;
                 }
                 continue;
+            }
+            if tried >= SPOTS_PER_ADD {
+                // Past the budget: under everything placed so far, which is free by construction.
+                let y = (self.bottom - MARGIN - want.half - MARGIN_TOP).div_euclid(GRID) * GRID;
+                p = at(wx, y.min(wy));
+                break;
             }
             // Down first (layouts grow downwards), then right, then up, then left.
             let r = ring * step;
@@ -289,6 +304,8 @@ impl Sheet {
             spots.sort_by_key(|(x, y)| ((x - wx).abs() + (y - wy).abs(), *y, *x));
             for (x, y) in spots {
                 let q = at(x, y);
+                tried += 1;
+                self.work += 1;
                 if self.free(&q.rect()) {
                     p = q;
                     break 'search;
@@ -299,6 +316,7 @@ impl Sheet {
         let i = self.rects.len();
         self.rects.push(r);
         let g = Self::keep_out(&r);
+        self.bottom = if i == 0 { g.y1 } else { self.bottom.min(g.y1) };
         for gx in floor_div(g.x1, GRID) + 1..=-floor_div(-g.x2, GRID) - 1 {
             add_interval(self.across_v.entry(gx).or_default(), g.y1, g.y2);
         }
@@ -315,10 +333,11 @@ impl Sheet {
         p
     }
 
-    /// The routing work done on this sheet so far (a sheet cloned from another starts with its
-    /// count): A* node expansions plus straight segments checked by fallback routes. Bounded by
-    /// [`SHEET_EXPANSIONS_PER_WIRE`] per wire plus a constant per wire for the fallbacks, so
-    /// it grows linearly with the wires whatever their lengths.
+    /// The layout work done on this sheet so far (a sheet cloned from another starts with its
+    /// count): spots tried for components (at most [`SPOTS_PER_ADD`] each), A* node expansions
+    /// and straight segments checked by fallback routes. Bounded by [`SHEET_EXPANSIONS_PER_WIRE`]
+    /// per wire plus a constant per wire for the fallbacks, so it grows linearly with the
+    /// components and wires whatever their lengths.
     pub fn work(&self) -> u64 {
         self.work
     }

@@ -208,3 +208,19 @@ fn declarations_may_start_with_inner() {
     assert!(!out.contains(extend::PLACEHOLDER), "{out}");
     assert_eq!(svg::read(&out).components.first().map(|c| c.name.as_str()), Some("collisionWorld"), "{out}");
 }
+
+#[test]
+fn hundreds_of_components_wanting_one_spot_are_placed_with_bounded_work() {
+    // 1,000 components that all want the same spot: each tries at most `SPOTS_PER_ADD` spots (and
+    // one ring more) before it stands under everything, so the work is linear in the count.
+    let mut s = Sheet::default();
+    let n = 1_000u64;
+    for k in 0..n {
+        s.add(&format!("c{k}"), Class::TwoPort, want(0, 0));
+    }
+    assert!(s.work() <= n * (SPOTS_PER_ADD + 8 * 30), "work {}", s.work());
+    let rects: Vec<Rect> = s.placed.values().map(Placed::rect).collect();
+    for (i, a) in rects.iter().enumerate() {
+        assert!(rects[i + 1..].iter().all(|b| !a.overlaps(b)), "{a:?} overlaps");
+    }
+}
