@@ -301,10 +301,10 @@ impl IntoResponse for ApiError {
     }
 }
 
-/// Runs blocking work (IO, conversion) off the async runtime.
+/// Runs blocking work (IO, conversion) off the async runtime: the use cases' helper with the
+/// routes' error type fixed, so closures need no annotation.
 pub async fn blocking<T: Send + 'static>(f: impl FnOnce() -> Result<T, ApiError> + Send + 'static) -> Result<T, ApiError> {
-    let span = tracing::Span::current();
-    tokio::task::spawn_blocking(move || span.in_scope(f)).await.map_err(|e| ApiError::Internal(e.into()))?
+    crate::service::blocking(f).await
 }
 
 #[cfg(test)]

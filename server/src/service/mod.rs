@@ -20,6 +20,17 @@ pub mod models;
 pub mod motions;
 pub mod results;
 
+/// Runs blocking work (file store, analysis, conversion) off the async runtime, in the caller's
+/// span; a task that panics is an internal error of the use case.
+pub(crate) async fn blocking<T, E>(f: impl FnOnce() -> Result<T, E> + Send + 'static) -> Result<T, E>
+where
+    T: Send + 'static,
+    E: From<anyhow::Error> + Send + 'static,
+{
+    let span = tracing::Span::current();
+    tokio::task::spawn_blocking(move || span.in_scope(f)).await.map_err(|e| E::from(e.into()))?
+}
+
 /// A field-level validation message: which input field (dotted path) and what is wrong with it.
 #[derive(Debug, Clone, Serialize, PartialEq)]
 pub struct FieldError {

@@ -15,6 +15,7 @@ use std::time::Duration;
 use serde_json::Value;
 use tokio::sync::Semaphore;
 
+use super::blocking;
 use super::export::{self, ExportError, ExportOptions, Summary};
 use crate::jobs::Jobs;
 use crate::store::blobs::Blobs;
@@ -69,12 +70,6 @@ pub struct Upload {
     pub bundle_name: String,
     pub name: Option<String>,
     pub options: ExportOptions,
-}
-
-/// Runs blocking work (file store, analysis) off the async runtime, in the caller's span.
-async fn blocking<T: Send + 'static>(f: impl FnOnce() -> Result<T, ModelError> + Send + 'static) -> Result<T, ModelError> {
-    let span = tracing::Span::current();
-    tokio::task::spawn_blocking(move || span.in_scope(f)).await.map_err(|e| ModelError::Internal(e.into()))?
 }
 
 /// Checks the bundle and stores its blob. Returns the upload, its blob hash and the model name

@@ -4,6 +4,7 @@
 
 use cad2mo_engine::results::{self, mat::Trajectory};
 
+use super::blocking;
 use crate::store::blobs::Blobs;
 use crate::store::results::ResultRow;
 use crate::store::{self, Store, StoreError};
@@ -41,11 +42,6 @@ impl TryFrom<ResultRow> for Stored {
     }
 }
 
-async fn blocking<T: Send + 'static>(f: impl FnOnce() -> Result<T, ResultError> + Send + 'static) -> Result<T, ResultError> {
-    let span = tracing::Span::current();
-    tokio::task::spawn_blocking(move || span.in_scope(f)).await.map_err(|e| ResultError::Internal(e.into()))?
-}
-
 /// Reads the file `name` (refused when it is not a finite result), summarises it with
 /// `summarise`, then stores the file and its row: nothing is stored for a refused file.
 pub async fn upload(
@@ -63,7 +59,7 @@ pub async fn upload(
         t.check_finite(&name).map_err(|e| unreadable(e.to_string()))?;
         let summary = summarise(&t, &name).map_err(unreadable)?;
         let sha = blobs.put(&bytes).map_err(|e| ResultError::Internal(e.into()))?;
-        Ok((name, bytes, summary, sha))
+        Ok::<_, ResultError>((name, bytes, summary, sha))
     })
     .await?;
     let summary_json = serde_json::to_string(&summary).map_err(|e| ResultError::Internal(e.into()))?;
