@@ -39,32 +39,22 @@ fn bench(c: &mut Criterion) {
                 controller: choice("cad2mo.Drives.Controllers.CascadePPI", &[("kp", 10.0)]),
                 reference: ReferenceSpec::Constant { value: 0.0 },
             };
-            let built = build_package(
-                &zip,
-                "hand.zip",
-                &ExportOptions::default(),
-                std::slice::from_ref(&drive),
-                &Default::default(),
-                &Default::default(),
-                &mut |_| {},
-            )
-            .expect("builds");
+            let build = || {
+                build_package(
+                    &zip,
+                    "hand.zip",
+                    &ExportOptions::default(),
+                    std::slice::from_ref(&drive),
+                    &Default::default(),
+                    &Default::default(),
+                    &mut |_| {},
+                )
+                .expect("builds")
+            };
+            let built = build();
             assert!(String::from_utf8_lossy(&built.report_json).contains(&format!("\"active\": [\n      \"{}\"", drive.joint)));
             g.throughput(Throughput::Bytes(zip.len() as u64));
-            g.bench_function("left_hand_package_with_a_drive", |b| {
-                b.iter(|| {
-                    build_package(
-                        &zip,
-                        "hand.zip",
-                        &ExportOptions::default(),
-                        std::slice::from_ref(&drive),
-                        &Default::default(),
-                        &Default::default(),
-                        &mut |_| {},
-                    )
-                    .expect("builds")
-                })
-            });
+            g.bench_function("left_hand_package_with_a_drive", |b| b.iter(build));
         }
     }
     g.finish();
