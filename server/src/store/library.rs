@@ -455,10 +455,7 @@ pub async fn seed_if_empty(store: &Store) -> Result<bool, StoreError> {
     if count > 0 {
         return Ok(false);
     }
-    let seed = library::seed::library().map_err(|issues| {
-        let text: Vec<String> = issues.iter().map(|i| format!("{}: {}", i.field, i.message)).collect();
-        corrupt(format!("the built-in seed library is invalid: {}", text.join("; ")))
-    })?;
+    let seed = seed_library()?;
     let plan = ImportPlan { classes: seed.classes, instances: seed.instances, ..ImportPlan::default() };
     apply_plan(&mut tx, &plan).await?;
     for i in &plan.instances {
@@ -467,6 +464,14 @@ pub async fn seed_if_empty(store: &Store) -> Result<bool, StoreError> {
     tx.commit().await?;
     tracing::info!(classes = plan.classes.len(), instances = plan.instances.len(), "seeded the motor library");
     Ok(true)
+}
+
+/// The built-in seed library (its own rules refusing it is a corrupt build, not bad input).
+fn seed_library() -> Result<Library, StoreError> {
+    library::seed::library().map_err(|issues| {
+        let text: Vec<String> = issues.iter().map(|i| format!("{}: {}", i.field, i.message)).collect();
+        corrupt(format!("the built-in seed library is invalid: {}", text.join("; ")))
+    })
 }
 
 async fn mark_offered(conn: &mut AnyConnection, id: &str) -> Result<(), StoreError> {
@@ -484,10 +489,7 @@ async fn mark_offered(conn: &mut AnyConnection, id: &str) -> Result<(), StoreErr
 /// logged. Either way it is recorded as offered, so an instance the user deletes is not brought
 /// back, and an existing row is never written. Returns the number inserted.
 pub async fn seed_new_instances(store: &Store) -> Result<usize, StoreError> {
-    let seed = library::seed::library().map_err(|issues| {
-        let text: Vec<String> = issues.iter().map(|i| format!("{}: {}", i.field, i.message)).collect();
-        corrupt(format!("the built-in seed library is invalid: {}", text.join("; ")))
-    })?;
+    let seed = seed_library()?;
     let mut tx = begin(store).await?;
     let offered: Vec<(String,)> = sqlx::query_as("SELECT id FROM library_seed_offered").fetch_all(&mut *tx).await?;
     let offered: std::collections::HashSet<String> = offered.into_iter().map(|(id,)| id).collect();
