@@ -362,7 +362,7 @@ fn ctx(state: &AppState) -> models::Ctx<'_> {
 
 impl From<Upload> for models::Upload {
     fn from(u: Upload) -> Self {
-        models::Upload { bundle: u.bundle.to_vec(), bundle_name: u.bundle_name, name: u.name, options: u.options }
+        models::Upload { bundle: Vec::from(u.bundle), bundle_name: u.bundle_name, name: u.name, options: u.options }
     }
 }
 

@@ -104,7 +104,7 @@ async fn upload(
 ) -> Result<Created, ApiError> {
     let (version, k) = super::motions::kinematic_at(&state, &model_id, Some(version)).await?;
     let stored =
-        service::results::upload(&state.store, &state.blobs, Some((&model_id, version)), up.name, up.bytes.to_vec(), move |t, name| {
+        service::results::upload(&state.store, &state.blobs, Some((&model_id, version)), up.name, Vec::from(up.bytes), move |t, name| {
             results::summarise(t, &k.mech, name).map(|(summary, _)| summary)
         })
         .await?;
@@ -114,7 +114,7 @@ async fn upload(
 /// A result of any Modelica model: read, summarised (its shapes and frames), stored.
 async fn upload_standalone(State(state): State<AppState>, up: ResultUpload) -> Result<Created, ApiError> {
     let stored =
-        service::results::upload(&state.store, &state.blobs, None, up.name, up.bytes.to_vec(), |t, _| Ok(results::standalone(t))).await?;
+        service::results::upload(&state.store, &state.blobs, None, up.name, Vec::from(up.bytes), |t, _| Ok(results::standalone(t))).await?;
     Ok(created(stored))
 }
 
