@@ -27,7 +27,26 @@ pub struct World {
     bodies: Vec<Option<Prepared>>,
 }
 
-fn prepared_part(p: &ConvexPart) -> Option<(Isometry3<f64>, SharedShape)> {
+/// True when `faces` enclose `pts` with outward normals and a volume (the orientation parry's
+/// own hulls have): then parry may take them as the part's hull as they are.
+pub(crate) fn outward_faces(pts: &[Point3<f64>], faces: &[[u32; 3]]) -> bool {
+    if faces.len() < 4 || faces.iter().flatten().any(|&i| i as usize >= pts.len()) {
+        return false;
+    }
+    let c = pts[0].coords;
+    let vol: f64 = faces
+        .iter()
+        .map(|t| {
+            let (a, b, d) = (pts[t[0] as usize].coords - c, pts[t[1] as usize].coords - c, pts[t[2] as usize].coords - c);
+            a.dot(&b.cross(&d))
+        })
+        .sum::<f64>()
+        / 6.0;
+    let (lo, hi) = pts.iter().fold((pts[0].coords, pts[0].coords), |(lo, hi), p| (lo.inf(&p.coords), hi.sup(&p.coords)));
+    vol > 1e-9 * (hi - lo).norm().powi(3)
+}
+
+pub(crate) fn prepared_part(p: &ConvexPart) -> Option<(Isometry3<f64>, SharedShape)> {
     let r = p.radius.max(0.0);
     let pts: Vec<Point3<f64>> = p.vertices.iter().map(|v| Point3::from(*v)).collect();
     if !pts.iter().all(|q| q.coords.iter().all(|c| c.is_finite())) || !r.is_finite() {
@@ -37,8 +56,17 @@ fn prepared_part(p: &ConvexPart) -> Option<(Isometry3<f64>, SharedShape)> {
         0 => None,
         1 => (r > 0.0).then(|| (Isometry3::from(Translation3::from(pts[0].coords)), SharedShape::ball(r))),
         2 => (r > 0.0).then(|| (Isometry3::identity(), SharedShape::capsule(pts[0], pts[1], r))),
-        _ if r > 0.0 => Some((Isometry3::identity(), SharedShape::round_convex_hull(&pts, r)?)),
-        _ => Some((Isometry3::identity(), SharedShape::convex_hull(&pts)?)),
+        // The part's hull faces are known: parry takes them as they are (no second quickhull,
+        // which was most of the cost of preparing a 2,000-body world); hull again only where
+        // parry does not accept them.
+        _ if r > 0.0 => {
+            let mesh = outward_faces(&pts, &p.faces).then(|| SharedShape::round_convex_mesh(pts.clone(), &p.faces, r)).flatten();
+            Some((Isometry3::identity(), mesh.or_else(|| SharedShape::round_convex_hull(&pts, r))?))
+        }
+        _ => {
+            let mesh = outward_faces(&pts, &p.faces).then(|| SharedShape::convex_mesh(pts.clone(), &p.faces)).flatten();
+            Some((Isometry3::identity(), mesh.or_else(|| SharedShape::convex_hull(&pts))?))
+        }
     }
 }
 

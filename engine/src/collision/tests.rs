@@ -531,3 +531,49 @@ fn decomposition_plan_lowers_resolution_with_triangles_and_gives_up() {
     assert_eq!(s.kind, ShapeKind::Hull);
     assert!(s.warnings.iter().any(|w| w.contains("exceeds its work budget")), "{:?}", s.warnings);
 }
+
+/// Parts prepared for distance queries from their own hull faces measure the same distances as
+/// parts hulled again by parry: boxes (also mirrored), cylinders, decompositions, capped hulls
+/// and the flat fallback; a part whose faces point inward is hulled again, not taken.
+#[test]
+fn parts_prepared_from_their_faces_measure_as_hulls() {
+    let (vs, ts) = box_mesh([-0.05, -0.02, -0.01], [0.05, 0.02, 0.03]);
+    let mirrored: Vec<[f64; 3]> = vs.iter().map(|v| [-v[0], v[1], v[2]]).collect();
+    let q = UnitQuaternion::from_euler_angles(0.3, 0.5, 0.7);
+    let rotated: Vec<[f64; 3]> = vs.iter().map(|v| (q * Vector3::from(*v)).into()).collect();
+    let flat = mesh(&[[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [0.0, 1.0, 0.0]], &[[0, 1, 2], [0, 2, 3]]);
+    let mut parts = Vec::new();
+    for m in [mesh(&vs, &ts), mesh(&mirrored, &ts), mesh(&rotated, &ts), cylinder_mesh(0.04, 0.2, 48), l_mesh(), flat] {
+        parts.extend(body_shape(&m, &opts()).parts);
+    }
+    let mut bumpy = uv_sphere([0.0, 0.0, 0.0], 0.1, 40, 80);
+    for (k, v) in bumpy.vertices.iter_mut().enumerate() {
+        let s = 1.0 + 0.02 * ((k * 7919 % 13) as f32 / 13.0);
+        *v = [v[0] * s, v[1] * s * 0.7, v[2] * s];
+    }
+    parts.extend(body_shape(&bumpy, &ShapeOptions { max_hull_vertices: 24, ..opts() }).parts);
+    let mut inward = parts[0].clone();
+    for f in &mut inward.faces {
+        f.swap(1, 2);
+    }
+    assert!(!super::check::outward_faces(&inward.vertices.iter().map(|v| nalgebra::Point3::from(*v)).collect::<Vec<_>>(), &inward.faces));
+    parts.push(inward);
+    let polytopes = parts.iter().filter(|p| p.vertices.len() > 2 && p.radius == 0.0).count();
+    assert!(polytopes >= 8, "{polytopes} polytope parts");
+    let mut rng = crate::mechanism::XorShift::new(3);
+    for p in &parts {
+        let Some((iso, mine)) = super::check::prepared_part(p) else { continue };
+        let pts: Vec<nalgebra::Point3<f64>> = p.vertices.iter().map(|v| nalgebra::Point3::from(*v)).collect();
+        let hull = match (pts.len(), p.radius) {
+            (0..=2, _) => continue,
+            (_, r) if r > 0.0 => parry3d_f64::shape::SharedShape::round_convex_hull(&pts, r).unwrap(),
+            _ => parry3d_f64::shape::SharedShape::convex_hull(&pts).unwrap(),
+        };
+        for _ in 0..200 {
+            let x = nalgebra::Point3::new(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5) * 0.6;
+            let a = mine.distance_to_point(&iso, &x, true);
+            let b = hull.distance_to_point(&Isometry3::identity(), &x, true);
+            assert!((a - b).abs() < 1e-9, "{a} vs {b} at {x:?} for a part of {} vertices", pts.len());
+        }
+    }
+}
