@@ -372,16 +372,22 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
     };
     let package_name = if package_name == "P" { "CadModel".to_string() } else { package_name };
     obs.progress(Stage::Modelica, 0, 1);
-    let pkg = back::modelica::write(
-        &a.model,
-        &a.validated,
-        &back::modelica::Options {
-            package_name: package_name.clone(),
-            gravity,
-            converter_version: VERSION.to_string(),
-            name_hints: opts.name_hints.clone(),
-        },
-    );
+    // The bodies' collision shapes need no names: they are made (on all cores) while this
+    // thread writes the Modelica text.
+    let (pkg, shapes) = std::thread::scope(|scope| {
+        let shapes = scope.spawn(|| back::collision_shapes::body_shapes(&a.model, &Default::default(), opts.shape_cache.as_deref()));
+        let pkg = back::modelica::write(
+            &a.model,
+            &a.validated,
+            &back::modelica::Options {
+                package_name: package_name.clone(),
+                gravity,
+                converter_version: VERSION.to_string(),
+                name_hints: opts.name_hints.clone(),
+            },
+        );
+        (pkg, shapes.join().unwrap_or_else(|e| std::panic::resume_unwind(e)))
+    });
     let mut report = report::build(report::ReportInput {
         model: &a.model,
         validated: &a.validated,
@@ -403,93 +409,109 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
     obs.progress(Stage::Collision, 0, 1);
     let names: Vec<String> = pkg.layout.names.as_ref().map(|n| n.bodies.clone()).unwrap_or_default();
     let joint_names: Vec<String> = pkg.layout.names.as_ref().map(|n| n.joints.clone()).unwrap_or_default();
-    let collision = back::collision_shapes::Collision::new(
-        &a.model,
-        &names,
-        &joint_names,
-        &opts.collision_edits,
-        &Default::default(),
-        opts.shape_cache.as_deref(),
-    );
+    let collision = back::collision_shapes::Collision::from_shapes(shapes, &a.model, &names, &joint_names, &opts.collision_edits);
     let (collision_report, collision_warnings) = collision.report(&a.model, &names);
     obs.progress(Stage::Collision, 1, 1);
     report.warnings.extend(collision_warnings);
     report.collision = Some(collision_report);
-    let drives = obs.drives(&report, &opts.drives);
+    // The shape files (collision parts, DXF and STL per body) and the MuJoCo and URDF exports
+    // depend on nothing below: they are written on other threads meanwhile.
     let mut files = pkg.files;
-    files.extend(back::modelica::mechatronics::components(&package_name));
-    let extras = obs.extras(
-        &observe::ModelView { model: &a.model, validated: &a.validated, layout: &pkg.layout, package_name: &package_name },
-        &drives,
-    );
-    // A live view frame carries at most MAX_BODIES bodies: larger models are written without one.
-    let bodies: &[String] = pkg.layout.names.as_ref().map(|n| n.bodies.as_slice()).unwrap_or_default();
-    let live =
-        opts.live.as_ref().filter(|_| (1..=back::modelica::mechatronics::live::MAX_BODIES).contains(&bodies.len())).map(|t| (t, bodies));
-    if opts.live.is_some() && live.is_none() {
-        report.warnings.push(Warning::new(
-            "live-view-omitted",
-            format!(
-                "{} bodies: a live view frame carries 1 to {}, so the package has no LiveView",
-                bodies.len(),
-                back::modelica::mechatronics::live::MAX_BODIES
-            ),
-            "",
-        ));
-    }
-    let parts = collision.parts();
-    let contacts = back::modelica::mechatronics::collision::declarations(&package_name, &names, &parts, &collision.allowed_pairs());
-    files.extend(back::modelica::mechatronics::mechatronics(
-        &package_name,
-        &drives,
-        &extras.motions,
-        &back::modelica::mechatronics::Additions {
-            live,
-            collision: contacts.as_ref(),
-            diagram: Some(&pkg.layout.diagram),
-            experiment: Some(&back::modelica::Experiment::for_model(&a.model, gravity)),
-        },
-        &back::modelica::provenance(&a.model, VERSION),
-    )?);
-    if !extras.motions.is_empty() {
-        if let Some((_, order)) = files.iter_mut().find(|(p, _)| *p == format!("{package_name}/package.order")) {
-            order.extend_from_slice(b"Motions\n");
+    std::thread::scope(|scope| {
+        let (model, validated, layout, collision, names, pkg_name) =
+            (&a.model, &a.validated, &pkg.layout, &collision, &names, &package_name);
+        let shape_files = opts.write_shapes.then(|| scope.spawn(move || collision.files(pkg_name, names)));
+        let mesh_files = opts.write_shapes.then(|| {
+            scope.spawn(move || {
+                let dir = format!("{pkg_name}/Resources/Shapes");
+                let mut out = Vec::new();
+                for (stem, body) in layout.shapes.iter().zip(&model.bodies) {
+                    let (Some(stem), Some(mesh)) = (stem, &body.mesh) else { continue };
+                    out.push((format!("{dir}/{stem}.dxf"), back::dxf::write(mesh, body.display_rgb(), stem)));
+                    out.push((format!("{dir}/{stem}.stl"), back::stl::write_binary(mesh, stem)));
+                }
+                out
+            })
+        });
+        let exports = scope.spawn(move || {
+            let mjcf = back::mjcf::file(model, validated, layout, pkg_name, gravity, opts.write_shapes);
+            let urdf = back::urdf::file(model, validated, layout, pkg_name, opts.write_shapes);
+            vec![mjcf, back::urdf::relative_file(&urdf, pkg_name), urdf]
+        });
+        let join = |h: std::thread::ScopedJoinHandle<'_, _>| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e));
+        let drives = obs.drives(&report, &opts.drives);
+        files.extend(back::modelica::mechatronics::components(&package_name));
+        let extras = obs.extras(
+            &observe::ModelView { model: &a.model, validated: &a.validated, layout: &pkg.layout, package_name: &package_name },
+            &drives,
+        );
+        // A live view frame carries at most MAX_BODIES bodies: larger models are written without one.
+        let bodies: &[String] = pkg.layout.names.as_ref().map(|n| n.bodies.as_slice()).unwrap_or_default();
+        let live = opts
+            .live
+            .as_ref()
+            .filter(|_| (1..=back::modelica::mechatronics::live::MAX_BODIES).contains(&bodies.len()))
+            .map(|t| (t, bodies));
+        if opts.live.is_some() && live.is_none() {
+            report.warnings.push(Warning::new(
+                "live-view-omitted",
+                format!(
+                    "{} bodies: a live view frame carries 1 to {}, so the package has no LiveView",
+                    bodies.len(),
+                    back::modelica::mechatronics::live::MAX_BODIES
+                ),
+                "",
+            ));
         }
-    }
-    if let Some((_, order)) = files.iter_mut().find(|(p, _)| *p == format!("{package_name}/Components/package.order")) {
-        if live.is_some() {
-            order.extend_from_slice(b"Visualization\n");
+        let parts = collision.parts();
+        let contacts = back::modelica::mechatronics::collision::declarations(&package_name, &names, &parts, &collision.allowed_pairs());
+        files.extend(back::modelica::mechatronics::mechatronics(
+            &package_name,
+            &drives,
+            &extras.motions,
+            &back::modelica::mechatronics::Additions {
+                live,
+                collision: contacts.as_ref(),
+                diagram: Some(&pkg.layout.diagram),
+                experiment: Some(&back::modelica::Experiment::for_model(&a.model, gravity)),
+            },
+            &back::modelica::provenance(&a.model, VERSION),
+        )?);
+        if !extras.motions.is_empty() {
+            if let Some((_, order)) = files.iter_mut().find(|(p, _)| *p == format!("{package_name}/package.order")) {
+                order.extend_from_slice(b"Motions\n");
+            }
         }
-        if contacts.is_some() {
-            order.extend_from_slice(b"Collision\n");
+        if let Some((_, order)) = files.iter_mut().find(|(p, _)| *p == format!("{package_name}/Components/package.order")) {
+            if live.is_some() {
+                order.extend_from_slice(b"Visualization\n");
+            }
+            if contacts.is_some() {
+                order.extend_from_slice(b"Collision\n");
+            }
         }
-    }
-    files.extend(extras.files);
-    // The package documentation lists the report's findings and the drives.
-    if let Some((_, text)) = files.iter_mut().find(|(p, _)| *p == format!("{package_name}/package.mo")) {
-        *text = back::modelica::doc::package_file(&report, &drives, &back::modelica::provenance(&a.model, VERSION), VERSION).into_bytes();
-    }
-    if opts.write_shapes {
-        files.extend(collision.files(&package_name, &names));
-        let shapes: Vec<usize> = (0..pkg.layout.shapes.len())
-            .filter(|&i| pkg.layout.shapes[i].is_some() && a.model.bodies.get(i).is_some_and(|b| b.mesh.is_some()))
-            .collect();
-        for (k, &i) in shapes.iter().enumerate() {
-            obs.progress(Stage::Shapes, k, shapes.len());
-            let (Some(stem), Some(mesh)) = (&pkg.layout.shapes[i], &a.model.bodies[i].mesh) else { continue };
-            let rgb = a.model.bodies[i].display_rgb();
-            let dir = format!("{package_name}/Resources/Shapes");
-            files.push((format!("{dir}/{stem}.dxf"), back::dxf::write(mesh, rgb, stem)));
-            files.push((format!("{dir}/{stem}.stl"), back::stl::write_binary(mesh, stem)));
+        files.extend(extras.files);
+        // The package documentation lists the report's findings and the drives.
+        if let Some((_, text)) = files.iter_mut().find(|(p, _)| *p == format!("{package_name}/package.mo")) {
+            *text =
+                back::modelica::doc::package_file(&report, &drives, &back::modelica::provenance(&a.model, VERSION), VERSION).into_bytes();
         }
-    }
-    // MuJoCo model beside the Modelica package (back/mjcf).
-    files.push(back::mjcf::file(&a.model, &a.validated, &pkg.layout, &package_name, gravity, opts.write_shapes));
-    let urdf = back::urdf::file(&a.model, &a.validated, &pkg.layout, &package_name, opts.write_shapes);
-    files.push(back::urdf::relative_file(&urdf, &package_name));
-    files.push(urdf);
-    obs.progress(Stage::Report, 0, 1);
-    let json = serde_json::to_vec_pretty(&report).map_err(|e| ConvertError::Options(e.to_string()))?;
-    files.push(("report.json".to_string(), json));
-    Ok(Output { files, report, shapes: collision.counts })
+        if let (Some(shape_files), Some(mesh_files)) = (shape_files, mesh_files) {
+            files.extend(join(shape_files));
+            // Two files (DXF, STL) per body with a shape, a step each as they join the package.
+            let meshes = join(mesh_files);
+            let n = meshes.len() / 2;
+            for (k, file) in meshes.into_iter().enumerate() {
+                if k % 2 == 0 {
+                    obs.progress(Stage::Shapes, k / 2, n);
+                }
+                files.push(file);
+            }
+        }
+        files.extend(join(exports));
+        obs.progress(Stage::Report, 0, 1);
+        let json = serde_json::to_vec_pretty(&report).map_err(|e| ConvertError::Options(e.to_string()))?;
+        files.push(("report.json".to_string(), json));
+        Ok(Output { files, report, shapes: collision.counts })
+    })
 }

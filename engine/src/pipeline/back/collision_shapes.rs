@@ -176,7 +176,18 @@ impl Collision {
         opts: &ShapeOptions,
         cache: Option<&dyn ShapeCache>,
     ) -> Collision {
-        let (shapes, counts) = body_shapes(model, opts, cache);
+        Collision::from_shapes(body_shapes(model, opts, cache), model, names, joint_names, edits)
+    }
+
+    /// [`Collision::new`] with the bodies' shapes already made by [`body_shapes`] (which needs
+    /// no names, so a conversion makes them while it writes the Modelica text).
+    pub fn from_shapes(
+        (shapes, counts): (Vec<Option<BodyShape>>, ShapeCounts),
+        model: &Model,
+        names: &[String],
+        joint_names: &[String],
+        edits: &AllowedEdits,
+    ) -> Collision {
         let body_of = |f| match model.frame(f).owner {
             FrameOwner::Body(b) => Some(b.index()),
             FrameOwner::Ground(_) => None,
