@@ -464,7 +464,7 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
             ));
         }
         let parts = collision.parts();
-        let contacts = back::modelica::mechatronics::collision::declarations(&package_name, &names, &parts, &collision.allowed_pairs());
+        let contacts = back::modelica::mechatronics::collision::declarations(&package_name, names, &parts, &collision.allowed_pairs());
         files.extend(back::modelica::mechatronics::mechatronics(
             &package_name,
             &drives,
