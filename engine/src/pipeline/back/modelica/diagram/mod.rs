@@ -183,6 +183,29 @@ pub struct Wire {
     pub points: Vec<(f64, f64)>,
 }
 
+/// A set of grid cells in tiles of 16 × 16 bits: a wire's cells are neighbours, so marking a
+/// route and looking cells up during a search touch few tiles (a hash map of single cells was
+/// most of the routing time on large sheets: a cache miss per cell).
+#[derive(Clone, Debug, Default)]
+struct UsedCells {
+    tiles: GridMap<(i32, i32), [u64; 4]>,
+}
+
+impl UsedCells {
+    fn at(p: (i32, i32)) -> ((i32, i32), usize, u64) {
+        let bit = ((p.0 & 15) + 16 * (p.1 & 15)) as usize;
+        ((p.0 >> 4, p.1 >> 4), bit / 64, 1u64 << (bit % 64))
+    }
+    fn insert(&mut self, p: (i32, i32)) {
+        let (tile, word, mask) = Self::at(p);
+        self.tiles.entry(tile).or_default()[word] |= mask;
+    }
+    fn contains(&self, p: (i32, i32)) -> bool {
+        let (tile, word, mask) = Self::at(p);
+        self.tiles.get(&tile).is_some_and(|t| t[word] & mask != 0)
+    }
+}
+
 /// The components of a diagram and their wires.
 #[derive(Clone, Debug, Default)]
 pub struct Sheet {
@@ -195,7 +218,7 @@ pub struct Sheet {
     rects: Vec<Rect>,
     pub wires: Vec<Wire>,
     /// Cells wires already use (for spreading later wires apart).
-    used: GridMap<(i32, i32), u8>,
+    used: UsedCells,
     /// Per vertical grid line (x / GRID): the keep-out boxes the line runs strictly inside, as
     /// disjoint open y intervals (start to end); a straight segment is checked in log time.
     across_v: GridMap<i32, BTreeMap<i32, i32>>,

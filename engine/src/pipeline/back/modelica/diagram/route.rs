@@ -230,7 +230,7 @@ fn search(sheet: &Sheet, s: P, t: P, win: Rect, limit: u64) -> (Option<Vec<P>>, 
                 continue;
             }
             let mut step = 1 + if dir != 4 && dir != d { BEND } else { 0 };
-            if sheet.used.contains_key(&(nx, ny)) {
+            if sheet.used.contains((nx, ny)) {
                 step += SHARED;
             }
             let next = nc * 5 + d as usize;
@@ -385,8 +385,7 @@ pub(super) fn route(sheet: &mut Sheet, a: End, b: End) -> Vec<(f64, f64)> {
         return simplify(pts);
     };
     for p in &path {
-        let n = sheet.used.entry(*p).or_insert(0);
-        *n = n.saturating_add(1);
+        sheet.used.insert(*p);
     }
     let mut pts = sa;
     pts.extend(path.iter().map(|&(x, y)| (f64::from(x * GRID), f64::from(y * GRID))));
