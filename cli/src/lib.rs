@@ -229,9 +229,48 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     result
 }
 
+/// Warnings printed per code before the rest of that code is counted in one line (every one
+/// stays in report.json).
+const WARNINGS_PER_CODE: usize = 20;
+
 fn print_warnings(warnings: &[pipeline::ir::Warning]) {
+    for line in warning_lines(warnings) {
+        eprintln!("{line}");
+    }
+}
+
+/// The lines [`print_warnings`] prints: each warning up to [`WARNINGS_PER_CODE`] of its code,
+/// then one line per code for the rest.
+fn warning_lines(warnings: &[pipeline::ir::Warning]) -> Vec<String> {
+    let mut seen: std::collections::BTreeMap<&str, usize> = std::collections::BTreeMap::new();
+    let mut lines = Vec::new();
     for w in warnings {
-        eprintln!("warning[{}]: {}: {}", w.code, w.location, w.message);
+        let n = seen.entry(w.code).or_default();
+        *n += 1;
+        if *n <= WARNINGS_PER_CODE {
+            lines.push(format!("warning[{}]: {}: {}", w.code, w.location, w.message));
+        }
+    }
+    for (code, n) in seen.into_iter().filter(|(_, n)| *n > WARNINGS_PER_CODE) {
+        lines.push(format!("warning[{code}]: {} more like these (every one is in report.json)", n - WARNINGS_PER_CODE));
+    }
+    lines
+}
+
+#[cfg(test)]
+mod warning_tests {
+    use cad2mo_engine::pipeline::ir::Warning;
+
+    /// Routine warnings are counted after the first ones of their code; rare codes all show.
+    #[test]
+    fn many_warnings_of_one_code_are_counted() {
+        let mut ws: Vec<Warning> =
+            (0..1333).map(|i| Warning::new("joint-frames-misaligned", format!("joint {i}"), format!("t.xml:{i}"))).collect();
+        ws.push(Warning::new("interference", "a and b", "collision shapes"));
+        let lines = super::warning_lines(&ws);
+        assert_eq!(lines.len(), super::WARNINGS_PER_CODE + 2, "{lines:?}");
+        assert!(lines.iter().any(|l| l.starts_with("warning[interference]: collision shapes: a and b")));
+        assert_eq!(lines.last().unwrap(), "warning[joint-frames-misaligned]: 1313 more like these (every one is in report.json)");
     }
 }
 
