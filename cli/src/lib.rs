@@ -257,23 +257,6 @@ fn warning_lines(warnings: &[pipeline::ir::Warning]) -> Vec<String> {
     lines
 }
 
-#[cfg(test)]
-mod warning_tests {
-    use cad2mo_engine::pipeline::ir::Warning;
-
-    /// Routine warnings are counted after the first ones of their code; rare codes all show.
-    #[test]
-    fn many_warnings_of_one_code_are_counted() {
-        let mut ws: Vec<Warning> =
-            (0..1333).map(|i| Warning::new("joint-frames-misaligned", format!("joint {i}"), format!("t.xml:{i}"))).collect();
-        ws.push(Warning::new("interference", "a and b", "collision shapes"));
-        let lines = super::warning_lines(&ws);
-        assert_eq!(lines.len(), super::WARNINGS_PER_CODE + 2, "{lines:?}");
-        assert!(lines.iter().any(|l| l.starts_with("warning[interference]: collision shapes: a and b")));
-        assert_eq!(lines.last().unwrap(), "warning[joint-frames-misaligned]: 1313 more like these (every one is in report.json)");
-    }
-}
-
 pub fn main() -> ExitCode {
     let cli = match Cli::try_parse() {
         Ok(c) => c,
@@ -586,4 +569,21 @@ fn progress(done: usize, total: usize) {
     let width = 30;
     let filled = (done * width).checked_div(total).unwrap_or(width);
     eprint!("\r[{}{}] {done}/{total}", "#".repeat(filled), " ".repeat(width - filled));
+}
+
+#[cfg(test)]
+mod warning_tests {
+    use cad2mo_engine::pipeline::ir::Warning;
+
+    /// Routine warnings are counted after the first ones of their code; rare codes all show.
+    #[test]
+    fn many_warnings_of_one_code_are_counted() {
+        let mut ws: Vec<Warning> =
+            (0..1333).map(|i| Warning::new("joint-frames-misaligned", format!("joint {i}"), format!("t.xml:{i}"))).collect();
+        ws.push(Warning::new("interference", "a and b", "collision shapes"));
+        let lines = super::warning_lines(&ws);
+        assert_eq!(lines.len(), super::WARNINGS_PER_CODE + 2, "{lines:?}");
+        assert!(lines.iter().any(|l| l.starts_with("warning[interference]: collision shapes: a and b")));
+        assert_eq!(lines.last().unwrap(), "warning[joint-frames-misaligned]: 1313 more like these (every one is in report.json)");
+    }
 }
