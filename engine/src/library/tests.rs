@@ -328,7 +328,22 @@ fn the_seed_is_valid_and_ids_are_unique() {
     }
     let motors = lib.instances.iter().filter(|i| i.class_id == seed::DC_MOTOR).count();
     assert_eq!(motors, 12, "motors of our own class: 4 of the first seed and 8 catalogue motors");
-    assert_eq!(lib.instances.len(), 17, "instances: 9 of the first seed and 8 catalogue motors");
+    assert_eq!(lib.instances.len(), 55, "instances: 9 of the first seed, 8 catalogue motors and 38 catalogue gear units");
+    // Every instance beyond the first seed's nine is a catalogue instance (held to its sources).
+    let first = [
+        seed::MAXON_RE40,
+        seed::MAXON_EC45_FLAT,
+        seed::FAULHABER_1331,
+        seed::FAULHABER_3564,
+        seed::MAXON_RE40_MSL,
+        seed::GEAR_100,
+        seed::MAXON_GP42C_74,
+        seed::BALL_SCREW_16X5,
+        seed::ROBOT_R3_CONTROLLER,
+    ];
+    for i in &lib.instances {
+        assert!(first.contains(&i.id.as_str()) != seed::CATALOGUE.contains(&i.id.as_str()), "{} is first seed or catalogue", i.name);
+    }
     for i in &lib.instances {
         assert!(!i.source.is_empty(), "{} has a source", i.name);
         let class = lib.class(&i.class_id).expect("class");
@@ -366,7 +381,8 @@ fn the_seed_is_valid_and_ids_are_unique() {
 }
 
 /// The makers a catalogue source may name.
-const MAKERS: [&str; 9] = ["FAULHABER", "maxon", "Portescap", "Nanotec", "Harmonic Drive", "Neugart", "Bosch Rexroth", "HIWIN", "THK"];
+const MAKERS: [&str; 10] =
+    ["FAULHABER", "maxon", "Portescap", "Nanotec", "Harmonic Drive", "Neugart", "Bosch Rexroth", "HIWIN", "THK", "Beckhoff"];
 
 /// Why a catalogue instance's source is not good enough, if it is not: it names a maker, a
 /// document (a URL) and a page, table or line; says for every value it has which datasheet line it
@@ -437,6 +453,22 @@ fn catalogue_values_are_the_datasheets() {
     let m = seed::FAULHABER_2250_024_BX4;
     assert!(close(get(m, "R"), 5.9) && close(get(m, "L"), 240e-6) && close(get(m, "k"), 0.0369) && close(get(m, "J"), 1e-6));
     assert!(close(get(m, "d"), 2.4e-7 * 30.0 / std::f64::consts::PI) && close(get(m, "T_nom"), 0.023));
+    // A gear unit per ratio (Beckhoff TP010 MF, ratio 7, clamping hub E = 19 mm): every value of
+    // its column, in SI units.
+    let g = seed::BECKHOFF_GEARS[7];
+    assert!(close(get(g, "ratio"), 7.0) && close(get(g, "eta"), 0.97) && close(get(g, "T_rated"), 81.0) && close(get(g, "T_peak"), 172.0));
+    assert!(close(get(g, "w_in_max"), 7500.0 * std::f64::consts::PI / 30.0) && close(get(g, "J_in"), 0.64e-4) && close(get(g, "m"), 3.8));
+    assert!(close(get(g, "backlash"), 3.0 * std::f64::consts::PI / 10800.0));
+    // Its neighbour at ratio 8 has its own ratings (no ratio of a family borrows another's).
+    let h = seed::BECKHOFF_GEARS[8];
+    assert!(close(get(h, "ratio"), 8.0) && close(get(h, "T_peak"), 126.0) && close(get(h, "T_rated"), 80.0));
+    let name = |id: &str| lib.instances.iter().find(|i| i.id == id).map(|i| i.name.clone()).unwrap_or_default();
+    assert_eq!(name(g), "Beckhoff TP010 MF i=7, clamping hub E = 19 mm");
+    // The last page's last column: NPT035 MF, ratio 10, hub G = 24 mm.
+    let z = seed::BECKHOFF_GEARS[37];
+    assert!(
+        close(get(z, "ratio"), 10.0) && close(get(z, "T_rated"), 110.0) && close(get(z, "T_peak"), 220.0) && close(get(z, "J_in"), 1.7e-4)
+    );
     // The datasheet's own consistency: the mechanical time constant R·J/k² it prints (4.3 ms).
     let tau = get(m, "R").unwrap_or(0.0) * get(m, "J").unwrap_or(0.0) / get(m, "k").unwrap_or(1.0).powi(2);
     assert!((tau - 4.3e-3).abs() < 0.05e-3, "{tau}");
@@ -564,16 +596,16 @@ fn import_updates_by_id_and_migrates_instances_not_in_the_file() {
     // A file with only the efficiency gear class, its eta no longer editable and a new
     // parameter with a default.
     let mut gear = current.class(seed::EFFICIENCY_GEAR).expect("gear").clone();
-    gear.parameters
-        .push(Parameter { default: Some(Value::Real(0.0)), ..param("backlash", ParamType::Real, "rad", Some(0.0), None, false) });
+    gear.parameters.push(Parameter { default: Some(Value::Real(0.0)), ..param("T_idle", ParamType::Real, "N.m", Some(0.0), None, false) });
     let text = xml::write(&Library { classes: vec![gear], instances: vec![] });
     let doc = xml::read(&text).expect("read");
     let plan = plan_import(&current, &doc).expect("plan");
     assert_eq!(plan.counts.classes_updated, 1);
     assert_eq!(plan.counts.classes_created, 0);
-    assert_eq!(plan.counts.instances_migrated, 1);
+    // The GP 42 C and the 38 catalogue gear units.
+    assert_eq!(plan.counts.instances_migrated, 39);
     let gp = plan.instances.iter().find(|i| i.id == seed::MAXON_GP42C_74).expect("migrated");
-    assert_eq!(gp.value("backlash"), Some(&Value::Real(0.0)));
+    assert_eq!(gp.value("T_idle"), Some(&Value::Real(0.0)));
 
     // The same class under another id but the same name collides.
     let mut twin = current.class(seed::IDEAL_GEAR).expect("gear").clone();
