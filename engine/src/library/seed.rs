@@ -99,8 +99,18 @@ pub const BECKHOFF_GEARS: [&str; 38] = [
     "4463a131-b551-45d5-9496-4e65917d870b",
 ];
 
+/// The maxon catalogue motors: EC 45 flat 30 W (12, 24, 36 V) and EC 45 flat 70 W (36, 48, 60 V).
+pub const MAXON_EC45_FLAT_MOTORS: [&str; 6] = [
+    "2d92b77d-262f-443b-beaa-f2561563bc3f",
+    "59013709-bdad-43e9-b8bc-c5b1169419cc",
+    "e9bd32e0-e445-4f7f-a2a2-bffd3eb020fa",
+    "a1b3f114-64b3-4919-bf15-ac51818261e5",
+    "12d8bee7-de2d-4a10-a4ef-24b121b08d2e",
+    "c8e0ff26-f568-402a-b244-dfae326a950a",
+];
+
 /// The catalogue instances of the seed (see above); `seed::library` holds them all.
-pub const CATALOGUE: [&str; 46] = concat(FAULHABER_MOTORS, BECKHOFF_GEARS);
+pub const CATALOGUE: [&str; 52] = concat::<14, 38, 52>(concat(FAULHABER_MOTORS, MAXON_EC45_FLAT_MOTORS), BECKHOFF_GEARS);
 
 /// `a` then `b`, in a constant.
 const fn concat<const A: usize, const B: usize, const C: usize>(a: [&'static str; A], b: [&'static str; B]) -> [&'static str; C] {
@@ -454,6 +464,7 @@ pub fn library() -> Result<Library, Vec<Issue>> {
     let all = instances().into_iter().map(|(id, class, name, source, values)| (id, class, name.to_string(), source.to_string(), values));
     let all = all
         .chain(catalogue().into_iter().map(|(id, class, name, source, values)| (id, class, name.to_string(), source, values)))
+        .chain(maxon_catalogue())
         .chain(gear_catalogue());
     for (id, class_id, name, source, values) in all {
         let Some(class) = lib.class(class_id) else {
@@ -870,6 +881,83 @@ fn gear_catalogue() -> Vec<(&'static str, &'static str, String, String, Map<Stri
             let name = format!("Beckhoff {} i={r}, clamping hub {}", p.series, p.hub);
             out.push((*id, EFFICIENCY_GEAR, name, source, values));
         }
+    }
+    out
+}
+
+/// One winding (column) of a maxon motor data table, every value as printed.
+struct MaxonColumn {
+    id: &'static str,
+    /// Line 1 nominal voltage, V.
+    u: &'static str,
+    /// Line 5 nominal torque, mNm; line 6 nominal current, A; line 7 stall torque, mNm.
+    t_nom: &'static str,
+    i_nom: &'static str,
+    stall: &'static str,
+    /// Lines 10-12: terminal resistance and inductance phase to phase (Ω, mH), torque constant (mNm/A).
+    r: &'static str,
+    l: &'static str,
+    k: &'static str,
+    /// Line 15 mechanical time constant, ms (printed; the column check R·J/k² uses it).
+    tau_m: &'static str,
+}
+
+/// The maxon EC 45 flat motors: the catalogue page of each, its columns, and what it lacks.
+fn maxon_catalogue() -> Vec<(&'static str, &'static str, String, String, Map<String, Json>)> {
+    let ids = MAXON_EC45_FLAT_MOTORS;
+    let w30 = [
+        MaxonColumn { id: ids[0], u: "12", t_nom: "55.5", i_nom: "2.03", stall: "241", r: "1.2", l: "0.56", k: "25.5", tau_m: "17.1" },
+        MaxonColumn { id: ids[1], u: "24", t_nom: "55.3", i_nom: "1.01", stall: "239", r: "4.83", l: "2.24", k: "51", tau_m: "17.2" },
+        MaxonColumn { id: ids[2], u: "36", t_nom: "66.6", i_nom: "0.849", stall: "337", r: "6.69", l: "4.29", k: "70.6", tau_m: "12.4" },
+    ];
+    let w70 = [
+        MaxonColumn { id: ids[3], u: "36", t_nom: "110", i_nom: "1.97", stall: "1320", r: "1.560", l: "0.601", k: "57", tau_m: "8.680" },
+        MaxonColumn { id: ids[4], u: "48", t_nom: "112", i_nom: "1.41", stall: "1260", r: "3.070", l: "1.210", k: "80.8", tau_m: "8.510" },
+        MaxonColumn { id: ids[5], u: "60", t_nom: "143", i_nom: "0.92", stall: "1240", r: "7.370", l: "4.270", k: "152", tau_m: "5.770" },
+    ];
+    let mut out = Vec::new();
+    let mut push = |c: &MaxonColumn, title: &str, doc: &str, j: &str, w_max: &str, thermal: &str, column: &str| {
+        let source = format!(
+            "maxon {title}, {u} V winding (block-commutated brushless, modelled as a DC motor with the phase-to-phase values). {doc} Values ({column}): V_max = line 1 nominal voltage {u} V; R = line 10 terminal resistance phase to phase {r} Ω; L = line 11 terminal inductance phase to phase {l} mH; k = line 12 torque constant {k} mNm/A; J = line 16 rotor inertia {j} gcm²; I_max = line 6 nominal current (max. continuous current) {i} A; T_nom = line 5 nominal torque (max. continuous torque) {t} mNm; {w_max} The column's own consistency: R·J/k² = line 15 mechanical time constant {tau} ms. d = 0: the page prints no viscous friction coefficient, and d = 0 is the class's rule for that case. Tc = 0.001 s is the class's drive-setting default, not a motor value. T_peak missing: maxon prints no short-time torque limit, only the stall torque {stall} mNm (line 7, a point of the speed-torque line at nominal voltage, not a permitted load) and that the motor may be briefly overloaded (recurring) without a figure, so the peak check is not evaluated. Printed, without a parameter here: {thermal}.",
+            u = c.u,
+            r = c.r,
+            l = c.l,
+            k = c.k,
+            i = c.i_nom,
+            t = c.t_nom,
+            tau = c.tau_m,
+            stall = c.stall,
+        );
+        let mut v = json!({
+            "R": {"value": printed(c.r), "unit": "Ohm"},
+            "L": {"value": printed(c.l), "unit": "mH"},
+            "k": {"value": printed(c.k), "unit": "mNm/A"},
+            "J": {"value": printed(j), "unit": "g.cm2"},
+            "d": 0,
+            "V_max": {"value": printed(c.u), "unit": "V"},
+            "I_max": {"value": printed(c.i_nom), "unit": "A"},
+            "Tc": 0.001,
+            "T_nom": {"value": printed(c.t_nom), "unit": "mNm"}
+        });
+        if w_max.starts_with("w_max = ") {
+            v["w_max"] = json!({"value": 10000, "unit": "rpm"});
+        }
+        out.push((c.id, DC_MOTOR, format!("maxon {title}, {} V", c.u), source, values(v)));
+    };
+    let doc30 = "Document: maxon catalogue page \"EC 45 flat Ø42.9 mm, brushless, 30 Watt\" (maxon EC motor, May 2012 edition, catalogue page 193), motor data table, values at nominal voltage, as published at https://vdocuments.us/ec-45-flat-429-mm-brushless-30-generator-30wpdf-ec-45-flat-429-mm-brushless.html (the stored copy prints lines 1-16 as rows of six columns: two columns per nominal voltage 12, 12, 24, 24, 36, 36 V; this instance is the first column of its voltage's pair, and which of the page's two variants, with Hall sensors or sensorless, that column is the stored copy does not say).";
+    let thermal30 = "thermal resistances housing-ambient 5.7 K/W and winding-housing 3.96 K/W (lines 17, 18), thermal time constant winding 11.5 s and motor 251 s (lines 19, 20)";
+    let no_w30 =
+        "w_max missing: line 23 (max. permissible speed) is cut off in the stored copy of the page, so the speed check is not evaluated.";
+    for (c, col) in w30.iter().zip(["column 1", "column 3", "column 5"]) {
+        push(c, "EC 45 flat Ø42.9 mm, 30 W", doc30, "92.5", no_w30, thermal30, col);
+    }
+    let doc70 = "Document: maxon catalogue page \"EC 45 flat Ø43.5 mm, brushless, 70 watt\", Motor Data (provisional), values at nominal voltage 24, 36, 48, 60 V, as published in the online flipbook https://online.flippingbook.com/view/1042987/324 (page 324). The stored copy prints the table one winding at a time without line labels; each winding's numbers were matched to the lines by the page's own relations (line 13 speed constant × line 1 nominal voltage ≈ line 2 no load speed, nominal voltage / line 10 terminal resistance ≈ line 8 stall current, R·J/k² = line 15), and its 24 V column agrees with the first seed's EC 45 flat 70 W (24 V).";
+    let thermal70 =
+        "thermal resistances 2.55 K/W and 6.64 K/W (lines 17, 18), thermal time constant winding 43.1 s and motor 127 s (lines 19, 20)";
+    let w70_max = "w_max = line 23 max. speed 10 000 rpm.";
+    for c in &w70 {
+        let col = format!("{} V winding", c.u);
+        push(c, "EC 45 flat Ø43.5 mm, 70 W", doc70, "181", w70_max, thermal70, &col);
     }
     out
 }

@@ -327,8 +327,8 @@ fn the_seed_is_valid_and_ids_are_unique() {
         assert!(ids.insert(id.clone()), "{id} twice");
     }
     let motors = lib.instances.iter().filter(|i| i.class_id == seed::DC_MOTOR).count();
-    assert_eq!(motors, 12, "motors of our own class: 4 of the first seed and 8 catalogue motors");
-    assert_eq!(lib.instances.len(), 55, "instances: 9 of the first seed, 8 catalogue motors and 38 catalogue gear units");
+    assert_eq!(motors, 18, "motors of our own class: 4 of the first seed and 14 catalogue motors");
+    assert_eq!(lib.instances.len(), 61, "instances: 9 of the first seed, 14 catalogue motors and 38 catalogue gear units");
     // Every instance beyond the first seed's nine is a catalogue instance (held to its sources).
     let first = [
         seed::MAXON_RE40,
@@ -453,6 +453,19 @@ fn catalogue_values_are_the_datasheets() {
     let m = seed::FAULHABER_2250_024_BX4;
     assert!(close(get(m, "R"), 5.9) && close(get(m, "L"), 240e-6) && close(get(m, "k"), 0.0369) && close(get(m, "J"), 1e-6));
     assert!(close(get(m, "d"), 2.4e-7 * 30.0 / std::f64::consts::PI) && close(get(m, "T_nom"), 0.023));
+    // maxon EC 45 flat 70 W, 48 V: phase-to-phase values, and the page's own mechanical time
+    // constant R·J/k² (8.510 ms) from them.
+    let mx = seed::MAXON_EC45_FLAT_MOTORS[4];
+    assert!(close(get(mx, "R"), 3.07) && close(get(mx, "L"), 1.21e-3) && close(get(mx, "k"), 0.0808) && close(get(mx, "J"), 181e-7));
+    assert!(close(get(mx, "V_max"), 48.0) && close(get(mx, "I_max"), 1.41) && close(get(mx, "T_nom"), 0.112));
+    assert!(close(get(mx, "w_max"), 10000.0 * std::f64::consts::PI / 30.0) && get(mx, "T_peak").is_none());
+    let tau = get(mx, "R").unwrap_or(0.0) * get(mx, "J").unwrap_or(0.0) / get(mx, "k").unwrap_or(1.0).powi(2);
+    assert!((tau - 8.51e-3).abs() < 0.01e-3, "{tau}");
+    // The 30 W page's stored copy lacks the max. speed line: w_max stays missing.
+    let mx = seed::MAXON_EC45_FLAT_MOTORS[1];
+    assert!(close(get(mx, "R"), 4.83) && close(get(mx, "k"), 0.051) && close(get(mx, "J"), 92.5e-7) && get(mx, "w_max").is_none());
+    let tau = get(mx, "R").unwrap_or(0.0) * get(mx, "J").unwrap_or(0.0) / get(mx, "k").unwrap_or(1.0).powi(2);
+    assert!((tau - 17.2e-3).abs() < 0.05e-3, "{tau}");
     // A gear unit per ratio (Beckhoff TP010 MF, ratio 7, clamping hub E = 19 mm): every value of
     // its column, in SI units.
     let g = seed::BECKHOFF_GEARS[7];
