@@ -490,6 +490,9 @@ const FAULHABER_1331_DOC: &str = "Document: FAULHABER data sheet \"DC-Micromotor
 /// The FAULHABER manual of the 2232 … BX4 S and 2250 … BX4 S series, chapter 7 Technical Data.
 const FAULHABER_BX4_DOC: &str = "FAULHABER technical manual of the Brushless DC-Servomotor series 2232 … BX4 S / 2250 … BX4 S (as published at https://manualshive.com/ru/manual/faulhaber/2232-bx4s-series/3671951), chapter 7 Technical Data";
 
+/// (id, class id, name, source, values) with a name made from the document's words.
+type NamedInstance = (&'static str, &'static str, String, String, Map<String, Json>);
+
 /// (id, class id, name, source, values), the source made from the document's words.
 type CatalogueInstance = (&'static str, &'static str, &'static str, String, Map<String, Json>);
 
@@ -851,7 +854,7 @@ fn printed(x: &str) -> f64 {
 
 /// The Beckhoff gear units, one instance per ratio column of each page: (id, class id, name,
 /// source, values).
-fn gear_catalogue() -> Vec<(&'static str, &'static str, String, String, Map<String, Json>)> {
+fn gear_catalogue() -> Vec<NamedInstance> {
     let mut out = Vec::new();
     for p in gear_pages() {
         for (c, id) in p.ids.iter().enumerate() {
@@ -903,7 +906,7 @@ struct MaxonColumn {
 }
 
 /// The maxon EC 45 flat motors: the catalogue page of each, its columns, and what it lacks.
-fn maxon_catalogue() -> Vec<(&'static str, &'static str, String, String, Map<String, Json>)> {
+fn maxon_catalogue() -> Vec<NamedInstance> {
     let ids = MAXON_EC45_FLAT_MOTORS;
     let w30 = [
         MaxonColumn { id: ids[0], u: "12", t_nom: "55.5", i_nom: "2.03", stall: "241", r: "1.2", l: "0.56", k: "25.5", tau_m: "17.1" },
