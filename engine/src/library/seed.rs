@@ -58,7 +58,7 @@ pub const FAULHABER_MOTORS: [&str; 8] = [
 ];
 
 /// The Beckhoff catalogue gear units, one per ratio (see [`gear_pages`] for which is which).
-pub const BECKHOFF_GEARS: [&str; 38] = [
+pub const BECKHOFF_GEARS: [&str; 46] = [
     "03812aa0-626d-4ec4-98bd-71c1e47137c7",
     "6bff9ebd-9c4a-4c4b-b234-050687cdd658",
     "1eb690b1-17e6-4582-a04b-b17a09ddf74d",
@@ -97,6 +97,14 @@ pub const BECKHOFF_GEARS: [&str; 38] = [
     "2c2fdc60-dbfb-4a68-b59e-8680f11453cc",
     "4c0b3faf-df75-4506-9afc-23b936b86347",
     "4463a131-b551-45d5-9496-4e65917d870b",
+    "69c26ec0-abc0-42f1-9233-5150ed6c77d1",
+    "b35f4b5a-2b5f-4c4f-b54e-59ebb01fc0e6",
+    "ca20b6d8-7d50-4346-aa73-c096ac7a880f",
+    "14b325c6-3cb9-4274-8139-4602abee7512",
+    "c0433e94-d4d1-4c94-b915-e2dc2fbf668c",
+    "7c7552a7-531d-4037-b190-f8a8d824b311",
+    "3f9dba31-3a03-4b62-9ab7-92adfeb88bf3",
+    "ac2c9d80-ce39-4e8b-838b-4ef68d97d4ac",
 ];
 
 /// The maxon catalogue motors: EC 45 flat 30 W (12, 24, 36 V) and EC 45 flat 70 W (36, 48, 60 V).
@@ -110,7 +118,7 @@ pub const MAXON_EC45_FLAT_MOTORS: [&str; 6] = [
 ];
 
 /// The catalogue instances of the seed (see above); `seed::library` holds them all.
-pub const CATALOGUE: [&str; 52] = concat::<14, 38, 52>(concat(FAULHABER_MOTORS, MAXON_EC45_FLAT_MOTORS), BECKHOFF_GEARS);
+pub const CATALOGUE: [&str; 60] = concat::<14, 46, 60>(concat(FAULHABER_MOTORS, MAXON_EC45_FLAT_MOTORS), BECKHOFF_GEARS);
 
 /// `a` then `b`, in a constant.
 const fn concat<const A: usize, const B: usize, const C: usize>(a: [&'static str; A], b: [&'static str; B]) -> [&'static str; C] {
@@ -705,6 +713,19 @@ struct GearPage {
     n1n: &'static [&'static str],
     j1: &'static [&'static str],
     ids: &'static [&'static str],
+    /// The 2-stage columns, when the page has both 1- and 2-stage ones.
+    second: Option<SecondStage>,
+}
+
+/// The 2-stage columns of a page (from column `from` on) and the values the page prints for
+/// them instead of the 1-stage ones.
+struct SecondStage {
+    from: usize,
+    eta: &'static str,
+    n1_max: &'static str,
+    backlash: &'static str,
+    /// How the page tells the stages apart.
+    how: &'static str,
 }
 
 /// The Beckhoff gear unit pages the catalogue takes its gears from (each column checked against
@@ -728,6 +749,7 @@ fn gear_pages() -> Vec<GearPage> {
             emergency: &["100", "100", "100", "100", "100"],
             n1n: &["3300", "3300", "4000", "4000", "4000"],
             j1: &["0.25", "0.21", "0.18", "0.18", "0.17"],
+            second: None,
             ids: &BECKHOFF_GEARS[0..5],
         },
         GearPage {
@@ -747,6 +769,7 @@ fn gear_pages() -> Vec<GearPage> {
             emergency: &["250", "250", "251", "251", "251"],
             n1n: &["2600", "2900", "3100", "3100", "3100"],
             j1: &["0.95", "0.79", "0.64", "0.64", "0.57"],
+            second: None,
             ids: &BECKHOFF_GEARS[5..10],
         },
         GearPage {
@@ -766,6 +789,7 @@ fn gear_pages() -> Vec<GearPage> {
             emergency: &["1250", "1250", "1250", "1250", "1250"],
             n1n: &["1900", "2000", "2500", "2500", "2500"],
             j1: &["13.7", "12.1", "10.6", "10.6", "9.78"],
+            second: None,
             ids: &BECKHOFF_GEARS[10..15],
         },
         GearPage {
@@ -785,6 +809,7 @@ fn gear_pages() -> Vec<GearPage> {
             emergency: &["80", "80", "80", "80", "80", "80"],
             n1n: &["2900", "3100", "3300", "3600", "3600", "3800"],
             j1: &["0.34", "0.28", "0.26", "0.24", "0.23", "0.23"],
+            second: None,
             ids: &BECKHOFF_GEARS[15..21],
         },
         GearPage {
@@ -804,6 +829,7 @@ fn gear_pages() -> Vec<GearPage> {
             emergency: &["26", "26", "26", "26", "26"],
             n1n: &["3800", "4000", "4300", "4400", "4600"],
             j1: &["0.06", "0.05", "0.05", "0.04", "0.04"],
+            second: None,
             ids: &BECKHOFF_GEARS[21..26],
         },
         GearPage {
@@ -823,6 +849,7 @@ fn gear_pages() -> Vec<GearPage> {
             emergency: &["190", "190", "190", "190", "190", "190"],
             n1n: &["3100", "3300", "3400", "3600", "3700", "3900"],
             j1: &["0.99", "0.8", "0.67", "0.56", "0.53", "0.5"],
+            second: None,
             ids: &BECKHOFF_GEARS[26..32],
         },
         GearPage {
@@ -842,7 +869,34 @@ fn gear_pages() -> Vec<GearPage> {
             emergency: &["480", "480", "480", "480", "480", "480"],
             n1n: &["2300", "2500", "2600", "2800", "2900", "3000"],
             j1: &["4", "2.8", "2.4", "1.9", "1.8", "1.7"],
+            second: None,
             ids: &BECKHOFF_GEARS[32..38],
+        },
+        GearPage {
+            family: "AG3300",
+            series: "NPS045 MF",
+            url: "https://infosys.beckhoff.com/content/1033/ag3300_ba/8882147979.html",
+            eta: "97",
+            weight: "19",
+            hub: "K = 38 mm",
+            backlash: "8",
+            reduced: None,
+            n1_max: "4000",
+            ratio: &["5", "8", "10", "25", "32", "50", "64", "100"],
+            t2a: &[],
+            t2n: &["350", "200", "200", "350", "200", "350", "200", "200"],
+            t2b: &["500", "400", "400", "500", "400", "500", "400", "400"],
+            emergency: &["1000", "1000", "1000", "1000", "1000", "1000", "1000", "1000"],
+            n1n: &["1800", "1900", "2000", "2600", "2500", "3000", "2900", "3000"],
+            j1: &["8.7", "7.3", "7.2", "7", "6.9", "6.8", "6.6", "6.5"],
+            second: Some(SecondStage {
+                from: 3,
+                eta: "95",
+                n1_max: "6000",
+                backlash: "10",
+                how: "the page heads its columns 1-stage and 2-stage and prints the maximum input speed per column, 4000 min⁻¹ for ratios 5, 8, 10 and 6000 min⁻¹ for ratios 25 to 100, so ratios 5, 8, 10 are the 1-stage columns; the page prints no maximum torque T2a row",
+            }),
+            ids: &BECKHOFF_GEARS[38..46],
         },
     ]
 }
@@ -858,27 +912,31 @@ fn gear_catalogue() -> Vec<NamedInstance> {
     let mut out = Vec::new();
     for p in gear_pages() {
         for (c, id) in p.ids.iter().enumerate() {
-            let (r, t2a, t2n, t2b, es, n1n, j1) = (p.ratio[c], p.t2a[c], p.t2n[c], p.t2b[c], p.emergency[c], p.n1n[c], p.j1[c]);
+            let (r, t2n, t2b, es, n1n, j1) = (p.ratio[c], p.t2n[c], p.t2b[c], p.emergency[c], p.n1n[c], p.j1[c]);
+            let (stage, eta, n1_max, backlash, how) = match &p.second {
+                Some(s) if c >= s.from => ("2-stage", s.eta, s.n1_max, s.backlash, format!(" (2-stage: {})", s.how)),
+                Some(s) => ("1-stage", p.eta, p.n1_max, p.backlash, format!(" (1-stage: {})", s.how)),
+                None => ("1-stage", p.eta, p.n1_max, p.backlash, String::new()),
+            };
+            let t2a = p.t2a.get(c).map(|t| format!("maximum torque T2a {t} Nm, ")).unwrap_or_default();
             let reduced = p.reduced.map(|x| format!(", reduced version ≤ {x} arcmin")).unwrap_or_default();
             let source = format!(
-                "Beckhoff gear unit {series}, 1-stage, ratio {r}, with clamping hub {hub}. Document: Beckhoff Information System, operating instructions {family} ({url}), page \"{series}\", table \"Mechanical data\", column ratio {r}. Values: ratio = Ratio {r}; eta = Efficiency under full load η {eta} %; T_rated = Nominal output torque T2N at n1N {t2n} Nm; T_peak = Maximum acceleration torque T2B (maximum 1000 cycles per hour) {t2b} Nm, the page's limit for cyclic (repeated) peaks; w_in_max = Maximum input speed n1Max {n1max} min⁻¹ (in rad/s by ω = 2π·n/60); J_in = Mass moment of inertia J1 based on the drive, clamping hub {hub}: {j1} kgcm² (the page lists other hubs too); backlash = Maximum torsional backlash jt, standard version, ≤ {backlash} arcmin (an upper limit{reduced}); m = Weight {weight} kg (the page: depending on the clamping hub diameter and selected adapter plate). Printed, without a parameter here: maximum torque T2a {t2a} Nm, EMERGENCY STOP torque {es} Nm (1000 times during the service life of the gear unit), nominal input speed n1N {n1n} min⁻¹, idle torque T012, torsional rigidity Ct21.",
+                "Beckhoff gear unit {series}, {stage}, ratio {r}, with clamping hub {hub}. Document: Beckhoff Information System, operating instructions {family} ({url}), page \"{series}\", table \"Mechanical data\", column ratio {r}{how}. Values: ratio = Ratio {r}; eta = Efficiency under full load η {eta} %; T_rated = Nominal output torque T2N at n1N {t2n} Nm; T_peak = Maximum acceleration torque T2B (maximum 1000 cycles per hour) {t2b} Nm, the page's limit for cyclic (repeated) peaks; w_in_max = Maximum input speed n1Max {n1max} min⁻¹ (in rad/s by ω = 2π·n/60); J_in = Mass moment of inertia J1 based on the drive, clamping hub {hub}: {j1} kgcm² (the page lists other hubs too); backlash = Maximum torsional backlash jt, standard version, ≤ {backlash} arcmin (an upper limit{reduced}); m = Weight {weight} kg (the page: depending on the clamping hub diameter and selected adapter plate). Printed, without a parameter here: {t2a}EMERGENCY STOP torque {es} Nm (1000 times during the service life of the gear unit), nominal input speed n1N {n1n} min⁻¹, idle torque T012, torsional rigidity Ct21.",
                 series = p.series,
                 hub = p.hub,
                 family = p.family,
                 url = p.url,
-                eta = p.eta,
-                n1max = p.n1_max,
-                backlash = p.backlash,
+                n1max = n1_max,
                 weight = p.weight,
             );
             let values = values(json!({
                 "ratio": printed(r),
-                "eta": {"value": printed(p.eta), "unit": "%"},
+                "eta": {"value": printed(eta), "unit": "%"},
                 "T_rated": {"value": printed(t2n), "unit": "N.m"},
                 "T_peak": {"value": printed(t2b), "unit": "N.m"},
-                "w_in_max": {"value": printed(p.n1_max), "unit": "rpm"},
+                "w_in_max": {"value": printed(n1_max), "unit": "rpm"},
                 "J_in": {"value": printed(j1), "unit": "kg.cm2"},
-                "backlash": {"value": printed(p.backlash), "unit": "arcmin"},
+                "backlash": {"value": printed(backlash), "unit": "arcmin"},
                 "m": {"value": printed(p.weight), "unit": "kg"}
             }));
             let name = format!("Beckhoff {} i={r}, clamping hub {}", p.series, p.hub);

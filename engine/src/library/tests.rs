@@ -328,7 +328,7 @@ fn the_seed_is_valid_and_ids_are_unique() {
     }
     let motors = lib.instances.iter().filter(|i| i.class_id == seed::DC_MOTOR).count();
     assert_eq!(motors, 18, "motors of our own class: 4 of the first seed and 14 catalogue motors");
-    assert_eq!(lib.instances.len(), 61, "instances: 9 of the first seed, 14 catalogue motors and 38 catalogue gear units");
+    assert_eq!(lib.instances.len(), 69, "instances: 9 of the first seed, 14 catalogue motors and 46 catalogue gear units");
     // Every instance beyond the first seed's nine is a catalogue instance (held to its sources).
     let first = [
         seed::MAXON_RE40,
@@ -482,6 +482,22 @@ fn catalogue_values_are_the_datasheets() {
     assert!(
         close(get(z, "ratio"), 10.0) && close(get(z, "T_rated"), 110.0) && close(get(z, "T_peak"), 220.0) && close(get(z, "J_in"), 1.7e-4)
     );
+    // A page with 1- and 2-stage columns (NPS045 MF): each column takes its own stage's efficiency,
+    // maximum input speed and backlash.
+    let one = seed::BECKHOFF_GEARS[40];
+    let two = seed::BECKHOFF_GEARS[43];
+    assert!(
+        close(get(one, "ratio"), 10.0) && close(get(one, "eta"), 0.97) && close(get(one, "w_in_max"), 4000.0 * std::f64::consts::PI / 30.0)
+    );
+    assert!(close(get(one, "backlash"), 8.0 * std::f64::consts::PI / 10800.0) && close(get(one, "T_rated"), 200.0));
+    assert!(
+        close(get(two, "ratio"), 50.0) && close(get(two, "eta"), 0.95) && close(get(two, "w_in_max"), 6000.0 * std::f64::consts::PI / 30.0)
+    );
+    assert!(
+        close(get(two, "backlash"), 10.0 * std::f64::consts::PI / 10800.0)
+            && close(get(two, "T_peak"), 500.0)
+            && close(get(two, "J_in"), 6.8e-4)
+    );
     // The datasheet's own consistency: the mechanical time constant R·J/k² it prints (4.3 ms).
     let tau = get(m, "R").unwrap_or(0.0) * get(m, "J").unwrap_or(0.0) / get(m, "k").unwrap_or(1.0).powi(2);
     assert!((tau - 4.3e-3).abs() < 0.05e-3, "{tau}");
@@ -615,8 +631,8 @@ fn import_updates_by_id_and_migrates_instances_not_in_the_file() {
     let plan = plan_import(&current, &doc).expect("plan");
     assert_eq!(plan.counts.classes_updated, 1);
     assert_eq!(plan.counts.classes_created, 0);
-    // The GP 42 C and the 38 catalogue gear units.
-    assert_eq!(plan.counts.instances_migrated, 39);
+    // The GP 42 C and the 46 catalogue gear units.
+    assert_eq!(plan.counts.instances_migrated, 47);
     let gp = plan.instances.iter().find(|i| i.id == seed::MAXON_GP42C_74).expect("migrated");
     assert_eq!(gp.value("T_idle"), Some(&Value::Real(0.0)));
 
