@@ -58,7 +58,7 @@ pub const FAULHABER_MOTORS: [&str; 8] = [
 ];
 
 /// The Beckhoff catalogue gear units, one per ratio (see [`gear_pages`] for which is which).
-pub const BECKHOFF_GEARS: [&str; 46] = [
+pub const BECKHOFF_GEARS: [&str; 54] = [
     "03812aa0-626d-4ec4-98bd-71c1e47137c7",
     "6bff9ebd-9c4a-4c4b-b234-050687cdd658",
     "1eb690b1-17e6-4582-a04b-b17a09ddf74d",
@@ -105,6 +105,14 @@ pub const BECKHOFF_GEARS: [&str; 46] = [
     "7c7552a7-531d-4037-b190-f8a8d824b311",
     "3f9dba31-3a03-4b62-9ab7-92adfeb88bf3",
     "ac2c9d80-ce39-4e8b-838b-4ef68d97d4ac",
+    "f2655fac-804a-498f-ad0e-6beb846fad31",
+    "00deb50b-6881-46d1-8eaa-703f0f94e6d1",
+    "14ce9152-8a95-4cab-98e9-8949677d99fa",
+    "1f88cccb-4286-4d16-86c2-afa9dfcd1720",
+    "845e2528-3a6b-40bc-8e01-bf314617ae44",
+    "7de9bb09-daac-497e-bc16-5732da8ac59c",
+    "b1829783-d332-422d-83e7-a59690fee6dc",
+    "11c5108b-d9c1-4738-9879-3feec0413259",
 ];
 
 /// The maxon catalogue motors: EC 45 flat 30 W (12, 24, 36 V) and EC 45 flat 70 W (36, 48, 60 V).
@@ -118,7 +126,7 @@ pub const MAXON_EC45_FLAT_MOTORS: [&str; 6] = [
 ];
 
 /// The catalogue instances of the seed (see above); `seed::library` holds them all.
-pub const CATALOGUE: [&str; 60] = concat::<14, 46, 60>(concat(FAULHABER_MOTORS, MAXON_EC45_FLAT_MOTORS), BECKHOFF_GEARS);
+pub const CATALOGUE: [&str; 68] = concat::<14, 54, 68>(concat(FAULHABER_MOTORS, MAXON_EC45_FLAT_MOTORS), BECKHOFF_GEARS);
 
 /// `a` then `b`, in a constant.
 const fn concat<const A: usize, const B: usize, const C: usize>(a: [&'static str; A], b: [&'static str; B]) -> [&'static str; C] {
@@ -724,6 +732,7 @@ struct SecondStage {
     eta: &'static str,
     n1_max: &'static str,
     backlash: &'static str,
+    weight: &'static str,
     /// How the page tells the stages apart.
     how: &'static str,
 }
@@ -894,9 +903,37 @@ fn gear_pages() -> Vec<GearPage> {
                 eta: "95",
                 n1_max: "6000",
                 backlash: "10",
+                weight: "19",
                 how: "the page heads its columns 1-stage and 2-stage and prints the maximum input speed per column, 4000 min⁻¹ for ratios 5, 8, 10 and 6000 min⁻¹ for ratios 25 to 100, so ratios 5, 8, 10 are the 1-stage columns; the page prints no maximum torque T2a row",
             }),
             ids: &BECKHOFF_GEARS[38..46],
+        },
+        GearPage {
+            family: "AG3400",
+            series: "NPT045 MF",
+            url: "https://infosys.beckhoff.com/content/1033/ag3400_ba/9187952779.html",
+            eta: "97",
+            weight: "19",
+            hub: "K = 38 mm",
+            backlash: "8",
+            reduced: None,
+            n1_max: "4000",
+            ratio: &["5", "8", "10", "25", "32", "50", "64", "100"],
+            t2a: &["700", "640", "640", "700", "640", "700", "640", "640"],
+            t2n: &["350", "200", "350", "200", "350", "200", "200", "200"],
+            t2b: &["500", "400", "400", "500", "400", "500", "400", "400"],
+            emergency: &["1000", "1000", "1000", "1000", "1000", "1000", "1000", "1000"],
+            n1n: &["2000", "2200", "2300", "2600", "2500", "3000", "2900", "3000"],
+            j1: &["9.8", "7.8", "7.4", "7", "6.9", "6.8", "6.6", "6.5"],
+            second: Some(SecondStage {
+                from: 3,
+                eta: "95",
+                n1_max: "6000",
+                backlash: "10",
+                weight: "20",
+                how: "the page heads its columns 1-stage and 2-stage and prints one value per stage for efficiency, weight, maximum input speed and backlash; ratios 5, 8, 10 are the 1-stage columns, the only ones whose J1 rows for the clamping hubs E to I print no value",
+            }),
+            ids: &BECKHOFF_GEARS[46..54],
         },
     ]
 }
@@ -913,10 +950,10 @@ fn gear_catalogue() -> Vec<NamedInstance> {
     for p in gear_pages() {
         for (c, id) in p.ids.iter().enumerate() {
             let (r, t2n, t2b, es, n1n, j1) = (p.ratio[c], p.t2n[c], p.t2b[c], p.emergency[c], p.n1n[c], p.j1[c]);
-            let (stage, eta, n1_max, backlash, how) = match &p.second {
-                Some(s) if c >= s.from => ("2-stage", s.eta, s.n1_max, s.backlash, format!(" (2-stage: {})", s.how)),
-                Some(s) => ("1-stage", p.eta, p.n1_max, p.backlash, format!(" (1-stage: {})", s.how)),
-                None => ("1-stage", p.eta, p.n1_max, p.backlash, String::new()),
+            let (stage, eta, n1_max, backlash, weight, how) = match &p.second {
+                Some(s) if c >= s.from => ("2-stage", s.eta, s.n1_max, s.backlash, s.weight, format!(" (2-stage: {})", s.how)),
+                Some(s) => ("1-stage", p.eta, p.n1_max, p.backlash, p.weight, format!(" (1-stage: {})", s.how)),
+                None => ("1-stage", p.eta, p.n1_max, p.backlash, p.weight, String::new()),
             };
             let t2a = p.t2a.get(c).map(|t| format!("maximum torque T2a {t} Nm, ")).unwrap_or_default();
             let reduced = p.reduced.map(|x| format!(", reduced version ≤ {x} arcmin")).unwrap_or_default();
@@ -927,7 +964,6 @@ fn gear_catalogue() -> Vec<NamedInstance> {
                 family = p.family,
                 url = p.url,
                 n1max = n1_max,
-                weight = p.weight,
             );
             let values = values(json!({
                 "ratio": printed(r),
@@ -937,7 +973,7 @@ fn gear_catalogue() -> Vec<NamedInstance> {
                 "w_in_max": {"value": printed(n1_max), "unit": "rpm"},
                 "J_in": {"value": printed(j1), "unit": "kg.cm2"},
                 "backlash": {"value": printed(backlash), "unit": "arcmin"},
-                "m": {"value": printed(p.weight), "unit": "kg"}
+                "m": {"value": printed(weight), "unit": "kg"}
             }));
             let name = format!("Beckhoff {} i={r}, clamping hub {}", p.series, p.hub);
             out.push((*id, EFFICIENCY_GEAR, name, source, values));

@@ -328,7 +328,7 @@ fn the_seed_is_valid_and_ids_are_unique() {
     }
     let motors = lib.instances.iter().filter(|i| i.class_id == seed::DC_MOTOR).count();
     assert_eq!(motors, 18, "motors of our own class: 4 of the first seed and 14 catalogue motors");
-    assert_eq!(lib.instances.len(), 69, "instances: 9 of the first seed, 14 catalogue motors and 46 catalogue gear units");
+    assert_eq!(lib.instances.len(), 77, "instances: 9 of the first seed, 14 catalogue motors and 54 catalogue gear units");
     // Every instance beyond the first seed's nine is a catalogue instance (held to its sources).
     let first = [
         seed::MAXON_RE40,
@@ -498,6 +498,9 @@ fn catalogue_values_are_the_datasheets() {
             && close(get(two, "T_peak"), 500.0)
             && close(get(two, "J_in"), 6.8e-4)
     );
+    // NPT045 MF prints its weight per stage too.
+    assert!(close(get(seed::BECKHOFF_GEARS[48], "m"), 19.0) && close(get(seed::BECKHOFF_GEARS[49], "m"), 20.0));
+    assert!(close(get(seed::BECKHOFF_GEARS[53], "ratio"), 100.0) && close(get(seed::BECKHOFF_GEARS[53], "J_in"), 6.5e-4));
     // The datasheet's own consistency: the mechanical time constant R·J/k² it prints (4.3 ms).
     let tau = get(m, "R").unwrap_or(0.0) * get(m, "J").unwrap_or(0.0) / get(m, "k").unwrap_or(1.0).powi(2);
     assert!((tau - 4.3e-3).abs() < 0.05e-3, "{tau}");
@@ -631,8 +634,8 @@ fn import_updates_by_id_and_migrates_instances_not_in_the_file() {
     let plan = plan_import(&current, &doc).expect("plan");
     assert_eq!(plan.counts.classes_updated, 1);
     assert_eq!(plan.counts.classes_created, 0);
-    // The GP 42 C and the 46 catalogue gear units.
-    assert_eq!(plan.counts.instances_migrated, 47);
+    // The GP 42 C and the 54 catalogue gear units.
+    assert_eq!(plan.counts.instances_migrated, 55);
     let gp = plan.instances.iter().find(|i| i.id == seed::MAXON_GP42C_74).expect("migrated");
     assert_eq!(gp.value("T_idle"), Some(&Value::Real(0.0)));
 
