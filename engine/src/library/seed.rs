@@ -58,7 +58,7 @@ pub const FAULHABER_MOTORS: [&str; 8] = [
 ];
 
 /// The Beckhoff catalogue gear units, one per ratio (see [`gear_pages`] for which is which).
-pub const BECKHOFF_GEARS: [&str; 54] = [
+pub const BECKHOFF_GEARS: [&str; 60] = [
     "03812aa0-626d-4ec4-98bd-71c1e47137c7",
     "6bff9ebd-9c4a-4c4b-b234-050687cdd658",
     "1eb690b1-17e6-4582-a04b-b17a09ddf74d",
@@ -113,6 +113,12 @@ pub const BECKHOFF_GEARS: [&str; 54] = [
     "7de9bb09-daac-497e-bc16-5732da8ac59c",
     "b1829783-d332-422d-83e7-a59690fee6dc",
     "11c5108b-d9c1-4738-9879-3feec0413259",
+    "2c6b7403-f8ff-446e-9757-3c794b6a730d",
+    "6a835606-5c82-49b1-9166-cef557a0288e",
+    "74758d41-0f6e-459b-a017-176cc251fc80",
+    "04dbba19-c4f2-47e5-97f4-13614c2b8861",
+    "61e7144b-7def-40c2-b796-0018587a4ff2",
+    "ec427b59-3ca9-4ba4-a3b5-9ca6189dfde0",
 ];
 
 /// The maxon catalogue motors: EC 45 flat 30 W (12, 24, 36 V) and EC 45 flat 70 W (36, 48, 60 V).
@@ -126,7 +132,7 @@ pub const MAXON_EC45_FLAT_MOTORS: [&str; 6] = [
 ];
 
 /// The catalogue instances of the seed (see above); `seed::library` holds them all.
-pub const CATALOGUE: [&str; 68] = concat::<14, 54, 68>(concat(FAULHABER_MOTORS, MAXON_EC45_FLAT_MOTORS), BECKHOFF_GEARS);
+pub const CATALOGUE: [&str; 74] = concat::<14, 60, 74>(concat(FAULHABER_MOTORS, MAXON_EC45_FLAT_MOTORS), BECKHOFF_GEARS);
 
 /// `a` then `b`, in a constant.
 const fn concat<const A: usize, const B: usize, const C: usize>(a: [&'static str; A], b: [&'static str; B]) -> [&'static str; C] {
@@ -934,6 +940,26 @@ fn gear_pages() -> Vec<GearPage> {
                 how: "the page heads its columns 1-stage and 2-stage and prints one value per stage for efficiency, weight, maximum input speed and backlash; ratios 5, 8, 10 are the 1-stage columns, the only ones whose J1 rows for the clamping hubs E to I print no value",
             }),
             ids: &BECKHOFF_GEARS[46..54],
+        },
+        GearPage {
+            family: "AG3400",
+            series: "NPT015 MF",
+            url: "https://infosys.beckhoff.com/content/1033/ag3400_ba/9187734283.html",
+            eta: "97",
+            weight: "2",
+            hub: "C = 14 mm",
+            backlash: "8",
+            reduced: None,
+            n1_max: "8000",
+            ratio: &["3", "4", "5", "7", "8", "10"],
+            t2a: &["51", "56", "60", "60", "56", "56"],
+            t2n: &["17", "18", "21", "21", "19", "19"],
+            t2b: &["32", "35", "40", "40", "35", "35"],
+            emergency: &["75", "75", "75", "75", "75", "75"],
+            n1n: &["3300", "3500", "3700", "4000", "4100", "4300"],
+            j1: &["0.41", "0.32", "0.28", "0.25", "0.24", "0.23"],
+            second: None,
+            ids: &BECKHOFF_GEARS[54..60],
         },
     ]
 }

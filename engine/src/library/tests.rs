@@ -328,7 +328,7 @@ fn the_seed_is_valid_and_ids_are_unique() {
     }
     let motors = lib.instances.iter().filter(|i| i.class_id == seed::DC_MOTOR).count();
     assert_eq!(motors, 18, "motors of our own class: 4 of the first seed and 14 catalogue motors");
-    assert_eq!(lib.instances.len(), 77, "instances: 9 of the first seed, 14 catalogue motors and 54 catalogue gear units");
+    assert_eq!(lib.instances.len(), 83, "instances: 9 of the first seed, 14 catalogue motors and 60 catalogue gear units");
     // Every instance beyond the first seed's nine is a catalogue instance (held to its sources).
     let first = [
         seed::MAXON_RE40,
@@ -634,8 +634,8 @@ fn import_updates_by_id_and_migrates_instances_not_in_the_file() {
     let plan = plan_import(&current, &doc).expect("plan");
     assert_eq!(plan.counts.classes_updated, 1);
     assert_eq!(plan.counts.classes_created, 0);
-    // The GP 42 C and the 54 catalogue gear units.
-    assert_eq!(plan.counts.instances_migrated, 55);
+    // The GP 42 C and the 60 catalogue gear units.
+    assert_eq!(plan.counts.instances_migrated, 61);
     let gp = plan.instances.iter().find(|i| i.id == seed::MAXON_GP42C_74).expect("migrated");
     assert_eq!(gp.value("T_idle"), Some(&Value::Real(0.0)));
 
