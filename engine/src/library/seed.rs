@@ -45,8 +45,8 @@ pub const FAULHABER_2232_024_BX4: &str = "faafd86a-a4ab-4bab-839c-2cb26e26da09";
 pub const FAULHABER_2250_024_BX4_S: &str = "fe020295-15b6-41b6-9eb1-90b054352db7";
 pub const FAULHABER_2250_024_BX4: &str = "7d376960-2b76-4917-9ff3-217613970da5";
 
-/// The catalogue instances of the seed (see above); `seed::library` holds them all.
-pub const CATALOGUE: [&str; 8] = [
+/// The FAULHABER catalogue motors.
+pub const FAULHABER_MOTORS: [&str; 8] = [
     FAULHABER_1331_006,
     FAULHABER_1331_012,
     FAULHABER_2232_012_BX4_S,
@@ -56,6 +56,100 @@ pub const CATALOGUE: [&str; 8] = [
     FAULHABER_2250_024_BX4_S,
     FAULHABER_2250_024_BX4,
 ];
+
+/// The Beckhoff catalogue gear units, one per ratio (see [`gear_pages`] for which is which).
+pub const BECKHOFF_GEARS: [&str; 60] = [
+    "03812aa0-626d-4ec4-98bd-71c1e47137c7",
+    "6bff9ebd-9c4a-4c4b-b234-050687cdd658",
+    "1eb690b1-17e6-4582-a04b-b17a09ddf74d",
+    "49fdf49d-1a6b-4463-badd-af6362ec7288",
+    "67613915-8a54-48a9-b641-a26c46234aa3",
+    "1f0765fe-aa88-43b0-af47-9778999716d5",
+    "1e83b19c-5b44-4f3a-981d-168936dd9dc5",
+    "41c3d2d9-73e4-4e19-8657-1dedde8cee2f",
+    "a49d4f39-19f0-4aa3-9f88-8c4730b84732",
+    "22025ec6-1ea2-4b0f-b248-c621a9f16e0e",
+    "40f1e6b6-f642-4b45-8830-2573b4737ea1",
+    "436a6855-e261-4894-959a-e4385ab633c1",
+    "2b47afb8-5ac6-4f52-9eb7-d3ad3c3e500c",
+    "773e658b-1d6c-4d96-b28e-7728862156e3",
+    "064ae630-3966-4140-b07e-e5ca98193e53",
+    "4ecdf98f-7e78-4822-834e-b29b42a11f55",
+    "2100c7ee-2e02-45f7-921f-2c3d58116d7d",
+    "5877c27c-9da5-4753-837c-074a471d02f6",
+    "b215eb3f-310c-4367-a012-e00a3f8dbb21",
+    "63ffed98-aa95-4536-82ce-8380fc287d32",
+    "97cbfc11-e855-4fb1-9e1e-a1c7e7eb312b",
+    "14c82607-842e-4b1c-a265-4025d8e772a5",
+    "f3ed1e70-b7bc-429f-b2be-1a021c4cac08",
+    "abc3bd0b-b982-45a7-ba00-c74ec4f50a95",
+    "6afda997-d464-4578-927b-52ec4755e1d7",
+    "23750000-6ad9-4312-a631-aa6e5667442d",
+    "1dd1d18e-81ee-427d-8542-e857a719b1e1",
+    "558b6ea5-4670-4597-aed6-979f050e7f91",
+    "7f9db8e2-2a02-49b4-b6a0-5562bc50c622",
+    "44801b01-e2e8-478e-8b34-5d7e5e6c559d",
+    "563b73a5-bb75-40d0-997d-69192c4ab422",
+    "c7fc1662-154f-4bde-bb13-96b667dd1443",
+    "cbba194a-3938-4bc1-8404-3114f4d98c3f",
+    "7742759d-28c7-4593-9853-269037650903",
+    "d18406e3-2663-4083-8067-4ed21e43f69d",
+    "2c2fdc60-dbfb-4a68-b59e-8680f11453cc",
+    "4c0b3faf-df75-4506-9afc-23b936b86347",
+    "4463a131-b551-45d5-9496-4e65917d870b",
+    "69c26ec0-abc0-42f1-9233-5150ed6c77d1",
+    "b35f4b5a-2b5f-4c4f-b54e-59ebb01fc0e6",
+    "ca20b6d8-7d50-4346-aa73-c096ac7a880f",
+    "14b325c6-3cb9-4274-8139-4602abee7512",
+    "c0433e94-d4d1-4c94-b915-e2dc2fbf668c",
+    "7c7552a7-531d-4037-b190-f8a8d824b311",
+    "3f9dba31-3a03-4b62-9ab7-92adfeb88bf3",
+    "ac2c9d80-ce39-4e8b-838b-4ef68d97d4ac",
+    "f2655fac-804a-498f-ad0e-6beb846fad31",
+    "00deb50b-6881-46d1-8eaa-703f0f94e6d1",
+    "14ce9152-8a95-4cab-98e9-8949677d99fa",
+    "1f88cccb-4286-4d16-86c2-afa9dfcd1720",
+    "845e2528-3a6b-40bc-8e01-bf314617ae44",
+    "7de9bb09-daac-497e-bc16-5732da8ac59c",
+    "b1829783-d332-422d-83e7-a59690fee6dc",
+    "11c5108b-d9c1-4738-9879-3feec0413259",
+    "2c6b7403-f8ff-446e-9757-3c794b6a730d",
+    "6a835606-5c82-49b1-9166-cef557a0288e",
+    "74758d41-0f6e-459b-a017-176cc251fc80",
+    "04dbba19-c4f2-47e5-97f4-13614c2b8861",
+    "61e7144b-7def-40c2-b796-0018587a4ff2",
+    "ec427b59-3ca9-4ba4-a3b5-9ca6189dfde0",
+];
+
+/// The maxon catalogue motors: EC 45 flat 30 W (12, 24, 36 V) and EC 45 flat 70 W (36, 48, 60 V).
+pub const MAXON_EC45_FLAT_MOTORS: [&str; 6] = [
+    "2d92b77d-262f-443b-beaa-f2561563bc3f",
+    "59013709-bdad-43e9-b8bc-c5b1169419cc",
+    "e9bd32e0-e445-4f7f-a2a2-bffd3eb020fa",
+    "a1b3f114-64b3-4919-bf15-ac51818261e5",
+    "12d8bee7-de2d-4a10-a4ef-24b121b08d2e",
+    "c8e0ff26-f568-402a-b244-dfae326a950a",
+];
+
+/// The catalogue instances of the seed (see above); `seed::library` holds them all.
+pub const CATALOGUE: [&str; 74] = concat::<14, 60, 74>(concat(FAULHABER_MOTORS, MAXON_EC45_FLAT_MOTORS), BECKHOFF_GEARS);
+
+/// `a` then `b`, in a constant.
+const fn concat<const A: usize, const B: usize, const C: usize>(a: [&'static str; A], b: [&'static str; B]) -> [&'static str; C] {
+    assert!(A + B == C, "the lengths add up");
+    let mut out = [""; C];
+    let mut i = 0;
+    while i < A {
+        out[i] = a[i];
+        i += 1;
+    }
+    let mut j = 0;
+    while j < B {
+        out[A + j] = b[j];
+        j += 1;
+    }
+    out
+}
 
 /// A Real parameter: (name, unit, min, max, editable, default, comment).
 fn real(name: &str, unit: &str, min: Option<f64>, max: Option<f64>, editable: bool, default: Option<f64>, comment: &str) -> ParameterDraft {
@@ -92,13 +186,15 @@ fn motor_datasheet() -> [ParameterDraft; 3] {
     ]
 }
 
-/// The datasheet values of the rotary gear classes.
-fn gear_datasheet() -> [ParameterDraft; 4] {
+/// The datasheet values of the rotary gear classes (`backlash` and `m` since migration 0012).
+fn gear_datasheet() -> [ParameterDraft; 6] {
     [
         datasheet("T_rated", "N.m", "Datasheet: rated (max. continuous) output torque"),
         datasheet("T_peak", "N.m", "Datasheet: limit for repeated peak output torque (intermittent)"),
         datasheet("w_in_max", "rad/s", "Datasheet: maximum input speed"),
         datasheet("J_in", "kg.m2", "Datasheet: moment of inertia of the gear referred to its input (motor) shaft"),
+        datasheet("backlash", "rad", "Datasheet: maximum torsional backlash at the output (standard version)"),
+        datasheet("m", "kg", "Datasheet: mass (weight) of the gear unit"),
     ]
 }
 
@@ -387,14 +483,17 @@ pub fn library() -> Result<Library, Vec<Issue>> {
             Err(e) => issues.extend(e.into_iter().map(|i| Issue::new(format!("seed class {}: {}", draft.name, i.field), i.message))),
         }
     }
-    let all =
-        instances().into_iter().map(|(id, class, name, source, values)| (id, class, name, source.to_string(), values)).chain(catalogue());
+    let all = instances().into_iter().map(|(id, class, name, source, values)| (id, class, name.to_string(), source.to_string(), values));
+    let all = all
+        .chain(catalogue().into_iter().map(|(id, class, name, source, values)| (id, class, name.to_string(), source, values)))
+        .chain(maxon_catalogue())
+        .chain(gear_catalogue());
     for (id, class_id, name, source, values) in all {
         let Some(class) = lib.class(class_id) else {
             issues.push(Issue::new(format!("seed instance {name}"), format!("no seed class {class_id}")));
             continue;
         };
-        let draft = InstanceDraft { name: name.to_string(), source, values };
+        let draft = InstanceDraft { name: name.clone(), source, values };
         match check_instance(id, class, &draft) {
             Ok(i) => lib.instances.push(i),
             Err(e) => issues.extend(e.into_iter().map(|i| Issue::new(format!("seed instance {name}: {}", i.field), i.message))),
@@ -412,6 +511,9 @@ const FAULHABER_1331_DOC: &str = "Document: FAULHABER data sheet \"DC-Micromotor
 
 /// The FAULHABER manual of the 2232 … BX4 S and 2250 … BX4 S series, chapter 7 Technical Data.
 const FAULHABER_BX4_DOC: &str = "FAULHABER technical manual of the Brushless DC-Servomotor series 2232 … BX4 S / 2250 … BX4 S (as published at https://manualshive.com/ru/manual/faulhaber/2232-bx4s-series/3671951), chapter 7 Technical Data";
+
+/// (id, class id, name, source, values) with a name made from the document's words.
+type NamedInstance = (&'static str, &'static str, String, String, Map<String, Json>);
 
 /// (id, class id, name, source, values), the source made from the document's words.
 type CatalogueInstance = (&'static str, &'static str, &'static str, String, Map<String, Json>);
@@ -595,4 +697,390 @@ fn catalogue() -> Vec<CatalogueInstance> {
             dc(5.9, 240.0, 36.9, 10.0, Some(2.4e-4), 24.0, 0.74, 23.0, 9000.0),
         ),
     ]
+}
+
+/// One page of Beckhoff's Information System with the "Mechanical data" table of a 1-stage gear
+/// unit: one column per ratio, every value as the page prints it (merged cells repeated per column).
+struct GearPage {
+    /// The operating instructions the page belongs to (`AG2400`, ...).
+    family: &'static str,
+    series: &'static str,
+    url: &'static str,
+    /// Efficiency under full load, %.
+    eta: &'static str,
+    /// Weight, kg.
+    weight: &'static str,
+    /// The clamping hub whose mass moment of inertia row is entered (the page lists several).
+    hub: &'static str,
+    /// Maximum torsional backlash of the standard version, arcmin (and of the reduced version).
+    backlash: &'static str,
+    reduced: Option<&'static str>,
+    /// Maximum input speed n1Max, min⁻¹.
+    n1_max: &'static str,
+    ratio: &'static [&'static str],
+    /// Maximum torque T2a, nominal output torque T2N, maximum acceleration torque T2B, EMERGENCY
+    /// STOP torque, all Nm; nominal input speed n1N, min⁻¹; J1 of the `hub` row, kgcm².
+    t2a: &'static [&'static str],
+    t2n: &'static [&'static str],
+    t2b: &'static [&'static str],
+    emergency: &'static [&'static str],
+    n1n: &'static [&'static str],
+    j1: &'static [&'static str],
+    ids: &'static [&'static str],
+    /// The 2-stage columns, when the page has both 1- and 2-stage ones.
+    second: Option<SecondStage>,
+}
+
+/// The 2-stage columns of a page (from column `from` on) and the values the page prints for
+/// them instead of the 1-stage ones.
+struct SecondStage {
+    from: usize,
+    eta: &'static str,
+    n1_max: &'static str,
+    backlash: &'static str,
+    weight: &'static str,
+    /// How the page tells the stages apart.
+    how: &'static str,
+}
+
+/// The Beckhoff gear unit pages the catalogue takes its gears from (each column checked against
+/// the page by eye; the table's column order is the ratio row's).
+fn gear_pages() -> Vec<GearPage> {
+    vec![
+        GearPage {
+            family: "AG2400",
+            series: "TP004 MF",
+            url: "https://infosys.beckhoff.com/content/1033/ag2400_ba/8995082251.html",
+            eta: "97",
+            weight: "1.4",
+            hub: "C = 14 mm",
+            backlash: "4",
+            reduced: Some("2"),
+            n1_max: "7500",
+            ratio: &["4", "5", "7", "8", "10"],
+            t2a: &["83", "83", "83", "56", "56"],
+            t2n: &["27", "27", "26", "26", "27"],
+            t2b: &["66", "66", "66", "42", "42"],
+            emergency: &["100", "100", "100", "100", "100"],
+            n1n: &["3300", "3300", "4000", "4000", "4000"],
+            j1: &["0.25", "0.21", "0.18", "0.18", "0.17"],
+            second: None,
+            ids: &BECKHOFF_GEARS[0..5],
+        },
+        GearPage {
+            family: "AG2400",
+            series: "TP010 MF",
+            url: "https://infosys.beckhoff.com/content/1033/ag2400_ba/8995369483.html",
+            eta: "97",
+            weight: "3.8",
+            hub: "E = 19 mm",
+            backlash: "3",
+            reduced: Some("1"),
+            n1_max: "7500",
+            ratio: &["4", "5", "7", "8", "10"],
+            t2a: &["185", "210", "210", "168", "168"],
+            t2n: &["84", "81", "81", "80", "81"],
+            t2b: &["172", "172", "172", "126", "126"],
+            emergency: &["250", "250", "251", "251", "251"],
+            n1n: &["2600", "2900", "3100", "3100", "3100"],
+            j1: &["0.95", "0.79", "0.64", "0.64", "0.57"],
+            second: None,
+            ids: &BECKHOFF_GEARS[5..10],
+        },
+        GearPage {
+            family: "AG2400",
+            series: "TP050 MF",
+            url: "https://infosys.beckhoff.com/content/1033/ag2400_ba/8995561355.html",
+            eta: "97",
+            weight: "14",
+            hub: "K = 38 mm",
+            backlash: "3",
+            reduced: Some("1"),
+            n1_max: "5000",
+            ratio: &["4", "5", "7", "8", "10"],
+            t2a: &["992", "992", "868", "720", "720"],
+            t2n: &["345", "337", "322", "316", "331"],
+            t2b: &["840", "840", "840", "648", "648"],
+            emergency: &["1250", "1250", "1250", "1250", "1250"],
+            n1n: &["1900", "2000", "2500", "2500", "2500"],
+            j1: &["13.7", "12.1", "10.6", "10.6", "9.78"],
+            second: None,
+            ids: &BECKHOFF_GEARS[10..15],
+        },
+        GearPage {
+            family: "AG3300",
+            series: "NPS015 MF",
+            url: "https://infosys.beckhoff.com/content/1033/ag3300_ba/8881782411.html",
+            eta: "97",
+            weight: "1.8",
+            hub: "C = 14 mm",
+            backlash: "8",
+            reduced: None,
+            n1_max: "8000",
+            ratio: &["3", "4", "5", "7", "8", "10"],
+            t2a: &["51", "56", "64", "64", "56", "56"],
+            t2n: &["17", "18", "21", "21", "19", "19"],
+            t2b: &["32", "35", "40", "40", "35", "35"],
+            emergency: &["80", "80", "80", "80", "80", "80"],
+            n1n: &["2900", "3100", "3300", "3600", "3600", "3800"],
+            j1: &["0.34", "0.28", "0.26", "0.24", "0.23", "0.23"],
+            second: None,
+            ids: &BECKHOFF_GEARS[15..21],
+        },
+        GearPage {
+            family: "AG3400",
+            series: "NPT005 MF",
+            url: "https://infosys.beckhoff.com/content/1033/ag3400_ba/9187662731.html",
+            eta: "97",
+            weight: "0.9",
+            hub: "B = 11 mm",
+            backlash: "10",
+            reduced: None,
+            n1_max: "10000",
+            ratio: &["4", "5", "7", "8", "10"],
+            t2a: &["18", "22", "22", "21", "21"],
+            t2n: &["5.1", "6.5", "6.5", "6", "6"],
+            t2b: &["11", "14", "14", "13", "13"],
+            emergency: &["26", "26", "26", "26", "26"],
+            n1n: &["3800", "4000", "4300", "4400", "4600"],
+            j1: &["0.06", "0.05", "0.05", "0.04", "0.04"],
+            second: None,
+            ids: &BECKHOFF_GEARS[21..26],
+        },
+        GearPage {
+            family: "AG3400",
+            series: "NPT025 MF",
+            url: "https://infosys.beckhoff.com/content/1033/ag3400_ba/9187803147.html",
+            eta: "97",
+            weight: "4.4",
+            hub: "E = 19 mm",
+            backlash: "8",
+            reduced: None,
+            n1_max: "7000",
+            ratio: &["3", "4", "5", "7", "8", "10"],
+            t2a: &["128", "152", "160", "160", "144", "144"],
+            t2n: &["40", "48", "50", "50", "45", "45"],
+            t2b: &["80", "95", "100", "100", "90", "90"],
+            emergency: &["190", "190", "190", "190", "190", "190"],
+            n1n: &["3100", "3300", "3400", "3600", "3700", "3900"],
+            j1: &["0.99", "0.8", "0.67", "0.56", "0.53", "0.5"],
+            second: None,
+            ids: &BECKHOFF_GEARS[26..32],
+        },
+        GearPage {
+            family: "AG3400",
+            series: "NPT035 MF",
+            url: "https://infosys.beckhoff.com/content/1033/ag3400_ba/9197685643.html",
+            eta: "97",
+            weight: "9.4",
+            hub: "G = 24 mm",
+            backlash: "8",
+            reduced: None,
+            n1_max: "6000",
+            ratio: &["3", "4", "5", "7", "8", "10"],
+            t2a: &["320", "365", "365", "365", "352", "352"],
+            t2n: &["102", "130", "125", "125", "110", "110"],
+            t2b: &["200", "255", "250", "250", "220", "220"],
+            emergency: &["480", "480", "480", "480", "480", "480"],
+            n1n: &["2300", "2500", "2600", "2800", "2900", "3000"],
+            j1: &["4", "2.8", "2.4", "1.9", "1.8", "1.7"],
+            second: None,
+            ids: &BECKHOFF_GEARS[32..38],
+        },
+        GearPage {
+            family: "AG3300",
+            series: "NPS045 MF",
+            url: "https://infosys.beckhoff.com/content/1033/ag3300_ba/8882147979.html",
+            eta: "97",
+            weight: "19",
+            hub: "K = 38 mm",
+            backlash: "8",
+            reduced: None,
+            n1_max: "4000",
+            ratio: &["5", "8", "10", "25", "32", "50", "64", "100"],
+            t2a: &[],
+            t2n: &["350", "200", "200", "350", "200", "350", "200", "200"],
+            t2b: &["500", "400", "400", "500", "400", "500", "400", "400"],
+            emergency: &["1000", "1000", "1000", "1000", "1000", "1000", "1000", "1000"],
+            n1n: &["1800", "1900", "2000", "2600", "2500", "3000", "2900", "3000"],
+            j1: &["8.7", "7.3", "7.2", "7", "6.9", "6.8", "6.6", "6.5"],
+            second: Some(SecondStage {
+                from: 3,
+                eta: "95",
+                n1_max: "6000",
+                backlash: "10",
+                weight: "19",
+                how: "the page heads its columns 1-stage and 2-stage and prints the maximum input speed per column, 4000 min⁻¹ for ratios 5, 8, 10 and 6000 min⁻¹ for ratios 25 to 100, so ratios 5, 8, 10 are the 1-stage columns; the page prints no maximum torque T2a row",
+            }),
+            ids: &BECKHOFF_GEARS[38..46],
+        },
+        GearPage {
+            family: "AG3400",
+            series: "NPT045 MF",
+            url: "https://infosys.beckhoff.com/content/1033/ag3400_ba/9187952779.html",
+            eta: "97",
+            weight: "19",
+            hub: "K = 38 mm",
+            backlash: "8",
+            reduced: None,
+            n1_max: "4000",
+            ratio: &["5", "8", "10", "25", "32", "50", "64", "100"],
+            t2a: &["700", "640", "640", "700", "640", "700", "640", "640"],
+            t2n: &["350", "200", "350", "200", "350", "200", "200", "200"],
+            t2b: &["500", "400", "400", "500", "400", "500", "400", "400"],
+            emergency: &["1000", "1000", "1000", "1000", "1000", "1000", "1000", "1000"],
+            n1n: &["2000", "2200", "2300", "2600", "2500", "3000", "2900", "3000"],
+            j1: &["9.8", "7.8", "7.4", "7", "6.9", "6.8", "6.6", "6.5"],
+            second: Some(SecondStage {
+                from: 3,
+                eta: "95",
+                n1_max: "6000",
+                backlash: "10",
+                weight: "20",
+                how: "the page heads its columns 1-stage and 2-stage and prints one value per stage for efficiency, weight, maximum input speed and backlash; ratios 5, 8, 10 are the 1-stage columns, the only ones whose J1 rows for the clamping hubs E to I print no value",
+            }),
+            ids: &BECKHOFF_GEARS[46..54],
+        },
+        GearPage {
+            family: "AG3400",
+            series: "NPT015 MF",
+            url: "https://infosys.beckhoff.com/content/1033/ag3400_ba/9187734283.html",
+            eta: "97",
+            weight: "2",
+            hub: "C = 14 mm",
+            backlash: "8",
+            reduced: None,
+            n1_max: "8000",
+            ratio: &["3", "4", "5", "7", "8", "10"],
+            t2a: &["51", "56", "60", "60", "56", "56"],
+            t2n: &["17", "18", "21", "21", "19", "19"],
+            t2b: &["32", "35", "40", "40", "35", "35"],
+            emergency: &["75", "75", "75", "75", "75", "75"],
+            n1n: &["3300", "3500", "3700", "4000", "4100", "4300"],
+            j1: &["0.41", "0.32", "0.28", "0.25", "0.24", "0.23"],
+            second: None,
+            ids: &BECKHOFF_GEARS[54..60],
+        },
+    ]
+}
+
+/// A printed number (a typo in the table above is a NaN, which the seed's own check refuses).
+fn printed(x: &str) -> f64 {
+    x.parse().unwrap_or(f64::NAN)
+}
+
+/// The Beckhoff gear units, one instance per ratio column of each page: (id, class id, name,
+/// source, values).
+fn gear_catalogue() -> Vec<NamedInstance> {
+    let mut out = Vec::new();
+    for p in gear_pages() {
+        for (c, id) in p.ids.iter().enumerate() {
+            let (r, t2n, t2b, es, n1n, j1) = (p.ratio[c], p.t2n[c], p.t2b[c], p.emergency[c], p.n1n[c], p.j1[c]);
+            let (stage, eta, n1_max, backlash, weight, how) = match &p.second {
+                Some(s) if c >= s.from => ("2-stage", s.eta, s.n1_max, s.backlash, s.weight, format!(" (2-stage: {})", s.how)),
+                Some(s) => ("1-stage", p.eta, p.n1_max, p.backlash, p.weight, format!(" (1-stage: {})", s.how)),
+                None => ("1-stage", p.eta, p.n1_max, p.backlash, p.weight, String::new()),
+            };
+            let t2a = p.t2a.get(c).map(|t| format!("maximum torque T2a {t} Nm, ")).unwrap_or_default();
+            let reduced = p.reduced.map(|x| format!(", reduced version ≤ {x} arcmin")).unwrap_or_default();
+            let source = format!(
+                "Beckhoff gear unit {series}, {stage}, ratio {r}, with clamping hub {hub}. Document: Beckhoff Information System, operating instructions {family} ({url}), page \"{series}\", table \"Mechanical data\", column ratio {r}{how}. Values: ratio = Ratio {r}; eta = Efficiency under full load η {eta} %; T_rated = Nominal output torque T2N at n1N {t2n} Nm; T_peak = Maximum acceleration torque T2B (maximum 1000 cycles per hour) {t2b} Nm, the page's limit for cyclic (repeated) peaks; w_in_max = Maximum input speed n1Max {n1max} min⁻¹ (in rad/s by ω = 2π·n/60); J_in = Mass moment of inertia J1 based on the drive, clamping hub {hub}: {j1} kgcm² (the page lists other hubs too); backlash = Maximum torsional backlash jt, standard version, ≤ {backlash} arcmin (an upper limit{reduced}); m = Weight {weight} kg (the page: depending on the clamping hub diameter and selected adapter plate). Printed, without a parameter here: {t2a}EMERGENCY STOP torque {es} Nm (1000 times during the service life of the gear unit), nominal input speed n1N {n1n} min⁻¹, idle torque T012, torsional rigidity Ct21.",
+                series = p.series,
+                hub = p.hub,
+                family = p.family,
+                url = p.url,
+                n1max = n1_max,
+            );
+            let values = values(json!({
+                "ratio": printed(r),
+                "eta": {"value": printed(eta), "unit": "%"},
+                "T_rated": {"value": printed(t2n), "unit": "N.m"},
+                "T_peak": {"value": printed(t2b), "unit": "N.m"},
+                "w_in_max": {"value": printed(n1_max), "unit": "rpm"},
+                "J_in": {"value": printed(j1), "unit": "kg.cm2"},
+                "backlash": {"value": printed(backlash), "unit": "arcmin"},
+                "m": {"value": printed(weight), "unit": "kg"}
+            }));
+            let name = format!("Beckhoff {} i={r}, clamping hub {}", p.series, p.hub);
+            out.push((*id, EFFICIENCY_GEAR, name, source, values));
+        }
+    }
+    out
+}
+
+/// One winding (column) of a maxon motor data table, every value as printed.
+struct MaxonColumn {
+    id: &'static str,
+    /// Line 1 nominal voltage, V.
+    u: &'static str,
+    /// Line 5 nominal torque, mNm; line 6 nominal current, A; line 7 stall torque, mNm.
+    t_nom: &'static str,
+    i_nom: &'static str,
+    stall: &'static str,
+    /// Lines 10-12: terminal resistance and inductance phase to phase (Ω, mH), torque constant (mNm/A).
+    r: &'static str,
+    l: &'static str,
+    k: &'static str,
+    /// Line 15 mechanical time constant, ms (printed; the column check R·J/k² uses it).
+    tau_m: &'static str,
+}
+
+/// The maxon EC 45 flat motors: the catalogue page of each, its columns, and what it lacks.
+fn maxon_catalogue() -> Vec<NamedInstance> {
+    let ids = MAXON_EC45_FLAT_MOTORS;
+    let w30 = [
+        MaxonColumn { id: ids[0], u: "12", t_nom: "55.5", i_nom: "2.03", stall: "241", r: "1.2", l: "0.56", k: "25.5", tau_m: "17.1" },
+        MaxonColumn { id: ids[1], u: "24", t_nom: "55.3", i_nom: "1.01", stall: "239", r: "4.83", l: "2.24", k: "51", tau_m: "17.2" },
+        MaxonColumn { id: ids[2], u: "36", t_nom: "66.6", i_nom: "0.849", stall: "337", r: "6.69", l: "4.29", k: "70.6", tau_m: "12.4" },
+    ];
+    let w70 = [
+        MaxonColumn { id: ids[3], u: "36", t_nom: "110", i_nom: "1.97", stall: "1320", r: "1.560", l: "0.601", k: "57", tau_m: "8.680" },
+        MaxonColumn { id: ids[4], u: "48", t_nom: "112", i_nom: "1.41", stall: "1260", r: "3.070", l: "1.210", k: "80.8", tau_m: "8.510" },
+        MaxonColumn { id: ids[5], u: "60", t_nom: "143", i_nom: "0.92", stall: "1240", r: "7.370", l: "4.270", k: "152", tau_m: "5.770" },
+    ];
+    let mut out = Vec::new();
+    let mut push = |c: &MaxonColumn, title: &str, doc: &str, j: &str, w_max: &str, thermal: &str, column: &str| {
+        let source = format!(
+            "maxon {title}, {u} V winding (block-commutated brushless, modelled as a DC motor with the phase-to-phase values). {doc} Values ({column}): V_max = line 1 nominal voltage {u} V; R = line 10 terminal resistance phase to phase {r} Ω; L = line 11 terminal inductance phase to phase {l} mH; k = line 12 torque constant {k} mNm/A; J = line 16 rotor inertia {j} gcm²; I_max = line 6 nominal current (max. continuous current) {i} A; T_nom = line 5 nominal torque (max. continuous torque) {t} mNm; {w_max} The column's own consistency: R·J/k² = line 15 mechanical time constant {tau} ms. d = 0: the page prints no viscous friction coefficient, and d = 0 is the class's rule for that case. Tc = 0.001 s is the class's drive-setting default, not a motor value. T_peak missing: maxon prints no short-time torque limit, only the stall torque {stall} mNm (line 7, a point of the speed-torque line at nominal voltage, not a permitted load) and that the motor may be briefly overloaded (recurring) without a figure, so the peak check is not evaluated. Printed, without a parameter here: {thermal}.",
+            u = c.u,
+            r = c.r,
+            l = c.l,
+            k = c.k,
+            i = c.i_nom,
+            t = c.t_nom,
+            tau = c.tau_m,
+            stall = c.stall,
+        );
+        let mut v = json!({
+            "R": {"value": printed(c.r), "unit": "Ohm"},
+            "L": {"value": printed(c.l), "unit": "mH"},
+            "k": {"value": printed(c.k), "unit": "mNm/A"},
+            "J": {"value": printed(j), "unit": "g.cm2"},
+            "d": 0,
+            "V_max": {"value": printed(c.u), "unit": "V"},
+            "I_max": {"value": printed(c.i_nom), "unit": "A"},
+            "Tc": 0.001,
+            "T_nom": {"value": printed(c.t_nom), "unit": "mNm"}
+        });
+        if w_max.starts_with("w_max = ") {
+            v["w_max"] = json!({"value": 10000, "unit": "rpm"});
+        }
+        out.push((c.id, DC_MOTOR, format!("maxon {title}, {} V", c.u), source, values(v)));
+    };
+    let doc30 = "Document: maxon catalogue page \"EC 45 flat Ø42.9 mm, brushless, 30 Watt\" (maxon EC motor, May 2012 edition, catalogue page 193), motor data table, values at nominal voltage, as published at https://vdocuments.us/ec-45-flat-429-mm-brushless-30-generator-30wpdf-ec-45-flat-429-mm-brushless.html (the stored copy prints lines 1-16 as rows of six columns: two columns per nominal voltage 12, 12, 24, 24, 36, 36 V; this instance is the first column of its voltage's pair, and which of the page's two variants, with Hall sensors or sensorless, that column is the stored copy does not say).";
+    let thermal30 = "thermal resistances housing-ambient 5.7 K/W and winding-housing 3.96 K/W (lines 17, 18), thermal time constant winding 11.5 s and motor 251 s (lines 19, 20)";
+    let no_w30 =
+        "w_max missing: line 23 (max. permissible speed) is cut off in the stored copy of the page, so the speed check is not evaluated.";
+    for (c, col) in w30.iter().zip(["column 1", "column 3", "column 5"]) {
+        push(c, "EC 45 flat Ø42.9 mm, 30 W", doc30, "92.5", no_w30, thermal30, col);
+    }
+    let doc70 = "Document: maxon catalogue page \"EC 45 flat Ø43.5 mm, brushless, 70 watt\", Motor Data (provisional), values at nominal voltage 24, 36, 48, 60 V, as published in the online flipbook https://online.flippingbook.com/view/1042987/324 (page 324). The stored copy prints the table one winding at a time without line labels; each winding's numbers were matched to the lines by the page's own relations (line 13 speed constant × line 1 nominal voltage ≈ line 2 no load speed, nominal voltage / line 10 terminal resistance ≈ line 8 stall current, R·J/k² = line 15), and its 24 V column agrees with the first seed's EC 45 flat 70 W (24 V).";
+    let thermal70 =
+        "thermal resistances 2.55 K/W and 6.64 K/W (lines 17, 18), thermal time constant winding 43.1 s and motor 127 s (lines 19, 20)";
+    let w70_max = "w_max = line 23 max. speed 10 000 rpm.";
+    for c in &w70 {
+        let col = format!("{} V winding", c.u);
+        push(c, "EC 45 flat Ø43.5 mm, 70 W", doc70, "181", w70_max, thermal70, &col);
+    }
+    out
 }

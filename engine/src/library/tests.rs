@@ -327,8 +327,23 @@ fn the_seed_is_valid_and_ids_are_unique() {
         assert!(ids.insert(id.clone()), "{id} twice");
     }
     let motors = lib.instances.iter().filter(|i| i.class_id == seed::DC_MOTOR).count();
-    assert_eq!(motors, 12, "motors of our own class: 4 of the first seed and 8 catalogue motors");
-    assert_eq!(lib.instances.len(), 17, "instances: 9 of the first seed and 8 catalogue motors");
+    assert_eq!(motors, 18, "motors of our own class: 4 of the first seed and 14 catalogue motors");
+    assert_eq!(lib.instances.len(), 83, "instances: 9 of the first seed, 14 catalogue motors and 60 catalogue gear units");
+    // Every instance beyond the first seed's nine is a catalogue instance (held to its sources).
+    let first = [
+        seed::MAXON_RE40,
+        seed::MAXON_EC45_FLAT,
+        seed::FAULHABER_1331,
+        seed::FAULHABER_3564,
+        seed::MAXON_RE40_MSL,
+        seed::GEAR_100,
+        seed::MAXON_GP42C_74,
+        seed::BALL_SCREW_16X5,
+        seed::ROBOT_R3_CONTROLLER,
+    ];
+    for i in &lib.instances {
+        assert!(first.contains(&i.id.as_str()) != seed::CATALOGUE.contains(&i.id.as_str()), "{} is first seed or catalogue", i.name);
+    }
     for i in &lib.instances {
         assert!(!i.source.is_empty(), "{} has a source", i.name);
         let class = lib.class(&i.class_id).expect("class");
@@ -366,7 +381,8 @@ fn the_seed_is_valid_and_ids_are_unique() {
 }
 
 /// The makers a catalogue source may name.
-const MAKERS: [&str; 9] = ["FAULHABER", "maxon", "Portescap", "Nanotec", "Harmonic Drive", "Neugart", "Bosch Rexroth", "HIWIN", "THK"];
+const MAKERS: [&str; 10] =
+    ["FAULHABER", "maxon", "Portescap", "Nanotec", "Harmonic Drive", "Neugart", "Bosch Rexroth", "HIWIN", "THK", "Beckhoff"];
 
 /// Why a catalogue instance's source is not good enough, if it is not: it names a maker, a
 /// document (a URL) and a page, table or line; says for every value it has which datasheet line it
@@ -437,6 +453,54 @@ fn catalogue_values_are_the_datasheets() {
     let m = seed::FAULHABER_2250_024_BX4;
     assert!(close(get(m, "R"), 5.9) && close(get(m, "L"), 240e-6) && close(get(m, "k"), 0.0369) && close(get(m, "J"), 1e-6));
     assert!(close(get(m, "d"), 2.4e-7 * 30.0 / std::f64::consts::PI) && close(get(m, "T_nom"), 0.023));
+    // maxon EC 45 flat 70 W, 48 V: phase-to-phase values, and the page's own mechanical time
+    // constant R·J/k² (8.510 ms) from them.
+    let mx = seed::MAXON_EC45_FLAT_MOTORS[4];
+    assert!(close(get(mx, "R"), 3.07) && close(get(mx, "L"), 1.21e-3) && close(get(mx, "k"), 0.0808) && close(get(mx, "J"), 181e-7));
+    assert!(close(get(mx, "V_max"), 48.0) && close(get(mx, "I_max"), 1.41) && close(get(mx, "T_nom"), 0.112));
+    assert!(close(get(mx, "w_max"), 10000.0 * std::f64::consts::PI / 30.0) && get(mx, "T_peak").is_none());
+    let tau = get(mx, "R").unwrap_or(0.0) * get(mx, "J").unwrap_or(0.0) / get(mx, "k").unwrap_or(1.0).powi(2);
+    assert!((tau - 8.51e-3).abs() < 0.01e-3, "{tau}");
+    // The 30 W page's stored copy lacks the max. speed line: w_max stays missing.
+    let mx = seed::MAXON_EC45_FLAT_MOTORS[1];
+    assert!(close(get(mx, "R"), 4.83) && close(get(mx, "k"), 0.051) && close(get(mx, "J"), 92.5e-7) && get(mx, "w_max").is_none());
+    let tau = get(mx, "R").unwrap_or(0.0) * get(mx, "J").unwrap_or(0.0) / get(mx, "k").unwrap_or(1.0).powi(2);
+    assert!((tau - 17.2e-3).abs() < 0.05e-3, "{tau}");
+    // A gear unit per ratio (Beckhoff TP010 MF, ratio 7, clamping hub E = 19 mm): every value of
+    // its column, in SI units.
+    let g = seed::BECKHOFF_GEARS[7];
+    assert!(close(get(g, "ratio"), 7.0) && close(get(g, "eta"), 0.97) && close(get(g, "T_rated"), 81.0) && close(get(g, "T_peak"), 172.0));
+    assert!(close(get(g, "w_in_max"), 7500.0 * std::f64::consts::PI / 30.0) && close(get(g, "J_in"), 0.64e-4) && close(get(g, "m"), 3.8));
+    assert!(close(get(g, "backlash"), 3.0 * std::f64::consts::PI / 10800.0));
+    // Its neighbour at ratio 8 has its own ratings (no ratio of a family borrows another's).
+    let h = seed::BECKHOFF_GEARS[8];
+    assert!(close(get(h, "ratio"), 8.0) && close(get(h, "T_peak"), 126.0) && close(get(h, "T_rated"), 80.0));
+    let name = |id: &str| lib.instances.iter().find(|i| i.id == id).map(|i| i.name.clone()).unwrap_or_default();
+    assert_eq!(name(g), "Beckhoff TP010 MF i=7, clamping hub E = 19 mm");
+    // The last page's last column: NPT035 MF, ratio 10, hub G = 24 mm.
+    let z = seed::BECKHOFF_GEARS[37];
+    assert!(
+        close(get(z, "ratio"), 10.0) && close(get(z, "T_rated"), 110.0) && close(get(z, "T_peak"), 220.0) && close(get(z, "J_in"), 1.7e-4)
+    );
+    // A page with 1- and 2-stage columns (NPS045 MF): each column takes its own stage's efficiency,
+    // maximum input speed and backlash.
+    let one = seed::BECKHOFF_GEARS[40];
+    let two = seed::BECKHOFF_GEARS[43];
+    assert!(
+        close(get(one, "ratio"), 10.0) && close(get(one, "eta"), 0.97) && close(get(one, "w_in_max"), 4000.0 * std::f64::consts::PI / 30.0)
+    );
+    assert!(close(get(one, "backlash"), 8.0 * std::f64::consts::PI / 10800.0) && close(get(one, "T_rated"), 200.0));
+    assert!(
+        close(get(two, "ratio"), 50.0) && close(get(two, "eta"), 0.95) && close(get(two, "w_in_max"), 6000.0 * std::f64::consts::PI / 30.0)
+    );
+    assert!(
+        close(get(two, "backlash"), 10.0 * std::f64::consts::PI / 10800.0)
+            && close(get(two, "T_peak"), 500.0)
+            && close(get(two, "J_in"), 6.8e-4)
+    );
+    // NPT045 MF prints its weight per stage too.
+    assert!(close(get(seed::BECKHOFF_GEARS[48], "m"), 19.0) && close(get(seed::BECKHOFF_GEARS[49], "m"), 20.0));
+    assert!(close(get(seed::BECKHOFF_GEARS[53], "ratio"), 100.0) && close(get(seed::BECKHOFF_GEARS[53], "J_in"), 6.5e-4));
     // The datasheet's own consistency: the mechanical time constant R·J/k² it prints (4.3 ms).
     let tau = get(m, "R").unwrap_or(0.0) * get(m, "J").unwrap_or(0.0) / get(m, "k").unwrap_or(1.0).powi(2);
     assert!((tau - 4.3e-3).abs() < 0.05e-3, "{tau}");
@@ -564,16 +628,16 @@ fn import_updates_by_id_and_migrates_instances_not_in_the_file() {
     // A file with only the efficiency gear class, its eta no longer editable and a new
     // parameter with a default.
     let mut gear = current.class(seed::EFFICIENCY_GEAR).expect("gear").clone();
-    gear.parameters
-        .push(Parameter { default: Some(Value::Real(0.0)), ..param("backlash", ParamType::Real, "rad", Some(0.0), None, false) });
+    gear.parameters.push(Parameter { default: Some(Value::Real(0.0)), ..param("T_idle", ParamType::Real, "N.m", Some(0.0), None, false) });
     let text = xml::write(&Library { classes: vec![gear], instances: vec![] });
     let doc = xml::read(&text).expect("read");
     let plan = plan_import(&current, &doc).expect("plan");
     assert_eq!(plan.counts.classes_updated, 1);
     assert_eq!(plan.counts.classes_created, 0);
-    assert_eq!(plan.counts.instances_migrated, 1);
+    // The GP 42 C and the 60 catalogue gear units.
+    assert_eq!(plan.counts.instances_migrated, 61);
     let gp = plan.instances.iter().find(|i| i.id == seed::MAXON_GP42C_74).expect("migrated");
-    assert_eq!(gp.value("backlash"), Some(&Value::Real(0.0)));
+    assert_eq!(gp.value("T_idle"), Some(&Value::Real(0.0)));
 
     // The same class under another id but the same name collides.
     let mut twin = current.class(seed::IDEAL_GEAR).expect("gear").clone();

@@ -110,6 +110,7 @@ const LISTED: &[(&str, &str, f64, f64)] = &[
     ("rev/min", "rad/s", PI, 30.0),
     ("deg/s", "rad/s", PI, 180.0),
     ("deg", "rad", PI, 180.0),
+    ("arcmin", "rad", PI, 10800.0),
     ("rev", "rad", 2.0 * PI, 1.0),
     // Inertia.
     ("g.cm2", "kg.m2", 1.0, 1e7),
@@ -259,6 +260,9 @@ mod tests {
         assert!((k - 0.020120).abs() < 1e-5, "{k}");
         let d = c(2.4e-4, "mNm/rpm", "N.m.s/rad");
         assert!((d - 2.2918e-6).abs() < 1e-9, "{d}");
+        // Gear backlash: 60 arcmin = 1 deg.
+        let b = c(60.0, "arcmin", "rad");
+        assert!((b - PI / 180.0).abs() < 1e-15, "{b}");
     }
 
     #[test]

@@ -212,8 +212,9 @@ fn parts_from_the_seed_library() {
     let e = parts::gear(c, i, &[]).expect_err("a controller is no gear");
     assert!(matches!(e, SizingError::UnknownClass { slot: "gear", .. }), "{e}");
     let cat = Catalog::from_library(&lib);
-    // 5 motors of the first seed and 8 catalogue motors.
-    assert_eq!((cat.motors.len(), cat.gears.len(), cat.skipped.len()), (13, 3, 0));
+    // 5 motors of the first seed and 14 catalogue motors; 3 gears of the first seed and 60
+    // catalogue gear units.
+    assert_eq!((cat.motors.len(), cat.gears.len(), cat.skipped.len()), (19, 63, 0));
 }
 
 /// Ranking: only passing combinations, complete ones first, then the smallest rotor, then the

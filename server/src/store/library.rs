@@ -641,10 +641,13 @@ mod tests {
         let old = export(&store).await.expect("old");
         assert!(old.classes.iter().all(|c| c.parameters.iter().all(|p| !p.datasheet)));
         assert_ne!(old, new);
-        // The migration again, without the column it adds.
+        // The migration again, without the column it adds, and 0012 (the gear classes' backlash
+        // and mass) after it.
         let sql = include_str!("../../../migrations/sqlite/0005_library_datasheet.sql");
         let data = sql.split_once("DEFAULT 0;").expect("the ALTER TABLE").1;
         sqlx::raw_sql(data).execute(&store.pool).await.expect("migrate");
+        let sql = include_str!("../../../migrations/sqlite/0012_library_gear_datasheet.sql");
+        sqlx::raw_sql(sql).execute(&store.pool).await.expect("migrate 0012");
         assert_eq!(export(&store).await.expect("export"), new);
     }
 
