@@ -222,7 +222,7 @@ async fn step(client: &reqwest::Client, at: &Instance, tally: &Tally, hostile: &
         }
         5 => {
             let (s, b) = upload(client, at, hostile.triangles.clone()).await;
-            let refused = s == 422 && b.contains("20000000 triangles");
+            let refused = s == 422 && b.contains("limit of 5000000 triangles");
             tally.saw("mesh named by 201 links", s, &b, refused || s == 202);
             if let Some(job) = field(&b, "job_id").filter(|_| s == 202) {
                 tally.hostile_jobs.lock().expect("lock").push(job);

@@ -297,10 +297,10 @@ fn grid_obj(k: usize) -> Vec<u8> {
 
 #[test]
 fn a_mesh_named_by_many_links_counts_every_use_against_the_bundle_budget() {
-    // 199,712 triangles in one 4 MB file, named by 101 links: 20.2 M triangles after instancing.
+    // 199,712 triangles in one 4 MB file, named by 26 links: 5.19 M triangles after instancing.
     let obj = grid_obj(317);
     let per = 2 * 316 * 316;
-    let links = 101;
+    let links = 26;
     assert!(per * (links - 1) <= geometry::MAX_BUNDLE_TRIANGLES && per * links > geometry::MAX_BUNDLE_TRIANGLES);
     let mut u = String::from("<robot name=\"many\">\n");
     for i in 0..links {
@@ -320,9 +320,9 @@ fn a_mesh_named_by_many_links_counts_every_use_against_the_bundle_budget() {
     let e = crate::pipeline::analyse(&b, &crate::pipeline::Options::default()).err().expect("over the budget").to_string();
     assert!(
         e.contains("many/meshes/plate.obj")
-            && e.contains("link \"l100\"")
-            && e.contains("20170912 triangles")
-            && e.contains("limit of 20000000 triangles per bundle"),
+            && e.contains("link \"l25\"")
+            && e.contains("5192512 triangles")
+            && e.contains("limit of 5000000 triangles per bundle"),
         "{e}"
     );
 }
