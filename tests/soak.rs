@@ -1,6 +1,6 @@
 //! Soak (issue 26): a real `cad2mo serve` process on loopback, for `CAD2MO_SOAK_SECS` (default
-//! 60) seconds. Four clients upload good bundles (the pendulum, a three-link box arm, each with
-//! its own mass so every upload is a new bundle) and hostile ones (a 20,000-link chain, 300 loop
+//! 60) seconds. Four clients upload good bundles (the pendulum, once each with a 300k-triangle
+//! STL, a three-link box arm, each with its own mass so every upload is a new bundle) and hostile ones (a 20,000-link chain, 300 loop
 //! joints, a mesh named by 201 links past the bundle's triangle budget, a MAT result holding NaN,
 //! bytes that are no zip), plan motions on converted arms and check them for collisions (a 2 s
 //! motion checked, a 700 s one refused by the check's budget), while a fifth client asks
@@ -9,7 +9,7 @@
 //! Asserted: health always answers 200 within 1 s; no answer is a 5xx; every hostile request is
 //! refused with a 4xx (or, for a bundle the upload check cannot judge, its job fails); every good
 //! job succeeds; the process's peak resident memory (`VmHWM` of /proc/<pid>/status) stays under
-//! [`PEAK_RSS_BOUND_MB`]. Prints the peak and the counts.
+//! [`PEAK_RSS_BOUND_MB`]; SIGTERM then stops the process cleanly. Prints the peak and the counts.
 //!
 //! Runs the service binary cargo built (tests/support/instances.rs), two workers, SQLite.
 
@@ -70,12 +70,36 @@ fn pendulum(i: usize) -> Vec<u8> {
     write_zip(&[("PENDULUM.xml".into(), xml.into_bytes()), ("meshes/LINK_prt.stl".into(), stl)]).expect("zip")
 }
 
+/// The pendulum with a binary STL of 300,000 triangles (a conversion of seconds and some
+/// hundred MB), made unique by one triangle's position.
+fn heavy(i: usize) -> Vec<u8> {
+    let mut files = zip_files(&cad2mo_tests::app::heavy_pendulum(300_000));
+    let stl = &mut files.iter_mut().find(|(n, _)| n.ends_with(".stl")).expect("stl").1;
+    stl[84 + 12..84 + 16].copy_from_slice(&(i as f32 * 1e-3).to_le_bytes());
+    write_zip(&files).expect("zip")
+}
+
+fn zip_files(zip: &[u8]) -> Vec<(String, Vec<u8>)> {
+    let mut z = zip::ZipArchive::new(std::io::Cursor::new(zip)).expect("zip");
+    (0..z.len())
+        .map(|k| {
+            let mut f = z.by_index(k).expect("entry");
+            let mut data = Vec::new();
+            std::io::Read::read_to_end(&mut f, &mut data).expect("read");
+            (f.name().to_string(), data)
+        })
+        .collect()
+}
+
 /// A three-link arm of boxes (joints `shoulder`, `elbow`), link mass `1 + i/1000` kg.
 fn box_arm(i: usize) -> Vec<u8> {
     let m = 1.0 + i as f64 * 1e-3;
-    let inertial = format!(r#"<inertial><mass value="{m}"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial>"#);
+    let inertial =
+        format!(r#"<inertial><mass value="{m}"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial>"#);
     let link = |name: &str| {
-        format!(r#"<link name="{name}">{inertial}<visual><origin xyz="0 0 0.1"/><geometry><box size="0.05 0.05 0.2"/></geometry></visual></link>"#)
+        format!(
+            r#"<link name="{name}">{inertial}<visual><origin xyz="0 0 0.1"/><geometry><box size="0.05 0.05 0.2"/></geometry></visual></link>"#
+        )
     };
     let joint = |name: &str, parent: &str, child: &str| {
         format!(
@@ -186,7 +210,9 @@ async fn step(client: &reqwest::Client, at: &Instance, tally: &Tally, hostile: &
     let unique = c * 100_000 + i;
     match i % 8 {
         0 | 4 => {
-            let (s, b) = upload(client, at, pendulum(unique)).await;
+            // Each client's first such upload is heavy: the pendulum with a 300k-triangle STL.
+            let bundle = if i < 8 && i % 8 == 4 { heavy(unique) } else { pendulum(unique) };
+            let (s, b) = upload(client, at, bundle).await;
             tally.saw("good pendulum upload", s, &b, s == 202);
             if let Some(job) = field(&b, "job_id") {
                 tally.good_jobs.lock().expect("lock").push(job);
@@ -369,11 +395,7 @@ async fn soak_good_and_hostile_clients_with_health_probes() {
         println!("soak:   {what}: {status} x {n}");
     }
     println!("soak: jobs: {outcome:?} (good: true)");
-    println!(
-        "soak: health: {} probes, slowest {} ms",
-        tally.health.load(Ordering::Relaxed),
-        tally.health_max_ms.load(Ordering::Relaxed)
-    );
+    println!("soak: health: {} probes, slowest {} ms", tally.health.load(Ordering::Relaxed), tally.health_max_ms.load(Ordering::Relaxed));
     let median = {
         let mut s = samples.clone();
         s.sort_unstable();
@@ -390,9 +412,16 @@ async fn soak_good_and_hostile_clients_with_health_probes() {
     // The load did happen: good jobs, checks and refusals.
     assert!(!good.is_empty() && !tally.arms.lock().expect("lock").is_empty(), "no good job converted");
     let statuses = tally.statuses.lock().expect("lock");
-    for what in ["collision check, 2 s", "collision check, 700 s (over budget)", "20,000-link chain", "300 loop joints", "result with NaN"] {
+    for what in ["collision check, 2 s", "collision check, 700 s (over budget)", "20,000-link chain", "300 loop joints", "result with NaN"]
+    {
         assert!(statuses.keys().any(|(w, _)| w == what), "no {what} in {secs} s");
     }
     drop(statuses);
+    // SIGTERM: a graceful stop, done within the 10 s the connections get and a little more.
+    let mut at = Arc::try_unwrap(at).unwrap_or_else(|_| panic!("the clients are done"));
+    let t = Instant::now();
+    let exit = at.terminate(Duration::from_secs(20));
+    println!("soak: SIGTERM: {exit:?} after {:.2} s", t.elapsed().as_secs_f64());
+    assert!(exit.is_some_and(|s| s.success()), "SIGTERM: {exit:?}\n{}", at.log_text());
     drop(cluster);
 }

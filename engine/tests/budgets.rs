@@ -26,8 +26,8 @@ fn one_stl_named_by_many_bodies_counts_per_body_against_the_bundle_budget() {
         for i in 0..bodies {
             xml = xml.replace(&format!("\"LINK_{i}.stl\""), "\"PART.stl\"");
         }
-        let bundle = Bundle::from_files("many", [("tree.xml".to_string(), xml.into_bytes()), ("PART.stl".to_string(), stl(per))])
-            .expect("bundle");
+        let bundle =
+            Bundle::from_files("many", [("tree.xml".to_string(), xml.into_bytes()), ("PART.stl".to_string(), stl(per))]).expect("bundle");
         pipeline::analyse(&bundle, &pipeline::Options::default()).map(|_| ()).map_err(|e| e.to_string())
     };
     convert(within).expect("exactly the budget converts");

@@ -290,7 +290,9 @@ impl Jobs {
         match models::release_claims(&self.store.pool, &self.instance).await {
             Ok(0) => {}
             Ok(released) => tracing::info!(released, "jobs running at the stop were put back in the queue (not counted as aborts)"),
-            Err(e) => tracing::warn!(error = %e, "could not put the running jobs back in the queue: the next start counts the stop against them"),
+            Err(e) => {
+                tracing::warn!(error = %e, "could not put the running jobs back in the queue: the next start counts the stop against them")
+            }
         }
     }
 
