@@ -417,6 +417,10 @@ def urdf_tree_seeds():
     write("urdf_tree", "mimic.bin", bytes([0, 1, 0, 0, 64, 16, 0, 0, 16, 8, 0, 0,
                                            1, 201, 0, 0, 64, 16, 0, 64, 16, 8, 0, 0]))
     write("urdf_tree", "loop.bin", chain[:48] + bytes([0, 3]))
+    # j1 mimics j2 and j2 mimics j1: a ring (one coupling dropped with a warning).
+    write("urdf_tree", "mimic_ring.bin", bytes([0, 1, 0, 0, 64, 16, 0, 0, 16, 8, 0, 0,
+                                                1, 201, 0, 0, 64, 16, 0, 64, 16, 8, 0, 2,
+                                                1, 201, 0, 0, 64, 0, 16, 64, 16, 8, 0, 1]))
 
 
 def main():

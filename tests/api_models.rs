@@ -646,3 +646,36 @@ async fn a_urdf_chain_over_the_link_limit_is_refused_at_upload() {
     assert_eq!(json(app.get("/api/models").await, 200).await, serde_json::json!([]));
     assert_eq!(app.get("/api/health").await.status().as_u16(), 200);
 }
+
+/// A graceful stop (Ctrl-C, SIGTERM) while a job runs alone is no crash: the job goes back to
+/// the queue uncharged. Stopped so MAX_ABORTS times mid-run, it still converts at the next start
+/// and is not quarantined (a kill, `stop`, would have charged each stop: see the test above).
+#[tokio::test]
+async fn graceful_stops_during_a_lone_job_are_not_counted_as_aborts() {
+    let max = cad2mo_server::jobs::MAX_ABORTS;
+    let app = TestApp::spawn_with(|s| s.workers = 1).await;
+    let (_, _, job) = app.upload_model_ok(cad2mo_tests::app::heavy_pendulum(400_000), &[]).await;
+    let mut app = app;
+    for stop in 1..=max {
+        // Wait until the job runs, then stop.
+        let deadline = std::time::Instant::now() + std::time::Duration::from_secs(30);
+        loop {
+            let j: serde_json::Value = app.job(&job).await.json().await.expect("json");
+            if j["status"] == "running" {
+                break;
+            }
+            assert_ne!(j["status"], "succeeded", "stop {stop}: the job finished before the stop; make it heavier");
+            assert!(std::time::Instant::now() < deadline, "not running: {j:#}");
+            tokio::time::sleep(std::time::Duration::from_millis(20)).await;
+        }
+        let dir = app.stop_gracefully().await;
+        let store = open_store(dir.path()).await;
+        let row = cad2mo_server::store::models::get_job(&store.pool, &job).await.expect("job").expect("row");
+        assert_eq!(row.status, "queued", "stop {stop}: put back in the queue");
+        store.pool.close().await;
+        app = TestApp::spawn_in(dir, |s| s.workers = 1).await;
+    }
+    let done = app.wait_for_job_within(&job, std::time::Duration::from_secs(120)).await;
+    assert_eq!(done["status"], "succeeded", "{done:#}");
+    assert_eq!(app.get("/api/jobs").await.json::<serde_json::Value>().await.expect("json")["quarantined"], serde_json::json!([]));
+}

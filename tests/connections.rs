@@ -1,7 +1,8 @@
 //! Connection hygiene (issue 26, point 7): idle half-sent requests beyond the connection cap do
 //! not lock HTTP out (health answers within 1 s; other requests over the cap get a quick 503
 //! naming the limit), a half-sent head and a stalled body are dropped after their timeouts, and
-//! an idle kept-alive connection is closed.
+//! an idle kept-alive connection is closed; an HTTP/2 connection that keeps sending frames but
+//! begins no request is closed after the header timeout.
 
 use std::time::{Duration, Instant};
 
@@ -106,5 +107,47 @@ async fn a_stalled_upload_and_an_idle_connection_are_dropped() {
     assert!(String::from_utf8_lossy(&buf[..n]).starts_with("HTTP/1.1 200"));
     let (t, _) = closed_after(&mut s, Duration::from_secs(5)).await.expect("an idle connection is closed");
     assert!(t < Duration::from_secs(2), "closed after {t:?}");
+    assert_eq!(app.health().await.status(), 200);
+}
+
+/// HTTP/2 (prior knowledge): a connection that sends its preface and then only pings, never a
+/// request's headers, is closed after the header timeout (hyper times HTTP/1 heads only; the
+/// pings keep bytes moving, so the keep-alive watchdog alone would never close it).
+#[tokio::test]
+async fn an_http2_connection_that_begins_no_request_is_closed_after_the_header_timeout() {
+    let app = TestApp::spawn_with(|s| {
+        s.header_timeout = Duration::from_millis(1000);
+        s.keep_alive_timeout = Duration::from_secs(30);
+    })
+    .await;
+    let addr = app.address.trim_start_matches("http://").to_string();
+    let s = TcpStream::connect(&addr).await.expect("connect");
+    let (mut rd, mut wr) = s.into_split();
+    // Preface and an empty SETTINGS frame, then a PING every 200 ms.
+    wr.write_all(b"PRI * HTTP/2.0\r\n\r\nSM\r\n\r\n\x00\x00\x00\x04\x00\x00\x00\x00\x00").await.expect("preface");
+    let pinger = tokio::spawn(async move {
+        for k in 0u8..100 {
+            tokio::time::sleep(Duration::from_millis(200)).await;
+            let mut ping = vec![0, 0, 8, 6, 0, 0, 0, 0, 0];
+            ping.extend_from_slice(&[k; 8]);
+            if wr.write_all(&ping).await.is_err() {
+                return;
+            }
+        }
+    });
+    let t = Instant::now();
+    let mut buf = [0u8; 4096];
+    let mut got = 0usize;
+    let closed = loop {
+        match tokio::time::timeout(Duration::from_secs(6).saturating_sub(t.elapsed()), rd.read(&mut buf)).await {
+            Err(_) => break None,
+            Ok(Ok(0)) | Ok(Err(_)) => break Some(t.elapsed()),
+            Ok(Ok(n)) => got += n,
+        }
+    };
+    pinger.abort();
+    let closed = closed.expect("closed by the header timeout while pinging");
+    assert!(got > 0, "the server spoke HTTP/2 (settings, ping acks)");
+    assert!(closed >= Duration::from_millis(900) && closed < Duration::from_secs(4), "closed after {closed:?}");
     assert_eq!(app.health().await.status(), 200);
 }

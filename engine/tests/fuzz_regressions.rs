@@ -77,12 +77,16 @@ fn convert_check_finds_non_finite_numbers() {
 fn urdf_tree_seeds_convert() {
     use cad2mo_engine::pipeline::{self, front::bundle::Bundle};
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../fuzz/seeds/urdf_tree");
-    for (seed, links) in [("chain.bin", 6), ("tree.bin", 4), ("mimic.bin", 2)] {
+    for (seed, links) in [("chain.bin", 6), ("tree.bin", 4), ("mimic.bin", 2), ("mimic_ring.bin", 3)] {
         let data = std::fs::read(root.join(seed)).expect("seed");
         let text = targets::urdf_of_bytes(&data);
         let bundle = Bundle::from_files("fuzz", [("robot.urdf".to_string(), text.clone().into_bytes())]).expect("bundle");
         let opts = pipeline::Options { write_shapes: false, ..Default::default() };
         let out = pipeline::convert(&bundle, &opts).unwrap_or_else(|e| panic!("{seed} does not convert: {e}\n{text}"));
         assert!(out.report.bodies.len() > links, "{seed}: {} bodies", out.report.bodies.len());
+        if seed == "mimic_ring.bin" {
+            let ring = out.report.warnings.iter().filter(|w| w.code == "mimic-not-expressible" && w.message.contains("cycle")).count();
+            assert_eq!(ring, 1, "{seed}: {:?}", out.report.warnings);
+        }
     }
 }

@@ -306,8 +306,12 @@ pub fn urdf_of_bytes(data: &[u8]) -> String {
         );
         let limit =
             if kind == "revolute" || kind == "prismatic" { "<limit lower=\"-1\" upper=\"1\" effort=\"10\" velocity=\"1\"/>" } else { "" };
-        let mimic =
-            if c[1] >= 200 && i > 0 { format!("<mimic joint=\"j{}\" multiplier=\"{}\"/>", i - 1, signed(c[7])) } else { String::new() };
+        // Any joint, before or after this one: chains and rings of mimics.
+        let mimic = if c[1] >= 200 && i > 0 {
+            format!("<mimic joint=\"j{}\" multiplier=\"{}\"/>", c[11] as usize % chunks.len(), signed(c[7]))
+        } else {
+            String::new()
+        };
         let _ = writeln!(
             joints,
             "  <joint name=\"j{i}\" type=\"{kind}\"><parent link=\"{parent}\"/><child link=\"l{i}\"/><origin xyz=\"{} {} {}\" rpy=\"{} {} {}\"/><axis xyz=\"{} {} {}\"/>{limit}{mimic}</joint>",

@@ -96,9 +96,15 @@ impl App {
         &self.state
     }
 
-    /// Serves until Ctrl-C (or the task is dropped), then halts the workers: running jobs stay
-    /// `running` and the next start redoes them.
+    /// Serves until Ctrl-C or SIGTERM (or the task is dropped); see [`App::run_until`].
     pub async fn run_until_stopped(self) -> anyhow::Result<()> {
+        self.run_until(stop_signal()).await
+    }
+
+    /// Serves until `shutdown` resolves, then stops the workers gracefully: the jobs running
+    /// here go back to the queue, not charged as aborts ([`crate::jobs::Jobs::stop`]), and the
+    /// next start redoes them. Dropping the task instead is a kill: nothing is released.
+    pub async fn run_until(self, shutdown: impl std::future::Future<Output = ()>) -> anyhow::Result<()> {
         let router = crate::api::router(self.state.clone()).layer(tower_http::trace::TraceLayer::new_for_http());
         let s = &self.state.settings;
         let limits = crate::api::serve::Limits {
@@ -107,12 +113,32 @@ impl App {
             body_timeout: s.body_timeout,
             keep_alive: s.keep_alive_timeout,
         };
-        let served = crate::api::serve::serve(self.listener, router, limits, async {
-            let _ = tokio::signal::ctrl_c().await;
-        })
-        .await
-        .context("serving");
-        self.state.jobs.halt().await;
+        let served = crate::api::serve::serve(self.listener, router, limits, shutdown).await.context("serving");
+        self.state.jobs.stop().await;
         served
+    }
+}
+
+/// Resolves at Ctrl-C (SIGINT) or, on Unix, SIGTERM (what service managers and containers send).
+async fn stop_signal() {
+    #[cfg(unix)]
+    {
+        let term = tokio::signal::unix::signal(tokio::signal::unix::SignalKind::terminate());
+        match term {
+            Ok(mut term) => {
+                tokio::select! {
+                    _ = tokio::signal::ctrl_c() => tracing::info!("Ctrl-C: stopping"),
+                    _ = term.recv() => tracing::info!("SIGTERM: stopping"),
+                }
+            }
+            Err(e) => {
+                tracing::warn!(error = %e, "cannot listen for SIGTERM; Ctrl-C only");
+                let _ = tokio::signal::ctrl_c().await;
+            }
+        }
+    }
+    #[cfg(not(unix))]
+    {
+        let _ = tokio::signal::ctrl_c().await;
     }
 }

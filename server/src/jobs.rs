@@ -42,8 +42,10 @@
 //! Shutdown: the dispatcher stops when the last [`Jobs`] handle is dropped (the app's state);
 //! queued jobs wait in the table for the next start. [`Jobs::halt`] stops it at once, like a
 //! kill: running jobs are abandoned (still `running` in the table, re-queued by the next start)
-//! and none of them records anything afterwards. The server halts on Ctrl-C; tests halt the
-//! server they stop, so that its jobs cannot finish behind the back of the next one.
+//! and none of them records anything afterwards. On Ctrl-C or SIGTERM the server stops
+//! gracefully ([`Jobs::stop`]): it halts, then puts the jobs it was running back in the queue
+//! without charging them an abort (a stop asked for is no crash). Tests halt the server they
+//! stop (like a kill), so that its jobs cannot finish behind the back of the next one.
 
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex};
@@ -110,6 +112,9 @@ pub struct Jobs {
     board: ProgressBoard,
     halt: Arc<Halt>,
     shapes: Arc<MemoryShapeCache>,
+    /// For [`Jobs::stop`]: the store and this instance's claims.
+    store: Store,
+    instance: String,
 }
 
 /// Stops the dispatcher: the signal, and the dispatcher's task to wait for.
@@ -249,13 +254,13 @@ impl Jobs {
         let board = ProgressBoard::default();
         let instance = uuid::Uuid::new_v4().simple().to_string();
         tracing::info!(instance = %instance, lease_secs = lease.as_secs_f64(), "job queue instance");
-        let claimer = Claimer { instance, lease_secs: lease.as_secs_f64().max(0.1) };
+        let claimer = Claimer { instance: instance.clone(), lease_secs: lease.as_secs_f64().max(0.1) };
         let shapes = Arc::new(MemoryShapeCache::new(shape_cache_bytes));
-        let ctx = Ctx { store, blobs, board: board.clone(), live, claimer, shapes: shapes.clone(), describe };
+        let ctx = Ctx { store: store.clone(), blobs, board: board.clone(), live, claimer, shapes: shapes.clone(), describe };
         let (signal, halted) = watch::channel(false);
         let dispatcher = tokio::spawn(dispatch(ctx, workers.max(1), rx, halted).instrument(tracing::info_span!("jobs")));
         let halt = Arc::new(Halt { signal, dispatcher: Mutex::new(Some(dispatcher)) });
-        let jobs = Jobs { wake, board, halt, shapes };
+        let jobs = Jobs { wake, board, halt, shapes, store, instance };
         jobs.notify(); // pick up what is already queued
         Ok(jobs)
     }
@@ -275,6 +280,20 @@ impl Jobs {
     /// The latest progress of a running job (`None` when it is not running here).
     pub fn progress(&self, job_id: &str) -> Option<JobProgress> {
         self.board.get(job_id)
+    }
+
+    /// A graceful stop (Ctrl-C, SIGTERM): [`Jobs::halt`], then the jobs this instance was running
+    /// go back to the queue uncharged (`store::models::release_claims`), so the next start runs
+    /// them again without counting the stop as their abort. A kill skips this, and is charged.
+    pub async fn stop(&self) {
+        self.halt().await;
+        match models::release_claims(&self.store.pool, &self.instance).await {
+            Ok(0) => {}
+            Ok(released) => tracing::info!(released, "jobs running at the stop were put back in the queue (not counted as aborts)"),
+            Err(e) => {
+                tracing::warn!(error = %e, "could not put the running jobs back in the queue: the next start counts the stop against them")
+            }
+        }
     }
 
     /// Stops claiming and abandons the running jobs (see the module doc); returns once no job

@@ -17,6 +17,8 @@ pub struct TestApp {
     pub client: reqwest::Client,
     dir: Option<tempfile::TempDir>,
     handle: Option<tokio::task::JoinHandle<()>>,
+    /// Asks the app to stop as Ctrl-C or SIGTERM would ([`TestApp::stop_gracefully`]).
+    graceful: Option<tokio::sync::oneshot::Sender<()>>,
     jobs: cad2mo_server::jobs::Jobs,
     database_url: String,
     /// Another app's database (not dropped with this one).
@@ -85,10 +87,17 @@ impl TestApp {
         let app = App::build(settings).await.expect("app builds");
         let address = format!("http://{}", app.local_addr());
         let jobs = app.state().jobs.clone();
+        let (graceful, asked) = tokio::sync::oneshot::channel::<()>();
         let handle = tokio::spawn(async move {
-            let _ = app.run_until_stopped().await;
+            let _ = app
+                .run_until(async {
+                    if asked.await.is_err() {
+                        std::future::pending::<()>().await;
+                    }
+                })
+                .await;
         });
-        TestApp { address, client: ui_client(), dir: Some(dir), handle: Some(handle), jobs, database_url, shared }
+        TestApp { address, client: ui_client(), dir: Some(dir), handle: Some(handle), graceful: Some(graceful), jobs, database_url, shared }
     }
 
     /// The app's database URL (SQLite in its data folder, or its PostgreSQL database).
@@ -114,6 +123,19 @@ impl TestApp {
             let _ = h.await;
         }
         self.jobs.halt().await;
+        self.dir.take().expect("data folder")
+    }
+
+    /// Stops the server as Ctrl-C or SIGTERM does (`App::run_until`'s graceful stop: the jobs it
+    /// was running go back to the queue uncharged), waits for it (at most 30 s) and hands back
+    /// its data folder.
+    pub async fn stop_gracefully(mut self) -> tempfile::TempDir {
+        if let Some(g) = self.graceful.take() {
+            let _ = g.send(());
+        }
+        if let Some(h) = self.handle.take() {
+            tokio::time::timeout(std::time::Duration::from_secs(30), h).await.expect("stopped within 30 s").expect("the server task");
+        }
         self.dir.take().expect("data folder")
     }
 

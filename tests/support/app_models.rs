@@ -56,7 +56,12 @@ impl TestApp {
 
     /// Polls a job until it is `succeeded` or `failed` (30 s at most) and returns it.
     pub async fn wait_for_job(&self, job_id: &str) -> Value {
-        let deadline = std::time::Instant::now() + Duration::from_secs(30);
+        self.wait_for_job_within(job_id, Duration::from_secs(30)).await
+    }
+
+    /// [`TestApp::wait_for_job`] with another time limit.
+    pub async fn wait_for_job_within(&self, job_id: &str, within: Duration) -> Value {
+        let deadline = std::time::Instant::now() + within;
         loop {
             let r = self.job(job_id).await;
             assert_eq!(r.status(), 200, "job {job_id}");
@@ -64,7 +69,7 @@ impl TestApp {
             if job["status"] == "succeeded" || job["status"] == "failed" {
                 return job;
             }
-            assert!(std::time::Instant::now() < deadline, "job {job_id} still {} after 30 s", job["status"]);
+            assert!(std::time::Instant::now() < deadline, "job {job_id} still {} after {within:?}", job["status"]);
             tokio::time::sleep(Duration::from_millis(25)).await;
         }
     }

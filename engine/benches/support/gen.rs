@@ -116,7 +116,7 @@ fn ascii_stl(name: &str, tris: &[Tri]) -> Vec<u8> {
     s.into_bytes()
 }
 
-fn tree_xml_with(n: usize, stl: bool) -> String {
+pub fn tree_xml_with(n: usize, stl: bool) -> String {
     let mut bodies = String::new();
     let mut joints = String::new();
     let mut next_ref = 1usize;

@@ -8,7 +8,10 @@
 //!   is dropped for the newest, so a health probe always gets in however many idle sockets a
 //!   client opens;
 //! - a request's head must arrive within `header_timeout` (hyper's clock, which also runs while a
-//!   kept-alive connection waits for its next request), a body may pause at most `body_timeout`
+//!   kept-alive connection waits for its next request; for HTTP/2, which hyper does not time,
+//!   our watchdog closes a connection that has no request in flight and has begun none for
+//!   `header_timeout`, however many frames (pings, settings, a never-ending header block) it
+//!   sends), a body may pause at most `body_timeout`
 //!   between two pieces (`tower_http`'s `RequestBodyTimeout`: a stalled upload is dropped), and a
 //!   connection with no request in flight and no byte either way for `keep_alive` is closed.
 
@@ -177,14 +180,21 @@ async fn run(
     };
     let served = builder.serve_connection_with_upgrades(TokioIo::new(conn), service);
     tokio::pin!(served);
-    let tick = (limits.keep_alive / 4).clamp(Duration::from_millis(20), Duration::from_secs(1));
+    let header_timeout = match mode {
+        Mode::Full => limits.header_timeout,
+        Mode::Reserve { .. } => RESERVE_HEADER_TIMEOUT.min(limits.header_timeout),
+    };
+    let tick = (limits.keep_alive.min(header_timeout) / 4).clamp(Duration::from_millis(20), Duration::from_secs(1));
     let mut ticks = tokio::time::interval(tick);
     let mut closing: Option<Instant> = None;
     loop {
         tokio::select! {
             _ = served.as_mut() => return,
             _ = ticks.tick() => {
-                let idle = activity.in_flight() == 0 && activity.idle_for() >= limits.keep_alive;
+                // No byte either way for `keep_alive`, or (HTTP/2 above all: hyper times HTTP/1
+                // heads itself) no request begun for `header_timeout` while none is in flight.
+                let idle = activity.in_flight() == 0
+                    && (activity.idle_for() >= limits.keep_alive || activity.since_request() >= header_timeout);
                 match closing {
                     None if idle => {
                         served.as_mut().graceful_shutdown();
@@ -214,6 +224,8 @@ fn over_limit(limit: usize) -> Response<Body> {
 struct Activity {
     start: Instant,
     last_ms: AtomicU64,
+    /// When a request last began or ended (ms since `start`; 0: none yet).
+    request_ms: AtomicU64,
     in_flight: AtomicUsize,
 }
 
@@ -221,6 +233,16 @@ impl Activity {
     fn touch(&self) {
         let ms = u64::try_from(self.start.elapsed().as_millis()).unwrap_or(u64::MAX);
         self.last_ms.store(ms, Ordering::Relaxed);
+    }
+
+    fn touch_request(&self) {
+        let ms = u64::try_from(self.start.elapsed().as_millis()).unwrap_or(u64::MAX);
+        self.request_ms.store(ms, Ordering::Relaxed);
+    }
+
+    /// Since a request last began or ended (or the connection was opened).
+    fn since_request(&self) -> Duration {
+        self.start.elapsed().saturating_sub(Duration::from_millis(self.request_ms.load(Ordering::Relaxed)))
     }
 
     fn idle_for(&self) -> Duration {
@@ -238,6 +260,7 @@ struct InFlight(Arc<Activity>);
 impl InFlight {
     fn enter(a: Arc<Activity>) -> InFlight {
         a.in_flight.fetch_add(1, Ordering::Relaxed);
+        a.touch_request();
         InFlight(a)
     }
 }
@@ -245,6 +268,7 @@ impl InFlight {
 impl Drop for InFlight {
     fn drop(&mut self) {
         self.0.touch();
+        self.0.touch_request();
         self.0.in_flight.fetch_sub(1, Ordering::Relaxed);
     }
 }
@@ -259,7 +283,12 @@ struct Conn {
 
 impl Conn {
     fn new(stream: TcpStream, slot: Option<OwnedSemaphorePermit>) -> Conn {
-        let activity = Arc::new(Activity { start: Instant::now(), last_ms: AtomicU64::new(0), in_flight: AtomicUsize::new(0) });
+        let activity = Arc::new(Activity {
+            start: Instant::now(),
+            last_ms: AtomicU64::new(0),
+            request_ms: AtomicU64::new(0),
+            in_flight: AtomicUsize::new(0),
+        });
         Conn { stream, activity, _slot: slot }
     }
 }

@@ -322,6 +322,29 @@ pub async fn requeue_unfinished(pool: &Pool) -> Result<u64, StoreError> {
     Ok(requeued.len() as u64)
 }
 
+/// Puts the jobs `instance` was running back in the queue (job and version) without charging
+/// an abort: what a graceful stop (Ctrl-C, SIGTERM) does once its workers are halted, so that a
+/// stop asked for is never counted as a crash of the job that happened to run. Returns how many.
+pub async fn release_claims(pool: &Pool, instance: &str) -> Result<u64, StoreError> {
+    let mut tx = pool.begin().await?;
+    let requeued: Vec<(String, i64)> = sqlx::query_as(&pool.sql(
+        "UPDATE jobs SET status = 'queued', started_at = NULL, lease_owner = NULL, lease_until = NULL, progress_json = NULL
+         WHERE status = 'running' AND lease_owner LIKE ? RETURNING model_id, version",
+    ))
+    .bind(format!("{instance}:%"))
+    .fetch_all(&mut *tx)
+    .await?;
+    for (model_id, version) in &requeued {
+        sqlx::query(&pool.sql("UPDATE versions SET status = 'queued' WHERE model_id = ? AND version = ? AND status = 'running'"))
+            .bind(model_id)
+            .bind(version)
+            .execute(&mut *tx)
+            .await?;
+    }
+    tx.commit().await?;
+    Ok(requeued.len() as u64)
+}
+
 /// Whether a queued job waits to be run alone (see [`requeue_unfinished`]): the worker pool then
 /// runs one job at a time until none does.
 pub async fn isolation_pending(pool: &Pool) -> Result<bool, StoreError> {

@@ -6,8 +6,9 @@
 //! errors.
 
 use crate::pipeline::front::bundle::{Bundle, BundleError};
+use crate::pipeline::front::mesh::MAX_BUNDLE_TRIANGLES;
 use crate::pipeline::front::stl::{self, StlError};
-use crate::pipeline::ir::{Model, Warning};
+use crate::pipeline::ir::{self, Model, Warning};
 
 #[derive(Debug, thiserror::Error)]
 pub enum GeometryError {
@@ -15,6 +16,11 @@ pub enum GeometryError {
     Bundle(#[from] BundleError),
     #[error(transparent)]
     Stl(#[from] StlError),
+    #[error(
+        "{file}: body \"{body}\" brings the bundle to {total} triangles, over the limit of {max} triangles per bundle \
+         (every body naming a file counts its triangles again)"
+    )]
+    TriangleBudget { file: String, body: String, total: usize, max: usize },
 }
 
 /// Fills `Body::mesh` for every body whose STL is in the bundle. `xml_path` is the XML's path in
@@ -29,13 +35,25 @@ pub fn read_meshes(
     let mut warnings = Vec::new();
     let scale = model.length_scale;
     let total = model.bodies.iter().filter(|b| b.geometry_file.is_some()).count();
+    // Triangles of all the meshes read so far (`MAX_BUNDLE_TRIANGLES`).
+    let mut triangles = 0usize;
     for (i, body) in model.bodies.iter_mut().filter(|b| b.geometry_file.is_some()).enumerate() {
         done(i, total);
         let Some(name) = body.geometry_file.clone() else { continue };
         match bundle.resolve(xml_path, &name)? {
             Some(path) => {
                 let bytes = bundle.get(path).unwrap_or_default();
-                body.mesh = Some(stl::parse(path, bytes, scale)?);
+                let mesh = stl::parse(path, bytes, scale)?;
+                triangles = triangles.saturating_add(mesh.triangles.len());
+                if triangles > MAX_BUNDLE_TRIANGLES {
+                    return Err(GeometryError::TriangleBudget {
+                        file: ir::clip(path, 300),
+                        body: ir::clip(&body.cad_name, 200),
+                        total: triangles,
+                        max: MAX_BUNDLE_TRIANGLES,
+                    });
+                }
+                body.mesh = Some(mesh);
                 body.geometry_sources = vec![path.to_string()];
             }
             None => warnings.push(Warning::new(

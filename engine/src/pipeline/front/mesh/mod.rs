@@ -36,6 +36,13 @@ use crate::pipeline::ir;
 /// Upper bound on the triangles read from one mesh file.
 pub const MAX_TRIANGLES: usize = 10_000_000;
 
+/// At most this many triangles in all the bodies' meshes of one bundle, counted after
+/// instancing (a file named by several bodies counts once per use), by the URDF front end before
+/// any copy is made and by `passes::geometry` as each STL is read. A conversion holds its output
+/// in memory, about 190 bytes per triangle (binary STL and DXF text of every shape besides the
+/// meshes): 5 M triangles convert within about 1.2 GB (README, "Limits").
+pub const MAX_BUNDLE_TRIANGLES: usize = 5_000_000;
+
 /// A mesh file that could not be read.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 #[error("{}{kind}", location(.file, .line))]

@@ -931,6 +931,24 @@ fn a_rotation_far_from_orthonormal_is_an_error_naming_the_frame() {
     assert_eq!(e.line, line_of(&text, corrupt), "{shown}");
 }
 
+#[test]
+fn an_all_zero_rotation_is_an_error_naming_the_frame() {
+    let zero = "0,0,0,0,0,0,0,0,0";
+    let text = document(
+        "SimMechanics",
+        &system(
+            &[body("A", "1", &[frame("CG", None, "0,0,0", "mm", "1,0,0,0,1,0,0,0,1"), frame("CS1", None, "0,0,0", "mm", zero)])],
+            &[],
+            &[],
+            &[],
+        ),
+    );
+    let e = fails(&text);
+    let shown = e.to_string();
+    assert!(matches!(e.kind, XmlErrorKind::NotARotation { .. }), "{shown}");
+    assert!(shown.contains("frame \"CS1\""), "{shown}");
+}
+
 // ----- property test: random loops, composite joints, relative frames, 6-digit rounding ------
 
 /// 6 significant digits, as CAD writes.

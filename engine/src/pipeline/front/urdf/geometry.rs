@@ -26,7 +26,7 @@ pub enum UrdfGeometryError {
 /// At most this many triangles in all the bodies' meshes of one bundle, counted after
 /// instancing: a mesh file named by several links or visuals counts once per use (each body
 /// holds its own copy, placed in its link frame), checked before the copy is made.
-pub const MAX_BUNDLE_TRIANGLES: usize = 20_000_000;
+pub use crate::pipeline::front::mesh::MAX_BUNDLE_TRIANGLES;
 
 /// Finds the bundle file a URDF mesh `filename` names, as seen from the URDF at `urdf_path`:
 /// `package://NAME/rest` is the file whose path ends with `rest` (preferring one under a folder

@@ -34,7 +34,9 @@
 //!   revolute about its normal (`axis`); `continuous` is revolute without position limits.
 //! - `mimic` becomes a [`Coupling`](ir::Coupling) where both joints have one coordinate, the
 //!   multiplier is not zero and the offset is zero (the zero configuration must satisfy it);
-//!   otherwise a `mimic-not-expressible` warning.
+//!   otherwise a `mimic-not-expressible` warning. Mimics that form a ring (j1 follows j2 ... follows
+//!   j1, any length) would be a ring of gears: each ring's last coupling in file order is dropped
+//!   with the same warning naming the ring.
 //! - Geometry: visuals are preferred; meshes (`package://NAME/...`, `package:///file`, relative
 //!   paths, `file://`) are looked up in the bundle case-insensitively, read by `front::mesh`, scaled
 //!   and placed by the visual's origin into the link frame. A missing file is a warning.
@@ -916,6 +918,7 @@ impl<'d, 'i> Reader<'d, 'i> {
             });
         }
         // Mimic couplings.
+        let mut coupled: Vec<(Coupling, roxmltree::Node)> = Vec::new();
         for j in &joints {
             let Some((leader, multiplier, offset, node)) = &j.mimic else { continue };
             let Some(&follower) = joint_id.get(j.name.as_str()) else { continue };
@@ -935,7 +938,7 @@ impl<'d, 'i> Reader<'d, 'i> {
             };
             match (why, joint_id.get(leader.as_str())) {
                 (None, Some(&l)) => {
-                    model.couplings.push(Coupling { follower, leader: l, multiplier: *multiplier, offset: *offset, loc: self.loc(*node) })
+                    coupled.push((Coupling { follower, leader: l, multiplier: *multiplier, offset: *offset, loc: self.loc(*node) }, *node))
                 }
                 (why, _) => warnings.push(self.warning(
                     *node,
@@ -944,8 +947,66 @@ impl<'d, 'i> Reader<'d, 'i> {
                 )),
             }
         }
+        // A ring of mimics (j1 follows j2 follows ... follows j1) would be a ring of gears: each
+        // cycle loses its last coupling in file order, with a warning naming the ring.
+        let cycles = mimic_cycles(&coupled.iter().map(|(c, _)| (c.follower, c.leader)).collect::<Vec<_>>());
+        for (i, cycle) in &cycles {
+            let names: Vec<String> = cycle.iter().map(|&j| model.joint(j).cad_name.clone()).collect();
+            let (c, node) = &coupled[*i];
+            warnings.push(self.warning(
+                *node,
+                "mimic-not-expressible",
+                format!(
+                    "joint \"{}\" is left uncoupled: the mimic couplings form a cycle ({}: each mimics the next, the last the first), a ring of gears that over-constrains its joints",
+                    ir::clip(&model.joint(c.follower).cad_name, 200),
+                    ir::bounded_list(&names, 8)
+                ),
+            ));
+        }
+        let cut: std::collections::HashSet<usize> = cycles.iter().map(|(i, _)| *i).collect();
+        model.couplings = coupled.into_iter().enumerate().filter(|(i, _)| !cut.contains(i)).map(|(_, (c, _))| c).collect();
         Ok(Urdf { model, warnings, geometry })
     }
+}
+
+/// The cycles among mimic couplings given as `(follower, leader)` in file order (each follower
+/// has one leader, so the cycles are disjoint): for each, the index of its last coupling and the
+/// joints around it, starting at that coupling's follower. Iterative, linear in the couplings.
+fn mimic_cycles(couplings: &[(ir::JointId, ir::JointId)]) -> Vec<(usize, Vec<ir::JointId>)> {
+    let of: HashMap<ir::JointId, usize> = couplings.iter().enumerate().map(|(i, &(f, _))| (f, i)).collect();
+    // 0: not seen, 1: on the walk under way, 2: done.
+    let mut state: HashMap<ir::JointId, u8> = HashMap::new();
+    let mut cycles = Vec::new();
+    for &(start, _) in couplings {
+        let mut path = Vec::new();
+        let mut cur = start;
+        // Follows the leaders until a joint that follows nobody (no cycle), or
+        // one already seen (on this walk: a cycle).
+        let mut ended = false;
+        while state.get(&cur).copied().unwrap_or(0) == 0 {
+            state.insert(cur, 1);
+            path.push(cur);
+            match of.get(&cur) {
+                Some(&i) => cur = couplings[i].1,
+                None => {
+                    ended = true;
+                    break;
+                }
+            }
+        }
+        if !ended && state.get(&cur) == Some(&1) {
+            if let Some(at) = path.iter().position(|&j| j == cur) {
+                let ring = &path[at..];
+                let last = ring.iter().filter_map(|j| of.get(j).copied()).max().unwrap_or(0);
+                let from = ring.iter().position(|&j| couplings[last].0 == j).unwrap_or(0);
+                cycles.push((last, ring[from..].iter().chain(&ring[..from]).copied().collect()));
+            }
+        }
+        for j in path {
+            state.insert(j, 2);
+        }
+    }
+    cycles
 }
 
 fn is_xacro(n: &roxmltree::Node) -> bool {
