@@ -21,6 +21,8 @@ pub const IDEAL_GEAR: &str = "081e59da-554a-4b0c-bd5a-7f03409fb279";
 pub const EFFICIENCY_GEAR: &str = "10ace2d9-1eef-4be8-b0c1-ba992d043a94";
 pub const LEAD_SCREW: &str = "1d6bd1fa-9a39-47b1-86dc-e0162feea6eb";
 pub const CASCADE_PPI: &str = "0f2fa95d-0f54-42fb-88f8-831a624c2754";
+/// The drive amplifier class (sizing only: every parameter a datasheet value, no Modelica class).
+pub const SERVO_AMPLIFIER: &str = "5b0b3c0e-3f7e-4d43-9a53-2f1f0f7c9a27";
 
 /// Instance ids.
 pub const MAXON_RE40: &str = "a204da99-dd36-4642-91d0-a61534935347";
@@ -83,22 +85,47 @@ fn datasheet(name: &str, unit: &str, comment: &str) -> ParameterDraft {
     ParameterDraft { datasheet: true, ..nameplate(name, unit, comment) }
 }
 
+/// A datasheet text (a String the drive sizing reads, e.g. a mounting code): optional per instance.
+fn datasheet_text(name: &str, comment: &str) -> ParameterDraft {
+    ParameterDraft { ty: "String".to_string(), unit: String::new(), min: None, max: None, ..datasheet(name, "", comment) }
+}
+
+/// The price class where a maker or distributor gives one: 1 (cheapest) to 5.
+fn price_class() -> ParameterDraft {
+    ParameterDraft {
+        ty: "Integer".to_string(),
+        unit: "1".to_string(),
+        min: Some(1.0),
+        max: Some(5.0),
+        ..datasheet("price_class", "1", "Price class where known: 1 (cheapest) to 5; the ranking's last criterion")
+    }
+}
+
 /// The datasheet values of every motor class (`crate::sizing` reads them by these names).
-fn motor_datasheet() -> [ParameterDraft; 3] {
+fn motor_datasheet() -> [ParameterDraft; 8] {
     [
         datasheet("T_nom", "N.m", "Datasheet: nominal torque (max. continuous torque, S1)"),
-        datasheet("T_peak", "N.m", "Datasheet: peak torque allowed for short times (intermittent operation)"),
+        datasheet("T_peak", "N.m", "Datasheet: the maker's short-time (peak) torque limit, intermittent operation"),
+        datasheet("T_stall", "N.m", "Datasheet: stall torque at the nominal voltage (the peak limit where the maker states no short-time limit)"),
         datasheet("w_max", "rad/s", "Datasheet: maximum permissible speed"),
+        datasheet("tau_th_w", "s", "Datasheet: thermal time constant of the winding"),
+        datasheet("mass", "kg", "Datasheet: motor mass (weight)"),
+        price_class(),
+        datasheet_text("mount", "Datasheet: the motor's mounting code, as gears name it in motor_mounts (e.g. \"maxon RE 40\")"),
     ]
 }
 
 /// The datasheet values of the rotary gear classes.
-fn gear_datasheet() -> [ParameterDraft; 4] {
+fn gear_datasheet() -> [ParameterDraft; 8] {
     [
         datasheet("T_rated", "N.m", "Datasheet: rated (max. continuous) output torque"),
         datasheet("T_peak", "N.m", "Datasheet: limit for repeated peak output torque (intermittent)"),
+        datasheet("T_avg_max", "N.m", "Datasheet: limit for the average output torque (Harmonic Drive's cubic mean), where given"),
         datasheet("w_in_max", "rad/s", "Datasheet: maximum input speed"),
         datasheet("J_in", "kg.m2", "Datasheet: moment of inertia of the gear referred to its input (motor) shaft"),
+        datasheet("mass", "kg", "Datasheet: gear mass (weight)"),
+        price_class(),
+        datasheet_text("motor_mounts", "Datasheet: mounting codes (motor mount) of the motors this gear mounts on, separated by \";\"; empty: any motor"),
     ]
 }
 
@@ -214,6 +241,25 @@ fn classes() -> Vec<(&'static str, ClassDraft)> {
                     datasheet("F_peak", "N", "Datasheet: maximum axial force of screw, nut and bearings"),
                     datasheet("w_in_max", "rad/s", "Datasheet: maximum input (screw or gearbox input) speed"),
                     datasheet("J_in", "kg.m2", "Datasheet: moment of inertia referred to the input (motor) shaft"),
+                    datasheet("mass", "kg", "Datasheet: mass of screw, nut and bearings"),
+                    price_class(),
+                    datasheet_text("motor_mounts", "Datasheet: mounting codes (motor mount) of the motors this screw mounts on, separated by \";\"; empty: any motor"),
+                ],
+            ),
+        ),
+        (
+            SERVO_AMPLIFIER,
+            class(
+                "Servo amplifier",
+                "amplifier",
+                "cad2mo.Sizing.ServoAmplifier",
+                "A drive amplifier (servo controller, power stage) as the drive sizing sees it: its supply voltage range and its continuous and peak output current. Not a Modelica class: the sizing reads its datasheet values; the generated model's motor has its own voltage and current limits.",
+                vec![
+                    datasheet("U_min", "V", "Datasheet: lowest supply (DC bus) voltage"),
+                    datasheet("U_max", "V", "Datasheet: highest supply (DC bus) voltage"),
+                    datasheet("I_cont", "A", "Datasheet: maximum continuous output current"),
+                    datasheet("I_peak", "A", "Datasheet: peak (short-time) output current"),
+                    price_class(),
                 ],
             ),
         ),
