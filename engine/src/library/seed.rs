@@ -21,6 +21,14 @@ pub const IDEAL_GEAR: &str = "081e59da-554a-4b0c-bd5a-7f03409fb279";
 pub const EFFICIENCY_GEAR: &str = "10ace2d9-1eef-4be8-b0c1-ba992d043a94";
 pub const LEAD_SCREW: &str = "1d6bd1fa-9a39-47b1-86dc-e0162feea6eb";
 pub const CASCADE_PPI: &str = "0f2fa95d-0f54-42fb-88f8-831a624c2754";
+/// Classes added to the seed after the first one: an installation seeded before receives each
+/// once (the service's `seed_new_classes`).
+pub const ADDED_CLASSES: [&str; 1] = [SERVO_AMPLIFIER];
+
+/// Datasheet parameters added to the seed's classes after the first seed (issue 27's checks and
+/// ranking): an installation seeded before receives each once, in every seed class that has it.
+pub const ADDED_DATASHEET: [&str; 7] = ["T_stall", "tau_th_w", "mass", "price_class", "mount", "T_avg_max", "motor_mounts"];
+
 /// The drive amplifier class (sizing only: every parameter a datasheet value, no Modelica class).
 pub const SERVO_AMPLIFIER: &str = "5b0b3c0e-3f7e-4d43-9a53-2f1f0f7c9a27";
 
@@ -105,9 +113,9 @@ fn price_class() -> ParameterDraft {
 fn motor_datasheet() -> [ParameterDraft; 8] {
     [
         datasheet("T_nom", "N.m", "Datasheet: nominal torque (max. continuous torque, S1)"),
-        datasheet("T_peak", "N.m", "Datasheet: the maker's short-time (peak) torque limit, intermittent operation"),
-        datasheet("T_stall", "N.m", "Datasheet: stall torque at the nominal voltage (the peak limit where the maker states no short-time limit)"),
+        datasheet("T_peak", "N.m", "Datasheet: peak torque allowed for short times (intermittent operation)"),
         datasheet("w_max", "rad/s", "Datasheet: maximum permissible speed"),
+        datasheet("T_stall", "N.m", "Datasheet: stall torque at the nominal voltage (the peak limit where the maker states no short-time limit)"),
         datasheet("tau_th_w", "s", "Datasheet: thermal time constant of the winding"),
         datasheet("mass", "kg", "Datasheet: motor mass (weight)"),
         price_class(),
@@ -120,9 +128,9 @@ fn gear_datasheet() -> [ParameterDraft; 8] {
     [
         datasheet("T_rated", "N.m", "Datasheet: rated (max. continuous) output torque"),
         datasheet("T_peak", "N.m", "Datasheet: limit for repeated peak output torque (intermittent)"),
-        datasheet("T_avg_max", "N.m", "Datasheet: limit for the average output torque (Harmonic Drive's cubic mean), where given"),
         datasheet("w_in_max", "rad/s", "Datasheet: maximum input speed"),
         datasheet("J_in", "kg.m2", "Datasheet: moment of inertia of the gear referred to its input (motor) shaft"),
+        datasheet("T_avg_max", "N.m", "Datasheet: limit for the average output torque (Harmonic Drive's cubic mean), where given"),
         datasheet("mass", "kg", "Datasheet: gear mass (weight)"),
         price_class(),
         datasheet_text("motor_mounts", "Datasheet: mounting codes (motor mount) of the motors this gear mounts on, separated by \";\"; empty: any motor"),

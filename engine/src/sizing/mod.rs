@@ -545,12 +545,17 @@ struct Stats {
     thermal: Option<f64>,
 }
 
-fn reflect(axis: &Axis, side: &GearSide, base: &[f64], motor: &Motor) -> Stats {
+fn reflect(axis: &Axis, side: &GearSide, base: &[f64], motor: &Motor, t2: &mut Vec<f64>) -> Stats {
     let mut s = Stats::default();
     let (r_k, k, r_k2) = (motor.r / motor.k, motor.k, motor.r / (motor.k * motor.k));
     let mut run = 0.0;
+    let tau_th = motor.tau_th_w.filter(|x| *x > 0.0 && motor.t_nom.is_some());
+    t2.clear();
     for i in 0..axis.w.len() {
         let t = side.torque(base, motor, i);
+        if tau_th.is_some() {
+            t2.push(t * t);
+        }
         let w = side.speed[i];
         let (ta, ua) = (t.abs(), (r_k * t + k * w).abs());
         if ta > s.peak_t.0 {
@@ -586,8 +591,8 @@ fn reflect(axis: &Axis, side: &GearSide, base: &[f64], motor: &Motor) -> Stats {
         }
         s.sum_t2 += h * h * axis.dwell;
     }
-    if let Some(tau) = motor.tau_th_w.filter(|x| *x > 0.0) {
-        s.thermal = Some(thermal(axis, side, base, motor, tau));
+    if let Some(tau) = tau_th {
+        s.thermal = Some(thermal(axis, side.hold, t2, tau));
     }
     s
 }
@@ -595,42 +600,32 @@ fn reflect(axis: &Axis, side: &GearSide, base: &[f64], motor: &Motor) -> Stats {
 /// The winding's temperature rise as a first-order lag of `T_m²` (`τ_w·θ' = T_m² - θ`, `T_m²`
 /// linear between samples' mean over each step), in the periodic steady state of the duty
 /// cycle: `sqrt(max θ)`, the torque that would heat the winding as much if held constant.
-fn thermal(axis: &Axis, side: &GearSide, base: &[f64], motor: &Motor, tau: f64) -> f64 {
+/// `t2` holds `T_m²` per sample.
+fn thermal(axis: &Axis, hold: f64, t2: &[f64], tau: f64) -> f64 {
     let t = axis.load.t;
-    let n = t.len();
+    let n = t2.len();
     let decay = |h: f64| (-h / tau).exp();
     let a_uniform = if n > 1 { decay(t[1] - t[0]) } else { 1.0 };
     let step = |i: usize| if axis.uniform { a_uniform } else { decay(t[i + 1] - t[i]) };
-    let hold2 = side.hold * side.hold;
     let a_dwell = decay(axis.dwell);
     // One period from θ = 0; the response is linear in the start value, so the periodic start
     // is θ_0 = y(P) / (1 - e^(-P/τ)).
-    let sq = |i: usize| {
-        let x = side.torque(base, motor, i);
-        x * x
-    };
     let mut y = 0.0;
-    let mut prev = sq(0);
     for i in 0..n - 1 {
-        let next = sq(i + 1);
         let a = step(i);
-        y = a * y + (1.0 - a) * 0.5 * (prev + next);
-        prev = next;
+        y = a * y + (1.0 - a) * 0.5 * (t2[i] + t2[i + 1]);
     }
-    y = a_dwell * y + (1.0 - a_dwell) * hold2;
+    y = a_dwell * y + (1.0 - a_dwell) * hold * hold;
     let whole = decay(axis.period);
     let theta0 = if whole < 1.0 { y / (1.0 - whole) } else { y };
     // The cycle again from θ_0, keeping the largest θ (during the dwell θ moves monotonically
     // towards the holding torque's square, so its ends bound it).
     let mut x = theta0;
     let mut max = x;
-    let mut prev = sq(0);
     for i in 0..n - 1 {
-        let next = sq(i + 1);
         let a = step(i);
-        x = a * x + (1.0 - a) * 0.5 * (prev + next);
+        x = a * x + (1.0 - a) * 0.5 * (t2[i] + t2[i + 1]);
         max = max.max(x);
-        prev = next;
     }
     max.max(0.0).sqrt()
 }
@@ -757,10 +752,10 @@ fn of(slot: &str, name: &str, param: &str) -> String {
 }
 
 /// Evaluates every check of one combination (the gear at its own ratio, `side` made for it).
-fn evaluate(axis: &Axis, side: &GearSide, motor: &Motor, gear: &Gear, settings: &Settings) -> Outcome {
+fn evaluate(axis: &Axis, side: &GearSide, motor: &Motor, gear: &Gear, settings: &Settings, scratch: &mut Vec<f64>) -> Outcome {
     let mut o = Outcome { checks: Vec::with_capacity(14), missing: Vec::new() };
     let reserve = settings.reserve;
-    let stats = side.base.as_deref().map(|b| reflect(axis, side, b, motor));
+    let stats = side.base.as_deref().map(|b| reflect(axis, side, b, motor, scratch));
     let no_j_in: &[&str] = &["gear.J_in"];
     let (mname, gname) = (motor.part.name.as_str(), gear.part.name.as_str());
     let without_j_in = || "not evaluated: the motor torque includes the gear's input inertia, which the library lacks".to_string();
@@ -1067,7 +1062,7 @@ pub fn size_drive(
     let axis = Axis::new(load, settings.dwell)?;
     check_fit(&axis, gear)?;
     let side = GearSide::new(&axis, gear);
-    let o = evaluate(&axis, &side, motor, gear, settings);
+    let o = evaluate(&axis, &side, motor, gear, settings, &mut Vec::new());
     let alternatives = match catalog {
         Some(c) => rank_axis(&axis, c, settings, top),
         None => Vec::new(),
@@ -1114,7 +1109,21 @@ fn ordinal(i: usize) -> String {
     format!("{i}{suffix}")
 }
 
-fn rank_axis(axis: &Axis, catalog: &Catalog, settings: &Settings, top: usize) -> Vec<Alternative> {
+/// Whether a combination fails a check that needs no pass over the samples: motor or gear input
+/// speed, the gear's output torques, the inertia ratio.
+fn fails_cheaply(axis: &Axis, side: &GearSide, motor: &Motor, gear: &Gear) -> bool {
+    let over = |v: f64, l: Option<f64>| l.is_some_and(|l| v > l);
+    over(side.max_speed.0, motor.w_max)
+        || over(side.max_speed.0, gear.w_in_max)
+        || over(axis.peak_tau.0, gear.out_peak)
+        || (gear.lead.is_none() && over(axis.rms_tau, gear.t_rated))
+        || (gear.lead.is_none() && axis.avg_tau.is_some_and(|v| over(v, gear.t_avg_max)))
+        || gear.j_in.is_some_and(|j_in| {
+            motor.j > 0.0 && (axis.load.load_inertia / (side.n * side.n) + j_in) / motor.j > INERTIA_RATIO_LIMIT
+        })
+}
+
+fn rank_axis<'c>(axis: &Axis, catalog: &'c Catalog, settings: &Settings, top: usize) -> Vec<Alternative> {
     struct Found<'c> {
         motor: &'c Motor,
         gear: &'c Gear,
@@ -1126,34 +1135,6 @@ fn rank_axis(axis: &Axis, catalog: &Catalog, settings: &Settings, top: usize) ->
         price: Option<i64>,
         missing: Vec<String>,
     }
-    let mut found: Vec<Found> = Vec::new();
-    for gear in catalog.gears.iter().filter(|g| g.fits() == axis.load.kind) {
-        let side = GearSide::new(axis, gear);
-        for motor in catalog.motors.iter().filter(|m| gear.mounts(m)) {
-            let o = evaluate(axis, &side, motor, gear, settings);
-            let standing = if !o.pass() {
-                Standing::Fails
-            } else if !o.missing.is_empty() {
-                Standing::Incomplete
-            } else if o.with_reserve() {
-                Standing::PassesWithReserve
-            } else {
-                Standing::Passes
-            };
-            let limiting = o.limiting();
-            found.push(Found {
-                motor,
-                gear,
-                standing,
-                margin: limiting.as_ref().map(|l| l.margin),
-                failed: o.checks.iter().filter(|c| !c.pass).map(|c| c.check).collect(),
-                limiting,
-                mass: motor.mass.zip(gear.mass).map(|(a, b)| a + b),
-                price: motor.price_class.zip(gear.price_class).map(|(a, b)| a.max(b)),
-                missing: o.missing,
-            });
-        }
-    }
     // Known before unknown, then ascending.
     fn known<T: PartialOrd>(a: Option<T>, b: Option<T>) -> std::cmp::Ordering {
         match (a, b) {
@@ -1163,18 +1144,79 @@ fn rank_axis(axis: &Axis, catalog: &Catalog, settings: &Settings, top: usize) ->
             (None, None) => std::cmp::Ordering::Equal,
         }
     }
+    // The order within a standing: the smallest first.
+    let smaller = |am: &Motor, ag: &Gear, bm: &Motor, bg: &Gear| {
+        let mass = |m: &Motor, g: &Gear| m.mass.zip(g.mass).map(|(a, b)| a + b);
+        let price = |m: &Motor, g: &Gear| m.price_class.zip(g.price_class).map(|(a, b)| a.max(b));
+        am.j.total_cmp(&bm.j)
+            .then_with(|| known(mass(am, ag), mass(bm, bg)))
+            .then_with(|| known(price(am, ag), price(bm, bg)))
+            .then_with(|| am.part.name.cmp(&bm.part.name))
+            .then_with(|| ag.part.name.cmp(&bg.part.name))
+    };
+    let gears: Vec<(&Gear, GearSide)> =
+        catalog.gears.iter().filter(|g| g.fits() == axis.load.kind).map(|g| (g, GearSide::new(axis, g))).collect();
+    let mut candidates: Vec<(usize, &Motor)> =
+        gears.iter().enumerate().flat_map(|(gi, (g, _))| catalog.motors.iter().filter(|m| g.mounts(m)).map(move |m| (gi, m))).collect();
+    candidates.sort_by(|a, b| smaller(a.1, gears[a.0].0, b.1, gears[b.0].0));
+    // Evaluated in that order: once `top` combinations pass with the reserve, every later one
+    // ranks after them. A combination that fails a check of speed, gear or inertia (cheap: no
+    // pass over the samples) is a failing one, evaluated only when fewer than `top` pass.
+    let mut found: Vec<Found> = Vec::new();
+    let mut deferred: Vec<(usize, &Motor)> = Vec::new();
+    let mut scratch = Vec::new();
+    let mut keeps = 0;
+    let push = |gi: usize, motor: &'c Motor, found: &mut Vec<Found<'c>>, scratch: &mut Vec<f64>| -> Standing {
+        let (gear, side) = &gears[gi];
+        let o = evaluate(axis, side, motor, gear, settings, scratch);
+        let standing = if !o.pass() {
+            Standing::Fails
+        } else if !o.missing.is_empty() {
+            Standing::Incomplete
+        } else if o.with_reserve() {
+            Standing::PassesWithReserve
+        } else {
+            Standing::Passes
+        };
+        let limiting = o.limiting();
+        found.push(Found {
+            motor,
+            gear,
+            standing,
+            margin: limiting.as_ref().map(|l| l.margin),
+            failed: o.checks.iter().filter(|c| !c.pass).map(|c| c.check).collect(),
+            limiting,
+            mass: motor.mass.zip(gear.mass).map(|(a, b)| a + b),
+            price: motor.price_class.zip(gear.price_class).map(|(a, b)| a.max(b)),
+            missing: o.missing,
+        });
+        standing
+    };
+    for (gi, motor) in candidates {
+        if keeps >= top {
+            break;
+        }
+        if fails_cheaply(axis, &gears[gi].1, motor, gears[gi].0) {
+            deferred.push((gi, motor));
+            continue;
+        }
+        if push(gi, motor, &mut found, &mut scratch) == Standing::PassesWithReserve {
+            keeps += 1;
+        }
+    }
+    if keeps < top {
+        for (gi, motor) in deferred {
+            push(gi, motor, &mut found, &mut scratch);
+        }
+    }
     found.sort_by(|a, b| {
-        a.standing
-            .cmp(&b.standing)
-            .then_with(|| {
-                if a.standing == Standing::Fails {
-                    known(b.margin, a.margin)
-                } else {
-                    a.motor.j.total_cmp(&b.motor.j).then_with(|| known(a.mass, b.mass)).then_with(|| known(a.price, b.price))
-                }
-            })
-            .then_with(|| a.motor.part.name.cmp(&b.motor.part.name))
-            .then_with(|| a.gear.part.name.cmp(&b.gear.part.name))
+        a.standing.cmp(&b.standing).then_with(|| {
+            if a.standing == Standing::Fails {
+                known(b.margin, a.margin).then_with(|| smaller(a.motor, a.gear, b.motor, b.gear))
+            } else {
+                smaller(a.motor, a.gear, b.motor, b.gear)
+            }
+        })
     });
     let reserve = (settings.reserve * 100.0).round();
     let mut in_group = 0;
