@@ -1109,18 +1109,41 @@ fn ordinal(i: usize) -> String {
     format!("{i}{suffix}")
 }
 
-/// Whether a combination fails a check that needs no pass over the samples: motor or gear input
-/// speed, the gear's output torques, the inertia ratio.
-fn fails_cheaply(axis: &Axis, side: &GearSide, motor: &Motor, gear: &Gear) -> bool {
-    let over = |v: f64, l: Option<f64>| l.is_some_and(|l| v > l);
-    over(side.max_speed.0, motor.w_max)
-        || over(side.max_speed.0, gear.w_in_max)
-        || over(axis.peak_tau.0, gear.out_peak)
-        || (gear.lead.is_none() && over(axis.rms_tau, gear.t_rated))
-        || (gear.lead.is_none() && axis.avg_tau.is_some_and(|v| over(v, gear.t_avg_max)))
-        || gear.j_in.is_some_and(|j_in| {
-            motor.j > 0.0 && (axis.load.load_inertia / (side.n * side.n) + j_in) / motor.j > INERTIA_RATIO_LIMIT
-        })
+/// The margin `(limit - value)/limit` as the checks write it.
+fn margin_of(value: f64, limit: f64) -> f64 {
+    if limit > 0.0 {
+        (limit - value) / limit
+    } else if value > 0.0 {
+        -f64::MAX
+    } else {
+        0.0
+    }
+}
+
+/// The smallest margin of the checks that need no pass over the samples (motor and gear input
+/// speed, the gear's output torques, the inertia ratio): an upper bound of the combination's
+/// smallest margin; below 0, the combination fails.
+fn cheap_margin(axis: &Axis, side: &GearSide, motor: &Motor, gear: &Gear) -> f64 {
+    let mut m = f64::INFINITY;
+    let mut check = |v: f64, l: Option<f64>| {
+        if let Some(l) = l {
+            m = m.min(margin_of(v, l));
+        }
+    };
+    check(side.max_speed.0, motor.w_max);
+    check(side.max_speed.0, gear.w_in_max);
+    check(axis.peak_tau.0, gear.out_peak);
+    if gear.lead.is_none() {
+        check(axis.rms_tau, gear.t_rated);
+        if let Some(v) = axis.avg_tau {
+            check(v, gear.t_avg_max);
+        }
+    }
+    if let Some(j_in) = gear.j_in {
+        let ratio = if motor.j > 0.0 { (axis.load.load_inertia / (side.n * side.n) + j_in) / motor.j } else { f64::MAX };
+        check(ratio, Some(INERTIA_RATIO_LIMIT));
+    }
+    m
 }
 
 fn rank_axis<'c>(axis: &Axis, catalog: &'c Catalog, settings: &Settings, top: usize) -> Vec<Alternative> {
@@ -1163,7 +1186,7 @@ fn rank_axis<'c>(axis: &Axis, catalog: &'c Catalog, settings: &Settings, top: us
     // ranks after them. A combination that fails a check of speed, gear or inertia (cheap: no
     // pass over the samples) is a failing one, evaluated only when fewer than `top` pass.
     let mut found: Vec<Found> = Vec::new();
-    let mut deferred: Vec<(usize, &Motor)> = Vec::new();
+    let mut deferred: Vec<(usize, &Motor, f64)> = Vec::new();
     let mut scratch = Vec::new();
     let mut keeps = 0;
     let push = |gi: usize, motor: &'c Motor, found: &mut Vec<Found<'c>>, scratch: &mut Vec<f64>| -> Standing {
@@ -1196,16 +1219,30 @@ fn rank_axis<'c>(axis: &Axis, catalog: &'c Catalog, settings: &Settings, top: us
         if keeps >= top {
             break;
         }
-        if fails_cheaply(axis, &gears[gi].1, motor, gears[gi].0) {
-            deferred.push((gi, motor));
+        let bound = cheap_margin(axis, &gears[gi].1, motor, gears[gi].0);
+        if bound < 0.0 {
+            deferred.push((gi, motor, bound));
             continue;
         }
         if push(gi, motor, &mut found, &mut scratch) == Standing::PassesWithReserve {
             keeps += 1;
         }
     }
-    if keeps < top {
-        for (gi, motor) in deferred {
+    // The failing ones fill what the others leave of `top`, closest first: those that fail a
+    // cheap check in the order of that check's margin (an upper bound of their smallest
+    // margin), until the next bound is below the margin of the last failing one needed.
+    let others = found.iter().filter(|f| f.standing != Standing::Fails).count();
+    if keeps < top && others < top {
+        let need = top - others;
+        deferred.sort_by(|a, b| b.2.total_cmp(&a.2));
+        for (gi, motor, bound) in deferred {
+            let mut fails: Vec<f64> = found.iter().filter(|f| f.standing == Standing::Fails).map(|f| f.margin.unwrap_or(f64::NEG_INFINITY)).collect();
+            if fails.len() >= need {
+                fails.sort_by(|a, b| b.total_cmp(a));
+                if bound < fails[need - 1] {
+                    break;
+                }
+            }
             push(gi, motor, &mut found, &mut scratch);
         }
     }

@@ -505,8 +505,20 @@ fn ranking_order() {
         assert_eq!(d.pass, a.pass, "{a:?}");
         assert_eq!(d.passes_with_reserve, a.standing == Standing::PassesWithReserve, "{a:?}");
     }
-    let top3 = rank(s.load(JointKind::Revolute, 0.02), &cat, &settings, 3).expect("ranks");
-    assert_eq!(top3.as_slice(), &alts[..3]);
+    // The top k are the first k of the whole ranking, whatever k (the ranking stops early).
+    for k in 1..=alts.len() {
+        let top = rank(s.load(JointKind::Revolute, 0.02), &cat, &settings, k).expect("ranks");
+        assert_eq!(top.as_slice(), &alts[..k], "top {k}");
+    }
+    // And when most fail (a reserve no combination keeps, a heavier load): the failing ones
+    // closest first, the same with and without the early stop.
+    let heavy = Samples::new(201, |t| (2.0 * t, 2.0, 3.0 + 0.02 * 2.0));
+    let all = rank(heavy.load(JointKind::Revolute, 0.02), &cat, &settings, 100).expect("ranks");
+    assert!(all.iter().filter(|a| a.standing == Standing::Fails).count() >= 5, "{all:#?}");
+    for k in 1..=all.len() {
+        let top = rank(heavy.load(JointKind::Revolute, 0.02), &cat, &settings, k).expect("ranks");
+        assert_eq!(top.as_slice(), &all[..k], "top {k}");
+    }
     // A larger reserve moves combinations from the first group to the second.
     let strict = rank(s.load(JointKind::Revolute, 0.02), &cat, &Settings { reserve: 0.9, ..settings.clone() }, 100).expect("ranks");
     let count = |v: &[Alternative], st: Standing| v.iter().filter(|a| a.standing == st).count();
