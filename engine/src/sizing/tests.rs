@@ -487,6 +487,10 @@ fn ranking_order() {
     sorted.sort();
     assert_eq!(standings, sorted);
     assert!(standings.contains(&Standing::PassesWithReserve) && standings.contains(&Standing::Fails), "{standings:?}");
+    // Within a passing standing, the smallest rotor first.
+    for w in alts.windows(2).filter(|w| w[0].standing == w[1].standing && w[0].standing != Standing::Fails) {
+        assert!(w[0].rotor_inertia <= w[1].rotor_inertia, "{w:#?}");
+    }
     let first: Vec<(&str, &str)> = alts.iter().take(3).map(|a| (a.motor.name.as_str(), a.gear.name.as_str())).collect();
     // Among the passing mids: the lighter first (mass motor + gear), unknown mass last.
     let mids: Vec<&str> = alts.iter().filter(|a| a.standing == Standing::PassesWithReserve && a.gear.name == "fixed 20" && a.motor.name.starts_with("mid")).map(|a| a.motor.name.as_str()).collect();
