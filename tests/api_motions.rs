@@ -145,9 +145,13 @@ async fn limits_motions_trajectories_and_ik() {
     // user's instance) and the 100:1 strain-wave gear carry the datasheet values every check needs.
     let classes = json_of(app.get("/api/library/classes").await, 200).await;
     let class_of = |path: &str| {
-        classes.as_array().expect("classes").iter().find(|c| c["modelica_class"] == path).expect("class")["id"].as_str().expect("id").to_string()
+        classes.as_array().expect("classes").iter().find(|c| c["modelica_class"] == path).expect("class")["id"]
+            .as_str()
+            .expect("id")
+            .to_string()
     };
-    let re40 = json_of(app.get(&format!("/api/library/instances/{}", instance_named(&app, "maxon RE 40 148877 (24 V)").await)).await, 200).await;
+    let re40 =
+        json_of(app.get(&format!("/api/library/instances/{}", instance_named(&app, "maxon RE 40 148877 (24 V)").await)).await, 200).await;
     let mut values = re40["values"].as_object().expect("values").clone();
     values.insert("T_stall".into(), json!({"value": 2280, "unit": "mNm"}));
     let with_stall = json!({"class_id": re40["class_id"], "name": "RE 40 with stall torque", "source": "test: the seed's RE 40 with the catalogue's stall torque 2280 mNm", "values": values});

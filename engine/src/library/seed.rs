@@ -115,7 +115,11 @@ fn motor_datasheet() -> [ParameterDraft; 8] {
         datasheet("T_nom", "N.m", "Datasheet: nominal torque (max. continuous torque, S1)"),
         datasheet("T_peak", "N.m", "Datasheet: peak torque allowed for short times (intermittent operation)"),
         datasheet("w_max", "rad/s", "Datasheet: maximum permissible speed"),
-        datasheet("T_stall", "N.m", "Datasheet: stall torque at the nominal voltage (the peak limit where the maker states no short-time limit)"),
+        datasheet(
+            "T_stall",
+            "N.m",
+            "Datasheet: stall torque at the nominal voltage (the peak limit where the maker states no short-time limit)",
+        ),
         datasheet("tau_th_w", "s", "Datasheet: thermal time constant of the winding"),
         datasheet("mass", "kg", "Datasheet: motor mass (weight)"),
         price_class(),
@@ -133,7 +137,10 @@ fn gear_datasheet() -> [ParameterDraft; 8] {
         datasheet("T_avg_max", "N.m", "Datasheet: limit for the average output torque (Harmonic Drive's cubic mean), where given"),
         datasheet("mass", "kg", "Datasheet: gear mass (weight)"),
         price_class(),
-        datasheet_text("motor_mounts", "Datasheet: mounting codes (motor mount) of the motors this gear mounts on, separated by \";\"; empty: any motor"),
+        datasheet_text(
+            "motor_mounts",
+            "Datasheet: mounting codes (motor mount) of the motors this gear mounts on, separated by \";\"; empty: any motor",
+        ),
     ]
 }
 

@@ -148,7 +148,10 @@ impl Settings {
                         (None, Some(hi)) => format!("at most {hi} V"),
                         (None, None) => String::new(),
                     };
-                    out.push(Issue::new("supply_voltage", format!("the supply voltage {u} V is outside amplifier \"{}\"'s range {range}", a.part.name)));
+                    out.push(Issue::new(
+                        "supply_voltage",
+                        format!("the supply voltage {u} V is outside amplifier \"{}\"'s range {range}", a.part.name),
+                    ));
                 }
             }
         }
@@ -446,9 +449,9 @@ impl<'a> Axis<'a> {
         let sum2 = load.tau.iter().zip(&w).map(|(x, w)| x * x * w).sum::<f64>() + tau_hold * tau_hold * dwell;
         let rms_tau = (sum2 / period).sqrt();
         let (mut num, mut den) = (0.0, 0.0);
-        for i in 0..n {
-            let v = load.qd[i].abs() * w[i];
-            num += v * load.tau[i].abs().powi(3);
+        for ((qd, tau), w) in load.qd.iter().zip(load.tau).zip(&w) {
+            let v = qd.abs() * w;
+            num += v * tau.abs().powi(3);
             den += v;
         }
         let avg_tau = (den > 0.0).then(|| (num / den).cbrt());
@@ -640,9 +643,11 @@ struct Outcome {
 
 /// Rules, as the `rule` field states them.
 mod rule {
-    pub const PEAK: &str = "max |T_m| <= the motor's short-time torque limit T_peak, else its stall torque T_stall (same rule for every motor class)";
+    pub const PEAK: &str =
+        "max |T_m| <= the motor's short-time torque limit T_peak, else its stall torque T_stall (same rule for every motor class)";
     pub const RMS: &str = "sqrt(∫T_m² dt / T_cycle) over the duty cycle (motion + dwell holding the last pose) <= T_nom";
-    pub const THERMAL: &str = "sqrt(max θ), θ the winding's first-order response τ_w·θ' = T_m² - θ in the periodic steady state of the duty cycle, <= T_nom";
+    pub const THERMAL: &str =
+        "sqrt(max θ), θ the winding's first-order response τ_w·θ' = T_m² - θ in the periodic steady state of the duty cycle, <= T_nom";
     pub const SPEED: &str = "max |ω_m| <= the motor's maximum permissible speed w_max";
     pub const VOLTAGE: &str = "max |R·T_m/k + k·ω_m| <= the supply voltage set for the amplifier";
     pub const PEAK_CURRENT: &str = "max |T_m/k| <= the amplifier's peak output current I_peak";
@@ -651,7 +656,8 @@ mod rule {
     pub const GEAR_PEAK: &str = "max |τ| at the output <= the gear's repeated-peak limit T_peak (screw: axial force F_peak)";
     pub const GEAR_RMS: &str = "RMS of τ over the duty cycle <= the gear's rated (continuous) output torque T_rated";
     pub const GEAR_AVG: &str = "(Σ|q̇|·|τ|³·Δt / Σ|q̇|·Δt)^(1/3) <= the gear's limit for average torque T_avg_max, where given";
-    pub const INERTIA: &str = "(J_load/n² + J_gear,in) / J_motor <= 10: the gear's input inertia counted on the load side; the reserve does not apply";
+    pub const INERTIA: &str =
+        "(J_load/n² + J_gear,in) / J_motor <= 10: the gear's input inertia counted on the load side; the reserve does not apply";
     pub const BRAKING: &str = "DC bus: the largest energy fed back in one braking interval <= C·(U_max² - U_supply²)/2; brake resistor: energy fed back per cycle / T_cycle <= its continuous power";
 }
 
@@ -676,11 +682,11 @@ impl Outcome {
 
     /// The limiting check: the one failed worst, else the smallest margin.
     fn limiting(&self) -> Option<Limiting> {
-        self.checks
-            .iter()
-            .filter_map(|c| c.margin.map(|m| (c, m)))
-            .min_by(|a, b| a.1.total_cmp(&b.1))
-            .map(|(c, m)| Limiting { check: c.check, label: c.label, margin: m })
+        self.checks.iter().filter_map(|c| c.margin.map(|m| (c, m))).min_by(|a, b| a.1.total_cmp(&b.1)).map(|(c, m)| Limiting {
+            check: c.check,
+            label: c.label,
+            margin: m,
+        })
     }
 
     fn need(&mut self, names: &[&str]) {
@@ -713,7 +719,16 @@ impl Outcome {
     /// A check of `value` against `limit` (from `source`), or not evaluated with what is
     /// missing.
     #[allow(clippy::too_many_arguments)]
-    fn limit(&mut self, spec: Spec, value: Option<f64>, limit: Option<f64>, source: impl FnOnce() -> String, missing: &[&str], reserve: f64, detail: String) {
+    fn limit(
+        &mut self,
+        spec: Spec,
+        value: Option<f64>,
+        limit: Option<f64>,
+        source: impl FnOnce() -> String,
+        missing: &[&str],
+        reserve: f64,
+        detail: String,
+    ) {
         let (Some(value), Some(limit)) = (value, limit) else {
             let missing: Vec<&str> = missing.to_vec();
             self.not_evaluated(spec, &missing, detail);
@@ -778,7 +793,9 @@ fn evaluate(axis: &Axis, side: &GearSide, motor: &Motor, gear: &Gear, settings: 
             reserve,
             match peak {
                 Some(PeakRule::ShortTime(_)) => format!("{}; limit: the maker's short-time torque limit T_peak", axis.at(s.peak_t.1)),
-                Some(PeakRule::Stall(_)) => format!("{}; limit: the stall torque T_stall (the maker states no short-time limit)", axis.at(s.peak_t.1)),
+                Some(PeakRule::Stall(_)) => {
+                    format!("{}; limit: the stall torque T_stall (the maker states no short-time limit)", axis.at(s.peak_t.1))
+                }
                 None => "the library has neither T_peak nor T_stall for the motor".to_string(),
             },
         ),
@@ -844,7 +861,14 @@ fn evaluate(axis: &Axis, side: &GearSide, motor: &Motor, gear: &Gear, settings: 
         ),
     }
     for (check, label, r, value, limit, param) in [
-        ("peak_current", "Peak motor current", rule::PEAK_CURRENT, stats.map(|s| s.peak_t.0 / motor.k), amp.and_then(|a| a.i_peak), "I_peak"),
+        (
+            "peak_current",
+            "Peak motor current",
+            rule::PEAK_CURRENT,
+            stats.map(|s| s.peak_t.0 / motor.k),
+            amp.and_then(|a| a.i_peak),
+            "I_peak",
+        ),
         (
             "rms_current",
             "RMS motor current",
@@ -860,7 +884,15 @@ fn evaluate(axis: &Axis, side: &GearSide, motor: &Motor, gear: &Gear, settings: 
             (Some(_), None) => o.not_evaluated(spec, &["amplifier"], "no amplifier set".to_string()),
             (Some(_), Some(_)) => {
                 let missing = format!("amplifier.{param}");
-                o.limit(spec, value, limit, || of("amplifier", aname, param), &[missing.as_str()], reserve, format!("I = T_m/k, k = {} N·m/A", short(motor.k)))
+                o.limit(
+                    spec,
+                    value,
+                    limit,
+                    || of("amplifier", aname, param),
+                    &[missing.as_str()],
+                    reserve,
+                    format!("I = T_m/k, k = {} N·m/A", short(motor.k)),
+                )
             }
         }
     }
@@ -905,9 +937,15 @@ fn evaluate(axis: &Axis, side: &GearSide, motor: &Motor, gear: &Gear, settings: 
         match (gear.t_avg_max, axis.avg_tau) {
             (None, _) => o.not_evaluated(spec, &[], "the maker gives no limit for the average torque (T_avg_max)".to_string()),
             (Some(_), None) => o.not_evaluated(spec, &[], "the joint never moves: no average torque".to_string()),
-            (Some(lim), Some(v)) => {
-                o.limit(spec, Some(v), Some(lim), || of("gear", gname, "T_avg_max"), &[], reserve, "weighted by the output speed".to_string())
-            }
+            (Some(lim), Some(v)) => o.limit(
+                spec,
+                Some(v),
+                Some(lim),
+                || of("gear", gname, "T_avg_max"),
+                &[],
+                reserve,
+                "weighted by the output speed".to_string(),
+            ),
         }
     }
     if gear.ratio != gear.catalog_ratio {
@@ -915,7 +953,13 @@ fn evaluate(axis: &Axis, side: &GearSide, motor: &Motor, gear: &Gear, settings: 
     }
 
     // Inertia ratio, the gear's input inertia on the load side.
-    let spec = Spec { check: "inertia_ratio", label: "Inertia ratio (J_load/n² + J_gear,in) / J_motor", rule: rule::INERTIA, unit: "1", reserve: false };
+    let spec = Spec {
+        check: "inertia_ratio",
+        label: "Inertia ratio (J_load/n² + J_gear,in) / J_motor",
+        rule: rule::INERTIA,
+        unit: "1",
+        reserve: false,
+    };
     match gear.j_in {
         None => o.not_evaluated(spec, no_j_in, "the gear's input inertia belongs to the load side; the library lacks it".to_string()),
         Some(j_in) => {
@@ -965,7 +1009,11 @@ fn evaluate(axis: &Axis, side: &GearSide, motor: &Motor, gear: &Gear, settings: 
             None => o.not_evaluated(
                 spec,
                 &["brake (resistor power or DC-bus capacitance)"],
-                format!("the motor feeds {} J back per cycle ({} J in the largest braking interval)", short(s.e_cycle), short(s.e_interval)),
+                format!(
+                    "the motor feeds {} J back per cycle ({} J in the largest braking interval)",
+                    short(s.e_cycle),
+                    short(s.e_interval)
+                ),
             ),
             Some(Brake::Bus { capacitance, voltage_max }) => o.limit(
                 Spec { label: "Braking energy per interval (DC bus)", ..spec },
@@ -1236,7 +1284,8 @@ fn rank_axis<'c>(axis: &Axis, catalog: &'c Catalog, settings: &Settings, top: us
         let need = top - others;
         deferred.sort_by(|a, b| b.2.total_cmp(&a.2));
         for (gi, motor, bound) in deferred {
-            let mut fails: Vec<f64> = found.iter().filter(|f| f.standing == Standing::Fails).map(|f| f.margin.unwrap_or(f64::NEG_INFINITY)).collect();
+            let mut fails: Vec<f64> =
+                found.iter().filter(|f| f.standing == Standing::Fails).map(|f| f.margin.unwrap_or(f64::NEG_INFINITY)).collect();
             if fails.len() >= need {
                 fails.sort_by(|a, b| b.total_cmp(a));
                 if bound < fails[need - 1] {

@@ -288,7 +288,8 @@ pub fn gear(class: &Class, instance: &Instance, overrides: &[(String, Value)]) -
     let rp = class.parameter("ratio");
     // The catalogue's ratings, efficiency and inertia hold at the instance's own ratio: at a
     // ratio a drive overrides, they are not known (named missing, never carried over).
-    let catalog_ratio = library::resolved_values(class, instance, &[]).iter().find(|(n, _)| n == "ratio").and_then(|(_, v)| v.as_f64()).unwrap_or(ratio);
+    let catalog_ratio =
+        library::resolved_values(class, instance, &[]).iter().find(|(n, _)| n == "ratio").and_then(|(_, v)| v.as_f64()).unwrap_or(ratio);
     let rated = |name: &str| if ratio == catalog_ratio { real(&v, name) } else { None };
     let out_peak = if lead.is_some() { rated("F_peak") } else { rated("T_peak") };
     let motor_mounts = text(&v, "motor_mounts")

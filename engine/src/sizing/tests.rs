@@ -54,7 +54,15 @@ fn gear(ratio: f64, eta: f64) -> Gear {
 
 /// 24 V supply, 3 A continuous, 6 A peak.
 fn amplifier() -> Amplifier {
-    Amplifier { part: part("A"), u_supply: Some(24.0), u_min: Some(10.0), u_max: Some(50.0), i_cont: Some(3.0), i_peak: Some(6.0), source: "test amplifier".into() }
+    Amplifier {
+        part: part("A"),
+        u_supply: Some(24.0),
+        u_min: Some(10.0),
+        u_max: Some(50.0),
+        i_cont: Some(3.0),
+        i_peak: Some(6.0),
+        source: "test amplifier".into(),
+    }
 }
 
 fn with_amp() -> Settings {
@@ -374,7 +382,7 @@ fn gear_average_torque() {
     let s = Samples::new(1001, |t| if t <= 0.5 { (2.0, 0.0, 3.0) } else { (1.0, 0.0, 6.0) });
     let g = Gear { t_avg_max: Some(4.0), ..gear(10.0, 1.0) };
     let d = size(&s, JointKind::Revolute, 0.0, &motor(), &g, &with_amp());
-    let exact = ((2.0 * 27.0 * 0.5 + 1.0 * 216.0 * 0.5) / (2.0 * 0.5 + 1.0 * 0.5) as f64).cbrt();
+    let exact = ((2.0_f64 * 27.0 * 0.5 + 1.0 * 216.0 * 0.5) / (2.0 * 0.5 + 1.0 * 0.5)).cbrt();
     close(value(&d, "gear_avg_torque"), exact, 2e-3);
     assert_eq!(check(&d, "gear_avg_torque").status, Status::Fail);
 }
@@ -464,7 +472,14 @@ fn ranking_order() {
     let incomplete = Motor { part: part("incomplete"), j: 1e-5, t_nom: None, ..motor() };
     let g20 = Gear { part: part("fixed 20"), mass: Some(0.2), ..gear(20.0, 0.9) };
     let mounted = Gear { part: part("mounted 20"), motor_mounts: Some(vec!["Flange A".into()]), mass: Some(0.2), ..gear(20.0, 0.9) };
-    let editable = Gear { part: part("editable 12"), ratio_editable: true, ratio_min: Some(1.0), ratio_max: Some(100.0), mass: Some(0.2), ..gear(12.0, 1.0) };
+    let editable = Gear {
+        part: part("editable 12"),
+        ratio_editable: true,
+        ratio_min: Some(1.0),
+        ratio_max: Some(100.0),
+        mass: Some(0.2),
+        ..gear(12.0, 1.0)
+    };
     let screw = Gear { part: part("screw"), lead: Some(0.01), ..gear(1.0, 1.0) };
     let cat = Catalog {
         motors: vec![big.clone(), incomplete, tiny, mid_heavy, mid_unknown, mid_light],
@@ -493,7 +508,11 @@ fn ranking_order() {
     }
     let first: Vec<(&str, &str)> = alts.iter().take(3).map(|a| (a.motor.name.as_str(), a.gear.name.as_str())).collect();
     // Among the passing mids: the lighter first (mass motor + gear), unknown mass last.
-    let mids: Vec<&str> = alts.iter().filter(|a| a.standing == Standing::PassesWithReserve && a.gear.name == "fixed 20" && a.motor.name.starts_with("mid")).map(|a| a.motor.name.as_str()).collect();
+    let mids: Vec<&str> = alts
+        .iter()
+        .filter(|a| a.standing == Standing::PassesWithReserve && a.gear.name == "fixed 20" && a.motor.name.starts_with("mid"))
+        .map(|a| a.motor.name.as_str())
+        .collect();
     assert_eq!(&mids[..3], ["mid light", "mid heavy", "mid unknown"], "{first:?} {mids:?}");
     let inc = alts.iter().find(|a| a.motor.name == "incomplete").expect("incomplete");
     assert_eq!(inc.standing, Standing::Incomplete);
@@ -594,7 +613,9 @@ fn published_example_harmonic_gear_average_torque() {
     let avg = value(&d, "gear_avg_torque");
     assert_eq!(avg.round(), 89.0, "{avg}");
     // The formula, written out: (Σ n·t·T³ / Σ n·t)^(1/3).
-    let exact = ((10.0 * 0.2 * 150f64.powi(3) + 20.0 * 3.0 * 82f64.powi(3) + 10.0 * 0.3 * 130f64.powi(3)) / (10.0 * 0.2 + 20.0 * 3.0 + 10.0 * 0.3)).cbrt();
+    let exact = ((10.0 * 0.2 * 150f64.powi(3) + 20.0 * 3.0 * 82f64.powi(3) + 10.0 * 0.3 * 130f64.powi(3))
+        / (10.0 * 0.2 + 20.0 * 3.0 + 10.0 * 0.3))
+        .cbrt();
     close(avg, exact, 1e-12);
     assert_eq!(check(&d, "gear_avg_torque").status, Status::Pass);
 }

@@ -437,13 +437,17 @@ pub struct AmplifierView {
 
 /// The request's settings against the library: every problem names its field (`reserve`,
 /// `amplifier`, `supply_voltage`, `brake_power`, `bus_capacitance`, `bus_voltage_max`).
-pub fn sizing_settings(req: &SizingRequest, library: &cad2mo_engine::library::Library) -> Result<cad2mo_engine::sizing::Settings, MotionError> {
+pub fn sizing_settings(
+    req: &SizingRequest,
+    library: &cad2mo_engine::library::Library,
+) -> Result<cad2mo_engine::sizing::Settings, MotionError> {
     use cad2mo_engine::sizing::{Brake, Settings};
     let mut errors: Vec<FieldError> = Vec::new();
     let amplifier = match &req.amplifier {
         None => {
             if req.supply_voltage.is_some() {
-                errors.push(FieldError { field: "supply_voltage".into(), message: "a supply voltage needs an amplifier (amplifier)".into() });
+                errors
+                    .push(FieldError { field: "supply_voltage".into(), message: "a supply voltage needs an amplifier (amplifier)".into() });
             }
             None
         }
@@ -474,7 +478,10 @@ pub fn sizing_settings(req: &SizingRequest, library: &cad2mo_engine::library::Li
         (Some(power), None, None) => Some(Brake::Resistor { power }),
         (None, Some(capacitance), Some(voltage_max)) => Some(Brake::Bus { capacitance, voltage_max }),
         (None, Some(_), None) => {
-            errors.push(FieldError { field: "bus_voltage_max".into(), message: "a DC-bus capacitance needs the bus's highest voltage".into() });
+            errors.push(FieldError {
+                field: "bus_voltage_max".into(),
+                message: "a DC-bus capacitance needs the bus's highest voltage".into(),
+            });
             None
         }
         (None, None, Some(_)) => {

@@ -674,7 +674,11 @@ mod tests {
         // Back to the old seed.
         sqlx::query(&store.pool.sql("DELETE FROM library_parameters WHERE datasheet = 1")).execute(&store.pool).await.expect("params");
         // The amplifier class came after 0005.
-        sqlx::query(&store.pool.sql("DELETE FROM library_classes WHERE id = ?1")).bind(seed::SERVO_AMPLIFIER).execute(&store.pool).await.expect("class");
+        sqlx::query(&store.pool.sql("DELETE FROM library_classes WHERE id = ?1"))
+            .bind(seed::SERVO_AMPLIFIER)
+            .execute(&store.pool)
+            .await
+            .expect("class");
         for i in &new.instances {
             // Controllers have no datasheet values.
             let Some(cut) = ["Datasheet values for the drive sizing", "No datasheet values for the drive sizing"]
@@ -715,14 +719,24 @@ mod tests {
         seed_if_empty(&store).await.expect("seed");
         let new = export(&store).await.expect("export");
         assert_eq!(seed_new_classes(&store).await.expect("nothing to add"), 0);
-        sqlx::query(&store.pool.sql("DELETE FROM library_classes WHERE id = ?1")).bind(seed::SERVO_AMPLIFIER).execute(&store.pool).await.expect("class");
-        sqlx::query(&store.pool.sql("DELETE FROM library_parameters WHERE name IN ('mount', 'motor_mounts')")).execute(&store.pool).await.expect("params");
+        sqlx::query(&store.pool.sql("DELETE FROM library_classes WHERE id = ?1"))
+            .bind(seed::SERVO_AMPLIFIER)
+            .execute(&store.pool)
+            .await
+            .expect("class");
+        sqlx::query(&store.pool.sql("DELETE FROM library_parameters WHERE name IN ('mount', 'motor_mounts')"))
+            .execute(&store.pool)
+            .await
+            .expect("params");
         sqlx::query("DELETE FROM library_seed_offered").execute(&store.pool).await.expect("offered");
         assert_ne!(export(&store).await.expect("old"), new);
         let added = seed_new_classes(&store).await.expect("upgrade");
         assert_eq!(export(&store).await.expect("upgraded"), new);
         assert!(added >= 6, "{added}");
-        sqlx::query(&store.pool.sql("DELETE FROM library_parameters WHERE name = 'T_stall'")).execute(&store.pool).await.expect("user deletes");
+        sqlx::query(&store.pool.sql("DELETE FROM library_parameters WHERE name = 'T_stall'"))
+            .execute(&store.pool)
+            .await
+            .expect("user deletes");
         assert_eq!(seed_new_classes(&store).await.expect("again"), 0);
         let lib = export(&store).await.expect("export");
         assert!(lib.classes.iter().all(|c| c.parameter("T_stall").is_none()));
