@@ -599,7 +599,13 @@ export function renderMotion(panel, ctx) {
       plots.push(timePlot(box, { title, t: traj.t, series: traj[key], names, units: us, onSeek: seekTo, marks: () => contactMarkers(collisions, traj?.duration || 0).map((m) => m.time) }));
     }
     for (const d of sizing?.drives || []) {
-      if (!d.operating_points?.speed?.length) continue;
+      if (!d.operating_points?.speed?.length) {
+        // The motor torque needs every value it is made of (the gear's input inertia): no points
+        // are drawn from a guess.
+        const missing = (d.checks || []).find((c) => c.check === 'peak_torque')?.missing || [];
+        plotsBox.append(h('p', { class: 'muted ts-missing', dataset: { joint: d.joint } }, `${d.joint}: no torque–speed plot: the motor torque is not evaluated${missing.length ? ` (missing ${missing.join(', ')})` : ''}.`));
+        continue;
+      }
       const box = h('div', { class: 'plot', dataset: { plot: `ts-${d.joint}` } });
       plotsBox.append(box);
       plots.push(torqueSpeedPlot(box, { title: `${d.joint}: ${d.motor?.name || 'motor'} torque–speed`, op: d.operating_points, envelope: d.envelope }));
