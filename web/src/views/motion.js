@@ -698,6 +698,7 @@ export function renderMotion(panel, ctx) {
   /** The amplifier, duty cycle, reserve and brake the sizing runs with. */
   function settingsForm() {
     const s = sizingSettings;
+    // No min/max here: the service checks the settings and its 422 names the field.
     const input = (name, label, value, attrs = {}) => {
       const el = h('input', { name, type: 'number', step: 'any', value: value ?? '', ...attrs });
       el.addEventListener('change', () => (s[name] = el.value === '' ? '' : Number(el.value)));
@@ -720,13 +721,13 @@ export function renderMotion(panel, ctx) {
         },
       },
       h('label', { class: 'field' }, 'Amplifier ', amp),
-      input('supplyVoltage', 'Supply voltage (V)', s.supplyVoltage, { min: 0 }),
-      input('reservePercent', 'Reserve (%)', s.reservePercent, { min: 0, max: 99 }),
-      input('dwell', 'Dwell between repetitions (s)', s.dwell, { min: 0 }),
+      input('supplyVoltage', 'Supply voltage (V)', s.supplyVoltage),
+      input('reservePercent', 'Reserve (%)', s.reservePercent),
+      input('dwell', 'Dwell between repetitions (s)', s.dwell),
       h('label', { class: 'field' }, 'Brake ', brake),
-      input('brakePower', 'Resistor power (W)', s.brakePower, { min: 0 }),
-      input('busCapacitance', 'Bus capacitance (F)', s.busCapacitance, { min: 0 }),
-      input('busVoltageMax', 'Bus max voltage (V)', s.busVoltageMax, { min: 0 }),
+      input('brakePower', 'Resistor power (W)', s.brakePower),
+      input('busCapacitance', 'Bus capacitance (F)', s.busCapacitance),
+      input('busVoltageMax', 'Bus max voltage (V)', s.busVoltageMax),
       h('button', { type: 'submit' }, 'Size again'),
     );
   }
