@@ -54,9 +54,9 @@
 //! where the gear names the motors it mounts on (`motor_mounts` against the motor's `mount`),
 //! each gear at its own catalogue ratio only. Order: (1) passes every check with the reserve,
 //! nothing missing; (2) passes, nothing missing, some margin below the reserve; (3) every
-//! evaluated check passes but values are missing; (4) fails. Within (1)–(3) the smallest first:
-//! rotor inertia, then mass (motor + gear, known before unknown), then price class (known before
-//! unknown), then names; within (4) the largest smallest margin first. Each [`Alternative`] says
+//! evaluated check passes but values are missing (the fewest missing first); (4) fails. Within
+//! (1)–(3) the smallest first: rotor inertia, then mass (motor + gear, known before unknown), then
+//! price class (known before unknown), then names; within (4) the largest smallest margin first. Each [`Alternative`] says
 //! its standing, why, and its limiting check.
 
 pub mod parts;
@@ -1299,6 +1299,9 @@ fn rank_axis<'c>(axis: &Axis, catalog: &'c Catalog, settings: &Settings, top: us
         a.standing.cmp(&b.standing).then_with(|| {
             if a.standing == Standing::Fails {
                 known(b.margin, a.margin).then_with(|| smaller(a.motor, a.gear, b.motor, b.gear))
+            } else if a.standing == Standing::Incomplete {
+                // The fewer values missing, the more the combination is known to pass.
+                a.missing.len().cmp(&b.missing.len()).then_with(|| smaller(a.motor, a.gear, b.motor, b.gear))
             } else {
                 smaller(a.motor, a.gear, b.motor, b.gear)
             }

@@ -529,7 +529,7 @@ pub struct SizingReport {
     pub orphaned: Vec<String>,
 }
 
-const RANKING: &str = "real catalogue combinations only (each gear at its own catalogue ratio, motors that mount on the gear where the catalogue says so): first those passing every check with the reserve, then those passing without it, then those with missing values, then the failing ones; within each the smallest first (rotor inertia, then mass, then price class where known), failing ones by their smallest margin";
+const RANKING: &str = "real catalogue combinations only (each gear at its own catalogue ratio, motors that mount on the gear where the catalogue says so): first those passing every check with the reserve, then those passing without it, then those with missing values (the fewest missing first), then the failing ones; within each the smallest first (rotor inertia, then mass, then price class where known), failing ones by their smallest margin";
 
 fn kind_of(k: CoordKind) -> pipeline::back::modelica::mechatronics::JointKind {
     match k {
