@@ -141,37 +141,91 @@ async fn limits_motions_trajectories_and_ik() {
 
     // A drive on the first joint and a re-export: Mechatronics.mo follows the motions (the one
     // this version cannot plan is skipped and reported), the report lists them.
-    // The maxon RE 40 and the 100:1 strain-wave gear carry the datasheet values every check needs.
-    let motor = instance_named(&app, "maxon RE 40 148877 (24 V)").await;
+    // The maxon RE 40 (with the stall torque its catalogue prints, 2280 mNm at 24 V, added as a
+    // user's instance) and the 100:1 strain-wave gear carry the datasheet values every check needs.
+    let classes = json_of(app.get("/api/library/classes").await, 200).await;
+    let class_of = |path: &str| {
+        classes.as_array().expect("classes").iter().find(|c| c["modelica_class"] == path).expect("class")["id"]
+            .as_str()
+            .expect("id")
+            .to_string()
+    };
+    let re40 =
+        json_of(app.get(&format!("/api/library/instances/{}", instance_named(&app, "maxon RE 40 148877 (24 V)").await)).await, 200).await;
+    let mut values = re40["values"].as_object().expect("values").clone();
+    values.insert("T_stall".into(), json!({"value": 2280, "unit": "mNm"}));
+    let with_stall = json!({"class_id": re40["class_id"], "name": "RE 40 with stall torque", "source": "test: the seed's RE 40 with the catalogue's stall torque 2280 mNm", "values": values});
+    let motor = json_of(app.client.post(app.url("/api/library/instances")).json(&with_stall).send().await.expect("post"), 201).await["id"]
+        .as_str()
+        .expect("id")
+        .to_string();
+    let amp = json!({"class_id": class_of("cad2mo.Sizing.ServoAmplifier"), "name": "test amplifier 10-50 V, 5 A / 15 A", "source": "test values",
+        "values": {"U_min": 10, "U_max": 50, "I_cont": 5, "I_peak": 15}});
+    let amp = json_of(app.client.post(app.url("/api/library/instances")).json(&amp).send().await.expect("post"), 201).await["id"]
+        .as_str()
+        .expect("id")
+        .to_string();
     let gear = instance_named(&app, "Ideal gear 100:1").await;
     let controller = seeded_instance(&app, "cad2mo.Drives.Controllers.CascadePPI").await;
     let drive = json!({"motor_instance": motor, "gear_instance": gear, "controller_instance": controller});
     json_of(app.client.put(app.url(&format!("{base}/drives/{}", names[0]))).json(&drive).send().await.expect("put"), 200).await;
-    // Sizing at 1 kHz: the drive's checks against its motor and gear, ranked alternatives, and
-    // what the other joints ask of a drive.
-    let sz = json_of(app.get(&format!("{base}/motions/{mid}/sizing")).await, 200).await;
+    // Sizing at 1 kHz without settings: the checks that need an amplifier are not evaluated and
+    // the amplifier is named missing.
+    let plain = json_of(app.get(&format!("{base}/motions/{mid}/sizing")).await, 200).await;
+    assert!(plain["drives"][0]["missing"].as_array().expect("missing").contains(&json!("amplifier")), "{:#}", plain["drives"][0]);
+    assert_eq!(plain["settings"]["reserve"], 0.2);
+    // With an amplifier at 24 V, a 1 s dwell, a 20 % reserve and a brake resistor: every check
+    // evaluated against its motor, gear and amplifier; ranked real alternatives; what the other
+    // joints ask of a drive.
+    let query = format!("amplifier={amp}&supply_voltage=24&reserve=0.2&dwell=1&brake_power=50");
+    let sz = json_of(app.get(&format!("{base}/motions/{mid}/sizing?{query}")).await, 200).await;
     assert_eq!(sz["rate"], 1000.0);
+    assert_eq!((sz["settings"]["dwell"].as_f64(), sz["settings"]["amplifier"]["supply_voltage"].as_f64()), (Some(1.0), Some(24.0)));
+    assert_eq!(sz["settings"]["brake"], json!({"kind": "resistor", "power": 50.0}));
     let d = &sz["drives"][0];
     assert_eq!(d["joint"], names[0].as_str(), "{sz:#}");
     let checks: Vec<&str> = d["checks"].as_array().expect("checks").iter().map(|c| c["check"].as_str().expect("check")).collect();
     assert_eq!(d["missing"], json!([]), "{d:#}");
-    for c in ["peak_torque", "rms_torque", "voltage", "inertia_ratio"] {
+    for c in ["peak_torque", "rms_torque", "voltage", "peak_current", "rms_current", "inertia_ratio", "braking"] {
         assert!(checks.contains(&c), "{c} in {checks:?}");
     }
+    let by = |name: &str| d["checks"].as_array().expect("checks").iter().find(|c| c["check"] == name).expect("check").clone();
+    assert_eq!(by("voltage")["limit"], 24.0);
+    assert_eq!(by("peak_current")["limit"], 15.0);
+    assert!((by("peak_torque")["limit"].as_f64().expect("limit") - 2.28).abs() < 1e-12);
+    assert!(by("peak_torque")["source"].as_str().expect("source").contains("T_stall"));
     for c in d["checks"].as_array().expect("checks") {
         if let (Some(v), Some(l)) = (c["value"].as_f64(), c["limit"].as_f64()) {
             assert!((c["margin"].as_f64().expect("margin") - (l - v) / l).abs() < 1e-12, "{c}");
+            assert!(c["source"].is_string() && c["rule"].is_string(), "{c}");
         }
+    }
+    for a in d["alternatives"].as_array().expect("alternatives") {
+        assert!(a["why"].is_string() && a["standing"].is_string(), "{a}");
+    }
+    // Bad settings: 422 naming each field.
+    for (q, field) in [
+        ("reserve=1.5", "reserve"),
+        ("dwell=-1", "dwell"),
+        (&*format!("amplifier={gear}"), "amplifier"),
+        ("amplifier=nope", "amplifier"),
+        (&*format!("amplifier={amp}&supply_voltage=60"), "supply_voltage"),
+        ("supply_voltage=24", "supply_voltage"),
+        ("brake_power=10&bus_capacitance=0.001&bus_voltage_max=60", "brake_power"),
+        ("bus_capacitance=0.001", "bus_voltage_max"),
+    ] {
+        let p = json_of(app.get(&format!("{base}/motions/{mid}/sizing?{q}")).await, 422).await;
+        assert_eq!(p["errors"][0]["field"], field, "{q}: {p:#}");
     }
     // The gear's output torque is the joint torque of the trajectory at the same rate.
     let t1k = json_of(app.get(&format!("{base}/motions/{mid}/trajectory?rate=1000")).await, 200).await;
     let peak = t1k["tau"][0].as_array().expect("tau").iter().map(|v| v.as_f64().expect("f").abs()).fold(0.0, f64::max);
-    let gear_peak = d["checks"].as_array().expect("checks").iter().find(|c| c["check"] == "gear_peak_torque").expect("gear check");
+    let gear_peak = by("gear_peak_torque");
     assert!((gear_peak["value"].as_f64().expect("value") - peak).abs() < 1e-9 * peak, "{gear_peak} vs {peak}");
     let points = d["operating_points"]["speed"].as_array().expect("points").len();
     assert!(points > 10 && points <= 2000, "{points}");
     assert_eq!(sz["undriven"].as_array().expect("undriven").len(), 5);
-    assert!(sz["ranking"].as_str().expect("ranking").contains("smallest motor"));
+    assert!(sz["ranking"].as_str().expect("ranking").contains("real catalogue combinations only"));
     let r = app.client.post(app.url(&format!("{base}/reexport"))).send().await.expect("reexport");
     let queued = json_of(r, 202).await;
     assert_eq!(app.wait_for_job(queued["job_id"].as_str().expect("job")).await["status"], "succeeded");
@@ -203,7 +257,7 @@ async fn limits_motions_trajectories_and_ik() {
     assert!(read(&mut z, "/package.order").lines().any(|l| l == "Motions"));
     let sizing: Value = serde_json::from_str(&read(&mut z, "/Resources/Sizing/pick.json")).expect("sizing json");
     assert_eq!(sizing["drives"][0]["joint"], names[0].as_str());
-    assert_eq!(sizing["drives"][0]["checks"], sz["drives"][0]["checks"], "the package's sizing is the API's");
+    assert_eq!(sizing["drives"][0]["checks"], plain["drives"][0]["checks"], "the package's sizing is the API's with the default settings");
     let report: Value = app.report(&id, 1).await.json().await.expect("report");
     assert_eq!(report["motions"]["written"], json!(["pick"]));
     assert_eq!(report["motions"]["skipped"][0]["motion"], "far");

@@ -57,6 +57,7 @@ impl App {
         std::fs::create_dir_all(&settings.data_dir).with_context(|| format!("creating data folder {}", settings.data_dir.display()))?;
         let store = Store::open_with(&settings.database_url, settings.db_pool_size).await.context("opening the database")?;
         crate::store::library::seed_if_empty(&store).await.context("seeding the motor library")?;
+        crate::store::library::seed_new_classes(&store).await.context("adding new seed classes and parameters to the motor library")?;
         crate::store::library::seed_new_instances(&store).await.context("adding new seed instances to the motor library")?;
         let blobs = Blobs::open(&settings.blobs, &settings.data_dir).await.context("opening the file store")?;
         tracing::info!(blobs = %blobs.location(), "file store open");

@@ -156,7 +156,7 @@ export async function motionSteps(page, { joint, step, shot, downloads, strict }
 
   // ---- Plots: q, qd, qdd, torque and the drive's torque–speed plane, drawn.
   step('motion: plots');
-  const sized = page.locator(`.plot[data-plot="ts-${joint}"] .uplot, .sizing-unavailable, .sizing-box .error`).first();
+  const sized = page.locator(`.plot[data-plot="ts-${joint}"] .uplot, .ts-missing[data-joint="${joint}"], .sizing-unavailable, .sizing-box .error`).first();
   await sized.waitFor({ timeout: 60_000 });
   const sizingAvailable = !(await page.locator('.sizing-unavailable').count());
   if (!sizingAvailable) {
@@ -166,7 +166,11 @@ export async function motionSteps(page, { joint, step, shot, downloads, strict }
   assert.equal(await page.locator('.sizing-box .error').count(), 0, 'no sizing error');
   const pixels = await plotPixels(page);
   step(`plot pixels ${JSON.stringify(pixels)}`);
-  for (const key of ['q', 'qd', 'qdd', 'tau', ...(sizingAvailable ? [`ts-${joint}`] : [])]) {
+  // A drive whose gear lacks its input inertia (the drive's gear at a ratio its catalogue does
+  // not rate) has no motor torque, so no torque–speed plot, and says why.
+  const tsMissing = (await page.locator(`.ts-missing[data-joint="${joint}"]`).count()) > 0;
+  if (tsMissing) assert.match(await page.locator(`.ts-missing[data-joint="${joint}"]`).textContent(), /missing gear\.J_in/);
+  for (const key of ['q', 'qd', 'qdd', 'tau', ...(sizingAvailable && !tsMissing ? [`ts-${joint}`] : [])]) {
     const p = pixels.find((x) => x.plot === key);
     assert.ok(p, `a ${key} plot: ${JSON.stringify(pixels)}`);
     assert.ok(p.drawn > 500, `the ${key} plot has drawn: ${JSON.stringify(p)}`);
@@ -237,7 +241,30 @@ async function sizingSteps(page, { joint, step, shot }) {
   const sizing = page.locator(`section.sizing[data-joint="${joint}"]`);
   await sizing.waitFor();
   assert.ok((await sizing.locator('table.checks tbody tr').count()) > 0, 'the drive has checks');
-  for (const v of await sizing.locator('td.verdict').allTextContents()) assert.match(v, /^(pass|FAIL|info)$/);
+  for (const v of await sizing.locator('td.verdict').allTextContents()) assert.match(v, /^(pass|pass, below reserve|FAIL|not evaluated)$/);
+  assert.ok((await sizing.locator('table.checks thead th', { hasText: 'Source of the limit' }).count()) === 1, 'the source column');
+  // Without an amplifier (or without the gear input inertia the motor torque needs) the voltage
+  // is not evaluated, and says what is missing.
+  assert.match(await sizing.locator("tr[data-check=voltage] td.source").textContent(), /missing: (amplifier|gear\.J_in)/);
+  // The settings: a 10 % reserve and a 2 s dwell, sized again; the summary states them.
+  const settings = page.getByRole('form', { name: 'Sizing settings' });
+  await settings.locator('input[name=reservePercent]').fill('10');
+  await settings.locator('input[name=reservePercent]').dispatchEvent('change');
+  await settings.locator('input[name=dwell]').fill('2');
+  await settings.locator('input[name=dwell]').dispatchEvent('change');
+  await settings.getByRole('button', { name: 'Size again' }).click();
+  await page.locator('.sizing-summary', { hasText: 'Reserve 10 % · duty cycle' }).waitFor();
+  assert.match(await page.locator('.sizing-summary').textContent(), /dwell 2 s/);
+  // A refused setting: 422 naming the field, the form stays.
+  await settings.locator('input[name=reservePercent]').fill('150');
+  await settings.locator('input[name=reservePercent]').dispatchEvent('change');
+  await page.getByRole('form', { name: 'Sizing settings' }).getByRole('button', { name: 'Size again' }).click();
+  await page.getByText(/reserve/).filter({ hasText: 'must be at least 0 and below 1' }).first().waitFor();
+  await page.getByRole('form', { name: 'Sizing settings' }).locator('input[name=reservePercent]').fill('20');
+  await page.getByRole('form', { name: 'Sizing settings' }).locator('input[name=reservePercent]').dispatchEvent('change');
+  await page.getByRole('form', { name: 'Sizing settings' }).getByRole('button', { name: 'Size again' }).click();
+  await sizing.waitFor();
+  for (const li of await sizing.locator('ol.alternatives li').all()) assert.match(await li.textContent(), /limited by .*(passes|fails|incomplete)|(passes|fails|incomplete).*limited by/);
   const apply = sizing.getByRole('button', { name: /^Apply / }).first();
   await apply.waitFor();
   const label = await apply.getAttribute('aria-label');

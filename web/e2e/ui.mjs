@@ -206,6 +206,9 @@ try {
   await page.getByRole('heading', { name: 'Motor library' }).waitFor();
   const ctrl = page.locator('[data-instance-name="RobotR3 axis controller"]');
   await ctrl.waitFor();
+  // A catalogue value shows where it comes from (the clause of the instance's source for it).
+  const fh = page.locator('[data-instance-name="Faulhaber 1331 T 006 SR"]');
+  assert.match(await fh.locator('[data-param=R] .value-source').textContent(), /^source: line 2 terminal resistance 2,83/);
   await shot(page, '8-library');
   await checkLabels(page, 'the library');
   await ctrl.getByRole('button', { name: 'Edit RobotR3 axis controller' }).click();

@@ -21,6 +21,16 @@ pub const IDEAL_GEAR: &str = "081e59da-554a-4b0c-bd5a-7f03409fb279";
 pub const EFFICIENCY_GEAR: &str = "10ace2d9-1eef-4be8-b0c1-ba992d043a94";
 pub const LEAD_SCREW: &str = "1d6bd1fa-9a39-47b1-86dc-e0162feea6eb";
 pub const CASCADE_PPI: &str = "0f2fa95d-0f54-42fb-88f8-831a624c2754";
+/// Classes added to the seed after the first one: an installation seeded before receives each
+/// once (the service's `seed_new_classes`).
+pub const ADDED_CLASSES: [&str; 1] = [SERVO_AMPLIFIER];
+
+/// Datasheet parameters added to the seed's classes after the first seed (issue 27's checks and
+/// ranking): an installation seeded before receives each once, in every seed class that has it.
+pub const ADDED_DATASHEET: [&str; 8] = ["T_stall", "tau_th_w", "mass", "price_class", "mount", "T_avg_max", "motor_mounts", "backlash"];
+
+/// The drive amplifier class (sizing only: every parameter a datasheet value, no Modelica class).
+pub const SERVO_AMPLIFIER: &str = "5b0b3c0e-3f7e-4d43-9a53-2f1f0f7c9a27";
 
 /// Instance ids.
 pub const MAXON_RE40: &str = "a204da99-dd36-4642-91d0-a61534935347";
@@ -177,24 +187,55 @@ fn datasheet(name: &str, unit: &str, comment: &str) -> ParameterDraft {
     ParameterDraft { datasheet: true, ..nameplate(name, unit, comment) }
 }
 
+/// A datasheet text (a String the drive sizing reads, e.g. a mounting code): optional per instance.
+fn datasheet_text(name: &str, comment: &str) -> ParameterDraft {
+    ParameterDraft { ty: "String".to_string(), unit: String::new(), min: None, max: None, ..datasheet(name, "", comment) }
+}
+
+/// The price class where a maker or distributor gives one: 1 (cheapest) to 5.
+fn price_class() -> ParameterDraft {
+    ParameterDraft {
+        ty: "Integer".to_string(),
+        unit: "1".to_string(),
+        min: Some(1.0),
+        max: Some(5.0),
+        ..datasheet("price_class", "1", "Price class where known: 1 (cheapest) to 5; the ranking's last criterion")
+    }
+}
+
 /// The datasheet values of every motor class (`crate::sizing` reads them by these names).
-fn motor_datasheet() -> [ParameterDraft; 3] {
+fn motor_datasheet() -> [ParameterDraft; 8] {
     [
         datasheet("T_nom", "N.m", "Datasheet: nominal torque (max. continuous torque, S1)"),
         datasheet("T_peak", "N.m", "Datasheet: peak torque allowed for short times (intermittent operation)"),
         datasheet("w_max", "rad/s", "Datasheet: maximum permissible speed"),
+        datasheet(
+            "T_stall",
+            "N.m",
+            "Datasheet: stall torque at the nominal voltage (the peak limit where the maker states no short-time limit)",
+        ),
+        datasheet("tau_th_w", "s", "Datasheet: thermal time constant of the winding"),
+        datasheet("mass", "kg", "Datasheet: motor mass (weight)"),
+        price_class(),
+        datasheet_text("mount", "Datasheet: the motor's mounting code, as gears name it in motor_mounts (e.g. \"maxon RE 40\")"),
     ]
 }
 
-/// The datasheet values of the rotary gear classes (`backlash` and `m` since migration 0012).
-fn gear_datasheet() -> [ParameterDraft; 6] {
+/// The datasheet values of the rotary gear classes.
+fn gear_datasheet() -> [ParameterDraft; 9] {
     [
         datasheet("T_rated", "N.m", "Datasheet: rated (max. continuous) output torque"),
         datasheet("T_peak", "N.m", "Datasheet: limit for repeated peak output torque (intermittent)"),
         datasheet("w_in_max", "rad/s", "Datasheet: maximum input speed"),
         datasheet("J_in", "kg.m2", "Datasheet: moment of inertia of the gear referred to its input (motor) shaft"),
         datasheet("backlash", "rad", "Datasheet: maximum torsional backlash at the output (standard version)"),
-        datasheet("m", "kg", "Datasheet: mass (weight) of the gear unit"),
+        datasheet("T_avg_max", "N.m", "Datasheet: limit for the average output torque (Harmonic Drive's cubic mean), where given"),
+        datasheet("mass", "kg", "Datasheet: gear mass (weight)"),
+        price_class(),
+        datasheet_text(
+            "motor_mounts",
+            "Datasheet: mounting codes (motor mount) of the motors this gear mounts on, separated by \";\"; empty: any motor",
+        ),
     ]
 }
 
@@ -310,6 +351,25 @@ fn classes() -> Vec<(&'static str, ClassDraft)> {
                     datasheet("F_peak", "N", "Datasheet: maximum axial force of screw, nut and bearings"),
                     datasheet("w_in_max", "rad/s", "Datasheet: maximum input (screw or gearbox input) speed"),
                     datasheet("J_in", "kg.m2", "Datasheet: moment of inertia referred to the input (motor) shaft"),
+                    datasheet("mass", "kg", "Datasheet: mass of screw, nut and bearings"),
+                    price_class(),
+                    datasheet_text("motor_mounts", "Datasheet: mounting codes (motor mount) of the motors this screw mounts on, separated by \";\"; empty: any motor"),
+                ],
+            ),
+        ),
+        (
+            SERVO_AMPLIFIER,
+            class(
+                "Servo amplifier",
+                "amplifier",
+                "cad2mo.Sizing.ServoAmplifier",
+                "A drive amplifier (servo controller, power stage) as the drive sizing sees it: its supply voltage range and its continuous and peak output current. Not a Modelica class: the sizing reads its datasheet values; the generated model's motor has its own voltage and current limits.",
+                vec![
+                    datasheet("U_min", "V", "Datasheet: lowest supply (DC bus) voltage"),
+                    datasheet("U_max", "V", "Datasheet: highest supply (DC bus) voltage"),
+                    datasheet("I_cont", "A", "Datasheet: maximum continuous output current"),
+                    datasheet("I_peak", "A", "Datasheet: peak (short-time) output current"),
+                    price_class(),
                 ],
             ),
         ),
@@ -984,7 +1044,7 @@ fn gear_catalogue() -> Vec<NamedInstance> {
             let t2a = p.t2a.get(c).map(|t| format!("maximum torque T2a {t} Nm, ")).unwrap_or_default();
             let reduced = p.reduced.map(|x| format!(", reduced version ≤ {x} arcmin")).unwrap_or_default();
             let source = format!(
-                "Beckhoff gear unit {series}, {stage}, ratio {r}, with clamping hub {hub}. Document: Beckhoff Information System, operating instructions {family} ({url}), page \"{series}\", table \"Mechanical data\", column ratio {r}{how}. Values: ratio = Ratio {r}; eta = Efficiency under full load η {eta} %; T_rated = Nominal output torque T2N at n1N {t2n} Nm; T_peak = Maximum acceleration torque T2B (maximum 1000 cycles per hour) {t2b} Nm, the page's limit for cyclic (repeated) peaks; w_in_max = Maximum input speed n1Max {n1max} min⁻¹ (in rad/s by ω = 2π·n/60); J_in = Mass moment of inertia J1 based on the drive, clamping hub {hub}: {j1} kgcm² (the page lists other hubs too); backlash = Maximum torsional backlash jt, standard version, ≤ {backlash} arcmin (an upper limit{reduced}); m = Weight {weight} kg (the page: depending on the clamping hub diameter and selected adapter plate). Printed, without a parameter here: {t2a}EMERGENCY STOP torque {es} Nm (1000 times during the service life of the gear unit), nominal input speed n1N {n1n} min⁻¹, idle torque T012, torsional rigidity Ct21.",
+                "Beckhoff gear unit {series}, {stage}, ratio {r}, with clamping hub {hub}. Document: Beckhoff Information System, operating instructions {family} ({url}), page \"{series}\", table \"Mechanical data\", column ratio {r}{how}. Values: ratio = Ratio {r}; eta = Efficiency under full load η {eta} %; T_rated = Nominal output torque T2N at n1N {t2n} Nm; T_peak = Maximum acceleration torque T2B (maximum 1000 cycles per hour) {t2b} Nm, the page's limit for cyclic (repeated) peaks; w_in_max = Maximum input speed n1Max {n1max} min⁻¹ (in rad/s by ω = 2π·n/60); J_in = Mass moment of inertia J1 based on the drive, clamping hub {hub}: {j1} kgcm² (the page lists other hubs too); backlash = Maximum torsional backlash jt, standard version, ≤ {backlash} arcmin (an upper limit{reduced}); mass = Weight {weight} kg (the page: depending on the clamping hub diameter and selected adapter plate). Printed, without a parameter here: {t2a}EMERGENCY STOP torque {es} Nm (1000 times during the service life of the gear unit), nominal input speed n1N {n1n} min⁻¹, idle torque T012, torsional rigidity Ct21.",
                 series = p.series,
                 hub = p.hub,
                 family = p.family,
@@ -999,7 +1059,7 @@ fn gear_catalogue() -> Vec<NamedInstance> {
                 "w_in_max": {"value": printed(n1_max), "unit": "rpm"},
                 "J_in": {"value": printed(j1), "unit": "kg.cm2"},
                 "backlash": {"value": printed(backlash), "unit": "arcmin"},
-                "m": {"value": printed(weight), "unit": "kg"}
+                "mass": {"value": printed(weight), "unit": "kg"}
             }));
             let name = format!("Beckhoff {} i={r}, clamping hub {}", p.series, p.hub);
             out.push((*id, EFFICIENCY_GEAR, name, source, values));

@@ -1,48 +1,63 @@
 //! Drive sizing: does a motor and gear from the library move a joint through a motion, and
-//! which combinations of the library would? No IO, no HTTP, no SQL, no panics.
+//! which real combinations of the library would? No IO, no HTTP, no SQL, no panics.
 //!
 //! Input per driven axis: an [`AxisLoad`], the joint's speed, acceleration and torque (or force)
 //! samples from the motion's inverse dynamics (gravity included) and the largest joint-space
 //! inertia `M_jj` over the motion. Motors and gears come from library instances
-//! ([`parts::motor`], [`parts::gear`]; their classes must be ones the sizing knows, see
-//! [`parts`]); datasheet parameters of the library give the limits.
+//! ([`parts::motor`], [`parts::gear`]), the drive amplifier too ([`parts::amplifier`]); the
+//! user's [`Settings`] add the supply voltage, the reserve, the dwell of the duty cycle and the
+//! brake (resistor or DC-bus capacity).
 //!
-//! The load is reflected through the gear to the motor shaft, sample by sample:
+//! **Duty cycle.** The motion is repeated with a dwell of `Settings::dwell` seconds between
+//! repetitions, during which the joint holds the motion's last pose: the holding torque is the
+//! last sample's `τ` (at rest), so RMS values, the thermal model and the mean braking power are
+//! taken over the period `T_cycle = motion + dwell`.
+//!
+//! **Reflection** through the gear to the motor shaft, sample by sample:
 //!
 //! - transmission `n = ratio` (revolute) or `n = ratio·2π/lead` (rad/m, lead screw); motor speed
 //!   `ω_m = n·q̇`;
 //! - load torque at the motor `τ/(n·η)` while the motor drives the load (joint power
 //!   `P = τ·q̇ >= 0`, standstill included) and `τ·η/n` while the load drives the motor back
 //!   (`P < 0`): losses always cost the motor, in both directions of power flow;
-//! - motor torque `T_m = load torque + (J_motor + J_gear,in)·n·q̈ + d·ω_m`;
-//! - motor voltage `U = R·T_m/k + k·ω_m`.
+//! - motor torque `T_m = load torque + (J_motor + J_gear,in)·n·q̈ + d·ω_m`; a gear without a
+//!   datasheet `J_in` leaves every check of `T_m` not evaluated (`gear.J_in` missing), never 0;
+//! - motor current `I = T_m/k`, voltage `U = R·I + k·ω_m`, electrical power `P_el = U·I`.
 //!
-//! The checks (each [`Check`] with value, limit, margin `(limit - value)/limit` and where the
-//! worst sample is):
+//! **Checks** (each a [`Check`]: value, limit, the limit's source, margin
+//! `(limit - value)/limit`, status; the rule in its `rule` field):
 //!
-//! | check | value | limit |
+//! | check | value | limit (source) |
 //! |---|---|---|
-//! | `peak_torque` | max `|T_m|` | motor `T_peak`; without it `k·I_max` (the generated drive's current limit) |
-//! | `rms_torque` | `sqrt(∫T_m² dt / T)` (trapezoidal) | motor `T_nom` |
+//! | `peak_torque` | max `|T_m|` | motor `T_peak` (the maker's short-time limit), else `T_stall` (stall torque at the nominal voltage); the same rule for every motor class |
+//! | `rms_torque` | `sqrt(∫T_m² dt / T_cycle)` over the duty cycle | motor `T_nom` (continuous) |
+//! | `thermal_torque` | `sqrt(max θ)`, `θ` the winding's first-order response `τ_w·θ' = T_m² - θ` in the periodic steady state of the duty cycle | motor `T_nom`, with `tau_th_w`; not evaluated where the maker gives no winding time constant |
 //! | `motor_speed` | max `|ω_m|` | motor `w_max` |
-//! | `voltage` | max `|U|` | motor `V_max` (MSL machine: `VaNominal`) |
+//! | `voltage` | max `|R·I + k·ω_m|` | the supply voltage the user sets for the amplifier |
+//! | `peak_current` | max `|I|` | amplifier `I_peak` |
+//! | `rms_current` | RMS of `I` over the duty cycle | amplifier `I_cont` |
 //! | `gear_input_speed` | max `|ω_m|` | gear `w_in_max` |
-//! | `gear_peak_torque` | max `|τ|` at the output (N·m, or N for a screw) | gear `T_peak` (screw: `F_peak`) |
-//! | `gear_rms_torque` | RMS of `τ` | gear `T_rated` (rotary gears) |
-//! | `inertia_ratio` | `J_load / (n²·J_motor)` | 10 (≤ 3 good, 3–5 common, 5–10 needs stiff mechanics) |
-//! | `braking_energy` | energy the motor shaft takes back (`∫ min(T_m·ω_m, 0) dt`) | information only |
+//! | `gear_peak_torque` | max `|τ|` at the output (N·m, or N for a screw) | gear `T_peak`, the repeated-peak limit (screw: `F_peak`) |
+//! | `gear_rms_torque` | RMS of `τ` over the duty cycle | gear `T_rated` (rotary gears) |
+//! | `gear_avg_torque` | `(Σ|q̇|·|τ|³·Δt / Σ|q̇|·Δt)^(1/3)` (Harmonic Drive's average torque) | gear `T_avg_max`, where the maker gives one |
+//! | `inertia_ratio` | `(J_load/n² + J_gear,in) / J_motor`: the gear's input inertia counted on the load side | 10 (≤ 3 good, 3–5 common, 5–10 needs stiff mechanics); the reserve does not apply |
+//! | `braking` | DC bus: the largest energy fed back in one braking interval (`∫ -P_el dt` while `P_el < 0`); brake resistor: the energy fed back per cycle / `T_cycle` | bus: `C·(U_max² - U_supply²)/2`; resistor: its continuous power; no braking: passes without a limit |
 //!
-//! A check whose limit is a datasheet value the instance lacks is not evaluated: the parameter
-//! is listed in `missing` (`motor.T_nom`, `gear.w_in_max`).
+//! A check whose limit (or whose value's input) is a value the library or the settings lack is
+//! reported `not_evaluated` and the value is named in `missing` (`motor.T_nom`, `gear.J_in`,
+//! `amplifier.I_peak`, `supply_voltage`); `where given` checks (`thermal_torque`,
+//! `gear_avg_torque`) are `not_evaluated` without being missing. A check passes when
+//! `value <= limit`; it keeps the reserve when `margin >= reserve` (default 20 %).
 //!
-//! Ranking ([`rank`]): every motor × gear of the [`Catalog`] whose gear fits the joint kind
-//! (prismatic joints: screws; revolute joints: the others), each gear at its own ratio and, when
-//! its ratio is editable, also at the [`STANDARD_RATIOS`] inside the parameter's limits (a gear's
-//! datasheet ratings are then kept as they are: ratings differ between ratios of one series, so
-//! an alternative at another ratio needs its own catalog check). Combinations that pass every
-//! evaluated check are ranked: first those with no missing datasheet value, then by rotor
-//! inertia ascending (the smallest motor), then by minimum margin descending, then by names and
-//! ratio.
+//! **Ranking** ([`rank`]): only real catalogue combinations: every motor × gear of the
+//! [`Catalog`] whose gear fits the joint kind (prismatic joints: screws) and mounts on the motor
+//! where the gear names the motors it mounts on (`motor_mounts` against the motor's `mount`),
+//! each gear at its own catalogue ratio only. Order: (1) passes every check with the reserve,
+//! nothing missing; (2) passes, nothing missing, some margin below the reserve; (3) every
+//! evaluated check passes but values are missing (the fewest missing first); (4) fails. Within
+//! (1)–(3) the smallest first: rotor inertia, then mass (motor + gear, known before unknown), then
+//! price class (known before unknown), then names; within (4) the largest smallest margin first. Each [`Alternative`] says
+//! its standing, why, and its limiting check.
 
 pub mod parts;
 #[cfg(test)]
@@ -50,15 +65,19 @@ mod tests;
 
 use serde::Serialize;
 
+use crate::library::Issue;
 use crate::pipeline::back::modelica::mechatronics::JointKind;
-pub use parts::{Catalog, Gear, Motor, PeakRule};
-
-/// Ratios tried for gears whose ratio is editable (within the parameter's limits).
-pub const STANDARD_RATIOS: [f64; 13] = [1.0, 3.0, 5.0, 7.0, 10.0, 15.0, 20.0, 30.0, 50.0, 74.0, 100.0, 120.0, 160.0];
+pub use parts::{Amplifier, Catalog, Gear, Motor, PeakRule};
 
 /// The inertia ratio limit; ≤ [`INERTIA_RATIO_GOOD`] is good.
 pub const INERTIA_RATIO_LIMIT: f64 = 10.0;
 pub const INERTIA_RATIO_GOOD: f64 = 3.0;
+
+/// The reserve a combination must keep on every capacity check when the user gives none.
+pub const DEFAULT_RESERVE: f64 = 0.2;
+
+/// The longest dwell a duty cycle takes (s): a day.
+pub const MAX_DWELL: f64 = 86_400.0;
 
 /// At most this many operating points are returned.
 pub const MAX_POINTS: usize = 2000;
@@ -77,6 +96,87 @@ pub enum SizingError {
     GearDoesNotFit { joint: String, gear: String, fits: &'static str, kind: &'static str },
     #[error("cannot size joint {joint}: {reason}")]
     BadLoad { joint: String, reason: String },
+}
+
+/// How braking energy leaves the DC bus.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Brake {
+    /// A brake resistor of this continuous power (W).
+    Resistor { power: f64 },
+    /// The DC bus's capacitors alone (F), up to the bus's highest voltage (V).
+    Bus { capacitance: f64, voltage_max: f64 },
+}
+
+/// The user's settings of a sizing.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Settings {
+    /// The reserve every capacity check must keep, `0 <= reserve < 1` (0.2 = 20 %).
+    pub reserve: f64,
+    /// The dwell between repetitions of the motion (s): the duty cycle.
+    pub dwell: f64,
+    /// The drive amplifier, with the supply voltage the user sets.
+    pub amplifier: Option<Amplifier>,
+    pub brake: Option<Brake>,
+}
+
+impl Default for Settings {
+    fn default() -> Settings {
+        Settings { reserve: DEFAULT_RESERVE, dwell: 0.0, amplifier: None, brake: None }
+    }
+}
+
+impl Settings {
+    /// Every problem with the settings, naming the field (`reserve`, `dwell`, `supply_voltage`,
+    /// `brake_power`, `bus_capacitance`, `bus_voltage_max`).
+    pub fn check(&self) -> Vec<Issue> {
+        let mut out = Vec::new();
+        if !(self.reserve.is_finite() && (0.0..1.0).contains(&self.reserve)) {
+            out.push(Issue::new("reserve", format!("the reserve {} must be at least 0 and below 1 (0.2 = 20 %)", self.reserve)));
+        }
+        if !(self.dwell.is_finite() && (0.0..=MAX_DWELL).contains(&self.dwell)) {
+            out.push(Issue::new("dwell", format!("the dwell {} s must be between 0 and {MAX_DWELL} s", self.dwell)));
+        }
+        if let Some(a) = &self.amplifier {
+            if let Some(u) = a.u_supply {
+                if !(u.is_finite() && u > 0.0) {
+                    out.push(Issue::new("supply_voltage", format!("the supply voltage {u} V must be greater than 0")));
+                } else if a.u_min.is_some_and(|lo| u < lo) || a.u_max.is_some_and(|hi| u > hi) {
+                    let range = match (a.u_min, a.u_max) {
+                        (Some(lo), Some(hi)) => format!("{lo} V to {hi} V"),
+                        (Some(lo), None) => format!("at least {lo} V"),
+                        (None, Some(hi)) => format!("at most {hi} V"),
+                        (None, None) => String::new(),
+                    };
+                    out.push(Issue::new(
+                        "supply_voltage",
+                        format!("the supply voltage {u} V is outside amplifier \"{}\"'s range {range}", a.part.name),
+                    ));
+                }
+            }
+        }
+        match self.brake {
+            Some(Brake::Resistor { power }) if !(power.is_finite() && power > 0.0) => {
+                out.push(Issue::new("brake_power", format!("the brake resistor's power {power} W must be greater than 0")))
+            }
+            Some(Brake::Bus { capacitance, voltage_max }) => {
+                if !(capacitance.is_finite() && capacitance > 0.0) {
+                    out.push(Issue::new("bus_capacitance", format!("the DC-bus capacitance {capacitance} F must be greater than 0")));
+                }
+                let supply = self.amplifier.as_ref().and_then(|a| a.u_supply);
+                if !(voltage_max.is_finite() && voltage_max > 0.0) {
+                    out.push(Issue::new("bus_voltage_max", format!("the DC bus's highest voltage {voltage_max} V must be greater than 0")));
+                } else if let Some(u) = supply.filter(|u| voltage_max <= *u) {
+                    out.push(Issue::new(
+                        "bus_voltage_max",
+                        format!("the DC bus's highest voltage {voltage_max} V must be above the supply voltage {u} V"),
+                    ));
+                }
+            }
+            _ => {}
+        }
+        out
+    }
 }
 
 /// One driven (or undriven) joint's load over a motion.
@@ -102,18 +202,39 @@ pub struct PartRef {
     pub name: String,
 }
 
+/// What came of a check.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Status {
+    Pass,
+    Fail,
+    /// A value it needs is missing (named in `missing`) or not given by the maker.
+    NotEvaluated,
+}
+
 /// One check of a drive.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Check {
     pub check: &'static str,
     pub label: &'static str,
-    pub value: f64,
-    /// `None` for information (braking energy).
+    /// The rule, in words.
+    pub rule: &'static str,
+    /// `None` when not evaluated.
+    pub value: Option<f64>,
     pub limit: Option<f64>,
     pub unit: &'static str,
-    /// `(limit - value) / limit`; `None` without a limit.
+    /// Where the limit comes from: `motor "maxon RE 40": T_stall (datasheet)`, a setting, a rule.
+    pub source: Option<String>,
+    /// `(limit - value) / limit`.
     pub margin: Option<f64>,
+    pub status: Status,
+    /// `status != fail`.
     pub pass: bool,
+    /// Whether the margin keeps the user's reserve (`None`: not evaluated, or a check the
+    /// reserve does not apply to).
+    pub within_reserve: Option<bool>,
+    /// The values it lacks.
+    pub missing: Vec<String>,
     pub detail: String,
 }
 
@@ -133,21 +254,65 @@ pub struct Envelope {
     pub continuous_torque: Option<f64>,
     pub peak_torque: Option<f64>,
     pub max_speed: Option<f64>,
+    /// `U_supply / k`, with an amplifier's supply voltage.
     pub no_load_speed: Option<f64>,
 }
 
-/// A motor × gear combination that passes.
+/// Where an alternative stands.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Standing {
+    /// Every check evaluated and passed with the reserve.
+    PassesWithReserve,
+    /// Every check evaluated and passed, some margin below the reserve.
+    Passes,
+    /// Every evaluated check passes, but values are missing.
+    Incomplete,
+    Fails,
+}
+
+/// The check that limits a combination: its smallest margin (or the check it fails worst).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Limiting {
+    pub check: &'static str,
+    pub label: &'static str,
+    pub margin: f64,
+}
+
+/// A real motor × gear combination of the catalogue, ranked.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Alternative {
     pub motor: PartRef,
     pub gear: PartRef,
+    /// The gear's own catalogue ratio.
     pub ratio: f64,
-    /// The smallest margin of the evaluated checks.
-    pub margin: f64,
     /// 1 = best.
     pub rank: usize,
-    /// Datasheet values the combination lacks (those checks were not evaluated).
+    pub standing: Standing,
+    pub pass: bool,
+    /// The smallest margin of the evaluated limit checks.
+    pub margin: Option<f64>,
+    pub limiting: Option<Limiting>,
+    /// Checks failed.
+    pub failed: Vec<&'static str>,
+    /// Why it ranks where it does.
+    pub why: String,
+    /// The ranking's keys: rotor inertia (kg·m²), mass of motor and gear (kg) and the larger
+    /// price class, where known.
+    pub rotor_inertia: f64,
+    pub mass: Option<f64>,
+    pub price_class: Option<i64>,
+    /// Values the combination lacks (those checks were not evaluated).
     pub missing: Vec<String>,
+}
+
+/// The sources of the parts' values (the library instances' `source`).
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+pub struct Sources {
+    pub motor: String,
+    pub gear: String,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub amplifier: Option<String>,
 }
 
 /// The sizing of one drive: the contract's `drives[]` entry.
@@ -157,10 +322,13 @@ pub struct DriveSizing {
     pub motor: PartRef,
     pub gear: PartRef,
     pub ratio: f64,
-    /// Every evaluated pass/fail check passes.
+    /// No check fails.
     pub pass: bool,
+    /// Every check evaluated, and each capacity check keeps the reserve.
+    pub passes_with_reserve: bool,
     pub checks: Vec<Check>,
     pub missing: Vec<String>,
+    pub sources: Sources,
     pub operating_points: OperatingPoints,
     pub envelope: Envelope,
     pub alternatives: Vec<Alternative>,
@@ -170,7 +338,7 @@ pub struct DriveSizing {
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Undriven {
     pub joint: String,
-    /// max `|τ|` (N·m or N), RMS of `τ`, max `|q̇|` (rad/s or m/s).
+    /// max `|τ|` (N·m or N), RMS of `τ` over the duty cycle, max `|q̇|` (rad/s or m/s).
     pub peak_torque: f64,
     pub rms_torque: f64,
     pub max_speed: f64,
@@ -186,14 +354,20 @@ pub struct Undriven {
 pub fn effort_check(kind: JointKind, tau: &[f64], effort: f64) -> Check {
     let peak = tau.iter().fold(0.0f64, |m, t| m.max(t.abs()));
     let unit = if kind == JointKind::Prismatic { "N" } else { "N·m" };
+    let pass = peak <= effort;
     Check {
         check: "joint-effort",
         label: "Joint effort limit (source)",
-        value: peak,
+        rule: "max |τ| at the joint <= the effort limit the model's source states",
+        value: Some(peak),
         limit: Some(effort),
         unit,
+        source: Some("the joint's <limit effort> in the source".to_string()),
         margin: (effort > 0.0).then(|| (effort - peak) / effort),
-        pass: peak <= effort,
+        status: if pass { Status::Pass } else { Status::Fail },
+        pass,
+        within_reserve: None,
+        missing: Vec::new(),
         detail: format!("peak joint load {peak:.4} {unit} against the effort limit {effort} {unit} the source states"),
     }
 }
@@ -201,14 +375,24 @@ pub fn effort_check(kind: JointKind, tau: &[f64], effort: f64) -> Check {
 // ---------------------------------------------------------------------------------------------
 // The axis, checked once
 
-/// An axis with its integration weights and joint-side figures.
+/// An axis with its integration weights and joint-side figures over the duty cycle.
 struct Axis<'a> {
     load: AxisLoad<'a>,
-    /// Trapezoidal weights (s); their sum is the cycle time (1 for a single sample).
+    /// Trapezoidal weights (s); their sum is the motion's duration (1 per sample for a single
+    /// instant).
     w: Vec<f64>,
-    cycle: f64,
+    /// The motion's duration, the dwell and the period `motion + dwell`.
+    motion: f64,
+    dwell: f64,
+    period: f64,
+    /// Whether every step has the same length (the thermal model's decay is then one number).
+    uniform: bool,
+    /// The joint's holding torque during the dwell (the last sample's).
+    tau_hold: f64,
     peak_tau: (f64, usize),
     rms_tau: f64,
+    /// Harmonic Drive's average output torque, `None` when the joint never moves.
+    avg_tau: Option<f64>,
     max_qd: (f64, usize),
 }
 
@@ -220,7 +404,7 @@ fn kind_name(k: JointKind) -> &'static str {
 }
 
 impl<'a> Axis<'a> {
-    fn new(load: AxisLoad<'a>) -> Result<Axis<'a>, SizingError> {
+    fn new(load: AxisLoad<'a>, dwell: f64) -> Result<Axis<'a>, SizingError> {
         let bad = |reason: String| SizingError::BadLoad { joint: load.joint.to_string(), reason };
         let n = load.t.len();
         if n == 0 {
@@ -242,22 +426,37 @@ impl<'a> Axis<'a> {
         if !(load.load_inertia.is_finite() && load.load_inertia >= 0.0) {
             return Err(bad(format!("the load inertia {} must be a finite number of at least 0", load.load_inertia)));
         }
+        if !(dwell.is_finite() && dwell >= 0.0) {
+            return Err(bad(format!("the dwell {dwell} s must be a finite number of at least 0")));
+        }
         let mut w = vec![0.0; n];
         for i in 0..n.saturating_sub(1) {
             let h = 0.5 * (load.t[i + 1] - load.t[i]);
             w[i] += h;
             w[i + 1] += h;
         }
-        let mut cycle: f64 = w.iter().sum();
-        if cycle <= 0.0 {
+        let mut motion: f64 = w.iter().sum();
+        if motion <= 0.0 {
             // One sample, or all at one instant: plain averages.
             w.iter_mut().for_each(|x| *x = 1.0);
-            cycle = n as f64;
+            motion = n as f64;
         }
+        let h0 = if n > 1 { load.t[1] - load.t[0] } else { 0.0 };
+        let uniform = load.t.windows(2).all(|p| ((p[1] - p[0]) - h0).abs() <= 1e-9 * h0.abs().max(1e-300));
+        let period = motion + dwell;
+        let tau_hold = load.tau[n - 1];
         let peak_tau = argmax_abs(load.tau);
-        let rms_tau = (load.tau.iter().zip(&w).map(|(x, w)| x * x * w).sum::<f64>() / cycle).sqrt();
+        let sum2 = load.tau.iter().zip(&w).map(|(x, w)| x * x * w).sum::<f64>() + tau_hold * tau_hold * dwell;
+        let rms_tau = (sum2 / period).sqrt();
+        let (mut num, mut den) = (0.0, 0.0);
+        for ((qd, tau), w) in load.qd.iter().zip(load.tau).zip(&w) {
+            let v = qd.abs() * w;
+            num += v * tau.abs().powi(3);
+            den += v;
+        }
+        let avg_tau = (den > 0.0).then(|| (num / den).cbrt());
         let max_qd = argmax_abs(load.qd);
-        Ok(Axis { load, w, cycle, peak_tau, rms_tau, max_qd })
+        Ok(Axis { load, w, motion, dwell, period, uniform, tau_hold, peak_tau, rms_tau, avg_tau, max_qd })
     }
 
     fn at(&self, i: usize) -> String {
@@ -292,55 +491,146 @@ fn short(x: f64) -> String {
 // ---------------------------------------------------------------------------------------------
 // Reflection through the gear
 
-/// The motor-side figures of one combination over the whole motion.
+/// The motor-side load of one gear on one axis, per sample, without the motor's own terms:
+/// `T_m = base + J_motor·acc + d·speed`.
+struct GearSide {
+    n: f64,
+    /// Motor speed `n·q̇` (rad/s).
+    speed: Vec<f64>,
+    /// `n·q̈` (rad/s²).
+    acc: Vec<f64>,
+    /// Load torque at the motor plus the gear's input inertia term; `None` without `J_in`.
+    base: Option<Vec<f64>>,
+    /// The motor torque holding the last pose during the dwell (`τ_hold/(n·η)`).
+    hold: f64,
+    max_speed: (f64, usize),
+}
+
+impl GearSide {
+    fn new(axis: &Axis, gear: &Gear) -> GearSide {
+        let n = gear.transmission(gear.ratio);
+        let l = &axis.load;
+        let speed: Vec<f64> = l.qd.iter().map(|q| n * q).collect();
+        let acc: Vec<f64> = l.qdd.iter().map(|q| n * q).collect();
+        let base = gear.j_in.map(|j_in| {
+            (0..l.t.len())
+                .map(|i| {
+                    let (tau, qd) = (l.tau[i], l.qd[i]);
+                    // Efficiency in the direction of power flow: the motor pays the losses both ways.
+                    let load = if tau * qd >= 0.0 { tau / (n * gear.eta) } else { tau * gear.eta / n };
+                    load + j_in * acc[i]
+                })
+                .collect()
+        });
+        let max_speed = argmax_abs(&speed);
+        GearSide { n, speed, acc, base, hold: axis.tau_hold / (n * gear.eta), max_speed }
+    }
+
+    #[inline]
+    fn torque(&self, base: &[f64], motor: &Motor, i: usize) -> f64 {
+        base[i] + motor.j * self.acc[i] + motor.d * self.speed[i]
+    }
+}
+
+/// The motor-side figures of one combination over the duty cycle.
 #[derive(Clone, Copy, Debug, Default)]
 struct Stats {
     peak_t: (f64, usize),
+    /// ∫ T_m² dt over the period.
     sum_t2: f64,
-    max_w: (f64, usize),
     max_u: (f64, usize),
-    /// ∫ min(P, 0) dt (J, <= 0) and the most negative power (W).
-    e_neg: f64,
-    p_neg: (f64, usize),
+    /// Energy fed back (J, >= 0): in the largest braking interval, and per cycle.
+    e_interval: f64,
+    e_cycle: f64,
+    /// The sample where the largest braking interval ends.
+    e_at: usize,
+    /// Thermally equivalent torque (N·m), with the winding's time constant.
+    thermal: Option<f64>,
 }
 
-/// Motor speed and torque at sample `i` for transmission `n`.
-#[inline]
-fn motor_point(axis: &Axis, motor: &Motor, gear: &Gear, n: f64, i: usize) -> (f64, f64) {
-    let l = &axis.load;
-    let (tau, qd) = (l.tau[i], l.qd[i]);
-    let w = n * qd;
-    // Efficiency in the direction of power flow: the motor pays the losses both ways.
-    let load = if tau * qd >= 0.0 { tau / (n * gear.eta) } else { tau * gear.eta / n };
-    let inertia = (motor.j + gear.j_in.unwrap_or(0.0)) * n * l.qdd[i];
-    (w, load + inertia + motor.d * w)
-}
-
-fn reflect(axis: &Axis, motor: &Motor, gear: &Gear, n: f64) -> Stats {
+fn reflect(axis: &Axis, side: &GearSide, base: &[f64], motor: &Motor, t2: &mut Vec<f64>) -> Stats {
     let mut s = Stats::default();
-    let (r_k, k) = (motor.r / motor.k, motor.k);
+    let (r_k, k, r_k2) = (motor.r / motor.k, motor.k, motor.r / (motor.k * motor.k));
+    let mut run = 0.0;
+    let tau_th = motor.tau_th_w.filter(|x| *x > 0.0 && motor.t_nom.is_some());
+    t2.clear();
     for i in 0..axis.w.len() {
-        let (w, t) = motor_point(axis, motor, gear, n, i);
-        let (ta, wa, ua) = (t.abs(), w.abs(), (r_k * t + k * w).abs());
+        let t = side.torque(base, motor, i);
+        if tau_th.is_some() {
+            t2.push(t * t);
+        }
+        let w = side.speed[i];
+        let (ta, ua) = (t.abs(), (r_k * t + k * w).abs());
         if ta > s.peak_t.0 {
             s.peak_t = (ta, i);
-        }
-        if wa > s.max_w.0 {
-            s.max_w = (wa, i);
         }
         if ua > s.max_u.0 {
             s.max_u = (ua, i);
         }
         s.sum_t2 += t * t * axis.w[i];
-        let p = t * w;
+        let p = t * w + r_k2 * t * t;
         if p < 0.0 {
-            s.e_neg += p * axis.w[i];
-            if p < s.p_neg.0 {
-                s.p_neg = (p, i);
+            run -= p * axis.w[i];
+            s.e_cycle -= p * axis.w[i];
+        } else if run > 0.0 {
+            if run > s.e_interval {
+                s.e_interval = run;
+                s.e_at = i;
             }
+            run = 0.0;
         }
     }
+    if run > s.e_interval {
+        s.e_interval = run;
+        s.e_at = axis.w.len() - 1;
+    }
+    if axis.dwell > 0.0 {
+        let h = side.hold;
+        if h.abs() > s.peak_t.0 {
+            s.peak_t = (h.abs(), axis.w.len() - 1);
+        }
+        if (r_k * h).abs() > s.max_u.0 {
+            s.max_u = ((r_k * h).abs(), axis.w.len() - 1);
+        }
+        s.sum_t2 += h * h * axis.dwell;
+    }
+    if let Some(tau) = tau_th {
+        s.thermal = Some(thermal(axis, side.hold, t2, tau));
+    }
     s
+}
+
+/// The winding's temperature rise as a first-order lag of `T_m²` (`τ_w·θ' = T_m² - θ`, `T_m²`
+/// linear between samples' mean over each step), in the periodic steady state of the duty
+/// cycle: `sqrt(max θ)`, the torque that would heat the winding as much if held constant.
+/// `t2` holds `T_m²` per sample.
+fn thermal(axis: &Axis, hold: f64, t2: &[f64], tau: f64) -> f64 {
+    let t = axis.load.t;
+    let n = t2.len();
+    let decay = |h: f64| (-h / tau).exp();
+    let a_uniform = if n > 1 { decay(t[1] - t[0]) } else { 1.0 };
+    let step = |i: usize| if axis.uniform { a_uniform } else { decay(t[i + 1] - t[i]) };
+    let a_dwell = decay(axis.dwell);
+    // One period from θ = 0; the response is linear in the start value, so the periodic start
+    // is θ_0 = y(P) / (1 - e^(-P/τ)).
+    let mut y = 0.0;
+    for i in 0..n - 1 {
+        let a = step(i);
+        y = a * y + (1.0 - a) * 0.5 * (t2[i] + t2[i + 1]);
+    }
+    y = a_dwell * y + (1.0 - a_dwell) * hold * hold;
+    let whole = decay(axis.period);
+    let theta0 = if whole < 1.0 { y / (1.0 - whole) } else { y };
+    // The cycle again from θ_0, keeping the largest θ (during the dwell θ moves monotonically
+    // towards the holding torque's square, so its ends bound it).
+    let mut x = theta0;
+    let mut max = x;
+    for i in 0..n - 1 {
+        let a = step(i);
+        x = a * x + (1.0 - a) * 0.5 * (t2[i] + t2[i + 1]);
+        max = max.max(x);
+    }
+    max.max(0.0).sqrt()
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -351,152 +641,410 @@ struct Outcome {
     missing: Vec<String>,
 }
 
+/// Rules, as the `rule` field states them.
+mod rule {
+    pub const PEAK: &str =
+        "max |T_m| <= the motor's short-time torque limit T_peak, else its stall torque T_stall (same rule for every motor class)";
+    pub const RMS: &str = "sqrt(∫T_m² dt / T_cycle) over the duty cycle (motion + dwell holding the last pose) <= T_nom";
+    pub const THERMAL: &str =
+        "sqrt(max θ), θ the winding's first-order response τ_w·θ' = T_m² - θ in the periodic steady state of the duty cycle, <= T_nom";
+    pub const SPEED: &str = "max |ω_m| <= the motor's maximum permissible speed w_max";
+    pub const VOLTAGE: &str = "max |R·T_m/k + k·ω_m| <= the supply voltage set for the amplifier";
+    pub const PEAK_CURRENT: &str = "max |T_m/k| <= the amplifier's peak output current I_peak";
+    pub const RMS_CURRENT: &str = "RMS of T_m/k over the duty cycle <= the amplifier's continuous output current I_cont";
+    pub const GEAR_SPEED: &str = "max |ω_m| <= the gear's maximum input speed w_in_max";
+    pub const GEAR_PEAK: &str = "max |τ| at the output <= the gear's repeated-peak limit T_peak (screw: axial force F_peak)";
+    pub const GEAR_RMS: &str = "RMS of τ over the duty cycle <= the gear's rated (continuous) output torque T_rated";
+    pub const GEAR_AVG: &str = "(Σ|q̇|·|τ|³·Δt / Σ|q̇|·Δt)^(1/3) <= the gear's limit for average torque T_avg_max, where given";
+    pub const INERTIA: &str =
+        "(J_load/n² + J_gear,in) / J_motor <= 10: the gear's input inertia counted on the load side; the reserve does not apply";
+    pub const BRAKING: &str = "DC bus: the largest energy fed back in one braking interval <= C·(U_max² - U_supply²)/2; brake resistor: energy fed back per cycle / T_cycle <= its continuous power";
+}
+
+/// What a check needs and what it found.
+struct Spec {
+    check: &'static str,
+    label: &'static str,
+    rule: &'static str,
+    unit: &'static str,
+    /// Whether the user's reserve applies.
+    reserve: bool,
+}
+
 impl Outcome {
     fn pass(&self) -> bool {
         self.checks.iter().all(|c| c.pass)
     }
 
-    fn min_margin(&self) -> f64 {
-        self.checks.iter().filter_map(|c| c.margin).fold(f64::INFINITY, f64::min)
+    fn with_reserve(&self) -> bool {
+        self.missing.is_empty() && self.checks.iter().all(|c| c.pass && c.within_reserve != Some(false))
     }
 
+    /// The limiting check: the one failed worst, else the smallest margin.
+    fn limiting(&self) -> Option<Limiting> {
+        self.checks.iter().filter_map(|c| c.margin.map(|m| (c, m))).min_by(|a, b| a.1.total_cmp(&b.1)).map(|(c, m)| Limiting {
+            check: c.check,
+            label: c.label,
+            margin: m,
+        })
+    }
+
+    fn need(&mut self, names: &[&str]) {
+        for n in names {
+            if !self.missing.iter().any(|m| m == n) {
+                self.missing.push(n.to_string());
+            }
+        }
+    }
+
+    fn not_evaluated(&mut self, spec: Spec, missing: &[&str], detail: String) {
+        self.need(missing);
+        self.checks.push(Check {
+            check: spec.check,
+            label: spec.label,
+            rule: spec.rule,
+            value: None,
+            limit: None,
+            unit: spec.unit,
+            source: None,
+            margin: None,
+            status: Status::NotEvaluated,
+            pass: true,
+            within_reserve: None,
+            missing: missing.iter().map(|m| m.to_string()).collect(),
+            detail,
+        });
+    }
+
+    /// A check of `value` against `limit` (from `source`), or not evaluated with what is
+    /// missing.
     #[allow(clippy::too_many_arguments)]
     fn limit(
         &mut self,
-        check: &'static str,
-        label: &'static str,
-        value: f64,
+        spec: Spec,
+        value: Option<f64>,
         limit: Option<f64>,
-        missing: &str,
-        unit: &'static str,
+        source: impl FnOnce() -> String,
+        missing: &[&str],
+        reserve: f64,
         detail: String,
     ) {
-        match limit {
-            Some(limit) => {
-                let margin = if limit > 0.0 {
-                    (limit - value) / limit
-                } else if value > 0.0 {
-                    f64::NEG_INFINITY
-                } else {
-                    0.0
-                };
-                // An infinite margin cannot be written as JSON: clamp to the worst finite one.
-                let margin = margin.max(-f64::MAX);
-                self.checks.push(Check {
-                    check,
-                    label,
-                    value,
-                    limit: Some(limit),
-                    unit,
-                    margin: Some(margin),
-                    pass: value <= limit,
-                    detail,
-                });
-            }
-            None => self.missing.push(missing.to_string()),
-        }
+        let (Some(value), Some(limit)) = (value, limit) else {
+            let missing: Vec<&str> = missing.to_vec();
+            self.not_evaluated(spec, &missing, detail);
+            return;
+        };
+        let margin = if limit > 0.0 {
+            (limit - value) / limit
+        } else if value > 0.0 {
+            f64::NEG_INFINITY
+        } else {
+            0.0
+        };
+        // An infinite margin cannot be written as JSON: clamp to the worst finite one.
+        let margin = margin.max(-f64::MAX);
+        let pass = value <= limit;
+        self.checks.push(Check {
+            check: spec.check,
+            label: spec.label,
+            rule: spec.rule,
+            value: Some(value),
+            limit: Some(limit),
+            unit: spec.unit,
+            source: Some(source()),
+            margin: Some(margin),
+            status: if pass { Status::Pass } else { Status::Fail },
+            pass,
+            within_reserve: spec.reserve.then_some(pass && margin >= reserve),
+            missing: Vec::new(),
+            detail,
+        });
     }
 }
 
-fn evaluate(axis: &Axis, motor: &Motor, gear: &Gear, ratio: f64) -> Outcome {
-    let n = gear.transmission(ratio);
-    let s = reflect(axis, motor, gear, n);
-    let mut o = Outcome { checks: Vec::with_capacity(9), missing: Vec::new() };
+fn of(slot: &str, name: &str, param: &str) -> String {
+    format!("{slot} \"{name}\": {param} (datasheet)")
+}
+
+/// Evaluates every check of one combination (the gear at its own ratio, `side` made for it).
+fn evaluate(axis: &Axis, side: &GearSide, motor: &Motor, gear: &Gear, settings: &Settings, scratch: &mut Vec<f64>) -> Outcome {
+    let mut o = Outcome { checks: Vec::with_capacity(14), missing: Vec::new() };
+    let reserve = settings.reserve;
+    let stats = side.base.as_deref().map(|b| reflect(axis, side, b, motor, scratch));
+    let no_j_in: &[&str] = &["gear.J_in"];
+    let (mname, gname) = (motor.part.name.as_str(), gear.part.name.as_str());
+    let without_j_in = || "not evaluated: the motor torque includes the gear's input inertia, which the library lacks".to_string();
     let (out_unit, out_what) = match gear.lead {
         Some(_) => ("N", "force"),
         None => ("N.m", "torque"),
     };
 
+    // Motor torque.
     let peak = motor.peak_rule();
-    let peak_detail = match peak {
-        Some(PeakRule::Datasheet(_)) => format!("{}; limit: datasheet T_peak", axis.at(s.peak_t.1)),
-        Some(PeakRule::CurrentLimit(_)) => {
-            format!("{}; limit: k·I_max, the generated drive's current limit (no datasheet T_peak)", axis.at(s.peak_t.1))
-        }
-        None => String::new(),
+    let spec = Spec { check: "peak_torque", label: "Peak motor torque", rule: rule::PEAK, unit: "N.m", reserve: true };
+    match (&stats, peak) {
+        (None, _) => o.not_evaluated(spec, no_j_in, without_j_in()),
+        (Some(s), peak) => o.limit(
+            spec,
+            Some(s.peak_t.0),
+            peak.map(PeakRule::value),
+            || of("motor", mname, peak.map_or("", PeakRule::parameter)),
+            &["motor.T_peak or motor.T_stall"],
+            reserve,
+            match peak {
+                Some(PeakRule::ShortTime(_)) => format!("{}; limit: the maker's short-time torque limit T_peak", axis.at(s.peak_t.1)),
+                Some(PeakRule::Stall(_)) => {
+                    format!("{}; limit: the stall torque T_stall (the maker states no short-time limit)", axis.at(s.peak_t.1))
+                }
+                None => "the library has neither T_peak nor T_stall for the motor".to_string(),
+            },
+        ),
+    }
+    let duty = if axis.dwell > 0.0 {
+        format!("over the duty cycle of {} s (motion {} s + dwell {} s)", short(axis.period), short(axis.motion), short(axis.dwell))
+    } else {
+        format!("over the motion of {} s, repeated without dwell", short(axis.motion))
     };
-    o.limit("peak_torque", "Peak motor torque", s.peak_t.0, peak.map(PeakRule::value), "motor.T_peak", "N.m", peak_detail);
-    let rms = (s.sum_t2 / axis.cycle).sqrt();
+    let spec = Spec { check: "rms_torque", label: "RMS motor torque", rule: rule::RMS, unit: "N.m", reserve: true };
+    match &stats {
+        None => o.not_evaluated(spec, no_j_in, without_j_in()),
+        Some(s) => o.limit(
+            spec,
+            Some((s.sum_t2 / axis.period).sqrt()),
+            motor.t_nom,
+            || of("motor", mname, "T_nom"),
+            &["motor.T_nom"],
+            reserve,
+            format!("{duty}; limit: nominal (continuous) torque"),
+        ),
+    }
+    let spec = Spec { check: "thermal_torque", label: "Thermal torque (winding)", rule: rule::THERMAL, unit: "N.m", reserve: true };
+    match (&stats, motor.tau_th_w) {
+        (None, _) => o.not_evaluated(spec, no_j_in, without_j_in()),
+        (Some(_), None) => o.not_evaluated(spec, &[], "the maker gives no thermal time constant of the winding (tau_th_w)".to_string()),
+        (Some(s), Some(tau)) => o.limit(
+            spec,
+            s.thermal,
+            motor.t_nom,
+            || of("motor", mname, "T_nom"),
+            &["motor.T_nom"],
+            reserve,
+            format!("{duty}; winding time constant {} s", short(tau)),
+        ),
+    }
     o.limit(
-        "rms_torque",
-        "RMS motor torque",
-        rms,
-        motor.t_nom,
-        "motor.T_nom",
-        "N.m",
-        format!("over the cycle of {} s; limit: nominal (continuous) torque", short(axis.cycle)),
+        Spec { check: "motor_speed", label: "Maximum motor speed", rule: rule::SPEED, unit: "rad/s", reserve: true },
+        Some(side.max_speed.0),
+        motor.w_max,
+        || of("motor", mname, "w_max"),
+        &["motor.w_max"],
+        reserve,
+        axis.at(side.max_speed.1),
     );
-    o.limit("motor_speed", "Maximum motor speed", s.max_w.0, motor.w_max, "motor.w_max", "rad/s", axis.at(s.max_w.1));
-    o.limit("voltage", "Motor voltage U = R·T/k + k·ω", s.max_u.0, motor.v_max, "motor.V_max", "V", axis.at(s.max_u.1));
-    o.limit("gear_input_speed", "Gear input speed", s.max_w.0, gear.w_in_max, "gear.w_in_max", "rad/s", axis.at(s.max_w.1));
+
+    // The amplifier.
+    let amp = settings.amplifier.as_ref();
+    let aname = amp.map_or("", |a| a.part.name.as_str());
+    let supply = amp.and_then(|a| a.u_supply);
+    let spec = Spec { check: "voltage", label: "Motor voltage U = R·I + k·ω", rule: rule::VOLTAGE, unit: "V", reserve: true };
+    match (&stats, amp) {
+        (None, _) => o.not_evaluated(spec, no_j_in, without_j_in()),
+        (Some(_), None) => o.not_evaluated(spec, &["amplifier"], "no amplifier set".to_string()),
+        (Some(s), Some(_)) => o.limit(
+            spec,
+            Some(s.max_u.0),
+            supply,
+            || format!("setting supply_voltage (amplifier \"{aname}\")"),
+            &["supply_voltage"],
+            reserve,
+            axis.at(s.max_u.1),
+        ),
+    }
+    for (check, label, r, value, limit, param) in [
+        (
+            "peak_current",
+            "Peak motor current",
+            rule::PEAK_CURRENT,
+            stats.map(|s| s.peak_t.0 / motor.k),
+            amp.and_then(|a| a.i_peak),
+            "I_peak",
+        ),
+        (
+            "rms_current",
+            "RMS motor current",
+            rule::RMS_CURRENT,
+            stats.map(|s| (s.sum_t2 / axis.period).sqrt() / motor.k),
+            amp.and_then(|a| a.i_cont),
+            "I_cont",
+        ),
+    ] {
+        let spec = Spec { check, label, rule: r, unit: "A", reserve: true };
+        match (&stats, amp) {
+            (None, _) => o.not_evaluated(spec, no_j_in, without_j_in()),
+            (Some(_), None) => o.not_evaluated(spec, &["amplifier"], "no amplifier set".to_string()),
+            (Some(_), Some(_)) => {
+                let missing = format!("amplifier.{param}");
+                o.limit(
+                    spec,
+                    value,
+                    limit,
+                    || of("amplifier", aname, param),
+                    &[missing.as_str()],
+                    reserve,
+                    format!("I = T_m/k, k = {} N·m/A", short(motor.k)),
+                )
+            }
+        }
+    }
+
+    // The gear.
+    o.limit(
+        Spec { check: "gear_input_speed", label: "Gear input speed", rule: rule::GEAR_SPEED, unit: "rad/s", reserve: true },
+        Some(side.max_speed.0),
+        gear.w_in_max,
+        || of("gear", gname, "w_in_max"),
+        &["gear.w_in_max"],
+        reserve,
+        axis.at(side.max_speed.1),
+    );
     let missing_peak = format!("gear.{}", gear.out_peak_name());
     o.limit(
-        "gear_peak_torque",
-        if gear.lead.is_some() { "Peak axial force" } else { "Peak gear output torque" },
-        axis.peak_tau.0,
+        Spec {
+            check: "gear_peak_torque",
+            label: if gear.lead.is_some() { "Peak axial force" } else { "Peak gear output torque" },
+            rule: rule::GEAR_PEAK,
+            unit: out_unit,
+            reserve: true,
+        },
+        Some(axis.peak_tau.0),
         gear.out_peak,
-        &missing_peak,
-        out_unit,
+        || of("gear", gname, gear.out_peak_name()),
+        &[missing_peak.as_str()],
+        reserve,
         format!("{}; output {out_what} = joint {out_what}", axis.at(axis.peak_tau.1)),
     );
     if gear.lead.is_none() {
         o.limit(
-            "gear_rms_torque",
-            "RMS gear output torque",
-            axis.rms_tau,
+            Spec { check: "gear_rms_torque", label: "RMS gear output torque", rule: rule::GEAR_RMS, unit: "N.m", reserve: true },
+            Some(axis.rms_tau),
             gear.t_rated,
-            "gear.T_rated",
-            "N.m",
-            "limit: rated (continuous) output torque".to_string(),
+            || of("gear", gname, "T_rated"),
+            &["gear.T_rated"],
+            reserve,
+            format!("{duty}; limit: rated (continuous) output torque"),
         );
+        let spec = Spec { check: "gear_avg_torque", label: "Average gear output torque", rule: rule::GEAR_AVG, unit: "N.m", reserve: true };
+        match (gear.t_avg_max, axis.avg_tau) {
+            (None, _) => o.not_evaluated(spec, &[], "the maker gives no limit for the average torque (T_avg_max)".to_string()),
+            (Some(_), None) => o.not_evaluated(spec, &[], "the joint never moves: no average torque".to_string()),
+            (Some(lim), Some(v)) => o.limit(
+                spec,
+                Some(v),
+                Some(lim),
+                || of("gear", gname, "T_avg_max"),
+                &[],
+                reserve,
+                "weighted by the output speed".to_string(),
+            ),
+        }
     }
-    let reflected = n * n * motor.j;
-    let ratio_value = if reflected > 0.0 { axis.load.load_inertia / reflected } else { f64::MAX };
-    let quality = if ratio_value <= INERTIA_RATIO_GOOD {
-        "good (≤ 3)"
-    } else if ratio_value <= 5.0 {
-        "common (3–5)"
-    } else if ratio_value <= INERTIA_RATIO_LIMIT {
-        "needs stiff mechanics (5–10)"
-    } else {
-        "risky (> 10)"
+    if gear.ratio != gear.catalog_ratio {
+        o.need(&["gear ratings at the overridden ratio"]);
+    }
+
+    // Inertia ratio, the gear's input inertia on the load side.
+    let spec = Spec {
+        check: "inertia_ratio",
+        label: "Inertia ratio (J_load/n² + J_gear,in) / J_motor",
+        rule: rule::INERTIA,
+        unit: "1",
+        reserve: false,
     };
-    o.limit(
-        "inertia_ratio",
-        "Inertia ratio J_load / (n²·J_motor)",
-        ratio_value,
-        Some(INERTIA_RATIO_LIMIT),
-        "",
-        "1",
-        format!("{quality}; J_load = max M_jj over the motion"),
-    );
-    let braking = -s.e_neg;
-    o.checks.push(Check {
-        check: "braking_energy",
-        label: "Braking energy (motor shaft)",
-        value: braking,
-        limit: None,
-        unit: "J",
-        margin: None,
-        pass: true,
-        detail: if braking > 0.0 {
-            format!(
-                "the load drives the motor back; peak braking power {} W {}: needs a braking resistor or regeneration",
-                short(-s.p_neg.0),
-                axis.at(s.p_neg.1)
-            )
-        } else {
-            "the motor never brakes".to_string()
+    match gear.j_in {
+        None => o.not_evaluated(spec, no_j_in, "the gear's input inertia belongs to the load side; the library lacks it".to_string()),
+        Some(j_in) => {
+            let n = side.n;
+            let value = if motor.j > 0.0 { (axis.load.load_inertia / (n * n) + j_in) / motor.j } else { f64::MAX };
+            let quality = if value <= INERTIA_RATIO_GOOD {
+                "good (≤ 3)"
+            } else if value <= 5.0 {
+                "common (3–5)"
+            } else if value <= INERTIA_RATIO_LIMIT {
+                "needs stiff mechanics (5–10)"
+            } else {
+                "risky (> 10)"
+            };
+            o.limit(
+                spec,
+                Some(value),
+                Some(INERTIA_RATIO_LIMIT),
+                || "rule of thumb: ≤ 3 good, 3–5 common, 5–10 needs stiff mechanics, > 10 risky".to_string(),
+                &[],
+                reserve,
+                format!("{quality}; J_load = max M_jj over the motion; convention: the gear's input inertia on the load side"),
+            );
+        }
+    }
+
+    // Braking.
+    let spec = Spec { check: "braking", label: "Braking energy", rule: rule::BRAKING, unit: "J", reserve: true };
+    match &stats {
+        None => o.not_evaluated(spec, no_j_in, without_j_in()),
+        Some(s) if s.e_cycle <= 0.0 => o.checks.push(Check {
+            check: spec.check,
+            label: spec.label,
+            rule: spec.rule,
+            value: Some(0.0),
+            limit: None,
+            unit: spec.unit,
+            source: None,
+            margin: None,
+            status: Status::Pass,
+            pass: true,
+            within_reserve: None,
+            missing: Vec::new(),
+            detail: "the motor never feeds energy back: no brake resistor or bus capacity needed".to_string(),
+        }),
+        Some(s) => match settings.brake {
+            None => o.not_evaluated(
+                spec,
+                &["brake (resistor power or DC-bus capacitance)"],
+                format!(
+                    "the motor feeds {} J back per cycle ({} J in the largest braking interval)",
+                    short(s.e_cycle),
+                    short(s.e_interval)
+                ),
+            ),
+            Some(Brake::Bus { capacitance, voltage_max }) => o.limit(
+                Spec { label: "Braking energy per interval (DC bus)", ..spec },
+                Some(s.e_interval),
+                supply.map(|u| 0.5 * capacitance * (voltage_max * voltage_max - u * u)),
+                || format!("settings bus_capacitance {capacitance} F, bus_voltage_max {voltage_max} V, supply_voltage"),
+                &[if amp.is_none() { "amplifier" } else { "supply_voltage" }],
+                reserve,
+                format!("the largest braking interval ends {}; {} J per cycle", axis.at(s.e_at), short(s.e_cycle)),
+            ),
+            Some(Brake::Resistor { power }) => o.limit(
+                Spec { label: "Mean braking power (brake resistor)", unit: "W", ..spec },
+                Some(s.e_cycle / axis.period),
+                Some(power),
+                || format!("setting brake_power {power} W"),
+                &[],
+                reserve,
+                format!("{} J fed back per cycle {duty}", short(s.e_cycle)),
+            ),
         },
-    });
+    }
     o
 }
 
 /// Keeps at most [`MAX_POINTS`] samples: the samples are cut into buckets and each bucket keeps
-/// its smallest and largest torque and speed, so every extreme of the cycle stays.
-fn operating_points(axis: &Axis, motor: &Motor, gear: &Gear, n: f64) -> OperatingPoints {
+/// its smallest and largest torque and speed, so every extreme of the cycle stays. Empty when
+/// the motor torque cannot be computed (no gear `J_in`).
+fn operating_points(axis: &Axis, side: &GearSide, motor: &Motor) -> OperatingPoints {
+    let Some(base) = side.base.as_deref() else { return OperatingPoints::default() };
     let len = axis.w.len();
-    let points: Vec<(f64, f64)> = (0..len).map(|i| motor_point(axis, motor, gear, n, i)).collect();
+    let points: Vec<(f64, f64)> = (0..len).map(|i| (side.speed[i], side.torque(base, motor, i))).collect();
     let mut keep: Vec<usize> = Vec::new();
     if len <= MAX_POINTS {
         keep.extend(0..len);
@@ -548,14 +1096,23 @@ fn check_fit(axis: &Axis, gear: &Gear) -> Result<(), SizingError> {
 // ---------------------------------------------------------------------------------------------
 // Public entry points
 
-/// Sizes the drive of one joint (motor and gear with the drive's overrides applied) and, with a
-/// catalog, ranks the `top` best alternatives of the library for the same joint.
-pub fn size_drive(load: AxisLoad, motor: &Motor, gear: &Gear, catalog: Option<&Catalog>, top: usize) -> Result<DriveSizing, SizingError> {
-    let axis = Axis::new(load)?;
+/// Sizes the drive of one joint (motor and gear with the drive's overrides applied) under the
+/// user's settings and, with a catalog, ranks the `top` best real combinations of the library
+/// for the same joint.
+pub fn size_drive(
+    load: AxisLoad,
+    motor: &Motor,
+    gear: &Gear,
+    catalog: Option<&Catalog>,
+    settings: &Settings,
+    top: usize,
+) -> Result<DriveSizing, SizingError> {
+    let axis = Axis::new(load, settings.dwell)?;
     check_fit(&axis, gear)?;
-    let o = evaluate(&axis, motor, gear, gear.ratio);
+    let side = GearSide::new(&axis, gear);
+    let o = evaluate(&axis, &side, motor, gear, settings, &mut Vec::new());
     let alternatives = match catalog {
-        Some(c) => rank_axis(&axis, c, top),
+        Some(c) => rank_axis(&axis, c, settings, top),
         None => Vec::new(),
     };
     Ok(DriveSizing {
@@ -564,12 +1121,18 @@ pub fn size_drive(load: AxisLoad, motor: &Motor, gear: &Gear, catalog: Option<&C
         gear: gear.part.clone(),
         ratio: gear.ratio,
         pass: o.pass(),
-        operating_points: operating_points(&axis, motor, gear, gear.transmission(gear.ratio)),
+        passes_with_reserve: o.with_reserve(),
+        operating_points: operating_points(&axis, &side, motor),
         envelope: Envelope {
             continuous_torque: motor.t_nom,
             peak_torque: motor.peak_rule().map(PeakRule::value),
             max_speed: motor.w_max,
-            no_load_speed: motor.no_load_speed(),
+            no_load_speed: settings.amplifier.as_ref().and_then(|a| a.u_supply).map(|u| u / motor.k),
+        },
+        sources: Sources {
+            motor: motor.source.clone(),
+            gear: gear.source.clone(),
+            amplifier: settings.amplifier.as_ref().map(|a| a.source.clone()),
         },
         checks: o.checks,
         missing: o.missing,
@@ -577,74 +1140,233 @@ pub fn size_drive(load: AxisLoad, motor: &Motor, gear: &Gear, catalog: Option<&C
     })
 }
 
-/// The `top` best motor × gear combinations of `catalog` for a joint (see the module doc for
-/// the order).
-pub fn rank(load: AxisLoad, catalog: &Catalog, top: usize) -> Result<Vec<Alternative>, SizingError> {
-    Ok(rank_axis(&Axis::new(load)?, catalog, top))
+/// The `top` best real motor × gear combinations of `catalog` for a joint (see the module doc
+/// for the order).
+pub fn rank(load: AxisLoad, catalog: &Catalog, settings: &Settings, top: usize) -> Result<Vec<Alternative>, SizingError> {
+    Ok(rank_axis(&Axis::new(load, settings.dwell)?, catalog, settings, top))
 }
 
-/// The ratios tried for a gear: its own, and the standard ones when the ratio is editable
-/// (same sign as its own, within the parameter's limits).
-pub fn ratios(gear: &Gear) -> Vec<f64> {
-    let mut out = vec![gear.ratio];
-    if gear.ratio_editable {
-        let sign = gear.ratio.signum();
-        for r in STANDARD_RATIOS.iter().map(|r| r * sign) {
-            let inside = gear.ratio_min.is_none_or(|lo| r >= lo) && gear.ratio_max.is_none_or(|hi| r <= hi);
-            if inside && r != gear.ratio {
-                out.push(r);
-            }
+fn ordinal(i: usize) -> String {
+    let suffix = match (i % 10, i % 100) {
+        (_, 11..=13) => "th",
+        (1, _) => "st",
+        (2, _) => "nd",
+        (3, _) => "rd",
+        _ => "th",
+    };
+    format!("{i}{suffix}")
+}
+
+/// The margin `(limit - value)/limit` as the checks write it.
+fn margin_of(value: f64, limit: f64) -> f64 {
+    if limit > 0.0 {
+        (limit - value) / limit
+    } else if value > 0.0 {
+        -f64::MAX
+    } else {
+        0.0
+    }
+}
+
+/// The smallest margin of the checks that need no pass over the samples (motor and gear input
+/// speed, the gear's output torques, the inertia ratio): an upper bound of the combination's
+/// smallest margin; below 0, the combination fails.
+fn cheap_margin(axis: &Axis, side: &GearSide, motor: &Motor, gear: &Gear) -> f64 {
+    let mut m = f64::INFINITY;
+    let mut check = |v: f64, l: Option<f64>| {
+        if let Some(l) = l {
+            m = m.min(margin_of(v, l));
+        }
+    };
+    check(side.max_speed.0, motor.w_max);
+    check(side.max_speed.0, gear.w_in_max);
+    check(axis.peak_tau.0, gear.out_peak);
+    if gear.lead.is_none() {
+        check(axis.rms_tau, gear.t_rated);
+        if let Some(v) = axis.avg_tau {
+            check(v, gear.t_avg_max);
         }
     }
-    out
+    if let Some(j_in) = gear.j_in {
+        let ratio = if motor.j > 0.0 { (axis.load.load_inertia / (side.n * side.n) + j_in) / motor.j } else { f64::MAX };
+        check(ratio, Some(INERTIA_RATIO_LIMIT));
+    }
+    m
 }
 
-fn rank_axis(axis: &Axis, catalog: &Catalog, top: usize) -> Vec<Alternative> {
+fn rank_axis<'c>(axis: &Axis, catalog: &'c Catalog, settings: &Settings, top: usize) -> Vec<Alternative> {
     struct Found<'c> {
         motor: &'c Motor,
         gear: &'c Gear,
-        ratio: f64,
-        margin: f64,
+        standing: Standing,
+        margin: Option<f64>,
+        limiting: Option<Limiting>,
+        failed: Vec<&'static str>,
+        mass: Option<f64>,
+        price: Option<i64>,
         missing: Vec<String>,
     }
+    // Known before unknown, then ascending.
+    fn known<T: PartialOrd>(a: Option<T>, b: Option<T>) -> std::cmp::Ordering {
+        match (a, b) {
+            (Some(x), Some(y)) => x.partial_cmp(&y).unwrap_or(std::cmp::Ordering::Equal),
+            (Some(_), None) => std::cmp::Ordering::Less,
+            (None, Some(_)) => std::cmp::Ordering::Greater,
+            (None, None) => std::cmp::Ordering::Equal,
+        }
+    }
+    // The order within a standing: the smallest first.
+    let smaller = |am: &Motor, ag: &Gear, bm: &Motor, bg: &Gear| {
+        let mass = |m: &Motor, g: &Gear| m.mass.zip(g.mass).map(|(a, b)| a + b);
+        let price = |m: &Motor, g: &Gear| m.price_class.zip(g.price_class).map(|(a, b)| a.max(b));
+        am.j.total_cmp(&bm.j)
+            .then_with(|| known(mass(am, ag), mass(bm, bg)))
+            .then_with(|| known(price(am, ag), price(bm, bg)))
+            .then_with(|| am.part.name.cmp(&bm.part.name))
+            .then_with(|| ag.part.name.cmp(&bg.part.name))
+    };
+    let gears: Vec<(&Gear, GearSide)> =
+        catalog.gears.iter().filter(|g| g.fits() == axis.load.kind).map(|g| (g, GearSide::new(axis, g))).collect();
+    let mut candidates: Vec<(usize, &Motor)> =
+        gears.iter().enumerate().flat_map(|(gi, (g, _))| catalog.motors.iter().filter(|m| g.mounts(m)).map(move |m| (gi, m))).collect();
+    candidates.sort_by(|a, b| smaller(a.1, gears[a.0].0, b.1, gears[b.0].0));
+    // Evaluated in that order: once `top` combinations pass with the reserve, every later one
+    // ranks after them. A combination that fails a check of speed, gear or inertia (cheap: no
+    // pass over the samples) is a failing one, evaluated only when fewer than `top` pass.
     let mut found: Vec<Found> = Vec::new();
-    for gear in catalog.gears.iter().filter(|g| g.fits() == axis.load.kind) {
-        for ratio in ratios(gear) {
-            for motor in &catalog.motors {
-                let o = evaluate(axis, motor, gear, ratio);
-                if o.pass() {
-                    found.push(Found { motor, gear, ratio, margin: o.min_margin(), missing: o.missing });
+    let mut deferred: Vec<(usize, &Motor, f64)> = Vec::new();
+    let mut scratch = Vec::new();
+    let mut keeps = 0;
+    let push = |gi: usize, motor: &'c Motor, found: &mut Vec<Found<'c>>, scratch: &mut Vec<f64>| -> Standing {
+        let (gear, side) = &gears[gi];
+        let o = evaluate(axis, side, motor, gear, settings, scratch);
+        let standing = if !o.pass() {
+            Standing::Fails
+        } else if !o.missing.is_empty() {
+            Standing::Incomplete
+        } else if o.with_reserve() {
+            Standing::PassesWithReserve
+        } else {
+            Standing::Passes
+        };
+        let limiting = o.limiting();
+        found.push(Found {
+            motor,
+            gear,
+            standing,
+            margin: limiting.as_ref().map(|l| l.margin),
+            failed: o.checks.iter().filter(|c| !c.pass).map(|c| c.check).collect(),
+            limiting,
+            mass: motor.mass.zip(gear.mass).map(|(a, b)| a + b),
+            price: motor.price_class.zip(gear.price_class).map(|(a, b)| a.max(b)),
+            missing: o.missing,
+        });
+        standing
+    };
+    for (gi, motor) in candidates {
+        if keeps >= top {
+            break;
+        }
+        let bound = cheap_margin(axis, &gears[gi].1, motor, gears[gi].0);
+        if bound < 0.0 {
+            deferred.push((gi, motor, bound));
+            continue;
+        }
+        if push(gi, motor, &mut found, &mut scratch) == Standing::PassesWithReserve {
+            keeps += 1;
+        }
+    }
+    // The failing ones fill what the others leave of `top`, closest first: those that fail a
+    // cheap check in the order of that check's margin (an upper bound of their smallest
+    // margin), until the next bound is below the margin of the last failing one needed.
+    let others = found.iter().filter(|f| f.standing != Standing::Fails).count();
+    if keeps < top && others < top {
+        let need = top - others;
+        deferred.sort_by(|a, b| b.2.total_cmp(&a.2));
+        for (gi, motor, bound) in deferred {
+            let mut fails: Vec<f64> =
+                found.iter().filter(|f| f.standing == Standing::Fails).map(|f| f.margin.unwrap_or(f64::NEG_INFINITY)).collect();
+            if fails.len() >= need {
+                fails.sort_by(|a, b| b.total_cmp(a));
+                if bound < fails[need - 1] {
+                    break;
                 }
             }
+            push(gi, motor, &mut found, &mut scratch);
         }
     }
     found.sort_by(|a, b| {
-        (!a.missing.is_empty())
-            .cmp(&!b.missing.is_empty())
-            .then(a.motor.j.total_cmp(&b.motor.j))
-            .then(b.margin.total_cmp(&a.margin))
-            .then_with(|| a.motor.part.name.cmp(&b.motor.part.name))
-            .then_with(|| a.gear.part.name.cmp(&b.gear.part.name))
-            .then(a.ratio.total_cmp(&b.ratio))
+        a.standing.cmp(&b.standing).then_with(|| {
+            if a.standing == Standing::Fails {
+                known(b.margin, a.margin).then_with(|| smaller(a.motor, a.gear, b.motor, b.gear))
+            } else if a.standing == Standing::Incomplete {
+                // The fewer values missing, the more the combination is known to pass.
+                a.missing.len().cmp(&b.missing.len()).then_with(|| smaller(a.motor, a.gear, b.motor, b.gear))
+            } else {
+                smaller(a.motor, a.gear, b.motor, b.gear)
+            }
+        })
     });
+    let reserve = (settings.reserve * 100.0).round();
+    let mut in_group = 0;
+    let mut group = None;
     found
         .into_iter()
         .take(top)
         .enumerate()
-        .map(|(i, f)| Alternative {
-            motor: f.motor.part.clone(),
-            gear: f.gear.part.clone(),
-            ratio: f.ratio,
-            margin: f.margin,
-            rank: i + 1,
-            missing: f.missing,
+        .map(|(i, f)| {
+            if group != Some(f.standing) {
+                group = Some(f.standing);
+                in_group = 0;
+            }
+            in_group += 1;
+            let limit = f.limiting.as_ref().map_or(String::new(), |l| format!("{} (margin {:.1} %)", l.label, l.margin * 100.0));
+            let keys = format!(
+                "rotor inertia {} kg·m², mass {}, price class {}",
+                short(f.motor.j),
+                f.mass.map_or("unknown".to_string(), |m| format!("{} kg", short(m))),
+                f.price.map_or("unknown".to_string(), |p| p.to_string())
+            );
+            let why = match f.standing {
+                Standing::PassesWithReserve => format!(
+                    "passes every check with the {reserve} % reserve; the {} smallest such combination ({keys}); limited by {limit}",
+                    ordinal(in_group)
+                ),
+                Standing::Passes => format!(
+                    "passes every check but not with the {reserve} % reserve: {limit}; after every combination that keeps it; the {} smallest of its kind ({keys})",
+                    ordinal(in_group)
+                ),
+                Standing::Incomplete => format!(
+                    "passes the checks it could evaluate, but {} missing: {}; after every complete passing combination ({keys}); limited by {limit}",
+                    if f.missing.len() == 1 { "one value is" } else { "values are" },
+                    f.missing.join(", ")
+                ),
+                Standing::Fails => format!("fails {}: after every passing combination, ordered by how close it comes; worst: {limit}", f.failed.join(", ")),
+            };
+            Alternative {
+                motor: f.motor.part.clone(),
+                gear: f.gear.part.clone(),
+                ratio: f.gear.ratio,
+                rank: i + 1,
+                standing: f.standing,
+                pass: f.standing != Standing::Fails,
+                margin: f.margin,
+                limiting: f.limiting,
+                failed: f.failed,
+                why,
+                rotor_inertia: f.motor.j,
+                mass: f.mass,
+                price_class: f.price,
+                missing: f.missing,
+            }
         })
         .collect()
 }
 
-/// What a joint without a drive asks of one: peak and RMS torque (or force), top speed.
-pub fn undriven(load: AxisLoad) -> Result<Undriven, SizingError> {
-    let axis = Axis::new(load)?;
+/// What a joint without a drive asks of one: peak and RMS torque (or force) over the duty
+/// cycle, top speed.
+pub fn undriven(load: AxisLoad, dwell: f64) -> Result<Undriven, SizingError> {
+    let axis = Axis::new(load, dwell)?;
     Ok(Undriven {
         joint: load.joint.to_string(),
         peak_torque: axis.peak_tau.0,

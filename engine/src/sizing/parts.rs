@@ -27,47 +27,72 @@ pub struct Motor {
     pub j: f64,
     /// Viscous friction of the rotor (N·m·s/rad).
     pub d: f64,
-    /// Supply voltage limit (V).
-    pub v_max: Option<f64>,
-    /// Current limit of the generated drive (A): `DCPermanentMagnet.I_max`.
-    pub i_max: Option<f64>,
-    /// Datasheet: nominal (continuous) torque, peak torque (N·m), maximum speed (rad/s).
+    /// Datasheet: nominal (continuous) torque, the maker's short-time (peak) torque limit, the
+    /// stall torque at the nominal voltage (N·m), maximum speed (rad/s).
     pub t_nom: Option<f64>,
     pub t_peak: Option<f64>,
+    pub t_stall: Option<f64>,
     pub w_max: Option<f64>,
+    /// Datasheet: thermal time constant of the winding (s).
+    pub tau_th_w: Option<f64>,
+    /// Datasheet: mass (kg), price class (1 cheapest), mounting code.
+    pub mass: Option<f64>,
+    pub price_class: Option<i64>,
+    pub mount: Option<String>,
+    /// The instance's `source` (where its values come from).
+    pub source: String,
 }
 
-/// Where the peak torque limit of a motor comes from.
+/// Where the peak torque limit of a motor comes from: the same rule for every motor class.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum PeakRule {
-    /// The datasheet's `T_peak`.
-    Datasheet(f64),
-    /// `k·I_max`: the most the generated drive's current loop lets the motor deliver.
-    CurrentLimit(f64),
+    /// The maker's short-time (peak) torque limit, `T_peak`.
+    ShortTime(f64),
+    /// Without one, the stall torque at the nominal voltage, `T_stall`: the most the motor
+    /// delivers at that voltage.
+    Stall(f64),
 }
 
 impl PeakRule {
     pub fn value(self) -> f64 {
         match self {
-            PeakRule::Datasheet(x) | PeakRule::CurrentLimit(x) => x,
+            PeakRule::ShortTime(x) | PeakRule::Stall(x) => x,
+        }
+    }
+
+    /// The datasheet parameter the limit is.
+    pub fn parameter(self) -> &'static str {
+        match self {
+            PeakRule::ShortTime(_) => "T_peak",
+            PeakRule::Stall(_) => "T_stall",
         }
     }
 }
 
 impl Motor {
-    /// The peak torque limit: the datasheet `T_peak` when given, else `k·I_max` (our DC class).
+    /// The peak torque limit: the datasheet `T_peak` when given, else `T_stall`; never a
+    /// current limit (`k·I_max` is the continuous current's torque).
     pub fn peak_rule(&self) -> Option<PeakRule> {
-        match (self.t_peak, self.i_max) {
-            (Some(t), _) => Some(PeakRule::Datasheet(t)),
-            (None, Some(i)) => Some(PeakRule::CurrentLimit(self.k * i)),
+        match (self.t_peak, self.t_stall) {
+            (Some(t), _) => Some(PeakRule::ShortTime(t)),
+            (None, Some(t)) => Some(PeakRule::Stall(t)),
             (None, None) => None,
         }
     }
+}
 
-    /// No-load speed at the supply voltage, `V_max / k` (rad/s).
-    pub fn no_load_speed(&self) -> Option<f64> {
-        self.v_max.map(|v| v / self.k)
-    }
+/// A drive amplifier: the user's supply voltage and the amplifier's datasheet currents.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Amplifier {
+    pub part: PartRef,
+    /// The supply (DC bus) voltage the user sets (V); checked against `U_min`/`U_max`.
+    pub u_supply: Option<f64>,
+    pub u_min: Option<f64>,
+    pub u_max: Option<f64>,
+    /// Datasheet: continuous and peak output current (A).
+    pub i_cont: Option<f64>,
+    pub i_peak: Option<f64>,
+    pub source: String,
 }
 
 /// A transmission between motor and joint: a rotary gear (revolute joints) or a lead screw
@@ -85,14 +110,23 @@ pub struct Gear {
     pub ratio_editable: bool,
     pub ratio_min: Option<f64>,
     pub ratio_max: Option<f64>,
+    /// The ratio of the library instance itself; its datasheet ratings hold at this ratio only.
+    pub catalog_ratio: f64,
     /// Datasheet: rated (continuous) output torque (N·m; rotary gears only).
     pub t_rated: Option<f64>,
+    /// Datasheet: limit for the average output torque (N·m), where the maker gives one.
+    pub t_avg_max: Option<f64>,
     /// Datasheet: repeated peak output torque (N·m), or for a screw its axial force limit (N).
     pub out_peak: Option<f64>,
     /// Datasheet: maximum input speed (rad/s).
     pub w_in_max: Option<f64>,
-    /// Datasheet: inertia referred to the input shaft (kg·m²); 0 when not given.
+    /// Datasheet: inertia referred to the input shaft (kg·m²); missing when not given (never 0).
     pub j_in: Option<f64>,
+    /// Datasheet: mass (kg), price class, the mounting codes of the motors it mounts on.
+    pub mass: Option<f64>,
+    pub price_class: Option<i64>,
+    pub motor_mounts: Option<Vec<String>>,
+    pub source: String,
 }
 
 impl Gear {
@@ -113,6 +147,16 @@ impl Gear {
         }
     }
 
+    /// Whether `motor` mounts on this gear: where the gear names the motors it mounts on
+    /// (`motor_mounts`), only a motor whose `mount` is one of them; else any motor.
+    pub fn mounts(&self, motor: &Motor) -> bool {
+        match (&self.motor_mounts, &motor.mount) {
+            (None, _) => true,
+            (Some(list), Some(m)) => list.iter().any(|x| x.eq_ignore_ascii_case(m.trim())),
+            (Some(_), None) => false,
+        }
+    }
+
     /// The name of the output limit parameter (`T_peak` or, for screws, `F_peak`).
     pub fn out_peak_name(&self) -> &'static str {
         if self.lead.is_some() {
@@ -125,6 +169,20 @@ impl Gear {
 
 fn real(values: &[(String, Value)], name: &str) -> Option<f64> {
     values.iter().find(|(n, _)| n == name).and_then(|(_, v)| v.as_f64())
+}
+
+fn integer(values: &[(String, Value)], name: &str) -> Option<i64> {
+    values.iter().find(|(n, _)| n == name).and_then(|(_, v)| match v {
+        Value::Integer(i) => Some(*i),
+        _ => None,
+    })
+}
+
+fn text(values: &[(String, Value)], name: &str) -> Option<String> {
+    values.iter().find(|(n, _)| n == name).and_then(|(_, v)| match v {
+        Value::String(s) if !s.trim().is_empty() => Some(s.trim().to_string()),
+        _ => None,
+    })
 }
 
 fn need(part: &PartRef, values: &[(String, Value)], name: &str) -> Result<f64, SizingError> {
@@ -160,11 +218,15 @@ pub fn motor(class: &Class, instance: &Instance, overrides: &[(String, Value)]) 
                 k,
                 j: need(&part, &v, "J")?,
                 d: real(&v, "d").unwrap_or(0.0),
-                v_max: real(&v, "V_max"),
-                i_max: real(&v, "I_max"),
                 t_nom: datasheet("T_nom"),
                 t_peak: datasheet("T_peak"),
+                t_stall: datasheet("T_stall"),
                 w_max: datasheet("w_max"),
+                tau_th_w: datasheet("tau_th_w"),
+                mass: datasheet("mass"),
+                price_class: integer(&v, "price_class"),
+                mount: text(&v, "mount"),
+                source: instance.source.clone(),
                 part,
             })
         }
@@ -186,11 +248,15 @@ pub fn motor(class: &Class, instance: &Instance, overrides: &[(String, Value)]) 
                 k,
                 j: need(&part, &v, "Jr")?,
                 d: 0.0,
-                v_max: Some(va),
-                i_max: None,
                 t_nom: datasheet("T_nom"),
                 t_peak: datasheet("T_peak"),
+                t_stall: datasheet("T_stall"),
                 w_max: datasheet("w_max"),
+                tau_th_w: datasheet("tau_th_w"),
+                mass: datasheet("mass"),
+                price_class: integer(&v, "price_class"),
+                mount: text(&v, "mount"),
+                source: instance.source.clone(),
                 part,
             })
         }
@@ -220,18 +286,50 @@ pub fn gear(class: &Class, instance: &Instance, overrides: &[(String, Value)]) -
         return Err(SizingError::BadPart { part: part.name, reason: "lead must not be 0".to_string() });
     }
     let rp = class.parameter("ratio");
-    let out_peak = if lead.is_some() { real(&v, "F_peak") } else { real(&v, "T_peak") };
+    // The catalogue's ratings, efficiency and inertia hold at the instance's own ratio: at a
+    // ratio a drive overrides, they are not known (named missing, never carried over).
+    let catalog_ratio =
+        library::resolved_values(class, instance, &[]).iter().find(|(n, _)| n == "ratio").and_then(|(_, v)| v.as_f64()).unwrap_or(ratio);
+    let rated = |name: &str| if ratio == catalog_ratio { real(&v, name) } else { None };
+    let out_peak = if lead.is_some() { rated("F_peak") } else { rated("T_peak") };
+    let motor_mounts = text(&v, "motor_mounts")
+        .map(|s| s.split(';').map(|x| x.trim().to_string()).filter(|x| !x.is_empty()).collect::<Vec<_>>())
+        .filter(|l| !l.is_empty());
     Ok(Gear {
         ratio,
+        catalog_ratio,
         eta,
         lead,
         ratio_editable: rp.is_some_and(|p| p.editable),
         ratio_min: rp.and_then(|p| p.min),
         ratio_max: rp.and_then(|p| p.max),
-        t_rated: if lead.is_some() { None } else { real(&v, "T_rated") },
+        t_rated: if lead.is_some() { None } else { rated("T_rated") },
+        t_avg_max: if lead.is_some() { None } else { rated("T_avg_max") },
         out_peak,
-        w_in_max: real(&v, "w_in_max"),
-        j_in: real(&v, "J_in"),
+        w_in_max: rated("w_in_max"),
+        j_in: rated("J_in"),
+        mass: real(&v, "mass"),
+        price_class: integer(&v, "price_class"),
+        motor_mounts,
+        source: instance.source.clone(),
+        part,
+    })
+}
+
+/// An amplifier from a library instance, with the supply voltage the user sets.
+pub fn amplifier(class: &Class, instance: &Instance, u_supply: Option<f64>) -> Result<Amplifier, SizingError> {
+    let part = PartRef { id: instance.id.clone(), name: instance.name.clone() };
+    if class.domain != "amplifier" {
+        return Err(SizingError::UnknownClass { part: part.name, class: class.modelica_class.clone(), slot: "amplifier" });
+    }
+    let v = library::resolved_values(class, instance, &[]);
+    Ok(Amplifier {
+        u_supply,
+        u_min: real(&v, "U_min"),
+        u_max: real(&v, "U_max"),
+        i_cont: real(&v, "I_cont"),
+        i_peak: real(&v, "I_peak"),
+        source: instance.source.clone(),
         part,
     })
 }

@@ -148,6 +148,7 @@ impl From<MotionError> for ApiError {
             }
             MotionError::CannotPlan { detail, errors } => ApiError::MotionInvalid { detail, errors },
             MotionError::OutOfRange(m) => ApiError::BadRequest(m),
+            MotionError::BadSettings(ref errors) => ApiError::Invalid { errors: errors.clone(), detail: e.to_string() },
             MotionError::Dynamics(_) => ApiError::Internal(anyhow::anyhow!(e.to_string())),
             MotionError::Export(x) => x.into(),
             MotionError::Drive(d) => d.into(),
@@ -327,8 +328,9 @@ mod tests {
         let p = ApiError::from(e).problem_json();
         assert_eq!((p["status"].as_u64(), p["type"].as_str()), (Some(422), Some("/problems/invalid")));
         assert!(p["detail"].as_str().is_some_and(|d| d.contains("x.zip")), "{p}");
-        let cases: [(ApiError, u64, &str); 5] = [
+        let cases: [(ApiError, u64, &str); 6] = [
             (MotionError::OutOfRange("rate".into()).into(), 400, "bad-request"),
+            (MotionError::BadSettings(vec![FieldError { field: "reserve".into(), message: "m".into() }]).into(), 422, "invalid"),
             (MotionError::CannotPlan { detail: "d".into(), errors: vec![] }.into(), 422, "motion-invalid"),
             (DriveError::InstanceGone { joint: "J".into(), instance: "i".into() }.into(), 409, "conflict"),
             (CollisionError::Corrupt("no CS1".into()).into(), 500, "internal"),

@@ -271,19 +271,23 @@ async fn trajectory(
     Ok(Json(view))
 }
 
+/// `?reserve=&dwell=&amplifier=&supply_voltage=&brake_power=&bus_capacitance=&bus_voltage_max=`
+/// (each optional; see `motions::SizingRequest`).
 async fn sizing(
     State(state): State<AppState>,
     Path((model_id, motion_id)): Path<(String, String)>,
+    Query(q): Query<motions::SizingRequest>,
 ) -> Result<Json<motions::SizingReport>, ApiError> {
     let m = find(&state, &model_id, &motion_id).await?;
+    let library = store::library::export(&state.store).await?;
+    let settings = motions::sizing_settings(&q, &library)?;
     let (version, k) = kinematic(&state, &model_id).await?;
     let edits = store::motions::limits(&state.store, &model_id).await?;
     let drives = motions::drive_parts(&state.store, &model_id).await?;
-    let library = store::library::export(&state.store).await?;
     let report = blocking(move || {
         let catalog = cad2mo_engine::sizing::Catalog::from_library(&library);
         let p = motions::plan_motion(&k, &edits, &m.spec)?;
-        Ok(motions::sizing(&k.mech, &k.gravity, version, &m.name, &p, &drives, &catalog)?)
+        Ok(motions::sizing(&k.mech, &k.gravity, version, &m.name, &p, &drives, &catalog, &settings)?)
     })
     .await?;
     Ok(Json(report))

@@ -64,6 +64,9 @@ pub enum MotionError {
     /// A request parameter out of range (the message names it and its bounds).
     #[error("{0}")]
     OutOfRange(String),
+    /// The sizing's settings are not usable (each problem names its field).
+    #[error("the sizing settings are not usable: {}", .0.iter().map(|e| format!("{}: {}", e.field, e.message)).collect::<Vec<_>>().join("; "))]
+    BadSettings(Vec<FieldError>),
     /// The inverse dynamics failed on a planned motion (not the user's fault).
     #[error("inverse dynamics: {0}")]
     Dynamics(String),
@@ -387,6 +390,126 @@ pub struct NotSized {
     pub problem: String,
 }
 
+/// The user's sizing settings as a request gives them (no HTTP here): a drive amplifier of the
+/// library with the supply voltage, the reserve, the dwell of the duty cycle, and a brake resistor
+/// or a DC bus.
+#[derive(Clone, Debug, Default, serde::Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct SizingRequest {
+    /// 0 to below 1; default [`cad2mo_engine::sizing::DEFAULT_RESERVE`].
+    pub reserve: Option<f64>,
+    /// Seconds between repetitions of the motion; default 0.
+    pub dwell: Option<f64>,
+    /// A library instance of domain `amplifier`.
+    pub amplifier: Option<String>,
+    /// The amplifier's supply (DC bus) voltage, V.
+    pub supply_voltage: Option<f64>,
+    /// A brake resistor's continuous power, W.
+    pub brake_power: Option<f64>,
+    /// The DC bus's capacitance (F) and highest voltage (V).
+    pub bus_capacitance: Option<f64>,
+    pub bus_voltage_max: Option<f64>,
+}
+
+/// The settings a sizing ran with, as the report states them.
+#[derive(Clone, Debug, Serialize)]
+pub struct SizingSettings {
+    pub reserve: f64,
+    pub dwell: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub amplifier: Option<AmplifierView>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub brake: Option<cad2mo_engine::sizing::Brake>,
+}
+
+/// The amplifier of a sizing: its datasheet values and the supply voltage set.
+#[derive(Clone, Debug, Serialize)]
+pub struct AmplifierView {
+    pub id: String,
+    pub name: String,
+    pub supply_voltage: Option<f64>,
+    pub u_min: Option<f64>,
+    pub u_max: Option<f64>,
+    pub i_cont: Option<f64>,
+    pub i_peak: Option<f64>,
+    pub source: String,
+}
+
+/// The request's settings against the library: every problem names its field (`reserve`,
+/// `amplifier`, `supply_voltage`, `brake_power`, `bus_capacitance`, `bus_voltage_max`).
+pub fn sizing_settings(
+    req: &SizingRequest,
+    library: &cad2mo_engine::library::Library,
+) -> Result<cad2mo_engine::sizing::Settings, MotionError> {
+    use cad2mo_engine::sizing::{Brake, Settings};
+    let mut errors: Vec<FieldError> = Vec::new();
+    let amplifier = match &req.amplifier {
+        None => {
+            if req.supply_voltage.is_some() {
+                errors
+                    .push(FieldError { field: "supply_voltage".into(), message: "a supply voltage needs an amplifier (amplifier)".into() });
+            }
+            None
+        }
+        Some(id) => {
+            let found = cad2mo_engine::library::parse_id(id)
+                .and_then(|id| library.instances.iter().find(|i| i.id == id))
+                .and_then(|i| library.class(&i.class_id).map(|c| (c, i)));
+            match found {
+                None => {
+                    errors.push(FieldError { field: "amplifier".into(), message: format!("no library instance has the id \"{id}\"") });
+                    None
+                }
+                Some((c, i)) => match cad2mo_engine::sizing::parts::amplifier(c, i, req.supply_voltage) {
+                    Ok(a) => Some(a),
+                    Err(_) => {
+                        errors.push(FieldError {
+                            field: "amplifier".into(),
+                            message: format!("\"{}\" is a {} of class \"{}\", not an amplifier", i.name, c.domain, c.name),
+                        });
+                        None
+                    }
+                },
+            }
+        }
+    };
+    let brake = match (req.brake_power, req.bus_capacitance, req.bus_voltage_max) {
+        (None, None, None) => None,
+        (Some(power), None, None) => Some(Brake::Resistor { power }),
+        (None, Some(capacitance), Some(voltage_max)) => Some(Brake::Bus { capacitance, voltage_max }),
+        (None, Some(_), None) => {
+            errors.push(FieldError {
+                field: "bus_voltage_max".into(),
+                message: "a DC-bus capacitance needs the bus's highest voltage".into(),
+            });
+            None
+        }
+        (None, None, Some(_)) => {
+            errors.push(FieldError { field: "bus_capacitance".into(), message: "the bus's highest voltage needs its capacitance".into() });
+            None
+        }
+        (Some(_), _, _) => {
+            errors.push(FieldError {
+                field: "brake_power".into(),
+                message: "give a brake resistor (brake_power) or a DC bus (bus_capacitance, bus_voltage_max), not both".into(),
+            });
+            None
+        }
+    };
+    let settings = Settings {
+        reserve: req.reserve.unwrap_or(cad2mo_engine::sizing::DEFAULT_RESERVE),
+        dwell: req.dwell.unwrap_or(0.0),
+        amplifier,
+        brake,
+    };
+    errors.extend(settings.check().into_iter().map(FieldError::from));
+    if errors.is_empty() {
+        Ok(settings)
+    } else {
+        Err(MotionError::BadSettings(errors))
+    }
+}
+
 /// The sizing report of one motion: every drive's checks and ranked alternatives, what the
 /// joints without a drive ask of one, and the drives that cannot be sized.
 #[derive(Clone, Debug, Serialize)]
@@ -395,6 +518,8 @@ pub struct SizingReport {
     pub version: i64,
     pub duration: f64,
     pub rate: f64,
+    /// The settings it ran with.
+    pub settings: SizingSettings,
     /// How the alternatives are ranked.
     pub ranking: &'static str,
     pub drives: Vec<cad2mo_engine::sizing::DriveSizing>,
@@ -404,7 +529,7 @@ pub struct SizingReport {
     pub orphaned: Vec<String>,
 }
 
-const RANKING: &str = "combinations that pass every evaluated check: those with every datasheet value first, then the smallest motor (rotor inertia ascending), then the largest minimum margin";
+const RANKING: &str = "real catalogue combinations only (each gear at its own catalogue ratio, motors that mount on the gear where the catalogue says so): first those passing every check with the reserve, then those passing without it, then those with missing values (the fewest missing first), then the failing ones; within each the smallest first (rotor inertia, then mass, then price class where known), failing ones by their smallest margin";
 
 fn kind_of(k: CoordKind) -> pipeline::back::modelica::mechatronics::JointKind {
     match k {
@@ -413,9 +538,10 @@ fn kind_of(k: CoordKind) -> pipeline::back::modelica::mechatronics::JointKind {
     }
 }
 
-/// Sizes every drive of a planned motion at [`SIZING_RATE`] against its motor and gear and ranks
-/// the catalog's alternatives; joints without a drive get their own load. Loops: only the
-/// driven joints carry torque.
+/// Sizes every drive of a planned motion at [`SIZING_RATE`] against its motor and gear under
+/// the user's settings and ranks the catalog's real combinations; joints without a drive get
+/// their own load. Loops: only the driven joints carry torque.
+#[allow(clippy::too_many_arguments)]
 pub fn sizing(
     mech: &Mechanism,
     gravity: &Vector3<f64>,
@@ -424,6 +550,7 @@ pub fn sizing(
     p: &Planned,
     drives: &[DriveParts],
     catalog: &cad2mo_engine::sizing::Catalog,
+    settings: &cad2mo_engine::sizing::Settings,
 ) -> Result<SizingReport, MotionError> {
     let samples = p.closed_samples(mech, SIZING_RATE).map_err(|i| invalid(&format!("motion \"{name}\" cannot be planned"), i))?;
     let (tau, inertia) = plan::inverse_dynamics(mech, &samples, gravity, 10).map_err(|e| MotionError::Dynamics(e.to_string()))?;
@@ -432,6 +559,21 @@ pub fn sizing(
         version,
         duration: p.duration,
         rate: SIZING_RATE,
+        settings: SizingSettings {
+            reserve: settings.reserve,
+            dwell: settings.dwell,
+            amplifier: settings.amplifier.as_ref().map(|a| AmplifierView {
+                id: a.part.id.clone(),
+                name: a.part.name.clone(),
+                supply_voltage: a.u_supply,
+                u_min: a.u_min,
+                u_max: a.u_max,
+                i_cont: a.i_cont,
+                i_peak: a.i_peak,
+                source: a.source.clone(),
+            }),
+            brake: settings.brake,
+        },
         ranking: RANKING,
         drives: Vec::new(),
         undriven: Vec::new(),
@@ -459,7 +601,7 @@ pub fn sizing(
         };
         let effort = mech.coordinates().get(i).and_then(|c| c.source_limits.as_ref()).and_then(|l| l.effort).filter(|e| *e > 0.0);
         let Some(d) = drives.iter().find(|d| d.joint == axis.name) else {
-            match cad2mo_engine::sizing::undriven(load) {
+            match cad2mo_engine::sizing::undriven(load, settings.dwell) {
                 Ok(mut u) => {
                     if let Some(e) = effort {
                         u.effort_limit = Some(e);
@@ -485,13 +627,15 @@ pub fn sizing(
             .and_then(|motor| {
                 let go = overrides("gear", &d.gear.1)?;
                 let gear = cad2mo_engine::sizing::parts::gear(&d.gear.1, &d.gear.0, &go).map_err(|e| e.to_string())?;
-                cad2mo_engine::sizing::size_drive(load, &motor, &gear, Some(catalog), cad2mo_engine::sizing::TOP).map_err(|e| e.to_string())
+                cad2mo_engine::sizing::size_drive(load, &motor, &gear, Some(catalog), settings, cad2mo_engine::sizing::TOP)
+                    .map_err(|e| e.to_string())
             });
         match sized {
             Ok(mut s) => {
                 if let Some(e) = effort {
                     let c = cad2mo_engine::sizing::effort_check(load.kind, load.tau, e);
                     s.pass &= c.pass;
+                    s.passes_with_reserve &= c.pass;
                     s.checks.push(c);
                 }
                 report.drives.push(s)
@@ -535,7 +679,10 @@ pub fn sizing_files(
 ) -> Vec<(String, Vec<u8>)> {
     let mut files = Vec::new();
     for (p, file) in planned.iter().zip(class_names) {
-        let json = match sizing(mech, gravity, version, &p.table.label, &p.planned, drives, catalog) {
+        // The package's sizing files use the default settings (no amplifier or brake is chosen
+        // for a package): the checks those need are reported not evaluated.
+        let settings = cad2mo_engine::sizing::Settings::default();
+        let json = match sizing(mech, gravity, version, &p.table.label, &p.planned, drives, catalog, &settings) {
             Ok(r) => serde_json::to_vec_pretty(&r),
             Err(e) => serde_json::to_vec_pretty(&serde_json::json!({ "motion": p.table.label, "error": e.to_string() })),
         };

@@ -461,6 +461,13 @@ pub async fn seed_if_empty(store: &Store) -> Result<bool, StoreError> {
     for i in &plan.instances {
         mark_offered(&mut tx, &i.id).await?;
     }
+    // The seed's classes are as new as they get: nothing of theirs to offer again.
+    for c in &plan.classes {
+        mark_offered(&mut tx, &c.id).await?;
+        for p in c.parameters.iter().filter(|p| library::seed::ADDED_DATASHEET.contains(&p.name.as_str())) {
+            mark_offered(&mut tx, &format!("{}#{}", c.id, p.name)).await?;
+        }
+    }
     tx.commit().await?;
     tracing::info!(classes = plan.classes.len(), instances = plan.instances.len(), "seeded the motor library");
     Ok(true)
@@ -483,6 +490,53 @@ async fn mark_offered(conn: &mut AnyConnection, id: &str) -> Result<(), StoreErr
 }
 
 /// Brings a library seeded by an earlier seed the seed instances it has not been offered yet
+/// Brings the classes of an installation seeded before to the seed's: each class of
+/// `seed::ADDED_CLASSES` and each datasheet parameter of `seed::ADDED_DATASHEET` (in every seed
+/// class that has it) is offered once (`library_seed_offered`, keyed by the class id, or
+/// `class id#parameter`): added when absent, so one the user deleted is not brought back. A class
+/// is skipped when its name is taken; a datasheet parameter is optional per instance, so adding
+/// one changes no instance. Returns the number of classes and parameters added.
+pub async fn seed_new_classes(store: &Store) -> Result<usize, StoreError> {
+    let seed = seed_library()?;
+    let mut tx = begin(store).await?;
+    let offered: Vec<(String,)> = sqlx::query_as("SELECT id FROM library_seed_offered").fetch_all(&mut *tx).await?;
+    let offered: std::collections::HashSet<String> = offered.into_iter().map(|(id,)| id).collect();
+    let current = load_library(&mut tx).await?;
+    let mut added = 0;
+    for c in seed.classes.iter().filter(|c| library::seed::ADDED_CLASSES.contains(&c.id.as_str()) && !offered.contains(&c.id)) {
+        if current.class(&c.id).is_none() && !current.classes.iter().any(|x| x.name == c.name) {
+            write_class(&mut tx, c).await?;
+            added += 1;
+        }
+        mark_offered(&mut tx, &c.id).await?;
+    }
+    for seed_class in &seed.classes {
+        let Some(class) = current.class(&seed_class.id) else { continue };
+        let mut class = class.clone();
+        let mut changed = false;
+        for p in seed_class.parameters.iter().filter(|p| p.datasheet && library::seed::ADDED_DATASHEET.contains(&p.name.as_str())) {
+            let key = format!("{}#{}", class.id, p.name);
+            if offered.contains(&key) {
+                continue;
+            }
+            if class.parameter(&p.name).is_none() {
+                class.parameters.push(p.clone());
+                changed = true;
+                added += 1;
+            }
+            mark_offered(&mut tx, &key).await?;
+        }
+        if changed {
+            write_class(&mut tx, &class).await?;
+        }
+    }
+    tx.commit().await?;
+    if added > 0 {
+        tracing::info!(added, "added new seed classes and datasheet parameters to the motor library");
+    }
+    Ok(added)
+}
+
 /// (`library_seed_offered`, migration 0011): each is inserted when its fixed id is absent, its
 /// class exists (its values carried over to the class as the installation has it,
 /// [`library::migrate_instance`]) and its name is free in the class; otherwise it is skipped and
@@ -619,6 +673,12 @@ mod tests {
         let new = export(&store).await.expect("export");
         // Back to the old seed.
         sqlx::query(&store.pool.sql("DELETE FROM library_parameters WHERE datasheet = 1")).execute(&store.pool).await.expect("params");
+        // The amplifier class came after 0005.
+        sqlx::query(&store.pool.sql("DELETE FROM library_classes WHERE id = ?1"))
+            .bind(seed::SERVO_AMPLIFIER)
+            .execute(&store.pool)
+            .await
+            .expect("class");
         for i in &new.instances {
             // Controllers have no datasheet values.
             let Some(cut) = ["Datasheet values for the drive sizing", "No datasheet values for the drive sizing"]
@@ -641,14 +701,45 @@ mod tests {
         let old = export(&store).await.expect("old");
         assert!(old.classes.iter().all(|c| c.parameters.iter().all(|p| !p.datasheet)));
         assert_ne!(old, new);
-        // The migration again, without the column it adds, and 0012 (the gear classes' backlash
-        // and mass) after it.
+        // The migration again, without the column it adds.
         let sql = include_str!("../../../migrations/sqlite/0005_library_datasheet.sql");
         let data = sql.split_once("DEFAULT 0;").expect("the ALTER TABLE").1;
         sqlx::raw_sql(data).execute(&store.pool).await.expect("migrate");
-        let sql = include_str!("../../../migrations/sqlite/0012_library_gear_datasheet.sql");
-        sqlx::raw_sql(sql).execute(&store.pool).await.expect("migrate 0012");
+        // The datasheet parameters added since 0005 come at start-up (seed_new_classes).
+        sqlx::query("DELETE FROM library_seed_offered").execute(&store.pool).await.expect("offered");
+        seed_new_classes(&store).await.expect("new parameters");
         assert_eq!(export(&store).await.expect("export"), new);
+    }
+
+    /// An installation seeded before the amplifier class and the new datasheet parameters
+    /// receives them once; a parameter its user deletes afterwards is not brought back.
+    #[tokio::test]
+    async fn an_old_seed_receives_the_new_classes_and_parameters_once() {
+        let (_dir, store) = store().await;
+        seed_if_empty(&store).await.expect("seed");
+        let new = export(&store).await.expect("export");
+        assert_eq!(seed_new_classes(&store).await.expect("nothing to add"), 0);
+        sqlx::query(&store.pool.sql("DELETE FROM library_classes WHERE id = ?1"))
+            .bind(seed::SERVO_AMPLIFIER)
+            .execute(&store.pool)
+            .await
+            .expect("class");
+        sqlx::query(&store.pool.sql("DELETE FROM library_parameters WHERE name IN ('mount', 'motor_mounts')"))
+            .execute(&store.pool)
+            .await
+            .expect("params");
+        sqlx::query("DELETE FROM library_seed_offered").execute(&store.pool).await.expect("offered");
+        assert_ne!(export(&store).await.expect("old"), new);
+        let added = seed_new_classes(&store).await.expect("upgrade");
+        assert_eq!(export(&store).await.expect("upgraded"), new);
+        assert!(added >= 6, "{added}");
+        sqlx::query(&store.pool.sql("DELETE FROM library_parameters WHERE name = 'T_stall'"))
+            .execute(&store.pool)
+            .await
+            .expect("user deletes");
+        assert_eq!(seed_new_classes(&store).await.expect("again"), 0);
+        let lib = export(&store).await.expect("export");
+        assert!(lib.classes.iter().all(|c| c.parameter("T_stall").is_none()));
     }
 
     /// An installation seeded with the first seed (nine instances, one since deleted by its user,

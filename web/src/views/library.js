@@ -11,6 +11,7 @@
 import './library.css';
 import { api, download, enc } from '../api.js';
 import { h, fill, say, errorBox, confirmAction, num, unitLabel, limits, checkValue, field, newId } from '../ui.js';
+import { valueSource } from './sizing-data.js';
 
 /** Domains listed first, in this order; any other domain follows alphabetically. */
 const DOMAIN_ORDER = ['motor', 'gear', 'controller'];
@@ -227,7 +228,14 @@ export async function renderLibrary(main) {
           'div',
           { class: p.editable ? 'lib-value' : 'lib-value nameplate', title: p.comment || null },
           h('dt', {}, p.name),
-          h('dd', { 'data-param': p.name }, formatValue(p, values[p.name]), unit ? h('span', { class: 'muted' }, ` ${unit}`) : null),
+          h(
+            'dd',
+            { 'data-param': p.name },
+            formatValue(p, values[p.name]),
+            unit ? h('span', { class: 'muted' }, ` ${unit}`) : null,
+            // Where this value comes from, as the instance's source says for it.
+            values[p.name] !== undefined && valueSource(inst.source, p.name) ? h('small', { class: 'muted value-source' }, `source: ${valueSource(inst.source, p.name)}`) : null,
+          ),
         );
       }),
     );

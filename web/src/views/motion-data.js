@@ -119,8 +119,9 @@ export function throttle(fn, ms, { now = () => Date.now(), later = (f, d) => set
 
 /**
  * The PUT body of the drives API that applies a sizing alternative to an existing drive: the
- * alternative's motor and gear, the same controller (and its overrides) and reference, and the
- * gear ratio override when the alternative's ratio is not the gear's own (`gearRatio`).
+ * alternative's motor and gear, the same controller (and its overrides) and reference. Ranked
+ * alternatives are real catalogue combinations at the gear's own ratio, so no ratio override is
+ * needed; one is set only if an alternative's ratio differs from the gear's own (`gearRatio`).
  */
 export function applyAlternative(drive, alt, gearRatio) {
   const overrides = {};

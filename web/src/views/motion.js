@@ -8,6 +8,7 @@
 import { api, enc } from '../api.js';
 import { h, fill, errorBox, num, field, confirmAction, newId, unitLabel } from '../ui.js';
 import { displayScale, displayUnit, sampleAt, keyframeProblems, throttle, applyAlternative, rotationRows, freshName, bodyDepths, defaultToolFrame } from './motion-data.js';
+import { sizingQuery, verdict, standingLabel, limitingText } from './sizing-data.js';
 import { sweepRows, firstContactText, contactMarkers, touchedBy, witnessLine, pairKey } from './collision-data.js';
 
 const INTERPOLATIONS = [
@@ -32,6 +33,9 @@ export function renderMotion(panel, ctx) {
   let dirty = false;
   let traj = null;
   let sizing = null;
+  // The sizing's settings (the form under "Drive sizing"): kept while the view lives.
+  const sizingSettings = { reservePercent: 20, dwell: 0, amplifier: '', supplyVoltage: '', brake: 'none', brakePower: '', busCapacitance: '', busVoltageMax: '' };
+  let amplifiers = null;
   let collisions = null; // GET …/collisions of the current motion
   let contactPair = null; // the pair whose closest points are drawn (its key)
   let problems = new Map();
@@ -462,9 +466,16 @@ export function renderMotion(panel, ctx) {
   async function loadSizing() {
     fill(sizingBox, h('p', { role: 'status' }, 'Sizing the drives…'));
     try {
-      sizing = await api(`${base}/motions/${enc(current.id)}/sizing`);
+      if (!amplifiers) amplifiers = await api('/api/library/instances?domain=amplifier').catch(() => []);
+      sizing = await api(`${base}/motions/${enc(current.id)}/sizing${sizingQuery(sizingSettings)}`);
     } catch (e) {
       // 409: the service cannot size (yet, or while the model converts): a note, not an error.
+      // 422: a setting is refused: the form stays, with the problem.
+      if (e.status === 422) {
+        sizing = null;
+        fill(sizingBox, h('h3', {}, 'Drive sizing'), settingsForm(), errorBox(e, 'The sizing settings are refused'));
+        return;
+      }
       fill(sizingBox, e.status === 409 ? h('p', { class: 'muted sizing-unavailable' }, `Drive sizing is not available: ${e.message}`) : errorBox(e, 'The drives could not be sized'));
       return;
     }
@@ -588,7 +599,13 @@ export function renderMotion(panel, ctx) {
       plots.push(timePlot(box, { title, t: traj.t, series: traj[key], names, units: us, onSeek: seekTo, marks: () => contactMarkers(collisions, traj?.duration || 0).map((m) => m.time) }));
     }
     for (const d of sizing?.drives || []) {
-      if (!d.operating_points?.speed?.length) continue;
+      if (!d.operating_points?.speed?.length) {
+        // The motor torque needs every value it is made of (the gear's input inertia): no points
+        // are drawn from a guess.
+        const missing = (d.checks || []).find((c) => c.check === 'peak_torque')?.missing || [];
+        plotsBox.append(h('p', { class: 'muted ts-missing', dataset: { joint: d.joint } }, `${d.joint}: no torque–speed plot: the motor torque is not evaluated${missing.length ? ` (missing ${missing.join(', ')})` : ''}.`));
+        continue;
+      }
       const box = h('div', { class: 'plot', dataset: { plot: `ts-${d.joint}` } });
       plotsBox.append(box);
       plots.push(torqueSpeedPlot(box, { title: `${d.joint}: ${d.motor?.name || 'motor'} torque–speed`, op: d.operating_points, envelope: d.envelope }));
@@ -603,26 +620,32 @@ export function renderMotion(panel, ctx) {
       return;
     }
     const drives = sizing.drives.map((d) => {
-      const rows = d.checks.map((c) =>
-        h(
+      const rows = d.checks.map((c) => {
+        const v = verdict(c);
+        const cls = c.status === 'not_evaluated' ? 'info' : c.pass ? (c.within_reserve === false ? 'pass below-reserve' : 'pass') : 'fail';
+        const value = (x) => (x === null || x === undefined ? '—' : `${num(x)} ${unitLabel(c.unit)}`);
+        return h(
           'tr',
-          { class: c.limit === null || c.limit === undefined ? 'info' : c.pass ? 'pass' : 'fail', dataset: { check: c.check } },
-          h('th', { scope: 'row' }, c.label || c.check, c.detail ? h('small', { class: 'muted' }, ` ${c.detail}`) : null),
-          h('td', { class: 'num' }, `${num(c.value)} ${unitLabel(c.unit)}`),
-          h('td', { class: 'num' }, c.limit === null || c.limit === undefined ? '—' : `${num(c.limit)} ${unitLabel(c.unit)}`),
+          { class: cls, dataset: { check: c.check } },
+          h('th', { scope: 'row' }, c.label || c.check, c.detail ? h('small', { class: 'muted' }, ` ${c.detail}`) : null, c.rule ? h('small', { class: 'muted rule' }, ` Rule: ${c.rule}`) : null),
+          h('td', { class: 'num' }, value(c.value)),
+          h('td', { class: 'num' }, value(c.limit)),
+          h('td', { class: 'source lib-small' }, c.source || (c.missing?.length ? `missing: ${c.missing.join(', ')}` : '—')),
           h('td', { class: 'num' }, c.margin === null || c.margin === undefined ? '—' : `${num(Math.round(c.margin * 1000) / 10)} %`),
-          h('td', { class: 'verdict' }, c.limit === null || c.limit === undefined ? 'info' : c.pass ? 'pass' : 'FAIL'),
-        ),
-      );
+          h('td', { class: 'verdict' }, v),
+        );
+      });
       const alts = (d.alternatives || []).map((a) =>
         h(
           'li',
-          { dataset: { rank: String(a.rank) } },
-          `${a.motor.name} + ${a.gear.name}`,
-          a.ratio !== null && a.ratio !== undefined ? ` · ratio ${num(a.ratio)}` : '',
-          ` · margin ${num(Math.round(a.margin * 1000) / 10)} % `,
-          a.missing?.length ? h('small', { class: 'muted' }, `(not checked: ${a.missing.join(', ')}) `) : null,
-          h('button', { type: 'button', onclick: (e) => apply(d, a, e.currentTarget), 'aria-label': `Apply ${a.motor.name} with ${a.gear.name} to ${d.joint}` }, 'Apply'),
+          { dataset: { rank: String(a.rank), standing: a.standing } },
+          h('strong', {}, `${a.motor.name} + ${a.gear.name}`),
+          a.ratio !== null && a.ratio !== undefined ? ` · ratio ${num(a.ratio)} · ` : ' · ',
+          h('span', { class: `standing ${a.standing}` }, standingLabel(a.standing)),
+          ` · limited by ${limitingText(a)} `,
+          a.pass ? h('button', { type: 'button', onclick: (e) => apply(d, a, e.currentTarget), 'aria-label': `Apply ${a.motor.name} with ${a.gear.name} to ${d.joint}` }, 'Apply') : null,
+          h('br'),
+          h('small', { class: 'muted why' }, a.why),
         ),
       );
       return h(
@@ -635,20 +658,23 @@ export function renderMotion(panel, ctx) {
           h(
             'table',
             { class: 'checks' },
-            h('thead', {}, h('tr', {}, ['Check', 'Value', 'Limit', 'Margin', 'Result'].map((c) => h('th', { scope: 'col' }, c)))),
+            h('thead', {}, h('tr', {}, ['Check', 'Value', 'Limit', 'Source of the limit', 'Margin', 'Result'].map((c) => h('th', { scope: 'col' }, c)))),
             h('tbody', {}, rows),
           ),
         ),
-        d.missing?.length ? h('div', { class: 'warning missing' }, h('strong', {}, 'Not checked, missing data: '), d.missing.join(', ')) : null,
+        d.missing?.length ? h('div', { class: 'warning missing' }, h('strong', {}, 'Not evaluated, missing data: '), d.missing.join(', ')) : null,
+        h('p', { class: `muted reserve-verdict` }, d.passes_with_reserve ? `Passes every check with the ${num(Math.round(sizing.settings.reserve * 1000) / 10)} % reserve.` : d.pass ? `No check fails, but not every check is evaluated or keeps the ${num(Math.round(sizing.settings.reserve * 1000) / 10)} % reserve.` : 'At least one check fails.'),
         alts.length
           ? [h('h5', {}, 'Ranked alternatives'), sizing.ranking ? h('p', { class: 'muted ranking' }, `Ranked by ${sizing.ranking}.`) : null, h('ol', { class: 'alternatives' }, alts)]
-          : h('p', { class: 'muted' }, 'No combination in the library passes.'),
+          : h('p', { class: 'muted' }, 'The library has no motor and gear for this joint.'),
       );
     });
     const undriven = sizing.undriven || [];
     fill(
       sizingBox,
       h('h3', {}, 'Drive sizing ', h('small', { class: 'muted' }, `at ${sizing.rate} Hz over ${num(sizing.duration)} s`)),
+      settingsForm(),
+      settingsSummary(sizing.settings),
       drives.length ? drives : h('p', { class: 'muted' }, 'No joint has a drive: add one under Drives to size it.'),
       sizing.not_sized?.length
         ? h('div', { class: 'warning not-sized' }, h('strong', {}, 'Drives not sized: '), h('ul', {}, sizing.not_sized.map((x) => h('li', {}, `${x.joint}: ${x.problem}`))))
@@ -666,6 +692,58 @@ export function renderMotion(panel, ctx) {
           ]
         : null,
       h('div', { class: 'sizing-out', 'aria-live': 'polite' }),
+    );
+  }
+
+  /** The amplifier, duty cycle, reserve and brake the sizing runs with. */
+  function settingsForm() {
+    const s = sizingSettings;
+    // No min/max here: the service checks the settings and its 422 names the field.
+    const input = (name, label, value, attrs = {}) => {
+      const el = h('input', { name, type: 'number', step: 'any', value: value ?? '', ...attrs });
+      el.addEventListener('change', () => (s[name] = el.value === '' ? '' : Number(el.value)));
+      return h('label', { class: 'field' }, label, ' ', el);
+    };
+    const amp = h('select', { name: 'amplifier', 'aria-label': 'Amplifier' }, h('option', { value: '' }, 'none (voltage and current not evaluated)'), (amplifiers || []).map((a) => h('option', { value: a.id }, a.name)));
+    amp.value = s.amplifier;
+    amp.addEventListener('change', () => (s.amplifier = amp.value));
+    const brake = h('select', { name: 'brake', 'aria-label': 'Brake' }, h('option', { value: 'none' }, 'none'), h('option', { value: 'resistor' }, 'brake resistor'), h('option', { value: 'bus' }, 'DC bus capacitors'));
+    brake.value = s.brake;
+    brake.addEventListener('change', () => (s.brake = brake.value));
+    return h(
+      'form',
+      {
+        class: 'sizing-settings row',
+        'aria-label': 'Sizing settings',
+        onsubmit: (e) => {
+          e.preventDefault();
+          loadSizing();
+        },
+      },
+      h('label', { class: 'field' }, 'Amplifier ', amp),
+      input('supplyVoltage', 'Supply voltage (V)', s.supplyVoltage),
+      input('reservePercent', 'Reserve (%)', s.reservePercent),
+      input('dwell', 'Dwell between repetitions (s)', s.dwell),
+      h('label', { class: 'field' }, 'Brake ', brake),
+      input('brakePower', 'Resistor power (W)', s.brakePower),
+      input('busCapacitance', 'Bus capacitance (F)', s.busCapacitance),
+      input('busVoltageMax', 'Bus max voltage (V)', s.busVoltageMax),
+      h('button', { type: 'submit' }, 'Size again'),
+    );
+  }
+
+  /** What the report says it ran with. */
+  function settingsSummary(st) {
+    if (!st) return null;
+    const a = st.amplifier;
+    const brake = !st.brake ? 'no brake set' : st.brake.kind === 'resistor' ? `brake resistor ${num(st.brake.power)} W` : `DC bus ${num(st.brake.capacitance)} F up to ${num(st.brake.voltage_max)} V`;
+    return h(
+      'p',
+      { class: 'muted sizing-summary' },
+      `Reserve ${num(Math.round(st.reserve * 1000) / 10)} % · duty cycle: motion ${num(sizing.duration)} s + dwell ${num(st.dwell)} s · `,
+      a ? `amplifier ${a.name} at ${a.supply_voltage === null ? '(no supply voltage set)' : `${num(a.supply_voltage)} V`} (${a.i_cont === null ? '?' : num(a.i_cont)} A continuous, ${a.i_peak === null ? '?' : num(a.i_peak)} A peak)` : 'no amplifier',
+      ` · ${brake}`,
+      a?.source ? h('small', { title: a.source }, ' (amplifier source)') : null,
     );
   }
 
