@@ -282,7 +282,7 @@ impl Planned {
     /// joints are kept). For a tree, the samples as they are.
     pub fn closed_samples(&self, mech: &Mechanism, rate: f64) -> Result<Samples, Vec<Issue>> {
         let mut s = self.samples(rate);
-        if !mech.has_loops() {
+        if !mech.has_dependent() {
             return Ok(s);
         }
         let n = self.axes.len();
@@ -449,7 +449,7 @@ pub fn plan(mech: &Mechanism, axes: &[Axis], spec: &MotionSpec) -> Result<Planne
     if !issues.is_empty() {
         return Err(issues);
     }
-    let loops = mech.has_loops();
+    let loops = mech.has_dependent();
     let driven_names =
         || -> String { mech.driven().iter().map(|&i| axes.get(i).map_or("", |a| a.name.as_str())).collect::<Vec<_>>().join(", ") };
     let index: BTreeMap<&str, usize> = axes.iter().enumerate().map(|(i, a)| (a.name.as_str(), i)).collect();
@@ -462,8 +462,13 @@ pub fn plan(mech: &Mechanism, axes: &[Axis], spec: &MotionSpec) -> Result<Planne
         let mut ik = None;
         match &kf.target {
             Target::Joints { values } => {
+                let mut coupled_set = Vec::new();
                 for (name, v) in values {
                     match index.get(name.as_str()) {
+                        Some(&i) if mech.coupling_of(i).is_some() => {
+                            q[i] = *v;
+                            coupled_set.push(i);
+                        }
                         Some(&i) if loops && !mech.coordinates().get(i).is_some_and(|c| c.independent) => issues.push(Issue::new(
                             format!("{at}.values.{name}"),
                             format!(
@@ -476,6 +481,26 @@ pub fn plan(mech: &Mechanism, axes: &[Axis], spec: &MotionSpec) -> Result<Planne
                             format!("{at}.values.{name}"),
                             format!("keyframe {k}: joint \"{name}\" is not a joint of this version of the model"),
                         )),
+                    }
+                }
+                // A mimic follower may be given only where it agrees with its leader.
+                let mut expected = q.clone();
+                mech.apply_couplings(&mut expected);
+                for i in coupled_set {
+                    let Some(c) = mech.coupling_of(i) else { continue };
+                    if (q[i] - expected[i]).abs() > 1e-9 * (1.0 + expected[i].abs()) {
+                        let (f, l) = (axes.get(i).map_or("", |a| a.name.as_str()), axes.get(c.leader).map_or("", |a| a.name.as_str()));
+                        issues.push(Issue::new(
+                            format!("{at}.values.{f}"),
+                            format!(
+                                "keyframe {k}: {f} = {} contradicts the mimic coupling {f} = {} * {l}{}: with {l} = {} it is {} (set {l} only)",
+                                fmt(q[i]),
+                                fmt(c.multiplier),
+                                if c.offset != 0.0 { format!(" + {}", fmt(c.offset)) } else { String::new() },
+                                fmt(expected[c.leader]),
+                                fmt(expected[i])
+                            ),
+                        ));
                     }
                 }
             }
@@ -679,7 +704,7 @@ pub fn inverse_dynamics(
     gravity: &Vector3<f64>,
     stride: usize,
 ) -> Result<(Vec<Vec<f64>>, Vec<f64>), crate::mechanism::MechanismError> {
-    if mech.has_loops() {
+    if mech.has_dependent() {
         return driven_dynamics(mech, s, gravity, stride);
     }
     let n = mech.dof();
@@ -694,7 +719,7 @@ pub fn inverse_dynamics(
             qd[a] = s.qd[a][i];
             qdd[a] = s.qdd[a][i];
         }
-        mech.inverse_dynamics(&q, &qd, &qdd, gravity, &mut ws, &mut out)?;
+        mech.inverse_dynamics_with_losses(&q, &qd, &qdd, gravity, &mut ws, &mut out)?;
         for a in 0..n {
             tau[a].push(out[a]);
         }

@@ -12,7 +12,7 @@
 //!   joint name type                revolute | continuous | prismatic | fixed | floating | planar
 //!     parent link, child link, origin xyz rpy (child frame in the parent frame at q = 0),
 //!     axis xyz (joint frame; default 1 0 0), limit lower upper velocity effort,
-//!     mimic joint multiplier offset
+//!     mimic joint multiplier offset, dynamics damping friction
 //!   drake:joint name type          Drake's extension: ball, universal (screw and curvilinear
 //!                                  are not expressible: welded, with a warning)
 //!   loop_joint name type           Drake's closed-chain extension: axis, link1 link xyz rpy,
@@ -32,6 +32,9 @@
 //!   `world` makes it free).
 //! - `floating` leaves the child free; `planar` is two prismatic primitives in the plane and a
 //!   revolute about its normal (`axis`); `continuous` is revolute without position limits.
+//! - `dynamics damping friction` become the [`Losses`](ir::Losses) of each revolute and prismatic
+//!   element of the joint (negative values are refused); other attributes of `<dynamics>`
+//!   (Gazebo's, franka's `K`, `D`, `mu_*`) are not URDF and are ignored.
 //! - `mimic` becomes a [`Coupling`](ir::Coupling) where both joints have one coordinate, the
 //!   multiplier is not zero and the offset is zero (the zero configuration must satisfy it);
 //!   otherwise a `mimic-not-expressible` warning.
@@ -196,6 +199,8 @@ struct RawJoint<'a, 'i> {
     origin: Isometry3<f64>,
     axis: Vector3<f64>,
     limits: Option<JointLimits>,
+    /// `<dynamics damping friction>` (zero when absent).
+    losses: ir::Losses,
     mimic: Option<(String, f64, f64, roxmltree::Node<'a, 'i>)>,
 }
 
@@ -545,7 +550,20 @@ impl<'d, 'i> Reader<'d, 'i> {
             )),
             None => None,
         };
-        Ok(RawJoint { node: n, name, kind, parent, child: child_link, origin, axis, limits, mimic })
+        let losses = match child(n, "dynamics") {
+            Some(d) => {
+                let damping = self.opt_number(d, "damping")?.unwrap_or(0.0);
+                let friction = self.opt_number(d, "friction")?.unwrap_or(0.0);
+                for (k, v) in [("damping", damping), ("friction", friction)] {
+                    if v < 0.0 {
+                        return Err(self.err(d, format!("attribute `{k}` = {v} is negative (a passive loss must be 0 or more)")));
+                    }
+                }
+                ir::Losses { damping, friction }
+            }
+            None => ir::Losses::default(),
+        };
+        Ok(RawJoint { node: n, name, kind, parent, child: child_link, origin, axis, limits, losses, mimic })
     }
 
     fn build(
@@ -862,6 +880,12 @@ impl<'d, 'i> Reader<'d, 'i> {
                     vec![prim(PrimitiveKind::Weld, world_axis, loc.clone())]
                 }
             };
+            let mut primitives = primitives;
+            for p in &mut primitives {
+                if matches!(p.kind, PrimitiveKind::Revolute | PrimitiveKind::Prismatic) {
+                    p.losses = j.losses;
+                }
+            }
             let base = if j.parent == "world" {
                 push_ground(&mut model, &j.name, frame_pose, loc.clone())
             } else {
@@ -982,7 +1006,7 @@ fn plane_axes(n: &Vector3<f64>) -> (Vector3<f64>, Vector3<f64>) {
 }
 
 fn prim(kind: PrimitiveKind, axis_world: Vector3<f64>, loc: SourceLoc) -> Primitive {
-    Primitive { kind, axis_world, loc }
+    Primitive { kind, axis_world, losses: ir::Losses::default(), loc }
 }
 
 fn push_frame(model: &mut Model, name: &str, node_id: String, owner: FrameOwner, pose: Isometry3<f64>, loc: &SourceLoc) -> FrameId {
