@@ -204,6 +204,10 @@ pub struct IkReport {
     pub iterations: usize,
     pub position_error: f64,
     pub rotation_error: f64,
+    /// Independent directions the driven joints move the tool in at the solution (see
+    /// `IkResult::mobility`); not serialised.
+    #[serde(skip)]
+    pub mobility: usize,
 }
 
 /// A keyframe as planned: its time (arrival) and joint values.
@@ -439,7 +443,8 @@ pub fn solve_tool(
     let seed_rng = frame.bytes().fold(0x9e37_79b9_7f4a_7c15_u64, |h, b| (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3));
     let mut rng = XorShift::new(seed_rng);
     let r = mech.inverse_kinematics(tool, target, seed, &opts, &mut rng).map_err(|e| e.to_string())?;
-    let report = IkReport { iterations: r.iterations, position_error: r.position_error, rotation_error: r.rotation_error };
+    let report =
+        IkReport { iterations: r.iterations, position_error: r.position_error, rotation_error: r.rotation_error, mobility: r.mobility };
     Ok((r.q, report, r.success))
 }
 
@@ -515,13 +520,27 @@ pub fn plan(mech: &Mechanism, axes: &[Axis], spec: &MotionSpec) -> Result<Planne
                         q = sol;
                         ik = Some(report);
                     }
-                    Ok((_, r, false)) => issues.push(Issue::new(
-                        at.clone(),
-                        format!(
-                            "keyframe {k}: inverse kinematics failed for frame \"{frame}\": residual {:.3e} m / {:.3e} rad after {} iterations (unreachable within the joints' position limits?)",
-                            r.position_error, r.rotation_error, r.iterations
-                        ),
-                    )),
+                    Ok((_, r, false)) => {
+                        let rows = if matches!(target, IkTarget::Pose(_)) { 6 } else { 3 };
+                        let why = if r.mobility < rows {
+                            format!(
+                                "the driven joints ({}) move this frame in only {} independent direction(s) here, the target needs {rows} ({}): only targets on that {}-dimensional set are reachable (try a position-only target or a frame on the set)",
+                                driven_names(),
+                                r.mobility,
+                                if rows == 6 { "position and orientation" } else { "position" },
+                                r.mobility
+                            )
+                        } else {
+                            "unreachable within the joints' position limits?".to_string()
+                        };
+                        issues.push(Issue::new(
+                            at.clone(),
+                            format!(
+                                "keyframe {k}: inverse kinematics failed for frame \"{frame}\": residual {:.3e} m / {:.3e} rad after {} iterations ({why})",
+                                r.position_error, r.rotation_error, r.iterations
+                            ),
+                        ))
+                    }
                     Err(e) => issues.push(Issue::new(format!("{at}.frame"), format!("keyframe {k}: {e}"))),
                 }
             }
