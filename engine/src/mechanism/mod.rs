@@ -573,3 +573,6 @@ impl Mechanism {
 
 #[cfg(test)]
 mod tests;
+
+#[cfg(test)]
+mod loads_tests;
