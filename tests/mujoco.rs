@@ -305,3 +305,50 @@ fn rnea_with_urdf_dynamics_agrees_with_mujoco() {
         }
     }
 }
+
+/// The losses reach every back end: `Mechanics.mo` (a `Damper` to a `Fixed` housing and a
+/// `BearingFriction` / `SupportFriction` on the drive flange, classes and parameters checked by
+/// msl-check), the URDF (`<dynamics>`) and the MJCF (`damping`, `frictionloss`).
+#[test]
+fn losses_reach_modelica_urdf_and_mjcf() {
+    let urdf = r#"<robot name="slide">
+  <link name="world"/>
+  <link name="base"><inertial><mass value="2"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial></link>
+  <link name="arm"><inertial><origin xyz="0.2 0 0"/><mass value="1"/><inertia ixx="0.001" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial></link>
+  <link name="carriage"><inertial><mass value="0.5"/><inertia ixx="0.001" ixy="0" ixz="0" iyy="0.001" iyz="0" izz="0.001"/></inertial></link>
+  <joint name="fix" type="fixed"><parent link="world"/><child link="base"/></joint>
+  <joint name="turn" type="revolute"><parent link="base"/><child link="arm"/><origin xyz="0 0 0.1"/><axis xyz="0 0 1"/><limit lower="-2" upper="2" effort="10" velocity="2"/><dynamics damping="0.6" friction="0.2"/></joint>
+  <joint name="slide" type="prismatic"><parent link="arm"/><child link="carriage"/><origin xyz="0.3 0 0"/><axis xyz="1 0 0"/><limit lower="0" upper="0.2" effort="100" velocity="1"/><dynamics damping="12.5" friction="3"/></joint>
+</robot>"#;
+    let bundle = Bundle::from_files("x", [("slide.urdf".to_string(), urdf.as_bytes().to_vec())]).expect("bundle");
+    let out = pipeline::convert(&bundle, &Options { write_shapes: false, ..Options::default() }).expect("convert");
+    let text = |suffix: &str| {
+        let (_, b) = out.files.iter().find(|(p, _)| p.ends_with(suffix)).unwrap_or_else(|| panic!("no {suffix}"));
+        String::from_utf8(b.clone()).expect("utf-8")
+    };
+    let mo = text("/Mechanics.mo");
+    for want in [
+        "Modelica.Mechanics.Rotational.Components.Damper turn_damper(d=0.6)",
+        "Modelica.Mechanics.Rotational.Components.Fixed turn_housing",
+        "Modelica.Mechanics.Rotational.Components.BearingFriction turn_friction(tau_pos=[0, 0.2], peak=1)",
+        "Modelica.Mechanics.Translational.Components.Damper slide_damper(d=12.5)",
+        "Modelica.Mechanics.Translational.Components.Fixed slide_housing",
+        "Modelica.Mechanics.Translational.Components.SupportFriction slide_friction(f_pos=[0, 3.0], peak=1)",
+        "connect(turn.drive, turn_damper.flange_a)",
+        "connect(turn_damper.flange_b, turn_housing.flange)",
+        "connect(turn.drive, turn_friction.flange_a)",
+        "connect(slide.drive, slide_damper.flange_a)",
+        "connect(slide.drive, slide_friction.flange_a)",
+    ] {
+        assert!(mo.contains(want), "Mechanics.mo lacks {want}:\n{mo}");
+    }
+    let robot = text("/slide.urdf");
+    assert!(robot.contains(r#"<dynamics damping="0.6" friction="0.2"/>"#) && robot.contains(r#"<dynamics damping="12.5" friction="3.0"/>"#), "{robot}");
+    let mjcf = text(".mjcf.xml");
+    assert!(mjcf.contains(r#"damping="0.6" frictionloss="0.2""#) && mjcf.contains(r#"damping="12.5" frictionloss="3.0""#), "{mjcf}");
+    let dir = tempfile::tempdir().expect("tempdir");
+    cad2mo_tests::common::write_output(&out, dir.path());
+    if let Some(r) = cad2mo_tests::common::msl_check(dir.path()) {
+        assert!(r.is_ok(), "msl-check: {}", r.unwrap_or_else(|e| e));
+    }
+}
