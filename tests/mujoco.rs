@@ -98,7 +98,8 @@ fn compare_with(label: &str, m: &Mechanism, mjcf: &str, samples: usize, seed: u6
     }
     let input = dir.path().join("in.json");
     let output = dir.path().join("out.json");
-    std::fs::write(&input, serde_json::json!({"model": model_path, "samples": spec, "keep_damping": losses}).to_string()).expect("write spec");
+    std::fs::write(&input, serde_json::json!({"model": model_path, "samples": spec, "keep_damping": losses}).to_string())
+        .expect("write spec");
     let script = workspace_root().join("tests/tools/mujoco_check.py");
     let run = Command::new("python3").arg(&script).arg(&input).arg(&output).output();
     let run = match run {
@@ -140,7 +141,13 @@ fn compare_with(label: &str, m: &Mechanism, mjcf: &str, samples: usize, seed: u6
         }
     }
     for (s, tau) in ours.iter().enumerate() {
-        let friction = |c: &cad2mo_engine::mechanism::Coordinate| if losses { result["frictionloss"][&c.name].as_f64().unwrap_or(f64::NAN) } else { 0.0 };
+        let friction = |c: &cad2mo_engine::mechanism::Coordinate| {
+            if losses {
+                result["frictionloss"][&c.name].as_f64().unwrap_or(f64::NAN)
+            } else {
+                0.0
+            }
+        };
         let theirs: Vec<f64> = m
             .coordinates()
             .iter()
@@ -343,7 +350,10 @@ fn losses_reach_modelica_urdf_and_mjcf() {
         assert!(mo.contains(want), "Mechanics.mo lacks {want}:\n{mo}");
     }
     let robot = text("/slide.urdf");
-    assert!(robot.contains(r#"<dynamics damping="0.6" friction="0.2"/>"#) && robot.contains(r#"<dynamics damping="12.5" friction="3.0"/>"#), "{robot}");
+    assert!(
+        robot.contains(r#"<dynamics damping="0.6" friction="0.2"/>"#) && robot.contains(r#"<dynamics damping="12.5" friction="3.0"/>"#),
+        "{robot}"
+    );
     let mjcf = text(".mjcf.xml");
     assert!(mjcf.contains(r#"damping="0.6" frictionloss="0.2""#) && mjcf.contains(r#"damping="12.5" frictionloss="3.0""#), "{mjcf}");
     let dir = tempfile::tempdir().expect("tempdir");

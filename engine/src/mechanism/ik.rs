@@ -277,7 +277,9 @@ impl Mechanism {
         };
         let mut e = DVector::<f64>::zeros(rows);
         let mut total = 0;
-        let mut best: Option<(f64, Vec<f64>, Vec<f64>, f64, f64)> = None;
+        // (score, q, cut, position error, rotation error) of the best attempt.
+        type Best = (f64, Vec<f64>, Vec<f64>, f64, f64);
+        let mut best: Option<Best> = None;
         for attempt in 0..=opts.restarts {
             let mut q = if attempt == 0 { seed.to_vec() } else { self.q0() };
             for &i in &driven {

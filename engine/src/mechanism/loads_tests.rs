@@ -48,8 +48,13 @@ fn index(m: &Mechanism, joint: &str, a: &Analysed) -> usize {
 #[test]
 fn urdf_dynamics_reach_the_coordinates_and_the_passive_law_holds() {
     let (a, m) = gripper();
-    let (s, f1, f2, w, t) =
-        (index(&m, "shoulder", &a), index(&m, "finger_joint1", &a), index(&m, "finger_joint2", &a), index(&m, "wrist_joint", &a), index(&m, "tool_joint", &a));
+    let (s, f1, f2, w, t) = (
+        index(&m, "shoulder", &a),
+        index(&m, "finger_joint1", &a),
+        index(&m, "finger_joint2", &a),
+        index(&m, "wrist_joint", &a),
+        index(&m, "tool_joint", &a),
+    );
     let l = |i: usize| m.coordinates()[i].losses;
     assert_eq!(l(s), crate::pipeline::ir::Losses { damping: 0.7, friction: 0.25 });
     assert_eq!(l(f1), crate::pipeline::ir::Losses { damping: 3.0, friction: 1.5 });
@@ -94,15 +99,21 @@ fn urdf_dynamics_reach_the_coordinates_and_the_passive_law_holds() {
 fn negative_dynamics_are_refused_naming_the_attribute() {
     let bad = GRIPPER.replace(r#"damping="0.7""#, r#"damping="-0.7""#);
     let bundle = Bundle::from_files("u", [("robot.urdf".to_string(), bad.into_bytes())]).expect("bundle");
-    let e = pipeline::analyse(&bundle, &Options::default()).err().expect("refused").to_string();
+    let Err(e) = pipeline::analyse(&bundle, &Options::default()) else { panic!("refused") };
+    let e = e.to_string();
     assert!(e.contains("damping") && e.contains("negative"), "{e}");
 }
 
 #[test]
 fn mimic_followers_are_dependent_and_load_their_leaders() {
     let (a, m) = gripper();
-    let (s, f1, f2, w, t) =
-        (index(&m, "shoulder", &a), index(&m, "finger_joint1", &a), index(&m, "finger_joint2", &a), index(&m, "wrist_joint", &a), index(&m, "tool_joint", &a));
+    let (s, f1, f2, w, t) = (
+        index(&m, "shoulder", &a),
+        index(&m, "finger_joint1", &a),
+        index(&m, "finger_joint2", &a),
+        index(&m, "wrist_joint", &a),
+        index(&m, "tool_joint", &a),
+    );
     assert!(!m.has_loops() && m.has_dependent());
     assert_eq!(m.driven(), {
         let mut d = vec![s, f1, w];
@@ -161,14 +172,15 @@ fn a_mimic_cycle_is_refused_by_name() {
         println!("NOTICE: the front end dropped the cycle: nothing to refuse");
         return;
     }
-    let e = Mechanism::from_validated(&a.model, &a.validated).err().expect("refused");
+    let e = Mechanism::from_validated(&a.model, &a.validated).expect_err("refused");
     assert!(matches!(&e, MechanismError::Coupling { why, .. } if why.contains("cycle")), "{e}");
 }
 
 #[test]
 fn ik_solves_only_leaders_and_keeps_the_couplings() {
     let (a, m) = gripper();
-    let (f1, f2, w, t) = (index(&m, "finger_joint1", &a), index(&m, "finger_joint2", &a), index(&m, "wrist_joint", &a), index(&m, "tool_joint", &a));
+    let (f1, f2, w, t) =
+        (index(&m, "finger_joint1", &a), index(&m, "finger_joint2", &a), index(&m, "wrist_joint", &a), index(&m, "tool_joint", &a));
     let tool = a.model.bodies.iter().position(|b| b.cad_name == "tool").expect("tool");
     let tool_frame = a.model.bodies[tool].cs1;
     let mut rng = XorShift::new(3);
@@ -213,7 +225,8 @@ fn finger_spec(values: &[(&str, f64)]) -> MotionSpec {
 #[test]
 fn motions_move_followers_with_their_leaders_and_refuse_contradictions() {
     let (a, m) = gripper();
-    let (f1, f2, w, t) = (index(&m, "finger_joint1", &a), index(&m, "finger_joint2", &a), index(&m, "wrist_joint", &a), index(&m, "tool_joint", &a));
+    let (f1, f2, w, t) =
+        (index(&m, "finger_joint1", &a), index(&m, "finger_joint2", &a), index(&m, "wrist_joint", &a), index(&m, "tool_joint", &a));
     let axes = plan::axes(&m, &BTreeMap::new());
     let name = |i: usize| axes[i].name.clone();
     // The leader alone, or with a consistent follower, plans; the follower moves along.
@@ -234,7 +247,7 @@ fn motions_move_followers_with_their_leaders_and_refuse_contradictions() {
     }
     // Panda's bug: finger1 = 0.04 and finger2 = 0 is refused, naming the coupling.
     let bad = finger_spec(&[(&name(f1), 0.04), (&name(f2), 0.0)]);
-    let issues = plan::plan(&m, &axes, &bad).err().expect("refused");
+    let Err(issues) = plan::plan(&m, &axes, &bad) else { panic!("refused") };
     assert_eq!(issues.len(), 1, "{issues:?}");
     assert_eq!(issues[0].field, format!("keyframes[1].values.{}", name(f2)));
     assert!(issues[0].message.contains("mimic coupling") && issues[0].message.contains(&name(f1)), "{}", issues[0].message);
@@ -258,13 +271,16 @@ fn ik_on_a_four_bar_keeps_the_loop_closed() {
     let frame = (0..a.model.frames.len())
         .map(|i| FrameId(i as u32))
         .max_by(|x, y| {
-            let d = |f: FrameId| (m.frame_pose(&k1, f).expect("p").translation.vector - m.frame_pose(&k0, f).expect("p").translation.vector).norm();
+            let d = |f: FrameId| {
+                (m.frame_pose(&k1, f).expect("p").translation.vector - m.frame_pose(&k0, f).expect("p").translation.vector).norm()
+            };
             d(*x).total_cmp(&d(*y))
         })
         .expect("a frame");
     let goal = m.frame_pose(&k1, frame).expect("pose");
     let mut rng = XorShift::new(1);
-    let r = m.inverse_kinematics(frame, &IkTarget::Position(goal.translation.vector), &m.q0(), &IkOptions::default(), &mut rng).expect("ik");
+    let r =
+        m.inverse_kinematics(frame, &IkTarget::Position(goal.translation.vector), &m.q0(), &IkOptions::default(), &mut rng).expect("ik");
     assert!(r.success, "{r:?}");
     assert_eq!(r.mobility, 1, "a four-bar moves a point along one curve");
     let k = m.forward(&r.q).expect("fk");
@@ -299,6 +315,6 @@ fn ik_on_a_four_bar_keeps_the_loop_closed() {
             },
         ],
     };
-    let issues = plan::plan(&m, &axes, &spec).err().expect("refused");
+    let Err(issues) = plan::plan(&m, &axes, &spec) else { panic!("refused") };
     assert!(issues[0].message.contains("independent direction"), "{}", issues[0].message);
 }

@@ -207,10 +207,7 @@ fn couplings_of(model: &Model, v: &Validated, coords: &mut [Coordinate]) -> Resu
     for c in &model.couplings {
         let (Some(f), Some(l)) = (single(c.follower), single(c.leader)) else { continue };
         if out.iter().any(|o| o.follower == f) {
-            return Err(MechanismError::Coupling {
-                joint: model.joint(c.follower).cad_name.clone(),
-                why: "it follows two joints".into(),
-            });
+            return Err(MechanismError::Coupling { joint: model.joint(c.follower).cad_name.clone(), why: "it follows two joints".into() });
         }
         out.push(CoordCoupling { follower: f, leader: l, multiplier: c.multiplier, offset: c.offset });
     }

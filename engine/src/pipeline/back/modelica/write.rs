@@ -416,14 +416,7 @@ impl Writer<'_> {
     /// `BearingFriction` / `SupportFriction` with the constant Coulomb friction (`tau_pos = [0,
     /// f]`, `peak = 1`: the static friction equals the sliding one). The housing is fixed in the
     /// world, as MSL's joint `support` flange (its axis torque acts between frame_a and frame_b).
-    fn losses(
-        &mut self,
-        jid: JointId,
-        k: usize,
-        name: &str,
-        kind: PrimitiveKind,
-        l: crate::pipeline::ir::Losses,
-    ) {
+    fn losses(&mut self, jid: JointId, k: usize, name: &str, kind: PrimitiveKind, l: crate::pipeline::ir::Losses) {
         let (lib, fric, table, what) = if kind == PrimitiveKind::Revolute {
             ("Modelica.Mechanics.Rotational.Components", "BearingFriction", "tau_pos", "torque")
         } else {
@@ -448,7 +441,10 @@ impl Writer<'_> {
             );
             let want = at(self, &housing, 2);
             let place = self.put(&housing, Class::TwoPort, want);
-            let _ = writeln!(self.decl, "  {lib}.Fixed {housing}\n    \"Housing of {name}'s damper (fixed in the world, as the joint's support)\" {place};");
+            let _ = writeln!(
+                self.decl,
+                "  {lib}.Fixed {housing}\n    \"Housing of {name}'s damper (fixed in the world, as the joint's support)\" {place};"
+            );
             self.connect(&drive, &format!("{damper}.flange_a"));
             self.connect(&format!("{damper}.flange_b"), &format!("{housing}.flange"));
         }

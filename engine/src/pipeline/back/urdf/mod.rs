@@ -250,7 +250,7 @@ pub fn write(model: &Model, v: &Validated, layout: &Layout, package: &str, write
                 axis: Vector3::x(),
                 limits: None,
                 losses: Default::default(),
-            mimic: None,
+                mimic: None,
                 note: None,
             });
             continue;
@@ -272,7 +272,7 @@ pub fn write(model: &Model, v: &Validated, layout: &Layout, package: &str, write
                 axis: e[2].axis,
                 limits: None,
                 losses: Default::default(),
-            mimic: None,
+                mimic: None,
                 note: {
                     // The start rotation is in the origin: the Modelica translations run along
                     // the plane axes turned back by it.
@@ -338,7 +338,18 @@ pub fn write(model: &Model, v: &Validated, layout: &Layout, package: &str, write
             } else {
                 Default::default()
             };
-            ujoints.push(UJoint { name, kind, parent: prev.clone(), child: child.clone(), origin: o, axis, limits, losses, mimic: None, note });
+            ujoints.push(UJoint {
+                name,
+                kind,
+                parent: prev.clone(),
+                child: child.clone(),
+                origin: o,
+                axis,
+                limits,
+                losses,
+                mimic: None,
+                note,
+            });
             o = Isometry3::identity();
             prev = child;
         }
@@ -353,7 +364,7 @@ pub fn write(model: &Model, v: &Validated, layout: &Layout, package: &str, write
                 axis: Vector3::x(),
                 limits: None,
                 losses: Default::default(),
-            mimic: None,
+                mimic: None,
                 note: Some(format!("CAD offset of joint {jname}: the body frame is off the revolute's axis")),
             });
         }
