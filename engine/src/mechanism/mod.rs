@@ -29,7 +29,14 @@
 //!   independent coordinates are handled by [`Mechanism::close`] and
 //!   [`Mechanism::driven_torques`] (`driven.rs`), which project the tree's torques onto the
 //!   driven joints.
-//! - Inverse kinematics works on tree mechanisms (no loop closures).
+//! - Inverse kinematics of mechanisms with loops or mimic couplings moves the driven
+//!   coordinates only (the closure kept at every iterate); the dependent coordinates are not
+//!   clamped to their limits there.
+//! - Mimic couplings ([`CoordCoupling`]) are those the Modelica back end emits (one revolute or
+//!   prismatic element on each side, tree joints); the follower is dependent and its torque is
+//!   carried by its leader (virtual work). A cycle of couplings is refused.
+//! - Joint losses ([`Mechanism::passive_torques`]) are on tree coordinates; a loop's closing
+//!   joint emitted plainly carries none here.
 
 mod closure;
 mod driven;
