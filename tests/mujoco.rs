@@ -313,8 +313,8 @@ fn rnea_with_urdf_dynamics_agrees_with_mujoco() {
     }
 }
 
-/// The losses reach every back end: `Mechanics.mo` (a `Damper` to a `Fixed` housing and a
-/// `BearingFriction` / `SupportFriction` on the drive flange, classes and parameters checked by
+/// The losses reach every back end: `Mechanics.mo` (a `LinearSpeedDependentTorque` / `Force`,
+/// `-d * speed`, and a `BearingFriction` / `SupportFriction` on the drive flange, classes and parameters checked by
 /// msl-check), the URDF (`<dynamics>`) and the MJCF (`damping`, `frictionloss`).
 #[test]
 fn losses_reach_modelica_urdf_and_mjcf() {
@@ -335,16 +335,13 @@ fn losses_reach_modelica_urdf_and_mjcf() {
     };
     let mo = text("/Mechanics.mo");
     for want in [
-        "Modelica.Mechanics.Rotational.Components.Damper turn_damper(d=0.6)",
-        "Modelica.Mechanics.Rotational.Components.Fixed turn_housing",
+        "Modelica.Mechanics.Rotational.Sources.LinearSpeedDependentTorque turn_damper(tau_nominal=-0.6, w_nominal=1, TorqueDirection=false)",
         "Modelica.Mechanics.Rotational.Components.BearingFriction turn_friction(tau_pos=[0, 0.2], peak=1)",
-        "Modelica.Mechanics.Translational.Components.Damper slide_damper(d=12.5)",
-        "Modelica.Mechanics.Translational.Components.Fixed slide_housing",
+        "Modelica.Mechanics.Translational.Sources.LinearSpeedDependentForce slide_damper(f_nominal=-12.5, v_nominal=1, ForceDirection=false)",
         "Modelica.Mechanics.Translational.Components.SupportFriction slide_friction(f_pos=[0, 3.0], peak=1)",
-        "connect(turn.drive, turn_damper.flange_a)",
-        "connect(turn_damper.flange_b, turn_housing.flange)",
+        "connect(turn_damper.flange, turn.drive)",
         "connect(turn.drive, turn_friction.flange_a)",
-        "connect(slide.drive, slide_damper.flange_a)",
+        "connect(slide_damper.flange, slide.drive)",
         "connect(slide.drive, slide_friction.flange_a)",
     ] {
         assert!(mo.contains(want), "Mechanics.mo lacks {want}:\n{mo}");

@@ -412,10 +412,11 @@ impl Writer<'_> {
 
 impl Writer<'_> {
     /// The passive losses of element `name` (a `Components.Revolute`/`Prismatic`, element `k` of
-    /// joint `jid`) on its drive flange: a `Damper` (`d`) to a `Fixed` housing and a
-    /// `BearingFriction` / `SupportFriction` with the constant Coulomb friction (`tau_pos = [0,
-    /// f]`, `peak = 1`: the static friction equals the sliding one). The housing is fixed in the
-    /// world, as MSL's joint `support` flange (its axis torque acts between frame_a and frame_b).
+    /// joint `jid`) on its drive flange: a `LinearSpeedDependentTorque` / `Force` (`-d * speed`,
+    /// its support fixed in the world, as MSL's joint `support` flange, the joint's axis torque
+    /// acting between frame_a and frame_b) and a `BearingFriction` / `SupportFriction` with the
+    /// constant Coulomb friction (`tau_pos = [0, f]`, `peak = 1`: the static friction equals the
+    /// sliding one).
     fn losses(&mut self, jid: JointId, k: usize, name: &str, kind: PrimitiveKind, l: crate::pipeline::ir::Losses) {
         let (lib, fric, table, what) = if kind == PrimitiveKind::Revolute {
             ("Modelica.Mechanics.Rotational.Components", "BearingFriction", "tau_pos", "torque")
@@ -430,23 +431,27 @@ impl Writer<'_> {
             want
         };
         if l.damping > 0.0 {
+            // A one-flange source grounded in the world: accelerating torque (force) on the
+            // flange = tau_nominal * w / w_nominal = -d * w (MSL: `tau = -flange.tau`).
             let damper = self.scope.take(&format!("{name}_damper"));
-            let housing = self.scope.take(&format!("{name}_housing"));
             let want = at(self, &damper, 1);
-            let place = self.put(&damper, Class::TwoPort, want);
+            let place = self.put(&damper, Class::Drive, want);
+            let (class, params) = if kind == PrimitiveKind::Revolute {
+                (
+                    "Rotational.Sources.LinearSpeedDependentTorque",
+                    format!("tau_nominal=-{}, w_nominal=1, TorqueDirection=false", num(l.damping)),
+                )
+            } else {
+                (
+                    "Translational.Sources.LinearSpeedDependentForce",
+                    format!("f_nominal=-{}, v_nominal=1, ForceDirection=false", num(l.damping)),
+                )
+            };
             let _ = writeln!(
                 self.decl,
-                "  {lib}.Damper {damper}(d={})\n    \"Viscous damping of {name}: {what} = d * speed (URDF <dynamics damping>)\" {place};",
-                num(l.damping)
+                "  Modelica.Mechanics.{class} {damper}({params})\n    \"Viscous damping of {name}: {what} = -d * speed on the drive flange, housing fixed in the world (URDF <dynamics damping>)\" {place};"
             );
-            let want = at(self, &housing, 2);
-            let place = self.put(&housing, Class::TwoPort, want);
-            let _ = writeln!(
-                self.decl,
-                "  {lib}.Fixed {housing}\n    \"Housing of {name}'s damper (fixed in the world, as the joint's support)\" {place};"
-            );
-            self.connect(&drive, &format!("{damper}.flange_a"));
-            self.connect(&format!("{damper}.flange_b"), &format!("{housing}.flange"));
+            self.connect(&format!("{damper}.flange"), &drive);
         }
         if l.friction > 0.0 {
             let f = self.scope.take(&format!("{name}_friction"));

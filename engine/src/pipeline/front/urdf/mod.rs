@@ -199,8 +199,9 @@ struct RawJoint<'a, 'i> {
     origin: Isometry3<f64>,
     axis: Vector3<f64>,
     limits: Option<JointLimits>,
-    /// `<dynamics damping friction>` (zero when absent).
-    losses: ir::Losses,
+    /// `<dynamics damping friction>`: the element, and one value or one per movable element
+    /// (zero when absent).
+    losses: (roxmltree::Node<'a, 'i>, Vec<f64>, Vec<f64>),
     mimic: Option<(String, f64, f64, roxmltree::Node<'a, 'i>)>,
 }
 
@@ -550,18 +551,25 @@ impl<'d, 'i> Reader<'d, 'i> {
             )),
             None => None,
         };
+        // One value for every movable element, or one per element (Drake writes planar's as
+        // three numbers).
         let losses = match child(n, "dynamics") {
             Some(d) => {
-                let damping = self.opt_number(d, "damping")?.unwrap_or(0.0);
-                let friction = self.opt_number(d, "friction")?.unwrap_or(0.0);
-                for (k, v) in [("damping", damping), ("friction", friction)] {
-                    if v < 0.0 {
-                        return Err(self.err(d, format!("attribute `{k}` = {v} is negative (a passive loss must be 0 or more)")));
+                let list = |k: &str| -> Result<Vec<f64>, UrdfError> {
+                    let Some(text) = d.attribute(k) else { return Ok(vec![0.0]) };
+                    let v = text.split_whitespace().map(|t| self.number(d, k, t)).collect::<Result<Vec<f64>, _>>()?;
+                    if v.is_empty() {
+                        return Err(self.err(d, format!("attribute `{k}` is empty")));
                     }
-                }
-                ir::Losses { damping, friction }
+                    if let Some(x) = v.iter().find(|x| **x < 0.0) {
+                        return Err(self.err(d, format!("attribute `{k}` = {x} is negative (a passive loss must be 0 or more)")));
+                    }
+                    Ok(v)
+                };
+                let (damping, friction) = (list("damping")?, list("friction")?);
+                (d, damping, friction)
             }
-            None => ir::Losses::default(),
+            None => (n, vec![0.0], vec![0.0]),
         };
         Ok(RawJoint { node: n, name, kind, parent, child: child_link, origin, axis, limits, losses, mimic })
     }
@@ -881,10 +889,17 @@ impl<'d, 'i> Reader<'d, 'i> {
                 }
             };
             let mut primitives = primitives;
-            for p in &mut primitives {
-                if matches!(p.kind, PrimitiveKind::Revolute | PrimitiveKind::Prismatic) {
-                    p.losses = j.losses;
+            let movable = primitives.iter().filter(|p| matches!(p.kind, PrimitiveKind::Revolute | PrimitiveKind::Prismatic)).count();
+            let (dyn_node, damping, friction) = &j.losses;
+            for (k, v) in [("damping", damping), ("friction", friction)] {
+                if v.len() > 1 && v.len() != movable {
+                    return Err(self.err(*dyn_node, format!("attribute `{k}` has {} values; joint \"{}\" has {movable} movable element(s) (give one value, or one per element)", v.len(), ir::clip(&j.name, 200))));
                 }
+            }
+            let pick = |v: &Vec<f64>, k: usize| if v.len() == 1 { v[0] } else { v[k] };
+            for (k, p) in primitives.iter_mut().filter(|p| matches!(p.kind, PrimitiveKind::Revolute | PrimitiveKind::Prismatic)).enumerate()
+            {
+                p.losses = ir::Losses { damping: pick(damping, k), friction: pick(friction, k) };
             }
             let base = if j.parent == "world" {
                 push_ground(&mut model, &j.name, frame_pose, loc.clone())
