@@ -285,3 +285,53 @@ async fn limits_motions_trajectories_and_ik() {
     let list = json_of(app.get(&format!("{base}/motions")).await, 200).await;
     assert_eq!(list.as_array().expect("list").len(), 2);
 }
+
+/// Panda's fingers through the API: `panda_finger_joint2` mimics `panda_finger_joint1`, so
+/// `/joints` lists it as dependent with its coupling, a motion of the leader moves both, the
+/// follower's torque is the leader's to carry, and a keyframe that contradicts the coupling
+/// (finger1 = 0.04, finger2 = 0: the example) is a 422 naming it.
+#[tokio::test]
+async fn panda_fingers_follow_their_mimic_coupling() {
+    let Some(fx) = cad2mo_tests::common::fixtures_dir("panda_fingers_follow_their_mimic_coupling") else { return };
+    let urdf = std::fs::read(fx.join("urdf/Gepetto+example-robot-data/39aa9437/robots/panda_description/urdf/panda.urdf")).expect("panda");
+    let zip = cad2mo_engine::pipeline::back::bundle::write_zip(&[("panda.urdf".to_string(), urdf)]).expect("zip");
+    let app = TestApp::spawn().await;
+    let (id, _, job) = app.upload_model_ok(zip, &[]).await;
+    assert_eq!(app.wait_for_job(&job).await["status"], "succeeded");
+    let base = format!("/api/models/{id}");
+    let j = json_of(app.get(&format!("{base}/joints")).await, 200).await;
+    let joints = j["joints"].as_array().expect("joints");
+    let find =
+        |n: &str| joints.iter().find(|x| x["name"].as_str().is_some_and(|s| s.ends_with(n))).unwrap_or_else(|| panic!("no {n}: {j:#}"));
+    let (f1, f2) = (find("finger_joint1"), find("finger_joint2"));
+    let (n1, n2) = (f1["name"].as_str().expect("name").to_string(), f2["name"].as_str().expect("name").to_string());
+    assert_eq!(f1["independent"], true);
+    assert!(f1.get("mimic").is_none());
+    assert_eq!(f2["independent"], false, "{f2:#}");
+    assert_eq!(f2["mimic"], json!({"leader": n1, "multiplier": 1.0, "offset": 0.0}));
+    assert_eq!(f2["damping"], 0.3, "the URDF's <dynamics damping=\"0.3\">");
+    // Panda's zero pose is outside joints 4 and 6's ranges: the first keyframe starts inside.
+    let (n4, n6) = (
+        find("panda_joint4")["name"].as_str().expect("name").to_string(),
+        find("panda_joint6")["name"].as_str().expect("name").to_string(),
+    );
+    let start = json!({"kind": "joints", "values": {n4.clone(): -1.5, n6.clone(): 1.5}});
+    // The leader alone: both fingers open together; the follower's torque is on the leader.
+    let open = json!({"name": "open", "keyframes": [start.clone(), {"kind": "joints", "values": {n1.clone(): 0.04}, "interpolation": "quintic", "duration": 1.0}]});
+    let m = json_of(app.client.post(app.url(&format!("{base}/motions"))).json(&open).send().await.expect("post"), 201).await;
+    let t = json_of(app.get(&format!("{base}/motions/{}/trajectory?rate=100", m["id"].as_str().expect("id"))).await, 200).await;
+    let names: Vec<&str> =
+        t["joints"].as_array().expect("joints").iter().map(|x| x.as_str().or(x["name"].as_str()).expect("joint name")).collect();
+    let (i1, i2) = (names.iter().position(|n| *n == n1).expect("i1"), names.iter().position(|n| *n == n2).expect("i2"));
+    let col = |k: &str, i: usize| -> Vec<f64> { t[k][i].as_array().expect("axis").iter().map(|v| v.as_f64().expect("f")).collect() };
+    assert_eq!(col("q", i1), col("q", i2));
+    assert!((col("q", i2).last().copied().expect("last") - 0.04).abs() < 1e-12);
+    assert!(col("tau", i2).iter().all(|x| *x == 0.0), "the follower carries no torque of its own");
+    assert!(col("tau", i1).iter().any(|x| x.abs() > 0.0));
+    // The contradiction is refused, naming the coupling.
+    let bad = json!({"name": "bad", "keyframes": [start, {"kind": "joints", "values": {n1.clone(): 0.04, n2.clone(): 0.0}}]});
+    let b = json_of(app.client.post(app.url(&format!("{base}/motions"))).json(&bad).send().await.expect("post"), 201).await;
+    let p = json_of(app.get(&format!("{base}/motions/{}/trajectory", b["id"].as_str().expect("id"))).await, 422).await;
+    assert_eq!(p["errors"][0]["field"], format!("keyframes[1].values.{n2}"), "{p:#}");
+    assert!(p["detail"].as_str().expect("detail").contains("mimic coupling"), "{p:#}");
+}

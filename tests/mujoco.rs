@@ -51,32 +51,55 @@ fn prepare(name: &str, xml: &str) -> Option<(Mechanism, String)> {
 
 /// Runs the comparison; `Err` with the worst mismatch. `None` when mujoco is unavailable.
 fn compare(label: &str, m: &Mechanism, mjcf: &str, samples: usize, seed: u64) -> Option<Result<f64, String>> {
+    compare_with(label, m, mjcf, samples, seed, false)
+}
+
+/// [`compare`]; with `losses`, ours is [`Mechanism::inverse_dynamics_with_losses`] and MuJoCo keeps
+/// the MJCF's joint `damping` (its `qfrc_inverse` then includes `damping * qvel`), while the
+/// Coulomb friction is added to MuJoCo's torque here by our own formula,
+/// `frictionloss * sign(qvel)` with the MJCF's `frictionloss` (MuJoCo's frictionloss is a soft
+/// constraint, not this law; it is disabled in the script). Samples have random nonzero speeds.
+fn compare_with(label: &str, m: &Mechanism, mjcf: &str, samples: usize, seed: u64, losses: bool) -> Option<Result<f64, String>> {
     let dir = tempfile::tempdir().expect("tempdir");
     let model_path = dir.path().join("model.mjcf.xml");
     std::fs::write(&model_path, mjcf).expect("write mjcf");
-    let g = Vector3::new(0.0, -9.81, 0.0);
+    // The MJCF's own gravity (-y for SimMechanics XML, -z for URDF).
+    let g = mjcf
+        .split("<option gravity=\"")
+        .nth(1)
+        .and_then(|r| r.split('"').next())
+        .map(|t| t.split_whitespace().map(|x| x.parse::<f64>().expect("gravity")).collect::<Vec<_>>())
+        .map(|v| Vector3::new(v[0], v[1], v[2]))
+        .expect("the MJCF states its gravity");
     let mut rng = XorShift::new(seed);
     let mut ws = m.workspace();
     let n = m.dof();
     let mut ours = Vec::new();
     let mut qs = Vec::new();
+    let mut qds = Vec::new();
     let mut spec = Vec::new();
     for _ in 0..samples {
         let q: Vec<f64> = m.q0().iter().map(|q| q + rng.range(-1.0, 1.0)).collect();
         let qd: Vec<f64> = (0..n).map(|_| rng.range(-2.0, 2.0)).collect();
         let qdd: Vec<f64> = (0..n).map(|_| rng.range(-5.0, 5.0)).collect();
         let mut tau = vec![0.0; n];
-        m.inverse_dynamics(&q, &qd, &qdd, &g, &mut ws, &mut tau).expect("rnea");
+        if losses {
+            m.inverse_dynamics_with_losses(&q, &qd, &qdd, &g, &mut ws, &mut tau).expect("rnea");
+        } else {
+            m.inverse_dynamics(&q, &qd, &qdd, &g, &mut ws, &mut tau).expect("rnea");
+        }
         let by_name = |v: &[f64]| -> serde_json::Map<String, serde_json::Value> {
             m.coordinates().iter().zip(v).map(|(c, x)| (c.name.clone(), serde_json::json!(x))).collect()
         };
         spec.push(serde_json::json!({"q": by_name(&q), "qd": by_name(&qd), "qdd": by_name(&qdd)}));
         ours.push(tau);
         qs.push(q);
+        qds.push(qd);
     }
     let input = dir.path().join("in.json");
     let output = dir.path().join("out.json");
-    std::fs::write(&input, serde_json::json!({"model": model_path, "samples": spec}).to_string()).expect("write spec");
+    std::fs::write(&input, serde_json::json!({"model": model_path, "samples": spec, "keep_damping": losses}).to_string())
+        .expect("write spec");
     let script = workspace_root().join("tests/tools/mujoco_check.py");
     let run = Command::new("python3").arg(&script).arg(&input).arg(&output).output();
     let run = match run {
@@ -118,7 +141,19 @@ fn compare(label: &str, m: &Mechanism, mjcf: &str, samples: usize, seed: u64) ->
         }
     }
     for (s, tau) in ours.iter().enumerate() {
-        let theirs: Vec<f64> = m.coordinates().iter().map(|c| result["tau"][s][&c.name].as_f64().unwrap_or(f64::NAN)).collect();
+        let friction = |c: &cad2mo_engine::mechanism::Coordinate| {
+            if losses {
+                result["frictionloss"][&c.name].as_f64().unwrap_or(f64::NAN)
+            } else {
+                0.0
+            }
+        };
+        let theirs: Vec<f64> = m
+            .coordinates()
+            .iter()
+            .zip(&qds[s])
+            .map(|(c, v)| result["tau"][s][&c.name].as_f64().unwrap_or(f64::NAN) + friction(c) * v.signum())
+            .collect();
         let scale = theirs.iter().fold(0.0f64, |a, t| a.max(t.abs()));
         for (k, (a, b)) in tau.iter().zip(&theirs).enumerate() {
             let err = (a - b).abs();
@@ -224,4 +259,103 @@ print(m.neq, d.qpos[lead], d.qpos[follow])
     assert_eq!(v[0], 1.0, "one equality: {text}");
     assert!((v[2] - 2.0 * v[1]).abs() < 1e-3, "the follower tracks 2 x the leader: {text}");
     println!("MuJoCo: leader {:.6} rad, follower {:.6} rad (mimic 2x)", v[1], v[2]);
+}
+
+/// An iiwa-like 7-axis arm as URDF (axes z, y, z, y, z, y, z; masses and inertias of the
+/// iiwa's order of magnitude, principal moments within MuJoCo's `A + B >= C`) with `<dynamics damping friction>` on every joint. The values
+/// are the test's own, not KUKA's.
+fn iiwa_like_urdf() -> String {
+    let mut s = String::from("<robot name=\"iiwa_like\">\n  <link name=\"world\"/>\n");
+    let masses = [5.76, 6.35, 3.5, 3.5, 3.5, 1.8, 1.2, 0.3];
+    for (i, m) in masses.iter().enumerate() {
+        s.push_str(&format!(
+            "  <link name=\"link_{i}\"><inertial><origin xyz=\"0.0{i} -0.03 0.12\" rpy=\"0.{i} 0.2 -0.1\"/><mass value=\"{m}\"/><inertia ixx=\"0.02{i}\" ixy=\"0.001\" ixz=\"-0.0005\" iyy=\"0.03\" iyz=\"0.0007\" izz=\"0.015{i}\"/></inertial></link>\n"
+        ));
+    }
+    s.push_str("  <joint name=\"base\" type=\"fixed\"><parent link=\"world\"/><child link=\"link_0\"/></joint>\n");
+    for i in 1..8 {
+        let axis = if i % 2 == 1 { "0 0 1" } else { "0 1 0" };
+        let z = if i == 1 { 0.1575 } else { 0.2 };
+        s.push_str(&format!(
+            "  <joint name=\"joint_{i}\" type=\"revolute\"><parent link=\"link_{}\"/><child link=\"link_{i}\"/><origin xyz=\"0 0 {z}\" rpy=\"0 0 0.{i}\"/><axis xyz=\"{axis}\"/><limit lower=\"-2.9\" upper=\"2.9\" effort=\"300\" velocity=\"10\"/><dynamics damping=\"{}\" friction=\"{}\"/></joint>\n",
+            i - 1,
+            0.5 + 0.1 * i as f64,
+            0.2 * i as f64
+        ));
+    }
+    s.push_str("</robot>\n");
+    s
+}
+
+/// Inverse dynamics with joint damping and Coulomb friction (`Mechanism::inverse_dynamics_with_losses`)
+/// against MuJoCo's `mj_inverse` with the MJCF's `damping` (from the URDF's own `<dynamics>`)
+/// and our friction formula on MuJoCo's side: the iiwa-like arm and the Panda fixture (its
+/// fingers' mimic equality disabled: the tree's own dynamics).
+#[test]
+fn rnea_with_urdf_dynamics_agrees_with_mujoco() {
+    let mut models = vec![("iiwa_like.urdf".to_string(), iiwa_like_urdf())];
+    if let Some(fx) = fixtures_dir("rnea_with_urdf_dynamics_agrees_with_mujoco") {
+        let panda = fx.join("urdf/Gepetto+example-robot-data/39aa9437/robots/panda_description/urdf/panda.urdf");
+        models.push(("panda.urdf".to_string(), std::fs::read_to_string(&panda).expect("panda.urdf")));
+    }
+    for (label, text) in &models {
+        let (m, mjcf) = prepare(label, text).unwrap_or_else(|| panic!("{label}: prepared"));
+        assert!(m.has_losses(), "{label}: the URDF's <dynamics> reach the mechanism");
+        assert!(mjcf.contains(" damping=\""), "{label}: the MJCF keeps the damping");
+        if label.starts_with("iiwa") {
+            assert!(mjcf.contains(" frictionloss=\""), "{label}: the MJCF keeps the friction");
+        }
+        match compare_with(label, &m, &mjcf, 30, 5, true) {
+            None => return,
+            Some(Ok(_)) => {}
+            Some(Err(e)) => panic!("{e}"),
+        }
+    }
+}
+
+/// The losses reach every back end: `Mechanics.mo` (a `LinearSpeedDependentTorque` / `Force`,
+/// `-d * speed`, and a `BearingFriction` / `SupportFriction` on the drive flange, classes and parameters checked by
+/// msl-check), the URDF (`<dynamics>`) and the MJCF (`damping`, `frictionloss`).
+#[test]
+fn losses_reach_modelica_urdf_and_mjcf() {
+    let urdf = r#"<robot name="slide">
+  <link name="world"/>
+  <link name="base"><inertial><mass value="2"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial></link>
+  <link name="arm"><inertial><origin xyz="0.2 0 0"/><mass value="1"/><inertia ixx="0.001" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial></link>
+  <link name="carriage"><inertial><mass value="0.5"/><inertia ixx="0.001" ixy="0" ixz="0" iyy="0.001" iyz="0" izz="0.001"/></inertial></link>
+  <joint name="fix" type="fixed"><parent link="world"/><child link="base"/></joint>
+  <joint name="turn" type="revolute"><parent link="base"/><child link="arm"/><origin xyz="0 0 0.1"/><axis xyz="0 0 1"/><limit lower="-2" upper="2" effort="10" velocity="2"/><dynamics damping="0.6" friction="0.2"/></joint>
+  <joint name="slide" type="prismatic"><parent link="arm"/><child link="carriage"/><origin xyz="0.3 0 0"/><axis xyz="1 0 0"/><limit lower="0" upper="0.2" effort="100" velocity="1"/><dynamics damping="12.5" friction="3"/></joint>
+</robot>"#;
+    let bundle = Bundle::from_files("x", [("slide.urdf".to_string(), urdf.as_bytes().to_vec())]).expect("bundle");
+    let out = pipeline::convert(&bundle, &Options { write_shapes: false, ..Options::default() }).expect("convert");
+    let text = |suffix: &str| {
+        let (_, b) = out.files.iter().find(|(p, _)| p.ends_with(suffix)).unwrap_or_else(|| panic!("no {suffix}"));
+        String::from_utf8(b.clone()).expect("utf-8")
+    };
+    let mo = text("/Mechanics.mo");
+    for want in [
+        "Modelica.Mechanics.Rotational.Sources.LinearSpeedDependentTorque turn_damper(tau_nominal=-0.6, w_nominal=1, TorqueDirection=false)",
+        "Modelica.Mechanics.Rotational.Components.BearingFriction turn_friction(tau_pos=[0, 0.2], peak=1)",
+        "Modelica.Mechanics.Translational.Sources.LinearSpeedDependentForce slide_damper(f_nominal=-12.5, v_nominal=1, ForceDirection=false)",
+        "Modelica.Mechanics.Translational.Components.SupportFriction slide_friction(f_pos=[0, 3.0], peak=1)",
+        "connect(turn_damper.flange, turn.drive)",
+        "connect(turn.drive, turn_friction.flange_a)",
+        "connect(slide_damper.flange, slide.drive)",
+        "connect(slide.drive, slide_friction.flange_a)",
+    ] {
+        assert!(mo.contains(want), "Mechanics.mo lacks {want}:\n{mo}");
+    }
+    let robot = text("/slide.urdf");
+    assert!(
+        robot.contains(r#"<dynamics damping="0.6" friction="0.2"/>"#) && robot.contains(r#"<dynamics damping="12.5" friction="3.0"/>"#),
+        "{robot}"
+    );
+    let mjcf = text(".mjcf.xml");
+    assert!(mjcf.contains(r#"damping="0.6" frictionloss="0.2""#) && mjcf.contains(r#"damping="12.5" frictionloss="3.0""#), "{mjcf}");
+    let dir = tempfile::tempdir().expect("tempdir");
+    cad2mo_tests::common::write_output(&out, dir.path());
+    if let Some(r) = cad2mo_tests::common::msl_check(dir.path()) {
+        assert!(r.is_ok(), "msl-check: {}", r.unwrap_or_else(|e| e));
+    }
 }

@@ -284,7 +284,16 @@ pub fn element(model: &Model, c: &Component) -> Result<Element, String> {
         };
     }
     // 1-D couplings between drive flanges (URDF mimic) move no frame.
-    if matches!(class, "Modelica.Mechanics.Rotational.Components.IdealGear" | "Modelica.Mechanics.Rotational.Components.IdealGearR2T") {
+    // ... nor do the joints' losses on them (URDF dynamics: damping, friction).
+    if matches!(
+        class,
+        "Modelica.Mechanics.Rotational.Components.IdealGear"
+            | "Modelica.Mechanics.Rotational.Components.IdealGearR2T"
+            | "Modelica.Mechanics.Rotational.Sources.LinearSpeedDependentTorque"
+            | "Modelica.Mechanics.Rotational.Components.BearingFriction"
+            | "Modelica.Mechanics.Translational.Sources.LinearSpeedDependentForce"
+            | "Modelica.Mechanics.Translational.Components.SupportFriction"
+    ) {
         return Ok(Element::Leaf);
     }
     match class.strip_prefix(model.package.as_str()).and_then(|s| s.strip_prefix(".Components.")) {

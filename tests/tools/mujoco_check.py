@@ -2,11 +2,15 @@
 """Inverse dynamics by MuJoCo for the cad2mo cross-check (tests/mujoco.rs).
 
 Usage: mujoco_check.py IN.json OUT.json
-IN: {"model": "<path to .mjcf.xml>", "samples": [{"q": {joint: value}, "qd": {...}, "qdd": {...}}]}
+IN: {"model": "<path to .mjcf.xml>", "samples": [{"q": {joint: value}, "qd": {...}, "qdd": {...}}],
+     "keep_damping": false}
 OUT: {"mujoco": "<version>", "nv": n, "tau": [{joint: qfrc_inverse}],
       "xpos": [{body: [x, y, z]}], "xquat": [{body: [w, x, y, z]}]}  (world poses after mj_inverse)
 Mesh geoms and assets are dropped (inertiafromgeom is false: they only draw); contacts are
-disabled; damping and armature are zero. Exit code 3 when mujoco cannot be imported.
+disabled; armature is zero; damping is zero unless "keep_damping" (then the MJCF's joint
+`damping` stays: qfrc_inverse includes damping * qvel); equality constraints (mimic) and
+frictionloss are disabled (the tree's own inverse dynamics; MuJoCo's frictionloss is a soft
+constraint, not a Coulomb sign law). Exit code 3 when mujoco cannot be imported.
 """
 import json
 import sys
@@ -19,7 +23,7 @@ except ImportError as e:  # pragma: no cover
     sys.exit(3)
 
 
-def load(path):
+def load(path, keep_damping=False):
     tree = ET.parse(path)
     root = tree.getroot()
     for asset in root.findall("asset"):
@@ -30,14 +34,17 @@ def load(path):
                 parent.remove(geom)
     model = mujoco.MjModel.from_xml_string(ET.tostring(root, encoding="unicode"))
     model.opt.disableflags |= mujoco.mjtDisableBit.mjDSBL_CONTACT
-    model.dof_damping[:] = 0.0
+    model.opt.disableflags |= mujoco.mjtDisableBit.mjDSBL_EQUALITY
+    model.opt.disableflags |= mujoco.mjtDisableBit.mjDSBL_FRICTIONLOSS
+    if not keep_damping:
+        model.dof_damping[:] = 0.0
     model.dof_armature[:] = 0.0
     return model
 
 
 def main():
     spec = json.load(open(sys.argv[1]))
-    model = load(spec["model"])
+    model = load(spec["model"], spec.get("keep_damping", False))
     data = mujoco.MjData(model)
     out, xpos, xquat = [], [], []
     for s in spec["samples"]:
@@ -60,7 +67,12 @@ def main():
         names = [mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_BODY, b) for b in range(1, model.nbody)]
         xpos.append({n: [float(x) for x in data.xpos[b + 1]] for b, n in enumerate(names)})
         xquat.append({n: [float(x) for x in data.xquat[b + 1]] for b, n in enumerate(names)})
-    json.dump({"mujoco": mujoco.__version__, "nv": int(model.nv), "tau": out, "xpos": xpos, "xquat": xquat}, open(sys.argv[2], "w"))
+    names = spec["samples"][0]["q"] if spec["samples"] else {}
+    dof = {n: model.jnt_dofadr[mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_JOINT, n)] for n in names}
+    json.dump({"mujoco": mujoco.__version__, "nv": int(model.nv),
+               "damping": {n: float(model.dof_damping[d]) for n, d in dof.items()},
+               "frictionloss": {n: float(model.dof_frictionloss[d]) for n, d in dof.items()},
+               "tau": out, "xpos": xpos, "xquat": xquat}, open(sys.argv[2], "w"))
 
 
 if __name__ == "__main__":

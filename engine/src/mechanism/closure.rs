@@ -9,7 +9,9 @@
 //!   perpendicular to the axis `n` (2 equations);
 //! - `Joints.Constraints.*`: the locked components of frame_b's origin in frame_a, and for
 //!   `Revolute` the axis `n` kept (2), for `Prismatic` no relative rotation (3), for `Universal`
-//!   `n_a ⟂ n_b` (1).
+//!   `n_a ⟂ n_b` (1);
+//! - and per mimic coupling (`CoordCoupling`): `q_f - m q_l - offset` (1, linear: its Jacobian
+//!   rows are set exactly, never differenced).
 
 use nalgebra::{DMatrix, DVector, Vector3};
 
@@ -44,7 +46,8 @@ impl Mechanism {
                 ClosureForm::Planar { .. } => 2,
                 ClosureForm::Constraint { class, locked, .. } => locked.iter().filter(|l| **l).count() + class.rotation_equations(),
             })
-            .sum()
+            .sum::<usize>()
+            + self.couplings.len()
     }
 
     /// The closure residuals at tree coordinates `q` and cut coordinates `cut`.
@@ -53,13 +56,14 @@ impl Mechanism {
         if cut.len() != self.cut_coordinates.len() {
             return Err(MechanismError::Length { what: "cut coordinates", expected: self.cut_coordinates.len(), got: cut.len() });
         }
-        let k = self.forward(q)?;
+        let k = if self.closures.is_empty() { Kinematics::default() } else { self.forward(q)? };
         let mut out = Vec::with_capacity(self.closure_equations());
-        self.residual_into(&k, cut, &mut out);
+        self.residual_into(&k, q, cut, &mut out);
         Ok(out)
     }
 
-    fn residual_into(&self, k: &Kinematics, cut: &[f64], out: &mut Vec<f64>) {
+    /// The residuals: the loops' (in order), then one per mimic coupling, `q_f - m q_l - offset`.
+    fn residual_into(&self, k: &Kinematics, q: &[f64], cut: &[f64], out: &mut Vec<f64>) {
         out.clear();
         for c in &self.closures {
             let a = self.attachment_pose(k, &c.a);
@@ -98,12 +102,18 @@ impl Mechanism {
                 }
             }
         }
+        for c in &self.couplings {
+            out.push(q[c.follower] - c.multiplier * q[c.leader] - c.offset);
+        }
     }
 
     /// Solves the dependent tree coordinates of `q` and the cut coordinates `cut` (both used as
     /// the starting guess) so that every loop closes, keeping the independent coordinates.
     /// Newton iteration with a least-squares step (SVD) and step halving.
     pub fn assemble(&self, q: &mut [f64], cut: &mut [f64]) -> Result<Assembly, MechanismError> {
+        self.check_len("coordinates", q)?;
+        // Mimic followers exactly from their leaders first (the loops, if any, may move them on).
+        self.propagate_couplings(q, true);
         let mut r = self.closure_residual(q, cut)?;
         let unknowns: Vec<(bool, usize)> = (0..q.len())
             .filter(|&i| !self.coordinates[i].independent)
@@ -116,7 +126,7 @@ impl Mechanism {
         let mut scratch = Vec::new();
         let eval = |q: &[f64], cut: &[f64], k: &mut Kinematics, out: &mut Vec<f64>| {
             self.forward_into(q, k);
-            self.residual_into(k, cut, out);
+            self.residual_into(k, q, cut, out);
         };
         let get = |q: &[f64], cut: &[f64], u: (bool, usize)| if u.0 { q[u.1] } else { cut[u.1] };
         fn set(q: &mut [f64], cut: &mut [f64], u: (bool, usize), x: f64) {

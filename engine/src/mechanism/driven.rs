@@ -11,6 +11,8 @@
 //! - torques (ideal constraints, virtual work): with `G = ∂x/∂x_i = [I; -Φ_u⁺ Φ_i]`, the driven
 //!   torques are `τ_i = Gᵀ τ_tree`, `τ_tree` the tree's inverse dynamics at `(q, q̇, q̈)` (the
 //!   closing joints carry no mass); the followers carry none.
+//! - mimic couplings (`q_f = m q_l + offset`) are closure equations too, linear and exact: the
+//!   follower is dependent, its torque lands on its leader (`τ_l += m τ_f`).
 //!
 //! Jacobians are central differences of the residual (step 1e-7; 1e-4 for the second
 //! derivative), which leaves relative errors near 1e-8: far below what sizing needs, checked by
@@ -31,8 +33,8 @@ pub struct ClosedState {
 }
 
 /// See [`Mechanism::linearise`].
-struct Linearised {
-    g: DMatrix<f64>,
+pub(super) struct Linearised {
+    pub(super) g: DMatrix<f64>,
     phi_i: DMatrix<f64>,
     svd: nalgebra::SVD<f64, nalgebra::Dyn, nalgebra::Dyn>,
     eps: f64,
@@ -44,7 +46,7 @@ impl Mechanism {
         (0..self.coordinates.len()).filter(|&i| self.coordinates[i].independent).collect()
     }
 
-    fn x_split(&self) -> (Vec<usize>, Vec<usize>) {
+    pub(super) fn x_split(&self) -> (Vec<usize>, Vec<usize>) {
         let n = self.coordinates.len();
         let driven = self.driven();
         let follow: Vec<usize> = (0..n).filter(|i| !self.coordinates[*i].independent).chain(n..n + self.cut_coordinates.len()).collect();
@@ -56,25 +58,37 @@ impl Mechanism {
         Ok(DVector::from_vec(self.closure_residual(&x[..n], &x[n..])?))
     }
 
-    /// `∂Φ/∂x` at `x = (q, cut)` by central differences.
+    /// `∂Φ/∂x` at `x = (q, cut)`: the loops' rows by central differences, the couplings' exact.
     fn closure_jacobian(&self, x: &[f64]) -> Result<DMatrix<f64>, MechanismError> {
         let h = 1e-7;
         let mut xp = x.to_vec();
-        let mut jac = DMatrix::zeros(self.closure_equations(), x.len());
+        let rows = self.closure_equations();
+        let mut jac = DMatrix::zeros(rows, x.len());
+        let first = rows - self.couplings.len();
+        for (r, c) in self.couplings.iter().enumerate() {
+            jac[(first + r, c.follower)] += 1.0;
+            jac[(first + r, c.leader)] -= c.multiplier;
+        }
+        if self.closures.is_empty() {
+            return Ok(jac);
+        }
         for c in 0..x.len() {
             xp[c] = x[c] + h;
             let p = self.residual_x(&xp)?;
             xp[c] = x[c] - h;
             let m = self.residual_x(&xp)?;
             xp[c] = x[c];
-            jac.set_column(c, &((p - m) / (2.0 * h)));
+            let col = (p - m) / (2.0 * h);
+            for r in 0..first {
+                jac[(r, c)] = col[r];
+            }
         }
         Ok(jac)
     }
 
     /// The closure linearised at `x`: `G = ∂x/∂x_i` (columns: driven coordinates), and `Φ_i` and
     /// the SVD of `Φ_u` for solving the followers' accelerations.
-    fn linearise(&self, x: &[f64], driven: &[usize], follow: &[usize]) -> Result<Linearised, MechanismError> {
+    pub(super) fn linearise(&self, x: &[f64], driven: &[usize], follow: &[usize]) -> Result<Linearised, MechanismError> {
         let jac = self.closure_jacobian(x)?;
         let phi_u = jac.select_columns(follow);
         let phi_i = jac.select_columns(driven);
@@ -102,6 +116,9 @@ impl Mechanism {
         self.check_len("accelerations", &state.qdd)?;
         self.assemble(&mut state.q, &mut state.cut)?;
         if self.closures.is_empty() {
+            // Mimic couplings only: linear, so speeds and accelerations follow exactly.
+            self.propagate_couplings(&mut state.qd, false);
+            self.propagate_couplings(&mut state.qdd, false);
             return Ok(());
         }
         let n = self.coordinates.len();
@@ -116,7 +133,10 @@ impl Mechanism {
             let xs: Vec<f64> = x.iter().zip(xd.iter()).map(|(a, b)| a + s * b).collect();
             self.residual_x(&xs)
         };
-        let curv = (shifted(h)? - shifted(0.0)? * 2.0 + shifted(-h)?) / (h * h);
+        let mut curv = (shifted(h)? - shifted(0.0)? * 2.0 + shifted(-h)?) / (h * h);
+        // The couplings are linear: no curvature (the difference would only add rounding).
+        let first = curv.len() - self.couplings.len();
+        curv.rows_mut(first, self.couplings.len()).fill(0.0);
         let qdd_i = DVector::from_iterator(driven.len(), driven.iter().map(|&i| state.qdd[i]));
         let rhs = -(&lin.phi_i * qdd_i) - curv;
         let xdd_u = lin.svd.solve(&rhs, lin.eps).map_err(|e| MechanismError::Internal(e.to_string()))?;
@@ -130,7 +150,10 @@ impl Mechanism {
     }
 
     /// Torques (N·m or N) at the driven coordinates of a closed state, in the order of
-    /// [`Mechanism::driven`]; `tree` receives the tree's own inverse dynamics (length `dof`).
+    /// [`Mechanism::driven`]; `tree` receives the tree's own inverse dynamics with the joints'
+    /// losses ([`Mechanism::inverse_dynamics_with_losses`], length `dof`). A mimic follower's
+    /// torque is carried by its leader (`τ_l += m τ_f`, virtual work): the leader's drive moves
+    /// both through the coupling gear, as in the Modelica model.
     pub fn driven_torques(
         &self,
         state: &ClosedState,
@@ -138,14 +161,14 @@ impl Mechanism {
         ws: &mut Workspace,
         tree: &mut [f64],
     ) -> Result<Vec<f64>, MechanismError> {
-        self.inverse_dynamics(&state.q, &state.qd, &state.qdd, gravity, ws, tree)?;
+        self.inverse_dynamics_with_losses(&state.q, &state.qd, &state.qdd, gravity, ws, tree)?;
         self.project(state, tree)
     }
 
     /// `Gᵀ τ` for tree torques `tau` at the state's position.
     fn project(&self, state: &ClosedState, tau: &[f64]) -> Result<Vec<f64>, MechanismError> {
         let (driven, follow) = self.x_split();
-        if self.closures.is_empty() {
+        if !self.has_dependent() {
             return Ok(driven.iter().map(|&i| tau[i]).collect());
         }
         let x: Vec<f64> = state.q.iter().chain(&state.cut).copied().collect();
@@ -163,7 +186,7 @@ impl Mechanism {
         let (driven, follow) = self.x_split();
         let n = self.coordinates.len();
         let x: Vec<f64> = state.q.iter().chain(&state.cut).copied().collect();
-        let g = if self.closures.is_empty() {
+        let g = if !self.has_dependent() {
             let mut g = DMatrix::zeros(n, driven.len());
             for (k, &i) in driven.iter().enumerate() {
                 g[(i, k)] = 1.0;

@@ -57,6 +57,10 @@ pub struct IkResult {
     pub position_error: f64,
     /// Final rotation error, rad (0 for position targets).
     pub rotation_error: f64,
+    /// How many independent directions the driven coordinates move the tool in at `q` (rank of
+    /// the tool's Jacobian through the closure, over the target's rows: 6 for a pose, 3 for a
+    /// position). Below the target's rows, only a subset of targets is reachable.
+    pub mobility: usize,
 }
 
 impl Mechanism {
@@ -73,8 +77,9 @@ impl Mechanism {
     }
 
     /// Solves for tree coordinates that bring CAD frame `tool` to `target`, starting from `seed`
-    /// (length [`Mechanism::dof`]); restarts draw from `rng`. Mechanisms with loop closures are
-    /// refused ([`MechanismError::ClosedLoops`]).
+    /// (length [`Mechanism::dof`]); restarts draw from `rng`. Mechanisms with dependent
+    /// coordinates (loops, mimic couplings) are solved over their driven coordinates with the
+    /// closure kept ([`Mechanism::inverse_kinematics_closed`]).
     pub fn inverse_kinematics(
         &self,
         tool: FrameId,
@@ -83,8 +88,8 @@ impl Mechanism {
         opts: &IkOptions,
         rng: &mut XorShift,
     ) -> Result<IkResult, MechanismError> {
-        if self.has_loops() {
-            return Err(MechanismError::ClosedLoops);
+        if self.has_dependent() {
+            return self.inverse_kinematics_closed(tool, target, seed, opts, rng);
         }
         self.check_len("seed", seed)?;
         let at = *self.frame_attachment(tool).ok_or_else(|| MechanismError::Internal(format!("no frame {}", tool.0)))?;
@@ -182,10 +187,159 @@ impl Mechanism {
                 best = Some((score, q.clone(), dp, dr));
             }
             if success {
-                return Ok(IkResult { q, success, iterations: total, restarts: attempt, position_error: dp, rotation_error: dr });
+                let mobility = self.tool_mobility(&q, &[], tool, rows)?;
+                return Ok(IkResult { q, success, iterations: total, restarts: attempt, position_error: dp, rotation_error: dr, mobility });
             }
         }
         let (_, q, dp, dr) = best.ok_or_else(|| MechanismError::Internal("no IK attempt".into()))?;
-        Ok(IkResult { q, success: false, iterations: total, restarts: opts.restarts, position_error: dp, rotation_error: dr })
+        let mobility = self.tool_mobility(&q, &[], tool, rows)?;
+        Ok(IkResult { q, success: false, iterations: total, restarts: opts.restarts, position_error: dp, rotation_error: dr, mobility })
+    }
+
+    /// The tool's Jacobian with respect to the driven coordinates at an assembled `(q, cut)`:
+    /// `J_tree G` (`G = ∂x/∂x_i` through the closure), `rows` of it (6: `[angular; linear]`,
+    /// 3: linear).
+    fn driven_jacobian(&self, q: &[f64], cut: &[f64], tool: FrameId, rows: usize) -> Result<DMatrix<f64>, MechanismError> {
+        let at = *self.frame_attachment(tool).ok_or_else(|| MechanismError::Internal(format!("no frame {}", tool.0)))?;
+        let k = self.forward(q)?;
+        let mut jt = nalgebra::Matrix6xX::zeros(self.links.len());
+        self.jacobian_into(&k, &at, &mut jt);
+        let n = self.links.len();
+        let g = if self.has_dependent() {
+            let (driven, follow) = self.x_split();
+            let x: Vec<f64> = q.iter().chain(cut).copied().collect();
+            self.linearise(&x, &driven, &follow)?.g.rows(0, n).into_owned()
+        } else {
+            DMatrix::identity(n, n)
+        };
+        let full = DMatrix::from_column_slice(6, n, jt.as_slice()) * g;
+        Ok(if rows == 6 { full } else { full.rows(3, 3).into_owned() })
+    }
+
+    /// Rank of [`Self::driven_jacobian`] (singular values above 1e-9 of the largest, and above
+    /// 1e-12 absolutely).
+    fn tool_mobility(&self, q: &[f64], cut: &[f64], tool: FrameId, rows: usize) -> Result<usize, MechanismError> {
+        let cut: Vec<f64> = if cut.len() == self.cut_coordinates.len() { cut.to_vec() } else { self.cut_q0() };
+        let j = self.driven_jacobian(q, &cut, tool, rows)?;
+        let sv = j.singular_values();
+        let top = sv.max();
+        Ok(sv.iter().filter(|s| **s > 1e-9 * top && **s > 1e-12).count())
+    }
+
+    /// Inverse kinematics of a mechanism with dependent coordinates (loops, mimic couplings):
+    /// Levenberg-Marquardt as for trees, over the driven coordinates only, each iterate closed by
+    /// [`Mechanism::assemble`] (the closure is kept exactly; the tool's Jacobian is `J_tree G`).
+    /// A trial point where the loops cannot be assembled halves the step (up to 8 times) and
+    /// otherwise ends the attempt; restarts draw the driven coordinates inside their limits.
+    /// The returned `q` is assembled (every follower consistent). Dependent coordinates are not
+    /// clamped to their limits here (the motion planner checks them).
+    pub fn inverse_kinematics_closed(
+        &self,
+        tool: FrameId,
+        target: &IkTarget,
+        seed: &[f64],
+        opts: &IkOptions,
+        rng: &mut XorShift,
+    ) -> Result<IkResult, MechanismError> {
+        self.check_len("seed", seed)?;
+        let at = *self.frame_attachment(tool).ok_or_else(|| MechanismError::Internal(format!("no frame {}", tool.0)))?;
+        let limits = match &opts.limits {
+            Some(l) => {
+                self.check_len("limits", &l.iter().map(|x| x.0).collect::<Vec<_>>())?;
+                l.clone()
+            }
+            None => self.default_limits(),
+        };
+        let driven = self.driven();
+        let nd = driven.len();
+        if nd == 0 {
+            return Err(MechanismError::IkUnsupported("the mechanism has no driven joint".into()));
+        }
+        let rows = if matches!(target, IkTarget::Pose(_)) { 6 } else { 3 };
+        let error = |q: &[f64], e: &mut DVector<f64>| -> Result<(f64, f64), MechanismError> {
+            let k = self.forward(q)?;
+            let tool_pose = self.attachment_pose(&k, &at);
+            let p = tool_pose.translation.vector;
+            Ok(match target {
+                IkTarget::Pose(t) => {
+                    let rot = (t.rotation * tool_pose.rotation.inverse()).scaled_axis();
+                    let dp = t.translation.vector - p;
+                    e.fixed_rows_mut::<3>(0).copy_from(&rot);
+                    e.fixed_rows_mut::<3>(3).copy_from(&dp);
+                    (dp.norm(), rot.norm())
+                }
+                IkTarget::Position(t) => {
+                    let dp = t - p;
+                    e.fixed_rows_mut::<3>(0).copy_from(&dp);
+                    (dp.norm(), 0.0)
+                }
+            })
+        };
+        let mut e = DVector::<f64>::zeros(rows);
+        let mut total = 0;
+        // (score, q, cut, position error, rotation error) of the best attempt.
+        type Best = (f64, Vec<f64>, Vec<f64>, f64, f64);
+        let mut best: Option<Best> = None;
+        for attempt in 0..=opts.restarts {
+            let mut q = if attempt == 0 { seed.to_vec() } else { self.q0() };
+            for &i in &driven {
+                q[i] = if attempt == 0 { q[i].clamp(limits[i].0, limits[i].1) } else { rng.range(limits[i].0, limits[i].1) };
+            }
+            let mut cut = self.cut_q0();
+            if self.assemble(&mut q, &mut cut).is_err() {
+                continue;
+            }
+            let (mut dp, mut dr) = error(&q, &mut e)?;
+            for _ in 0..opts.max_iterations {
+                if dp < opts.tol_position && dr < opts.tol_rotation {
+                    break;
+                }
+                total += 1;
+                let jac = self.driven_jacobian(&q, &cut, tool, rows)?;
+                let energy = 0.5 * e.norm_squared();
+                let mut a = jac.tr_mul(&jac);
+                for d in 0..nd {
+                    a[(d, d)] += opts.damping * energy;
+                }
+                let g = jac.tr_mul(&e);
+                let Some(chol) = a.cholesky() else { break };
+                let step = chol.solve(&g);
+                let mut t = 1.0;
+                let mut moved = false;
+                for _ in 0..8 {
+                    let (mut qt, mut ct) = (q.clone(), cut.clone());
+                    for (k, &i) in driven.iter().enumerate() {
+                        qt[i] = (q[i] + t * step[k]).clamp(limits[i].0, limits[i].1);
+                    }
+                    if self.assemble(&mut qt, &mut ct).is_ok() {
+                        q = qt;
+                        cut = ct;
+                        moved = true;
+                        break;
+                    }
+                    t *= 0.5;
+                }
+                if !moved {
+                    break;
+                }
+                (dp, dr) = error(&q, &mut e)?;
+            }
+            let success = dp < opts.tol_position && dr < opts.tol_rotation;
+            let score = dp + dr;
+            if best.as_ref().is_none_or(|b| score < b.0) {
+                best = Some((score, q.clone(), cut.clone(), dp, dr));
+            }
+            if success {
+                let mobility = self.tool_mobility(&q, &cut, tool, rows)?;
+                return Ok(IkResult { q, success, iterations: total, restarts: attempt, position_error: dp, rotation_error: dr, mobility });
+            }
+        }
+        let Some((_, q, cut, dp, dr)) = best else {
+            return Err(MechanismError::IkUnsupported(
+                "the loops could not be assembled at the starting joint values nor at any restart inside the driven joints' limits".into(),
+            ));
+        };
+        let mobility = self.tool_mobility(&q, &cut, tool, rows)?;
+        Ok(IkResult { q, success: false, iterations: total, restarts: opts.restarts, position_error: dp, rotation_error: dr, mobility })
     }
 }

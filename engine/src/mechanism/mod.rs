@@ -29,13 +29,21 @@
 //!   independent coordinates are handled by [`Mechanism::close`] and
 //!   [`Mechanism::driven_torques`] (`driven.rs`), which project the tree's torques onto the
 //!   driven joints.
-//! - Inverse kinematics works on tree mechanisms (no loop closures).
+//! - Inverse kinematics of mechanisms with loops or mimic couplings moves the driven
+//!   coordinates only (the closure kept at every iterate); the dependent coordinates are not
+//!   clamped to their limits there.
+//! - Mimic couplings ([`CoordCoupling`]) are those the Modelica back end emits (one revolute or
+//!   prismatic element on each side, tree joints); the follower is dependent and its torque is
+//!   carried by its leader (virtual work). A cycle of couplings is refused.
+//! - Joint losses ([`Mechanism::passive_torques`]) are on tree coordinates; a loop's closing
+//!   joint emitted plainly carries none here.
 
 mod closure;
 mod driven;
 mod dynamics;
 mod ik;
 mod kinematics;
+mod passive;
 mod rng;
 
 use std::collections::BTreeMap;
@@ -53,6 +61,7 @@ pub use driven::ClosedState;
 pub use dynamics::Workspace;
 pub use ik::{IkOptions, IkResult, IkTarget};
 pub use kinematics::Kinematics;
+pub use passive::{friction_sign, REST_SPEED};
 pub use rng::XorShift;
 
 /// Why a mechanism cannot be built or a computation failed.
@@ -72,6 +81,10 @@ pub enum MechanismError {
     UnknownFrame(String),
     #[error("inverse kinematics of mechanisms with closed loops is not supported yet")]
     ClosedLoops,
+    #[error("mimic coupling of joint \"{joint}\": {why}")]
+    Coupling { joint: String, why: String },
+    #[error("inverse kinematics target not supported: {0}")]
+    IkUnsupported(String),
     #[error("internal inconsistency: {0}")]
     Internal(String),
 }
@@ -99,6 +112,19 @@ pub struct Coordinate {
     pub independent: bool,
     /// The limits the source states for the joint (URDF), when the joint has this one element.
     pub source_limits: Option<crate::pipeline::ir::JointLimits>,
+    /// The element's passive losses (see [`Mechanism::passive_torques`]).
+    pub losses: crate::pipeline::ir::Losses,
+}
+
+/// A mimic coupling as the mechanism honours it: tree coordinate `follower` =
+/// `multiplier` × tree coordinate `leader` + `offset` (Modelica coordinates; the `IdealGear` /
+/// `IdealGearR2T` the Modelica back end writes between the two drive flanges).
+#[derive(Clone, Debug, PartialEq)]
+pub struct CoordCoupling {
+    pub follower: usize,
+    pub leader: usize,
+    pub multiplier: f64,
+    pub offset: f64,
 }
 
 /// Where something sits: a fixed transform from a link frame (or the world) to it.
@@ -163,12 +189,61 @@ pub struct Mechanism {
     frames: Vec<Attachment>,
     frame_ids: BTreeMap<String, FrameId>,
     pub(crate) closures: Vec<Closure>,
+    /// Mimic couplings (their followers are dependent coordinates).
+    pub(crate) couplings: Vec<CoordCoupling>,
 }
 
 /// A tree link's motion at coordinate `q` (see [`crate::pipeline::passes::kinematics::element_motion`]).
 fn element_motion(prismatic: bool, axis: &Vector3<f64>, q: f64) -> Isometry3<f64> {
     let kind = if prismatic { PrimitiveKind::Prismatic } else { PrimitiveKind::Revolute };
     crate::pipeline::passes::kinematics::element_motion(kind, axis, q)
+}
+
+/// The mimic couplings the Modelica back end emits (leader and follower each one revolute or
+/// prismatic element of a tree joint), as coordinate couplings; each follower becomes
+/// dependent. A follower of two couplings, or a cycle of couplings, is refused.
+fn couplings_of(model: &Model, v: &Validated, coords: &mut [Coordinate]) -> Result<Vec<CoordCoupling>, MechanismError> {
+    let single = |j: JointId| -> Option<usize> {
+        let chain = v.analysis.chains.get(j.index())?;
+        if chain.elements.len() != 1 || !matches!(chain.elements[0].kind, PrimitiveKind::Revolute | PrimitiveKind::Prismatic) {
+            return None;
+        }
+        coords.iter().position(|c| c.joint == j)
+    };
+    let mut out: Vec<CoordCoupling> = Vec::new();
+    for c in &model.couplings {
+        let (Some(f), Some(l)) = (single(c.follower), single(c.leader)) else { continue };
+        if out.iter().any(|o| o.follower == f) {
+            return Err(MechanismError::Coupling { joint: model.joint(c.follower).cad_name.clone(), why: "it follows two joints".into() });
+        }
+        out.push(CoordCoupling { follower: f, leader: l, multiplier: c.multiplier, offset: c.offset });
+    }
+    // Cycles: following the leaders from a follower must not come back to it.
+    for start in &out {
+        let mut cur = start.leader;
+        for _ in 0..=out.len() {
+            if cur == start.follower {
+                return Err(MechanismError::Coupling {
+                    joint: model.joint(coords[start.follower].joint).cad_name.clone(),
+                    why: "the mimic couplings form a cycle (no joint of it is independent)".into(),
+                });
+            }
+            match out.iter().find(|o| o.follower == cur) {
+                Some(o) => cur = o.leader,
+                None => break,
+            }
+        }
+    }
+    for o in &out {
+        coords[o.follower].independent = false;
+    }
+    Ok(out)
+}
+
+/// The losses of element `k` of joint `j` (its `k`-th primitive that is not a weld: the
+/// kinematics pass's chain elements).
+fn element_losses(model: &Model, j: JointId, k: usize) -> crate::pipeline::ir::Losses {
+    model.joint(j).primitives.iter().filter(|p| p.kind != PrimitiveKind::Weld).nth(k).map(|p| p.losses).unwrap_or_default()
 }
 
 impl Mechanism {
@@ -255,6 +330,7 @@ impl Mechanism {
                     q0: e.q0,
                     independent: e.fixed,
                     source_limits: model.joint(j).limits.clone().filter(|_| chain.elements.len() == 1),
+                    losses: element_losses(model, j, k),
                 });
                 *link = Some(links.len() - 1);
                 *x = Isometry3::identity();
@@ -334,6 +410,7 @@ impl Mechanism {
                             q0: e.q0,
                             independent: false,
                             source_limits: None,
+                            losses: element_losses(model, l.closing, k),
                         });
                     }
                     let a = Attachment { link: base.link, offset: base.offset * chain.pre };
@@ -362,6 +439,7 @@ impl Mechanism {
             };
             closures.push(closure);
         }
+        let couplings = couplings_of(model, v, &mut coordinates)?;
         Ok(Mechanism {
             coordinates,
             cut_coordinates,
@@ -371,6 +449,7 @@ impl Mechanism {
             frames,
             frame_ids,
             closures,
+            couplings,
         })
     }
 
@@ -417,6 +496,46 @@ impl Mechanism {
         !self.closures.is_empty()
     }
 
+    /// Whether some tree coordinates are dependent (loop closures or mimic couplings): then only
+    /// the [`Mechanism::driven`] coordinates are set, the others follow ([`Mechanism::close`]).
+    pub fn has_dependent(&self) -> bool {
+        !self.closures.is_empty() || !self.couplings.is_empty()
+    }
+
+    /// The mimic couplings the mechanism honours (see [`CoordCoupling`]).
+    pub fn couplings(&self) -> &[CoordCoupling] {
+        &self.couplings
+    }
+
+    /// The coupling whose follower is tree coordinate `i`, if any.
+    pub fn coupling_of(&self, i: usize) -> Option<&CoordCoupling> {
+        self.couplings.iter().find(|c| c.follower == i)
+    }
+
+    /// Sets every mimic follower of positions `q` from its leader (`q_f = m q_l + offset`).
+    pub fn apply_couplings(&self, q: &mut [f64]) {
+        self.propagate_couplings(q, true);
+    }
+
+    /// Sets every coupled follower of `q` from its leader: `q_f = m q_l + offset` (with
+    /// `offsets == false`: `m q_l`, for speeds and accelerations). Chains of couplings are
+    /// followed (a follower that leads another is set first).
+    pub(crate) fn propagate_couplings(&self, q: &mut [f64], offsets: bool) {
+        for _ in 0..self.couplings.len() {
+            let mut changed = false;
+            for c in &self.couplings {
+                let v = c.multiplier * q[c.leader] + if offsets { c.offset } else { 0.0 };
+                if q[c.follower] != v {
+                    q[c.follower] = v;
+                    changed = true;
+                }
+            }
+            if !changed {
+                break;
+            }
+        }
+    }
+
     /// The closing joints whose loop closures constrain the coordinates.
     pub fn closing_joints(&self) -> Vec<JointId> {
         self.closures.iter().map(|c| c.joint).collect()
@@ -458,3 +577,6 @@ impl Mechanism {
 
 #[cfg(test)]
 mod tests;
+
+#[cfg(test)]
+mod loads_tests;

@@ -204,6 +204,10 @@ pub struct IkReport {
     pub iterations: usize,
     pub position_error: f64,
     pub rotation_error: f64,
+    /// Independent directions the driven joints move the tool in at the solution (see
+    /// `IkResult::mobility`); not serialised.
+    #[serde(skip)]
+    pub mobility: usize,
 }
 
 /// A keyframe as planned: its time (arrival) and joint values.
@@ -282,7 +286,7 @@ impl Planned {
     /// joints are kept). For a tree, the samples as they are.
     pub fn closed_samples(&self, mech: &Mechanism, rate: f64) -> Result<Samples, Vec<Issue>> {
         let mut s = self.samples(rate);
-        if !mech.has_loops() {
+        if !mech.has_dependent() {
             return Ok(s);
         }
         let n = self.axes.len();
@@ -439,7 +443,8 @@ pub fn solve_tool(
     let seed_rng = frame.bytes().fold(0x9e37_79b9_7f4a_7c15_u64, |h, b| (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3));
     let mut rng = XorShift::new(seed_rng);
     let r = mech.inverse_kinematics(tool, target, seed, &opts, &mut rng).map_err(|e| e.to_string())?;
-    let report = IkReport { iterations: r.iterations, position_error: r.position_error, rotation_error: r.rotation_error };
+    let report =
+        IkReport { iterations: r.iterations, position_error: r.position_error, rotation_error: r.rotation_error, mobility: r.mobility };
     Ok((r.q, report, r.success))
 }
 
@@ -449,7 +454,7 @@ pub fn plan(mech: &Mechanism, axes: &[Axis], spec: &MotionSpec) -> Result<Planne
     if !issues.is_empty() {
         return Err(issues);
     }
-    let loops = mech.has_loops();
+    let loops = mech.has_dependent();
     let driven_names =
         || -> String { mech.driven().iter().map(|&i| axes.get(i).map_or("", |a| a.name.as_str())).collect::<Vec<_>>().join(", ") };
     let index: BTreeMap<&str, usize> = axes.iter().enumerate().map(|(i, a)| (a.name.as_str(), i)).collect();
@@ -462,8 +467,13 @@ pub fn plan(mech: &Mechanism, axes: &[Axis], spec: &MotionSpec) -> Result<Planne
         let mut ik = None;
         match &kf.target {
             Target::Joints { values } => {
+                let mut coupled_set = Vec::new();
                 for (name, v) in values {
                     match index.get(name.as_str()) {
+                        Some(&i) if mech.coupling_of(i).is_some() => {
+                            q[i] = *v;
+                            coupled_set.push(i);
+                        }
                         Some(&i) if loops && !mech.coordinates().get(i).is_some_and(|c| c.independent) => issues.push(Issue::new(
                             format!("{at}.values.{name}"),
                             format!(
@@ -478,6 +488,26 @@ pub fn plan(mech: &Mechanism, axes: &[Axis], spec: &MotionSpec) -> Result<Planne
                         )),
                     }
                 }
+                // A mimic follower may be given only where it agrees with its leader.
+                let mut expected = q.clone();
+                mech.apply_couplings(&mut expected);
+                for i in coupled_set {
+                    let Some(c) = mech.coupling_of(i) else { continue };
+                    if (q[i] - expected[i]).abs() > 1e-9 * (1.0 + expected[i].abs()) {
+                        let (f, l) = (axes.get(i).map_or("", |a| a.name.as_str()), axes.get(c.leader).map_or("", |a| a.name.as_str()));
+                        issues.push(Issue::new(
+                            format!("{at}.values.{f}"),
+                            format!(
+                                "keyframe {k}: {f} = {} contradicts the mimic coupling {f} = {} * {l}{}: with {l} = {} it is {} (set {l} only)",
+                                fmt(q[i]),
+                                fmt(c.multiplier),
+                                if c.offset != 0.0 { format!(" + {}", fmt(c.offset)) } else { String::new() },
+                                fmt(expected[c.leader]),
+                                fmt(expected[i])
+                            ),
+                        ));
+                    }
+                }
             }
             Target::Tool { frame, position, rotation } => {
                 let Some(target) = ik_target(position, rotation) else {
@@ -490,13 +520,27 @@ pub fn plan(mech: &Mechanism, axes: &[Axis], spec: &MotionSpec) -> Result<Planne
                         q = sol;
                         ik = Some(report);
                     }
-                    Ok((_, r, false)) => issues.push(Issue::new(
-                        at.clone(),
-                        format!(
-                            "keyframe {k}: inverse kinematics failed for frame \"{frame}\": residual {:.3e} m / {:.3e} rad after {} iterations (unreachable within the joints' position limits?)",
-                            r.position_error, r.rotation_error, r.iterations
-                        ),
-                    )),
+                    Ok((_, r, false)) => {
+                        let rows = if matches!(target, IkTarget::Pose(_)) { 6 } else { 3 };
+                        let why = if r.mobility < rows {
+                            format!(
+                                "the driven joints ({}) move this frame in only {} independent direction(s) here, the target needs {rows} ({}): only targets on that {}-dimensional set are reachable (try a position-only target or a frame on the set)",
+                                driven_names(),
+                                r.mobility,
+                                if rows == 6 { "position and orientation" } else { "position" },
+                                r.mobility
+                            )
+                        } else {
+                            "unreachable within the joints' position limits?".to_string()
+                        };
+                        issues.push(Issue::new(
+                            at.clone(),
+                            format!(
+                                "keyframe {k}: inverse kinematics failed for frame \"{frame}\": residual {:.3e} m / {:.3e} rad after {} iterations ({why})",
+                                r.position_error, r.rotation_error, r.iterations
+                            ),
+                        ))
+                    }
                     Err(e) => issues.push(Issue::new(format!("{at}.frame"), format!("keyframe {k}: {e}"))),
                 }
             }
@@ -679,7 +723,7 @@ pub fn inverse_dynamics(
     gravity: &Vector3<f64>,
     stride: usize,
 ) -> Result<(Vec<Vec<f64>>, Vec<f64>), crate::mechanism::MechanismError> {
-    if mech.has_loops() {
+    if mech.has_dependent() {
         return driven_dynamics(mech, s, gravity, stride);
     }
     let n = mech.dof();
@@ -694,7 +738,7 @@ pub fn inverse_dynamics(
             qd[a] = s.qd[a][i];
             qdd[a] = s.qdd[a][i];
         }
-        mech.inverse_dynamics(&q, &qd, &qdd, gravity, &mut ws, &mut out)?;
+        mech.inverse_dynamics_with_losses(&q, &qd, &qdd, gravity, &mut ws, &mut out)?;
         for a in 0..n {
             tau[a].push(out[a]);
         }

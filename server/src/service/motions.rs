@@ -189,6 +189,24 @@ pub struct JointView {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub effort: Option<f64>,
     pub custom: bool,
+    /// Set where the joint follows another by a mimic coupling (then `independent` is false).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub mimic: Option<MimicView>,
+    /// Viscous damping from the source (URDF `<dynamics damping>`), N·m·s/rad or N·s/m; absent
+    /// when zero.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub damping: Option<f64>,
+    /// Coulomb friction from the source (URDF `<dynamics friction>`), N·m or N; absent when zero.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub friction: Option<f64>,
+}
+
+/// A follower's coupling: its value is `multiplier * leader + offset`.
+#[derive(Clone, Debug, Serialize)]
+pub struct MimicView {
+    pub leader: String,
+    pub multiplier: f64,
+    pub offset: f64,
 }
 
 /// Limits stored for a joint the version does not have.
@@ -223,7 +241,8 @@ pub fn joints_view(k: &Kinematic, version: i64, edits: &BTreeMap<String, LimitsE
         .iter()
         .zip(&axes)
         .zip(&k.joint_node_ids)
-        .map(|((c, a), node)| {
+        .enumerate()
+        .map(|(i, ((c, a), node))| {
             let (kind, unit) = kind_unit(c.kind);
             JointView {
                 name: c.name.clone(),
@@ -236,6 +255,13 @@ pub fn joints_view(k: &Kinematic, version: i64, edits: &BTreeMap<String, LimitsE
                 defaults: AxisLimits::for_coordinate(c),
                 effort: c.source_limits.as_ref().and_then(|l| l.effort),
                 custom: edits.contains_key(&c.name),
+                mimic: k.mech.coupling_of(i).map(|m| MimicView {
+                    leader: k.mech.coordinates().get(m.leader).map(|l| l.name.clone()).unwrap_or_default(),
+                    multiplier: m.multiplier,
+                    offset: m.offset,
+                }),
+                damping: Some(c.losses.damping).filter(|d| *d != 0.0),
+                friction: Some(c.losses.friction).filter(|f| *f != 0.0),
             }
         })
         .collect();
@@ -580,7 +606,7 @@ pub fn sizing(
         not_sized: Vec::new(),
         orphaned: Vec::new(),
     };
-    let driven: Vec<usize> = if mech.has_loops() { mech.driven() } else { (0..mech.dof()).collect() };
+    let driven: Vec<usize> = mech.driven();
     for d in drives {
         if !p.axes.iter().any(|a| a.name == d.joint) {
             report.orphaned.push(d.joint.clone());

@@ -262,7 +262,28 @@ pub struct Primitive {
     /// Axis in world coordinates at the CAD pose, as written (not normalised; weld and spherical
     /// carry a dummy axis).
     pub axis_world: Vector3<f64>,
+    /// Passive losses on the element's coordinate (URDF `<dynamics>`); zero when the source
+    /// states none. Only revolute and prismatic elements carry them.
+    pub losses: Losses,
     pub loc: SourceLoc,
+}
+
+/// Passive losses on one joint coordinate, as the source states them: the generalised force
+/// the joint's bearing exerts *against* the motion is `damping * qd + friction * sign(qd)`
+/// (viscous in N·m·s/rad or N·s/m, Coulomb in N·m or N; both ≥ 0, finite). The law as used by
+/// the mechanism (with its regularisation of `sign` at rest) is stated on
+/// `mechanism::Mechanism::passive_torques`.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
+pub struct Losses {
+    pub damping: f64,
+    pub friction: f64,
+}
+
+impl Losses {
+    /// No damping and no friction.
+    pub fn is_zero(&self) -> bool {
+        self.damping == 0.0 && self.friction == 0.0
+    }
 }
 
 /// A joint between two frames: a serial chain of primitives from `base` to `follower`.

@@ -372,7 +372,7 @@ mod tests {
             follower: FrameId(1),
             primitives: prims
                 .iter()
-                .map(|(k, a)| Primitive { kind: *k, axis_world: Vector3::from(*a), loc: SourceLoc::default() })
+                .map(|(k, a)| Primitive { kind: *k, axis_world: Vector3::from(*a), losses: Default::default(), loc: SourceLoc::default() })
                 .collect(),
             limits: None,
             loc: SourceLoc::default(),

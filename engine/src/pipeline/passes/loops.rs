@@ -820,6 +820,7 @@ mod tests {
         m.joints[closing.index()].primitives.push(Primitive {
             kind: PrimitiveKind::Revolute,
             axis_world: Vector3::x(),
+            losses: Default::default(),
             loc: SourceLoc::default(),
         });
         let p = plan(&m).expect("plan");
@@ -840,7 +841,12 @@ mod tests {
         let mut m = model("pendulum");
         let mut weld = m.joints[0].clone();
         weld.node_id = format!("{}-weld", weld.node_id);
-        weld.primitives = vec![Primitive { kind: PrimitiveKind::Weld, axis_world: Vector3::zeros(), loc: SourceLoc::default() }];
+        weld.primitives = vec![Primitive {
+            kind: PrimitiveKind::Weld,
+            axis_world: Vector3::zeros(),
+            losses: Default::default(),
+            loc: SourceLoc::default(),
+        }];
         let revolute = m.joints.iter().position(|j| !j.is_weld()).expect("revolute");
         weld.base = m.joints[revolute].base;
         weld.follower = m.joints[revolute].follower;

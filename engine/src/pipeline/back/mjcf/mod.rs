@@ -88,6 +88,9 @@ struct MjJoint {
     pos: Vector3<f64>,
     axis: Vector3<f64>,
     reference: f64,
+    /// `damping` and `frictionloss` (from the element's `ir::Losses`; MuJoCo's frictionloss is
+    /// a soft dry-friction constraint, close to but not exactly a Coulomb sign law).
+    losses: crate::pipeline::ir::Losses,
 }
 
 /// Smallest mass (kg) and principal moment (kg·m²) MuJoCo is given (its compiler's
@@ -156,6 +159,7 @@ pub fn write(model: &Model, v: &Validated, layout: &Layout, opts: &Options) -> S
                 pos: (c_inv * Point3::from(origin)).coords,
                 axis: c_inv.rotation * axis * sign,
                 reference: e.q0,
+                losses: joint.primitives.iter().filter(|p| p.kind != PrimitiveKind::Weld).nth(k).map(|p| p.losses).unwrap_or_default(),
             });
         }
         if !forward {
@@ -252,7 +256,13 @@ pub fn write(model: &Model, v: &Validated, layout: &Layout, opts: &Options) -> S
             let _ = writeln!(out, "{ind}  <freejoint name=\"{}_free\"/>", attr(&names.bodies[b]));
         }
         for j in &joints[b] {
-            let axis = if j.kind == "ball" { String::new() } else { format!(" axis=\"{}\" ref=\"{}\"", v3(&j.axis), n(j.reference)) };
+            let mut axis = if j.kind == "ball" { String::new() } else { format!(" axis=\"{}\" ref=\"{}\"", v3(&j.axis), n(j.reference)) };
+            if j.losses.damping > 0.0 {
+                let _ = write!(axis, " damping=\"{}\"", n(j.losses.damping));
+            }
+            if j.losses.friction > 0.0 {
+                let _ = write!(axis, " frictionloss=\"{}\"", n(j.losses.friction));
+            }
             let _ = writeln!(out, "{ind}  <joint name=\"{}\" type=\"{}\" pos=\"{}\"{axis}/>", attr(&j.name), j.kind, v3(&j.pos));
         }
         if shaped(b) {

@@ -387,6 +387,12 @@ impl Writer<'_> {
             };
             self.connect(&prev, &format!("{name}.frame_a"));
             prev = format!("{name}.frame_b");
+            let losses = joint.primitives.iter().filter(|p| p.kind != PrimitiveKind::Weld).nth(k).map(|p| p.losses).unwrap_or_default();
+            if matches!(kind, "revolute" | "prismatic") && !losses.is_zero() {
+                let style = self.style;
+                self.losses(jid, k, &name, e.kind, losses);
+                self.style = style;
+            }
             self.layout.joint_elements[jid.index()].push(name);
             self.layout.emitted_as[jid.index()] = if count == 1 { kind } else { "chain" };
         }
@@ -401,6 +407,63 @@ impl Writer<'_> {
             extra.push(name);
         }
         self.layout.joint_elements[jid.index()].extend(extra);
+    }
+}
+
+impl Writer<'_> {
+    /// The passive losses of element `name` (a `Components.Revolute`/`Prismatic`, element `k` of
+    /// joint `jid`) on its drive flange: a `LinearSpeedDependentTorque` / `Force` (`-d * speed`,
+    /// its support fixed in the world, as MSL's joint `support` flange, the joint's axis torque
+    /// acting between frame_a and frame_b) and a `BearingFriction` / `SupportFriction` with the
+    /// constant Coulomb friction (`tau_pos = [0, f]`, `peak = 1`: the static friction equals the
+    /// sliding one).
+    fn losses(&mut self, jid: JointId, k: usize, name: &str, kind: PrimitiveKind, l: crate::pipeline::ir::Losses) {
+        let (lib, fric, table, what) = if kind == PrimitiveKind::Revolute {
+            ("Modelica.Mechanics.Rotational.Components", "BearingFriction", "tau_pos", "torque")
+        } else {
+            ("Modelica.Mechanics.Translational.Components", "SupportFriction", "f_pos", "force")
+        };
+        self.style = Style::Flange;
+        let drive = format!("{name}.drive");
+        let at = |w: &mut Self, n: &str, slot: i32| {
+            let mut want = w.plan.element(jid, k, half_for(n));
+            want.y -= 20 * slot;
+            want
+        };
+        if l.damping > 0.0 {
+            // A one-flange source grounded in the world: accelerating torque (force) on the
+            // flange = tau_nominal * w / w_nominal = -d * w (MSL: `tau = -flange.tau`).
+            let damper = self.scope.take(&format!("{name}_damper"));
+            let want = at(self, &damper, 1);
+            let place = self.put(&damper, Class::Drive, want);
+            let (class, params) = if kind == PrimitiveKind::Revolute {
+                (
+                    "Rotational.Sources.LinearSpeedDependentTorque",
+                    format!("tau_nominal=-{}, w_nominal=1, TorqueDirection=false", num(l.damping)),
+                )
+            } else {
+                (
+                    "Translational.Sources.LinearSpeedDependentForce",
+                    format!("f_nominal=-{}, v_nominal=1, ForceDirection=false", num(l.damping)),
+                )
+            };
+            let _ = writeln!(
+                self.decl,
+                "  Modelica.Mechanics.{class} {damper}({params})\n    \"Viscous damping of {name}: {what} = -d * speed on the drive flange, housing fixed in the world (URDF <dynamics damping>)\" {place};"
+            );
+            self.connect(&format!("{damper}.flange"), &drive);
+        }
+        if l.friction > 0.0 {
+            let f = self.scope.take(&format!("{name}_friction"));
+            let want = at(self, &f, 3);
+            let place = self.put(&f, Class::TwoPort, want);
+            let _ = writeln!(
+                self.decl,
+                "  {lib}.{fric} {f}({table}=[0, {}], peak=1)\n    \"Coulomb friction of {name}: {what} = friction * sign(speed), sticking up to it at rest (URDF <dynamics friction>)\" {place};",
+                num(l.friction)
+            );
+            self.connect(&drive, &format!("{f}.flange_a"));
+        }
     }
 }
 

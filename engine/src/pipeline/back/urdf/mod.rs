@@ -132,6 +132,8 @@ struct UJoint {
     axis: Vector3<f64>,
     /// The source's limits (single-element joints only).
     limits: Option<JointLimits>,
+    /// `<dynamics damping friction>` (single-element joints only; zero: not written).
+    losses: crate::pipeline::ir::Losses,
     mimic: Option<String>,
     note: Option<String>,
 }
@@ -247,6 +249,7 @@ pub fn write(model: &Model, v: &Validated, layout: &Layout, package: &str, write
                 origin: parent_pose.inverse() * cs1(child),
                 axis: Vector3::x(),
                 limits: None,
+                losses: Default::default(),
                 mimic: None,
                 note: None,
             });
@@ -268,6 +271,7 @@ pub fn write(model: &Model, v: &Validated, layout: &Layout, package: &str, write
                 origin: o,
                 axis: e[2].axis,
                 limits: None,
+                losses: Default::default(),
                 mimic: None,
                 note: {
                     // The start rotation is in the origin: the Modelica translations run along
@@ -329,7 +333,23 @@ pub fn write(model: &Model, v: &Validated, layout: &Layout, package: &str, write
             if count == 1 {
                 single.insert(j, name.clone());
             }
-            ujoints.push(UJoint { name, kind, parent: prev.clone(), child: child.clone(), origin: o, axis, limits, mimic: None, note });
+            let losses = if chain.elements.len() == 1 && count == 1 {
+                joint.primitives.iter().find(|p| p.kind != PrimitiveKind::Weld).map(|p| p.losses).unwrap_or_default()
+            } else {
+                Default::default()
+            };
+            ujoints.push(UJoint {
+                name,
+                kind,
+                parent: prev.clone(),
+                child: child.clone(),
+                origin: o,
+                axis,
+                limits,
+                losses,
+                mimic: None,
+                note,
+            });
             o = Isometry3::identity();
             prev = child;
         }
@@ -343,6 +363,7 @@ pub fn write(model: &Model, v: &Validated, layout: &Layout, package: &str, write
                 origin: post,
                 axis: Vector3::x(),
                 limits: None,
+                losses: Default::default(),
                 mimic: None,
                 note: Some(format!("CAD offset of joint {jname}: the body frame is off the revolute's axis")),
             });
@@ -363,6 +384,7 @@ pub fn write(model: &Model, v: &Validated, layout: &Layout, package: &str, write
             origin: cs1(b),
             axis: Vector3::x(),
             limits: None,
+            losses: Default::default(),
             mimic: None,
             note: None,
         });
@@ -455,6 +477,9 @@ pub fn write(model: &Model, v: &Validated, layout: &Layout, package: &str, write
         }
         if let Some(limit) = limit_element(kind, u.limits.as_ref()) {
             let _ = writeln!(out, "    {limit}");
+        }
+        if !u.losses.is_zero() {
+            let _ = writeln!(out, "    <dynamics damping=\"{}\" friction=\"{}\"/>", n(u.losses.damping), n(u.losses.friction));
         }
         if let Some(m) = &u.mimic {
             let _ = writeln!(out, "    {m}");

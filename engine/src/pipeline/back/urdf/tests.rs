@@ -178,7 +178,10 @@ fn joint(
         subsystem_path: vec![],
         base,
         follower,
-        primitives: prims.iter().map(|(k, a)| Primitive { kind: *k, axis_world: *a, loc: SourceLoc::default() }).collect(),
+        primitives: prims
+            .iter()
+            .map(|(k, a)| Primitive { kind: *k, axis_world: *a, losses: Default::default(), loc: SourceLoc::default() })
+            .collect(),
         limits,
         loc: SourceLoc::default(),
     });

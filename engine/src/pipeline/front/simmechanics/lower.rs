@@ -431,7 +431,7 @@ impl<'a> Lower<'_, 'a> {
             }
         };
         let axis = self.numbers::<3>(axis.ok_or_else(|| self.missing(node, "axis"))?)?;
-        let primitive = Primitive { kind, axis_world: Vector3::from(axis), loc: SourceLoc::default() };
+        let primitive = Primitive { kind, axis_world: Vector3::from(axis), losses: Default::default(), loc: SourceLoc::default() };
         Ok((primitive, axis_frame))
     }
 

@@ -645,7 +645,10 @@ impl<'a, 'd> Lower<'a, 'd> {
         let loc = self.loc(node);
         let b = self.end_frame(base, pose, &node_id, "base", &format!("{cad_name} base"), &loc);
         let f = self.end_frame(follower, pose, &node_id, "follower", &format!("{cad_name} follower"), &loc);
-        let primitives = primitives.into_iter().map(|(kind, axis_world)| Primitive { kind, axis_world, loc: loc.clone() }).collect();
+        let primitives = primitives
+            .into_iter()
+            .map(|(kind, axis_world)| Primitive { kind, axis_world, losses: Default::default(), loc: loc.clone() })
+            .collect();
         self.model.joints.push(Joint { cad_name, node_id, subsystem_path, base: b, follower: f, primitives, limits: None, loc });
     }
 

@@ -12,7 +12,7 @@
 //!   joint name type                revolute | continuous | prismatic | fixed | floating | planar
 //!     parent link, child link, origin xyz rpy (child frame in the parent frame at q = 0),
 //!     axis xyz (joint frame; default 1 0 0), limit lower upper velocity effort,
-//!     mimic joint multiplier offset
+//!     mimic joint multiplier offset, dynamics damping friction
 //!   drake:joint name type          Drake's extension: ball, universal (screw and curvilinear
 //!                                  are not expressible: welded, with a warning)
 //!   loop_joint name type           Drake's closed-chain extension: axis, link1 link xyz rpy,
@@ -32,6 +32,9 @@
 //!   `world` makes it free).
 //! - `floating` leaves the child free; `planar` is two prismatic primitives in the plane and a
 //!   revolute about its normal (`axis`); `continuous` is revolute without position limits.
+//! - `dynamics damping friction` become the [`Losses`](ir::Losses) of each revolute and prismatic
+//!   element of the joint (negative values are refused); other attributes of `<dynamics>`
+//!   (Gazebo's, franka's `K`, `D`, `mu_*`) are not URDF and are ignored.
 //! - `mimic` becomes a [`Coupling`](ir::Coupling) where both joints have one coordinate, the
 //!   multiplier is not zero and the offset is zero (the zero configuration must satisfy it);
 //!   otherwise a `mimic-not-expressible` warning. Mimics that form a ring (j1 follows j2 ... follows
@@ -198,6 +201,9 @@ struct RawJoint<'a, 'i> {
     origin: Isometry3<f64>,
     axis: Vector3<f64>,
     limits: Option<JointLimits>,
+    /// `<dynamics damping friction>`: the element, and one value or one per movable element
+    /// (zero when absent).
+    losses: (roxmltree::Node<'a, 'i>, Vec<f64>, Vec<f64>),
     mimic: Option<(String, f64, f64, roxmltree::Node<'a, 'i>)>,
 }
 
@@ -547,7 +553,27 @@ impl<'d, 'i> Reader<'d, 'i> {
             )),
             None => None,
         };
-        Ok(RawJoint { node: n, name, kind, parent, child: child_link, origin, axis, limits, mimic })
+        // One value for every movable element, or one per element (Drake writes planar's as
+        // three numbers).
+        let losses = match child(n, "dynamics") {
+            Some(d) => {
+                let list = |k: &str| -> Result<Vec<f64>, UrdfError> {
+                    let Some(text) = d.attribute(k) else { return Ok(vec![0.0]) };
+                    let v = text.split_whitespace().map(|t| self.number(d, k, t)).collect::<Result<Vec<f64>, _>>()?;
+                    if v.is_empty() {
+                        return Err(self.err(d, format!("attribute `{k}` is empty")));
+                    }
+                    if let Some(x) = v.iter().find(|x| **x < 0.0) {
+                        return Err(self.err(d, format!("attribute `{k}` = {x} is negative (a passive loss must be 0 or more)")));
+                    }
+                    Ok(v)
+                };
+                let (damping, friction) = (list("damping")?, list("friction")?);
+                (d, damping, friction)
+            }
+            None => (n, vec![0.0], vec![0.0]),
+        };
+        Ok(RawJoint { node: n, name, kind, parent, child: child_link, origin, axis, limits, losses, mimic })
     }
 
     fn build(
@@ -864,6 +890,19 @@ impl<'d, 'i> Reader<'d, 'i> {
                     vec![prim(PrimitiveKind::Weld, world_axis, loc.clone())]
                 }
             };
+            let mut primitives = primitives;
+            let movable = primitives.iter().filter(|p| matches!(p.kind, PrimitiveKind::Revolute | PrimitiveKind::Prismatic)).count();
+            let (dyn_node, damping, friction) = &j.losses;
+            for (k, v) in [("damping", damping), ("friction", friction)] {
+                if v.len() > 1 && v.len() != movable {
+                    return Err(self.err(*dyn_node, format!("attribute `{k}` has {} values; joint \"{}\" has {movable} movable element(s) (give one value, or one per element)", v.len(), ir::clip(&j.name, 200))));
+                }
+            }
+            let pick = |v: &Vec<f64>, k: usize| if v.len() == 1 { v[0] } else { v[k] };
+            for (k, p) in primitives.iter_mut().filter(|p| matches!(p.kind, PrimitiveKind::Revolute | PrimitiveKind::Prismatic)).enumerate()
+            {
+                p.losses = ir::Losses { damping: pick(damping, k), friction: pick(friction, k) };
+            }
             let base = if j.parent == "world" {
                 push_ground(&mut model, &j.name, frame_pose, loc.clone())
             } else {
@@ -1043,7 +1082,7 @@ fn plane_axes(n: &Vector3<f64>) -> (Vector3<f64>, Vector3<f64>) {
 }
 
 fn prim(kind: PrimitiveKind, axis_world: Vector3<f64>, loc: SourceLoc) -> Primitive {
-    Primitive { kind, axis_world, loc }
+    Primitive { kind, axis_world, losses: ir::Losses::default(), loc }
 }
 
 fn push_frame(model: &mut Model, name: &str, node_id: String, owner: FrameOwner, pose: Isometry3<f64>, loc: &SourceLoc) -> FrameId {
