@@ -31,8 +31,8 @@ pub struct ClosedState {
 }
 
 /// See [`Mechanism::linearise`].
-struct Linearised {
-    g: DMatrix<f64>,
+pub(super) struct Linearised {
+    pub(super) g: DMatrix<f64>,
     phi_i: DMatrix<f64>,
     svd: nalgebra::SVD<f64, nalgebra::Dyn, nalgebra::Dyn>,
     eps: f64,
@@ -44,7 +44,7 @@ impl Mechanism {
         (0..self.coordinates.len()).filter(|&i| self.coordinates[i].independent).collect()
     }
 
-    fn x_split(&self) -> (Vec<usize>, Vec<usize>) {
+    pub(super) fn x_split(&self) -> (Vec<usize>, Vec<usize>) {
         let n = self.coordinates.len();
         let driven = self.driven();
         let follow: Vec<usize> = (0..n).filter(|i| !self.coordinates[*i].independent).chain(n..n + self.cut_coordinates.len()).collect();
@@ -74,7 +74,7 @@ impl Mechanism {
 
     /// The closure linearised at `x`: `G = ∂x/∂x_i` (columns: driven coordinates), and `Φ_i` and
     /// the SVD of `Φ_u` for solving the followers' accelerations.
-    fn linearise(&self, x: &[f64], driven: &[usize], follow: &[usize]) -> Result<Linearised, MechanismError> {
+    pub(super) fn linearise(&self, x: &[f64], driven: &[usize], follow: &[usize]) -> Result<Linearised, MechanismError> {
         let jac = self.closure_jacobian(x)?;
         let phi_u = jac.select_columns(follow);
         let phi_i = jac.select_columns(driven);

@@ -30,10 +30,13 @@
 //!   [`Mechanism::driven_torques`] (`driven.rs`), which project the tree's torques onto the
 //!   driven joints.
 //! - Inverse kinematics works on tree mechanisms (no loop closures).
+//! - Forward dynamics ([`Mechanism::forward_dynamics`], `forward.rs`): articulated bodies on the
+//!   tree; loops by coordinate partitioning ([`Mechanism::closed_forward_dynamics`]).
 
 mod closure;
 mod driven;
 mod dynamics;
+mod forward;
 mod ik;
 mod kinematics;
 mod rng;
@@ -51,6 +54,7 @@ use crate::pipeline::valid::Validated;
 pub use closure::Assembly;
 pub use driven::ClosedState;
 pub use dynamics::Workspace;
+pub use forward::ForwardWorkspace;
 pub use ik::{IkOptions, IkResult, IkTarget};
 pub use kinematics::Kinematics;
 pub use rng::XorShift;
@@ -72,6 +76,8 @@ pub enum MechanismError {
     UnknownFrame(String),
     #[error("inverse kinematics of mechanisms with closed loops is not supported yet")]
     ClosedLoops,
+    #[error("coordinate \"{coordinate}\" moves no mass (singular mass matrix): its acceleration is undetermined")]
+    Singular { coordinate: String },
     #[error("internal inconsistency: {0}")]
     Internal(String),
 }
