@@ -112,6 +112,26 @@ impl Mechanism {
         ws: &mut ForwardWorkspace,
         qdd: &mut [f64],
     ) -> Result<(), MechanismError> {
+        self.forward_dynamics_armature(q, qd, tau, &[], gravity, ws, qdd)
+    }
+
+    /// [`Mechanism::forward_dynamics`] with an extra inertia `armature[i]` (kg·m² or kg) on each
+    /// coordinate's own axis, as a motor rotor reflected through its gear adds (`J·ratio²`):
+    /// `(M + diag(armature)) q̈ = τ − C(q, q̇) − g(q)`. An empty `armature` adds nothing.
+    #[allow(clippy::too_many_arguments)]
+    pub fn forward_dynamics_armature(
+        &self,
+        q: &[f64],
+        qd: &[f64],
+        tau: &[f64],
+        armature: &[f64],
+        gravity: &Vector3<f64>,
+        ws: &mut ForwardWorkspace,
+        qdd: &mut [f64],
+    ) -> Result<(), MechanismError> {
+        if !armature.is_empty() {
+            self.check_len("armature", armature)?;
+        }
         self.check_len("coordinates", q)?;
         self.check_len("speeds", qd)?;
         self.check_len("torques", tau)?;
@@ -151,8 +171,8 @@ impl Mechanism {
         // Pass 2: articulated inertias and bias forces, leaves to root.
         for i in (0..n).rev() {
             let u_vec = ws.ia[i] * ws.s[i];
-            let d = ws.s[i].dot(&u_vec);
-            let scale = ws.ia[i].abs().max();
+            let d = ws.s[i].dot(&u_vec) + armature.get(i).copied().unwrap_or(0.0);
+            let scale = ws.ia[i].abs().max() + armature.get(i).copied().unwrap_or(0.0);
             if !(d > SINGULAR * scale) || !d.is_finite() || d < 1e-300 {
                 return Err(MechanismError::Singular { coordinate: self.coordinates[i].name.clone() });
             }
@@ -184,22 +204,27 @@ impl Mechanism {
     /// ([`Mechanism::driven`]; the others are a starting guess for assembly), `state.cut` a
     /// guess of the cut coordinates; `tau` the generalised forces on the tree coordinates
     /// (length [`Mechanism::dof`]). Out: the state completed (every position assembled, every
-    /// speed and acceleration consistent with the closures). Without loops this is
-    /// [`Mechanism::forward_dynamics`].
+    /// speed and acceleration consistent with the closures). `armature` as in
+    /// [`Mechanism::forward_dynamics_armature`] (empty: none). Without loops this is
+    /// [`Mechanism::forward_dynamics_armature`].
     pub fn closed_forward_dynamics(
         &self,
         state: &mut ClosedState,
         tau: &[f64],
+        armature: &[f64],
         gravity: &Vector3<f64>,
         ws: &mut Workspace,
         fws: &mut ForwardWorkspace,
     ) -> Result<(), MechanismError> {
         self.check_len("torques", tau)?;
+        if !armature.is_empty() {
+            self.check_len("armature", armature)?;
+        }
         if self.closures.is_empty() {
             self.check_len("coordinates", &state.q)?;
             self.check_len("speeds", &state.qd)?;
             state.qdd.resize(self.dof(), 0.0);
-            return self.forward_dynamics(&state.q, &state.qd, tau, gravity, fws, &mut state.qdd);
+            return self.forward_dynamics_armature(&state.q, &state.qd, tau, armature, gravity, fws, &mut state.qdd);
         }
         let n = self.dof();
         state.qdd.clear();
@@ -224,7 +249,7 @@ impl Mechanism {
             let col: Vec<f64> = (0..n).map(|i| g[(i, c)]).collect();
             self.inverse_dynamics(&state.q, &zero, &col, &Vector3::zeros(), ws, &mut mg)?;
             for r in 0..k {
-                reduced[(r, c)] = (0..n).map(|i| g[(i, r)] * mg[i]).sum();
+                reduced[(r, c)] = (0..n).map(|i| g[(i, r)] * (mg[i] + armature.get(i).copied().unwrap_or(0.0) * g[(i, c)])).sum();
             }
         }
         let reduced = (&reduced + reduced.transpose()) * 0.5;

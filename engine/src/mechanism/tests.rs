@@ -448,7 +448,7 @@ fn closed_forward_dynamics_inverts_driven_torques() {
                     f.qd[i] = 0.0;
                 }
             }
-            m.closed_forward_dynamics(&mut f, &tau, &g, &mut ws, &mut fws).expect("forward");
+            m.closed_forward_dynamics(&mut f, &tau, &[], &g, &mut ws, &mut fws).expect("forward");
             for i in 0..n {
                 assert!((f.q[i] - s.q[i]).abs() < 1e-10, "{name}: position {i}: {} vs {}", f.q[i], s.q[i]);
                 assert!((f.qd[i] - s.qd[i]).abs() < 1e-7 * s.qd[i].abs().max(1.0), "{name}: speed {i}: {} vs {}", f.qd[i], s.qd[i]);
