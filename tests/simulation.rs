@@ -37,7 +37,8 @@ fn cases(fx: &Path) -> Vec<Case> {
             continue;
         }
         let bundle = Bundle::from_files("urdf", [("robot.urdf".to_string(), text.as_bytes().to_vec())]).expect("bundle");
-        let a = pipeline::analyse(&bundle, &Options { write_shapes: false, ..Options::default() }).unwrap_or_else(|e| panic!("{label}: {e}"));
+        let a =
+            pipeline::analyse(&bundle, &Options { write_shapes: false, ..Options::default() }).unwrap_or_else(|e| panic!("{label}: {e}"));
         let m = match Mechanism::from_validated(&a.model, &a.validated) {
             Ok(m) if !m.has_loops() && m.dof() > 0 => m,
             Ok(_) => {
@@ -245,7 +246,16 @@ fn drives_agree_with_an_independent_python_simulation() {
         let sd = |t: f64| 30.0 * t.powi(2) - 60.0 * t.powi(3) + 30.0 * t.powi(4);
         drives.push(Drive {
             coordinate: k,
-            motor: Motor { r: 0.299, l: 8.2e-5, k: 0.0302, j: 1.42e-5, d: 1e-5, v_max: 48.0, i_max: if k == 1 { 12.0 } else { 30.0 }, tc: 0.001 },
+            motor: Motor {
+                r: 0.299,
+                l: 8.2e-5,
+                k: 0.0302,
+                j: 1.42e-5,
+                d: 1e-5,
+                v_max: 48.0,
+                i_max: if k == 1 { 12.0 } else { 30.0 },
+                tc: 0.001,
+            },
             transmission: Transmission { ratio: 160.0, eta: if k == 1 || k == 2 { 0.7 } else { 1.0 } },
             controller: Controller { kp: 10.0, ks: 0.5, ts: 0.05 },
             reference: Reference::Motion {
@@ -256,7 +266,8 @@ fn drives_agree_with_an_independent_python_simulation() {
         });
     }
     let opts = simulation::Options { duration: 1.5, output_interval: 0.05, rtol: 1e-11, atol: 1e-12, ..Default::default() };
-    let run = simulation::simulate(m, &c.gravity, &drives, &NoForces, &Start { q: q0.clone(), qd: vec![0.0; n] }, &opts, &never).expect("runs");
+    let run =
+        simulation::simulate(m, &c.gravity, &drives, &NoForces, &Start { q: q0.clone(), qd: vec![0.0; n] }, &opts, &never).expect("runs");
     let spec_drives: Vec<serde_json::Value> = drives
         .iter()
         .map(|d| {

@@ -74,7 +74,9 @@ fn bench(c: &mut Criterion) {
     );
     let mut group = c.benchmark_group("simulation");
     group.sample_size(10);
-    group.bench_function("arm6_drives_10s", |b| b.iter(|| simulation::simulate(&m, &g, &d, &NoForces, &start, &opts, &never).expect("runs")));
+    group.bench_function("arm6_drives_10s", |b| {
+        b.iter(|| simulation::simulate(&m, &g, &d, &NoForces, &start, &opts, &never).expect("runs"))
+    });
     group.finish();
 }
 

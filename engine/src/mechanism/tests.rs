@@ -452,7 +452,12 @@ fn closed_forward_dynamics_inverts_driven_torques() {
             for i in 0..n {
                 assert!((f.q[i] - s.q[i]).abs() < 1e-10, "{name}: position {i}: {} vs {}", f.q[i], s.q[i]);
                 assert!((f.qd[i] - s.qd[i]).abs() < 1e-7 * s.qd[i].abs().max(1.0), "{name}: speed {i}: {} vs {}", f.qd[i], s.qd[i]);
-                assert!((f.qdd[i] - s.qdd[i]).abs() < 1e-5 * s.qdd[i].abs().max(1.0), "{name}: acceleration {i}: {} vs {}", f.qdd[i], s.qdd[i]);
+                assert!(
+                    (f.qdd[i] - s.qdd[i]).abs() < 1e-5 * s.qdd[i].abs().max(1.0),
+                    "{name}: acceleration {i}: {} vs {}",
+                    f.qdd[i],
+                    s.qdd[i]
+                );
             }
             let r = m.closure_residual(&f.q, &f.cut).expect("residual");
             assert!(r.iter().all(|x| x.abs() < 1e-10), "{name}: residual {r:?}");

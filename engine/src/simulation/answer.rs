@@ -116,7 +116,11 @@ pub fn verdict(tracking: &[Tracking], names: &[String], tool_error: Option<&[(f6
             reasons.push(format!("{name}: joint error {:.3e} above {:.3e}", tr.max_error, tol.max_joint_error));
         }
         if !tr.saturated.is_empty() {
-            reasons.push(format!("{name}: current or voltage limited during {} interval(s), from t = {} s", tr.saturated.len(), tr.saturated[0].0));
+            reasons.push(format!(
+                "{name}: current or voltage limited during {} interval(s), from t = {} s",
+                tr.saturated.len(),
+                tr.saturated[0].0
+            ));
         }
     }
     if let (Some(errors), Some(max)) = (tool_error, tol.max_tool_error) {
