@@ -173,7 +173,7 @@ impl Mechanism {
             let u_vec = ws.ia[i] * ws.s[i];
             let d = ws.s[i].dot(&u_vec) + armature.get(i).copied().unwrap_or(0.0);
             let scale = ws.ia[i].abs().max() + armature.get(i).copied().unwrap_or(0.0);
-            if !(d > SINGULAR * scale) || !d.is_finite() || d < 1e-300 {
+            if d.partial_cmp(&(SINGULAR * scale)) != Some(std::cmp::Ordering::Greater) || !d.is_finite() || d < 1e-300 {
                 return Err(MechanismError::Singular { coordinate: self.coordinates[i].name.clone() });
             }
             let u = tau[i] - ws.s[i].dot(&ws.pa[i]);
@@ -190,11 +190,11 @@ impl Mechanism {
         }
         // Pass 3: accelerations, root to leaves (gravity as the base's upward acceleration).
         let base = Vector6::new(0.0, 0.0, 0.0, -gravity.x, -gravity.y, -gravity.z);
-        for i in 0..n {
+        for (i, out) in qdd.iter_mut().enumerate().take(n) {
             let a_parent = self.links[i].parent.map(|pi| ws.a[pi]).unwrap_or(base);
             let a = ws.x[i] * a_parent + ws.c[i];
-            qdd[i] = (ws.u[i] - ws.u_vec[i].dot(&a)) / ws.d[i];
-            ws.a[i] = a + ws.s[i] * qdd[i];
+            *out = (ws.u[i] - ws.u_vec[i].dot(&a)) / ws.d[i];
+            ws.a[i] = a + ws.s[i] * *out;
         }
         Ok(())
     }

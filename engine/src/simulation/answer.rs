@@ -112,7 +112,8 @@ pub fn verdict(tracking: &[Tracking], names: &[String], tool_error: Option<&[(f6
     let mut reasons = Vec::new();
     for tr in tracking {
         let name = names.get(tr.coordinate).map(String::as_str).unwrap_or("?");
-        if !(tr.max_error <= tol.max_joint_error) {
+        // NaN counts as a failure.
+        if tr.max_error.partial_cmp(&tol.max_joint_error).is_none_or(|o| o == std::cmp::Ordering::Greater) {
             reasons.push(format!("{name}: joint error {:.3e} above {:.3e}", tr.max_error, tol.max_joint_error));
         }
         if !tr.saturated.is_empty() {
@@ -125,7 +126,7 @@ pub fn verdict(tracking: &[Tracking], names: &[String], tool_error: Option<&[(f6
     }
     if let (Some(errors), Some(max)) = (tool_error, tol.max_tool_error) {
         let worst = errors.iter().fold(0.0f64, |m, e| m.max(e.0));
-        if !(worst <= max) {
+        if worst.partial_cmp(&max).is_none_or(|o| o == std::cmp::Ordering::Greater) {
             reasons.push(format!("tool position error {worst:.3e} m above {max:.3e} m"));
         }
     }

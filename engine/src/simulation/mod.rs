@@ -307,7 +307,7 @@ impl Model<'_> {
         t: f64,
         y: &DVector<f64>,
         dy: &mut DVector<f64>,
-        mut record: Option<&mut Vec<DriveSample>>,
+        record: Option<&mut Vec<DriveSample>>,
     ) -> Result<(), MechanismError> {
         let m = self.m;
         let k = self.driven.len();
@@ -381,7 +381,7 @@ impl Model<'_> {
                 dy[k + p] = s.state.qdd[i];
             }
         }
-        if let Some(rec) = record.as_deref_mut() {
+        if let Some(rec) = record {
             rec.clear();
             rec.extend(signals);
         }
