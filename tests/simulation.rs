@@ -233,6 +233,7 @@ fn passive_runs_agree_with_mujoco_and_pinocchio_rk4() {
 /// angles agree with an independent simulation in Python (`tests/tools/drive_check.py`) within
 /// 1e-6 rad at every 0.05 s, and the motor currents within 1e-4 A.
 #[test]
+#[ignore = "unfinished: never run to completion; the Python reference (DOP853 at rtol 1e-12) took over 10 CPU minutes under voltage saturation"]
 fn drives_agree_with_an_independent_python_simulation() {
     let Some(fx) = fixtures_dir("drive simulation cross-check") else { return };
     let Some(c) = cases(&fx).into_iter().find(|c| c.label.ends_with("ur5_robot.urdf")) else { panic!("ur5 fixture missing") };
