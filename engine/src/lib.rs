@@ -23,6 +23,7 @@ pub mod mechanism;
 pub mod motion;
 pub mod pipeline;
 pub mod results;
+pub mod simulation;
 pub mod sizing;
 
 /// Generated test models (shared with the benchmarks).

@@ -25,7 +25,7 @@ pub struct Workspace {
 }
 
 /// Rotation by `q` about unit axis `a` (Rodrigues).
-fn rotation(a: &Vector3<f64>, q: f64) -> Matrix3<f64> {
+pub(super) fn rotation(a: &Vector3<f64>, q: f64) -> Matrix3<f64> {
     let (s, c) = q.sin_cos();
     let k = 1.0 - c;
     Matrix3::new(

@@ -37,10 +37,13 @@
 //!   carried by its leader (virtual work). A cycle of couplings is refused.
 //! - Joint losses ([`Mechanism::passive_torques`]) are on tree coordinates; a loop's closing
 //!   joint emitted plainly carries none here.
+//! - Forward dynamics ([`Mechanism::forward_dynamics`], `forward.rs`): articulated bodies on the
+//!   tree; loops by coordinate partitioning ([`Mechanism::closed_forward_dynamics`]).
 
 mod closure;
 mod driven;
 mod dynamics;
+mod forward;
 mod ik;
 mod kinematics;
 mod passive;
@@ -59,6 +62,7 @@ use crate::pipeline::valid::Validated;
 pub use closure::Assembly;
 pub use driven::ClosedState;
 pub use dynamics::Workspace;
+pub use forward::ForwardWorkspace;
 pub use ik::{IkOptions, IkResult, IkTarget};
 pub use kinematics::Kinematics;
 pub use passive::{friction_sign, REST_SPEED};
@@ -85,6 +89,8 @@ pub enum MechanismError {
     Coupling { joint: String, why: String },
     #[error("inverse kinematics target not supported: {0}")]
     IkUnsupported(String),
+    #[error("coordinate \"{coordinate}\" moves no mass (singular mass matrix): its acceleration is undetermined")]
+    Singular { coordinate: String },
     #[error("internal inconsistency: {0}")]
     Internal(String),
 }

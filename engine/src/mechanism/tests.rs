@@ -351,3 +351,116 @@ fn driven_loop_torques_balance_energy() {
         assert!(inertia.iter().all(|x| *x > 0.0), "{name}: {inertia:?}");
     }
 }
+
+/// Every tree mechanism we can build: generated arms and trees, the golden cases and fixture
+/// XMLs, and the fixture URDFs (text alone).
+fn tree_mechanisms() -> Vec<(String, Mechanism)> {
+    let mut models: Vec<(String, Analysed)> = vec![
+        ("arm6".into(), analyse_xml("arm.xml", &gen::serial_arm_xml(6))),
+        ("tree50".into(), analyse_xml("tree.xml", &gen::tree_xml(50))),
+    ];
+    models.extend(all_models());
+    if let Some(fx) = crate::pipeline::testutil::fixtures_dir() {
+        for urdf in crate::pipeline::testutil::files_with_ext(&fx.join("urdf"), "urdf") {
+            let Ok(text) = std::fs::read(&urdf) else { continue };
+            let Ok(bundle) = Bundle::from_files("fx", [("robot.urdf".to_string(), text)]) else { continue };
+            if let Ok(a) = pipeline::analyse(&bundle, &Options { write_shapes: false, ..Options::default() }) {
+                models.push((urdf.strip_prefix(&fx).unwrap_or(&urdf).display().to_string(), a));
+            }
+        }
+    }
+    models
+        .into_iter()
+        .filter_map(|(name, a)| {
+            let m = Mechanism::from_validated(&a.model, &a.validated).ok()?;
+            (!m.has_loops() && m.dof() > 0).then_some((name, m))
+        })
+        .collect()
+}
+
+/// `forward_dynamics(q, q̇, inverse_dynamics(q, q̇, q̈)) == q̈` at random states of every tree.
+#[test]
+fn forward_dynamics_inverts_inverse_dynamics() {
+    let g = Vector3::new(0.3, -9.81, 0.7);
+    let mut rng = XorShift::new(5);
+    let (mut checked, mut urdfs, mut worst) = (0, 0, 0.0f64);
+    for (name, m) in tree_mechanisms() {
+        let n = m.dof();
+        let (mut ws, mut fws) = (m.workspace(), m.forward_workspace());
+        for _ in 0..5 {
+            let q: Vec<f64> = m.q0().iter().map(|q| q + rng.range(-1.0, 1.0)).collect();
+            let qd: Vec<f64> = (0..n).map(|_| rng.range(-2.0, 2.0)).collect();
+            let qdd: Vec<f64> = (0..n).map(|_| rng.range(-5.0, 5.0)).collect();
+            let mut tau = vec![0.0; n];
+            m.inverse_dynamics(&q, &qd, &qdd, &g, &mut ws, &mut tau).expect("rnea");
+            let mut back = vec![0.0; n];
+            match m.forward_dynamics(&q, &qd, &tau, &g, &mut fws, &mut back) {
+                Ok(()) => {}
+                Err(MechanismError::Singular { coordinate }) => {
+                    println!("{name}: singular at {coordinate} (a coordinate moving no mass): skipped");
+                    break;
+                }
+                Err(e) => panic!("{name}: {e}"),
+            }
+            for k in 0..n {
+                let err = (back[k] - qdd[k]).abs() / 5.0;
+                worst = worst.max(err);
+                assert!(err < 1e-9, "{name}: coordinate {}: {} vs {} (relative {err:e})", m.coordinates()[k].name, back[k], qdd[k]);
+            }
+        }
+        checked += 1;
+        urdfs += usize::from(name.ends_with(".urdf"));
+    }
+    println!("{checked} trees ({urdfs} fixture URDFs): worst |q̈ - q̈'| {worst:e} of the 5 rad/s² range");
+    assert!(checked >= 5, "{checked}");
+}
+
+/// Closed loops: the accelerations the driven torques of `driven.rs` (energy-checked above)
+/// produce are the ones they were computed for, and the completed state closes.
+#[test]
+fn closed_forward_dynamics_inverts_driven_torques() {
+    for name in ["fourbar", "crank_rocker_noise", "slider_crank", "sixbar_6digit", "urdf_fourbar"] {
+        let (_, m) = case(name);
+        assert!(m.has_loops(), "{name}");
+        let n = m.dof();
+        let driven = m.driven();
+        let g = Vector3::new(0.3, -9.81, 0.7);
+        let (mut ws, mut fws) = (m.workspace(), m.forward_workspace());
+        let mut rng = XorShift::new(17);
+        for _ in 0..3 {
+            let mut s = ClosedState { q: m.q0(), qd: vec![0.0; n], qdd: vec![0.0; n], cut: m.cut_q0() };
+            for &i in &driven {
+                s.q[i] += rng.range(-0.3, 0.3);
+                s.qd[i] = rng.range(-1.0, 1.0);
+                s.qdd[i] = rng.range(-3.0, 3.0);
+            }
+            m.close(&mut s).expect("closes");
+            let mut tree = vec![0.0; n];
+            let tau_i = m.driven_torques(&s, &g, &mut ws, &mut tree).expect("torques");
+            let mut tau = vec![0.0; n];
+            for (k, &i) in driven.iter().enumerate() {
+                tau[i] = tau_i[k];
+            }
+            let mut f = ClosedState { q: s.q.clone(), qd: s.qd.clone(), qdd: vec![], cut: s.cut.clone() };
+            for i in 0..n {
+                if !m.coordinates()[i].independent {
+                    f.q[i] += 0.01; // a guess only
+                    f.qd[i] = 0.0;
+                }
+            }
+            m.closed_forward_dynamics(&mut f, &tau, &[], &g, &mut ws, &mut fws).expect("forward");
+            for i in 0..n {
+                assert!((f.q[i] - s.q[i]).abs() < 1e-10, "{name}: position {i}: {} vs {}", f.q[i], s.q[i]);
+                assert!((f.qd[i] - s.qd[i]).abs() < 1e-7 * s.qd[i].abs().max(1.0), "{name}: speed {i}: {} vs {}", f.qd[i], s.qd[i]);
+                assert!(
+                    (f.qdd[i] - s.qdd[i]).abs() < 1e-5 * s.qdd[i].abs().max(1.0),
+                    "{name}: acceleration {i}: {} vs {}",
+                    f.qdd[i],
+                    s.qdd[i]
+                );
+            }
+            let r = m.closure_residual(&f.q, &f.cut).expect("residual");
+            assert!(r.iter().all(|x| x.abs() < 1e-10), "{name}: residual {r:?}");
+        }
+    }
+}

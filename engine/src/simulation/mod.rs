@@ -1,0 +1,607 @@
+//! Closed-loop simulation of a mechanism with its drives (issue 28): forward dynamics
+//! ([`Mechanism::closed_forward_dynamics`]) integrated in time with the drives' equations as
+//! the package's Modelica classes state them (`pipeline/back/modelica/mechatronics/classes.rs`).
+//! No IO; every run is bounded (duration, steps, samples) and can be cancelled.
+//!
+//! # State
+//! `y = (q_i, q̇_i, per drive: i, x)`: the independent coordinates and speeds
+//! ([`Mechanism::driven`]: every tree coordinate without loops; with loops the dependent ones are
+//! assembled from them at each evaluation, so closure does not drift), then each drive's armature
+//! current `i` and speed-controller integrator `x`.
+//!
+//! # Drives (the equations of the classes we write)
+//! With `r` the motor angle per unit of joint coordinate (`Gears.*.ratio`, or
+//! `LeadScrew.transmission = 2π·ratio/lead`), `φ = r·q`, `w = r·q̇` (rigid gear, sensors on the
+//! motor shaft):
+//! - `Controllers.CascadePPI`: `w_cmd = kp·(r·q_ref − φ) + r·q̇_ref`, `e = w_cmd − w`,
+//!   `i_ref = ks·(e + x/Ts)`, `ẋ = e` (no anti-windup, as the class says);
+//! - `Motors.DCPermanentMagnet`: `i_cmd = limit(i_ref, ±I_max)`,
+//!   `v_cmd = R·i_cmd + k·w + L/Tc·(i_cmd − i)`, `v = limit(v_cmd, ±V_max)`,
+//!   `L·di/dt = v − R·i − k·w`, `τ = k·i`, `J·ẇ = τ − d·w − τ_a` (`τ_a` the torque into the gear);
+//! - `Gears.Ideal`/`LeadScrew`: the joint gets `r·τ_a`; `Gears.Efficiency` (MSL `LossyGear`,
+//!   `lossTable = [0, η, η, 0, 0]`): `η·r·τ_a` while power flows from the motor to the joint
+//!   (`τ_a·w ≥ 0`), `r·τ_a/η` while it flows back. The rotor inertia thus appears on the joint as
+//!   an armature `J·r²` (times `η` or `1/η`), added to the mass matrix. The flow direction depends
+//!   on the acceleration through `τ_a`; it is found by trying the direction of `(k·i − d·w)·w` and
+//!   switching drives whose `τ_a·w` disagrees (at most 4 passes). MSL's stuck mode at `w = 0`
+//!   (`LossyGear` locking while the torque ratio lies between η and 1/η) is not modelled: at
+//!   `w = 0` the flow counts as forward.
+//! - Saturations are `smooth(0, noEvent(...))` in the classes: continuous, without events, so
+//!   they are evaluated as plain clamps (no chatter: no mode switching in the integrator).
+//!
+//! Extra generalised forces (joint damping, friction, couplings) enter through
+//! [`GeneralisedForces`], added to the drive torques before the forward dynamics.
+//!
+//! # Integration
+//! `ode_solvers::Dopri5` (Dormand–Prince 5(4), error control, dense output at the output
+//! interval): pure Rust on nalgebra 0.33 (our version). The drive equations are mildly stiff
+//! (current-loop time constant `Tc`, electrical `L/R` under voltage saturation, ~0.1–1 ms),
+//! which an explicit method follows at steps of that size: while a motor's voltage is limited,
+//! `−R/L` (about −3600/s for the default motor) bounds the step near 1 ms, stable under error
+//! control. Dopri5's stiffness abort is off for that reason; `max_steps` bounds the work. A
+//! stiff (implicit) solver would take larger steps there; the explicit one was chosen for
+//! being small, pure Rust and on our nalgebra (`diffsol` brings its own linear-algebra stack).
+
+mod answer;
+
+use std::cell::{Cell, RefCell};
+
+use nalgebra::{DVector, Vector3};
+use ode_solvers::dop_shared::{IntegrationError, OutputType, System};
+use ode_solvers::Dopri5;
+
+use crate::mechanism::{ClosedState, ForwardWorkspace, Mechanism, MechanismError, Workspace};
+
+pub use answer::{saturation_intervals, verdict, Tolerances, Tracking, Verdict};
+
+/// Longest simulated time, s.
+pub const MAX_DURATION: f64 = 3600.0;
+/// Most integration steps of one run.
+pub const MAX_STEPS: u32 = 2_000_000;
+/// Most output samples of one run.
+pub const MAX_SAMPLES: usize = 200_000;
+/// Most drives (one per coordinate at most).
+pub const MAX_DRIVES: usize = 1024;
+
+/// Why a simulation cannot run or stopped.
+#[derive(Debug, thiserror::Error, PartialEq)]
+pub enum SimulationError {
+    /// Bad input: `field` names it (`duration`, `drives[2].motor.L`, `start.q`, ...).
+    #[error("{field}: {message}")]
+    Field { field: String, message: String },
+    #[error(transparent)]
+    Mechanism(#[from] MechanismError),
+    #[error("the integration stopped at t = {t} s: {message}")]
+    Integration { t: f64, message: String },
+    #[error("cancelled at t = {t} s")]
+    Cancelled { t: f64 },
+}
+
+fn field(field: impl Into<String>, message: impl Into<String>) -> SimulationError {
+    SimulationError::Field { field: field.into(), message: message.into() }
+}
+
+/// `Motors.DCPermanentMagnet`'s parameters (SI).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Motor {
+    /// Armature resistance, Ω.
+    pub r: f64,
+    /// Armature inductance, H.
+    pub l: f64,
+    /// Torque constant = back-EMF constant, N·m/A.
+    pub k: f64,
+    /// Rotor inertia, kg·m².
+    pub j: f64,
+    /// Viscous friction of the rotor, N·m·s/rad.
+    pub d: f64,
+    /// Supply voltage limit, V.
+    pub v_max: f64,
+    /// Current limit, A.
+    pub i_max: f64,
+    /// Current-loop time constant, s.
+    pub tc: f64,
+}
+
+/// `Controllers.CascadePPI`'s parameters.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Controller {
+    /// Position gain, 1/s.
+    pub kp: f64,
+    /// Speed gain, A·s/rad.
+    pub ks: f64,
+    /// Speed integrator time constant, s.
+    pub ts: f64,
+}
+
+/// The gear: motor angle per unit of joint coordinate and efficiency (1: `Gears.Ideal` or
+/// `LeadScrew`; below 1: `Gears.Efficiency`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Transmission {
+    /// rad/rad for a revolute joint (`ratio`), rad/m for a prismatic one (`2π·ratio/lead`).
+    pub ratio: f64,
+    pub eta: f64,
+}
+
+/// The joint reference, rad or m.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Reference {
+    /// Held from t = 0; no feed-forward.
+    Constant(f64),
+    /// (time, value) points: linear interpolation, first and last values held; no feed-forward
+    /// (`CombiTimeTable`, `LinearSegments`, `HoldLastPoint`).
+    Table(Vec<(f64, f64)>),
+    /// A motion's samples: position and speed interpolated linearly, the speed fed forward.
+    Motion { t: Vec<f64>, q: Vec<f64>, qd: Vec<f64> },
+}
+
+/// Linear interpolation in increasing `t`, ends held.
+fn interpolate(t: &[f64], v: &[f64], x: f64) -> f64 {
+    match t.len() {
+        0 => 0.0,
+        _ if x <= t[0] => v[0],
+        n if x >= t[n - 1] => v[n - 1],
+        _ => {
+            let k = t.partition_point(|s| *s <= x).clamp(1, t.len() - 1);
+            let (t0, t1) = (t[k - 1], t[k]);
+            if t1 <= t0 {
+                return v[k];
+            }
+            v[k - 1] + (v[k] - v[k - 1]) * (x - t0) / (t1 - t0)
+        }
+    }
+}
+
+impl Reference {
+    /// Position and fed-forward speed at `t`.
+    pub fn at(&self, t: f64) -> (f64, f64) {
+        match self {
+            Reference::Constant(v) => (*v, 0.0),
+            Reference::Table(points) => {
+                let (ts, vs): (Vec<f64>, Vec<f64>) = points.iter().copied().unzip();
+                (interpolate(&ts, &vs, t), 0.0)
+            }
+            Reference::Motion { t: ts, q, qd } => (interpolate(ts, q, t), interpolate(ts, qd, t)),
+        }
+    }
+
+    fn check(&self, name: &str) -> Result<(), SimulationError> {
+        let times_ok = |t: &[f64]| t.iter().all(|x| x.is_finite()) && t.windows(2).all(|w| w[1] >= w[0]);
+        match self {
+            Reference::Constant(v) if !v.is_finite() => Err(field(name, "not finite")),
+            Reference::Table(p) if p.is_empty() || p.iter().any(|(a, b)| !a.is_finite() || !b.is_finite()) => {
+                Err(field(name, "a table needs finite (time, value) points"))
+            }
+            Reference::Table(p) if !times_ok(&p.iter().map(|x| x.0).collect::<Vec<_>>()) => Err(field(name, "times must not decrease")),
+            Reference::Motion { t, q, qd } if t.is_empty() || q.len() != t.len() || qd.len() != t.len() => {
+                Err(field(name, "a motion needs as many positions and speeds as times"))
+            }
+            Reference::Motion { t, q, qd } if !times_ok(t) || q.iter().chain(qd).any(|x| !x.is_finite()) => {
+                Err(field(name, "times must not decrease and values must be finite"))
+            }
+            _ => Ok(()),
+        }
+    }
+}
+
+/// One joint drive: controller, motor and gear on a coordinate.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Drive {
+    /// Index of the driven coordinate in [`Mechanism::coordinates`] (an independent one).
+    pub coordinate: usize,
+    pub motor: Motor,
+    pub transmission: Transmission,
+    pub controller: Controller,
+    pub reference: Reference,
+}
+
+/// Generalised forces added on the tree coordinates (N·m or N) besides the drives': joint
+/// damping and friction, couplings. `tau` holds the drives' torques on entry.
+pub trait GeneralisedForces {
+    fn add(&self, t: f64, q: &[f64], qd: &[f64], tau: &mut [f64]);
+}
+
+/// No extra forces.
+pub struct NoForces;
+
+impl GeneralisedForces for NoForces {
+    fn add(&self, _t: f64, _q: &[f64], _qd: &[f64], _tau: &mut [f64]) {}
+}
+
+/// How long and how finely to simulate.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Options {
+    /// Simulated time, s (0 < duration <= [`MAX_DURATION`]).
+    pub duration: f64,
+    /// Spacing of the output samples, s (at most [`MAX_SAMPLES`] of them).
+    pub output_interval: f64,
+    /// Relative and absolute error tolerances of each step.
+    pub rtol: f64,
+    pub atol: f64,
+    /// Step limit (at most [`MAX_STEPS`]).
+    pub max_steps: u32,
+    /// Largest step, s (0: no limit beyond the duration).
+    pub h_max: f64,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options { duration: 1.0, output_interval: 0.01, rtol: 1e-8, atol: 1e-10, max_steps: MAX_STEPS, h_max: 0.0 }
+    }
+}
+
+/// One drive's signals at one output sample.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct DriveSample {
+    /// Reference position (rad or m) and speed.
+    pub q_ref: f64,
+    pub qd_ref: f64,
+    /// Controller output, the current command after the limit, the armature current, A.
+    pub i_ref: f64,
+    pub i_cmd: f64,
+    pub i: f64,
+    /// Voltage demanded and applied, V.
+    pub v_cmd: f64,
+    pub v: f64,
+    /// Motor angle (rad) and speed (rad/s).
+    pub phi: f64,
+    pub w: f64,
+    /// Electromagnetic torque, N·m.
+    pub tau: f64,
+}
+
+/// What a run produced: samples at the output interval, from t = 0.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Run {
+    pub t: Vec<f64>,
+    /// Every tree coordinate (dependent ones assembled), speed and acceleration, per sample.
+    pub q: Vec<Vec<f64>>,
+    pub qd: Vec<Vec<f64>>,
+    pub qdd: Vec<Vec<f64>>,
+    /// Cut coordinates per sample (loops emitted plainly).
+    pub cut: Vec<Vec<f64>>,
+    /// Per drive (in the order given), per sample.
+    pub drives: Vec<Vec<DriveSample>>,
+    /// Accepted and rejected steps, right-hand side evaluations.
+    pub accepted_steps: u32,
+    pub rejected_steps: u32,
+    pub evaluations: u32,
+}
+
+/// Where a run starts: every tree coordinate and speed (the dependent ones of loops are a guess,
+/// assembled from the independent ones).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Start {
+    pub q: Vec<f64>,
+    pub qd: Vec<f64>,
+}
+
+struct Scratch {
+    state: ClosedState,
+    tau: Vec<f64>,
+    armature: Vec<f64>,
+    forward: Vec<bool>,
+    ws: Workspace,
+    fws: ForwardWorkspace,
+    error: Option<MechanismError>,
+    evaluations: u32,
+}
+
+struct Model<'a> {
+    m: &'a Mechanism,
+    gravity: Vector3<f64>,
+    drives: &'a [Drive],
+    forces: &'a dyn GeneralisedForces,
+    driven: Vec<usize>,
+    scratch: RefCell<Scratch>,
+    cancel: &'a dyn Fn() -> bool,
+    cancelled: Cell<Option<f64>>,
+}
+
+/// The system Dopri5 integrates: a borrowed [`Model`] (the solver keeps its system to itself).
+struct Sys<'a, 'b>(&'b Model<'a>);
+
+impl Model<'_> {
+    /// The derivative `dy` at `(t, y)`; `record` receives each drive's signals.
+    fn eval(
+        &self,
+        t: f64,
+        y: &DVector<f64>,
+        dy: &mut DVector<f64>,
+        record: Option<&mut Vec<DriveSample>>,
+    ) -> Result<(), MechanismError> {
+        let m = self.m;
+        let k = self.driven.len();
+        let n = m.dof();
+        let mut guard = self.scratch.borrow_mut();
+        let s = &mut *guard;
+        s.evaluations = s.evaluations.saturating_add(1);
+        for (p, &i) in self.driven.iter().enumerate() {
+            s.state.q[i] = y[p];
+            s.state.qd[i] = y[k + p];
+        }
+        if m.has_loops() {
+            // Positions and speeds of the dependent coordinates, for the extra forces.
+            s.state.qdd.iter_mut().for_each(|x| *x = 0.0);
+            m.close(&mut s.state)?;
+        }
+        s.tau.iter_mut().for_each(|x| *x = 0.0);
+        self.forces.add(t, &s.state.q, &s.state.qd, &mut s.tau);
+        let base_tau = s.tau.clone();
+        // Drive signals that do not depend on the acceleration.
+        let mut signals = Vec::with_capacity(self.drives.len());
+        for (d, drive) in self.drives.iter().enumerate() {
+            let (mo, c, r) = (&drive.motor, &drive.controller, drive.transmission.ratio);
+            let (i, x) = (y[2 * k + 2 * d], y[2 * k + 2 * d + 1]);
+            let q = s.state.q[drive.coordinate];
+            let (phi, w) = (r * q, r * s.state.qd[drive.coordinate]);
+            let (q_ref, qd_ref) = drive.reference.at(t);
+            let e = c.kp * (r * q_ref - phi) + r * qd_ref - w;
+            let i_ref = c.ks * (e + x / c.ts);
+            let i_cmd = i_ref.clamp(-mo.i_max, mo.i_max);
+            let v_cmd = mo.r * i_cmd + mo.k * w + mo.l / mo.tc * (i_cmd - i);
+            let v = v_cmd.clamp(-mo.v_max, mo.v_max);
+            let sample = DriveSample { q_ref, qd_ref, i_ref, i_cmd, i, v_cmd, v, phi, w, tau: mo.k * i };
+            dy[2 * k + 2 * d] = (v - mo.r * i - mo.k * w) / mo.l;
+            dy[2 * k + 2 * d + 1] = e;
+            s.forward[d] = (mo.k * i - mo.d * w) * w >= 0.0;
+            signals.push(sample);
+        }
+        for pass in 0..4 {
+            s.tau.copy_from_slice(&base_tau);
+            s.armature.iter_mut().for_each(|x| *x = 0.0);
+            for (d, drive) in self.drives.iter().enumerate() {
+                let (mo, tr) = (&drive.motor, &drive.transmission);
+                let f = if tr.eta >= 1.0 || s.forward[d] { tr.eta.min(1.0) } else { 1.0 / tr.eta };
+                let c = drive.coordinate;
+                s.tau[c] += f * tr.ratio * (mo.k * signals[d].i - mo.d * signals[d].w);
+                s.armature[c] += f * mo.j * tr.ratio * tr.ratio;
+            }
+            let Scratch { state, tau, armature, ws, fws, .. } = s;
+            m.closed_forward_dynamics(state, tau, armature, &self.gravity, ws, fws)?;
+            let mut changed = false;
+            for (d, drive) in self.drives.iter().enumerate() {
+                if drive.transmission.eta >= 1.0 {
+                    continue;
+                }
+                let (mo, r) = (&drive.motor, drive.transmission.ratio);
+                let tau_a = mo.k * signals[d].i - mo.d * signals[d].w - mo.j * r * s.state.qdd[drive.coordinate];
+                let forward = tau_a * signals[d].w >= 0.0;
+                if forward != s.forward[d] {
+                    s.forward[d] = forward;
+                    changed = true;
+                }
+            }
+            if !changed || pass == 3 {
+                break;
+            }
+        }
+        if n > 0 {
+            for (p, &i) in self.driven.iter().enumerate() {
+                dy[p] = s.state.qd[i];
+                dy[k + p] = s.state.qdd[i];
+            }
+        }
+        if let Some(rec) = record {
+            rec.clear();
+            rec.extend(signals);
+        }
+        Ok(())
+    }
+}
+
+impl System<f64, DVector<f64>> for Sys<'_, '_> {
+    fn system(&self, t: f64, y: &DVector<f64>, dy: &mut DVector<f64>) {
+        if let Err(e) = self.0.eval(t, y, dy, None) {
+            let mut s = self.0.scratch.borrow_mut();
+            if s.error.is_none() {
+                s.error = Some(e);
+            }
+            dy.iter_mut().for_each(|x| *x = f64::NAN);
+        }
+    }
+
+    fn solout(&mut self, t: f64, _y: &DVector<f64>, _dy: &DVector<f64>) -> bool {
+        if self.0.scratch.borrow().error.is_some() {
+            return true;
+        }
+        if (self.0.cancel)() {
+            self.0.cancelled.set(Some(t));
+            return true;
+        }
+        false
+    }
+}
+
+fn positive(name: String, v: f64, zero_ok: bool) -> Result<(), SimulationError> {
+    if v.is_finite() && (v > 0.0 || (zero_ok && v == 0.0)) {
+        Ok(())
+    } else {
+        Err(field(name, format!("must be {} and finite, got {v}", if zero_ok { "non-negative" } else { "positive" })))
+    }
+}
+
+/// Checks every input, naming the field at fault.
+fn check(m: &Mechanism, drives: &[Drive], start: &Start, opts: &Options) -> Result<(), SimulationError> {
+    if !(opts.duration.is_finite() && opts.duration > 0.0 && opts.duration <= MAX_DURATION) {
+        return Err(field("duration", format!("must be in (0, {MAX_DURATION}] s, got {}", opts.duration)));
+    }
+    if !(opts.output_interval.is_finite() && opts.output_interval > 0.0) || opts.duration / opts.output_interval > MAX_SAMPLES as f64 {
+        return Err(field("output_interval", format!("must be positive, with at most {MAX_SAMPLES} samples over the duration")));
+    }
+    positive("rtol".into(), opts.rtol, false)?;
+    positive("atol".into(), opts.atol, false)?;
+    positive("h_max".into(), opts.h_max, true)?;
+    if opts.max_steps == 0 || opts.max_steps > MAX_STEPS {
+        return Err(field("max_steps", format!("must be in 1..={MAX_STEPS}")));
+    }
+    let n = m.dof();
+    for (what, v) in [("start.q", &start.q), ("start.qd", &start.qd)] {
+        if v.len() != n {
+            return Err(field(what, format!("expected {n} values, got {}", v.len())));
+        }
+        if let Some(i) = v.iter().position(|x| !x.is_finite()) {
+            return Err(field(format!("{what}[{i}]"), "not finite"));
+        }
+    }
+    if drives.len() > MAX_DRIVES {
+        return Err(field("drives", format!("at most {MAX_DRIVES}")));
+    }
+    let mut seen = vec![false; n];
+    for (d, drive) in drives.iter().enumerate() {
+        let f = |s: &str| format!("drives[{d}].{s}");
+        let c = drive.coordinate;
+        if c >= n || !m.coordinates()[c].independent {
+            return Err(field(f("coordinate"), format!("{c} is not an independent coordinate of the mechanism")));
+        }
+        if std::mem::replace(&mut seen[c], true) {
+            return Err(field(f("coordinate"), format!("coordinate {c} has two drives")));
+        }
+        let mo = &drive.motor;
+        positive(f("motor.R"), mo.r, true)?;
+        positive(f("motor.L"), mo.l, false)?;
+        positive(f("motor.k"), mo.k, false)?;
+        positive(f("motor.J"), mo.j, false)?;
+        positive(f("motor.d"), mo.d, true)?;
+        positive(f("motor.V_max"), mo.v_max, false)?;
+        positive(f("motor.I_max"), mo.i_max, false)?;
+        positive(f("motor.Tc"), mo.tc, false)?;
+        let c = &drive.controller;
+        positive(f("controller.kp"), c.kp, true)?;
+        positive(f("controller.ks"), c.ks, true)?;
+        positive(f("controller.Ts"), c.ts, false)?;
+        let t = &drive.transmission;
+        if !(t.ratio.is_finite() && t.ratio != 0.0) {
+            return Err(field(f("gear.ratio"), format!("must be finite and non-zero, got {}", t.ratio)));
+        }
+        if !(t.eta > 0.0 && t.eta <= 1.0) {
+            return Err(field(f("gear.eta"), format!("must be in (0, 1], got {}", t.eta)));
+        }
+        drive.reference.check(&f("reference"))?;
+    }
+    Ok(())
+}
+
+/// Simulates `m` under `gravity` with `drives` (empty: a passive run) and extra `forces`
+/// from `start` for `opts.duration`. `cancel` is asked after every step; when it answers true
+/// the run stops with [`SimulationError::Cancelled`]. Drive currents and integrators start at 0.
+pub fn simulate(
+    m: &Mechanism,
+    gravity: &Vector3<f64>,
+    drives: &[Drive],
+    forces: &dyn GeneralisedForces,
+    start: &Start,
+    opts: &Options,
+    cancel: &dyn Fn() -> bool,
+) -> Result<Run, SimulationError> {
+    check(m, drives, start, opts)?;
+    let n = m.dof();
+    let driven = m.driven();
+    let k = driven.len();
+    let mut state = ClosedState { q: start.q.clone(), qd: start.qd.clone(), qdd: vec![0.0; n], cut: m.cut_q0() };
+    if m.has_loops() {
+        m.close(&mut state)?;
+    }
+    let mut y0 = DVector::zeros(2 * k + 2 * drives.len());
+    for (p, &i) in driven.iter().enumerate() {
+        y0[p] = state.q[i];
+        y0[k + p] = state.qd[i];
+    }
+    let model = Model {
+        m,
+        gravity: *gravity,
+        drives,
+        forces,
+        driven,
+        scratch: RefCell::new(Scratch {
+            state,
+            tau: vec![0.0; n],
+            armature: vec![0.0; n],
+            forward: vec![true; drives.len()],
+            ws: m.workspace(),
+            fws: m.forward_workspace(),
+            error: None,
+            evaluations: 0,
+        }),
+        cancel,
+        cancelled: Cell::new(None),
+    };
+    let h_max = if opts.h_max > 0.0 { opts.h_max } else { opts.duration };
+    let mut solver = Dopri5::from_param(
+        Sys(&model),
+        0.0,
+        // A hair past the duration, so that dense output reaches its last multiple.
+        opts.duration * (1.0 + 1e-9),
+        opts.output_interval,
+        y0,
+        opts.rtol,
+        opts.atol,
+        0.9,
+        0.04,
+        0.2,
+        10.0,
+        h_max,
+        0.0,
+        opts.max_steps,
+        // No stiffness abort: see the module docs (the step budget bounds the run).
+        u32::MAX,
+        OutputType::Dense,
+    );
+    let result = solver.integrate();
+    let (ts, ys) = (solver.x_out().clone(), solver.y_out().clone());
+    let stats = result.as_ref().ok().copied();
+    drop(solver);
+    if let Some(e) = model.scratch.borrow_mut().error.take() {
+        return Err(e.into());
+    }
+    if let Some(t) = model.cancelled.get() {
+        return Err(SimulationError::Cancelled { t });
+    }
+    let stats = match (result, stats) {
+        (Ok(_), Some(s)) => s,
+        (Err(e), _) => {
+            let t = ts.last().copied().unwrap_or(0.0);
+            let message = match e {
+                IntegrationError::MaxNumStepReached { n_step, .. } => format!("max_steps: {n_step} steps were not enough"),
+                IntegrationError::StiffnessDetected { x } => format!("the problem became stiff at t = {x} s"),
+                IntegrationError::StepSizeUnderflow { x } => format!("step size underflow at t = {x} s"),
+            };
+            return Err(SimulationError::Integration { t, message });
+        }
+        (Ok(_), None) => return Err(SimulationError::Integration { t: 0.0, message: "no statistics".into() }),
+    };
+    // Samples: derived quantities re-evaluated at each output point.
+    let mut run = Run {
+        t: Vec::with_capacity(ts.len()),
+        q: Vec::with_capacity(ts.len()),
+        qd: Vec::with_capacity(ts.len()),
+        qdd: Vec::with_capacity(ts.len()),
+        cut: Vec::with_capacity(ts.len()),
+        drives: vec![Vec::with_capacity(ts.len()); drives.len()],
+        accepted_steps: stats.accepted_steps,
+        rejected_steps: stats.rejected_steps,
+        evaluations: 0,
+    };
+    let mut dy = DVector::zeros(ys.first().map(|y| y.len()).unwrap_or(0));
+    let mut rec = Vec::new();
+    for (t, y) in ts.iter().zip(&ys) {
+        // Dense output may end with the last step's time beyond the duration's last multiple.
+        if *t > opts.duration * (1.0 + 1e-12) {
+            break;
+        }
+        model.eval(*t, y, &mut dy, Some(&mut rec))?;
+        let s = model.scratch.borrow();
+        run.t.push(*t);
+        run.q.push(s.state.q.clone());
+        run.qd.push(s.state.qd.clone());
+        run.qdd.push(s.state.qdd.clone());
+        run.cut.push(s.state.cut.clone());
+        for (d, sample) in rec.iter().enumerate() {
+            run.drives[d].push(*sample);
+        }
+    }
+    run.evaluations = model.scratch.borrow().evaluations;
+    Ok(run)
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,172 @@
+//! Unit tests of the simulation: energy of passive runs (trees and loops), closure, bounds and
+//! errors naming their field, cancellation, a drive holding a pendulum against gravity within
+//! its current limit.
+
+use std::path::Path;
+
+use nalgebra::Vector3;
+
+use super::*;
+use crate::mechanism::Mechanism;
+use crate::pipeline::front::bundle::Bundle;
+use crate::pipeline::{self, Analysed, Options as PipelineOptions};
+use crate::testgen as gen;
+
+fn mechanism_of(a: &Analysed) -> Mechanism {
+    Mechanism::from_validated(&a.model, &a.validated).expect("mechanism")
+}
+
+fn case(name: &str) -> Mechanism {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/in").join(name);
+    let bundle = crate::test_bundle_of_dir(&dir).expect("bundle");
+    mechanism_of(&pipeline::analyse(&bundle, &PipelineOptions::default()).expect("analyses"))
+}
+
+fn arm(n: usize) -> Mechanism {
+    let bundle = Bundle::from_files("gen", [("arm.xml".to_string(), gen::serial_arm_xml(n).into_bytes())]).expect("bundle");
+    mechanism_of(&pipeline::analyse(&bundle, &PipelineOptions::default()).expect("analyses"))
+}
+
+/// Kinetic plus potential energy at a full state.
+fn energy(m: &Mechanism, g: &Vector3<f64>, q: &[f64], qd: &[f64]) -> f64 {
+    let n = m.dof();
+    let mut ws = m.workspace();
+    let mut tau = vec![0.0; n];
+    m.inverse_dynamics(q, &vec![0.0; n], qd, &Vector3::zeros(), &mut ws, &mut tau).expect("rnea");
+    let kinetic = 0.5 * qd.iter().zip(&tau).map(|(a, b)| a * b).sum::<f64>();
+    let k = m.forward(q).expect("fk");
+    let potential: f64 = m
+        .links
+        .iter()
+        .zip(&k.links)
+        .filter(|(l, _)| l.mass > 0.0)
+        .map(|(l, pose)| -l.mass * g.dot(&(pose * nalgebra::Point3::from(l.h / l.mass)).coords))
+        .sum();
+    kinetic + potential
+}
+
+fn never() -> bool {
+    false
+}
+
+#[test]
+fn passive_runs_conserve_energy_on_trees_and_loops() {
+    let g = Vector3::new(0.0, -9.81, 0.0);
+    for (name, m) in [("arm6", arm(6)), ("fourbar", case("fourbar")), ("slider_crank", case("slider_crank"))] {
+        let n = m.dof();
+        let mut q = m.q0();
+        for (i, c) in m.coordinates().iter().enumerate() {
+            if c.independent {
+                q[i] += 0.3;
+            }
+        }
+        let start = Start { q, qd: vec![0.0; n] };
+        let opts = Options { duration: 1.0, output_interval: 0.05, rtol: 1e-10, atol: 1e-12, ..Options::default() };
+        let run = simulate(&m, &g, &[], &NoForces, &start, &opts, &never).unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert_eq!(run.t.len(), 21, "{name}: {:?}", run.t);
+        assert!(run.t[0] == 0.0 && (run.t[20] - 1.0).abs() < 1e-12, "{name}: {:?}", run.t);
+        let e: Vec<f64> = run.q.iter().zip(&run.qd).map(|(q, qd)| energy(&m, &g, q, qd)).collect();
+        let swing = run.qd.iter().flatten().fold(0.0f64, |a, b| a.max(b.abs()));
+        assert!(swing > 0.1, "{name}: it should move ({swing})");
+        // Scale: the largest kinetic energy reached (potential energy has an arbitrary zero).
+        let kin_max =
+            run.q.iter().zip(&run.qd).map(|(q, qd)| energy(&m, &g, q, qd) - energy(&m, &g, q, &vec![0.0; n])).fold(0.0f64, f64::max);
+        let drift = e.iter().map(|x| (x - e[0]).abs()).fold(0.0f64, f64::max) / kin_max;
+        let closure = run
+            .q
+            .iter()
+            .zip(&run.cut)
+            .map(|(q, c)| m.closure_residual(q, c).expect("residual").iter().fold(0.0f64, |a, b| a.max(b.abs())))
+            .fold(0.0f64, f64::max);
+        println!(
+            "{name}: {} steps ({} rejected), {} evaluations: energy drift {drift:.2e} of the largest kinetic energy, closure {closure:.1e}",
+            run.accepted_steps, run.rejected_steps, run.evaluations
+        );
+        // Trees: the integrator's tolerance. Loops: the closure Jacobians of `driven.rs` are
+        // central differences (relative error near 1e-8), which the accelerations inherit.
+        let allowed = if m.has_loops() { 1e-6 } else { 1e-9 };
+        assert!(drift < allowed, "{name}: energy drift {drift:e}");
+        assert!(closure < 1e-9, "{name}: closure {closure:e}");
+    }
+}
+
+fn pendulum_drive(m: &Mechanism, i_max: f64, eta: f64, reference: Reference) -> Drive {
+    let _ = m;
+    Drive {
+        coordinate: 0,
+        motor: Motor { r: 0.299, l: 8.2e-5, k: 0.0302, j: 1.42e-5, d: 0.0, v_max: 24.0, i_max, tc: 0.001 },
+        transmission: Transmission { ratio: 50.0, eta },
+        controller: Controller { kp: 10.0, ks: 0.05, ts: 0.05 },
+        reference,
+    }
+}
+
+#[test]
+fn a_drive_holds_the_reference_within_its_current_limit() {
+    let m = arm(1);
+    let g = Vector3::new(0.0, -9.81, 0.0);
+    let q0 = m.q0()[0];
+    let start = Start { q: m.q0(), qd: vec![0.0] };
+    let opts = Options { duration: 2.0, output_interval: 0.01, rtol: 1e-8, atol: 1e-10, ..Options::default() };
+    let target = q0 + 0.5;
+    let drive = pendulum_drive(&m, 10.0, 1.0, Reference::Constant(target));
+    let run = simulate(&m, &g, std::slice::from_ref(&drive), &NoForces, &start, &opts, &never).expect("runs");
+    let last = run.q.last().expect("samples")[0];
+    assert!((last - target).abs() < 1e-3, "ends at {last}, reference {target}");
+    let tr = run.tracking(std::slice::from_ref(&drive), &[0.0, 2.0]);
+    assert!(tr[0].max_current <= 10.0 + 1e-6, "{tr:?}");
+    println!(
+        "1-DoF drive: final error {:.2e} rad, max current {:.3} A, saturated {:?}, {} steps",
+        last - target,
+        tr[0].max_current,
+        tr[0].saturated,
+        run.accepted_steps
+    );
+    // A current limit below what the step needs saturates, and the current stays within it.
+    let tight = pendulum_drive(&m, 1.0, 1.0, Reference::Constant(target));
+    let run = simulate(&m, &g, std::slice::from_ref(&tight), &NoForces, &start, &opts, &never).expect("runs");
+    let tr = run.tracking(std::slice::from_ref(&tight), &[]);
+    assert!(!tr[0].saturated.is_empty(), "{tr:?}");
+    assert!(tr[0].max_current <= 1.0 + 1e-6, "{tr:?}");
+}
+
+#[test]
+fn bad_input_names_its_field_and_runs_are_bounded_and_cancellable() {
+    let m = arm(2);
+    let g = Vector3::new(0.0, -9.81, 0.0);
+    let start = Start { q: m.q0(), qd: vec![0.0; 2] };
+    let field_of = |e: SimulationError| match e {
+        SimulationError::Field { field, .. } => field,
+        other => panic!("{other}"),
+    };
+    let run = |drives: &[Drive], start: &Start, opts: &Options| simulate(&m, &g, drives, &NoForces, start, opts, &never);
+    let o = |d: f64| Options { duration: d, ..Options::default() };
+    assert_eq!(field_of(run(&[], &start, &o(-1.0)).unwrap_err()), "duration");
+    assert_eq!(field_of(run(&[], &start, &o(f64::NAN)).unwrap_err()), "duration");
+    assert_eq!(field_of(run(&[], &start, &o(1e9)).unwrap_err()), "duration");
+    assert_eq!(field_of(run(&[], &start, &Options { output_interval: 1e-9, ..Options::default() }).unwrap_err()), "output_interval");
+    assert_eq!(field_of(run(&[], &Start { q: vec![0.0], qd: vec![0.0; 2] }, &o(1.0)).unwrap_err()), "start.q");
+    assert_eq!(field_of(run(&[], &Start { q: m.q0(), qd: vec![0.0, f64::INFINITY] }, &o(1.0)).unwrap_err()), "start.qd[1]");
+    let mut d = pendulum_drive(&m, 10.0, 1.0, Reference::Constant(0.0));
+    d.motor.l = 0.0;
+    assert_eq!(field_of(run(std::slice::from_ref(&d), &start, &o(1.0)).unwrap_err()), "drives[0].motor.L");
+    let mut d = pendulum_drive(&m, 10.0, 1.5, Reference::Constant(0.0));
+    assert_eq!(field_of(run(std::slice::from_ref(&d), &start, &o(1.0)).unwrap_err()), "drives[0].gear.eta");
+    d.transmission.eta = 1.0;
+    d.coordinate = 7;
+    assert_eq!(field_of(run(std::slice::from_ref(&d), &start, &o(1.0)).unwrap_err()), "drives[0].coordinate");
+    d.coordinate = 0;
+    d.reference = Reference::Table(vec![(1.0, 0.0), (0.5, 1.0)]);
+    assert_eq!(field_of(run(std::slice::from_ref(&d), &start, &o(1.0)).unwrap_err()), "drives[0].reference");
+    // Step budget.
+    let e = run(&[], &start, &Options { max_steps: 3, ..Options::default() }).unwrap_err();
+    assert!(matches!(&e, SimulationError::Integration { message, .. } if message.starts_with("max_steps")), "{e}");
+    // Cancellation after a few steps.
+    let calls = std::cell::Cell::new(0);
+    let cancel = || {
+        calls.set(calls.get() + 1);
+        calls.get() > 5
+    };
+    let e = simulate(&m, &g, &[], &NoForces, &start, &o(10.0), &cancel).unwrap_err();
+    assert!(matches!(e, SimulationError::Cancelled { t } if t < 10.0), "{e}");
+}

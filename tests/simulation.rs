@@ -1,0 +1,327 @@
+//! Cross-checks of forward dynamics and simulation (`mechanism::forward`, `simulation`) against
+//! MuJoCo and Pinocchio, each reading the fixture URDFs itself (`tests/tools/forward_check.py`):
+//! - accelerations at random states: `|q̈ - q̈_ref| <= 1e-9 * max_k |q̈_ref_k| + 1e-12` per
+//!   coordinate, against Pinocchio's `aba` and MuJoCo's `mj_forward` (`qacc`, constraints off);
+//! - passive runs (gravity only, from a pose): joint angles within 1e-6 rad of both tools' RK4
+//!   over 1 s.
+//!
+//! Skips with a NOTICE when the fixtures are absent or pinocchio cannot be imported, unless
+//! CAD2MO_REQUIRE_TOOLS=1.
+
+use std::collections::BTreeMap;
+use std::path::Path;
+use std::process::Command;
+
+use cad2mo_engine::mechanism::{Mechanism, XorShift};
+use cad2mo_engine::pipeline::front::bundle::Bundle;
+use cad2mo_engine::pipeline::{self, Options};
+use cad2mo_tests::common::{fixture_urdfs, fixtures_dir, tools_required, workspace_root};
+use nalgebra::Vector3;
+
+/// A fixture URDF's tree mechanism, gravity and the URDF joint name of each coordinate.
+struct Case {
+    label: String,
+    text: String,
+    m: Mechanism,
+    gravity: Vector3<f64>,
+    joints: Vec<String>,
+}
+
+fn cases(fx: &Path) -> Vec<Case> {
+    let mut out = Vec::new();
+    for (urdf, _) in fixture_urdfs(fx) {
+        let label = urdf.strip_prefix(fx).unwrap_or(&urdf).display().to_string();
+        let text = std::fs::read_to_string(&urdf).expect("read");
+        if text.contains("drake:") {
+            println!("{label}: skipped (Drake joint types, which neither tool reads)");
+            continue;
+        }
+        let bundle = Bundle::from_files("urdf", [("robot.urdf".to_string(), text.as_bytes().to_vec())]).expect("bundle");
+        let a =
+            pipeline::analyse(&bundle, &Options { write_shapes: false, ..Options::default() }).unwrap_or_else(|e| panic!("{label}: {e}"));
+        let m = match Mechanism::from_validated(&a.model, &a.validated) {
+            Ok(m) if !m.has_loops() && m.dof() > 0 => m,
+            Ok(_) => {
+                println!("{label}: skipped (loops or no coordinates)");
+                continue;
+            }
+            Err(e) => {
+                println!("{label}: skipped ({e})");
+                continue;
+            }
+        };
+        let joints: Vec<String> = m.coordinates().iter().map(|c| a.model.joints[c.joint.index()].cad_name.clone()).collect();
+        let multi = m.coordinates().iter().any(|c| a.validated.analysis.chains[c.joint.index()].elements.len() != 1);
+        if multi {
+            println!("{label}: skipped (multi-element joints)");
+            continue;
+        }
+        let gravity = Vector3::from(pipeline::default_gravity(&a.model));
+        out.push(Case { label, text, m, gravity, joints });
+    }
+    out
+}
+
+/// Runs forward_check.py; `None` (after a NOTICE) when pinocchio is unavailable.
+fn run_tools(label: &str, spec: serde_json::Value) -> Option<serde_json::Value> {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let (input, output) = (dir.path().join("in.json"), dir.path().join("out.json"));
+    std::fs::write(&input, spec.to_string()).expect("write");
+    let run = Command::new("python3").arg(workspace_root().join("tests/tools/forward_check.py")).arg(&input).arg(&output).output();
+    let run = match run {
+        Ok(r) => r,
+        Err(e) => {
+            assert!(!tools_required(), "python3 not runnable: {e}");
+            println!("NOTICE: python3 not runnable ({e}); cross-check skipped");
+            return None;
+        }
+    };
+    if run.status.code() == Some(3) {
+        assert!(!tools_required(), "pinocchio not importable: {}", String::from_utf8_lossy(&run.stdout));
+        println!("NOTICE: {}; cross-check skipped", String::from_utf8_lossy(&run.stdout).trim());
+        return None;
+    }
+    assert!(
+        run.status.success(),
+        "{label}: forward_check.py failed:\n{}{}",
+        String::from_utf8_lossy(&run.stdout),
+        String::from_utf8_lossy(&run.stderr)
+    );
+    Some(serde_json::from_str(&std::fs::read_to_string(&output).expect("out")).expect("json"))
+}
+
+fn by_name(joints: &[String], v: &[f64]) -> BTreeMap<String, f64> {
+    joints.iter().cloned().zip(v.iter().copied()).collect()
+}
+
+/// Our accelerations against a tool's, per coordinate: the worst error relative to the
+/// sample's largest acceleration, or `Err` with the first coordinate beyond 1e-9 of it.
+fn compare(label: &str, tool: &str, joints: &[String], ours: &[f64], theirs: &serde_json::Value) -> Result<f64, String> {
+    let theirs: Vec<f64> = joints.iter().map(|j| theirs[j].as_f64().unwrap_or(f64::NAN)).collect();
+    let scale = theirs.iter().fold(0.0f64, |x, t| x.max(t.abs()));
+    let mut worst = 0.0f64;
+    for (k, (a, b)) in ours.iter().zip(&theirs).enumerate() {
+        let err = (a - b).abs();
+        if err.is_nan() || err > 1e-9 * scale + 1e-12 {
+            return Err(format!("{label}: {} ({tool}): ours {a:.15e}, theirs {b:.15e}, error {err:.3e}", joints[k]));
+        }
+        worst = worst.max(err / scale.max(1e-300));
+    }
+    Ok(worst)
+}
+
+/// The backward error of our accelerations: Pinocchio's RNEA of them against the applied
+/// torques, relative to the largest torque.
+fn backward_error(joints: &[String], tau: &[f64], back: &serde_json::Value) -> f64 {
+    let scale = tau.iter().fold(0.0f64, |x, t| x.max(t.abs()));
+    joints.iter().zip(tau).map(|(j, t)| (back[j].as_f64().unwrap_or(f64::NAN) - t).abs() / scale).fold(0.0, f64::max)
+}
+
+#[test]
+fn forward_dynamics_agrees_with_pinocchio_and_mujoco_on_the_urdf_fixtures() {
+    let Some(fx) = fixtures_dir("forward dynamics cross-check") else { return };
+    let (mut with_pin, mut with_mj) = (0, 0);
+    for c in cases(&fx) {
+        let (m, n) = (&c.m, c.m.dof());
+        let (mut ws, mut fws) = (m.workspace(), m.forward_workspace());
+        let mut rng = XorShift::new(23);
+        let (mut spec, mut ours) = (Vec::new(), Vec::new());
+        for _ in 0..10 {
+            let q: Vec<f64> = m.q0().iter().map(|q| q + rng.range(-1.0, 1.0)).collect();
+            let qd: Vec<f64> = (0..n).map(|_| rng.range(-2.0, 2.0)).collect();
+            let qdd: Vec<f64> = (0..n).map(|_| rng.range(-5.0, 5.0)).collect();
+            // Torques of a moderate acceleration, so that every coordinate is exercised.
+            let mut tau = vec![0.0; n];
+            m.inverse_dynamics(&q, &qd, &qdd, &c.gravity, &mut ws, &mut tau).expect("rnea");
+            let mut acc = vec![0.0; n];
+            m.forward_dynamics(&q, &qd, &tau, &c.gravity, &mut fws, &mut acc).unwrap_or_else(|e| panic!("{}: {e}", c.label));
+            spec.push(serde_json::json!({"q": by_name(&c.joints, &q), "qd": by_name(&c.joints, &qd), "tau": by_name(&c.joints, &tau), "qdd_ours": by_name(&c.joints, &acc)}));
+            ours.push((acc, tau));
+        }
+        let g = [c.gravity.x, c.gravity.y, c.gravity.z];
+        let Some(r) = run_tools(&c.label, serde_json::json!({"urdf": c.text, "gravity": g, "samples": spec})) else { return };
+        let (mut worst_pin, mut worst_mj, mut ill) = (0.0f64, None::<f64>, 0);
+        for (s, (acc, tau)) in ours.iter().enumerate() {
+            // A mass matrix too ill-conditioned for 1e-9 in the accelerations (iCub's head is a
+            // point mass on its neck: condition number 1.6e17) is judged by the backward error:
+            // our accelerations must reproduce the torques in Pinocchio's own RNEA to 1e-12.
+            let backward = backward_error(&c.joints, tau, &r["tau_pin_of_ours"][s]);
+            let accept = |res: Result<f64, String>, ill: &mut usize| match res {
+                Ok(w) => w,
+                Err(e) => {
+                    assert!(backward < 1e-12, "{e}; backward error {backward:.1e}");
+                    *ill += 1;
+                    0.0
+                }
+            };
+            worst_pin = worst_pin.max(accept(compare(&c.label, "pinocchio", &c.joints, acc, &r["qacc_pin"][s]), &mut ill));
+            if r["mujoco"].is_string() {
+                let w = accept(compare(&c.label, "mujoco", &c.joints, acc, &r["qacc_mujoco"][s]), &mut ill);
+                worst_mj = Some(worst_mj.unwrap_or(0.0).max(w));
+            }
+        }
+        if ill > 0 {
+            println!("{}: {ill} comparisons beyond 1e-9 on an ill-conditioned mass matrix, accepted by backward error < 1e-12", c.label);
+        }
+        with_pin += 1;
+        with_mj += usize::from(worst_mj.is_some());
+        println!(
+            "{}: {n} coordinates, 10 states: worst error {worst_pin:.1e} (Pinocchio {}), {} (MuJoCo)",
+            c.label,
+            r["pinocchio"],
+            worst_mj.map(|w| format!("{w:.1e}")).unwrap_or_else(|| format!("skipped: {}", r["mujoco_skip"]))
+        );
+    }
+    assert!(with_pin >= 8 && with_mj >= 5, "only {with_pin} URDFs against Pinocchio, {with_mj} against MuJoCo");
+}
+
+use cad2mo_engine::simulation::{self, Controller, Drive, Motor, NoForces, Reference, Start, Transmission};
+
+fn never() -> bool {
+    false
+}
+
+/// Passive runs (gravity only, from a pose 0.4 rad off the CAD pose, at rest) agree with MuJoCo's
+/// RK4 and an RK4 on Pinocchio's `aba`, both at a 1e-4 s step, within 1e-6 rad over 1 s.
+#[test]
+fn passive_runs_agree_with_mujoco_and_pinocchio_rk4() {
+    let Some(fx) = fixtures_dir("passive simulation cross-check") else { return };
+    // UR5, Panda and Solo12 take minutes each at this tolerance in a debug build: the two that
+    // run in seconds are compared on every run.
+    let wanted = ["double_pendulum.urdf", "robot.urdf"];
+    let mut checked = 0;
+    for c in cases(&fx) {
+        if !wanted.iter().any(|w| c.label.ends_with(w)) {
+            continue;
+        }
+        let (m, n) = (&c.m, c.m.dof());
+        let q: Vec<f64> = m.q0().iter().enumerate().map(|(k, q)| q + 0.4 * if k % 2 == 0 { 1.0 } else { -1.0 }).collect();
+        let opts = simulation::Options { duration: 1.0, output_interval: 0.1, rtol: 1e-12, atol: 1e-12, ..Default::default() };
+        let run = simulation::simulate(m, &c.gravity, &[], &NoForces, &Start { q: q.clone(), qd: vec![0.0; n] }, &opts, &never)
+            .unwrap_or_else(|e| panic!("{}: {e}", c.label));
+        assert_eq!(run.t.len(), 11, "{}", c.label);
+        let g = [c.gravity.x, c.gravity.y, c.gravity.z];
+        let spec = serde_json::json!({"urdf": c.text, "gravity": g, "samples": [],
+            "passive": {"q": by_name(&c.joints, &q), "dt": 1e-4, "steps": 10000, "every": 1000}});
+        let Some(r) = run_tools(&c.label, spec) else { return };
+        let mut line = format!("{}: {n} coordinates, {} steps:", c.label, run.accepted_steps);
+        for tool in ["passive_pin", "passive_mujoco"] {
+            let Some(traj) = r[tool].as_array() else {
+                line += &format!(" {tool} skipped ({});", r["mujoco_skip"]);
+                continue;
+            };
+            assert_eq!(traj.len(), 11, "{}: {tool}", c.label);
+            let mut worst = 0.0f64;
+            for (s, sample) in traj.iter().enumerate() {
+                for (k, j) in c.joints.iter().enumerate() {
+                    let theirs = sample[j].as_f64().unwrap_or(f64::NAN);
+                    // Continuous joints come back wrapped to (-pi, pi].
+                    let mut d = run.q[s][k] - theirs;
+                    d -= (d / std::f64::consts::TAU).round() * std::f64::consts::TAU;
+                    assert!(d.abs() < 1e-6, "{}: {tool}, t = {}, {j}: ours {}, theirs {theirs}", c.label, run.t[s], run.q[s][k]);
+                    worst = worst.max(d.abs());
+                }
+            }
+            line += &format!(" {tool} within {worst:.1e} rad;");
+        }
+        println!("{line}");
+        checked += 1;
+    }
+    assert!(checked >= 2, "only {checked} passive runs compared");
+}
+
+/// The UR5 with a drive on every joint follows a motion (quintic, 1 s, then held) for 1.5 s;
+/// two joints have lossy gears (η = 0.7) and the shoulder's current limit binds. The joint
+/// angles agree with an independent simulation in Python (`tests/tools/drive_check.py`) within
+/// 1e-6 rad at every 0.05 s, and the motor currents within 1e-4 A.
+#[test]
+#[ignore = "unfinished: never run to completion; the Python reference (DOP853 at rtol 1e-12) took over 10 CPU minutes under voltage saturation"]
+fn drives_agree_with_an_independent_python_simulation() {
+    let Some(fx) = fixtures_dir("drive simulation cross-check") else { return };
+    let Some(c) = cases(&fx).into_iter().find(|c| c.label.ends_with("ur5_robot.urdf")) else { panic!("ur5 fixture missing") };
+    let (m, n) = (&c.m, c.m.dof());
+    let q0 = m.q0();
+    let delta = [0.8, -0.6, 0.9, -0.5, 0.7, 1.0];
+    let ts: Vec<f64> = (0..=1000).map(|k| k as f64 * 1e-3).collect();
+    let mut drives = Vec::new();
+    for (k, &d) in delta.iter().enumerate().take(n) {
+        let s = |t: f64| 10.0 * t.powi(3) - 15.0 * t.powi(4) + 6.0 * t.powi(5);
+        let sd = |t: f64| 30.0 * t.powi(2) - 60.0 * t.powi(3) + 30.0 * t.powi(4);
+        drives.push(Drive {
+            coordinate: k,
+            motor: Motor {
+                r: 0.299,
+                l: 8.2e-5,
+                k: 0.0302,
+                j: 1.42e-5,
+                d: 1e-5,
+                v_max: 48.0,
+                i_max: if k == 1 { 12.0 } else { 30.0 },
+                tc: 0.001,
+            },
+            transmission: Transmission { ratio: 160.0, eta: if k == 1 || k == 2 { 0.7 } else { 1.0 } },
+            controller: Controller { kp: 10.0, ks: 0.5, ts: 0.05 },
+            reference: Reference::Motion {
+                t: ts.clone(),
+                q: ts.iter().map(|t| q0[k] + d * s(*t)).collect(),
+                qd: ts.iter().map(|t| d * sd(*t)).collect(),
+            },
+        });
+    }
+    let opts = simulation::Options { duration: 1.5, output_interval: 0.05, rtol: 1e-11, atol: 1e-12, ..Default::default() };
+    let run =
+        simulation::simulate(m, &c.gravity, &drives, &NoForces, &Start { q: q0.clone(), qd: vec![0.0; n] }, &opts, &never).expect("runs");
+    let spec_drives: Vec<serde_json::Value> = drives
+        .iter()
+        .map(|d| {
+            let Reference::Motion { t, q, qd } = &d.reference else { unreachable!() };
+            let mo = &d.motor;
+            serde_json::json!({"joint": c.joints[d.coordinate], "R": mo.r, "L": mo.l, "k": mo.k, "J": mo.j, "d": mo.d,
+                "V_max": mo.v_max, "I_max": mo.i_max, "Tc": mo.tc, "kp": d.controller.kp, "ks": d.controller.ks, "Ts": d.controller.ts,
+                "ratio": d.transmission.ratio, "eta": d.transmission.eta, "t": t, "q": q, "qd": qd})
+        })
+        .collect();
+    let g = [c.gravity.x, c.gravity.y, c.gravity.z];
+    let spec = serde_json::json!({"urdf": c.text, "gravity": g, "joints": c.joints, "q0": q0, "drives": spec_drives,
+        "duration": 1.5, "times": run.t});
+    let dir = tempfile::tempdir().expect("tempdir");
+    let (input, output) = (dir.path().join("in.json"), dir.path().join("out.json"));
+    std::fs::write(&input, spec.to_string()).expect("write");
+    let out = Command::new("python3").arg(workspace_root().join("tests/tools/drive_check.py")).arg(&input).arg(&output).output();
+    let out = match out {
+        Ok(o) if o.status.code() == Some(3) => {
+            assert!(!tools_required(), "pinocchio/scipy not importable");
+            println!("NOTICE: {}; drive cross-check skipped", String::from_utf8_lossy(&o.stdout).trim());
+            return;
+        }
+        Ok(o) => o,
+        Err(e) => {
+            assert!(!tools_required(), "python3: {e}");
+            println!("NOTICE: python3 not runnable ({e}); drive cross-check skipped");
+            return;
+        }
+    };
+    assert!(out.status.success(), "drive_check.py:\n{}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
+    let r: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&output).expect("out")).expect("json");
+    let tracking = run.tracking(&drives, &[0.0, 0.5, 1.0, 1.5]);
+    let (mut worst_q, mut worst_i) = (0.0f64, 0.0f64);
+    for s in 0..run.t.len() {
+        for k in 0..n {
+            let theirs = r["q"][s][k].as_f64().unwrap_or(f64::NAN);
+            let d = (run.q[s][k] - theirs).abs();
+            assert!(d < 1e-6, "t = {}, {}: ours {}, Python {theirs}", run.t[s], c.joints[k], run.q[s][k]);
+            worst_q = worst_q.max(d);
+            let di = (run.drives[k][s].i - r["i"][s][k].as_f64().unwrap_or(f64::NAN)).abs();
+            assert!(di < 1e-4, "t = {}, {}: current ours {}, Python {}", run.t[s], c.joints[k], run.drives[k][s].i, r["i"][s][k]);
+            worst_i = worst_i.max(di);
+        }
+    }
+    for (k, t) in tracking.iter().enumerate() {
+        println!(
+            "{}: max error {:.3e} rad, rms {:.3e}, at keyframes {:?}, max current {:.2}/{} A, max voltage {:.2}/{} V, saturated {:?}",
+            c.joints[k], t.max_error, t.rms_error, t.at_keyframes, t.max_current, t.i_max, t.max_voltage, t.v_max, t.saturated
+        );
+    }
+    assert!(!tracking[1].saturated.is_empty(), "the shoulder's current limit should bind: {:?}", tracking[1]);
+    println!("UR5 with 6 drives, 1.5 s: {} steps; joint angles within {worst_q:.1e} rad and currents within {worst_i:.1e} A of Python ({} evaluations there)", run.accepted_steps, r["nfev"]);
+}
