@@ -184,6 +184,7 @@ fn never() -> bool {
 /// Passive runs (gravity only, from a pose 0.4 rad off the CAD pose, at rest) agree with MuJoCo's
 /// RK4 and an RK4 on Pinocchio's `aba`, both at a 1e-4 s step, within 1e-6 rad over 1 s.
 #[test]
+#[ignore = "slow (about 6 minutes on 2 cores: rtol 1e-12 in a debug build and RK4 in Python at 1e-4 s); run with --ignored"]
 fn passive_runs_agree_with_mujoco_and_pinocchio_rk4() {
     let Some(fx) = fixtures_dir("passive simulation cross-check") else { return };
     // UR5, Panda and Solo12 take minutes each at this tolerance in a debug build: the two that

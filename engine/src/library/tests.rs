@@ -478,7 +478,9 @@ fn catalogue_values_are_the_datasheets() {
     // its column, in SI units.
     let g = seed::BECKHOFF_GEARS[7];
     assert!(close(get(g, "ratio"), 7.0) && close(get(g, "eta"), 0.97) && close(get(g, "T_rated"), 81.0) && close(get(g, "T_peak"), 172.0));
-    assert!(close(get(g, "w_in_max"), 7500.0 * std::f64::consts::PI / 30.0) && close(get(g, "J_in"), 0.64e-4) && close(get(g, "mass"), 3.8));
+    assert!(
+        close(get(g, "w_in_max"), 7500.0 * std::f64::consts::PI / 30.0) && close(get(g, "J_in"), 0.64e-4) && close(get(g, "mass"), 3.8)
+    );
     assert!(close(get(g, "backlash"), 3.0 * std::f64::consts::PI / 10800.0));
     // Its neighbour at ratio 8 has its own ratings (no ratio of a family borrows another's).
     let h = seed::BECKHOFF_GEARS[8];

@@ -302,13 +302,7 @@ struct Sys<'a, 'b>(&'b Model<'a>);
 
 impl Model<'_> {
     /// The derivative `dy` at `(t, y)`; `record` receives each drive's signals.
-    fn eval(
-        &self,
-        t: f64,
-        y: &DVector<f64>,
-        dy: &mut DVector<f64>,
-        record: Option<&mut Vec<DriveSample>>,
-    ) -> Result<(), MechanismError> {
+    fn eval(&self, t: f64, y: &DVector<f64>, dy: &mut DVector<f64>, record: Option<&mut Vec<DriveSample>>) -> Result<(), MechanismError> {
         let m = self.m;
         let k = self.driven.len();
         let n = m.dof();
