@@ -83,11 +83,11 @@ async fn a_fresh_app_has_the_seeded_library() {
     assert_eq!(r_param["editable"], false);
 
     let motors = json_of(app.library_instances("?domain=motor").await).await;
-    // 5 motors of the first seed (4 DC, 1 MSL) and 8 catalogue motors.
-    assert_eq!(motors.as_array().expect("array").len(), 13, "{motors}");
+    // 5 motors of the first seed (4 DC, 1 MSL) and 14 catalogue motors (8 FAULHABER, 6 maxon).
+    assert_eq!(motors.as_array().expect("array").len(), 19, "{motors}");
     let ours = json_of(app.library_instances(&format!("?class_id={}", seed::DC_MOTOR)).await).await;
     let ours = ours.as_array().expect("array");
-    assert_eq!(ours.len(), 12);
+    assert_eq!(ours.len(), 18);
     assert!(ours.iter().all(|i| i["class_id"] == seed::DC_MOTOR && i["domain"] == "motor"));
     let gears = json_of(app.library_instances("?domain=gear").await).await;
     assert!(gears.as_array().expect("array").iter().all(|i| i["domain"] == "gear"));
@@ -182,8 +182,8 @@ async fn class_conflicts_and_unknown_ids() {
     // A class with instances cannot be deleted.
     let p = problem(app.delete_library_class(seed::DC_MOTOR).await, 409).await;
     let detail = p["detail"].as_str().expect("detail");
-    // 12 instances: the first five by name are named, then how many more.
-    assert!(detail.contains("12 instance(s)") && detail.contains("Faulhaber 1331 T 006 SR") && detail.contains("and 7 more"), "{detail}");
+    // 18 instances: the first five by name are named, then how many more.
+    assert!(detail.contains("18 instance(s)") && detail.contains("Faulhaber 1331 T 006 SR") && detail.contains("and 13 more"), "{detail}");
     assert_eq!(app.library_class(seed::DC_MOTOR).await.status(), 200);
     // Unknown ids.
     let unknown = "00000000-0000-4000-8000-000000000000";
@@ -199,9 +199,9 @@ async fn a_class_change_carries_its_instances_over_or_changes_nothing() {
     let class = json_of(app.library_class(seed::EFFICIENCY_GEAR).await).await;
     // A new parameter without default: the existing gear instance cannot follow.
     let mut body = class.clone();
-    body["parameters"].as_array_mut().expect("params").push(json!({"name": "backlash", "type": "Real", "unit": "rad"}));
+    body["parameters"].as_array_mut().expect("params").push(json!({"name": "play", "type": "Real", "unit": "rad"}));
     let p = problem(app.update_library_class(seed::EFFICIENCY_GEAR, &body).await, 422).await;
-    assert!(fields(&p).iter().any(|f| f.contains("backlash")), "{p}");
+    assert!(fields(&p).iter().any(|f| f.contains("play")), "{p}");
     assert_eq!(json_of(app.library_class(seed::EFFICIENCY_GEAR).await).await, class, "unchanged");
     // With a default (given in mrad) it can.
     let last = body["parameters"].as_array().expect("params").len() - 1;
@@ -209,7 +209,7 @@ async fn a_class_change_carries_its_instances_over_or_changes_nothing() {
     let r = app.update_library_class(seed::EFFICIENCY_GEAR, &body).await;
     assert_eq!(r.status(), 200);
     let gear = json_of(app.library_instance(seed::MAXON_GP42C_74).await).await;
-    assert_eq!(gear["values"]["backlash"], 0.001);
+    assert_eq!(gear["values"]["play"], 0.001);
     assert_eq!(gear["values"]["eta"], 0.72);
 }
 
