@@ -125,22 +125,7 @@ impl Mechanism {
                 parent = parent * l.x_tree * element_motion(l.prismatic, &l.axis, q[i]);
                 poses[k] = parent;
             }
-            let tool_pose = parent * at.offset;
-            let p = tool_pose.translation.vector;
-            match target {
-                IkTarget::Pose(t) => {
-                    let rot = (t.rotation * tool_pose.rotation.inverse()).scaled_axis();
-                    let dp = t.translation.vector - p;
-                    e.fixed_rows_mut::<3>(0).copy_from(&rot);
-                    e.fixed_rows_mut::<3>(3).copy_from(&dp);
-                    (dp.norm(), rot.norm())
-                }
-                IkTarget::Position(t) => {
-                    let dp = t - p;
-                    e.fixed_rows_mut::<3>(0).copy_from(&dp);
-                    (dp.norm(), 0.0)
-                }
-            }
+            target_error(target, &(parent * at.offset), e)
         };
         let mut total = 0;
         let mut best: Option<(f64, Vec<f64>, f64, f64)> = None;
@@ -258,22 +243,7 @@ impl Mechanism {
         let rows = if matches!(target, IkTarget::Pose(_)) { 6 } else { 3 };
         let error = |q: &[f64], e: &mut DVector<f64>| -> Result<(f64, f64), MechanismError> {
             let k = self.forward(q)?;
-            let tool_pose = self.attachment_pose(&k, &at);
-            let p = tool_pose.translation.vector;
-            Ok(match target {
-                IkTarget::Pose(t) => {
-                    let rot = (t.rotation * tool_pose.rotation.inverse()).scaled_axis();
-                    let dp = t.translation.vector - p;
-                    e.fixed_rows_mut::<3>(0).copy_from(&rot);
-                    e.fixed_rows_mut::<3>(3).copy_from(&dp);
-                    (dp.norm(), rot.norm())
-                }
-                IkTarget::Position(t) => {
-                    let dp = t - p;
-                    e.fixed_rows_mut::<3>(0).copy_from(&dp);
-                    (dp.norm(), 0.0)
-                }
-            })
+            Ok(target_error(target, &self.attachment_pose(&k, &at), e))
         };
         let mut e = DVector::<f64>::zeros(rows);
         let mut total = 0;
@@ -341,5 +311,25 @@ impl Mechanism {
         };
         let mobility = self.tool_mobility(&q, &cut, tool, rows)?;
         Ok(IkResult { q, success: false, iterations: total, restarts: opts.restarts, position_error: dp, rotation_error: dr, mobility })
+    }
+}
+
+/// The error of `tool_pose` from `target` into `e` (`[rotation; position]` for a pose, the
+/// position alone for a point): (position error m, rotation error rad).
+fn target_error(target: &IkTarget, tool_pose: &Isometry3<f64>, e: &mut DVector<f64>) -> (f64, f64) {
+    let p = tool_pose.translation.vector;
+    match target {
+        IkTarget::Pose(t) => {
+            let rot = (t.rotation * tool_pose.rotation.inverse()).scaled_axis();
+            let dp = t.translation.vector - p;
+            e.fixed_rows_mut::<3>(0).copy_from(&rot);
+            e.fixed_rows_mut::<3>(3).copy_from(&dp);
+            (dp.norm(), rot.norm())
+        }
+        IkTarget::Position(t) => {
+            let dp = t - p;
+            e.fixed_rows_mut::<3>(0).copy_from(&dp);
+            (dp.norm(), 0.0)
+        }
     }
 }
