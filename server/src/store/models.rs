@@ -311,15 +311,21 @@ pub async fn requeue_unfinished(pool: &Pool) -> Result<u64, StoreError> {
     )))
     .fetch_all(&mut *tx)
     .await?;
-    for (model_id, version) in &requeued {
+    requeue_versions(&mut tx, pool, &requeued).await?;
+    tx.commit().await?;
+    Ok(requeued.len() as u64)
+}
+
+/// Marks the versions of jobs put back in the queue queued again (those still running).
+async fn requeue_versions(tx: &mut AnyConnection, pool: &Pool, jobs: &[(String, i64)]) -> Result<(), StoreError> {
+    for (model_id, version) in jobs {
         sqlx::query(&pool.sql("UPDATE versions SET status = 'queued' WHERE model_id = ? AND version = ? AND status = 'running'"))
             .bind(model_id)
             .bind(version)
             .execute(&mut *tx)
             .await?;
     }
-    tx.commit().await?;
-    Ok(requeued.len() as u64)
+    Ok(())
 }
 
 /// Puts the jobs `instance` was running back in the queue (job and version) without charging
@@ -334,13 +340,7 @@ pub async fn release_claims(pool: &Pool, instance: &str) -> Result<u64, StoreErr
     .bind(format!("{instance}:%"))
     .fetch_all(&mut *tx)
     .await?;
-    for (model_id, version) in &requeued {
-        sqlx::query(&pool.sql("UPDATE versions SET status = 'queued' WHERE model_id = ? AND version = ? AND status = 'running'"))
-            .bind(model_id)
-            .bind(version)
-            .execute(&mut *tx)
-            .await?;
-    }
+    requeue_versions(&mut tx, pool, &requeued).await?;
     tx.commit().await?;
     Ok(requeued.len() as u64)
 }
