@@ -166,21 +166,9 @@ pub fn body_shapes(model: &Model, opts: &ShapeOptions, cache: Option<&dyn ShapeC
 }
 
 impl Collision {
-    /// Shapes for every body with a mesh (from `cache` where it has them); pairs joined by a
+    /// The collision world of the bodies' shapes as [`body_shapes`] made them (it needs no
+    /// names, so a conversion makes them while it writes the Modelica text): pairs joined by a
     /// joint; the user's edits by name.
-    pub fn new(
-        model: &Model,
-        names: &[String],
-        joint_names: &[String],
-        edits: &AllowedEdits,
-        opts: &ShapeOptions,
-        cache: Option<&dyn ShapeCache>,
-    ) -> Collision {
-        Collision::from_shapes(body_shapes(model, opts, cache), model, names, joint_names, edits)
-    }
-
-    /// [`Collision::new`] with the bodies' shapes already made by [`body_shapes`] (which needs
-    /// no names, so a conversion makes them while it writes the Modelica text).
     pub fn from_shapes(
         (shapes, counts): (Vec<Option<BodyShape>>, ShapeCounts),
         model: &Model,
