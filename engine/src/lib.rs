@@ -13,6 +13,7 @@
 //! - [`collision`]: collision shapes, distances and sweeps along a motion.
 //! - [`results`]: simulation result files (MAT v4, CSV) read into time series and body poses.
 //! - [`live`]: the live view's frames (decoding and verifying what a running model sends).
+//! - [`scene`]: a model's environment (scene objects: primitives, static, moving or free).
 //! - [`diff`]: what changed between two conversions.
 
 pub mod collision;
@@ -23,6 +24,7 @@ pub mod mechanism;
 pub mod motion;
 pub mod pipeline;
 pub mod results;
+pub mod scene;
 pub mod simulation;
 pub mod sizing;
 
