@@ -26,8 +26,24 @@ pub fn router() -> Router<AppState> {
         .route("/api/models/{model_id}/motions/{motion_id}/collisions", get(motion_collisions))
 }
 
+/// The shapes of a version with the model's scene objects after its bodies (issue 29), and the
+/// scene objects this version leaves out.
+async fn scene_shapes(
+    state: &AppState,
+    model_id: &str,
+    version: Option<i64>,
+) -> Result<(i64, Arc<VersionShapes>, Vec<crate::service::scene::LeftOut>), ApiError> {
+    let (number, s) = shapes(state, model_id, version).await?;
+    let spec = store::scene::get(&state.store, model_id).await?;
+    if spec.objects.is_empty() {
+        return Ok((number, s, Vec::new()));
+    }
+    let (with, left_out) = blocking(move || Ok(crate::service::scene::with_scene(&s, &spec))).await?;
+    Ok((number, Arc::new(with), left_out))
+}
+
 /// The shapes of a version (`None`: the latest converted one), cached by package.
-async fn shapes(state: &AppState, model_id: &str, version: Option<i64>) -> Result<(i64, Arc<VersionShapes>), ApiError> {
+pub(super) async fn shapes(state: &AppState, model_id: &str, version: Option<i64>) -> Result<(i64, Arc<VersionShapes>), ApiError> {
     let v = converted_version(state, model_id, version, "its collision shapes are unknown").await?;
     let (package, report) = (v.package_sha256.clone().unwrap_or_default(), v.report_sha256.clone().unwrap_or_default());
     if let Some(s) = state.collisions.get(&package) {
@@ -58,21 +74,24 @@ struct VersionCollision {
     bodies: serde_json::Value,
     /// Checked pairs (the model's current matrix) that intersect at the CAD pose.
     interferences: Vec<InterferenceReport>,
+    /// Scene objects this version cannot take, and why (issue 29).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    scene_left_out: Vec<crate::service::scene::LeftOut>,
 }
 
 async fn version_collision(
     State(state): State<AppState>,
     Path((model_id, version)): Path<(String, i64)>,
 ) -> Result<Json<VersionCollision>, ApiError> {
-    let (version, s) = shapes(&state, &model_id, Some(version)).await?;
+    let (version, s, scene_left_out) = scene_shapes(&state, &model_id, Some(version)).await?;
     let edits = edits(&state, &model_id).await?;
     let shared = s.clone();
     let interferences = blocking(move || Ok(collisions::interferences(&shared, &edits))).await?;
-    Ok(Json(VersionCollision { version, bodies: s.report_bodies.clone(), interferences }))
+    Ok(Json(VersionCollision { version, bodies: s.report_bodies.clone(), interferences, scene_left_out }))
 }
 
 async fn get_matrix(State(state): State<AppState>, Path(model_id): Path<String>) -> Result<Json<collisions::MatrixView>, ApiError> {
-    let (_, s) = shapes(&state, &model_id, None).await?;
+    let (_, s, _) = scene_shapes(&state, &model_id, None).await?;
     let edits = edits(&state, &model_id).await?;
     Ok(Json(collisions::matrix(&s, &edits)))
 }
@@ -99,7 +118,7 @@ async fn put_matrix(
 ) -> Result<Json<collisions::MatrixView>, ApiError> {
     let v = b.map(|Json(v)| v).map_err(|e| ApiError::BadRequest(format!("invalid collision matrix: {}", e.body_text())))?;
     let edit: MatrixEdit = serde_json::from_value(v).map_err(|e| ApiError::BadRequest(format!("invalid collision matrix: {e}")))?;
-    let (_, s) = shapes(&state, &model_id, None).await?;
+    let (_, s, _) = scene_shapes(&state, &model_id, None).await?;
     let with: BTreeSet<&str> = (0..s.bodies.len()).filter(|&i| s.shapes[i].is_some()).map(|i| s.bodies[i].as_str()).collect();
     let mut errors = Vec::new();
     let mut seen = BTreeSet::new();
@@ -133,7 +152,7 @@ async fn motion_collisions(
 ) -> Result<Json<collisions::MotionCollisions>, ApiError> {
     let m = find_motion(&state, &model_id, &motion_id).await?;
     let (version, k) = kinematic(&state, &model_id).await?;
-    let (_, s) = shapes(&state, &model_id, Some(version)).await?;
+    let (_, s, _) = scene_shapes(&state, &model_id, Some(version)).await?;
     let limits = store::motions::limits(&state.store, &model_id).await?;
     let edits = edits(&state, &model_id).await?;
     let out = blocking(move || {

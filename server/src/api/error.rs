@@ -18,6 +18,7 @@ use crate::service::export::ExportError;
 use crate::service::models::ModelError;
 use crate::service::motions::MotionError;
 use crate::service::results::ResultError;
+use crate::service::scene::SceneError;
 pub use crate::service::FieldError;
 
 #[derive(Debug, thiserror::Error)]
@@ -153,6 +154,14 @@ impl From<MotionError> for ApiError {
             MotionError::Export(x) => x.into(),
             MotionError::Drive(d) => d.into(),
             MotionError::Store(s) => s.into(),
+        }
+    }
+}
+
+impl From<SceneError> for ApiError {
+    fn from(e: SceneError) -> Self {
+        match e {
+            SceneError::Invalid(ref errors) => ApiError::Invalid { errors: errors.clone(), detail: e.to_string() },
         }
     }
 }

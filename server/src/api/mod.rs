@@ -16,6 +16,7 @@ mod models;
 mod motions;
 mod openapi;
 mod results;
+mod scene;
 pub mod serve;
 mod web;
 
@@ -38,6 +39,7 @@ pub fn router(state: AppState) -> Router {
         .merge(results::router())
         .merge(live::router())
         .merge(collision::router())
+        .merge(scene::router())
         .merge(web::router())
         .layer(axum::middleware::from_fn_with_state(cache::LibraryCache::default(), cache::library_cache))
         .layer(axum::middleware::from_fn_with_state(

@@ -25,6 +25,10 @@ pub struct VersionShapes {
     pub cad: Vec<Isometry3<f64>>,
     /// The report's per-body section (kind, vertices, fit error, warnings).
     pub report_bodies: serde_json::Value,
+    /// The model's bodies are `bodies[..model_bodies]`; the rest are scene objects
+    /// (`service::scene::with_scene`), placed by `scene`.
+    pub model_bodies: usize,
+    pub scene: Vec<crate::service::scene::Placed>,
 }
 
 /// Why a collision use case failed.
@@ -99,7 +103,8 @@ impl VersionShapes {
                 }
             }
         }
-        Ok(VersionShapes { bodies, shapes, joined, cad, report_bodies: report["collision"]["bodies"].clone() })
+        let model_bodies = bodies.len();
+        Ok(VersionShapes { bodies, shapes, joined, cad, report_bodies: report["collision"]["bodies"].clone(), model_bodies, scene: Vec::new() })
     }
 }
 
@@ -237,7 +242,7 @@ pub fn along_motion(
     name: &str,
     p: &Planned,
 ) -> Result<MotionCollisions, CollisionError> {
-    if mech.body_names() != v.bodies.as_slice() {
+    if mech.body_names() != &v.bodies[..v.model_bodies] {
         return Err(internal("the mechanism's bodies differ from the package's".into()));
     }
     // The budgets, checked before anything is sampled.
@@ -275,7 +280,11 @@ pub fn along_motion(
     let pose_at = |i: usize| -> Vec<Isometry3<f64>> {
         let q: Vec<f64> = (0..n).map(|a| s.q[a][i]).collect();
         match mech.forward(&q) {
-            Ok(k) => (0..bodies).map(|b| mech.body_pose(&k, BodyId(b as u32)).unwrap_or_else(|_| v.cad[b])).collect(),
+            Ok(k) => {
+                let model: Vec<Isometry3<f64>> =
+                    (0..v.model_bodies).map(|b| mech.body_pose(&k, BodyId(b as u32)).unwrap_or_else(|_| v.cad[b])).collect();
+                crate::service::scene::poses(v, model, s.t[i])
+            }
             Err(e) => {
                 failed.borrow_mut().get_or_insert_with(|| e.to_string());
                 v.cad.clone()

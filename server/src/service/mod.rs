@@ -19,6 +19,7 @@ pub mod export;
 pub mod models;
 pub mod motions;
 pub mod results;
+pub mod scene;
 
 /// Runs blocking work (file store, analysis, conversion) off the async runtime, in the caller's
 /// span; a task that panics is an internal error of the use case.

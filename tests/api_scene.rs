@@ -1,0 +1,250 @@
+//! Scenes through the REST API (issue 29) on a generated two-link arm: create, read back, edit
+//! and delete a scene; every bad input a 422 naming its field; the scene kept by a new CAD
+//! version; scene objects named as interferences at the CAD pose, in the allowed-collision
+//! matrix and along a motion, with first contact times checked against an independent sampled
+//! computation (separating axes on the arm's and the obstacle's rectangles in the swing plane,
+//! and the analytic time a conveyor's crate reaches the base).
+
+use cad2mo_tests::app::TestApp;
+use serde_json::{json, Value};
+
+async fn json_of(r: reqwest::Response, status: u16) -> Value {
+    let s = r.status().as_u16();
+    let v: Value = r.json().await.expect("json body");
+    assert_eq!(s, status, "{v:#}");
+    v
+}
+
+/// A base box (0.1 × 0.1 × 0.2 m, z 0 .. 0.2) and an arm box (0.04 × 0.04 × 0.4 m) on a
+/// revolute shoulder about y at z = 0.2, pointing up at q = 0.
+fn arm() -> Vec<u8> {
+    let inertial = r#"<inertial><mass value="1"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial>"#;
+    let urdf = format!(
+        r#"<robot name="scenearm">
+<link name="base">{inertial}<visual><origin xyz="0 0 0.1"/><geometry><box size="0.1 0.1 0.2"/></geometry></visual></link>
+<link name="arm">{inertial}<visual><origin xyz="0 0 0.2"/><geometry><box size="0.04 0.04 0.4"/></geometry></visual></link>
+<joint name="shoulder" type="revolute"><parent link="base"/><child link="arm"/><origin xyz="0 0 0.2"/><axis xyz="0 1 0"/>
+<limit lower="-3" upper="3" effort="10" velocity="2"/></joint></robot>"#
+    );
+    cad2mo_engine::pipeline::back::bundle::write_zip(&[("scenearm/scenearm.urdf".into(), urdf.into_bytes())]).expect("zip")
+}
+
+/// The rotation about y by `a` (rows).
+fn rot_y(a: f64) -> [[f64; 3]; 3] {
+    [[a.cos(), 0.0, a.sin()], [0.0, 1.0, 0.0], [-a.sin(), 0.0, a.cos()]]
+}
+
+const OBSTACLE_AT: [f64; 3] = [0.35, 0.0, 0.25];
+const OBSTACLE_HALF: [f64; 2] = [0.05, 0.05];
+const OBSTACLE_TILT: f64 = 0.3;
+
+fn scene(wall_z: f64) -> Value {
+    json!({"objects": [
+        {"name": "wall", "shape": {"kind": "box", "size": [0.1, 0.3, 0.1]}, "position": [0, 0, wall_z], "color": [0.8, 0.2, 0.2]},
+        {"name": "obstacle", "shape": {"kind": "box", "size": [2.0 * OBSTACLE_HALF[0], 0.3, 2.0 * OBSTACLE_HALF[1]]},
+         "position": OBSTACLE_AT, "rotation": rot_y(OBSTACLE_TILT)},
+        {"name": "crate", "shape": {"kind": "box", "size": [0.1, 0.1, 0.1]}, "position": [-0.5, 0, 0.1], "kind": "moving",
+         "motion": {"velocity": [0.5, 0, 0]}},
+        {"name": "pallet", "shape": {"kind": "box", "size": [0.2, 0.2, 0.02]}, "position": [2, 0, 0.5], "kind": "free", "mass": 3},
+        {"name": "floor", "shape": {"kind": "plane"}, "position": [0, 0, -0.01]},
+        {"name": "tool", "shape": {"kind": "sphere", "radius": 0.03}, "position": [0, 0, 0.2], "attached_to": "arm"}
+    ]})
+}
+
+/// Independent check: do the arm's and the obstacle's rectangles (their sections by the swing
+/// plane y = 0; both boxes span y = 0) overlap at shoulder angle `q`? Separating axes.
+fn arm_meets_obstacle(q: f64) -> bool {
+    // A rotation about y by a maps (x, z) to (x cos a + z sin a, −x sin a + z cos a).
+    let turn = |a: f64, v: [f64; 2]| [v[0] * a.cos() + v[1] * a.sin(), -v[0] * a.sin() + v[1] * a.cos()];
+    let arm_c = {
+        let d = turn(q, [0.0, 0.2]);
+        [d[0], 0.2 + d[1]]
+    };
+    let rects = [
+        (arm_c, [turn(q, [1.0, 0.0]), turn(q, [0.0, 1.0])], [0.02, 0.2]),
+        ([OBSTACLE_AT[0], OBSTACLE_AT[2]], [turn(OBSTACLE_TILT, [1.0, 0.0]), turn(OBSTACLE_TILT, [0.0, 1.0])], OBSTACLE_HALF),
+    ];
+    let dot = |a: [f64; 2], b: [f64; 2]| a[0] * b[0] + a[1] * b[1];
+    for (_, axes, _) in &rects {
+        for n in axes {
+            let span = |(c, ax, h): &([f64; 2], [[f64; 2]; 2], [f64; 2])| {
+                let m = dot(*c, *n);
+                let r = h[0] * dot(ax[0], *n).abs() + h[1] * dot(ax[1], *n).abs();
+                (m - r, m + r)
+            };
+            let (a, b) = (span(&rects[0]), span(&rects[1]));
+            if a.1 < b.0 || b.1 < a.0 {
+                return false;
+            }
+        }
+    }
+    true
+}
+
+fn pair<'a>(v: &'a Value, a: &str, b: &str) -> Option<&'a Value> {
+    v["pairs"].as_array().expect("pairs").iter().find(|p| (p["a"] == a && p["b"] == b) || (p["a"] == b && p["b"] == a))
+}
+
+fn interference_names(c: &Value) -> Vec<(String, String)> {
+    let mut out: Vec<(String, String)> = c["interferences"]
+        .as_array()
+        .expect("interferences")
+        .iter()
+        .map(|i| {
+            let (a, b) = (i["a"].as_str().expect("a").to_string(), i["b"].as_str().expect("b").to_string());
+            if a < b {
+                (a, b)
+            } else {
+                (b, a)
+            }
+        })
+        .collect();
+    out.sort();
+    out
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn scenes_are_stored_checked_and_collide() {
+    let app = TestApp::spawn().await;
+    let (id, v, job) = app.upload_model_ok(arm(), &[]).await;
+    assert_eq!(app.wait_for_job(&job).await["status"], "succeeded");
+    let url = format!("/api/models/{id}/scene");
+    let put = |body: Value| app.client.put(app.url(&url)).json(&body).send();
+
+    // Empty at first; the model's bodies are base and arm.
+    assert_eq!(json_of(app.get(&url).await, 200).await, json!({"objects": []}));
+    let m = json_of(app.get(&format!("/api/models/{id}/collision-matrix")).await, 200).await;
+    assert_eq!(m["bodies"], json!(["base", "arm"]), "{m:#}");
+
+    // Create and read back (defaults left out, the given values kept).
+    let stored = json_of(put(scene(0.55)).await.expect("put"), 200).await;
+    assert_eq!(stored, scene(0.55));
+    assert_eq!(json_of(app.get(&url).await, 200).await, scene(0.55));
+
+    // The CAD pose: the wall across the arm's top is an interference; the obstacle is clear of
+    // the upright arm; the tool (attached to the arm, inside it) and objects fixed in the world
+    // are allowed by default.
+    let collision = format!("/api/models/{id}/versions/{v}/collision");
+    let c = json_of(app.get(&collision).await, 200).await;
+    assert_eq!(interference_names(&c), [("arm".to_string(), "wall".to_string())], "{c:#}");
+    let depth = c["interferences"][0]["depth"].as_f64().expect("depth");
+    // The arm's top is at z = 0.6, the wall's bottom at 0.5; sideways the arm (±0.02) is inside the wall (±0.05).
+    assert!((depth - 0.07).abs() < 1e-6 || (depth - 0.1).abs() < 1e-6, "depth {depth}: {c:#}");
+    let m = json_of(app.get(&format!("/api/models/{id}/collision-matrix")).await, 200).await;
+    assert_eq!(m["bodies"], json!(["base", "arm", "wall", "obstacle", "crate", "pallet", "floor", "tool"]), "{m:#}");
+    let tool = pair(&m, "arm", "tool").expect("arm/tool");
+    assert_eq!(tool["allowed"], true);
+    assert!(tool["why"].as_str().expect("why").contains("attached"), "{tool:#}");
+    assert_eq!(pair(&m, "wall", "floor").expect("wall/floor")["allowed"], true);
+    assert_eq!(pair(&m, "crate", "floor").expect("crate/floor")["allowed"], false);
+    assert_eq!(pair(&m, "arm", "obstacle").expect("arm/obstacle")["allowed"], false);
+    // The base stands on the floor (touching is not an interference); allowing a pair by name
+    // removes it from the checks.
+    let mp = format!("/api/models/{id}/collision-matrix");
+    let r = app.client.put(app.url(&mp)).json(&json!({"pairs": [{"a": "wall", "b": "arm", "allowed": true}]})).send().await.expect("put");
+    json_of(r, 200).await;
+    assert_eq!(interference_names(&json_of(app.get(&collision).await, 200).await), Vec::<(String, String)>::new());
+    let r = app.client.put(app.url(&mp)).json(&json!({"pairs": [{"a": "wall", "b": "arm", "allowed": null}]})).send().await.expect("put");
+    json_of(r, 200).await;
+
+    // Edit: the wall moved up out of reach, no interference left.
+    json_of(put(scene(0.9)).await.expect("put"), 200).await;
+    assert_eq!(interference_names(&json_of(app.get(&collision).await, 200).await), Vec::<(String, String)>::new());
+
+    // A motion swinging the arm through the obstacle.
+    let motion = json!({"name": "swing", "keyframes": [{"kind": "joints", "values": {}}, {"kind": "joints", "values": {"shoulder": 2.0}}]});
+    let r = app.client.post(app.url(&format!("/api/models/{id}/motions"))).json(&motion).send().await.expect("post");
+    let mid = json_of(r, 201).await["id"].as_str().expect("id").to_string();
+    let s = json_of(app.get(&format!("/api/models/{id}/motions/{mid}/collisions")).await, 200).await;
+    assert_eq!(s["rate_hz"], 1000.0);
+    let guarantee = s["guarantee"].as_str().expect("guarantee");
+    let hit = pair(&s, "arm", "obstacle").unwrap_or_else(|| panic!("arm/obstacle checked: {s:#}"));
+    let t_api = hit["first_contact"].as_f64().unwrap_or_else(|| panic!("the arm hits the obstacle: {s:#}"));
+    // The independent computation on the same 1 kHz samples of the motion.
+    let tr = json_of(app.get(&format!("/api/models/{id}/motions/{mid}/trajectory?rate=1000")).await, 200).await;
+    let times: Vec<f64> = serde_json::from_value(tr["t"].clone()).expect("t");
+    let q: Vec<f64> = serde_json::from_value(tr["q"][0].clone()).expect("q");
+    let k = q.iter().position(|&a| arm_meets_obstacle(a)).expect("the swing meets the obstacle");
+    let t_own = times[k];
+    // The sweep's guarantee: first contact is exact over the samples (every sample where a
+    // checked pair touches is evaluated); one sample either way for a touch within rounding.
+    assert!((t_api - t_own).abs() <= 1.0e-3 + 1e-9, "first contact {t_api} s, independent {t_own} s; {guarantee}");
+    assert!(t_own > 0.05 && t_own < times[times.len() - 1], "{t_own}");
+    // The crate on its conveyor (0.5 m/s from x = -0.5) reaches the base (x = -0.05) at 0.8 s.
+    let c = pair(&s, "base", "crate").unwrap_or_else(|| panic!("base/crate: {s:#}"));
+    let t_crate = c["first_contact"].as_f64().unwrap_or_else(|| panic!("the crate reaches the base: {s:#}"));
+    assert!((t_crate - 0.8).abs() <= 1.0e-3 + 1e-9, "crate contact at {t_crate} s");
+    assert!(times[times.len() - 1] > 0.8, "the motion lasts past the crate's arrival");
+    // The tool moves with the arm: nearer the obstacle than the arm's root, never checked
+    // against the arm.
+    assert!(pair(&s, "arm", "tool").is_none(), "{s:#}");
+    assert!(pair(&s, "obstacle", "tool").is_some(), "{s:#}");
+
+    // A new CAD version keeps the scene (keyed by names); its interference view names it.
+    json_of(put(scene(0.55)).await.expect("put"), 200).await;
+    let (_, v2, job2) = app.upload_version_ok(&id, arm(), &[]).await;
+    assert_eq!(app.wait_for_job(&job2).await["status"], "succeeded");
+    assert_eq!(json_of(app.get(&url).await, 200).await, scene(0.55));
+    let c = json_of(app.get(&format!("/api/models/{id}/versions/{v2}/collision")).await, 200).await;
+    assert_eq!(interference_names(&c), [("arm".to_string(), "wall".to_string())], "{c:#}");
+
+    // Delete: nothing left, nothing collides.
+    let r = app.client.delete(app.url(&url)).send().await.expect("delete");
+    assert_eq!(r.status().as_u16(), 204);
+    assert_eq!(json_of(app.get(&url).await, 200).await, json!({"objects": []}));
+    assert_eq!(interference_names(&json_of(app.get(&collision).await, 200).await), Vec::<(String, String)>::new());
+
+    // Unknown models are 404s.
+    json_of(app.get("/api/models/nope/scene").await, 404).await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn bad_scenes_are_422s_naming_the_field() {
+    let app = TestApp::spawn().await;
+    let (id, _, job) = app.upload_model_ok(arm(), &[]).await;
+    assert_eq!(app.wait_for_job(&job).await["status"], "succeeded");
+    let url = format!("/api/models/{id}/scene");
+    json_of(app.client.put(app.url(&url)).json(&scene(0.55)).send().await.expect("put"), 200).await;
+    let one = |o: Value| json!({"objects": [o]});
+    let good = || json!({"name": "b", "shape": {"kind": "box", "size": [0.1, 0.1, 0.1]}, "position": [0, 0, 1]});
+    let with = |k: &str, v: Value| {
+        let mut o = good();
+        o[k] = v;
+        one(o)
+    };
+    let two = json!({"objects": [good(), good()]});
+    let cases = [
+        (with("shape", json!({"kind": "cone", "radius": 1})), "objects[0].shape.kind", "unknown shape kind"),
+        (with("shape", json!({"kind": "box", "size": [0.1, -1, 0.1]})), "objects[0].shape.size", "outside"),
+        (with("shape", json!({"kind": "sphere"})), "objects[0].shape.radius", "required"),
+        (with("shape", json!({"kind": "cylinder", "radius": 0.1, "length": 0.2, "size": [1, 1, 1]})), "objects[0].shape.size", "no size"),
+        (with("rotation", json!([[1, 0, 0], [0, 1, 0.2], [0, 0, 1]])), "objects[0].rotation", "not orthonormal"),
+        (with("rotation", json!([[1, 0, 0], [0, 1, 0], [0, 0, -1]])), "objects[0].rotation", "reflection"),
+        (with("rotation", json!([[1, 0, 0], [0, 1, 0]])), "objects[0].rotation", "invalid length"),
+        (with("position", json!("here")), "objects[0].position", "invalid type"),
+        (with("position", json!([5000, 0, 0])), "objects[0].position", "within"),
+        (two, "objects[1].name", "given twice"),
+        (with("name", json!("arm")), "objects[0].name", "is a body of the model"),
+        (with("name", json!("a b")), "objects[0].name", "not a valid name"),
+        (with("kind", json!("floating")), "objects[0].kind", "unknown kind"),
+        (with("kind", json!("free")), "objects[0].mass", "needs its mass"),
+        (with("kind", json!("moving")), "objects[0].motion", "needs its motion"),
+        (with("attached_to", json!("nope")), "objects[0].attached_to", "not a body"),
+        (with("color", json!([0, 0, 3])), "objects[0].color", "within 0 .. 1"),
+        (with("surprise", json!(1)), "objects[0]", "unknown field"),
+        (json!({"objects": [good()], "x": 1}), "objects", "unknown field"),
+        (json!([1]), "objects", "invalid type"),
+    ];
+    for (body, field, what) in cases {
+        let r = app.client.put(app.url(&url)).json(&body).send().await.expect("put");
+        let p = json_of(r, 422).await;
+        assert_eq!(p["errors"][0]["field"], field, "{body}: {p:#}");
+        assert!(p["errors"][0]["message"].as_str().expect("message").contains(what), "{body}: {p:#}");
+    }
+    // Too many objects.
+    let many: Vec<Value> = (0..257).map(|i| json!({"name": format!("o{i}"), "shape": {"kind": "sphere", "radius": 0.1}, "position": [0, 0, 0]})).collect();
+    let p = json_of(app.client.put(app.url(&url)).json(&json!({"objects": many})).send().await.expect("put"), 422).await;
+    assert_eq!(p["errors"][0]["field"], "objects", "{p:#}");
+    // Nothing of it was stored.
+    assert_eq!(json_of(app.get(&url).await, 200).await, scene(0.55));
+}
