@@ -51,7 +51,7 @@ fn is_true(b: &bool) -> bool {
     *b
 }
 
-fn is_static(k: &String) -> bool {
+fn is_static(k: &str) -> bool {
     k == "static"
 }
 
@@ -221,9 +221,7 @@ fn length(x: Option<f64>, what: &str) -> Result<f64, String> {
 /// Whether `name` can name a scene object (and so a Modelica component and an MJCF body).
 pub fn valid_name(name: &str) -> bool {
     let mut c = name.chars();
-    matches!(c.next(), Some(f) if f.is_ascii_alphabetic())
-        && c.all(|x| x.is_ascii_alphanumeric() || x == '_')
-        && name.len() <= MAX_NAME
+    matches!(c.next(), Some(f) if f.is_ascii_alphabetic()) && c.all(|x| x.is_ascii_alphanumeric() || x == '_') && name.len() <= MAX_NAME
 }
 
 fn shape_of(s: &ShapeSpec, field: &str, issues: &mut Vec<Issue>) -> Option<Shape> {
@@ -242,15 +240,16 @@ fn shape_of(s: &ShapeSpec, field: &str, issues: &mut Vec<Issue>) -> Option<Shape
             return None;
         }
     };
-    for (f, given) in [("size", s.size.is_some()), ("radius", s.radius.is_some()), ("length", s.length.is_some()), ("mesh", s.mesh.is_some())] {
+    for (f, given) in
+        [("size", s.size.is_some()), ("radius", s.radius.is_some()), ("length", s.length.is_some()), ("mesh", s.mesh.is_some())]
+    {
         if given && !allowed.contains(&f) {
             bad(f, format!("a {} has no {f}", s.kind));
         }
     }
     let n = issues.len();
-    let mut get = |f: &str, x: Option<f64>| {
-        length(x, f).map_err(|m| issues.push(Issue::new(format!("{field}.{f}"), m))).unwrap_or(f64::NAN)
-    };
+    let mut get =
+        |f: &str, x: Option<f64>| length(x, f).map_err(|m| issues.push(Issue::new(format!("{field}.{f}"), m))).unwrap_or(f64::NAN);
     let shape = match s.kind.as_str() {
         "box" => match s.size {
             None => {
@@ -401,9 +400,8 @@ pub fn check_stored(spec: &SceneSpec, bodies: &[String]) -> (Scene, Vec<Issue>) 
     for (k, o) in spec.objects.iter().enumerate() {
         match check(&SceneSpec { objects: vec![o.clone()] }, bodies) {
             Ok(s) => scene.objects.extend(s.objects),
-            Err(issues) => left_out.extend(
-                issues.into_iter().map(|i| Issue::new(i.field.replacen("objects[0]", &format!("objects[{k}]"), 1), i.message)),
-            ),
+            Err(issues) => left_out
+                .extend(issues.into_iter().map(|i| Issue::new(i.field.replacen("objects[0]", &format!("objects[{k}]"), 1), i.message))),
         }
     }
     (scene, left_out)
@@ -486,7 +484,9 @@ impl SceneObject {
     pub fn shape(&self) -> BodyShape {
         let (kind, part) = match self.shape {
             Shape::Box { size } => (ShapeKind::Box, box_part([size[0] / 2.0, size[1] / 2.0, size[2] / 2.0], [0.0; 3])),
-            Shape::Plane => (ShapeKind::Box, box_part([PLANE_SIZE / 2.0, PLANE_SIZE / 2.0, PLANE_DEPTH / 2.0], [0.0, 0.0, -PLANE_DEPTH / 2.0])),
+            Shape::Plane => {
+                (ShapeKind::Box, box_part([PLANE_SIZE / 2.0, PLANE_SIZE / 2.0, PLANE_DEPTH / 2.0], [0.0, 0.0, -PLANE_DEPTH / 2.0]))
+            }
             Shape::Sphere { radius } => (ShapeKind::Sphere, ConvexPart { vertices: vec![[0.0; 3]], faces: Vec::new(), radius }),
             Shape::Capsule { radius, length } => (
                 ShapeKind::Capsule,
@@ -517,7 +517,9 @@ impl SceneObject {
     /// Free objects stay at their pose (their dynamics belong to a simulation).
     pub fn pose_at(&self, t: f64) -> Isometry3<f64> {
         match &self.kind {
-            Kind::Moving(Motion::Velocity(v)) => Isometry3::from_parts(Translation3::from(self.pose.translation.vector + v * t), self.pose.rotation),
+            Kind::Moving(Motion::Velocity(v)) => {
+                Isometry3::from_parts(Translation3::from(self.pose.translation.vector + v * t), self.pose.rotation)
+            }
             Kind::Moving(Motion::Poses(rows)) => {
                 let k = rows.partition_point(|(time, _)| *time <= t);
                 if k == 0 {

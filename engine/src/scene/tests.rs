@@ -53,7 +53,9 @@ fn every_bad_field_is_named() {
     assert_eq!(b(serde_json::json!({"attached_to": "NOPE"})), ["objects[0].attached_to"]);
     assert_eq!(b(serde_json::json!({"color": [2, 0, 0]})), ["objects[0].color"]);
     assert_eq!(
-        b(serde_json::json!({"kind": "moving", "motion": {"poses": [{"time": 1, "position": [0, 0, 0]}, {"time": 1, "position": [0, 0, 0]}]}})),
+        b(
+            serde_json::json!({"kind": "moving", "motion": {"poses": [{"time": 1, "position": [0, 0, 0]}, {"time": 1, "position": [0, 0, 0]}]}})
+        ),
         ["objects[0].motion.poses[1].time"]
     );
     let two = spec(serde_json::json!({"objects": [

@@ -21,7 +21,10 @@ use cad2mo_engine::scene::SceneSpec;
 const SCENE_BODY_LIMIT: usize = 4 << 20;
 
 pub fn router() -> Router<AppState> {
-    Router::new().route("/api/models/{model_id}/scene", get(get_scene).put(put_scene).delete(delete_scene).layer(DefaultBodyLimit::max(SCENE_BODY_LIMIT + 1)))
+    Router::new().route(
+        "/api/models/{model_id}/scene",
+        get(get_scene).put(put_scene).delete(delete_scene).layer(DefaultBodyLimit::max(SCENE_BODY_LIMIT + 1)),
+    )
 }
 
 async fn get_scene(State(state): State<AppState>, Path(model_id): Path<String>) -> Result<Json<SceneSpec>, ApiError> {
@@ -34,12 +37,17 @@ fn parse(body: &[u8]) -> Result<SceneSpec, ApiError> {
     if body.len() > SCENE_BODY_LIMIT {
         return Err(ApiError::PayloadTooLarge { limit: SCENE_BODY_LIMIT as u64 });
     }
-    let de = &mut serde_json::Deserializer::from_slice(body);
-    serde_path_to_error::deserialize::<_, SceneSpec>(de).map_err(|e| {
+    let invalid = |field: String, message: String| ApiError::Invalid {
+        detail: format!("the scene is not valid: {field} {message}"),
+        errors: vec![FieldError { field, message }],
+    };
+    let v: serde_json::Value = serde_json::from_slice(body).map_err(|e| invalid("scene".into(), format!("is not JSON: {e}")))?;
+    if !v.is_object() {
+        return Err(invalid("scene".into(), "must be a JSON object with objects".into()));
+    }
+    serde_path_to_error::deserialize::<_, SceneSpec>(v).map_err(|e| {
         let field = e.path().to_string();
-        let field = if field == "." { "objects".to_string() } else { field };
-        let message = e.inner().to_string();
-        ApiError::Invalid { detail: format!("the scene is not valid: {field} {message}"), errors: vec![FieldError { field, message }] }
+        invalid(if field == "." { "scene".to_string() } else { field }, e.inner().to_string())
     })
 }
 

@@ -104,7 +104,15 @@ impl VersionShapes {
             }
         }
         let model_bodies = bodies.len();
-        Ok(VersionShapes { bodies, shapes, joined, cad, report_bodies: report["collision"]["bodies"].clone(), model_bodies, scene: Vec::new() })
+        Ok(VersionShapes {
+            bodies,
+            shapes,
+            joined,
+            cad,
+            report_bodies: report["collision"]["bodies"].clone(),
+            model_bodies,
+            scene: Vec::new(),
+        })
     }
 }
 

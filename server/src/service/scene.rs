@@ -22,8 +22,12 @@ pub struct Placed {
 /// Why a scene cannot be stored.
 #[derive(Debug, thiserror::Error)]
 pub enum SceneError {
-    #[error("the scene is not valid: {} {}", .0[0].field, .0[0].message)]
+    #[error("the scene is not valid: {}", first(.0))]
     Invalid(Vec<FieldError>),
+}
+
+fn first(errors: &[FieldError]) -> String {
+    errors.first().map(|e| format!("{} {}", e.field, e.message)).unwrap_or_default()
 }
 
 impl From<Vec<Issue>> for SceneError {

@@ -13,7 +13,8 @@ pub async fn get(store: &Store, model_id: &str) -> Result<SceneSpec, StoreError>
     let objects = rows
         .into_iter()
         .map(|(name, text)| {
-            serde_json::from_str::<ObjectSpec>(&text).map_err(|e| StoreError::Corrupt(format!("scene object {name} of model {model_id}: {e}")))
+            serde_json::from_str::<ObjectSpec>(&text)
+                .map_err(|e| StoreError::Corrupt(format!("scene object {name} of model {model_id}: {e}")))
         })
         .collect::<Result<_, _>>()?;
     Ok(SceneSpec { objects })
