@@ -193,7 +193,8 @@ pub fn rotation(rows: &[[f64; 3]; 3]) -> Result<UnitQuaternion<f64>, String> {
     }
     let m = Matrix3::from_fn(|i, j| rows[i][j]);
     let err = (m.transpose() * m - Matrix3::identity()).abs().max();
-    if err > ROTATION_TOLERANCE {
+    // Written so that a NaN (huge entries overflowing) is refused too.
+    if err.is_nan() || err > ROTATION_TOLERANCE {
         return Err(format!("is not orthonormal (RᵀR differs from the identity by {err:.3e}, more than {ROTATION_TOLERANCE:e})"));
     }
     if m.determinant() < 0.0 {

@@ -45,6 +45,7 @@ fn every_bad_field_is_named() {
     assert_eq!(b(serde_json::json!({"rotation": [[1, 0, 0], [0, 1, 0], [0, 0.1, 1]]})), ["objects[0].rotation"]);
     assert_eq!(b(serde_json::json!({"rotation": [[1, 0, 0], [0, 1, 0], [0, 0, -1]]})), ["objects[0].rotation"]);
     assert_eq!(b(serde_json::json!({"position": [1e4, 0, 0]})), ["objects[0].position"]);
+    assert_eq!(b(serde_json::json!({"rotation": [[1e308, -1e308, 0], [1e308, 1e308, 0], [0, 0, 1]]})), ["objects[0].rotation"]);
     assert_eq!(b(serde_json::json!({"name": "LINK"})), ["objects[0].name"]);
     assert_eq!(b(serde_json::json!({"name": "2bad"})), ["objects[0].name"]);
     assert_eq!(b(serde_json::json!({"kind": "flying"})), ["objects[0].kind"]);

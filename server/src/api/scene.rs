@@ -21,10 +21,9 @@ use cad2mo_engine::scene::SceneSpec;
 const SCENE_BODY_LIMIT: usize = 4 << 20;
 
 pub fn router() -> Router<AppState> {
-    Router::new().route(
-        "/api/models/{model_id}/scene",
-        get(get_scene).put(put_scene).delete(delete_scene).layer(DefaultBodyLimit::max(SCENE_BODY_LIMIT + 1)),
-    )
+    Router::new()
+        .route("/api/models/{model_id}/scene", get(get_scene).put(put_scene).delete(delete_scene))
+        .layer(DefaultBodyLimit::max(SCENE_BODY_LIMIT + 1))
 }
 
 async fn get_scene(State(state): State<AppState>, Path(model_id): Path<String>) -> Result<Json<SceneSpec>, ApiError> {
