@@ -179,7 +179,7 @@ async fn the_service_keeps_its_contract() {
         config += &format!("{} = {}\n", toml_str(k), toml_str(v));
     }
     config += &format!("\"path.version\" = {version}\n\"query.from\" = 1\n\"query.to\" = {version}\n\n");
-    let operations: [Operation; 33] = [
+    let operations: [Operation; 34] = [
         ("getResult", vec![("path.result_id", &result_ids[0])], ""),
         ("deleteResult", vec![("path.result_id", &result_ids[1])], ""),
         ("listResultVariables", vec![("path.result_id", &result_ids[0])], ""),
@@ -197,6 +197,11 @@ async fn the_service_keeps_its_contract() {
         ("getMotionCollisions", vec![("path.motion_id", &motion_ids[0])], PLANNABLE),
         ("putCollisionMatrix", vec![], "both bodies of a pair must have collision shapes, differ, and appear once"),
         ("createMotion", vec![], MOTION_RULES),
+        (
+            "putScene",
+            vec![],
+            "rotations orthonormal, names unique and not a body's, sizes within 0.1 mm .. 1 km, fields fitting the shape and kind, no mesh yet",
+        ),
         ("putJointLimits", vec![], "position limits must contain the CAD pose, rates must be > 0"),
         ("deleteModel", vec![("path.model_id", &doomed_model)], ""),
         ("deleteVersion", vec![("path.model_id", &spare_model)], ""),
