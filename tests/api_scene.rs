@@ -176,11 +176,13 @@ async fn scenes_are_stored_checked_and_collide() {
     // checked pair touches is evaluated); one sample either way for a touch within rounding.
     assert!((t_api - t_own).abs() <= 1.0e-3 + 1e-9, "first contact {t_api} s, independent {t_own} s; {guarantee}");
     assert!(t_own > 0.05 && t_own < times[times.len() - 1], "{t_own}");
+    println!("arm/obstacle first contact: the API {t_api} s, the independent check {t_own} s");
     // The crate on its conveyor (0.5 m/s from x = -0.5) reaches the base (x = -0.05) at 0.8 s.
     let c = pair(&s, "base", "crate").unwrap_or_else(|| panic!("base/crate: {s:#}"));
     let t_crate = c["first_contact"].as_f64().unwrap_or_else(|| panic!("the crate reaches the base: {s:#}"));
     assert!((t_crate - 0.8).abs() <= 1.0e-3 + 1e-9, "crate contact at {t_crate} s");
     assert!(times[times.len() - 1] > 0.8, "the motion lasts past the crate's arrival");
+    println!("base/crate first contact: the API {t_crate} s, analytic 0.8 s");
     // The tool moves with the arm: nearer the obstacle than the arm's root, never checked
     // against the arm.
     assert!(pair(&s, "arm", "tool").is_none(), "{s:#}");
