@@ -18,6 +18,7 @@ use crate::service::export::ExportError;
 use crate::service::models::ModelError;
 use crate::service::motions::MotionError;
 use crate::service::results::ResultError;
+use crate::service::simulations::SimulationError;
 pub use crate::service::FieldError;
 
 #[derive(Debug, thiserror::Error)]
@@ -153,6 +154,24 @@ impl From<MotionError> for ApiError {
             MotionError::Export(x) => x.into(),
             MotionError::Drive(d) => d.into(),
             MotionError::Store(s) => s.into(),
+        }
+    }
+}
+
+impl From<SimulationError> for ApiError {
+    fn from(e: SimulationError) -> Self {
+        match e {
+            SimulationError::Invalid(ref errors) => ApiError::Invalid { errors: errors.clone(), detail: e.to_string() },
+            SimulationError::Stopped(ref m) => {
+                ApiError::Invalid { errors: vec![FieldError { field: "duration".into(), message: m.clone() }], detail: e.to_string() }
+            }
+            SimulationError::Cancelled(_) => ApiError::Conflict(e.to_string()),
+            SimulationError::NotFound(_) => ApiError::NotFound(e.to_string().trim_end_matches(" not found").to_string()),
+            SimulationError::Motion(m) => m.into(),
+            SimulationError::Drive(d) => d.into(),
+            SimulationError::Result(r) => r.into(),
+            SimulationError::Store(s) => s.into(),
+            SimulationError::Internal(e) => ApiError::Internal(e),
         }
     }
 }

@@ -17,6 +17,7 @@ mod motions;
 mod openapi;
 mod results;
 pub mod serve;
+mod simulations;
 mod web;
 
 use axum::Router;
@@ -36,6 +37,7 @@ pub fn router(state: AppState) -> Router {
         .merge(drives::router())
         .merge(motions::router())
         .merge(results::router())
+        .merge(simulations::router())
         .merge(live::router())
         .merge(collision::router())
         .merge(web::router())

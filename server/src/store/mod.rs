@@ -19,6 +19,7 @@ pub mod library;
 pub mod models;
 pub mod motions;
 pub mod results;
+pub mod simulations;
 pub mod tokens;
 
 pub mod testdb;
