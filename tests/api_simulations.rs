@@ -1,4 +1,4 @@
-//! Closed-loop simulations through the REST API (issue 28) on a generated 3-axis arm with a
+//! Closed-loop simulations through the REST API (issue 28) on a generated 2-axis arm with a
 //! drive on every joint: the answer and its stored copy, the MAT v4 result read back through the
 //! results routes (poses from the file's frames equal FK of the simulated joint angles), every
 //! 422 naming its field, the bound on runs at once and cancellation when the client goes away.
@@ -44,7 +44,7 @@ async fn driven_arm(app: &TestApp, n: usize) -> (String, Vec<String>, String) {
     let j = json_of(app.get(&format!("{base}/joints")).await, 200).await;
     let names: Vec<String> =
         j["joints"].as_array().expect("joints").iter().map(|x| x["name"].as_str().expect("name").to_string()).collect();
-    let motor = instance(app, "cad2mo.Drives.Motors.DCPermanentMagnet", None).await;
+    let motor = instance(app, "cad2mo.Drives.Motors.DCPermanentMagnet", Some("maxon RE 40 148877 (24 V)")).await;
     let gear = instance(app, "Modelica.Mechanics.Rotational.Components.IdealGear", Some("Ideal gear 100:1")).await;
     let controller = instance(app, "cad2mo.Drives.Controllers.CascadePPI", None).await;
     for name in &names {
@@ -68,25 +68,26 @@ fn fields(p: &Value) -> Vec<String> {
 #[tokio::test]
 async fn a_simulation_answers_stores_its_result_and_refuses_bad_input_by_field() {
     let app = TestApp::spawn().await;
-    let (id, names, mid) = driven_arm(&app, 3).await;
+    let (id, names, mid) = driven_arm(&app, 2).await;
 
-    let body = json!({"duration": 1.5, "drives": true, "motion_id": mid, "max_joint_error": 1e-6});
+    let body = json!({"duration": 1.2, "drives": true, "motion_id": mid, "max_joint_error": 1e-6});
     let sim = json_of(simulate(&app, &id, &body).await, 201).await;
+    println!("2-axis arm, 1.2 s with drives: {} steps, {} s", sim["steps"], sim["wall_time_s"]);
     let drives = sim["drives"].as_array().expect("drives");
-    assert_eq!(drives.len(), 3, "{sim:#}");
+    assert_eq!(drives.len(), 2, "{sim:#}");
     assert_eq!(sim["motion_id"], mid.as_str());
     assert_eq!(sim["keyframes"].as_array().expect("keyframes").len(), 2, "{sim:#}");
     for (d, name) in drives.iter().zip(&names) {
         assert_eq!(d["joint"], name.as_str());
         let max = d["max_error"].as_f64().expect("max");
         assert!(max > 0.0 && max < 0.2, "{d:#}");
-        assert!(d["max_current"].as_f64().expect("i") <= d["i_max"].as_f64().expect("I_max") + 1e-9, "{d:#}");
+        assert!(d["max_current"].as_f64().expect("i") <= d["i_max"].as_f64().expect("I_max") * (1.0 + 1e-3), "{d:#}");
         assert_eq!(d["at_keyframes"].as_array().expect("at keyframes").len(), 2);
     }
     // 1 µrad is tighter than any real drive tracks a moving reference: the verdict says so.
     assert_eq!(sim["ok"], false, "{sim:#}");
     assert!(sim["reasons"][0].as_str().expect("reason").contains("joint error"), "{sim:#}");
-    assert!(sim["solver"].as_str().expect("solver").contains("rtol 1e-8"), "{sim:#}");
+    assert!(sim["solver"].as_str().expect("solver").contains("rtol 1e-6"), "{sim:#}");
     // Stored with the motion.
     let sid = sim["id"].as_str().expect("id");
     let again = json_of(app.get(&format!("/api/models/{id}/simulations/{sid}")).await, 200).await;
@@ -100,7 +101,7 @@ async fn a_simulation_answers_stores_its_result_and_refuses_bad_input_by_field()
     let rid = sim["result_id"].as_str().expect("result id");
     let r = json_of(app.get(&format!("/api/results/{rid}")).await, 200).await;
     assert!(r["missing"].as_array().expect("missing").is_empty() && r["from_joints"].as_array().expect("fj").is_empty(), "{r:#}");
-    assert_eq!(r["joints_found"].as_array().expect("joints").len(), 3, "{r:#}");
+    assert_eq!(r["joints_found"].as_array().expect("joints").len(), 2, "{r:#}");
     assert!(r["checks"]["kinematics"].as_f64().expect("kinematics") < 1e-12, "{r:#}");
     let v = json_of(app.get(&format!("/api/results/{rid}/variables?search=drive_{}.motor.i", names[0])).await, 200).await;
     assert!(v.to_string().contains(&format!("drive_{}.motor.i", names[0])), "{v:#}");
@@ -110,11 +111,11 @@ async fn a_simulation_answers_stores_its_result_and_refuses_bad_input_by_field()
     // A passive run (drives off) under gravity: the arm falls far from the reference-free start.
     let passive = json_of(simulate(&app, &id, &json!({"duration": 0.2, "drives": false})).await, 201).await;
     assert!(passive["drives"].as_array().expect("drives").is_empty());
-    assert_eq!(passive["undriven"].as_array().expect("undriven").len(), 3);
+    assert_eq!(passive["undriven"].as_array().expect("undriven").len(), 2);
 
     // Bad input: a 422 naming each field.
     let other = app.upload_model_ok(arm_zip(2), &[]).await.0;
-    let om = json!({"name": "other", "keyframes": [{"kind": "joints", "values": {}}]});
+    let om = json!({"name": "other", "keyframes": [{"kind": "joints", "values": {}}, {"kind": "joints", "values": {}, "duration": 1.0}]});
     let om = json_of(app.client.post(app.url(&format!("/api/models/{other}/motions"))).json(&om).send().await.expect("post"), 201).await;
     let cases = [
         (json!({"duration": -1.0}), vec!["duration"]),
@@ -132,7 +133,7 @@ async fn a_simulation_answers_stores_its_result_and_refuses_bad_input_by_field()
     json_of(simulate(&app, &id, &json!({"duration": 1.0, "speed": 2})).await, 400).await;
     json_of(simulate(&app, "nope", &json!({"duration": 1.0})).await, 404).await;
     // A tool frame's error, judged against a tolerance.
-    let tool = json!({"duration": 1.5, "motion_id": mid, "tool": "TOOL", "max_tool_error": 1.0});
+    let tool = json!({"duration": 1.2, "motion_id": mid, "tool": "TOOL", "max_tool_error": 1.0});
     let t = json_of(simulate(&app, &id, &tool).await, 201).await;
     let e = t["tool"]["max_position_error"].as_f64().expect("tool error");
     assert!(e > 0.0 && e < 0.1, "{t:#}");

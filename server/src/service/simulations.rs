@@ -41,8 +41,8 @@ pub const REFERENCE_RATE: f64 = 1000.0;
 /// Most reference samples per axis.
 const MAX_REFERENCE_SAMPLES: usize = 200_000;
 /// The solver's tolerances (relative, absolute), stated with every answer.
-pub const RTOL: f64 = 1e-8;
-pub const ATOL: f64 = 1e-10;
+pub const RTOL: f64 = 1e-6;
+pub const ATOL: f64 = 1e-8;
 
 /// What a request asks: `{"duration": s, "drives": bool, "motion_id"?: id, "start"?: {joint: value},
 /// "max_joint_error"?: rad or m, "max_tool_error"?: m, "tool"?: frame node id}`.
