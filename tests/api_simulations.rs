@@ -162,5 +162,6 @@ async fn runs_are_bounded_and_cancelled_when_the_client_goes_away() {
     tokio::time::sleep(Duration::from_millis(300)).await;
     let p = json_of(simulate(&app, &id, &short).await, 503).await;
     assert_eq!(p["type"], "/problems/busy", "{p:#}");
+    assert!(p["detail"].as_str().expect("detail").contains("simulation(s) are running"), "{p:#}");
     assert!(running.await.expect("task").is_err());
 }

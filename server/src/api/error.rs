@@ -50,6 +50,9 @@ pub enum ApiError {
     Aborted { times: i64 },
     #[error("too many uploads are being checked right now; retry in {retry_after} s")]
     Busy { retry_after: u64 },
+    /// A simulation while `--workers` simulations run.
+    #[error("{limit} simulation(s) are running (--workers); retry in 1 s")]
+    SimulationsBusy { limit: usize },
     /// A request over the connection cap (`--max-connections`); only health is answered there.
     #[error("the service is serving its limit of {limit} connections (--max-connections); retry in 1 s")]
     TooManyConnections { limit: usize },
@@ -241,7 +244,9 @@ impl ApiError {
             ApiError::Unauthorized => (StatusCode::UNAUTHORIZED, "unauthorized", "Unauthorized"),
             ApiError::Conversion(_) => (StatusCode::UNPROCESSABLE_ENTITY, "conversion-failed", "Conversion failed"),
             ApiError::Aborted { .. } => (StatusCode::UNPROCESSABLE_ENTITY, "conversion-aborted", "Conversion aborted"),
-            ApiError::Busy { .. } | ApiError::TooManyConnections { .. } => (StatusCode::SERVICE_UNAVAILABLE, "busy", "Busy"),
+            ApiError::Busy { .. } | ApiError::SimulationsBusy { .. } | ApiError::TooManyConnections { .. } => {
+                (StatusCode::SERVICE_UNAVAILABLE, "busy", "Busy")
+            }
             ApiError::CrossOrigin(_) => (StatusCode::FORBIDDEN, "cross-origin", "Cross-origin request refused"),
             ApiError::ClientHeaderRequired(_) => {
                 (StatusCode::FORBIDDEN, "client-header-required", "Request refused without a token or client header")
@@ -310,6 +315,9 @@ impl IntoResponse for ApiError {
             }
             ApiError::Busy { retry_after } => {
                 resp.headers_mut().insert(header::RETRY_AFTER, axum::http::HeaderValue::from(*retry_after));
+            }
+            ApiError::SimulationsBusy { .. } => {
+                resp.headers_mut().insert(header::RETRY_AFTER, axum::http::HeaderValue::from(1u64));
             }
             ApiError::TooManyConnections { .. } => {
                 resp.headers_mut().insert(header::RETRY_AFTER, axum::http::HeaderValue::from(1u64));

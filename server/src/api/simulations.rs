@@ -65,7 +65,8 @@ async fn create(
     };
     let edits = store::motions::limits(&state.store, &model_id).await?;
     let drives = if req.drives { crate::service::drives::resolve_for_model(&state.store, &model_id).await? } else { Vec::new() };
-    let permit = state.simulations.clone().try_acquire_owned().map_err(|_| ApiError::Busy { retry_after: 1 })?;
+    let permit =
+        state.simulations.clone().try_acquire_owned().map_err(|_| ApiError::SimulationsBusy { limit: state.settings.workers.max(1) })?;
     let cancel = Arc::new(AtomicBool::new(false));
     let _guard = CancelOnDrop(cancel.clone());
     let inputs = Inputs { kinematic: k.clone(), motion, edits, drives };
