@@ -179,7 +179,7 @@ async fn the_service_keeps_its_contract() {
         config += &format!("{} = {}\n", toml_str(k), toml_str(v));
     }
     config += &format!("\"path.version\" = {version}\n\"query.from\" = 1\n\"query.to\" = {version}\n\n");
-    let operations: [Operation; 34] = [
+    let operations: [Operation; 35] = [
         ("getResult", vec![("path.result_id", &result_ids[0])], ""),
         ("deleteResult", vec![("path.result_id", &result_ids[1])], ""),
         ("listResultVariables", vec![("path.result_id", &result_ids[0])], ""),
@@ -222,6 +222,11 @@ async fn the_service_keeps_its_contract() {
         ("createVersion", vec![], "the bundle must be a CAD export zip"),
         ("importLibrary", vec![], "the body must be a library XML file (docs/library-xml.md)"),
         ("solveIk", vec![], "the frame must be a CAD frame of the model, the rotation a rotation matrix, seeds its joints"),
+        (
+            "runSimulation",
+            vec![],
+            "motion_id must be a motion of the model, start must name its independent joints, tool a CAD frame; max_tool_error needs a tool",
+        ),
     ];
     for (id, params, semantic) in operations {
         config += &format!("[[operations]]\ninclude-operation-id = {}\n", toml_str(id));

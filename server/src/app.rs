@@ -26,6 +26,8 @@ pub struct AppState {
     pub jobs: Jobs,
     /// Permits for upload checks (`settings.max_checks`): bounds the bundles analysed at once.
     pub checks: Arc<tokio::sync::Semaphore>,
+    /// Permits for closed-loop simulations (`settings.workers`): bounds the runs at once.
+    pub simulations: Arc<tokio::sync::Semaphore>,
     /// Analysed versions for motions (a few, most recently used).
     pub kinematics: crate::service::motions::Cache,
     /// The address actually bound (port 0 resolved): the `Host` the service answers to.
@@ -75,12 +77,14 @@ impl App {
         settings.max_connections = cap;
         tracing::info!(max_connections = cap, fd_limit, "connection limit");
         let checks = Arc::new(tokio::sync::Semaphore::new(settings.max_checks.max(1)));
+        let simulations = Arc::new(tokio::sync::Semaphore::new(settings.workers.max(1)));
         let state = AppState {
             settings: Arc::new(settings),
             store,
             blobs,
             jobs,
             checks,
+            simulations,
             addr,
             kinematics: Default::default(),
             relay,

@@ -186,6 +186,20 @@ export async function motionSteps(page, { joint, step, shot, downloads, strict }
   // ---- Sizing: the drive's checks and a ranked alternative applied.
   const appliedRatio = sizingAvailable ? await sizingSteps(page, { joint, step, shot }) : null;
 
+  // ---- Closed-loop simulation (issue 28): the drives along the motion, the verdict, the table.
+  if (sizingAvailable) {
+    step('motion: simulation');
+    await page.locator('.simulation-box input').first().fill('50');
+    await page.getByRole('button', { name: 'Simulate' }).click();
+    const answered = page.locator(`table.simulation-drives tr[data-joint="${joint}"], .simulation-out .error`).first();
+    await answered.waitFor({ timeout: 120_000 });
+    assert.equal(await page.locator('.simulation-out .error').count(), 0, `no simulation error: ${await page.locator('.simulation-out').textContent()}`);
+    const cells = await page.locator(`table.simulation-drives tr[data-joint="${joint}"] td`).allTextContents();
+    assert.match(cells[2], / \/ .* A$/, `current against its limit: ${cells}`);
+    assert.match(await page.locator('.simulation-out .verdict').textContent(), /holds the path|does not hold the path/);
+    await shot(page, '18c-motion-simulation');
+  }
+
   // ---- Joint limits: defaults greyed as placeholders; a custom speed, then back to defaults.
   step('motion: limits');
   const row = page.locator(`table.limits tr[data-joint="${joint}"]`);

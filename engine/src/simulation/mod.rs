@@ -43,6 +43,8 @@
 //! being small, pure Rust and on our nalgebra (`diffsol` brings its own linear-algebra stack).
 
 mod answer;
+mod output;
+mod parts;
 
 use std::cell::{Cell, RefCell};
 
@@ -53,6 +55,8 @@ use ode_solvers::Dopri5;
 use crate::mechanism::{ClosedState, ForwardWorkspace, Mechanism, MechanismError, Workspace};
 
 pub use answer::{saturation_intervals, verdict, Tolerances, Tracking, Verdict};
+pub use output::{result_file, series, JointLosses};
+pub use parts::drive_of;
 
 /// Longest simulated time, s.
 pub const MAX_DURATION: f64 = 3600.0;

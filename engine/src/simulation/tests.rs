@@ -170,3 +170,48 @@ fn bad_input_names_its_field_and_runs_are_bounded_and_cancellable() {
     let e = simulate(&m, &g, &[], &NoForces, &start, &o(10.0), &cancel).unwrap_err();
     assert!(matches!(e, SimulationError::Cancelled { t } if t < 10.0), "{e}");
 }
+
+/// The run's result file reads back through `results` with the package's names: every body's
+/// pose from its `frame_a` equals our forward kinematics of the simulated joint angles, and the
+/// drive's current is there under `drive_<joint>.motor.i`.
+#[test]
+fn the_result_file_reads_back_with_the_packages_names() {
+    let m = arm(2);
+    let g = Vector3::new(0.0, -9.81, 0.0);
+    let start = Start { q: m.q0(), qd: vec![0.0; 2] };
+    let opts = Options { duration: 0.5, output_interval: 0.05, ..Options::default() };
+    let drive = pendulum_drive(&m, 10.0, 1.0, Reference::Constant(m.q0()[0] + 0.3));
+    let run = simulate(&m, &g, std::slice::from_ref(&drive), &NoForces, &start, &opts, &never).expect("runs");
+    let bytes = result_file(&m, &run, std::slice::from_ref(&drive)).expect("file");
+    let t = crate::results::mat::Trajectory::read(&bytes, "sim.mat").expect("reads");
+    let joint = &m.coordinates()[0].name;
+    let i = t.find(&format!("drive_{joint}.motor.i")).expect("current");
+    assert!((t.value(i, 5) - run.drives[0][5].i).abs() < 1e-12);
+    let p = crate::results::poses::extract(&t, &m);
+    assert!(p.summary.missing.is_empty() && p.summary.from_joints.is_empty(), "{:?}", p.summary);
+    assert_eq!(
+        p.summary.bodies.len(),
+        m.body_names().iter().enumerate().filter(|(b, _)| m.body_attachment(crate::pipeline::ir::BodyId(*b as u32)).is_some()).count()
+    );
+    assert!(p.summary.checks.kinematics.expect("checked") < 1e-9, "{:?}", p.summary.checks);
+    // The stream against FK of the run's angles (f32 stream: 1e-6).
+    let nb = p.summary.bodies.len();
+    let names = m.body_names();
+    for (k, q) in run.q.iter().enumerate() {
+        let fk = m.forward(q).expect("fk");
+        for (j, body) in p.summary.bodies.iter().enumerate() {
+            let b = names.iter().position(|n| n == body).expect("body");
+            let pose = m.body_pose(&fk, crate::pipeline::ir::BodyId(b as u32)).expect("pose");
+            let d = &p.data[(k * nb + j) * 7..(k * nb + j) * 7 + 7];
+            let pos = nalgebra::Vector3::new(f64::from(d[0]), f64::from(d[1]), f64::from(d[2]));
+            assert!((pos - pose.translation.vector).norm() < 1e-6, "{body} at {k}");
+            let q = nalgebra::UnitQuaternion::from_quaternion(nalgebra::Quaternion::new(
+                f64::from(d[6]),
+                f64::from(d[3]),
+                f64::from(d[4]),
+                f64::from(d[5]),
+            ));
+            assert!(q.angle_to(&pose.rotation) < 1e-5, "{body} at {k}");
+        }
+    }
+}

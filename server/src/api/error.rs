@@ -19,6 +19,7 @@ use crate::service::models::ModelError;
 use crate::service::motions::MotionError;
 use crate::service::results::ResultError;
 use crate::service::scene::SceneError;
+use crate::service::simulations::SimulationError;
 pub use crate::service::FieldError;
 
 #[derive(Debug, thiserror::Error)]
@@ -50,6 +51,9 @@ pub enum ApiError {
     Aborted { times: i64 },
     #[error("too many uploads are being checked right now; retry in {retry_after} s")]
     Busy { retry_after: u64 },
+    /// A simulation while `--workers` simulations run.
+    #[error("{limit} simulation(s) are running (--workers); retry in 1 s")]
+    SimulationsBusy { limit: usize },
     /// A request over the connection cap (`--max-connections`); only health is answered there.
     #[error("the service is serving its limit of {limit} connections (--max-connections); retry in 1 s")]
     TooManyConnections { limit: usize },
@@ -166,6 +170,24 @@ impl From<SceneError> for ApiError {
     }
 }
 
+impl From<SimulationError> for ApiError {
+    fn from(e: SimulationError) -> Self {
+        match e {
+            SimulationError::Invalid(ref errors) => ApiError::Invalid { errors: errors.clone(), detail: e.to_string() },
+            SimulationError::Stopped(ref m) => {
+                ApiError::Invalid { errors: vec![FieldError { field: "duration".into(), message: m.clone() }], detail: e.to_string() }
+            }
+            SimulationError::Cancelled(_) => ApiError::Conflict(e.to_string()),
+            SimulationError::NotFound(_) => ApiError::NotFound(e.to_string().trim_end_matches(" not found").to_string()),
+            SimulationError::Motion(m) => m.into(),
+            SimulationError::Drive(d) => d.into(),
+            SimulationError::Result(r) => r.into(),
+            SimulationError::Store(s) => s.into(),
+            SimulationError::Internal(e) => ApiError::Internal(e),
+        }
+    }
+}
+
 impl From<CollisionError> for ApiError {
     fn from(e: CollisionError) -> Self {
         match e {
@@ -231,7 +253,9 @@ impl ApiError {
             ApiError::Unauthorized => (StatusCode::UNAUTHORIZED, "unauthorized", "Unauthorized"),
             ApiError::Conversion(_) => (StatusCode::UNPROCESSABLE_ENTITY, "conversion-failed", "Conversion failed"),
             ApiError::Aborted { .. } => (StatusCode::UNPROCESSABLE_ENTITY, "conversion-aborted", "Conversion aborted"),
-            ApiError::Busy { .. } | ApiError::TooManyConnections { .. } => (StatusCode::SERVICE_UNAVAILABLE, "busy", "Busy"),
+            ApiError::Busy { .. } | ApiError::SimulationsBusy { .. } | ApiError::TooManyConnections { .. } => {
+                (StatusCode::SERVICE_UNAVAILABLE, "busy", "Busy")
+            }
             ApiError::CrossOrigin(_) => (StatusCode::FORBIDDEN, "cross-origin", "Cross-origin request refused"),
             ApiError::ClientHeaderRequired(_) => {
                 (StatusCode::FORBIDDEN, "client-header-required", "Request refused without a token or client header")
@@ -300,6 +324,9 @@ impl IntoResponse for ApiError {
             }
             ApiError::Busy { retry_after } => {
                 resp.headers_mut().insert(header::RETRY_AFTER, axum::http::HeaderValue::from(*retry_after));
+            }
+            ApiError::SimulationsBusy { .. } => {
+                resp.headers_mut().insert(header::RETRY_AFTER, axum::http::HeaderValue::from(1u64));
             }
             ApiError::TooManyConnections { .. } => {
                 resp.headers_mut().insert(header::RETRY_AFTER, axum::http::HeaderValue::from(1u64));

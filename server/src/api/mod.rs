@@ -18,6 +18,7 @@ mod openapi;
 mod results;
 mod scene;
 pub mod serve;
+mod simulations;
 mod web;
 
 use axum::Router;
@@ -37,6 +38,7 @@ pub fn router(state: AppState) -> Router {
         .merge(drives::router())
         .merge(motions::router())
         .merge(results::router())
+        .merge(simulations::router())
         .merge(live::router())
         .merge(collision::router())
         .merge(scene::router())

@@ -113,7 +113,7 @@ async fn joints(State(state): State<AppState>, Path(model_id): Path<String>) -> 
 const JSON_BODY_LIMIT: u64 = 2 << 20;
 
 /// A JSON object body as `T` (serde would also take an array for a struct: refused here).
-fn body<T: serde::de::DeserializeOwned>(what: &str, b: Result<Json<serde_json::Value>, JsonRejection>) -> Result<T, ApiError> {
+pub(super) fn body<T: serde::de::DeserializeOwned>(what: &str, b: Result<Json<serde_json::Value>, JsonRejection>) -> Result<T, ApiError> {
     let v = b.map(|Json(v)| v).map_err(|e| {
         if e.status() == axum::http::StatusCode::PAYLOAD_TOO_LARGE {
             ApiError::PayloadTooLarge { limit: JSON_BODY_LIMIT }

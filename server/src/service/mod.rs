@@ -8,6 +8,7 @@
 //! - [`drives`]: which motor, gear and controller drive which joint, resolved for the package.
 //! - [`motions`]: motions on a version (joints, planning, trajectories, sizing).
 //! - [`results`]: simulation result files checked, stored and read.
+//! - [`simulations`]: closed-loop simulations of the drives (issue 28): answer and result file.
 //! - [`collisions`]: a version's collision shapes, the allowed-collision matrix, checks along a
 //!   motion.
 
@@ -20,6 +21,7 @@ pub mod models;
 pub mod motions;
 pub mod results;
 pub mod scene;
+pub mod simulations;
 
 /// Runs blocking work (file store, analysis, conversion) off the async runtime, in the caller's
 /// span; a task that panics is an internal error of the use case.

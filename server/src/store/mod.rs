@@ -20,6 +20,7 @@ pub mod models;
 pub mod motions;
 pub mod results;
 pub mod scene;
+pub mod simulations;
 pub mod tokens;
 
 pub mod testdb;

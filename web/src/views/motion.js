@@ -9,6 +9,7 @@ import { api, enc } from '../api.js';
 import { h, fill, errorBox, num, field, confirmAction, newId, unitLabel } from '../ui.js';
 import { displayScale, displayUnit, sampleAt, keyframeProblems, throttle, applyAlternative, rotationRows, freshName, bodyDepths, defaultToolFrame } from './motion-data.js';
 import { sizingQuery, verdict, standingLabel, limitingText } from './sizing-data.js';
+import { simulationBody, driveRows } from './simulation-data.js';
 import { sweepRows, firstContactText, contactMarkers, touchedBy, witnessLine, pairKey } from './collision-data.js';
 
 const INTERPOLATIONS = [
@@ -52,12 +53,15 @@ export function renderMotion(panel, ctx) {
   const playerBox = h('div', { class: 'player-box' });
   const plotsBox = h('div', { class: 'plots-box' });
   const sizingBox = h('div', { class: 'sizing-box' });
+  // The closed-loop simulation of the drives along the motion (issue 28), beside the sizing.
+  const simBox = h('div', { class: 'simulation-box' });
+  const simForm = { maxJointErrorMilli: '', maxToolErrorMm: '' };
   const collisionBox = h('div', { class: 'motion-collisions', 'aria-live': 'polite' });
   const limitsBox = h('div', { class: 'limits-box' });
   fill(panel, h('h2', {}, 'Motions'), listBox, editorBox, gizmoBox, h('h2', {}, 'Joint limits'), limitsBox);
   // Under the 3D view (wider), or in the tab where there is no such place.
-  if (ctx.stage) fill(ctx.stage, playerBox, plotsBox, sizingBox, collisionBox);
-  else panel.append(playerBox, plotsBox, sizingBox, collisionBox);
+  if (ctx.stage) fill(ctx.stage, playerBox, plotsBox, sizingBox, simBox, collisionBox);
+  else panel.append(playerBox, plotsBox, sizingBox, simBox, collisionBox);
 
   const jointInfo = (name) => joints?.joints.find((j) => j.name === name);
   // Keyframes set the independent joints; in a closed loop the others follow.
@@ -460,7 +464,77 @@ export function renderMotion(panel, ctx) {
     renderPlots();
     renderCollisions();
     seek(0);
+    renderSimulate(null);
     await loadSizing();
+  }
+
+  // ---------------------------------------------------------------- simulation
+  /** The Simulate form, and the answer of the last run (verdict, per-drive table, result link). */
+  function renderSimulate(answer) {
+    if (!traj || !current) {
+      fill(simBox);
+      return;
+    }
+    const input = (key, label) =>
+      h('label', {}, `${label} `, h('input', { type: 'number', min: '0', step: 'any', value: simForm[key], size: 6, oninput: (e) => (simForm[key] = e.currentTarget.value) }));
+    const out = [];
+    if (answer) {
+      out.push(
+        h('p', { class: `verdict ${answer.ok ? 'ok' : 'fail'}`, role: 'status' }, h('span', { class: `badge ${answer.ok ? 'badge-succeeded' : 'badge-failed'}` }, answer.ok ? 'holds the path' : 'does not hold the path'), answer.reasons.length ? ` ${answer.reasons.join('; ')}` : ''),
+        h(
+          'div',
+          { class: 'scroll' },
+          h(
+            'table',
+            { class: 'simulation-drives' },
+            h('thead', {}, h('tr', {}, ['Joint', 'Max error', 'RMS error', 'Current / limit', 'Voltage / limit', 'Limited during'].map((c) => h('th', { scope: 'col' }, c)))),
+            h(
+              'tbody',
+              {},
+              driveRows(answer).map((r) =>
+                h(
+                  'tr',
+                  { dataset: { joint: r.joint } },
+                  h('th', { scope: 'row' }, r.joint),
+                  h('td', { class: 'num' }, `${num(r.maxError)} ${unitLabel(r.unit)}`),
+                  h('td', { class: 'num' }, `${num(r.rmsError)} ${unitLabel(r.unit)}`),
+                  h('td', { class: `num ${r.currentShare >= 1 - 1e-9 ? 'fail' : ''}` }, r.current),
+                  h('td', { class: `num ${r.voltageShare >= 1 - 1e-9 ? 'fail' : ''}` }, r.voltage),
+                  h('td', {}, r.saturated),
+                ),
+              ),
+            ),
+          ),
+        ),
+        answer.tool ? h('p', { class: 'muted tool-error' }, `Tool ${answer.tool.frame}: position error up to ${num(answer.tool.max_position_error * 1000)} mm, orientation up to ${num(answer.tool.max_orientation_error)} rad.`) : null,
+        h('p', { class: 'muted' }, `${answer.solver}; ${answer.steps} steps in ${num(answer.wall_time_s)} s. The run is stored as result `, h('code', {}, answer.result_id || '—'), ': open it under Results to animate and plot it.'),
+      );
+    }
+    fill(
+      simBox,
+      h('h3', {}, 'Closed-loop simulation'),
+      h(
+        'form',
+        { class: 'simulate-form', onsubmit: (e) => (e.preventDefault(), simulate()) },
+        input('maxJointErrorMilli', 'Max joint error (mrad or mm)'),
+        ' ',
+        input('maxToolErrorMm', 'Max tool error (mm)'),
+        ' ',
+        h('button', { type: 'submit', class: 'simulate' }, 'Simulate'),
+      ),
+      h('div', { class: 'simulation-out', 'aria-live': 'polite' }, out),
+    );
+  }
+
+  async function simulate() {
+    const box = simBox.querySelector('.simulation-out');
+    fill(box, h('p', { role: 'status' }, 'Simulating the drives…'));
+    try {
+      const answer = await api(`${base}/simulations`, { method: 'POST', body: simulationBody({ motionId: current.id, motionDuration: traj.duration, ...simForm }) });
+      if (!disposed) renderSimulate(answer);
+    } catch (e) {
+      fill(box, errorBox(e, 'The simulation did not run'));
+    }
   }
 
   async function loadSizing() {
