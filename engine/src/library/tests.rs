@@ -467,6 +467,9 @@ fn catalogue_values_are_the_datasheets() {
     let m = seed::FAULHABER_2250_024_BX4;
     assert!(close(get(m, "R"), 5.9) && close(get(m, "L"), 240e-6) && close(get(m, "k"), 0.0369) && close(get(m, "J"), 1e-6));
     assert!(close(get(m, "d"), 2.4e-7 * 30.0 / std::f64::consts::PI) && close(get(m, "T_nom"), 0.023));
+    // The printed stall torques, the peak limit where the maker gives no short-time limit.
+    assert!(close(get(m, "T_stall"), 0.149) && close(get(seed::FAULHABER_1331_006, "T_stall"), 0.0112));
+    assert!(close(get(seed::MAXON_EC45_FLAT_MOTORS[4], "T_stall"), 1.26) && close(get(seed::MAXON_RE40, "T_stall"), 2.28));
     // maxon EC 45 flat 70 W, 48 V: phase-to-phase values, and the page's own mechanical time
     // constant R·J/k² (8.510 ms) from them.
     let mx = seed::MAXON_EC45_FLAT_MOTORS[4];
