@@ -335,13 +335,13 @@ fn classes() -> Vec<(&'static str, ClassDraft)> {
                     real("Tc", "s", Some(0.0), None, true, Some(0.001), "Time constant of the current loop (a drive setting, not a motor value)"),
                 ]
                 .into_iter()
-                .chain(motor_datasheet())
                 .chain([
                     datasheet("w_nom", "rad/s", "Datasheet: rated speed"),
                     datasheet("I_nom", "A", "Datasheet: rated current, A rms"),
                     datasheet("P_nom", "W", "Datasheet: rated output"),
                     datasheet("U_class", "V", "Datasheet: voltage class (supply voltage, AC)"),
                 ])
+                .chain(motor_datasheet())
                 .collect(),
             ),
         ),
@@ -439,7 +439,7 @@ fn instances() -> Vec<SeedInstance> {
             MAXON_RE40,
             DC_MOTOR,
             "maxon RE 40 148877 (24 V)",
-            "maxon RE 40 Ø40 mm, graphite brushes, 150 W, order number 148877 (24 V winding), maxon catalog motor data, nominal values at 24 V and 25 °C: terminal resistance 0.317 Ω, terminal inductance 0.0823 mH, torque constant 30.2 mNm/A, rotor inertia 134 gcm², nominal voltage 24 V, nominal (max. continuous) current 5.77 A. d is estimated from the no-load current 137 mA at the no-load speed 7580 rpm (d = I0·k/ω0). Datasheet values for the drive sizing (same catalog): nominal torque (max. continuous torque) 170 mNm (= 30.2 mNm/A · (5.77 A - 0.137 A)), max. permissible speed 12000 rpm. maxon prints no short-time torque limit, so T_peak is left empty; T_stall = stall torque 2280 mNm at 24 V (same catalog), the peak check's limit where the maker gives no short-time limit.",
+            "maxon RE 40 Ø40 mm, graphite brushes, 150 W, order number 148877 (24 V winding), maxon catalog motor data, nominal values at 24 V and 25 °C: terminal resistance 0.317 Ω, terminal inductance 0.0823 mH, torque constant 30.2 mNm/A, rotor inertia 134 gcm², nominal voltage 24 V, nominal (max. continuous) current 5.77 A. d is estimated from the no-load current 137 mA at the no-load speed 7580 rpm (d = I0·k/ω0). Datasheet values for the drive sizing (same catalog): nominal torque (max. continuous torque) 170 mNm (= 30.2 mNm/A · (5.77 A - 0.137 A)), max. permissible speed 12000 rpm. maxon prints no peak torque besides the stall torque 2280 mNm at 24 V (the sizing's voltage check covers the speed-torque line), so T_peak is left empty: the peak check then uses k·I_max, the current limit of the generated drive.",
             values(json!({
                 "R": {"value": 0.317, "unit": "Ohm"},
                 "L": {"value": 0.0823, "unit": "mH"},
@@ -450,8 +450,7 @@ fn instances() -> Vec<SeedInstance> {
                 "I_max": 5.77,
                 "Tc": 0.001,
                 "T_nom": {"value": 170, "unit": "mNm"},
-                "w_max": {"value": 12000, "unit": "rpm"},
-                "T_stall": {"value": 2280, "unit": "mNm"}
+                "w_max": {"value": 12000, "unit": "rpm"}
             })),
         ),
         (
@@ -506,7 +505,7 @@ fn instances() -> Vec<SeedInstance> {
             MAXON_RE40_MSL,
             MSL_DC_MACHINE,
             "maxon RE 40 148877 (24 V), nominal point",
-            "maxon RE 40 Ø40 mm, graphite brushes, 150 W, order number 148877 (24 V winding), maxon catalog motor data at the nominal operating point: 24 V, nominal current 5.77 A, nominal speed 6940 rpm; terminal resistance 0.317 Ω and inductance 0.0823 mH, rotor inertia 134 gcm², all at 25 °C (temperature dependence off). The MSL machine derives its EMF constant (24 - 0.317·5.77)/726.7 rad/s = 0.0305 V·s/rad from this point (datasheet torque constant 30.2 mNm/A; the difference is the no-load loss). The stator inertia is set equal to the rotor's (the stator is fixed). Datasheet values for the drive sizing (same catalog): nominal torque (max. continuous torque) 170 mNm, max. permissible speed 12000 rpm; no short-time torque limit, so T_peak is left empty; T_stall = stall torque 2280 mNm at 24 V (same catalog), the peak check's limit where the maker gives no short-time limit.",
+            "maxon RE 40 Ø40 mm, graphite brushes, 150 W, order number 148877 (24 V winding), maxon catalog motor data at the nominal operating point: 24 V, nominal current 5.77 A, nominal speed 6940 rpm; terminal resistance 0.317 Ω and inductance 0.0823 mH, rotor inertia 134 gcm², all at 25 °C (temperature dependence off). The MSL machine derives its EMF constant (24 - 0.317·5.77)/726.7 rad/s = 0.0305 V·s/rad from this point (datasheet torque constant 30.2 mNm/A; the difference is the no-load loss). The stator inertia is set equal to the rotor's (the stator is fixed). Datasheet values for the drive sizing (same catalog): nominal torque (max. continuous torque) 170 mNm, max. permissible speed 12000 rpm; no peak torque (maxon prints only the stall torque 2280 mNm at 24 V), so T_peak is left empty.",
             values(json!({
                 "VaNominal": 24,
                 "IaNominal": 5.77,
@@ -520,8 +519,7 @@ fn instances() -> Vec<SeedInstance> {
                 "Js": {"value": 134, "unit": "g.cm2"},
                 "TaOperational": {"value": 25, "unit": "degC"},
                 "T_nom": {"value": 170, "unit": "mNm"},
-                "w_max": {"value": 12000, "unit": "rpm"},
-                "T_stall": {"value": 2280, "unit": "mNm"}
+                "w_max": {"value": 12000, "unit": "rpm"}
             })),
         ),
         (
