@@ -83,8 +83,11 @@ async fn a_fresh_app_has_the_seeded_library() {
     assert_eq!(r_param["editable"], false);
 
     let motors = json_of(app.library_instances("?domain=motor").await).await;
-    // 5 motors of the first seed (4 DC, 1 MSL) and 14 catalogue motors (8 FAULHABER, 6 maxon).
-    assert_eq!(motors.as_array().expect("array").len(), 19, "{motors}");
+    // 5 motors of the first seed (4 DC, 1 MSL), 14 catalogue DC motors (8 FAULHABER, 6 maxon) and
+    // 30 AC servo motors (15 Yaskawa Σ-7 models, each without and with holding brake).
+    assert_eq!(motors.as_array().expect("array").len(), 49, "{motors}");
+    let servos = json_of(app.library_instances(&format!("?class_id={}", seed::AC_SERVO)).await).await;
+    assert_eq!(servos.as_array().expect("array").len(), 30, "{servos}");
     let ours = json_of(app.library_instances(&format!("?class_id={}", seed::DC_MOTOR)).await).await;
     let ours = ours.as_array().expect("array");
     assert_eq!(ours.len(), 18);

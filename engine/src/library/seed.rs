@@ -15,6 +15,10 @@ use serde_json::{json, Map, Value as Json};
 
 use super::{check_class, check_instance, ClassDraft, InstanceDraft, Issue, Library, ParameterDraft};
 
+mod yaskawa;
+
+pub use yaskawa::YASKAWA_SERVOS;
+
 pub const DC_MOTOR: &str = "93162c18-a028-4dbb-a9a7-c37bb6da9e15";
 pub const MSL_DC_MACHINE: &str = "22a8fc74-4da7-4531-a1a0-75fb5313705d";
 pub const IDEAL_GEAR: &str = "081e59da-554a-4b0c-bd5a-7f03409fb279";
@@ -23,7 +27,7 @@ pub const LEAD_SCREW: &str = "1d6bd1fa-9a39-47b1-86dc-e0162feea6eb";
 pub const CASCADE_PPI: &str = "0f2fa95d-0f54-42fb-88f8-831a624c2754";
 /// Classes added to the seed after the first one: an installation seeded before receives each
 /// once (the service's `seed_new_classes`).
-pub const ADDED_CLASSES: [&str; 1] = [SERVO_AMPLIFIER];
+pub const ADDED_CLASSES: [&str; 2] = [SERVO_AMPLIFIER, AC_SERVO];
 
 /// Datasheet parameters added to the seed's classes after the first seed (issue 27's checks and
 /// ranking): an installation seeded before receives each once, in every seed class that has it.
@@ -31,6 +35,10 @@ pub const ADDED_DATASHEET: [&str; 8] = ["T_stall", "tau_th_w", "mass", "price_cl
 
 /// The drive amplifier class (sizing only: every parameter a datasheet value, no Modelica class).
 pub const SERVO_AMPLIFIER: &str = "5b0b3c0e-3f7e-4d43-9a53-2f1f0f7c9a27";
+
+/// The AC servo motor class (permanent-magnet synchronous motor under field-oriented current
+/// control, as servo makers rate it: torque constant per A rms, no winding resistance).
+pub const AC_SERVO: &str = "f54cddfa-bad3-4e78-9dfb-88462b8458a2";
 
 /// Instance ids.
 pub const MAXON_RE40: &str = "a204da99-dd36-4642-91d0-a61534935347";
@@ -142,7 +150,8 @@ pub const MAXON_EC45_FLAT_MOTORS: [&str; 6] = [
 ];
 
 /// The catalogue instances of the seed (see above); `seed::library` holds them all.
-pub const CATALOGUE: [&str; 74] = concat::<14, 60, 74>(concat(FAULHABER_MOTORS, MAXON_EC45_FLAT_MOTORS), BECKHOFF_GEARS);
+pub const CATALOGUE: [&str; 104] =
+    concat::<74, 30, 104>(concat::<14, 60, 74>(concat(FAULHABER_MOTORS, MAXON_EC45_FLAT_MOTORS), BECKHOFF_GEARS), YASKAWA_SERVOS);
 
 /// `a` then `b`, in a constant.
 const fn concat<const A: usize, const B: usize, const C: usize>(a: [&'static str; A], b: [&'static str; B]) -> [&'static str; C] {
@@ -308,6 +317,30 @@ fn classes() -> Vec<(&'static str, ClassDraft)> {
                     real("TaOperational", "K", Some(0.0), None, true, Some(293.15), "Operational armature temperature"),
                 ]
                 .into_iter()
+                .chain(motor_datasheet())
+                .collect(),
+            ),
+        ),
+        (
+            AC_SERVO,
+            class(
+                "AC servo motor",
+                "motor",
+                "cad2mo.Drives.Motors.ServoMotor",
+                "Permanent-magnet AC servo motor (synchronous motor) with its servo amplifier's field-oriented current control, as servo makers rate it: torque = torque constant × RMS phase current, the current following the command with a time constant and limited to the maximum current. Servo datasheets print no winding resistance for the drive, so the motor voltage is not modelled. Our own class, generated into each package's Components/Drives.",
+                vec![
+                    nameplate("k", "N.m/A", "Torque constant (per A rms of the phase current)"),
+                    nameplate("J", "kg.m2", "Motor (rotor) moment of inertia, with the holding brake where the motor has one"),
+                    nameplate("I_max", "A", "Current limit: the maximum (instantaneous) current, A rms"),
+                    real("Tc", "s", Some(0.0), None, true, Some(0.001), "Time constant of the current loop (a drive setting, not a motor value)"),
+                ]
+                .into_iter()
+                .chain([
+                    datasheet("w_nom", "rad/s", "Datasheet: rated speed"),
+                    datasheet("I_nom", "A", "Datasheet: rated current, A rms"),
+                    datasheet("P_nom", "W", "Datasheet: rated output"),
+                    datasheet("U_class", "V", "Datasheet: voltage class (supply voltage, AC)"),
+                ])
                 .chain(motor_datasheet())
                 .collect(),
             ),
@@ -547,7 +580,8 @@ pub fn library() -> Result<Library, Vec<Issue>> {
     let all = all
         .chain(catalogue().into_iter().map(|(id, class, name, source, values)| (id, class, name.to_string(), source, values)))
         .chain(maxon_catalogue())
-        .chain(gear_catalogue());
+        .chain(gear_catalogue())
+        .chain(yaskawa::catalogue());
     for (id, class_id, name, source, values) in all {
         let Some(class) = lib.class(class_id) else {
             issues.push(Issue::new(format!("seed instance {name}"), format!("no seed class {class_id}")));
@@ -581,7 +615,7 @@ type CatalogueInstance = (&'static str, &'static str, &'static str, String, Map<
 /// Catalogue instances: values exactly as the datasheet prints them, with the line each one is.
 fn catalogue() -> Vec<CatalogueInstance> {
     let not_peak = |stall: &str| {
-        format!("T_peak missing: FAULHABER prints no short-time torque limit, only the stall torque {stall} at the nominal voltage (a point of the speed-torque line, not a permitted load), so the peak check is not evaluated.")
+        format!("T_peak missing: FAULHABER prints no short-time torque limit. T_stall = stall torque {stall} at the nominal voltage (a point of the speed-torque line: the most the motor delivers at that voltage), the peak check's limit where the maker gives no short-time limit.")
     };
     let sr = |winding: &str, col: &str, r: &str, l: &str, k: &str, j: &str, u: &str, i: &str, stall: &str| {
         format!(
@@ -611,7 +645,7 @@ fn catalogue() -> Vec<CatalogueInstance> {
     let p40 = "7.2 \"Motor 2232 … BX4 with encoder IE3\", page 40";
     let p46 = "7.5 \"Motor 2250 … BX4 without attachment\", page 46";
     #[allow(clippy::too_many_arguments)]
-    let dc = |r: f64, l: f64, k: f64, j: f64, d: Option<f64>, u: f64, i: f64, m: f64, n: f64| {
+    let dc = |r: f64, l: f64, k: f64, j: f64, d: Option<f64>, u: f64, i: f64, m: f64, n: f64, stall: f64| {
         let mut v = json!({
             "R": {"value": r, "unit": "Ohm"},
             "L": {"value": l, "unit": "uH"},
@@ -622,7 +656,8 @@ fn catalogue() -> Vec<CatalogueInstance> {
             "I_max": {"value": i, "unit": "A"},
             "Tc": 0.001,
             "T_nom": {"value": m, "unit": "mNm"},
-            "w_max": {"value": n, "unit": "rpm"}
+            "w_max": {"value": n, "unit": "rpm"},
+            "T_stall": {"value": stall, "unit": "mNm"}
         });
         if let Some(d) = d {
             v["d"] = json!({"value": d, "unit": "mNm/rpm"});
@@ -635,14 +670,14 @@ fn catalogue() -> Vec<CatalogueInstance> {
             DC_MOTOR,
             "Faulhaber 1331 T 006 SR",
             sr("006", "1331 T 006 SR", "2,83", "70", "5,35", "0,71", "6", "0,81", "11,20 mNm"),
-            dc(2.83, 70.0, 5.35, 0.71, None, 6.0, 0.81, 3.2, 12000.0),
+            dc(2.83, 70.0, 5.35, 0.71, None, 6.0, 0.81, 3.2, 12000.0, 11.2),
         ),
         (
             FAULHABER_1331_012,
             DC_MOTOR,
             "Faulhaber 1331 T 012 SR",
             sr("012", "1331 T 012 SR", "13,7", "310", "11,4", "0,67", "12", "0,37", "9,90 mNm"),
-            dc(13.7, 310.0, 11.4, 0.67, None, 12.0, 0.37, 3.2, 12000.0),
+            dc(13.7, 310.0, 11.4, 0.67, None, 12.0, 0.37, 3.2, 12000.0, 9.9),
         ),
         (
             FAULHABER_2232_012_BX4_S,
@@ -663,7 +698,7 @@ fn catalogue() -> Vec<CatalogueInstance> {
                 "16 700",
                 "27.3 mNm",
             ),
-            dc(3.5, 130.0, 8.14, 4.2, Some(5.5e-5), 12.0, 0.99, 7.0, 16700.0),
+            dc(3.5, 130.0, 8.14, 4.2, Some(5.5e-5), 12.0, 0.99, 7.0, 16700.0, 27.3),
         ),
         (
             FAULHABER_2232_024_BX4_S,
@@ -684,7 +719,7 @@ fn catalogue() -> Vec<CatalogueInstance> {
                 "16 700",
                 "29.4 mNm",
             ),
-            dc(12.4, 470.0, 15.5, 4.2, Some(5.5e-5), 24.0, 0.52, 7.0, 16700.0),
+            dc(12.4, 470.0, 15.5, 4.2, Some(5.5e-5), 24.0, 0.52, 7.0, 16700.0, 29.4),
         ),
         (
             FAULHABER_2232_012_BX4,
@@ -705,7 +740,7 @@ fn catalogue() -> Vec<CatalogueInstance> {
                 "10 500",
                 "55.7 mNm",
             ),
-            dc(3.5, 120.0, 16.5, 5.2, Some(1.5e-4), 12.0, 0.95, 13.0, 10500.0),
+            dc(3.5, 120.0, 16.5, 5.2, Some(1.5e-4), 12.0, 0.95, 13.0, 10500.0, 55.7),
         ),
         (
             FAULHABER_2232_024_BX4,
@@ -726,7 +761,7 @@ fn catalogue() -> Vec<CatalogueInstance> {
                 "10 500",
                 "59.9 mNm",
             ),
-            dc(12.4, 440.0, 31.4, 5.2, Some(1.5e-4), 24.0, 0.5, 13.0, 10500.0),
+            dc(12.4, 440.0, 31.4, 5.2, Some(1.5e-4), 24.0, 0.5, 13.0, 10500.0, 59.9),
         ),
         (
             FAULHABER_2250_024_BX4_S,
@@ -747,14 +782,14 @@ fn catalogue() -> Vec<CatalogueInstance> {
                 "12 300",
                 "84,7 mNm",
             ),
-            dc(5.9, 250.0, 21.1, 5.3, Some(1.4e-4), 24.0, 0.79, 14.0, 12300.0),
+            dc(5.9, 250.0, 21.1, 5.3, Some(1.4e-4), 24.0, 0.79, 14.0, 12300.0, 84.7),
         ),
         (
             FAULHABER_2250_024_BX4,
             DC_MOTOR,
             "Faulhaber 2250 S 024 BX4",
             bx4("2250 S 024 BX4", p46, "2250 S 024 BX4", "5.9", "240", "36.9", "10", "2.4·10⁻⁴", "24", "0.74", "23", "9 000", "149 mNm"),
-            dc(5.9, 240.0, 36.9, 10.0, Some(2.4e-4), 24.0, 0.74, 23.0, 9000.0),
+            dc(5.9, 240.0, 36.9, 10.0, Some(2.4e-4), 24.0, 0.74, 23.0, 9000.0, 149.0),
         ),
     ]
 }
@@ -1101,7 +1136,7 @@ fn maxon_catalogue() -> Vec<NamedInstance> {
     let mut out = Vec::new();
     let mut push = |c: &MaxonColumn, title: &str, doc: &str, j: &str, w_max: &str, thermal: &str, column: &str| {
         let source = format!(
-            "maxon {title}, {u} V winding (block-commutated brushless, modelled as a DC motor with the phase-to-phase values). {doc} Values ({column}): V_max = line 1 nominal voltage {u} V; R = line 10 terminal resistance phase to phase {r} Ω; L = line 11 terminal inductance phase to phase {l} mH; k = line 12 torque constant {k} mNm/A; J = line 16 rotor inertia {j} gcm²; I_max = line 6 nominal current (max. continuous current) {i} A; T_nom = line 5 nominal torque (max. continuous torque) {t} mNm; {w_max} The column's own consistency: R·J/k² = line 15 mechanical time constant {tau} ms. d = 0: the page prints no viscous friction coefficient, and d = 0 is the class's rule for that case. Tc = 0.001 s is the class's drive-setting default, not a motor value. T_peak missing: maxon prints no short-time torque limit, only the stall torque {stall} mNm (line 7, a point of the speed-torque line at nominal voltage, not a permitted load) and that the motor may be briefly overloaded (recurring) without a figure, so the peak check is not evaluated. Printed, without a parameter here: {thermal}.",
+            "maxon {title}, {u} V winding (block-commutated brushless, modelled as a DC motor with the phase-to-phase values). {doc} Values ({column}): V_max = line 1 nominal voltage {u} V; R = line 10 terminal resistance phase to phase {r} Ω; L = line 11 terminal inductance phase to phase {l} mH; k = line 12 torque constant {k} mNm/A; J = line 16 rotor inertia {j} gcm²; I_max = line 6 nominal current (max. continuous current) {i} A; T_nom = line 5 nominal torque (max. continuous torque) {t} mNm; {w_max} The column's own consistency: R·J/k² = line 15 mechanical time constant {tau} ms. d = 0: the page prints no viscous friction coefficient, and d = 0 is the class's rule for that case. Tc = 0.001 s is the class's drive-setting default, not a motor value. T_peak missing: maxon prints no short-time torque limit, only that the motor may be briefly overloaded (recurring) without a figure. T_stall = line 7 stall torque {stall} mNm (a point of the speed-torque line at nominal voltage: the most the motor delivers at that voltage), the peak check's limit where the maker gives no short-time limit. Printed, without a parameter here: {thermal}.",
             u = c.u,
             r = c.r,
             l = c.l,
@@ -1120,7 +1155,8 @@ fn maxon_catalogue() -> Vec<NamedInstance> {
             "V_max": {"value": printed(c.u), "unit": "V"},
             "I_max": {"value": printed(c.i_nom), "unit": "A"},
             "Tc": 0.001,
-            "T_nom": {"value": printed(c.t_nom), "unit": "mNm"}
+            "T_nom": {"value": printed(c.t_nom), "unit": "mNm"},
+            "T_stall": {"value": printed(c.stall), "unit": "mNm"}
         });
         if w_max.starts_with("w_max = ") {
             v["w_max"] = json!({"value": 10000, "unit": "rpm"});

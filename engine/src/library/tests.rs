@@ -328,7 +328,13 @@ fn the_seed_is_valid_and_ids_are_unique() {
     }
     let motors = lib.instances.iter().filter(|i| i.class_id == seed::DC_MOTOR).count();
     assert_eq!(motors, 18, "motors of our own class: 4 of the first seed and 14 catalogue motors");
-    assert_eq!(lib.instances.len(), 83, "instances: 9 of the first seed, 14 catalogue motors and 60 catalogue gear units");
+    assert_eq!(
+        lib.instances.len(),
+        113,
+        "instances: 9 of the first seed, 14 catalogue DC motors, 60 catalogue gear units and 30 AC servo motors"
+    );
+    let servos = lib.instances.iter().filter(|i| i.class_id == seed::AC_SERVO).count();
+    assert_eq!(servos, 30, "AC servo motors: 15 Yaskawa Σ-7 models, each without and with holding brake");
     // Every instance beyond the first seed's nine is a catalogue instance (held to its sources).
     let first = [
         seed::MAXON_RE40,
@@ -381,8 +387,8 @@ fn the_seed_is_valid_and_ids_are_unique() {
 }
 
 /// The makers a catalogue source may name.
-const MAKERS: [&str; 10] =
-    ["FAULHABER", "maxon", "Portescap", "Nanotec", "Harmonic Drive", "Neugart", "Bosch Rexroth", "HIWIN", "THK", "Beckhoff"];
+const MAKERS: [&str; 11] =
+    ["FAULHABER", "maxon", "Portescap", "Nanotec", "Harmonic Drive", "Neugart", "Bosch Rexroth", "HIWIN", "THK", "Beckhoff", "Yaskawa"];
 
 /// Why a catalogue instance's source is not good enough, if it is not: it names a maker, a
 /// document (a URL) and a page, table or line; says for every value it has which datasheet line it
@@ -461,6 +467,9 @@ fn catalogue_values_are_the_datasheets() {
     let m = seed::FAULHABER_2250_024_BX4;
     assert!(close(get(m, "R"), 5.9) && close(get(m, "L"), 240e-6) && close(get(m, "k"), 0.0369) && close(get(m, "J"), 1e-6));
     assert!(close(get(m, "d"), 2.4e-7 * 30.0 / std::f64::consts::PI) && close(get(m, "T_nom"), 0.023));
+    // The printed stall torques, the peak limit where the maker gives no short-time limit.
+    assert!(close(get(m, "T_stall"), 0.149) && close(get(seed::FAULHABER_1331_006, "T_stall"), 0.0112));
+    assert!(close(get(seed::MAXON_EC45_FLAT_MOTORS[4], "T_stall"), 1.26));
     // maxon EC 45 flat 70 W, 48 V: phase-to-phase values, and the page's own mechanical time
     // constant R·J/k² (8.510 ms) from them.
     let mx = seed::MAXON_EC45_FLAT_MOTORS[4];
@@ -665,4 +674,27 @@ fn units_in_xml_values_are_converted() {
     let text = xml::write(&lib).replace(r#"<value param="L">8.23e-5</value>"#, r#"<value param="L" unit="uH">82.3</value>"#);
     assert!(text.contains("unit=\"uH\""));
     assert_eq!(import_into_empty(&text), lib);
+}
+
+/// Issue 27: at least 8 AC servo motors of industrial robot size (rated output 100 W to 3 kW),
+/// each model without and with its holding brake, values as the ratings table prints them.
+#[test]
+fn ac_servo_motors_of_robot_size() {
+    let lib = seed::library().expect("seed");
+    let servos: Vec<&Instance> = lib.instances.iter().filter(|i| i.class_id == seed::AC_SERVO).collect();
+    let get = |i: &Instance, p: &str| i.value(p).and_then(Value::as_f64);
+    let in_range = servos.iter().filter(|i| get(i, "P_nom").is_some_and(|p| (100.0..=3000.0).contains(&p))).count();
+    assert_eq!(in_range, servos.len(), "every AC servo of the seed is rated 100 W to 3 kW");
+    let models: HashSet<&str> = servos.iter().map(|i| i.name.split(" (").next().unwrap_or("")).collect();
+    assert!(models.len() >= 8, "{models:?}");
+    assert_eq!(servos.iter().filter(|i| i.name.ends_with("(with holding brake)")).count(), models.len());
+    // Yaskawa SGM7A-30A with holding brake: the brake's inertia, and no w_max (footnote *9).
+    let a30 = lib.instances.iter().find(|i| i.id == seed::YASKAWA_SERVOS[19]).expect("SGM7A-30A");
+    assert_eq!(a30.name, "Yaskawa SGM7A-30A (with holding brake)");
+    let close = |a: Option<f64>, b: f64| a.is_some_and(|a| (a - b).abs() <= 1e-12 * b.abs());
+    assert!(close(get(a30, "J"), 9.20e-4) && close(get(a30, "k"), 0.582) && close(get(a30, "T_peak"), 29.4));
+    assert!(close(get(a30, "T_nom"), 9.80) && close(get(a30, "I_max"), 56.0) && close(get(a30, "P_nom"), 3000.0));
+    assert_eq!(get(a30, "w_max"), None);
+    let g20 = lib.instances.iter().find(|i| i.id == seed::YASKAWA_SERVOS[28]).expect("SGM7G-20A");
+    assert!(close(get(g20, "J"), 26.0e-4) && close(get(g20, "w_max"), 3000.0 * std::f64::consts::PI / 30.0));
 }

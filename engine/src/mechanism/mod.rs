@@ -83,8 +83,6 @@ pub enum MechanismError {
     NotAssembled { residual: f64, iterations: usize },
     #[error("no CAD frame with nodeID \"{0}\"")]
     UnknownFrame(String),
-    #[error("inverse kinematics of mechanisms with closed loops is not supported yet")]
-    ClosedLoops,
     #[error("mimic coupling of joint \"{joint}\": {why}")]
     Coupling { joint: String, why: String },
     #[error("inverse kinematics target not supported: {0}")]

@@ -85,6 +85,10 @@ pub const MAX_POINTS: usize = 2000;
 /// How many alternatives [`size_drive`] returns by default.
 pub const TOP: usize = 10;
 
+/// Why a motor without a winding resistance has no voltage or braking check.
+const NO_R: &str =
+    "the motor's datasheet gives no winding resistance (AC servo motor): the motor voltage and the energy fed back are not known";
+
 /// Why a sizing cannot be done.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum SizingError {
@@ -550,7 +554,10 @@ struct Stats {
 
 fn reflect(axis: &Axis, side: &GearSide, base: &[f64], motor: &Motor, t2: &mut Vec<f64>) -> Stats {
     let mut s = Stats::default();
-    let (r_k, k, r_k2) = (motor.r / motor.k, motor.k, motor.r / (motor.k * motor.k));
+    // Without a winding resistance (AC servo datasheets give none) the copper losses count as 0:
+    // the voltage and braking checks that need them are then not evaluated.
+    let r = motor.r.unwrap_or(0.0);
+    let (r_k, k, r_k2) = (r / motor.k, motor.k, r / (motor.k * motor.k));
     let mut run = 0.0;
     let tau_th = motor.tau_th_w.filter(|x| *x > 0.0 && motor.t_nom.is_some());
     t2.clear();
@@ -849,6 +856,7 @@ fn evaluate(axis: &Axis, side: &GearSide, motor: &Motor, gear: &Gear, settings: 
     let spec = Spec { check: "voltage", label: "Motor voltage U = R·I + k·ω", rule: rule::VOLTAGE, unit: "V", reserve: true };
     match (&stats, amp) {
         (None, _) => o.not_evaluated(spec, no_j_in, without_j_in()),
+        (Some(_), _) if motor.r.is_none() => o.not_evaluated(spec, &["motor.R"], NO_R.to_string()),
         (Some(_), None) => o.not_evaluated(spec, &["amplifier"], "no amplifier set".to_string()),
         (Some(s), Some(_)) => o.limit(
             spec,
@@ -1005,6 +1013,7 @@ fn evaluate(axis: &Axis, side: &GearSide, motor: &Motor, gear: &Gear, settings: 
             missing: Vec::new(),
             detail: "the motor never feeds energy back: no brake resistor or bus capacity needed".to_string(),
         }),
+        Some(_) if motor.r.is_none() => o.not_evaluated(spec, &["motor.R"], NO_R.to_string()),
         Some(s) => match settings.brake {
             None => o.not_evaluated(
                 spec,

@@ -10,6 +10,7 @@ use crate::pipeline::back::modelica::mechatronics::JointKind;
 /// The motor classes the sizing knows.
 pub const DC_MOTOR_CLASS: &str = "cad2mo.Drives.Motors.DCPermanentMagnet";
 pub const MSL_DC_CLASS: &str = "Modelica.Electrical.Machines.BasicMachines.DCMachines.DC_PermanentMagnet";
+pub const SERVO_MOTOR_CLASS: &str = "cad2mo.Drives.Motors.ServoMotor";
 /// The gear classes the sizing knows.
 pub const IDEAL_GEAR_CLASS: &str = "Modelica.Mechanics.Rotational.Components.IdealGear";
 pub const EFFICIENCY_GEAR_CLASS: &str = "cad2mo.Drives.Gears.Efficiency";
@@ -19,8 +20,9 @@ pub const LEAD_SCREW_CLASS: &str = "cad2mo.Drives.Gears.LeadScrew";
 #[derive(Clone, Debug, PartialEq)]
 pub struct Motor {
     pub part: PartRef,
-    /// Armature resistance (Ω) at the operating temperature.
-    pub r: f64,
+    /// Armature resistance (Ω) at the operating temperature; `None` for an AC servo motor, whose
+    /// datasheet gives none (its voltage and braking checks are then not evaluated).
+    pub r: Option<f64>,
     /// Torque constant = back-EMF constant (N·m/A), > 0.
     pub k: f64,
     /// Rotor inertia (kg·m²).
@@ -214,7 +216,7 @@ pub fn motor(class: &Class, instance: &Instance, overrides: &[(String, Value)]) 
         DC_MOTOR_CLASS => {
             let k = positive(&part, "k", need(&part, &v, "k")?)?;
             Ok(Motor {
-                r: need(&part, &v, "R")?,
+                r: Some(need(&part, &v, "R")?),
                 k,
                 j: need(&part, &v, "J")?,
                 d: real(&v, "d").unwrap_or(0.0),
@@ -244,7 +246,7 @@ pub fn motor(class: &Class, instance: &Instance, overrides: &[(String, Value)]) 
             let k = (va - convert_resistance(ra, t_ref, alpha, t_nominal) * ia) / w;
             let k = positive(&part, "the EMF constant (VaNominal - Ra·IaNominal)/wNominal", k)?;
             Ok(Motor {
-                r: convert_resistance(ra, t_ref, alpha, t_op),
+                r: Some(convert_resistance(ra, t_ref, alpha, t_op)),
                 k,
                 j: need(&part, &v, "Jr")?,
                 d: 0.0,
@@ -260,6 +262,22 @@ pub fn motor(class: &Class, instance: &Instance, overrides: &[(String, Value)]) 
                 part,
             })
         }
+        SERVO_MOTOR_CLASS => Ok(Motor {
+            r: None,
+            k: positive(&part, "k", need(&part, &v, "k")?)?,
+            j: need(&part, &v, "J")?,
+            d: 0.0,
+            t_nom: datasheet("T_nom"),
+            t_peak: datasheet("T_peak"),
+            t_stall: datasheet("T_stall"),
+            w_max: datasheet("w_max"),
+            tau_th_w: datasheet("tau_th_w"),
+            mass: datasheet("mass"),
+            price_class: integer(&v, "price_class"),
+            mount: text(&v, "mount"),
+            source: instance.source.clone(),
+            part,
+        }),
         other => Err(SizingError::UnknownClass { part: part.name, class: other.to_string(), slot: "motor" }),
     }
 }

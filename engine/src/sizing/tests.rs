@@ -14,7 +14,7 @@ fn part(name: &str) -> PartRef {
 fn motor() -> Motor {
     Motor {
         part: part("M"),
-        r: 1.0,
+        r: Some(1.0),
         k: 0.1,
         j: 1e-4,
         d: 0.0,
@@ -455,9 +455,9 @@ fn parts_from_the_seed_library() {
     let cat = Catalog::from_library(&lib);
     assert!(cat.skipped.is_empty(), "{:?}", cat.skipped);
     assert_eq!(cat.motors.len(), lib.instances.iter().filter(|i| lib.class(&i.class_id).is_some_and(|c| c.domain == "motor")).count());
-    // 5 motors of the first seed and 14 catalogue motors; 3 gears of the first seed and 60
-    // catalogue gear units.
-    assert_eq!((cat.motors.len(), cat.gears.len()), (19, 63));
+    // 5 motors of the first seed, 14 catalogue DC motors and 30 AC servo motors; 3 gears of the
+    // first seed and 60 catalogue gear units.
+    assert_eq!((cat.motors.len(), cat.gears.len()), (49, 63));
 }
 
 /// Ranking: real combinations only (each gear at its catalogue ratio, motors that mount on the
@@ -621,4 +621,31 @@ fn published_example_harmonic_gear_average_torque() {
         .cbrt();
     close(avg, exact, 1e-12);
     assert_eq!(check(&d, "gear_avg_torque").status, Status::Pass);
+}
+
+/// An AC servo motor (no winding resistance in its datasheet): the torque, speed and current
+/// checks against its datasheet; the voltage and braking checks name `motor.R` as missing.
+#[test]
+fn ac_servo_without_resistance() {
+    let lib = seed::library().expect("seed");
+    let id = seed::YASKAWA_SERVOS[6]; // SGM7J-04A without holding brake.
+    let i = lib.instances.iter().find(|i| i.id == id).expect("SGM7J-04A");
+    let m = parts::motor(lib.class(&i.class_id).expect("class"), i, &[]).expect("servo");
+    assert_eq!((m.r, m.k, m.t_nom, m.t_peak), (None, 0.544, Some(1.27), Some(4.46)));
+    assert!((m.j - 0.486e-4).abs() <= 1e-16, "{}", m.j);
+    let back = Samples::new(11, |_| (5.0, 0.0, -20.0));
+    let bus = Settings { brake: Some(Brake::Bus { capacitance: 0.001, voltage_max: 30.0 }), ..with_amp() };
+    let d = size(&back, JointKind::Revolute, 0.0, &m, &gear(10.0, 0.8), &bus);
+    // T_m = 20·0.8/10 = 1.6 N·m against T_peak 4.46 N·m; I = 1.6/0.544 A.
+    close(value(&d, "peak_torque"), 1.6, 1e-12);
+    close(check(&d, "peak_torque").limit.expect("T_peak"), 4.46, 1e-12);
+    close(value(&d, "peak_current"), 1.6 / 0.544, 1e-12);
+    for name in ["voltage", "braking"] {
+        let c = check(&d, name);
+        assert_eq!((c.status, c.missing.clone()), (Status::NotEvaluated, vec!["motor.R".to_string()]), "{name}");
+    }
+    // A DC motor with the same numbers has both checks.
+    let dc = Motor { r: Some(1.0), ..m };
+    let d = size(&back, JointKind::Revolute, 0.0, &dc, &gear(10.0, 0.8), &bus);
+    assert!(check(&d, "voltage").value.is_some() && check(&d, "braking").value.is_some());
 }

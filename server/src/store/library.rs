@@ -673,12 +673,19 @@ mod tests {
         let new = export(&store).await.expect("export");
         // Back to the old seed.
         sqlx::query(&store.pool.sql("DELETE FROM library_parameters WHERE datasheet = 1")).execute(&store.pool).await.expect("params");
-        // The amplifier class came after 0005.
-        sqlx::query(&store.pool.sql("DELETE FROM library_classes WHERE id = ?1"))
-            .bind(seed::SERVO_AMPLIFIER)
-            .execute(&store.pool)
-            .await
-            .expect("class");
+        // The amplifier and AC servo classes (with the servos) came after 0005.
+        for class in [seed::SERVO_AMPLIFIER, seed::AC_SERVO] {
+            sqlx::query(&store.pool.sql("DELETE FROM library_instances WHERE class_id = ?1"))
+                .bind(class)
+                .execute(&store.pool)
+                .await
+                .expect("instances");
+            sqlx::query(&store.pool.sql("DELETE FROM library_classes WHERE id = ?1"))
+                .bind(class)
+                .execute(&store.pool)
+                .await
+                .expect("class");
+        }
         for i in &new.instances {
             // Controllers have no datasheet values.
             let Some(cut) = ["Datasheet values for the drive sizing", "No datasheet values for the drive sizing"]
@@ -708,6 +715,7 @@ mod tests {
         // The datasheet parameters added since 0005 come at start-up (seed_new_classes).
         sqlx::query("DELETE FROM library_seed_offered").execute(&store.pool).await.expect("offered");
         seed_new_classes(&store).await.expect("new parameters");
+        seed_new_instances(&store).await.expect("the servos");
         assert_eq!(export(&store).await.expect("export"), new);
     }
 

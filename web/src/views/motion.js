@@ -258,7 +258,9 @@ export function renderMotion(panel, ctx) {
         h('span', { class: 'check' }, orient, h('label', { for: orient.id }, 'Orientation too (else position only)')),
       ];
     } else {
-      const followers = (joints?.joints || []).filter((j) => j.independent === false);
+      const dependent = (joints?.joints || []).filter((j) => j.independent === false);
+      const loopFollowers = dependent.filter((j) => !j.mimic);
+      const mimicFollowers = dependent.filter((j) => j.mimic);
       const rows = driven().map((j) =>
         h(
           'label',
@@ -273,7 +275,10 @@ export function renderMotion(panel, ctx) {
       );
       body = [
         h('div', { class: 'joint-values' }, rows),
-        followers.length ? h('p', { class: 'muted' }, `${followers.map((j) => j.name).join(', ')} follow the loops.`) : null,
+        loopFollowers.length ? h('p', { class: 'muted' }, `${loopFollowers.map((j) => j.name).join(', ')} follow the loops.`) : null,
+        mimicFollowers.length
+          ? h('p', { class: 'muted' }, `${mimicFollowers.map((j) => `${j.name} follows ${j.mimic.leader}`).join(', ')} (mimic coupling).`)
+          : null,
       ];
     }
     const timing =

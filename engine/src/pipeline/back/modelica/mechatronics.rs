@@ -352,6 +352,19 @@ static SPECS: &[Spec] = &[
         ],
     },
     Spec {
+        path: "cad2mo.Drives.Motors.ServoMotor",
+        domain: Domain::Motor,
+        class: "Motors.ServoMotor",
+        fits: None,
+        doc: "Permanent-magnet AC servo motor with field-oriented current control: torque = k*i, the current following the limited command (our own equations)",
+        params: &[
+            real("k", "N.m/A", "SI.ElectricalTorqueConstant", "0.544", Range::Positive, "Torque constant (per A rms)"),
+            real("J", "kg.m2", "SI.Inertia", "4.86e-5", Range::Positive, "Motor moment of inertia"),
+            real("I_max", "A", "SI.Current", "9.3", Range::Positive, "Current limit: the maximum (instantaneous) current, A rms"),
+            real("Tc", "s", "SI.Time", "0.001", Range::Positive, "Time constant of the current loop"),
+        ],
+    },
+    Spec {
         path: "Modelica.Mechanics.Rotational.Components.IdealGear",
         domain: Domain::Gear,
         class: "Gears.Ideal",

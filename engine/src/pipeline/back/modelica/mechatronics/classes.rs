@@ -98,13 +98,14 @@ pub(super) fn files(pkg: &str) -> Vec<(String, Vec<u8>)> {
         plain("Interfaces/Controller.mo", CONTROLLER),
         plain("Interfaces/PartialJointDrive.mo", PARTIAL_JOINT_DRIVE),
         plain("Motors/package.mo", MOTORS),
-        plain("Motors/package.order", "DCPermanentMagnet\nMSL_DC_PermanentMagnet\n"),
+        plain("Motors/package.order", "DCPermanentMagnet\nMSL_DC_PermanentMagnet\nServoMotor\n"),
         class("Motors/DCPermanentMagnet.mo", DC_PERMANENT_MAGNET, "cad2mo.Drives.Motors.DCPermanentMagnet"),
         class(
             "Motors/MSL_DC_PermanentMagnet.mo",
             MSL_DC_PERMANENT_MAGNET,
             "Modelica.Electrical.Machines.BasicMachines.DCMachines.DC_PermanentMagnet",
         ),
+        class("Motors/ServoMotor.mo", SERVO_MOTOR, "cad2mo.Drives.Motors.ServoMotor"),
         plain("Gears/package.mo", GEARS),
         plain("Gears/package.order", "Ideal\nEfficiency\nLeadScrew\n"),
         class("Gears/Ideal.mo", IDEAL, "Modelica.Mechanics.Rotational.Components.IdealGear"),
@@ -293,6 +294,42 @@ they drive through the gear fixes them.</p>
 $PARAMS_HTML
 </html>"));
 end DCPermanentMagnet;
+"#;
+
+const SERVO_MOTOR: &str = r#"within $P.Components.Drives.Motors;
+model ServoMotor "Permanent-magnet AC servo motor with field-oriented current control and a current limit"
+  import SI = Modelica.Units.SI;
+  extends $P.Components.Drives.Interfaces.Motor;
+$PARAMS
+  SI.Angle phi "Rotor angle";
+  SI.AngularVelocity w "Rotor speed";
+  SI.Current i(start=0, fixed=true) "Torque-forming current (A rms)";
+  SI.Current i_cmd "Current command after the current limit";
+  SI.Torque tau "Electromagnetic torque";
+equation
+  // Current limit, then the servo amplifier's current loop as a first-order lag.
+  i_cmd = smooth(0, noEvent(if i_ref > I_max then I_max else if i_ref < -I_max then -I_max else i_ref));
+  Tc*der(i) = i_cmd - i;
+  tau = k*i;
+  phi = flange.phi;
+  w = der(phi);
+  J*der(w) = tau + flange.tau;
+  annotation (Documentation(info="<html>
+<p>A permanent-magnet synchronous (AC servo) motor and its servo amplifier as servo makers rate
+them: under field-oriented control the torque is the torque constant times the torque-forming
+current (A rms), and the amplifier's current loop makes that current follow the command:</p>
+<pre>
+i_cmd     = limit(i_ref, -I_max, I_max)
+Tc*der(i) = i_cmd - i
+tau       = k*i
+J*der(w)  = tau + flange.tau,   w = der(phi),   phi = flange.phi
+</pre>
+<p>Servo datasheets give no winding resistance or inductance for this use, so the motor voltage
+and the speed limit it sets are not modelled; the current limit caps the torque at k*I_max (the
+maker's instantaneous maximum torque). The stator is fixed to the ground.</p>
+$PARAMS_HTML
+</html>"));
+end ServoMotor;
 "#;
 
 const MSL_DC_PERMANENT_MAGNET: &str = r#"within $P.Components.Drives.Motors;

@@ -10,6 +10,7 @@ use super::*;
 
 const MOTOR: &str = "cad2mo.Drives.Motors.DCPermanentMagnet";
 const MSL_MOTOR: &str = "Modelica.Electrical.Machines.BasicMachines.DCMachines.DC_PermanentMagnet";
+const SERVO_MOTOR: &str = "cad2mo.Drives.Motors.ServoMotor";
 const IDEAL: &str = "Modelica.Mechanics.Rotational.Components.IdealGear";
 const EFFICIENCY: &str = "cad2mo.Drives.Gears.Efficiency";
 const SCREW: &str = "cad2mo.Drives.Gears.LeadScrew";
@@ -58,7 +59,7 @@ fn mechatronics_text(drives: &[DrivePlan]) -> String {
 fn known_classes_cover_every_slot() {
     let known = known_classes();
     let paths: Vec<&str> = known.iter().map(|k| k.modelica_class).collect();
-    assert_eq!(paths, [MOTOR, MSL_MOTOR, IDEAL, EFFICIENCY, SCREW, PPI]);
+    assert_eq!(paths, [MOTOR, MSL_MOTOR, SERVO_MOTOR, IDEAL, EFFICIENCY, SCREW, PPI]);
     for k in &known {
         assert!(["motor", "gear", "controller"].contains(&k.domain), "{k:?}");
         assert!(!k.params.is_empty(), "{k:?}");
