@@ -88,9 +88,11 @@ fn vrml_instances(per: usize, instances: usize) -> Vec<u8> {
 fn vrml_shapes_count_against_the_bundle_budget_after_the_stl_meshes() {
     let per = 100_000;
     // 51 instances: 5.1 M triangles, refused at the USE that passes the budget, before expanding it.
-    let bundle =
-        Bundle::from_files("vrml", [("tree.xml".to_string(), xml_naming_part(3, 0).into_bytes()), ("big.wrl".to_string(), vrml_instances(per, 51))])
-            .expect("bundle");
+    let bundle = Bundle::from_files(
+        "vrml",
+        [("tree.xml".to_string(), xml_naming_part(3, 0).into_bytes()), ("big.wrl".to_string(), vrml_instances(per, 51))],
+    )
+    .expect("bundle");
     let e = pipeline::analyse(&bundle, &pipeline::Options::default()).map(|_| ()).expect_err("over the budget");
     let text = e.to_string();
     assert!(

@@ -156,6 +156,17 @@ fn zip_crate(files: &[(String, Vec<u8>)], done: &mut dyn FnMut(usize, usize)) ->
 
 #[cfg(test)]
 mod tests {
+    /// A deflated entry keeps only its bytes, not the compressor's bound (about the input's size):
+    /// the entries of a package are all held until laid out (issue 26, peak memory).
+    #[test]
+    fn a_deflated_entry_holds_only_its_bytes() {
+        let mut c = libdeflater::Compressor::new(libdeflater::CompressionLvl::new(super::LEVEL).unwrap_or_default());
+        let text = b"0 0 0\n".repeat(100_000);
+        let p = super::pack(&mut c, &text);
+        assert_eq!(p.method, 8);
+        assert!(p.data.len() < text.len() / 100 && p.data.capacity() == p.data.len(), "{} of {}", p.data.len(), p.data.capacity());
+    }
+
     #[test]
     fn deterministic() {
         let files = vec![("P/a.mo".to_string(), b"model a end a;".to_vec())];
