@@ -87,7 +87,8 @@ fn vrml_instances(per: usize, instances: usize) -> Vec<u8> {
 #[test]
 fn vrml_shapes_count_against_the_bundle_budget_after_the_stl_meshes() {
     let per = 100_000;
-    // 51 instances: 5.1 M triangles, refused at the USE that passes the budget, before expanding it.
+    // 51 instances: 5.1 M triangles, refused at the Transform (holding a USE) that passes the
+    // budget, before expanding it.
     let bundle = Bundle::from_files(
         "vrml",
         [("tree.xml".to_string(), xml_naming_part(3, 0).into_bytes()), ("big.wrl".to_string(), vrml_instances(per, 51))],
@@ -97,14 +98,15 @@ fn vrml_shapes_count_against_the_bundle_budget_after_the_stl_meshes() {
     let text = e.to_string();
     assert!(
         text.starts_with("big.wrl:")
-            && text.contains("USE BIG would expand to 5100000 triangles (limit 5000000)")
+            && text.contains("Transform would expand to 5100000 triangles (limit 5000000)")
             && text.contains("limit of 5000000 triangles per bundle")
             && text.contains("0 of them are taken by the STL meshes"),
         "{text}"
     );
     let d = &e.diagnostics()[0];
-    assert!(d.file == "big.wrl" && d.line > 0 && d.message.starts_with("USE BIG would expand"), "{d:?}");
-    // 30 instances (3 M) fit alone, but not after two bodies' 1.1 M triangles each of STL.
+    assert!(d.file == "big.wrl" && d.line > 0 && d.message.starts_with("Transform would expand"), "{d:?}");
+    // 30 instances (3 M) fit alone, but not after two bodies with 1.1 M triangles of STL each: the
+    // 29th is refused.
     let bundle = Bundle::from_files(
         "vrml",
         [
@@ -116,7 +118,7 @@ fn vrml_shapes_count_against_the_bundle_budget_after_the_stl_meshes() {
     .expect("bundle");
     let text = pipeline::analyse(&bundle, &pipeline::Options::default()).map(|_| ()).expect_err("over the budget").to_string();
     assert!(
-        text.contains("would expand to 3000000 triangles (limit 2800000)") && text.contains("2200000 of them are taken by the STL meshes"),
+        text.contains("would expand to 2900000 triangles (limit 2800000)") && text.contains("2200000 of them are taken by the STL meshes"),
         "{text}"
     );
 }
