@@ -340,15 +340,15 @@ pub fn urdf_shared_obj(links: usize, k: usize) -> Vec<(String, Vec<u8>)> {
     }
     let mut u = String::from("<?xml version=\"1.0\"?>\n<robot name=\"shared\">\n");
     for i in 0..links {
-        let _ = write!(
+        let _ = writeln!(
             u,
-            "  <link name=\"l{i}\">\n    <inertial><mass value=\"1\"/><inertia ixx=\"0.01\" ixy=\"0\" ixz=\"0\" iyy=\"0.01\" iyz=\"0\" izz=\"0.01\"/></inertial>\n    <visual><geometry><mesh filename=\"package://shared/meshes/plate.obj\"/></geometry></visual>\n  </link>\n"
+            "  <link name=\"l{i}\">\n    <inertial><mass value=\"1\"/><inertia ixx=\"0.01\" ixy=\"0\" ixz=\"0\" iyy=\"0.01\" iyz=\"0\" izz=\"0.01\"/></inertial>\n    <visual><geometry><mesh filename=\"package://shared/meshes/plate.obj\"/></geometry></visual>\n  </link>"
         );
     }
     for i in 1..links {
-        let _ = write!(
+        let _ = writeln!(
             u,
-            "  <joint name=\"j{i}\" type=\"revolute\"><parent link=\"l{}\"/><child link=\"l{i}\"/><origin xyz=\"0 0 0.1\"/><axis xyz=\"0 0 1\"/><limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/></joint>\n",
+            "  <joint name=\"j{i}\" type=\"revolute\"><parent link=\"l{}\"/><child link=\"l{i}\"/><origin xyz=\"0 0 0.1\"/><axis xyz=\"0 0 1\"/><limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/></joint>",
             i - 1
         );
     }

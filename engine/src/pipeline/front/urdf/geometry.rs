@@ -229,6 +229,9 @@ pub fn attach_meshes(
     Ok(warnings)
 }
 
+/// A body's one mesh reference, its file's bundle path and the key of its scale and origin.
+type SingleMesh<'r, 'b> = (&'r GeometryRef, &'b str, [u64; 10]);
+
 /// When the geometry a body uses (its visuals, or its collisions when it has no visual) is one
 /// mesh file found in the bundle and read with triangles (in `cache`): that reference, the
 /// file's bundle path and the key of its scale and origin (their bits). Bodies with the same
@@ -238,7 +241,7 @@ fn single_mesh<'r, 'b>(
     bundle: &'b Bundle,
     urdf_path: &str,
     cache: &HashMap<String, Arc<Mesh>>,
-) -> Result<Option<(&'r GeometryRef, &'b str, [u64; 10])>, BundleError> {
+) -> Result<Option<SingleMesh<'r, 'b>>, BundleError> {
     let visuals = refs.iter().filter(|g| !g.collision).count();
     let mut used = refs.iter().filter(|g| g.collision == (visuals == 0));
     let (Some(g), None) = (used.next(), used.next()) else { return Ok(None) };
