@@ -4,6 +4,7 @@
 //! ```sh
 //! cargo run --release -p cad2mo-engine --example gen_bundle -- tree-stl 2000 /tmp/tree2000
 //! cargo run --release -p cad2mo-engine --example gen_bundle -- urdf 200 /tmp/urdf200
+//! cargo run --release -p cad2mo-engine --example gen_bundle -- urdf-shared 25 /tmp/shared25
 //! ```
 
 #[path = "../benches/support/gen.rs"]
@@ -13,15 +14,17 @@ mod gen;
 fn main() {
     let args: Vec<String> = std::env::args().collect();
     let (Some(kind), Some(n), Some(dir)) = (args.get(1), args.get(2).and_then(|n| n.parse::<usize>().ok()), args.get(3)) else {
-        eprintln!("usage: gen_bundle tree-stl|tree|urdf N DIR");
+        eprintln!("usage: gen_bundle tree-stl|tree|urdf|urdf-shared N DIR");
         std::process::exit(2);
     };
     let files = match kind.as_str() {
         "tree-stl" => gen::tree_with_stl(n),
         "tree" => vec![("tree.xml".to_string(), gen::tree_xml(n).into_bytes())],
         "urdf" => gen::urdf_tree(n),
+        // Issue 26: one 199,712-triangle OBJ named by N links (25: the bundle's budget).
+        "urdf-shared" => gen::urdf_shared_obj(n, 317),
         _ => {
-            eprintln!("unknown kind {kind}: tree-stl, tree or urdf");
+            eprintln!("unknown kind {kind}: tree-stl, tree, urdf or urdf-shared");
             std::process::exit(2);
         }
     };

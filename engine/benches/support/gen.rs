@@ -318,3 +318,40 @@ pub fn files_under(dir: &std::path::Path) -> Vec<(String, Vec<u8>)> {
     files.sort();
     files
 }
+
+/// A URDF chain of `links` revolute links whose visuals all name one OBJ: a `k`×`k` grid of
+/// vertices, `2(k-1)²` triangles (k = 317: 199,712), with no visual origin or scale (issue 26's
+/// reproducer of a mesh named by many links: 25 links of k = 317 are 4.99 M triangles after
+/// instancing, just within the bundle's budget).
+pub fn urdf_shared_obj(links: usize, k: usize) -> Vec<(String, Vec<u8>)> {
+    use std::fmt::Write as _;
+    let mut obj = String::new();
+    for i in 0..k {
+        for j in 0..k {
+            let (x, y) = (i as f64 / k as f64 * 0.1, j as f64 / k as f64 * 0.1);
+            let _ = writeln!(obj, "v {x} {y} {}", 0.002 * ((i * 7 + j * 3) % 5) as f64);
+        }
+    }
+    for i in 0..k - 1 {
+        for j in 0..k - 1 {
+            let (a, b, c, d) = (i * k + j + 1, i * k + j + 2, (i + 1) * k + j + 1, (i + 1) * k + j + 2);
+            let _ = writeln!(obj, "f {a} {b} {d}\nf {a} {d} {c}");
+        }
+    }
+    let mut u = String::from("<?xml version=\"1.0\"?>\n<robot name=\"shared\">\n");
+    for i in 0..links {
+        let _ = writeln!(
+            u,
+            "  <link name=\"l{i}\">\n    <inertial><mass value=\"1\"/><inertia ixx=\"0.01\" ixy=\"0\" ixz=\"0\" iyy=\"0.01\" iyz=\"0\" izz=\"0.01\"/></inertial>\n    <visual><geometry><mesh filename=\"package://shared/meshes/plate.obj\"/></geometry></visual>\n  </link>"
+        );
+    }
+    for i in 1..links {
+        let _ = writeln!(
+            u,
+            "  <joint name=\"j{i}\" type=\"revolute\"><parent link=\"l{}\"/><child link=\"l{i}\"/><origin xyz=\"0 0 0.1\"/><axis xyz=\"0 0 1\"/><limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/></joint>",
+            i - 1
+        );
+    }
+    u.push_str("</robot>\n");
+    vec![("shared/urdf/shared.urdf".to_string(), u.into_bytes()), ("shared/meshes/plate.obj".to_string(), obj.into_bytes())]
+}

@@ -103,6 +103,17 @@ pub enum ConvertError {
     Vrml(#[from] front::vrml::VrmlError),
     #[error("VRML matching: {0}")]
     Matching(#[from] passes::geometry_match::MatchError),
+    /// The VRML scene would pass what the bundle's triangle budget leaves once the bodies'
+    /// meshes from STL files are counted.
+    #[error(
+        "{error} (VRML shapes count against the limit of {max} triangles per bundle, after instancing; \
+         {stl} of them are taken by the STL meshes)"
+    )]
+    VrmlTriangleBudget { error: front::vrml::VrmlError, stl: usize, max: usize },
+    /// The VRML shapes matched to the bodies (a shape placed under two matched groups counts
+    /// for both) pass the bundle's triangle budget.
+    #[error("the VRML shapes matched to the bodies bring the bundle to {total} triangles, over the limit of {max} triangles per bundle")]
+    MatchedTriangleBudget { total: usize, max: usize },
     #[error("mechatronic model: {0}")]
     Mechatronics(#[from] back::modelica::mechatronics::MechatronicsError),
     #[error(transparent)]
@@ -144,6 +155,11 @@ impl ConvertError {
                 Diagnostic { file: e.file.clone(), line: e.line, column: 0, message: e.kind.to_string() }
             }
             ConvertError::Vrml(e) => Diagnostic { file: e.file.clone(), line: e.line, column: e.column, message: e.kind.to_string() },
+            ConvertError::VrmlTriangleBudget { error: e, .. } => {
+                let text = self.to_string();
+                let message = text.strip_prefix(&e.to_string()).map_or(text.clone(), |rest| format!("{}{rest}", e.kind));
+                Diagnostic { file: e.file.clone(), line: e.line, column: e.column, message }
+            }
             ConvertError::Validation(e) => {
                 let loc = e.loc();
                 let text = e.to_string();
@@ -334,10 +350,21 @@ fn match_vrml(
     if mains.is_empty() {
         return Ok(None);
     }
+    // The bundle's triangle budget (after instancing, as for STL files): what the bodies' meshes
+    // read from STL files leave is what the scenes of all the main files may hold.
+    let max = front::mesh::MAX_BUNDLE_TRIANGLES;
+    let triangles = |model: &Model| model.bodies.iter().filter_map(|b| b.mesh.as_ref()).map(|m| m.triangles.len()).sum::<usize>();
+    let stl = triangles(model);
     let mut scene = front::vrml::Scene::default();
     for (i, main) in mains.iter().enumerate() {
         obs.progress(Stage::Vrml, i, mains.len() + 1);
-        let (s, w) = front::vrml::parse_in(bundle, main, &gz)?;
+        let left = max.saturating_sub(stl).saturating_sub(scene.triangle_count());
+        let (s, w) = front::vrml::parse_within(bundle, main, &gz, left).map_err(|error| match &error.kind {
+            front::vrml::VrmlErrorKind::TooManyTriangles { .. } | front::vrml::VrmlErrorKind::Expansion { unit: "triangles", .. } => {
+                ConvertError::VrmlTriangleBudget { error, stl, max }
+            }
+            _ => ConvertError::Vrml(error),
+        })?;
         warnings.extend(w);
         scene.append(s);
     }
@@ -348,6 +375,10 @@ fn match_vrml(
     };
     obs.progress(Stage::Vrml, mains.len(), mains.len() + 1);
     let (report, w) = passes::geometry_match::match_scene(model, &scene, &pins, &opts.matching)?;
+    let total = triangles(model);
+    if total > max {
+        return Err(ConvertError::MatchedTriangleBudget { total, max });
+    }
     warnings.extend(w);
     Ok(Some(report))
 }

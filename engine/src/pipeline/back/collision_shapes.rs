@@ -7,8 +7,9 @@
 //! otherwise; every other pair is checked unless the user allowed it. Edits are keyed by the
 //! bodies' Modelica names, so they survive CAD changes.
 
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, HashMap};
 use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Arc;
 
 use nalgebra::Isometry3;
 use serde::Serialize;
@@ -96,11 +97,13 @@ pub fn body_shapes(model: &Model, opts: &ShapeOptions, cache: Option<&dyn ShapeC
     // Bodies with the same mesh (a hand's identical fingers) share one computation.
     let mut unique: BTreeMap<ShapeKey, (usize, &Mesh)> = BTreeMap::new();
     let mut key_of: Vec<Option<ShapeKey>> = vec![None; model.bodies.len()];
+    // A mesh the bodies share (one `Arc`) is hashed once.
+    let mut hashed: HashMap<*const Mesh, ShapeKey> = HashMap::new();
     for (i, b) in model.bodies.iter().enumerate() {
         if let Some(m) = &b.mesh {
-            let k = ShapeKey::of(m, opts);
+            let k = *hashed.entry(Arc::as_ptr(m)).or_insert_with(|| ShapeKey::of(m, opts));
             key_of[i] = Some(k);
-            unique.entry(k).or_insert((i, m));
+            unique.entry(k).or_insert((i, &**m));
         }
     }
     let shape_of = |key: &ShapeKey, mesh: &Mesh| -> (BodyShape, bool) {

@@ -14,7 +14,8 @@
 //!   A frame belongs to exactly one owner (a body or a ground).
 //! - **Identity**: `node_id` strings are the CAD's stable identity and are unique per kind; names are
 //!   not. Derived facts (tree, loops, Modelica names) live in side tables built by passes, never here.
-//! - **Meshes**: [`Mesh`] vertices are in the owning body's `CS1` frame, in metres.
+//! - **Meshes**: [`Mesh`] vertices are in the owning body's `CS1` frame, in metres. A body holds
+//!   its mesh through an `Arc`: bodies with the same geometry in the same frame share one.
 //! - **Order**: vectors keep the source file's order; passes that need a stable order sort by
 //!   `node_id`, never by position.
 
@@ -25,6 +26,7 @@ pub use mass::MassProperties;
 
 use nalgebra::{Isometry3, Matrix3, Vector3};
 use serde::Serialize;
+use std::sync::Arc;
 
 macro_rules! handle {
     ($(#[$m:meta])* $name:ident) => {
@@ -183,8 +185,11 @@ pub struct Body {
     pub frames: Vec<FrameId>,
     /// `geometryFileName` as written in the XML (`None` when empty or missing).
     pub geometry_file: Option<String>,
-    /// Triangles in CS1, metres, once a geometry source has been read.
-    pub mesh: Option<Mesh>,
+    /// Triangles in CS1, metres, once a geometry source has been read. Shared: bodies whose
+    /// geometry is the same file in the same frame (a URDF mesh named by several links without
+    /// an origin or scale, an STL named by several bodies) hold one mesh, read once; a pass that
+    /// changes a body's mesh makes its own ([`Arc::make_mut`] or a new one).
+    pub mesh: Option<Arc<Mesh>>,
     /// Where the geometry came from (bundle paths), for the report.
     pub geometry_sources: Vec<String>,
     pub material: Option<Material>,

@@ -1,14 +1,19 @@
 //! Reads the STL file each body names (`geometryFileName`) from the bundle into the body's mesh.
+//! A file named by several bodies is read once and shared (all bodies are in the export's one
+//! length unit, so their meshes are the same).
 //!
 //! Meshes from SimMechanics Link are in the body's CS1 frame, in the export's length unit; the
 //! STL front end scales them to metres. A named file that is missing from the bundle is a warning
 //! (the model converts without that shape); two candidates for one name, or a corrupt STL, are
 //! errors.
 
+use std::collections::HashMap;
+use std::sync::Arc;
+
 use crate::pipeline::front::bundle::{Bundle, BundleError};
 use crate::pipeline::front::mesh::MAX_BUNDLE_TRIANGLES;
 use crate::pipeline::front::stl::{self, StlError};
-use crate::pipeline::ir::{self, Model, Warning};
+use crate::pipeline::ir::{self, Mesh, Model, Warning};
 
 #[derive(Debug, thiserror::Error)]
 pub enum GeometryError {
@@ -35,15 +40,23 @@ pub fn read_meshes(
     let mut warnings = Vec::new();
     let scale = model.length_scale;
     let total = model.bodies.iter().filter(|b| b.geometry_file.is_some()).count();
-    // Triangles of all the meshes read so far (`MAX_BUNDLE_TRIANGLES`).
+    // Triangles of the bodies' meshes so far, a shared file counted once per body
+    // (`MAX_BUNDLE_TRIANGLES`).
     let mut triangles = 0usize;
+    let mut read: HashMap<&str, Arc<Mesh>> = HashMap::new();
     for (i, body) in model.bodies.iter_mut().filter(|b| b.geometry_file.is_some()).enumerate() {
         done(i, total);
         let Some(name) = body.geometry_file.clone() else { continue };
         match bundle.resolve(xml_path, &name)? {
             Some(path) => {
-                let bytes = bundle.get(path).unwrap_or_default();
-                let mesh = stl::parse(path, bytes, scale)?;
+                let mesh = match read.get(path) {
+                    Some(m) => m.clone(),
+                    None => {
+                        let m = Arc::new(stl::parse(path, bundle.get(path).unwrap_or_default(), scale)?);
+                        read.insert(path, m.clone());
+                        m
+                    }
+                };
                 triangles = triangles.saturating_add(mesh.triangles.len());
                 if triangles > MAX_BUNDLE_TRIANGLES {
                     return Err(GeometryError::TriangleBudget {

@@ -422,7 +422,7 @@ pub fn match_scene(
                 });
             }
         }
-        body.mesh = Some(mesh);
+        body.mesh = Some(std::sync::Arc::new(mesh));
         report.bodies.insert(body.node_id.clone(), matches);
     }
     let mut warnings = Vec::new();

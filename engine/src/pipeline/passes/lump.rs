@@ -13,6 +13,7 @@
 //! are transformed into the representative's CS1, and the internal welds disappear.
 
 use std::collections::BTreeMap;
+use std::sync::Arc;
 
 use nalgebra::{Matrix3, Vector3};
 
@@ -160,7 +161,7 @@ fn combine(model: &Model, out: &mut Model, rep: BodyId, list: &[BodyId]) {
         let body = model.body(*b);
         frames.extend(body.frames.iter().filter(|f| *b == rep || (**f != body.cg)).copied());
         if let Some(m) = &body.mesh {
-            let mut m = m.clone();
+            let mut m = Mesh::clone(m);
             let to_rep = cs1.inverse() * model.frame(body.cs1).pose;
             m.transform(&to_rep);
             match &mut mesh {
@@ -178,7 +179,7 @@ fn combine(model: &Model, out: &mut Model, rep: BodyId, list: &[BodyId]) {
     target.mass = mass;
     target.inertia_cg = r_cg.transpose() * inertia_world * r_cg;
     target.frames = frames;
-    target.mesh = mesh;
+    target.mesh = mesh.map(Arc::new);
     target.geometry_sources = sources;
     target.volume = volume;
     target.surface_area = None;

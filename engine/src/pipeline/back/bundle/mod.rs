@@ -37,7 +37,10 @@ fn pack(compressor: &mut libdeflater::Compressor, bytes: &[u8]) -> Packed {
     let mut data = vec![0; compressor.deflate_compress_bound(bytes.len())];
     match compressor.deflate_compress(bytes, &mut data) {
         Ok(n) if n < bytes.len() => {
+            // The bound is above the input's size: keeping it would hold as much memory again
+            // as the files (issue 26, peak memory).
             data.truncate(n);
+            data.shrink_to_fit();
             Packed { crc, method: 8, data }
         }
         _ => Packed { crc, method: 0, data: bytes.to_vec() },
@@ -88,8 +91,9 @@ pub fn write_zip_observed(files: &[(String, Vec<u8>)], done: &mut dyn FnMut(usiz
         packed.iter().flatten().map(|p| p.data.len()).sum::<usize>() + files.iter().map(|(p, _)| 2 * p.len() + 76).sum::<usize>() + 22;
     let mut out = Vec::with_capacity(size);
     let mut central = Vec::new();
-    for ((path, bytes), p) in files.iter().zip(&packed) {
-        let p = p.as_ref().ok_or_else(|| std::io::Error::other("a zip entry was not deflated"))?;
+    // Each entry's deflated bytes are freed once copied.
+    for ((path, bytes), p) in files.iter().zip(packed) {
+        let p = p.ok_or_else(|| std::io::Error::other("a zip entry was not deflated"))?;
         let name = path.as_bytes();
         let flags: u16 = if path.is_ascii() { 0 } else { 1 << 11 };
         let needed: u16 = if p.method == 8 { 20 } else { 10 };
@@ -152,6 +156,17 @@ fn zip_crate(files: &[(String, Vec<u8>)], done: &mut dyn FnMut(usize, usize)) ->
 
 #[cfg(test)]
 mod tests {
+    /// A deflated entry keeps only its bytes, not the compressor's bound (about the input's size):
+    /// the entries of a package are all held until laid out (issue 26, peak memory).
+    #[test]
+    fn a_deflated_entry_holds_only_its_bytes() {
+        let mut c = libdeflater::Compressor::new(libdeflater::CompressionLvl::new(super::LEVEL).unwrap_or_default());
+        let text = b"0 0 0\n".repeat(100_000);
+        let p = super::pack(&mut c, &text);
+        assert_eq!(p.method, 8);
+        assert!(p.data.len() < text.len() / 100 && p.data.capacity() == p.data.len(), "{} of {}", p.data.len(), p.data.capacity());
+    }
+
     #[test]
     fn deterministic() {
         let files = vec![("P/a.mo".to_string(), b"model a end a;".to_vec())];

@@ -461,7 +461,8 @@ fn numbers_round_trip_and_names_are_escaped() {
     parse(&text);
     // Shapes: a body with a mesh gets a visual and a collision at the identity.
     let mut m = model();
-    m.bodies[0].mesh = Some(Mesh { vertices: vec![[0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]], triangles: vec![[0, 1, 2]] });
+    m.bodies[0].mesh =
+        Some(std::sync::Arc::new(Mesh { vertices: vec![[0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]], triangles: vec![[0, 1, 2]] }));
     let (v, _, _) = convert(&m);
     let mut layout = modelica::write(
         &m,

@@ -1,7 +1,9 @@
 //! Reads the meshes a URDF's links name from the bundle into each body's mesh (link frame =
-//! CS1, metres), and tessellates its box, cylinder and sphere primitives.
+//! CS1, metres), and tessellates its box, cylinder and sphere primitives. A mesh file is read
+//! once; links whose geometry is that one file with the same origin and scale share one mesh.
 
 use std::collections::HashMap;
+use std::sync::Arc;
 
 use nalgebra::Point3;
 
@@ -24,8 +26,8 @@ pub enum UrdfGeometryError {
 }
 
 /// At most this many triangles in all the bodies' meshes of one bundle, counted after
-/// instancing: a mesh file named by several links or visuals counts once per use (each body
-/// holds its own copy, placed in its link frame), checked before the copy is made.
+/// instancing: a mesh file named by several links or visuals counts once per use (whether the
+/// links share one placed mesh or each holds its own), checked before any is placed.
 pub use crate::pipeline::front::mesh::MAX_BUNDLE_TRIANGLES;
 
 /// Finds the bundle file a URDF mesh `filename` names, as seen from the URDF at `urdf_path`:
@@ -100,7 +102,10 @@ pub fn attach_meshes(
     done: &mut dyn FnMut(usize, usize),
 ) -> Result<Vec<Warning>, UrdfGeometryError> {
     let mut warnings = Vec::new();
-    let mut cache: HashMap<String, Mesh> = HashMap::new();
+    let mut cache: HashMap<String, Arc<Mesh>> = HashMap::new();
+    // Placed meshes of bodies whose geometry is one mesh file, by (file, scale, origin): links
+    // naming the same file the same way share the result.
+    let mut placed: HashMap<(String, [u64; 10]), Arc<Mesh>> = HashMap::new();
     // Triangles after instancing (the geometry each body will use: its visuals that can be read,
     // else its collisions), counted before any copy is made.
     let mut triangles = 0usize;
@@ -116,7 +121,7 @@ pub fn attach_meshes(
                         let Some(path) = locate(bundle, urdf_path, filename)? else { continue };
                         if !cache.contains_key(path) {
                             let read = mesh::read(path, bundle.get(path).unwrap_or_default())?;
-                            cache.insert(path.to_string(), read);
+                            cache.insert(path.to_string(), Arc::new(read));
                         }
                         (path, cache[path].triangles.len())
                     }
@@ -146,6 +151,24 @@ pub fn attach_meshes(
         done(k, total);
         k += 1;
         let body = &mut urdf.model.bodies[b];
+        if let Some((g, path, key)) = single_mesh(refs, bundle, urdf_path, &cache)? {
+            let shared = match placed.get(&(path.to_string(), key)) {
+                Some(m) => m.clone(),
+                None => {
+                    let mut m = Mesh::clone(&cache[path]);
+                    if let Shape::Mesh { scale, .. } = &g.shape {
+                        scale_mesh(&mut m, *scale);
+                    }
+                    m.transform(&g.origin);
+                    let m = Arc::new(m);
+                    placed.insert((path.to_string(), key), m.clone());
+                    m
+                }
+            };
+            body.mesh = Some(shared);
+            body.geometry_sources = vec![path.to_string()];
+            continue;
+        }
         let mut mesh = Mesh::default();
         let mut sources = Vec::new();
         let mut missing = Vec::new();
@@ -163,10 +186,10 @@ pub fn attach_meshes(
                         };
                         if !cache.contains_key(path) {
                             let read = mesh::read(path, bundle.get(path).unwrap_or_default())?;
-                            cache.insert(path.to_string(), read);
+                            cache.insert(path.to_string(), Arc::new(read));
                         }
                         sources.push(path.to_string());
-                        let mut m = cache[path].clone();
+                        let mut m = Mesh::clone(&cache[path]);
                         scale_mesh(&mut m, *scale);
                         m
                     }
@@ -198,12 +221,38 @@ pub fn attach_meshes(
             ));
         }
         if !mesh.triangles.is_empty() {
-            body.mesh = Some(mesh);
+            body.mesh = Some(Arc::new(mesh));
             sources.dedup();
             body.geometry_sources = sources;
         }
     }
     Ok(warnings)
+}
+
+/// A body's one mesh reference, its file's bundle path and the key of its scale and origin.
+type SingleMesh<'r, 'b> = (&'r GeometryRef, &'b str, [u64; 10]);
+
+/// When the geometry a body uses (its visuals, or its collisions when it has no visual) is one
+/// mesh file found in the bundle and read with triangles (in `cache`): that reference, the
+/// file's bundle path and the key of its scale and origin (their bits). Bodies with the same
+/// path and key can share one placed mesh; any other body is placed on its own.
+fn single_mesh<'r, 'b>(
+    refs: &'r [GeometryRef],
+    bundle: &'b Bundle,
+    urdf_path: &str,
+    cache: &HashMap<String, Arc<Mesh>>,
+) -> Result<Option<SingleMesh<'r, 'b>>, BundleError> {
+    let visuals = refs.iter().filter(|g| !g.collision).count();
+    let mut used = refs.iter().filter(|g| g.collision == (visuals == 0));
+    let (Some(g), None) = (used.next(), used.next()) else { return Ok(None) };
+    let Shape::Mesh { filename, scale } = &g.shape else { return Ok(None) };
+    let Some(path) = locate(bundle, urdf_path, filename)? else { return Ok(None) };
+    if cache.get(path).is_none_or(|m| m.triangles.is_empty()) {
+        return Ok(None);
+    }
+    let (t, q) = (g.origin.translation.vector, g.origin.rotation.coords);
+    let key = [scale[0], scale[1], scale[2], t.x, t.y, t.z, q.x, q.y, q.z, q.w].map(f64::to_bits);
+    Ok(Some((g, path, key)))
 }
 
 /// Scales vertices per axis; a mirroring scale (odd number of negative factors) reverses the

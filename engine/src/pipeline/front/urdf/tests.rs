@@ -327,6 +327,52 @@ fn a_mesh_named_by_many_links_counts_every_use_against_the_bundle_budget() {
     );
 }
 
+#[test]
+fn links_naming_one_mesh_the_same_way_share_it() {
+    // l0..l2: the plate alone (l2 with a collision too: its visual is what it uses); l3: with an
+    // origin; l4: scaled; l5: two visuals. Only the first three can share one placed mesh.
+    let plate = r#"<mesh filename="package://many/meshes/plate.obj"/>"#;
+    let links = [
+        format!("<visual><geometry>{plate}</geometry></visual>"),
+        format!("<visual><geometry>{plate}</geometry></visual>"),
+        format!("<visual><geometry>{plate}</geometry></visual><collision><geometry><box size=\"1 1 1\"/></geometry></collision>"),
+        format!("<visual><origin xyz=\"0 0 1\"/><geometry>{plate}</geometry></visual>"),
+        r#"<visual><geometry><mesh filename="package://many/meshes/plate.obj" scale="2 2 2"/></geometry></visual>"#.to_string(),
+        format!("<visual><geometry>{plate}</geometry></visual><visual><geometry>{plate}</geometry></visual>"),
+    ];
+    let mut u = String::from("<robot name=\"many\">\n");
+    for (i, g) in links.iter().enumerate() {
+        u.push_str(&format!("<link name=\"l{i}\">{INERTIAL}{g}</link>\n"));
+    }
+    for i in 1..links.len() {
+        u.push_str(&format!(
+            "<joint name=\"j{i}\" type=\"revolute\"><parent link=\"l{}\"/><child link=\"l{i}\"/><axis xyz=\"0 0 1\"/><limit lower=\"-1\" upper=\"1\" effort=\"1\" velocity=\"1\"/></joint>\n",
+            i - 1
+        ));
+    }
+    u.push_str("</robot>\n");
+    let b = crate::pipeline::front::bundle::Bundle::from_files(
+        "many",
+        [("many/urdf/many.urdf".to_string(), u.into_bytes()), ("many/meshes/plate.obj".to_string(), grid_obj(5))],
+    )
+    .expect("bundle");
+    let a = crate::pipeline::analyse(&b, &crate::pipeline::Options::default()).expect("converts");
+    let mesh = |name: &str| a.model.bodies.iter().find(|b| b.cad_name == name).and_then(|b| b.mesh.clone()).expect(name);
+    let (m0, m1, m2, m3, m4, m5) = (mesh("l0"), mesh("l1"), mesh("l2"), mesh("l3"), mesh("l4"), mesh("l5"));
+    assert!(std::sync::Arc::ptr_eq(&m0, &m1) && std::sync::Arc::ptr_eq(&m0, &m2), "one mesh for the three links");
+    for other in [&m3, &m4, &m5] {
+        assert!(!std::sync::Arc::ptr_eq(&m0, other));
+    }
+    // Each placed as before: the shared one as read, the others moved, scaled or doubled.
+    assert_eq!(m0.triangles.len(), 32);
+    assert_eq!((m3.triangles.len(), m4.triangles.len(), m5.triangles.len()), (32, 32, 64));
+    assert_eq!(m3.vertices[7], [m0.vertices[7][0], m0.vertices[7][1], m0.vertices[7][2] + 1.0]);
+    assert_eq!(m4.vertices[7], m0.vertices[7].map(|c| c * 2.0));
+    // Every use still counts: the six links hold 5 × 32 + 64 triangles.
+    let per_body: usize = a.model.bodies.iter().filter_map(|b| b.mesh.as_ref()).map(|m| m.triangles.len()).sum();
+    assert_eq!(per_body, 32 * 5 + 64);
+}
+
 /// `n` parallelogram four-bars on one base, each built 0.1 rad open and closed by a loop joint.
 fn four_bars(n: usize) -> String {
     let mut s = format!(r#"<robot name="r"><link name="g">{INERTIAL}</link>"#);

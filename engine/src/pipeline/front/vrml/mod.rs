@@ -324,6 +324,14 @@ pub fn parse_in(bundle: &Bundle, main: &str, gz: &Gunzip) -> Result<(Scene, Vec<
     parse_with(bundle, main, Limits::default(), gz)
 }
 
+/// [`parse_in`] holding at most `triangles` triangles in the scene (fewer than
+/// [`MAX_TRIANGLES`]: what is left of the bundle's triangle budget once the other meshes are
+/// counted). A USE, PROTO instance or Inline that would pass it is refused before it is
+/// expanded, as for the other limits.
+pub fn parse_within(bundle: &Bundle, main: &str, gz: &Gunzip, triangles: usize) -> Result<(Scene, Vec<Warning>), VrmlError> {
+    parse_with(bundle, main, Limits { triangles: triangles.min(MAX_TRIANGLES), ..Limits::default() }, gz)
+}
+
 /// [`parse_in`] with other limits.
 pub(crate) fn parse_with(bundle: &Bundle, main: &str, limits: Limits, gz: &Gunzip) -> Result<(Scene, Vec<Warning>), VrmlError> {
     let mut ld = parse::Loader::new(bundle, limits, gz);
