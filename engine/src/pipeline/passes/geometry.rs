@@ -1,12 +1,20 @@
-//! Reads the STL file each body names (`geometryFileName`) from the bundle into the body's mesh.
+//! Reads the mesh file each body names (`geometryFileName`, a second-generation part's
+//! `GeometryFile`) from the bundle into the body's mesh.
 //!
 //! Meshes from SimMechanics Link are in the body's CS1 frame, in the export's length unit; the
-//! STL front end scales them to metres. A named file that is missing from the bundle is a warning
-//! (the model converts without that shape); two candidates for one name, or a corrupt STL, are
-//! errors.
+//! STL front end scales them to metres. STEP files (second-generation exports) carry their own
+//! unit and are tessellated by `front::mesh::step`, in the part's frame; each file's content is
+//! meshed once per conversion however many bodies name it (keyed by SHA-256 of its bytes), and
+//! each face it could not mesh is a `step-face` warning. A named file that is missing from the
+//! bundle is a warning (the model converts without that shape); two candidates for one name, or a
+//! corrupt STL or STEP file, are errors.
+
+use std::collections::HashMap;
+use std::sync::Arc;
 
 use crate::pipeline::front::bundle::{Bundle, BundleError};
-use crate::pipeline::front::mesh::MAX_BUNDLE_TRIANGLES;
+use crate::pipeline::front::mesh::step::{StepCache, StepKey};
+use crate::pipeline::front::mesh::{self, MeshError, MAX_BUNDLE_TRIANGLES};
 use crate::pipeline::front::stl::{self, StlError};
 use crate::pipeline::ir::{self, Model, Warning};
 
@@ -16,6 +24,8 @@ pub enum GeometryError {
     Bundle(#[from] BundleError),
     #[error(transparent)]
     Stl(#[from] StlError),
+    #[error(transparent)]
+    Mesh(#[from] MeshError),
     #[error(
         "{file}: body \"{body}\" brings the bundle to {total} triangles, over the limit of {max} triangles per bundle \
          (every body naming a file counts its triangles again)"
@@ -24,12 +34,14 @@ pub enum GeometryError {
 }
 
 /// Fills `Body::mesh` for every body whose STL is in the bundle. `xml_path` is the XML's path in
-/// the bundle (references are resolved from its folder). `done(i, n)` is told after each of the
-/// `n` bodies that name a file.
+/// the bundle (references are resolved from its folder). STEP tessellations are taken from and
+/// put into `step_cache` when given. `done(i, n)` is told after each of the `n` bodies that name
+/// a file.
 pub fn read_meshes(
     model: &mut Model,
     bundle: &Bundle,
     xml_path: &str,
+    step_cache: Option<&dyn StepCache>,
     done: &mut dyn FnMut(usize, usize),
 ) -> Result<Vec<Warning>, GeometryError> {
     let mut warnings = Vec::new();
@@ -37,13 +49,40 @@ pub fn read_meshes(
     let total = model.bodies.iter().filter(|b| b.geometry_file.is_some()).count();
     // Triangles of all the meshes read so far (`MAX_BUNDLE_TRIANGLES`).
     let mut triangles = 0usize;
+    // STEP meshes by file content, for this conversion (the cache may be shared or absent).
+    let mut step_meshes: HashMap<StepKey, ir::Mesh> = HashMap::new();
     for (i, body) in model.bodies.iter_mut().filter(|b| b.geometry_file.is_some()).enumerate() {
         done(i, total);
         let Some(name) = body.geometry_file.clone() else { continue };
         match bundle.resolve(xml_path, &name)? {
             Some(path) => {
                 let bytes = bundle.get(path).unwrap_or_default();
-                let mesh = stl::parse(path, bytes, scale)?;
+                let mesh = if is_step(path) {
+                    let key = StepKey::of(bytes);
+                    match step_meshes.get(&key) {
+                        Some(m) => m.clone(),
+                        None => {
+                            let read = match step_cache.and_then(|c| c.get(&key)) {
+                                Some(r) => r,
+                                None => {
+                                    let r = Arc::new(mesh::step::read(path, bytes)?);
+                                    if let Some(c) = step_cache {
+                                        c.put(key, r.clone());
+                                    }
+                                    r
+                                }
+                            };
+                            for w in &read.warnings {
+                                warnings.push(Warning::new("step-face", w.clone(), body.loc.to_string()));
+                            }
+                            let m = mesh::finish(path, read.mesh.clone())?;
+                            step_meshes.insert(key, m.clone());
+                            m
+                        }
+                    }
+                } else {
+                    stl::parse(path, bytes, scale)?
+                };
                 triangles = triangles.saturating_add(mesh.triangles.len());
                 if triangles > MAX_BUNDLE_TRIANGLES {
                     return Err(GeometryError::TriangleBudget {
@@ -67,4 +106,10 @@ pub fn read_meshes(
         }
     }
     Ok(warnings)
+}
+
+/// A STEP file, by its extension.
+pub fn is_step(path: &str) -> bool {
+    let lower = path.to_ascii_lowercase();
+    lower.ends_with(".step") || lower.ends_with(".stp")
 }
