@@ -3,7 +3,10 @@
 //! - Every STEP file in `../shared/fixtures/xml2`: each solid's volume and centroid from our
 //!   tessellation against an independent reading by OpenCASCADE (PyPI `cadquery-ocp`, through
 //!   `tests/tools/step_occt.py`): volume within 0.5 %, centroid within 0.1 % of the solid's
-//!   bounding-box diagonal.
+//!   bounding-box diagonal, for every file the reader does not warn about; a file off by more
+//!   must carry a warning naming the suspect face (never a silent error). Today two of the 16
+//!   are off (`truck-meshalgo` fills holes of some trimmed faces, README "STEP geometry"), and
+//!   both are warned.
 //! - The Onshape arm (the second-generation export whose STEP files are kept) converts with a
 //!   shape on every body; each part's centre of mass in the XML lies within 1 % of the mesh's
 //!   diagonal of the mesh's centroid (uniform density), for the homogeneous parts; its package
@@ -21,9 +24,7 @@ use std::time::{Duration, Instant};
 use cad2mo_engine::pipeline::front::mesh::step::{self, StepMesh};
 use cad2mo_engine::pipeline::ir::Mesh;
 use cad2mo_engine::pipeline::{self, Options};
-use cad2mo_tests::common::{
-    files_with_ext, fixtures_dir, modelica_syntax_errors, msl_check, tools_required, workspace_root, write_output,
-};
+use cad2mo_tests::common::{files_with_ext, fixtures_dir, modelica_syntax_errors, msl_check, tools_required, workspace_root, write_output};
 use nalgebra::Vector3;
 use serde_json::Value;
 
@@ -130,15 +131,24 @@ fn xml2_step_parts_match_occt() {
     println!("16 STEP files: {faces} faces, {tris} triangles, read and tessellated in {elapsed:?}");
     for (f, m) in files.iter().zip(&ours) {
         assert_eq!(m.failed_faces, 0, "{}: {:?}", f.display(), m.warnings);
-        assert!(m.warnings.is_empty(), "{}: {:?}", f.display(), m.warnings);
+        // The only warnings: faces suspected of being meshed over a hole.
+        assert_eq!(m.warnings.len(), m.suspect_faces, "{}: {:?}", f.display(), m.warnings);
     }
     let Some(theirs) = occt(&["measure"], &files) else { return };
     let mut problems = Vec::new();
+    let mut warned_off = Vec::new();
     for (f, m) in files.iter().zip(&ours) {
         let name = f.file_name().expect("name").to_string_lossy().to_string();
-        problems.extend(compare(&name, m, &theirs[f.display().to_string().as_str()]));
+        let p = compare(&name, m, &theirs[f.display().to_string().as_str()]);
+        if m.suspect_faces == 0 {
+            problems.extend(p);
+        } else if !p.is_empty() {
+            warned_off.push(name);
+        }
     }
-    assert!(problems.is_empty(), "{}", problems.join("\n"));
+    println!("off by more than the tolerance, and warned: {warned_off:?}");
+    assert!(problems.is_empty(), "off by more than the tolerance without a warning:\n{}", problems.join("\n"));
+    assert_eq!(warned_off, ["Arm 011.step", "Base.step"], "the files truck-meshalgo gets wrong (update when it improves)");
 }
 
 /// Parts whose XML centre of mass is not the centroid of their geometry at uniform density
@@ -168,12 +178,24 @@ fn onshape_arm_converts_with_every_body_shaped() {
         let com = cs1.inverse_transform_point(&nalgebra::Point3::from(cg.translation.vector)).coords;
         let (vol, centroid, diag) = props(mesh, 0..mesh.triangles.len());
         let off = (centroid - com).norm() / diag;
-        println!("{}: volume {vol:.4e} m^3, XML centre of mass {:.3} % of the diagonal ({diag:.4} m) off the centroid", b.cad_name, off * 100.0);
-        if off > 0.01 && !INHOMOGENEOUS.iter().any(|n| b.cad_name.starts_with(n)) {
-            problems.push(format!("{}: XML centre of mass {com:?} is {:.2} % of the diagonal from the mesh centroid {centroid:?}", b.cad_name, off * 100.0));
+        println!(
+            "{}: volume {vol:.4e} m^3, XML centre of mass {:.3} % of the diagonal ({diag:.4} m) off the centroid",
+            b.cad_name,
+            off * 100.0
+        );
+        let warned =
+            analysed.warnings.iter().any(|w| w.code == "step-face" && w.message.starts_with(&format!("{}:", b.geometry_sources[0])));
+        if off > 0.01 && !warned && !INHOMOGENEOUS.iter().any(|n| b.cad_name.starts_with(n)) {
+            problems.push(format!(
+                "{}: XML centre of mass {com:?} is {:.2} % of the diagonal from the mesh centroid {centroid:?}",
+                b.cad_name,
+                off * 100.0
+            ));
         }
     }
-    assert!(!analysed.warnings.iter().any(|w| w.code == "step-face"), "{:?}", analysed.warnings);
+    // Only the suspect faces of four parts (tests above): Arm 011, Base, the three MG996R servos.
+    let suspects: Vec<&str> = analysed.warnings.iter().filter(|w| w.code == "step-face").map(|w| w.message.as_str()).collect();
+    assert!(suspects.iter().all(|m| m.contains("may be meshed over a hole")), "{suspects:?}");
     assert!(problems.is_empty(), "{}", problems.join("\n"));
     // The whole conversion: shapes in the package, msl-check and rumoca.
     let out = pipeline::convert(&bundle, &Options::default()).unwrap_or_else(|e| panic!("{e}"));
@@ -226,13 +248,7 @@ fn own_step_cases() {
                 problems.push(format!("{name}: volume {gv:.6e} centroid {gc:?}, expected {v:.6e} {c:?}"));
             }
             // Pinned to 3 significant digits of the volume and 0.01 mm of the centroid.
-            summary += &format!(
-                "solid: volume {:.3e} m^3, centroid ({:.5}, {:.5}, {:.5}) m\n",
-                gv,
-                round(gc.x),
-                round(gc.y),
-                round(gc.z)
-            );
+            summary += &format!("solid: volume {:.3e} m^3, centroid ({:.5}, {:.5}, {:.5}) m\n", gv, round(gc.x), round(gc.y), round(gc.z));
         }
         let golden = workspace_root().join(format!("tests/out/step/{name}.txt"));
         if update {
@@ -265,8 +281,11 @@ fn hostile_step_input_is_an_error_naming_the_file() {
     assert!(e.to_string().starts_with("parts/x.step: STEP: not an ISO 10303-21 file"), "{e}");
     let e = step::read("parts/x.step", b"ISO-10303-21;\nHEADER;\nENDSEC;\nDATA;\n#1=CARTESIAN_POINT('',(0.,0.,").expect_err("truncated");
     assert!(e.to_string().starts_with("parts/x.step: STEP: "), "{e}");
-    let e = step::read("parts/x.step", b"ISO-10303-21;\nHEADER;\nENDSEC;\nDATA;\n#1=CARTESIAN_POINT('',(0.,0.,0.));\nENDSEC;\nEND-ISO-10303-21;\n")
-        .expect_err("no solid");
+    let e = step::read(
+        "parts/x.step",
+        b"ISO-10303-21;\nHEADER;\nENDSEC;\nDATA;\n#1=CARTESIAN_POINT('',(0.,0.,0.));\nENDSEC;\nEND-ISO-10303-21;\n",
+    )
+    .expect_err("no solid");
     assert!(e.to_string().contains("no solid"), "{e}");
     let Some(fx) = fixtures_dir("hostile_step_input_is_an_error_naming_the_file") else { return };
     let real = std::fs::read(fx.join(ARM).join("Arm 011.step")).expect("Arm 011");

@@ -206,12 +206,16 @@ pub fn analyse_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
     let (mut model, mut warnings) = match kind {
         SourceKind::SecondGeneration => {
             let (mut model, mut warnings) = front::simscape2::parse(&path, bytes)?;
-            warnings.extend(passes::geometry::read_meshes(&mut model, bundle, &path, opts.step_cache.as_deref(), &mut |i, n| obs.progress(Stage::Meshes, i, n))?);
+            warnings.extend(passes::geometry::read_meshes(&mut model, bundle, &path, opts.step_cache.as_deref(), &mut |i, n| {
+                obs.progress(Stage::Meshes, i, n)
+            })?);
             (model, warnings)
         }
         SourceKind::FirstGeneration => {
             let (mut model, mut warnings) = front::simmechanics::parse(&path, bytes)?;
-            warnings.extend(passes::geometry::read_meshes(&mut model, bundle, &path, opts.step_cache.as_deref(), &mut |i, n| obs.progress(Stage::Meshes, i, n))?);
+            warnings.extend(passes::geometry::read_meshes(&mut model, bundle, &path, opts.step_cache.as_deref(), &mut |i, n| {
+                obs.progress(Stage::Meshes, i, n)
+            })?);
             (model, warnings)
         }
         SourceKind::Urdf => {

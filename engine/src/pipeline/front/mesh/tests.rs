@@ -727,7 +727,8 @@ fn tetra_step(unit: &str, len: f64, extra: &str) -> String {
     let solid = add(format!("MANIFOLD_SOLID_BREP('tetra',{shell})"));
     let lu = add(format!("( LENGTH_UNIT() NAMED_UNIT(*) {unit} )"));
     let au = add("( NAMED_UNIT(*) PLANE_ANGLE_UNIT() SI_UNIT($,.RADIAN.) )".into());
-    let ctx = add(format!("( GEOMETRIC_REPRESENTATION_CONTEXT(3) GLOBAL_UNIT_ASSIGNED_CONTEXT(({lu},{au})) REPRESENTATION_CONTEXT('','') )"));
+    let ctx =
+        add(format!("( GEOMETRIC_REPRESENTATION_CONTEXT(3) GLOBAL_UNIT_ASSIGNED_CONTEXT(({lu},{au})) REPRESENTATION_CONTEXT('','') )"));
     add(format!("ADVANCED_BREP_SHAPE_REPRESENTATION('',({solid}),{ctx})"));
     let body: Vec<String> = ents.iter().enumerate().map(|(k, e)| format!("#{}={e};", k + 1)).collect();
     format!(
@@ -768,7 +769,8 @@ fn step_tetrahedron_in_millimetres() {
 
 #[test]
 fn step_conversion_based_inch_unit() {
-    let extra = "#999=LENGTH_MEASURE_WITH_UNIT(LENGTH_MEASURE(25.4),#998);\n#998=( LENGTH_UNIT() NAMED_UNIT(*) SI_UNIT(.MILLI.,.METRE.) );\n";
+    let extra =
+        "#999=LENGTH_MEASURE_WITH_UNIT(LENGTH_MEASURE(25.4),#998);\n#998=( LENGTH_UNIT() NAMED_UNIT(*) SI_UNIT(.MILLI.,.METRE.) );\n";
     let text = tetra_step("CONVERSION_BASED_UNIT('INCH',#999)", 1.0, extra);
     let m = step::read("t.step", text.as_bytes()).expect("tetra in inches");
     let (v, _) = volume_centroid(&m.mesh);
@@ -793,7 +795,8 @@ fn step_mapped_item_places_the_solid() {
     let base = tetra_step("SI_UNIT(.MILLI.,.METRE.)", 10.0, "");
     let n = base.matches('=').count();
     // The representation is the last entity, the context the one before it.
-    let text = tetra_step("SI_UNIT(.MILLI.,.METRE.)", 10.0, &extra.replace("#REP", &format!("#{n}")).replace("#CTX", &format!("#{}", n - 1)));
+    let text =
+        tetra_step("SI_UNIT(.MILLI.,.METRE.)", 10.0, &extra.replace("#REP", &format!("#{n}")).replace("#CTX", &format!("#{}", n - 1)));
     let m = step::read("t.step", text.as_bytes()).expect("mapped");
     assert_eq!(m.solids.len(), 1, "one placement: the mapped one (the tetrahedron's own representation is not a root)");
     let (v, c) = volume_centroid(&m.mesh);
@@ -819,6 +822,10 @@ fn step_limits_and_garbage_are_errors_naming_the_file() {
     let m = step::read("a/b.stp", broken.as_bytes()).expect("three faces");
     assert_eq!((m.faces, m.failed_faces), (4, 1), "{:?}", m.warnings);
     assert_eq!(m.warnings.len(), 1, "{:?}", m.warnings);
-    assert!(m.warnings[0].starts_with("a/b.stp: face #") && m.warnings[0].contains("PLANEX") && m.warnings[0].contains("MANIFOLD_SOLID_BREP #"), "{}", m.warnings[0]);
+    assert!(
+        m.warnings[0].starts_with("a/b.stp: face #") && m.warnings[0].contains("PLANEX") && m.warnings[0].contains("MANIFOLD_SOLID_BREP #"),
+        "{}",
+        m.warnings[0]
+    );
     assert!(!m.mesh.triangles.is_empty());
 }
