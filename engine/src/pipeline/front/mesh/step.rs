@@ -16,10 +16,15 @@
 //!
 //! # Tessellation
 //! Each shell within a chordal deviation of [`CHORDAL_TOLERANCE`] (0.05 mm) or, for large parts,
-//! [`RELATIVE_TOLERANCE`] of the shell's bounding-box diagonal, whichever is larger. Every face the
-//! crates cannot mesh (a surface type they do not know, a trimming loop they reject) is a warning
-//! naming the face's entity (`#id`) and its solid, and the rest of the part is kept; a shell that
-//! cannot be converted at all is a warning naming it.
+//! [`RELATIVE_TOLERANCE`] of the shell's bounding-box diagonal, whichever is larger; but at most
+//! [`ANGULAR_TOLERANCE`] of the smallest radius of its cylinders, spheres and tori (not below
+//! 0.025 mm), so small round parts keep their volume (a 10 mm cylinder at 0.05 mm loses 0.7 %).
+//! Every face the crates cannot mesh (a surface type they do not know, a boundary loop they
+//! cannot read) is a warning naming the face's entity (`#id`) and its solid, and the rest of the
+//! part is kept; a shell that cannot be converted at all is a warning naming it. A face meshed
+//! over a hole it should have cut (`truck-meshalgo` does this on some trimmed B-spline and
+//! cylinder faces with inner loops) is caught by comparing the length of the face mesh's rim
+//! with its boundary loops' and warned about, naming the face ([`MIN_BOUNDARY_RATIO`]).
 //!
 //! # Bounds
 //! Checked before parsing: at most [`MAX_STEP_BYTES`] bytes and [`MAX_STEP_ENTITIES`] entity
@@ -54,11 +59,14 @@ pub const MAX_STEP_SECONDS: u64 = 60;
 pub const CHORDAL_TOLERANCE: f64 = 0.05e-3;
 /// Chordal deviation relative to a shell's bounding-box diagonal for large parts.
 pub const RELATIVE_TOLERANCE: f64 = 5e-4;
+/// Chordal deviation relative to the smallest radius of a shell's cylinders, spheres and tori
+/// (about 0.3 % of a full circle's area lost at most).
+pub const ANGULAR_TOLERANCE: f64 = 2e-3;
 /// A face whose mesh rim is shorter than this fraction of its B-rep boundary is warned about
 /// (see `boundary_ratio`; 0.29 to 0.66 on the faces found wrong against OpenCASCADE, 0.97 or more
 /// on faithful ones, except six small B-spline faces of the MG996R servo at 0.59 whose part's
 /// volume is right: warned too, a false alarm we prefer to a silent hole).
-const MIN_BOUNDARY_RATIO: f64 = 0.8;
+pub const MIN_BOUNDARY_RATIO: f64 = 0.8;
 /// Deepest chain of placements (assembly nesting) followed.
 const MAX_DEPTH: usize = 64;
 
@@ -247,7 +255,14 @@ fn mesh_shell(
     }
     let meshed = catch_unwind(AssertUnwindSafe(|| {
         let diag = bbox_diagonal(&compressed.vertices) * scale;
-        let tol = CHORDAL_TOLERANCE.max(RELATIVE_TOLERANCE * diag) / scale;
+        let mut tol = CHORDAL_TOLERANCE.max(RELATIVE_TOLERANCE * diag);
+        // Small round faces: a chord 0.05 mm off a 10 mm cylinder loses 0.7 % of its section;
+        // bound the deviation by the smallest radius too (not below half the default: finer
+        // costs seconds on parts with small holes).
+        if let Some(r) = file.min_radius(&face_ids) {
+            tol = tol.min((ANGULAR_TOLERANCE * r * scale).max(CHORDAL_TOLERANCE / 2.0));
+        }
+        let tol = tol / scale;
         compressed.robust_triangulation(tol)
     }));
     let poly = match meshed {
@@ -595,6 +610,25 @@ impl<'a> File<'a> {
     /// The surface entity of a face (`ADVANCED_FACE(name, bounds, surface, same_sense)`).
     fn face_surface(&self, face: u64) -> Option<u64> {
         params(self.face_record(face)?).get(2).and_then(as_ref)
+    }
+
+    /// The smallest radius (file units) of the cylinders, spheres and tori the faces lie on.
+    fn min_radius(&self, faces: &[u64]) -> Option<f64> {
+        let mut min: Option<f64> = None;
+        for f in faces {
+            let Some(s) = self.face_surface(*f) else { continue };
+            let Some(rec) = self.by_id.get(&s).and_then(|e| records(e).first()) else { continue };
+            let p = params(rec);
+            let r = match rec.name.as_str() {
+                "CYLINDRICAL_SURFACE" | "SPHERICAL_SURFACE" => p.get(2).and_then(as_real),
+                "TOROIDAL_SURFACE" => p.get(3).and_then(as_real),
+                _ => None,
+            };
+            if let Some(r) = r.filter(|r| r.is_finite() && *r > 0.0) {
+                min = Some(min.map_or(r, |m: f64| m.min(r)));
+            }
+        }
+        min
     }
 
     /// How many boundary loops a face names.
