@@ -203,6 +203,10 @@ fn onshape_arm_converts_with_every_body_shaped() {
     assert!(stl >= 16, "{stl} STL shapes in the package");
     let pkg = tempfile::tempdir().expect("tempdir");
     write_output(&out, pkg.path());
+    // For screenshots and the checks by hand: a copy where asked.
+    if let Some(keep) = std::env::var_os("CAD2MO_STEP_KEEP") {
+        write_output(&out, Path::new(&keep));
+    }
     if let Some(Err(msg)) = msl_check(pkg.path()) {
         panic!("msl-check: {msg}");
     }
