@@ -425,7 +425,7 @@ fn dispatch_by_extension() {
     assert!(e.to_string().starts_with("a/b.stl:5: expected a number"), "{e}");
     for name in ["x.ply", "x", "x.", "dir.obj/x.3ds"] {
         let e = read(name, b"").expect_err("unsupported");
-        assert!(e.to_string().contains("supported are .stl, .obj and .dae"), "{e}");
+        assert!(e.to_string().contains("supported are .stl, .obj, .dae (COLLADA) and .step/.stp"), "{e}");
     }
     assert!(read("x.ply", b"").expect_err("").to_string().contains("\".ply\""));
 }
