@@ -216,6 +216,9 @@ fn onshape_arm_converts_with_every_body_shaped() {
     }
 }
 
+/// A solid's volume (m^3) and centroid (m).
+type Expected = (f64, [f64; 3]);
+
 /// Our own STEP cases, written by OCCT: name, solids, and (volume m^3, centroid m) per solid.
 #[test]
 fn own_step_cases() {
@@ -224,7 +227,7 @@ fn own_step_cases() {
         return;
     }
     let pi = std::f64::consts::PI;
-    let cases: [(&str, Vec<(f64, [f64; 3])>); 5] = [
+    let cases: [(&str, Vec<Expected>); 5] = [
         ("box", vec![(8e-6, [0.025, 0.016, 0.012])]),
         ("cylinder", vec![(pi * 0.01f64.powi(2) * 0.03, [0.0, 0.0, 0.015])]),
         ("torus", vec![(2.0 * pi * pi * 0.03 * 0.008f64.powi(2), [0.0, 0.0, 0.0])]),
