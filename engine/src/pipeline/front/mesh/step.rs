@@ -128,7 +128,7 @@ pub fn read_with(path: &str, bytes: &[u8], budget: Duration) -> Result<StepMesh,
             format!("{} entity instances, over the limit of {MAX_STEP_ENTITIES} per STEP file", data.entities.len()),
         ));
     }
-    let file = File::new(&data.entities);
+    let file = Entities::new(&data.entities);
     let mut table = Table::default();
     let mut warnings = Vec::new();
     let mut skipped = 0usize;
@@ -192,7 +192,7 @@ pub fn read_with(path: &str, bytes: &[u8], budget: Duration) -> Result<StepMesh,
 #[allow(clippy::too_many_arguments)]
 fn mesh_shell(
     table: &Table,
-    file: &File,
+    file: &Entities,
     path: &str,
     solid: &Solid,
     shell: u64,
@@ -420,7 +420,7 @@ struct Solid {
 }
 
 /// The entity records by id, and the relations between representations.
-struct File<'a> {
+struct Entities<'a> {
     by_id: HashMap<u64, &'a EntityInstance>,
     /// Representation -> (parent representation, child-to-parent placement in metres).
     parents: HashMap<u64, Vec<(u64, Edge)>>,
@@ -484,7 +484,7 @@ fn is_representation(name: &str) -> bool {
     name.ends_with("REPRESENTATION") && !name.ends_with("PROPERTY_DEFINITION_REPRESENTATION") && name != "DEFINITIONAL_REPRESENTATION"
 }
 
-impl<'a> File<'a> {
+impl<'a> Entities<'a> {
     fn new(entities: &'a [EntityInstance]) -> Self {
         let by_id: HashMap<u64, &EntityInstance> = entities.iter().map(|e| (instance_id(e), e)).collect();
         let mut parents: HashMap<u64, Vec<(u64, Edge)>> = HashMap::new();
@@ -540,7 +540,7 @@ impl<'a> File<'a> {
                 }
             }
         }
-        File { by_id, parents }
+        Entities { by_id, parents }
     }
 
     fn record(&self, id: u64, name: &str) -> Option<&'a Record> {
