@@ -423,6 +423,70 @@ def urdf_tree_seeds():
                                                 1, 201, 0, 0, 64, 0, 16, 64, 16, 8, 0, 1]))
 
 
+def step_tetrahedron(unit="SI_UNIT(.MILLI.,.METRE.)", mm=10.0):
+    """A hand-written AP214 B-rep tetrahedron (planes, lines, one closed shell), `mm` long edges
+    along the axes, in the given length unit."""
+    ents = []
+
+    def add(text):
+        ents.append(text)
+        return f"#{len(ents)}"
+
+    pts = [(0, 0, 0), (mm, 0, 0), (0, mm, 0), (0, 0, mm)]
+    cp = [add(f"CARTESIAN_POINT('',({x:.1f},{y:.1f},{z:.1f}))") for x, y, z in pts]
+    vp = [add(f"VERTEX_POINT('',{c})") for c in cp]
+    edges = {}
+    for i in range(4):
+        for j in range(i + 1, 4):
+            d = [b - a for a, b in zip(pts[i], pts[j])]
+            n = sum(x * x for x in d) ** 0.5
+            dr = add("DIRECTION('',({:.6f},{:.6f},{:.6f}))".format(*(x / n for x in d)))
+            line = add(f"LINE('',{cp[i]},{add(f'VECTOR({chr(39)}{chr(39)},{dr},{n:.6f})')})")
+            edges[(i, j)] = add(f"EDGE_CURVE('',{vp[i]},{vp[j]},{line},.T.)")
+    faces = []
+    for a, b, c in [(0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3)]:
+        oes = []
+        for i, j in [(a, b), (b, c), (c, a)]:
+            e = edges[(min(i, j), max(i, j))]
+            oes.append(add(f"ORIENTED_EDGE('',*,*,{e},{'.T.' if i < j else '.F.'})"))
+        loop = add(f"EDGE_LOOP('',({','.join(oes)}))")
+        bound = add(f"FACE_OUTER_BOUND('',{loop},.T.)")
+        u = [q - p for p, q in zip(pts[a], pts[b])]
+        v = [q - p for p, q in zip(pts[a], pts[c])]
+        nrm = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]]
+        nn = sum(x * x for x in nrm) ** 0.5
+        un = sum(x * x for x in u) ** 0.5
+        ndir = add("DIRECTION('',({:.6f},{:.6f},{:.6f}))".format(*(x / nn for x in nrm)))
+        rdir = add("DIRECTION('',({:.6f},{:.6f},{:.6f}))".format(*(x / un for x in u)))
+        ax = add(f"AXIS2_PLACEMENT_3D('',{cp[a]},{ndir},{rdir})")
+        plane = add(f"PLANE('',{ax})")
+        faces.append(add(f"ADVANCED_FACE('',({bound}),{plane},.T.)"))
+    shell = add(f"CLOSED_SHELL('',({','.join(faces)}))")
+    solid = add(f"MANIFOLD_SOLID_BREP('tetra',{shell})")
+    lu = add(f"( LENGTH_UNIT() NAMED_UNIT(*) {unit} )")
+    au = add("( NAMED_UNIT(*) PLANE_ANGLE_UNIT() SI_UNIT($,.RADIAN.) )")
+    su = add("( NAMED_UNIT(*) SI_UNIT($,.STERADIAN.) SOLID_ANGLE_UNIT() )")
+    ctx = add(f"( GEOMETRIC_REPRESENTATION_CONTEXT(3) GLOBAL_UNIT_ASSIGNED_CONTEXT(({lu},{au},{su})) REPRESENTATION_CONTEXT('','') )")
+    add(f"ADVANCED_BREP_SHAPE_REPRESENTATION('',({solid}),{ctx})")
+    body = "\n".join(f"#{k + 1}={e};" for k, e in enumerate(ents))
+    return ("ISO-10303-21;\nHEADER;\nFILE_DESCRIPTION(('cad2mo fuzz seed'),'2;1');\n"
+            "FILE_NAME('tetra','',(''),(''),'','','');\nFILE_SCHEMA(('AUTOMOTIVE_DESIGN { 1 0 10303 214 1 1 1 1 }'));\nENDSEC;\n"
+            f"DATA;\n{body}\nENDSEC;\nEND-ISO-10303-21;\n").encode()
+
+
+def step_seeds():
+    """STEP files of our own for the `step` target (the real Onshape parts in ../shared join at
+    run time): a tetrahedron in mm and in inches, one cut short, one whose inch unit refers to
+    itself."""
+    write("step", "tetra_mm.step", step_tetrahedron())
+    inch = step_tetrahedron(unit="CONVERSION_BASED_UNIT('INCH',#999)", mm=1.0).replace(
+        b"\nENDSEC;\nEND", b"\n#999=LENGTH_MEASURE_WITH_UNIT(LENGTH_MEASURE(25.4),#998);\n"
+        b"#998=( LENGTH_UNIT() NAMED_UNIT(*) SI_UNIT(.MILLI.,.METRE.) );\nENDSEC;\nEND")
+    write("step", "tetra_inch.step", inch)
+    write("step", "truncated.step", step_tetrahedron()[:900])
+    write("step", "unit_cycle.step", inch.replace(b"LENGTH_MEASURE(25.4),#998", b"LENGTH_MEASURE(25.4),#999"))
+
+
 def main():
     if os.path.isdir(SEEDS):
         shutil.rmtree(SEEDS)
@@ -438,6 +502,7 @@ def main():
     live_seeds()
     dae_seeds()
     urdf_tree_seeds()
+    step_seeds()
     for t in sorted(os.listdir(SEEDS)):
         files = os.listdir(os.path.join(SEEDS, t))
         size = sum(os.path.getsize(os.path.join(SEEDS, t, f)) for f in files)

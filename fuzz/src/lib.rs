@@ -13,7 +13,7 @@ use cad2mo_engine::pipeline::{
 pub type Target = (&'static str, fn(&[u8]));
 
 /// The targets by name, as `fuzz/regressions/<name>/` and `cargo fuzz run <name>` call them.
-pub const TARGETS: [Target; 10] = [
+pub const TARGETS: [Target; 11] = [
     ("xml", xml),
     ("stl", stl),
     ("vrml", vrml),
@@ -24,6 +24,7 @@ pub const TARGETS: [Target; 10] = [
     ("urdf", urdf),
     ("dae", dae),
     ("urdf_tree", urdf_tree),
+    ("step", step),
 ];
 
 /// A URDF -> `front::urdf::parse`; when it parses, the whole conversion of a bundle holding just
@@ -64,6 +65,26 @@ pub fn dae(data: &[u8]) {
         Err(e) => {
             let _ = e.to_string();
         }
+    }
+}
+
+/// STEP bytes -> `front::mesh::step::read`; when it reads, the `ir::Mesh` invariants hold and
+/// every solid's triangle range lies in the mesh. The reader contains panics of the third-party
+/// B-rep crates it calls (`catch_unwind`, reported as errors naming the file), so this target
+/// replaces libFuzzer's abort-on-panic hook with a silent one: a contained panic is the reader
+/// working as documented, and a panic that escapes `read` still fails the run (libfuzzer-sys
+/// aborts on any panic leaving the target).
+pub fn step(data: &[u8]) {
+    static HOOK: std::sync::Once = std::sync::Once::new();
+    HOOK.call_once(|| std::panic::set_hook(Box::new(|_| {})));
+    match mesh::step::read("fuzz.step", data) {
+        Ok(m) => {
+            let n = m.mesh.vertices.len();
+            assert!(m.mesh.vertices.iter().flatten().all(|x| x.is_finite()), "a vertex is not finite");
+            assert!(m.mesh.triangles.iter().flatten().all(|&i| (i as usize) < n), "an index is out of range");
+            assert!(m.solids.iter().all(|r| r.start <= r.end && r.end <= m.mesh.triangles.len()), "a solid's range is out of the mesh");
+        }
+        Err(e) => assert!(e.to_string().starts_with("fuzz.step: "), "an error not naming the file: {e}"),
     }
 }
 

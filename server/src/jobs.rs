@@ -135,6 +135,8 @@ struct Ctx {
     claimer: Claimer,
     /// Collision shapes by mesh content, shared by every job of the process.
     shapes: Arc<MemoryShapeCache>,
+    /// STEP parts' tessellations by file content, shared by every job of the process.
+    steps: Arc<cad2mo_engine::pipeline::front::mesh::step::MemoryStepCache>,
     /// A failure's stored document.
     describe: DescribeFailure,
 }
@@ -256,7 +258,8 @@ impl Jobs {
         tracing::info!(instance = %instance, lease_secs = lease.as_secs_f64(), "job queue instance");
         let claimer = Claimer { instance: instance.clone(), lease_secs: lease.as_secs_f64().max(0.1) };
         let shapes = Arc::new(MemoryShapeCache::new(shape_cache_bytes));
-        let ctx = Ctx { store: store.clone(), blobs, board: board.clone(), live, claimer, shapes: shapes.clone(), describe };
+        let steps = Arc::new(cad2mo_engine::pipeline::front::mesh::step::MemoryStepCache::default());
+        let ctx = Ctx { store: store.clone(), blobs, board: board.clone(), live, claimer, shapes: shapes.clone(), steps, describe };
         let (signal, halted) = watch::channel(false);
         let dispatcher = tokio::spawn(dispatch(ctx, workers.max(1), rx, halted).instrument(tracing::info_span!("jobs")));
         let halt = Arc::new(Halt { signal, dispatcher: Mutex::new(Some(dispatcher)) });
@@ -558,7 +561,9 @@ async fn convert(ctx: &Ctx, job: &ClaimedJob) -> Result<Stored, JobError> {
     let collision_edits =
         crate::store::collision::edits(&ctx.store, &job.model_id).await?.into_iter().map(|(a, b, x)| ((a, b), x)).collect();
     let shape_cache: Arc<dyn cad2mo_engine::collision::ShapeCache> = ctx.shapes.clone();
-    let context = export::Context { name_hints: hints, live, collision_edits, shape_cache: Some(shape_cache) };
+    let step_cache: Arc<dyn cad2mo_engine::pipeline::front::mesh::step::StepCache> = ctx.steps.clone();
+    let context =
+        export::Context { name_hints: hints, live, collision_edits, shape_cache: Some(shape_cache), step_cache: Some(step_cache) };
     let blobs = ctx.blobs.clone();
     let board = ctx.board.clone();
     let job_id = job.id.clone();

@@ -62,6 +62,10 @@ pub struct Options {
     /// process for all its jobs; a single conversion (the CLI) has nothing to reuse. Whether a
     /// shape came from the cache never changes the output.
     pub shape_cache: Option<std::sync::Arc<dyn crate::collision::ShapeCache>>,
+    /// Where STEP parts' tessellations are looked up by file content before being meshed, and
+    /// kept after (`None`: each conversion meshes its STEP files, each distinct file once). Owned
+    /// by the caller like `shape_cache`; never changes the output.
+    pub step_cache: Option<std::sync::Arc<dyn front::mesh::step::StepCache>>,
 }
 
 impl Default for Options {
@@ -77,6 +81,7 @@ impl Default for Options {
             live: None,
             collision_edits: Default::default(),
             shape_cache: None,
+            step_cache: None,
         }
     }
 }
@@ -154,6 +159,9 @@ impl ConvertError {
             ConvertError::Geometry(GeometryError::Stl(e)) => {
                 Diagnostic { file: e.file.clone(), line: e.line, column: 0, message: e.kind.to_string() }
             }
+            ConvertError::Geometry(GeometryError::Mesh(e)) => {
+                Diagnostic { file: e.file.clone(), line: e.line, column: 0, message: e.kind.to_string() }
+            }
             ConvertError::Vrml(e) => Diagnostic { file: e.file.clone(), line: e.line, column: e.column, message: e.kind.to_string() },
             ConvertError::VrmlTriangleBudget { error: e, .. } => {
                 let text = self.to_string();
@@ -214,12 +222,16 @@ pub fn analyse_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
     let (mut model, mut warnings) = match kind {
         SourceKind::SecondGeneration => {
             let (mut model, mut warnings) = front::simscape2::parse(&path, bytes)?;
-            warnings.extend(passes::geometry::read_meshes(&mut model, bundle, &path, &mut |i, n| obs.progress(Stage::Meshes, i, n))?);
+            warnings.extend(passes::geometry::read_meshes(&mut model, bundle, &path, opts.step_cache.as_deref(), &mut |i, n| {
+                obs.progress(Stage::Meshes, i, n)
+            })?);
             (model, warnings)
         }
         SourceKind::FirstGeneration => {
             let (mut model, mut warnings) = front::simmechanics::parse(&path, bytes)?;
-            warnings.extend(passes::geometry::read_meshes(&mut model, bundle, &path, &mut |i, n| obs.progress(Stage::Meshes, i, n))?);
+            warnings.extend(passes::geometry::read_meshes(&mut model, bundle, &path, opts.step_cache.as_deref(), &mut |i, n| {
+                obs.progress(Stage::Meshes, i, n)
+            })?);
             (model, warnings)
         }
         SourceKind::Urdf => {

@@ -166,6 +166,7 @@ pub fn build_package(
     opts.live = context.live.clone();
     opts.collision_edits = context.collision_edits.clone();
     opts.shape_cache = context.shape_cache.clone();
+    opts.step_cache = context.step_cache.clone();
     let mut obs = BuildObserver {
         drives,
         motions,
@@ -209,6 +210,8 @@ pub struct Context {
     pub collision_edits: pipeline::back::collision_shapes::AllowedEdits,
     /// The process's collision shapes by mesh content (see [`pipeline::Options::shape_cache`]).
     pub shape_cache: Option<std::sync::Arc<dyn cad2mo_engine::collision::ShapeCache>>,
+    /// The process's STEP tessellations by file content (see [`pipeline::Options::step_cache`]).
+    pub step_cache: Option<std::sync::Arc<dyn cad2mo_engine::pipeline::front::mesh::step::StepCache>>,
 }
 
 /// The model's motions and joint limits, for the package's `Motions` and sizing files.

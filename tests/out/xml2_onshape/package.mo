@@ -27,12 +27,11 @@ package slide_arm "Modelica model of CAD assembly slide arm, converted by cad2mo
 </table>
 <h4>Warnings</h4>
 <ul>
-<li><code>geometry-step</code> slide_arm.xml:150:7: Part &quot;Base&quot;: part &quot;Base&quot; names STEP geometry &quot;Base.step&quot;, which cannot be read without a CAD kernel; its bodies convert without a shape (export STL next to the XML, e.g. with the same name and .stl, and name it in the XML)</li>
-<li><code>geometry-step</code> slide_arm.xml:162:7: Part &quot;Link&quot;: part &quot;Link&quot; names STEP geometry &quot;Link.step&quot;, which cannot be read without a CAD kernel; its bodies convert without a shape (export STL next to the XML, e.g. with the same name and .stl, and name it in the XML)</li>
-<li><code>geometry-step</code> slide_arm.xml:174:7: Part &quot;Rail&quot;: part &quot;Rail&quot; names STEP geometry &quot;Rail.step&quot;, which cannot be read without a CAD kernel; its bodies convert without a shape (export STL next to the XML, e.g. with the same name and .stl, and name it in the XML)</li>
-<li><code>geometry-step</code> slide_arm.xml:186:7: Part &quot;Carriage&quot;: part &quot;Carriage&quot; names STEP geometry &quot;Carriage.step&quot;, which cannot be read without a CAD kernel; its bodies convert without a shape (export STL next to the XML, e.g. with the same name and .stl, and name it in the XML)</li>
-<li><code>geometry-step</code> slide_arm.xml:198:7: Part &quot;Tool (grün)&quot;: part &quot;Tool (grün)&quot; names STEP geometry &quot;Tool (grün).step&quot;, which cannot be read without a CAD kernel; its bodies convert without a shape (export STL next to the XML, e.g. with the same name and .stl, and name it in the XML)</li>
-<li><code>no-geometry</code> slide_arm.xml: 5 bodies have no geometry: &quot;Base &lt;1&gt;&quot; (MBase1), &quot;Link Ä &lt;1&gt;&quot; (MLink1), &quot;Rail &lt;1&gt;&quot; (MSub1|MRail1), &quot;Carriage &lt;1&gt;&quot; (MSub1|MCar1), &quot;Tool (grün) &lt;1&gt;&quot; (MTool1)</li>
+<li><code>geometry-missing</code> slide_arm.xml:18:10: body &quot;Base &lt;1&gt;&quot; names geometry file &quot;Base.step&quot;, which is not in the bundle (looked up case-insensitively and in sub-folders); the body converts without a shape</li>
+<li><code>geometry-missing</code> slide_arm.xml:24:10: body &quot;Link Ä &lt;1&gt;&quot; names geometry file &quot;Link.step&quot;, which is not in the bundle (looked up case-insensitively and in sub-folders); the body converts without a shape</li>
+<li><code>geometry-missing</code> slide_arm.xml:35:13: body &quot;Rail &lt;1&gt;&quot; names geometry file &quot;Rail.step&quot;, which is not in the bundle (looked up case-insensitively and in sub-folders); the body converts without a shape</li>
+<li><code>geometry-missing</code> slide_arm.xml:41:13: body &quot;Carriage &lt;1&gt;&quot; names geometry file &quot;Carriage.step&quot;, which is not in the bundle (looked up case-insensitively and in sub-folders); the body converts without a shape</li>
+<li><code>geometry-missing</code> slide_arm.xml:48:10: body &quot;Tool (grün) &lt;1&gt;&quot; names geometry file &quot;Tool (grün).step&quot;, which is not in the bundle (looked up case-insensitively and in sub-folders); the body converts without a shape</li>
 <li><code>no-collision-shape</code> collision shapes: 5 bodies with mass but no mesh have no collision shape and cannot collide: Base_1, Link_1, Rail_1, Carriage_1, Tool_gr_n_1</li>
 </ul>
 <h4>Regenerating</h4>

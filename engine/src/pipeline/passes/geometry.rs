@@ -1,17 +1,21 @@
-//! Reads the STL file each body names (`geometryFileName`) from the bundle into the body's mesh.
-//! A file named by several bodies is read once and shared (all bodies are in the export's one
-//! length unit, so their meshes are the same).
+//! Reads the mesh file each body names (`geometryFileName`, a second-generation part's
+//! `GeometryFile`) from the bundle into the body's mesh. A file named by several bodies is read
+//! once and shared (all bodies are in the export's one length unit, so their meshes are the same).
 //!
 //! Meshes from SimMechanics Link are in the body's CS1 frame, in the export's length unit; the
-//! STL front end scales them to metres. A named file that is missing from the bundle is a warning
-//! (the model converts without that shape); two candidates for one name, or a corrupt STL, are
-//! errors.
+//! STL front end scales them to metres. STEP files (second-generation exports) carry their own
+//! unit and are tessellated by `front::mesh::step`, in the part's frame; each file's content is
+//! meshed once per conversion however many bodies name it (keyed by SHA-256 of its bytes), and
+//! each face it could not mesh is a `step-face` warning. A named file that is missing from the
+//! bundle is a warning (the model converts without that shape); two candidates for one name, or a
+//! corrupt STL or STEP file, are errors.
 
 use std::collections::HashMap;
 use std::sync::Arc;
 
 use crate::pipeline::front::bundle::{Bundle, BundleError};
-use crate::pipeline::front::mesh::MAX_BUNDLE_TRIANGLES;
+use crate::pipeline::front::mesh::step::{StepCache, StepKey};
+use crate::pipeline::front::mesh::{self, MeshError, MAX_BUNDLE_TRIANGLES};
 use crate::pipeline::front::stl::{self, StlError};
 use crate::pipeline::ir::{self, Mesh, Model, Warning};
 
@@ -21,6 +25,8 @@ pub enum GeometryError {
     Bundle(#[from] BundleError),
     #[error(transparent)]
     Stl(#[from] StlError),
+    #[error(transparent)]
+    Mesh(#[from] MeshError),
     #[error(
         "{file}: body \"{body}\" brings the bundle to {total} triangles, over the limit of {max} triangles per bundle \
          (every body naming a file counts its triangles again)"
@@ -29,12 +35,14 @@ pub enum GeometryError {
 }
 
 /// Fills `Body::mesh` for every body whose STL is in the bundle. `xml_path` is the XML's path in
-/// the bundle (references are resolved from its folder). `done(i, n)` is told after each of the
-/// `n` bodies that name a file.
+/// the bundle (references are resolved from its folder). STEP tessellations are taken from and
+/// put into `step_cache` when given. `done(i, n)` is told after each of the `n` bodies that name
+/// a file.
 pub fn read_meshes(
     model: &mut Model,
     bundle: &Bundle,
     xml_path: &str,
+    step_cache: Option<&dyn StepCache>,
     done: &mut dyn FnMut(usize, usize),
 ) -> Result<Vec<Warning>, GeometryError> {
     let mut warnings = Vec::new();
@@ -44,17 +52,44 @@ pub fn read_meshes(
     // (`MAX_BUNDLE_TRIANGLES`).
     let mut triangles = 0usize;
     let mut read: HashMap<&str, Arc<Mesh>> = HashMap::new();
+    // STEP meshes by file content, for this conversion (the cache may be shared or absent).
+    let mut step_meshes: HashMap<StepKey, Arc<Mesh>> = HashMap::new();
+    let mut fresh = mesh_step_files(model, bundle, xml_path, step_cache);
     for (i, body) in model.bodies.iter_mut().filter(|b| b.geometry_file.is_some()).enumerate() {
         done(i, total);
         let Some(name) = body.geometry_file.clone() else { continue };
         match bundle.resolve(xml_path, &name)? {
             Some(path) => {
-                let mesh = match read.get(path) {
-                    Some(m) => m.clone(),
-                    None => {
-                        let m = Arc::new(stl::parse(path, bundle.get(path).unwrap_or_default(), scale)?);
-                        read.insert(path, m.clone());
-                        m
+                let bytes = bundle.get(path).unwrap_or_default();
+                let mesh = if is_step(path) {
+                    let key = StepKey::of(bytes);
+                    match step_meshes.get(&key) {
+                        Some(m) => m.clone(),
+                        None => {
+                            let tess = match (fresh.remove(&key), step_cache.and_then(|c| c.get(&key))) {
+                                (Some(r), _) => Arc::new(r?),
+                                (None, Some(r)) => r,
+                                (None, None) => Arc::new(mesh::step::read(path, bytes)?),
+                            };
+                            if let Some(c) = step_cache {
+                                c.put(key, tess.clone());
+                            }
+                            for w in &tess.warnings {
+                                warnings.push(Warning::new("step-face", w.clone(), body.loc.to_string()));
+                            }
+                            let m = Arc::new(mesh::finish(path, tess.mesh.clone())?);
+                            step_meshes.insert(key, m.clone());
+                            m
+                        }
+                    }
+                } else {
+                    match read.get(path) {
+                        Some(m) => m.clone(),
+                        None => {
+                            let m = Arc::new(stl::parse(path, bytes, scale)?);
+                            read.insert(path, m.clone());
+                            m
+                        }
                     }
                 };
                 triangles = triangles.saturating_add(mesh.triangles.len());
@@ -80,4 +115,56 @@ pub fn read_meshes(
         }
     }
     Ok(warnings)
+}
+
+/// Meshes the distinct STEP files the bodies name that the cache does not hold, on up to two
+/// threads (the STEP files of an export are meshed in about half the time on this project's
+/// 2-core machine; each file is still meshed by one thread). Errors are kept for the body loop,
+/// which reports the first in body order.
+fn mesh_step_files(
+    model: &Model,
+    bundle: &Bundle,
+    xml_path: &str,
+    step_cache: Option<&dyn StepCache>,
+) -> HashMap<StepKey, Result<mesh::step::StepMesh, MeshError>> {
+    let mut todo: Vec<(StepKey, &str, &[u8])> = Vec::new();
+    for body in &model.bodies {
+        let Some(name) = &body.geometry_file else { continue };
+        let Ok(Some(path)) = bundle.resolve(xml_path, name) else { continue };
+        if !is_step(path) {
+            continue;
+        }
+        let bytes = bundle.get(path).unwrap_or_default();
+        let key = StepKey::of(bytes);
+        if todo.iter().any(|(k, _, _)| *k == key) || step_cache.is_some_and(|c| c.get(&key).is_some()) {
+            continue;
+        }
+        todo.push((key, path, bytes));
+    }
+    // Largest first, dealt alternately: the two threads get about equal work.
+    todo.sort_by_key(|(_, _, b)| std::cmp::Reverse(b.len()));
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get()).clamp(1, 2);
+    let mut out = HashMap::new();
+    std::thread::scope(|scope| {
+        let handles: Vec<_> = (0..threads)
+            .map(|t| {
+                let mine: Vec<(StepKey, &str, &[u8])> = todo.iter().skip(t).step_by(threads).copied().collect();
+                scope.spawn(move || mine.into_iter().map(|(k, p, b)| (k, mesh::step::read(p, b))).collect::<Vec<_>>())
+            })
+            .collect();
+        for h in handles {
+            // `read` contains its own panics; a thread that still panicked leaves its files to the
+            // body loop, which reads them again and reports the error.
+            if let Ok(v) = h.join() {
+                out.extend(v);
+            }
+        }
+    });
+    out
+}
+
+/// A STEP file, by its extension.
+pub fn is_step(path: &str) -> bool {
+    let lower = path.to_ascii_lowercase();
+    lower.ends_with(".step") || lower.ends_with(".stp")
 }

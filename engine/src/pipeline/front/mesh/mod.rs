@@ -9,6 +9,9 @@
 //! - `.dae`: COLLADA 1.4 and 1.5, our own reader over quick-xml ([`collada`], which says why not
 //!   the `dae-parser` crate): `<unit meter>`, `<up_axis>`, the visual scene's node transforms and
 //!   the triangles, polylists, polygons, triangle fans and strips of every instanced geometry.
+//! - `.step`, `.stp`: ISO 10303-21 B-rep (AP203, AP214, AP242), tessellated by [`step`]: units,
+//!   assembly placements applied; its warnings (faces that could not be meshed) are dropped by
+//!   [`read`], callers that report them use [`step::read`].
 //!
 //! # Output
 //! Vertices in metres in the mesh file's own frame with Z up (a COLLADA `Y_UP` or `X_UP` file is
@@ -26,6 +29,7 @@
 pub mod collada;
 mod obj;
 mod primitives;
+pub mod step;
 #[cfg(test)]
 mod tests;
 
@@ -65,7 +69,7 @@ fn location(file: &str, line: &u32) -> String {
 /// What is wrong with a mesh file.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum MeshErrorKind {
-    #[error("unsupported mesh format {}: supported are .stl, .obj and .dae (COLLADA)", ext_text(.ext))]
+    #[error("unsupported mesh format {}: supported are .stl, .obj, .dae (COLLADA) and .step/.stp", ext_text(.ext))]
     UnsupportedFormat { ext: String },
     /// The STL reader's error (its line is the [`MeshError`]'s).
     #[error("{0}")]
@@ -79,6 +83,9 @@ pub enum MeshErrorKind {
     /// Well-formed XML that is not usable COLLADA.
     #[error("COLLADA: {0}")]
     Collada(String),
+    /// STEP: syntax, limits, nothing meshable.
+    #[error("STEP: {0}")]
+    Step(String),
     #[error("no triangles in the file")]
     Empty,
     /// `vertex` counts from 1 in the order of the output mesh.
@@ -114,12 +121,13 @@ fn extension(path: &str) -> String {
 }
 
 /// Reads a mesh file, choosing the reader by the extension of `path` (case-insensitive): `.stl`,
-/// `.obj` or `.dae`. `path` also names the file in errors. See the module docs for the output.
+/// `.obj`, `.dae`, `.step` or `.stp`. `path` also names the file in errors. See the module docs for the output.
 pub fn read(path: &str, bytes: &[u8]) -> Result<ir::Mesh, MeshError> {
     let mesh = match extension(path).as_str() {
         "stl" => super::stl::parse(path, bytes, 1.0).map_err(|e| MeshError::new(path, e.line, MeshErrorKind::Stl(e.kind)))?,
         "obj" => obj::read(path, bytes)?,
         "dae" => collada::read(path, bytes)?,
+        "step" | "stp" => step::read(path, bytes)?.mesh,
         other => return Err(MeshError::new(path, 0, MeshErrorKind::UnsupportedFormat { ext: other.to_string() })),
     };
     finish(path, mesh)

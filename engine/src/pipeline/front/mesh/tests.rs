@@ -425,7 +425,7 @@ fn dispatch_by_extension() {
     assert!(e.to_string().starts_with("a/b.stl:5: expected a number"), "{e}");
     for name in ["x.ply", "x", "x.", "dir.obj/x.3ds"] {
         let e = read(name, b"").expect_err("unsupported");
-        assert!(e.to_string().contains("supported are .stl, .obj and .dae"), "{e}");
+        assert!(e.to_string().contains("supported are .stl, .obj, .dae (COLLADA) and .step/.stp"), "{e}");
     }
     assert!(read("x.ply", b"").expect_err("").to_string().contains("\".ply\""));
 }
@@ -678,4 +678,154 @@ fn soak_mutated_fixture_daes() {
         }
     }
     println!("soak: {runs} mutated files read without a panic");
+}
+
+// ---------------------------------------------------------------- STEP
+
+/// A hand-written AP214 B-rep tetrahedron (four planes, six lines, one closed shell; the same
+/// construction as fuzz/make_seeds.py's seed): edges `len` long along the axes from the origin,
+/// in the length unit `unit` (the complex entity's unit part, e.g. `SI_UNIT(.MILLI.,.METRE.)`),
+/// followed by `extra` entities.
+fn tetra_step(unit: &str, len: f64, extra: &str) -> String {
+    let mut ents: Vec<String> = Vec::new();
+    let mut add = |e: String| {
+        ents.push(e);
+        format!("#{}", ents.len())
+    };
+    let pts = [[0.0, 0.0, 0.0], [len, 0.0, 0.0], [0.0, len, 0.0], [0.0, 0.0, len]];
+    let cp: Vec<String> = pts.iter().map(|p| add(format!("CARTESIAN_POINT('',({:?},{:?},{:?}))", p[0], p[1], p[2]))).collect();
+    let vp: Vec<String> = cp.iter().map(|c| add(format!("VERTEX_POINT('',{c})"))).collect();
+    let mut edges = std::collections::HashMap::new();
+    for i in 0..4 {
+        for j in i + 1..4 {
+            let d = Vector3::from(pts[j]) - Vector3::from(pts[i]);
+            let n = d.norm();
+            let dir = add(format!("DIRECTION('',({:?},{:?},{:?}))", d.x / n, d.y / n, d.z / n));
+            let vec = add(format!("VECTOR('',{dir},{n:?})"));
+            let line = add(format!("LINE('',{},{vec})", cp[i]));
+            edges.insert((i, j), add(format!("EDGE_CURVE('',{},{},{line},.T.)", vp[i], vp[j])));
+        }
+    }
+    let mut faces = Vec::new();
+    for [a, b, c] in [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]] {
+        let oes: Vec<String> = [(a, b), (b, c), (c, a)]
+            .iter()
+            .map(|&(i, j)| add(format!("ORIENTED_EDGE('',*,*,{},{})", edges[&(i.min(j), i.max(j))], if i < j { ".T." } else { ".F." })))
+            .collect();
+        let lp = add(format!("EDGE_LOOP('',({}))", oes.join(",")));
+        let bound = add(format!("FACE_OUTER_BOUND('',{lp},.T.)"));
+        let u = Vector3::from(pts[b]) - Vector3::from(pts[a]);
+        let n = u.cross(&(Vector3::from(pts[c]) - Vector3::from(pts[a]))).normalize();
+        let u = u.normalize();
+        let nd = add(format!("DIRECTION('',({:?},{:?},{:?}))", n.x, n.y, n.z));
+        let rd = add(format!("DIRECTION('',({:?},{:?},{:?}))", u.x, u.y, u.z));
+        let ax = add(format!("AXIS2_PLACEMENT_3D('',{},{nd},{rd})", cp[a]));
+        let plane = add(format!("PLANE('',{ax})"));
+        faces.push(add(format!("ADVANCED_FACE('',({bound}),{plane},.T.)")));
+    }
+    let shell = add(format!("CLOSED_SHELL('',({}))", faces.join(",")));
+    let solid = add(format!("MANIFOLD_SOLID_BREP('tetra',{shell})"));
+    let lu = add(format!("( LENGTH_UNIT() NAMED_UNIT(*) {unit} )"));
+    let au = add("( NAMED_UNIT(*) PLANE_ANGLE_UNIT() SI_UNIT($,.RADIAN.) )".into());
+    let ctx =
+        add(format!("( GEOMETRIC_REPRESENTATION_CONTEXT(3) GLOBAL_UNIT_ASSIGNED_CONTEXT(({lu},{au})) REPRESENTATION_CONTEXT('','') )"));
+    add(format!("ADVANCED_BREP_SHAPE_REPRESENTATION('',({solid}),{ctx})"));
+    let body: Vec<String> = ents.iter().enumerate().map(|(k, e)| format!("#{}={e};", k + 1)).collect();
+    format!(
+        "ISO-10303-21;\nHEADER;\nFILE_DESCRIPTION((''),'2;1');\nFILE_NAME('t','',(''),(''),'','','');\nFILE_SCHEMA(('AUTOMOTIVE_DESIGN'));\nENDSEC;\nDATA;\n{}\n{extra}ENDSEC;\nEND-ISO-10303-21;\n",
+        body.join("\n")
+    )
+}
+
+/// Volume and centroid of a whole mesh.
+fn volume_centroid(m: &ir::Mesh) -> (f64, Vector3<f64>) {
+    let p = |i: u32| {
+        let v = m.vertices[i as usize];
+        Vector3::new(f64::from(v[0]), f64::from(v[1]), f64::from(v[2]))
+    };
+    let mut vol = 0.0;
+    let mut c = Vector3::zeros();
+    for t in &m.triangles {
+        let v6 = p(t[0]).dot(&p(t[1]).cross(&p(t[2])));
+        vol += v6 / 6.0;
+        c += (p(t[0]) + p(t[1]) + p(t[2])) * (v6 / 24.0);
+    }
+    (vol, c / vol)
+}
+
+#[test]
+fn step_tetrahedron_in_millimetres() {
+    let text = tetra_step("SI_UNIT(.MILLI.,.METRE.)", 10.0, "");
+    let m = step::read("t.step", text.as_bytes()).expect("tetra");
+    assert_eq!((m.faces, m.failed_faces, m.solids.len()), (4, 0, 1), "{:?}", m.warnings);
+    let (v, c) = volume_centroid(&m.mesh);
+    // 10 mm edges: 1000/6 mm^3, outward wound (positive); centroid at a quarter of the edges.
+    assert!((v - 1e-6 / 6.0).abs() < 1e-12, "{v}");
+    assert!((c - Vector3::repeat(0.0025)).norm() < 1e-9, "{c}");
+    // Through the extension dispatch too.
+    let mesh = read("parts/T.STEP", text.as_bytes()).expect("by extension");
+    assert_eq!(mesh.triangles.len(), m.mesh.triangles.len());
+}
+
+#[test]
+fn step_conversion_based_inch_unit() {
+    let extra =
+        "#999=LENGTH_MEASURE_WITH_UNIT(LENGTH_MEASURE(25.4),#998);\n#998=( LENGTH_UNIT() NAMED_UNIT(*) SI_UNIT(.MILLI.,.METRE.) );\n";
+    let text = tetra_step("CONVERSION_BASED_UNIT('INCH',#999)", 1.0, extra);
+    let m = step::read("t.step", text.as_bytes()).expect("tetra in inches");
+    let (v, _) = volume_centroid(&m.mesh);
+    assert!((v - 0.0254f64.powi(3) / 6.0).abs() < 1e-12, "{v}");
+    // A unit defined through itself, and a unit we do not know: errors naming the unit.
+    let cyc = text.replace("LENGTH_MEASURE(25.4),#998", "LENGTH_MEASURE(25.4),#999");
+    let e = step::read("t.step", cyc.as_bytes()).expect_err("cycle");
+    assert!(e.to_string().starts_with("t.step: STEP: length unit #"), "{e}");
+    let fathom = tetra_step("SI_UNIT(.FATHOM.,.METRE.)", 1.0, "");
+    let e = step::read("t.step", fathom.as_bytes()).expect_err("unknown prefix");
+    assert!(e.to_string().contains("is not one we know"), "{e}");
+}
+
+#[test]
+fn step_mapped_item_places_the_solid() {
+    // The tetrahedron's representation mapped into a second one, turned 90 degrees about z and
+    // moved 100 mm along x (the origin of the map at the tetrahedron's origin).
+    let extra = "#900=CARTESIAN_POINT('',(0.0,0.0,0.0));\n#901=AXIS2_PLACEMENT_3D('',#900,$,$);\n\
+                 #902=CARTESIAN_POINT('',(100.0,0.0,0.0));\n#903=DIRECTION('',(0.0,0.0,1.0));\n#904=DIRECTION('',(0.0,1.0,0.0));\n\
+                 #905=AXIS2_PLACEMENT_3D('',#902,#903,#904);\n#906=REPRESENTATION_MAP(#901,#REP);\n#907=MAPPED_ITEM('',#906,#905);\n\
+                 #908=SHAPE_REPRESENTATION('',(#907),#CTX);\n";
+    let base = tetra_step("SI_UNIT(.MILLI.,.METRE.)", 10.0, "");
+    let n = base.matches('=').count();
+    // The representation is the last entity, the context the one before it.
+    let text =
+        tetra_step("SI_UNIT(.MILLI.,.METRE.)", 10.0, &extra.replace("#REP", &format!("#{n}")).replace("#CTX", &format!("#{}", n - 1)));
+    let m = step::read("t.step", text.as_bytes()).expect("mapped");
+    assert_eq!(m.solids.len(), 1, "one placement: the mapped one (the tetrahedron's own representation is not a root)");
+    let (v, c) = volume_centroid(&m.mesh);
+    assert!((v - 1e-6 / 6.0).abs() < 1e-12, "{v}");
+    // (2.5, 2.5, 2.5) mm turned +90 degrees about z is (-2.5, 2.5, 2.5), then +100 mm in x.
+    assert!((c - Vector3::new(0.0975, 0.0025, 0.0025)).norm() < 1e-7, "{c}");
+}
+
+#[test]
+fn step_limits_and_garbage_are_errors_naming_the_file() {
+    let e = step::read("a/b.stp", b"solid x\nendsolid").expect_err("not STEP");
+    assert!(e.to_string().starts_with("a/b.stp: STEP: not an ISO 10303-21 file"), "{e}");
+    let text = tetra_step("SI_UNIT(.MILLI.,.METRE.)", 10.0, "");
+    for cut in [text.len() / 3, text.len() / 2, text.len() - 20] {
+        let e = step::read("a/b.stp", &text.as_bytes()[..cut]).expect_err("truncated");
+        assert!(e.to_string().starts_with("a/b.stp: STEP: "), "{e}");
+    }
+    let e = step::read_with("a/b.stp", text.as_bytes(), std::time::Duration::ZERO).expect_err("time");
+    assert!(e.to_string().contains("meshing took longer than the limit of 0 s"), "{e}");
+    // A face whose surface is of a type the reader does not know: a warning naming the face
+    // and its solid, the other three faces kept.
+    let broken = text.replacen("PLANE('',", "PLANEX('',", 1);
+    let m = step::read("a/b.stp", broken.as_bytes()).expect("three faces");
+    assert_eq!((m.faces, m.failed_faces), (4, 1), "{:?}", m.warnings);
+    assert_eq!(m.warnings.len(), 1, "{:?}", m.warnings);
+    assert!(
+        m.warnings[0].starts_with("a/b.stp: face #") && m.warnings[0].contains("PLANEX") && m.warnings[0].contains("MANIFOLD_SOLID_BREP #"),
+        "{}",
+        m.warnings[0]
+    );
+    assert!(!m.mesh.triangles.is_empty());
 }

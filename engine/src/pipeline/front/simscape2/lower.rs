@@ -58,7 +58,7 @@ struct Part {
     geometry: Option<(String, String)>,
     material: Option<Material>,
     node: NodeId,
-    step_warned: bool,
+    geometry_warned: bool,
 }
 
 /// Who a joint end attaches to.
@@ -440,7 +440,7 @@ impl<'a, 'd> Lower<'a, 'd> {
             return Err(self.err(node, format!("a second <Part> with uid \"{}\"", ir::clip(&uid, 80))));
         }
         self.part_by_uid.insert(uid, self.parts.len());
-        self.parts.push(Part { name, mass, com, inertia, geometry, material, node, step_warned: false });
+        self.parts.push(Part { name, mass, com, inertia, geometry, material, node, geometry_warned: false });
         Ok(())
     }
 
@@ -524,7 +524,8 @@ impl<'a, 'd> Lower<'a, 'd> {
             let geometry_file = match &self.parts[p].geometry {
                 Some((name, _)) => {
                     let lower = name.to_ascii_lowercase();
-                    (lower.ends_with(".stl") || lower.ends_with(".obj")).then(|| name.clone())
+                    (lower.ends_with(".stl") || lower.ends_with(".obj") || lower.ends_with(".step") || lower.ends_with(".stp"))
+                        .then(|| name.clone())
                 }
                 None => None,
             };
@@ -553,36 +554,26 @@ impl<'a, 'd> Lower<'a, 'd> {
         Ok(())
     }
 
-    /// One `geometry-step` (or `geometry-unsupported`) warning per part whose geometry cannot be
-    /// read.
+    /// One `geometry-unsupported` warning per part whose geometry cannot be read (neither STL,
+    /// OBJ nor STEP by its name).
     fn geometry_warning(&mut self, p: usize) {
         let part = &self.parts[p];
-        if part.step_warned {
+        if part.geometry_warned {
             return;
         }
         let Some((name, ty)) = part.geometry.clone() else { return };
         let lower = name.to_ascii_lowercase();
-        if lower.ends_with(".stl") || lower.ends_with(".obj") {
+        if [".stl", ".obj", ".step", ".stp"].iter().any(|e| lower.ends_with(e)) {
             return;
         }
         let node = part.node;
         let pname = part.name.clone();
-        self.parts[p].step_warned = true;
-        if lower.ends_with(".step") || lower.ends_with(".stp") || ty.eq_ignore_ascii_case("STEP") {
-            self.warn(
-                "geometry-step",
-                format!(
-                    "part \"{pname}\" names STEP geometry \"{name}\", which cannot be read without a CAD kernel; its bodies convert without a shape (export STL next to the XML, e.g. with the same name and .stl, and name it in the XML)"
-                ),
-                node,
-            );
-        } else {
-            self.warn(
-                "geometry-unsupported",
-                format!("part \"{pname}\" names geometry \"{name}\" of type \"{ty}\", which is not read (only STL and OBJ are); its bodies convert without a shape"),
-                node,
-            );
-        }
+        self.parts[p].geometry_warned = true;
+        self.warn(
+            "geometry-unsupported",
+            format!("part \"{pname}\" names geometry \"{name}\" of type \"{ty}\", which is not read (only STL, OBJ and STEP by the name's extension are); its bodies convert without a shape"),
+            node,
+        );
     }
 
     fn push_frame(

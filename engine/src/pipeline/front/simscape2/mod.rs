@@ -61,11 +61,11 @@
 //! - SolidWorks / Creo: the mates between each pair of rigid groups reduce to one joint by the
 //!   rank and null space of their constraint Jacobian (see [`mates`]); pairs that reduce to no
 //!   single joint, contain unsupported mates or do not hold at the assembly pose are warnings.
-//! - Geometry: only STL and OBJ names are kept in `geometry_file`; STEP gives one
-//!   `geometry-step` warning per part. No well-kept Rust crate tessellates STEP (checked
-//!   2026-11): `truck-stepio` 0.3 (Sep 2024, ~80 downloads a month) documents STEP *input* as
-//!   still to come and pulls in ~120k lines of dependencies; `stepmesh` 0.1.0 is a single first
-//!   release by one author. Both are too young to trust with users' parts.
+//! - Geometry: STL, OBJ and STEP names are kept in `geometry_file` and read by
+//!   `passes::geometry` (STEP through `front::mesh::step`, which says why `truck-stepio` and
+//!   `truck-meshalgo` after re-checking them in 2026-11: they read and mesh every face of the
+//!   Onshape arm's 16 parts, and what they get wrong is detected and warned); any other geometry
+//!   type is one `geometry-unsupported` warning per part.
 //! - No ground at all: a `no-ground` warning; the bodies float (the pipeline makes them free).
 
 mod error;
