@@ -53,12 +53,15 @@ fn props(mesh: &Mesh, tris: Range<usize>) -> (f64, Vector3<f64>, f64) {
 }
 
 /// OCCT's reading of `files` (see tests/tools/step_occt.py); `None` with a notice when Python or
-/// cadquery-ocp is missing (an error when tools are required).
+/// cadquery-ocp is missing (an error when tools are required). The Python is
+/// `CAD2MO_OCCT_PYTHON` (scripts/test's own virtual environment, since cadquery-ocp pins a VTK
+/// older than the one the VRML cross-check needs), else `python3`.
 fn occt(args: &[&str], files: &[PathBuf]) -> Option<Value> {
     let tool = workspace_root().join("tests/tools/step_occt.py");
     let dir = tempfile::tempdir().expect("tempdir");
     let out = dir.path().join("occt.json");
-    let mut cmd = Command::new("python3");
+    let python = std::env::var("CAD2MO_OCCT_PYTHON").unwrap_or_else(|_| "python3".to_string());
+    let mut cmd = Command::new(python);
     cmd.arg(&tool).args(args);
     if args.first() == Some(&"measure") {
         cmd.arg(&out);
