@@ -124,6 +124,8 @@ export async function resultsSteps(page, { step, shot, downloads }) {
   step('results: refusals at the upload');
   await page.getByRole('tab', { name: 'Results' }).click();
   await page.locator('.results-list-box table.results, .results-list-box p').first().waitFor();
+  // Results stored before this tab's steps (the closed-loop simulation's run, issue 28).
+  const before = await page.locator('table.results tr[data-result-id]').count();
   const input = page.locator('section.results-upload input[type=file]');
   const refusal = page.locator('section.results-upload .error');
   await input.setInputFiles(badPath);
@@ -133,7 +135,7 @@ export async function resultsSteps(page, { step, shot, downloads }) {
   await input.setInputFiles(foreignPath);
   await refusal.filter({ hasText: 'other-model.mat' }).waitFor();
   assert.match(await refusal.textContent(), /none of the (model|version)'s bodies/i, await refusal.textContent());
-  assert.equal(await page.locator('table.results tr[data-result-id]').count(), 0, 'nothing stored');
+  assert.equal(await page.locator('table.results tr[data-result-id]').count(), before, 'nothing stored');
 
   step('results: upload the poses');
   await input.setInputFiles(framesPath);
@@ -293,11 +295,11 @@ export async function resultsSteps(page, { step, shot, downloads }) {
   await page.getByRole('tab', { name: 'Structure' }).click();
   assert.equal(await page.evaluate(() => window.cad2moViewer.posed), null, 'the joints pose the model outside the Results tab');
   await page.getByRole('tab', { name: 'Results' }).click();
-  assert.equal(await page.locator('table.results tr[data-result-id]').count(), 2);
+  assert.equal(await page.locator('table.results tr[data-result-id]').count(), before + 2);
   await page.getByRole('button', { name: 'Delete result arm-joints.mat' }).click();
   await page.getByRole('dialog').getByRole('button', { name: 'Delete' }).click();
-  await page.locator('table.results tr[data-result-id]').nth(1).waitFor({ state: 'detached' });
-  assert.equal(await page.locator('table.results tr[data-result-id]').count(), 1);
+  await page.locator('table.results tr[data-result-id]').nth(before + 1).waitFor({ state: 'detached' });
+  assert.equal(await page.locator('table.results tr[data-result-id]').count(), before + 1);
 
   // The tab has its own address: a reload comes back to it.
   assert.match(page.url(), /\/versions\/1\/results$/);
@@ -307,5 +309,5 @@ export async function resultsSteps(page, { step, shot, downloads }) {
   await page.getByRole('button', { name: 'Open result arm-frames.mat' }).click();
   await page.locator('#results-play').waitFor();
   await page.getByRole('tab', { name: 'Drives' }).click();
-  return { results: 1, csv: csvPath };
+  return { results: before + 1, csv: csvPath };
 }
