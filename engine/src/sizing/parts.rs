@@ -211,26 +211,13 @@ fn convert_resistance(r: f64, t_ref: f64, alpha20: f64, t: f64) -> f64 {
 pub fn motor(class: &Class, instance: &Instance, overrides: &[(String, Value)]) -> Result<Motor, SizingError> {
     let part = PartRef { id: instance.id.clone(), name: instance.name.clone() };
     let v = library::resolved_values(class, instance, overrides);
-    let datasheet = |n: &str| real(&v, n);
-    match class.modelica_class.as_str() {
+    // The electrical and mechanical constants by class (r: winding resistance, where the class
+    // has one); the datasheet values are the same parameters in every motor class.
+    let (r, k, j, d) = match class.modelica_class.as_str() {
         DC_MOTOR_CLASS => {
             let k = positive(&part, "k", need(&part, &v, "k")?)?;
-            Ok(Motor {
-                r: Some(need(&part, &v, "R")?),
-                k,
-                j: need(&part, &v, "J")?,
-                d: real(&v, "d").unwrap_or(0.0),
-                t_nom: datasheet("T_nom"),
-                t_peak: datasheet("T_peak"),
-                t_stall: datasheet("T_stall"),
-                w_max: datasheet("w_max"),
-                tau_th_w: datasheet("tau_th_w"),
-                mass: datasheet("mass"),
-                price_class: integer(&v, "price_class"),
-                mount: text(&v, "mount"),
-                source: instance.source.clone(),
-                part,
-            })
+            let r = need(&part, &v, "R")?;
+            (Some(r), k, need(&part, &v, "J")?, real(&v, "d").unwrap_or(0.0))
         }
         MSL_DC_CLASS => {
             // As the MSL machine: the EMF constant from the nominal point,
@@ -245,41 +232,28 @@ pub fn motor(class: &Class, instance: &Instance, overrides: &[(String, Value)]) 
             let t_op = real(&v, "TaOperational").unwrap_or(t_nominal);
             let k = (va - convert_resistance(ra, t_ref, alpha, t_nominal) * ia) / w;
             let k = positive(&part, "the EMF constant (VaNominal - Ra·IaNominal)/wNominal", k)?;
-            Ok(Motor {
-                r: Some(convert_resistance(ra, t_ref, alpha, t_op)),
-                k,
-                j: need(&part, &v, "Jr")?,
-                d: 0.0,
-                t_nom: datasheet("T_nom"),
-                t_peak: datasheet("T_peak"),
-                t_stall: datasheet("T_stall"),
-                w_max: datasheet("w_max"),
-                tau_th_w: datasheet("tau_th_w"),
-                mass: datasheet("mass"),
-                price_class: integer(&v, "price_class"),
-                mount: text(&v, "mount"),
-                source: instance.source.clone(),
-                part,
-            })
+            (Some(convert_resistance(ra, t_ref, alpha, t_op)), k, need(&part, &v, "Jr")?, 0.0)
         }
-        SERVO_MOTOR_CLASS => Ok(Motor {
-            r: None,
-            k: positive(&part, "k", need(&part, &v, "k")?)?,
-            j: need(&part, &v, "J")?,
-            d: 0.0,
-            t_nom: datasheet("T_nom"),
-            t_peak: datasheet("T_peak"),
-            t_stall: datasheet("T_stall"),
-            w_max: datasheet("w_max"),
-            tau_th_w: datasheet("tau_th_w"),
-            mass: datasheet("mass"),
-            price_class: integer(&v, "price_class"),
-            mount: text(&v, "mount"),
-            source: instance.source.clone(),
-            part,
-        }),
-        other => Err(SizingError::UnknownClass { part: part.name, class: other.to_string(), slot: "motor" }),
-    }
+        SERVO_MOTOR_CLASS => (None, positive(&part, "k", need(&part, &v, "k")?)?, need(&part, &v, "J")?, 0.0),
+        other => return Err(SizingError::UnknownClass { part: part.name, class: other.to_string(), slot: "motor" }),
+    };
+    let datasheet = |n: &str| real(&v, n);
+    Ok(Motor {
+        r,
+        k,
+        j,
+        d,
+        t_nom: datasheet("T_nom"),
+        t_peak: datasheet("T_peak"),
+        t_stall: datasheet("T_stall"),
+        w_max: datasheet("w_max"),
+        tau_th_w: datasheet("tau_th_w"),
+        mass: datasheet("mass"),
+        price_class: integer(&v, "price_class"),
+        mount: text(&v, "mount"),
+        source: instance.source.clone(),
+        part,
+    })
 }
 
 /// A gear from a library instance with a drive's overrides.
