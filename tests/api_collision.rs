@@ -3,16 +3,9 @@
 //! refusals naming the pair), interferences at the CAD pose under the matrix, and a motion that
 //! swings the fore link into the base (first contact, depth) checked at 1 kHz.
 
-use cad2mo_tests::app::{zip_dir, TestApp};
+use cad2mo_tests::app::{json_of, zip_dir, TestApp};
 use cad2mo_tests::common::workspace_root;
 use serde_json::{json, Value};
-
-async fn json_of(r: reqwest::Response, status: u16) -> Value {
-    let s = r.status().as_u16();
-    let v: Value = r.json().await.expect("json body");
-    assert_eq!(s, status, "{v:#}");
-    v
-}
 
 fn pair<'a>(m: &'a Value, a: &str, b: &str) -> &'a Value {
     m["pairs"]

@@ -7,7 +7,7 @@ use std::io::Read;
 use std::net::UdpSocket;
 use std::time::Duration;
 
-use cad2mo_tests::app::TestApp;
+use cad2mo_tests::app::{json_of, TestApp};
 use cad2mo_tests::live::{build_harness, run_harness, spin_motion, Stream};
 use futures_util::{SinkExt, StreamExt};
 use serde_json::Value;
@@ -20,13 +20,6 @@ mod gen;
 
 fn arm_zip(n: usize) -> Vec<u8> {
     cad2mo_engine::pipeline::back::bundle::write_zip(&[("arm.xml".to_string(), gen::serial_arm_xml(n).into_bytes())]).expect("zip")
-}
-
-async fn json_of(r: reqwest::Response, status: u16) -> Value {
-    let s = r.status().as_u16();
-    let v: Value = r.json().await.expect("json body");
-    assert_eq!(s, status, "{v:#}");
-    v
 }
 
 fn package_files(zip: &[u8]) -> Vec<(String, String)> {

@@ -1,7 +1,7 @@
 //! Joint limits, motions, trajectories and live IK through the REST API on a generated 6-axis arm
 //! (and a second CAD version with one joint fewer: limits orphaned, the motion refused by name).
 
-use cad2mo_tests::app::TestApp;
+use cad2mo_tests::app::{json_of, TestApp};
 use serde_json::{json, Value};
 
 #[path = "../engine/benches/support/gen.rs"]
@@ -23,13 +23,6 @@ async fn instance_named(app: &TestApp, name: &str) -> String {
     let list = json_of(app.get("/api/library/instances").await, 200).await;
     let i = list.as_array().expect("instances").iter().find(|i| i["name"] == name).unwrap_or_else(|| panic!("no instance {name}"));
     i["id"].as_str().expect("id").to_string()
-}
-
-async fn json_of(r: reqwest::Response, status: u16) -> Value {
-    let s = r.status().as_u16();
-    let v: Value = r.json().await.expect("json body");
-    assert_eq!(s, status, "{v:#}");
-    v
 }
 
 #[tokio::test]

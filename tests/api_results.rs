@@ -3,19 +3,12 @@
 //! CAD pose where the file's joints are at their start values; variables, series, refusals.
 
 use cad2mo_engine::results::write::trajectory;
-use cad2mo_tests::app::TestApp;
+use cad2mo_tests::app::{json_of, TestApp};
 use serde_json::Value;
 
 #[path = "../engine/benches/support/gen.rs"]
 #[allow(dead_code)]
 mod gen;
-
-async fn json_of(r: reqwest::Response, status: u16) -> Value {
-    let s = r.status().as_u16();
-    let v: Value = r.json().await.expect("json body");
-    assert_eq!(s, status, "{v:#}");
-    v
-}
 
 async fn upload(app: &TestApp, path: &str, name: &str, bytes: Vec<u8>) -> reqwest::Response {
     let part = reqwest::multipart::Part::bytes(bytes).file_name(name.to_string());

@@ -5,15 +5,8 @@
 //! computation (separating axes on the arm's and the obstacle's rectangles in the swing plane,
 //! and the analytic time a conveyor's crate reaches the base).
 
-use cad2mo_tests::app::TestApp;
+use cad2mo_tests::app::{json_of, TestApp};
 use serde_json::{json, Value};
-
-async fn json_of(r: reqwest::Response, status: u16) -> Value {
-    let s = r.status().as_u16();
-    let v: Value = r.json().await.expect("json body");
-    assert_eq!(s, status, "{v:#}");
-    v
-}
 
 /// A base box (0.1 × 0.1 × 0.2 m, z 0 .. 0.2) and an arm box (0.04 × 0.04 × 0.4 m) on a
 /// revolute shoulder about y at z = 0.2, pointing up at q = 0.

@@ -5,7 +5,7 @@
 
 use std::time::Duration;
 
-use cad2mo_tests::app::TestApp;
+use cad2mo_tests::app::{json_of, TestApp};
 use serde_json::{json, Value};
 
 #[path = "../engine/benches/support/gen.rs"]
@@ -14,13 +14,6 @@ mod gen;
 
 fn arm_zip(n: usize) -> Vec<u8> {
     cad2mo_engine::pipeline::back::bundle::write_zip(&[("arm.xml".to_string(), gen::serial_arm_xml(n).into_bytes())]).expect("zip")
-}
-
-async fn json_of(r: reqwest::Response, status: u16) -> Value {
-    let s = r.status().as_u16();
-    let v: Value = r.json().await.expect("json body");
-    assert_eq!(s, status, "{v:#}");
-    v
 }
 
 async fn instance(app: &TestApp, class_path: &str, name: Option<&str>) -> String {

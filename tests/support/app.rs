@@ -187,3 +187,11 @@ pub fn heavy_pendulum(triangles: u32) -> Vec<u8> {
     }
     cad2mo_engine::pipeline::back::bundle::write_zip(&[("PENDULUM.xml".into(), xml), ("meshes/LINK_prt.stl".into(), stl)]).expect("zip")
 }
+
+/// The JSON body of a response, asserting its status first (the body is in the message).
+pub async fn json_of(r: reqwest::Response, status: u16) -> serde_json::Value {
+    let s = r.status().as_u16();
+    let v: serde_json::Value = r.json().await.expect("json body");
+    assert_eq!(s, status, "{v:#}");
+    v
+}
