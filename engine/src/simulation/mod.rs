@@ -43,14 +43,13 @@
 //! being small, pure Rust and on our nalgebra (`diffsol` brings its own linear-algebra stack).
 
 mod answer;
+pub mod integrate;
 mod output;
 mod parts;
 
 use std::cell::{Cell, RefCell};
 
-use nalgebra::{DVector, Vector3};
-use ode_solvers::dop_shared::{IntegrationError, OutputType, System};
-use ode_solvers::Dopri5;
+use nalgebra::Vector3;
 
 use crate::mechanism::{ClosedState, ForwardWorkspace, Mechanism, MechanismError, Workspace};
 
@@ -85,9 +84,22 @@ fn field(field: impl Into<String>, message: impl Into<String>) -> SimulationErro
     SimulationError::Field { field: field.into(), message: message.into() }
 }
 
-/// `Motors.DCPermanentMagnet`'s parameters (SI).
+/// Which motor class's equations a [`Motor`] follows.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum MotorKind {
+    /// `Motors.DCPermanentMagnet`: armature circuit `L·di/dt = v − R·i − k·w` fed by the
+    /// current loop's voltage, limited to ±`v_max`.
+    #[default]
+    DcPermanentMagnet,
+    /// `Motors.ServoMotor`: the servo amplifier's current loop as a first-order lag,
+    /// `Tc·di/dt = i_cmd − i`; no voltage model (`r`, `l`, `v_max` and `d` unused).
+    Servo,
+}
+
+/// A motor's parameters (SI): `Motors.DCPermanentMagnet` or `Motors.ServoMotor` by `kind`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Motor {
+    pub kind: MotorKind,
     /// Armature resistance, Ω.
     pub r: f64,
     /// Armature inductance, H.
@@ -161,11 +173,35 @@ impl Reference {
         match self {
             Reference::Constant(v) => (*v, 0.0),
             Reference::Table(points) => {
-                let (ts, vs): (Vec<f64>, Vec<f64>) = points.iter().copied().unzip();
-                (interpolate(&ts, &vs, t), 0.0)
+                let value = match points.len() {
+                    0 => 0.0,
+                    _ if t <= points[0].0 => points[0].1,
+                    n if t >= points[n - 1].0 => points[n - 1].1,
+                    n => {
+                        let k = points.partition_point(|p| p.0 <= t).clamp(1, n - 1);
+                        let ((t0, v0), (t1, v1)) = (points[k - 1], points[k]);
+                        if t1 <= t0 {
+                            v1
+                        } else {
+                            v0 + (v1 - v0) * (t - t0) / (t1 - t0)
+                        }
+                    }
+                };
+                (value, 0.0)
             }
             Reference::Motion { t: ts, q, qd } => (interpolate(ts, q, t), interpolate(ts, qd, t)),
         }
+    }
+
+    /// The first time strictly after `t` where the reference kinks (a sample of a table or a
+    /// motion), infinity when none: the integrator ends a step there.
+    pub fn next_break(&self, t: f64) -> f64 {
+        let times = match self {
+            Reference::Constant(_) => return f64::INFINITY,
+            Reference::Table(p) => return p.get(p.partition_point(|x| x.0 <= t)).map_or(f64::INFINITY, |x| x.0),
+            Reference::Motion { t: times, .. } => times,
+        };
+        times.get(times.partition_point(|x| *x <= t)).copied().unwrap_or(f64::INFINITY)
     }
 
     fn check(&self, name: &str) -> Result<(), SimulationError> {
@@ -265,9 +301,11 @@ pub struct Run {
     pub cut: Vec<Vec<f64>>,
     /// Per drive (in the order given), per sample.
     pub drives: Vec<Vec<DriveSample>>,
-    /// Accepted and rejected steps, right-hand side evaluations.
+    /// Accepted and rejected steps, events (mode switches at located crossings), right-hand
+    /// side evaluations.
     pub accepted_steps: u32,
     pub rejected_steps: u32,
+    pub events: u32,
     pub evaluations: u32,
 }
 
@@ -279,16 +317,59 @@ pub struct Start {
     pub qd: Vec<f64>,
 }
 
+/// The mode of one drive's switches: between two events the equations are evaluated in a fixed
+/// mode (see [`integrate`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+struct Mode {
+    /// Current limiter: 0 linear, +1 at +I_max, −1 at −I_max.
+    current: i8,
+    /// Voltage limiter, likewise.
+    voltage: i8,
+    /// Lossy gear: power flows from the joint back to the motor.
+    backward: bool,
+}
+
+/// Switching functions per drive: `i_ref ∓ I_max`, `v_cmd ∓ V_max`, `τ_a·w`.
+const SWITCHES: usize = 5;
+
+fn limiter_class(hi: f64, lo: f64) -> i8 {
+    if hi > 0.0 {
+        1
+    } else if lo < 0.0 {
+        -1
+    } else {
+        0
+    }
+}
+
+fn limited(x: f64, limit: f64, mode: i8) -> f64 {
+    match mode {
+        1 => limit,
+        -1 => -limit,
+        _ => x,
+    }
+}
+
+impl Mode {
+    fn of(g: &[f64], gear: bool) -> Mode {
+        Mode { current: limiter_class(g[0], g[1]), voltage: limiter_class(g[2], g[3]), backward: gear && g[4] < 0.0 }
+    }
+}
+
 struct Scratch {
     state: ClosedState,
     tau: Vec<f64>,
     armature: Vec<f64>,
-    forward: Vec<bool>,
+    modes: Vec<Mode>,
+    signals: Vec<DriveSample>,
     ws: Workspace,
     fws: ForwardWorkspace,
     error: Option<MechanismError>,
     evaluations: u32,
 }
+
+/// An output sample as the integrator hands it over: time, state, the modes of its step.
+type RawSample = (f64, Vec<f64>, Vec<Mode>);
 
 struct Model<'a> {
     m: &'a Mechanism,
@@ -297,19 +378,17 @@ struct Model<'a> {
     forces: &'a dyn GeneralisedForces,
     driven: Vec<usize>,
     scratch: RefCell<Scratch>,
+    samples: RefCell<Vec<RawSample>>,
     cancel: &'a dyn Fn() -> bool,
     cancelled: Cell<Option<f64>>,
 }
 
-/// The system Dopri5 integrates: a borrowed [`Model`] (the solver keeps its system to itself).
-struct Sys<'a, 'b>(&'b Model<'a>);
-
 impl Model<'_> {
-    /// The derivative `dy` at `(t, y)`; `record` receives each drive's signals.
-    fn eval(&self, t: f64, y: &DVector<f64>, dy: &mut DVector<f64>, record: Option<&mut Vec<DriveSample>>) -> Result<(), MechanismError> {
+    /// The derivative `dy` and the switching functions `g` at `(t, y)` in the current modes;
+    /// the drives' signals are left in the scratch.
+    fn eval(&self, t: f64, y: &[f64], dy: &mut [f64], g: &mut [f64]) -> Result<(), MechanismError> {
         let m = self.m;
         let k = self.driven.len();
-        let n = m.dof();
         let mut guard = self.scratch.borrow_mut();
         let s = &mut *guard;
         s.evaluations = s.evaluations.saturating_add(1);
@@ -324,73 +403,75 @@ impl Model<'_> {
         }
         s.tau.iter_mut().for_each(|x| *x = 0.0);
         self.forces.add(t, &s.state.q, &s.state.qd, &mut s.tau);
-        let base_tau = s.tau.clone();
-        // Drive signals that do not depend on the acceleration.
-        let mut signals = Vec::with_capacity(self.drives.len());
+        s.armature.iter_mut().for_each(|x| *x = 0.0);
+        // Drive signals (they do not depend on the acceleration) and the torques on the joints.
         for (d, drive) in self.drives.iter().enumerate() {
-            let (mo, c, r) = (&drive.motor, &drive.controller, drive.transmission.ratio);
+            let (mo, c, tr) = (&drive.motor, &drive.controller, &drive.transmission);
+            let r = tr.ratio;
+            let mode = s.modes[d];
             let (i, x) = (y[2 * k + 2 * d], y[2 * k + 2 * d + 1]);
             let q = s.state.q[drive.coordinate];
             let (phi, w) = (r * q, r * s.state.qd[drive.coordinate]);
             let (q_ref, qd_ref) = drive.reference.at(t);
             let e = c.kp * (r * q_ref - phi) + r * qd_ref - w;
             let i_ref = c.ks * (e + x / c.ts);
-            let i_cmd = i_ref.clamp(-mo.i_max, mo.i_max);
-            let v_cmd = mo.r * i_cmd + mo.k * w + mo.l / mo.tc * (i_cmd - i);
-            let v = v_cmd.clamp(-mo.v_max, mo.v_max);
-            let sample = DriveSample { q_ref, qd_ref, i_ref, i_cmd, i, v_cmd, v, phi, w, tau: mo.k * i };
-            dy[2 * k + 2 * d] = (v - mo.r * i - mo.k * w) / mo.l;
+            let i_cmd = limited(i_ref, mo.i_max, mode.current);
+            let gd = &mut g[SWITCHES * d..SWITCHES * (d + 1)];
+            gd[0] = i_ref - mo.i_max;
+            gd[1] = i_ref + mo.i_max;
+            let (v_cmd, v, di) = match mo.kind {
+                MotorKind::DcPermanentMagnet => {
+                    let v_cmd = mo.r * i_cmd + mo.k * w + mo.l / mo.tc * (i_cmd - i);
+                    let v = limited(v_cmd, mo.v_max, mode.voltage);
+                    gd[2] = v_cmd - mo.v_max;
+                    gd[3] = v_cmd + mo.v_max;
+                    (v_cmd, v, (v - mo.r * i - mo.k * w) / mo.l)
+                }
+                MotorKind::Servo => {
+                    // No voltage model: the limiter's switches never cross.
+                    gd[2] = -1.0;
+                    gd[3] = 1.0;
+                    (0.0, 0.0, (i_cmd - i) / mo.tc)
+                }
+            };
+            dy[2 * k + 2 * d] = di;
             dy[2 * k + 2 * d + 1] = e;
-            s.forward[d] = (mo.k * i - mo.d * w) * w >= 0.0;
-            signals.push(sample);
+            s.signals[d] = DriveSample { q_ref, qd_ref, i_ref, i_cmd, i, v_cmd, v, phi, w, tau: mo.k * i };
+            let f = if tr.eta >= 1.0 {
+                1.0
+            } else if mode.backward {
+                1.0 / tr.eta
+            } else {
+                tr.eta
+            };
+            s.tau[drive.coordinate] += f * r * (mo.k * i - mo.d * w);
+            s.armature[drive.coordinate] += f * mo.j * r * r;
         }
-        for pass in 0..4 {
-            s.tau.copy_from_slice(&base_tau);
-            s.armature.iter_mut().for_each(|x| *x = 0.0);
-            for (d, drive) in self.drives.iter().enumerate() {
-                let (mo, tr) = (&drive.motor, &drive.transmission);
-                let f = if tr.eta >= 1.0 || s.forward[d] { tr.eta.min(1.0) } else { 1.0 / tr.eta };
-                let c = drive.coordinate;
-                s.tau[c] += f * tr.ratio * (mo.k * signals[d].i - mo.d * signals[d].w);
-                s.armature[c] += f * mo.j * tr.ratio * tr.ratio;
-            }
-            let Scratch { state, tau, armature, ws, fws, .. } = s;
-            m.closed_forward_dynamics(state, tau, armature, &self.gravity, ws, fws)?;
-            let mut changed = false;
-            for (d, drive) in self.drives.iter().enumerate() {
-                if drive.transmission.eta >= 1.0 {
-                    continue;
-                }
-                let (mo, r) = (&drive.motor, drive.transmission.ratio);
-                let tau_a = mo.k * signals[d].i - mo.d * signals[d].w - mo.j * r * s.state.qdd[drive.coordinate];
-                let forward = tau_a * signals[d].w >= 0.0;
-                if forward != s.forward[d] {
-                    s.forward[d] = forward;
-                    changed = true;
-                }
-            }
-            if !changed || pass == 3 {
-                break;
-            }
+        let Scratch { state, tau, armature, ws, fws, .. } = s;
+        m.closed_forward_dynamics(state, tau, armature, &self.gravity, ws, fws)?;
+        // The direction of power flow in the lossy gears: the sign of τ_a·w, τ_a the torque
+        // into the gear.
+        for (d, drive) in self.drives.iter().enumerate() {
+            let (mo, r) = (&drive.motor, drive.transmission.ratio);
+            g[SWITCHES * d + 4] = if drive.transmission.eta >= 1.0 {
+                0.0
+            } else {
+                let w = s.signals[d].w;
+                (mo.k * s.signals[d].i - mo.d * w - mo.j * r * s.state.qdd[drive.coordinate]) * w
+            };
         }
-        if n > 0 {
-            for (p, &i) in self.driven.iter().enumerate() {
-                dy[p] = s.state.qd[i];
-                dy[k + p] = s.state.qdd[i];
-            }
-        }
-        if let Some(rec) = record {
-            rec.clear();
-            rec.extend(signals);
+        for (p, &i) in self.driven.iter().enumerate() {
+            dy[p] = s.state.qd[i];
+            dy[k + p] = s.state.qdd[i];
         }
         Ok(())
     }
 }
 
-impl System<f64, DVector<f64>> for Sys<'_, '_> {
-    fn system(&self, t: f64, y: &DVector<f64>, dy: &mut DVector<f64>) {
-        if let Err(e) = self.0.eval(t, y, dy, None) {
-            let mut s = self.0.scratch.borrow_mut();
+impl integrate::Problem for Model<'_> {
+    fn eval(&self, t: f64, y: &[f64], dy: &mut [f64], g: &mut [f64]) {
+        if let Err(e) = Model::eval(self, t, y, dy, g) {
+            let mut s = self.scratch.borrow_mut();
             if s.error.is_none() {
                 s.error = Some(e);
             }
@@ -398,12 +479,37 @@ impl System<f64, DVector<f64>> for Sys<'_, '_> {
         }
     }
 
-    fn solout(&mut self, t: f64, _y: &DVector<f64>, _dy: &DVector<f64>) -> bool {
-        if self.0.scratch.borrow().error.is_some() {
+    fn switches(&self) -> usize {
+        SWITCHES * self.drives.len()
+    }
+
+    fn wants_switch(&self, g: &[f64]) -> bool {
+        let s = self.scratch.borrow();
+        self.drives.iter().enumerate().any(|(d, drive)| Mode::of(&g[SWITCHES * d..], drive.transmission.eta < 1.0) != s.modes[d])
+    }
+
+    fn switch(&self, g: &[f64]) {
+        let mut s = self.scratch.borrow_mut();
+        for (d, drive) in self.drives.iter().enumerate() {
+            s.modes[d] = Mode::of(&g[SWITCHES * d..], drive.transmission.eta < 1.0);
+        }
+    }
+
+    fn next_break(&self, t: f64) -> f64 {
+        self.drives.iter().map(|d| d.reference.next_break(t)).fold(f64::INFINITY, f64::min)
+    }
+
+    fn sample(&self, t: f64, y: &[f64]) {
+        let modes = self.scratch.borrow().modes.clone();
+        self.samples.borrow_mut().push((t, y.to_vec(), modes));
+    }
+
+    fn stop(&self, t: f64) -> bool {
+        if self.scratch.borrow().error.is_some() {
             return true;
         }
-        if (self.0.cancel)() {
-            self.0.cancelled.set(Some(t));
+        if (self.cancel)() {
+            self.cancelled.set(Some(t));
             return true;
         }
         false
@@ -455,12 +561,16 @@ fn check(m: &Mechanism, drives: &[Drive], start: &Start, opts: &Options) -> Resu
             return Err(field(f("coordinate"), format!("coordinate {c} has two drives")));
         }
         let mo = &drive.motor;
-        positive(f("motor.R"), mo.r, true)?;
-        positive(f("motor.L"), mo.l, false)?;
+        if mo.kind == MotorKind::DcPermanentMagnet {
+            positive(f("motor.R"), mo.r, true)?;
+            positive(f("motor.L"), mo.l, false)?;
+            positive(f("motor.d"), mo.d, true)?;
+            positive(f("motor.V_max"), mo.v_max, false)?;
+        } else if mo.d != 0.0 {
+            return Err(field(f("motor.d"), "the servo motor class has no rotor friction"));
+        }
         positive(f("motor.k"), mo.k, false)?;
         positive(f("motor.J"), mo.j, false)?;
-        positive(f("motor.d"), mo.d, true)?;
-        positive(f("motor.V_max"), mo.v_max, false)?;
         positive(f("motor.I_max"), mo.i_max, false)?;
         positive(f("motor.Tc"), mo.tc, false)?;
         let c = &drive.controller;
@@ -499,10 +609,10 @@ pub fn simulate(
     if m.has_loops() {
         m.close(&mut state)?;
     }
-    let mut y0 = DVector::zeros(2 * k + 2 * drives.len());
+    let mut y = vec![0.0; 2 * k + 2 * drives.len()];
     for (p, &i) in driven.iter().enumerate() {
-        y0[p] = state.q[i];
-        y0[k + p] = state.qd[i];
+        y[p] = state.q[i];
+        y[k + p] = state.qd[i];
     }
     let model = Model {
         m,
@@ -514,86 +624,66 @@ pub fn simulate(
             state,
             tau: vec![0.0; n],
             armature: vec![0.0; n],
-            forward: vec![true; drives.len()],
+            modes: vec![Mode::default(); drives.len()],
+            signals: vec![DriveSample::default(); drives.len()],
             ws: m.workspace(),
             fws: m.forward_workspace(),
             error: None,
             evaluations: 0,
         }),
+        samples: RefCell::new(Vec::new()),
         cancel,
         cancelled: Cell::new(None),
     };
-    let h_max = if opts.h_max > 0.0 { opts.h_max } else { opts.duration };
-    let mut solver = Dopri5::from_param(
-        Sys(&model),
-        0.0,
-        // A hair past the duration, so that dense output reaches its last multiple.
-        opts.duration * (1.0 + 1e-9),
-        opts.output_interval,
-        y0,
-        opts.rtol,
-        opts.atol,
-        0.9,
-        0.04,
-        0.2,
-        10.0,
-        h_max,
-        0.0,
-        opts.max_steps,
-        // No stiffness abort: see the module docs (the step budget bounds the run).
-        u32::MAX,
-        OutputType::Dense,
-    );
-    let result = solver.integrate();
-    let (ts, ys) = (solver.x_out().clone(), solver.y_out().clone());
-    let stats = result.as_ref().ok().copied();
-    drop(solver);
+    let settings = integrate::Settings {
+        rtol: opts.rtol,
+        atol: opts.atol,
+        h_max: opts.h_max,
+        max_steps: opts.max_steps,
+        output_interval: opts.output_interval,
+    };
+    let result = integrate::integrate(&model, &mut y, opts.duration, &settings);
     if let Some(e) = model.scratch.borrow_mut().error.take() {
         return Err(e.into());
     }
     if let Some(t) = model.cancelled.get() {
         return Err(SimulationError::Cancelled { t });
     }
-    let stats = match (result, stats) {
-        (Ok(_), Some(s)) => s,
-        (Err(e), _) => {
-            let t = ts.last().copied().unwrap_or(0.0);
-            let message = match e {
-                IntegrationError::MaxNumStepReached { n_step, .. } => format!("max_steps: {n_step} steps were not enough"),
-                IntegrationError::StiffnessDetected { x } => format!("the problem became stiff at t = {x} s"),
-                IntegrationError::StepSizeUnderflow { x } => format!("step size underflow at t = {x} s"),
-            };
-            return Err(SimulationError::Integration { t, message });
-        }
-        (Ok(_), None) => return Err(SimulationError::Integration { t: 0.0, message: "no statistics".into() }),
-    };
-    // Samples: derived quantities re-evaluated at each output point.
+    let stats = result.map_err(|f| {
+        let (t, message) = match f {
+            integrate::Failure::MaxSteps { t, steps } => (t, format!("max_steps: {steps} steps were not enough")),
+            integrate::Failure::StepUnderflow { t } => (t, format!("step size underflow at t = {t} s")),
+            integrate::Failure::NotFinite { t } => (t, format!("the state became non-finite at t = {t} s")),
+            integrate::Failure::Stopped { t } => (t, "stopped".to_string()),
+        };
+        SimulationError::Integration { t, message }
+    })?;
+    // Samples: derived quantities re-evaluated at each output point in its step's modes.
+    let samples = model.samples.take();
     let mut run = Run {
-        t: Vec::with_capacity(ts.len()),
-        q: Vec::with_capacity(ts.len()),
-        qd: Vec::with_capacity(ts.len()),
-        qdd: Vec::with_capacity(ts.len()),
-        cut: Vec::with_capacity(ts.len()),
-        drives: vec![Vec::with_capacity(ts.len()); drives.len()],
-        accepted_steps: stats.accepted_steps,
-        rejected_steps: stats.rejected_steps,
+        t: Vec::with_capacity(samples.len()),
+        q: Vec::with_capacity(samples.len()),
+        qd: Vec::with_capacity(samples.len()),
+        qdd: Vec::with_capacity(samples.len()),
+        cut: Vec::with_capacity(samples.len()),
+        drives: vec![Vec::with_capacity(samples.len()); drives.len()],
+        accepted_steps: stats.accepted,
+        rejected_steps: stats.rejected,
+        events: stats.events,
         evaluations: 0,
     };
-    let mut dy = DVector::zeros(ys.first().map(|y| y.len()).unwrap_or(0));
-    let mut rec = Vec::new();
-    for (t, y) in ts.iter().zip(&ys) {
-        // Dense output may end with the last step's time beyond the duration's last multiple.
-        if *t > opts.duration * (1.0 + 1e-12) {
-            break;
-        }
-        model.eval(*t, y, &mut dy, Some(&mut rec))?;
+    let mut dy = vec![0.0; y.len()];
+    let mut g = vec![0.0; SWITCHES * drives.len()];
+    for (t, ys, modes) in &samples {
+        model.scratch.borrow_mut().modes.clone_from(modes);
+        model.eval(*t, ys, &mut dy, &mut g)?;
         let s = model.scratch.borrow();
         run.t.push(*t);
         run.q.push(s.state.q.clone());
         run.qd.push(s.state.qd.clone());
         run.qdd.push(s.state.qdd.clone());
         run.cut.push(s.state.cut.clone());
-        for (d, sample) in rec.iter().enumerate() {
+        for (d, sample) in s.signals.iter().enumerate() {
             run.drives[d].push(*sample);
         }
     }

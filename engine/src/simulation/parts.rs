@@ -3,7 +3,11 @@
 
 use crate::pipeline::back::modelica::mechatronics::{ClassChoice, JointKind, ParamValue};
 
-use super::{field, Controller, Drive, Motor, Reference, SimulationError, Transmission};
+use crate::sizing::parts::SERVO_MOTOR_CLASS;
+
+use super::{field, Controller, Drive, Motor, MotorKind, Reference, SimulationError, Transmission};
+
+const DC_PERMANENT_MAGNET: &str = "cad2mo.Drives.Motors.DCPermanentMagnet";
 
 fn real(c: &ClassChoice, name: &str, default: f64, field_prefix: &str) -> Result<f64, SimulationError> {
     match c.params.iter().find(|(n, _)| n == name).map(|(_, v)| v) {
@@ -26,12 +30,6 @@ pub fn drive_of(
     reference: Reference,
 ) -> Result<Drive, SimulationError> {
     let (pm, pg, pc) = (format!("{at}.motor"), format!("{at}.gear"), format!("{at}.controller"));
-    if motor.modelica_class != "cad2mo.Drives.Motors.DCPermanentMagnet" {
-        return Err(field(
-            pm,
-            format!("the simulation knows the motor class cad2mo.Drives.Motors.DCPermanentMagnet only, not {}", motor.modelica_class),
-        ));
-    }
     if controller.modelica_class != "cad2mo.Drives.Controllers.CascadePPI" {
         return Err(field(
             pc,
@@ -41,15 +39,37 @@ pub fn drive_of(
             ),
         ));
     }
-    let m = Motor {
-        r: real(motor, "R", 0.299, &pm)?,
-        l: real(motor, "L", 8.2e-5, &pm)?,
-        k: real(motor, "k", 0.0302, &pm)?,
-        j: real(motor, "J", 1.42e-5, &pm)?,
-        d: real(motor, "d", 0.0, &pm)?,
-        v_max: real(motor, "V_max", 24.0, &pm)?,
-        i_max: real(motor, "I_max", 10.0, &pm)?,
-        tc: real(motor, "Tc", 0.001, &pm)?,
+    // The defaults are the classes' own (`mechatronics.rs`'s parameter tables).
+    let m = match motor.modelica_class.as_str() {
+        DC_PERMANENT_MAGNET => Motor {
+            kind: MotorKind::DcPermanentMagnet,
+            r: real(motor, "R", 0.299, &pm)?,
+            l: real(motor, "L", 8.2e-5, &pm)?,
+            k: real(motor, "k", 0.0302, &pm)?,
+            j: real(motor, "J", 1.42e-5, &pm)?,
+            d: real(motor, "d", 0.0, &pm)?,
+            v_max: real(motor, "V_max", 24.0, &pm)?,
+            i_max: real(motor, "I_max", 10.0, &pm)?,
+            tc: real(motor, "Tc", 0.001, &pm)?,
+        },
+        // `Motors.ServoMotor`: `Tc*der(i) = i_cmd - i`, `tau = k*i`, `J*der(w) = tau + flange.tau`.
+        SERVO_MOTOR_CLASS => Motor {
+            kind: MotorKind::Servo,
+            r: 0.0,
+            l: 0.0,
+            k: real(motor, "k", 0.544, &pm)?,
+            j: real(motor, "J", 4.86e-5, &pm)?,
+            d: 0.0,
+            v_max: 0.0,
+            i_max: real(motor, "I_max", 9.3, &pm)?,
+            tc: real(motor, "Tc", 0.001, &pm)?,
+        },
+        other => {
+            return Err(field(
+                pm,
+                format!("the simulation knows the motor classes {DC_PERMANENT_MAGNET} and {SERVO_MOTOR_CLASS} only, not {other}"),
+            ))
+        }
     };
     let transmission = match (gear.modelica_class.as_str(), kind) {
         ("Modelica.Mechanics.Rotational.Components.IdealGear", JointKind::Revolute) => {

@@ -94,7 +94,7 @@ fn pendulum_drive(m: &Mechanism, i_max: f64, eta: f64, reference: Reference) -> 
     let _ = m;
     Drive {
         coordinate: 0,
-        motor: Motor { r: 0.299, l: 8.2e-5, k: 0.0302, j: 1.42e-5, d: 0.0, v_max: 24.0, i_max, tc: 0.001 },
+        motor: Motor { kind: MotorKind::DcPermanentMagnet, r: 0.299, l: 8.2e-5, k: 0.0302, j: 1.42e-5, d: 0.0, v_max: 24.0, i_max, tc: 0.001 },
         transmission: Transmission { ratio: 50.0, eta },
         controller: Controller { kp: 10.0, ks: 0.05, ts: 0.05 },
         reference,
