@@ -50,6 +50,8 @@ pub struct Stats {
     pub accepted: u32,
     pub rejected: u32,
     pub events: u32,
+    /// Crossings right after an event that did not switch (see [`integrate`]).
+    pub held: u32,
 }
 
 /// Why the integration ended early.
@@ -157,6 +159,7 @@ pub fn integrate<P: Problem>(p: &P, y: &mut [f64], t_end: f64, s: &Settings) -> 
     let mut h = initial_step(p, y, &k0[0], s, h_max, &mut y1, &mut rest[0], &mut gs);
     let mut facold = 1e-4f64;
     let mut last_rejected = false;
+    let mut after_event = false;
     let expo1 = 0.2 - 0.04 * 0.75;
     while t < t_end {
         if stats.accepted + stats.rejected >= s.max_steps {
@@ -226,17 +229,27 @@ pub fn integrate<P: Problem>(p: &P, y: &mut [f64], t_end: f64, s: &Settings) -> 
         // An event within the step: cut it back to the first crossing.
         let mut t_step_end = t1;
         let mut switched = false;
-        if ng > 0 && (0..ng).any(|j| (g0[j] > 0.0) != (g1[j] > 0.0)) && p.wants_switch(&g1) {
+        let crosses = |j: usize| (g0[j] > 0.0) != (g1[j] > 0.0) || (g0[j] < 0.0) != (g1[j] < 0.0);
+        if ng > 0 && (0..ng).any(crosses) && p.wants_switch(&g1) {
             let mut first = t1;
             for j in 0..ng {
-                if (g0[j] > 0.0) != (g1[j] > 0.0) {
+                if crosses(j) {
                     let r = locate(p, &dense, j, t, g0[j], t1, g1[j], &mut ys, &mut k[1], &mut gs);
                     first = first.min(r);
                 }
             }
-            t_step_end = first;
-            switched = true;
+            // A crossing right at the start of the step after an event: the new mode's switching
+            // function calls for the old mode at once (e.g. a lossy gear between its two power
+            // flows, which MSL's LossyGear locks). The mode holds (no zero-length ping-pong)
+            // until one of its switching functions crosses again.
+            if after_event && first - t <= 10.0 * EVENT_TIME_TOL * t.abs().max(1.0) {
+                stats.held += 1;
+            } else {
+                t_step_end = first;
+                switched = true;
+            }
         }
+        after_event = switched;
         // Output samples within (t, t_step_end].
         while next_out as f64 * s.output_interval <= t_last && out_time(next_out) <= t_step_end.min(t_last) {
             let to = out_time(next_out).min(t_end);
@@ -324,7 +337,7 @@ fn locate<P: Problem>(p: &P, dense: &Dense, j: usize, mut a: f64, mut ga: f64, m
         dense.at(t, y);
         p.eval(t, y, dy, g);
         let gt = g[j];
-        if (gt > 0.0) == (gb > 0.0) {
+        if (gt > 0.0) == (gb > 0.0) && (gt < 0.0) == (gb < 0.0) {
             b = t;
             gb = gt;
             if side == 1 {

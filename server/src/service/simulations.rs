@@ -380,7 +380,7 @@ pub fn run(req: &SimulationRequest, inputs: &Inputs, cancel: &AtomicBool, deadli
             .map(|(_, c)| c.name.clone())
             .collect(),
         orphaned,
-        solver: format!("ode_solvers Dopri5 (Dormand-Prince 5(4), error control), rtol {RTOL:e}, atol {ATOL:e}"),
+        solver: format!("Dormand-Prince 5(4) with error control, breakpoints at the reference samples and saturation events (simulation::integrate), rtol {RTOL:e}, atol {ATOL:e}"),
         steps: run.accepted_steps,
         rejected_steps: run.rejected_steps,
         evaluations: run.evaluations,
