@@ -269,7 +269,7 @@ fn drives_agree_with_an_independent_python_simulation() {
     let drives = vec![
         Drive {
             coordinate: 0,
-            motor: Motor { kind: MotorKind::DcPermanentMagnet, r: 1.0, l: 1e-3, k: 0.03, j: 1.4e-5, d: 1e-6, v_max: 24.0, i_max: 1.0, tc: 2e-3 },
+            motor: Motor { kind: MotorKind::DcPermanentMagnet, r: 1.0, l: 1e-3, k: 0.03, j: 1.4e-5, d: 1e-6, v_max: 24.0, i_max: 2.0, tc: 2e-3 },
             transmission: Transmission { ratio: 20.0, eta: 1.0 },
             controller: Controller { kp: 20.0, ks: 0.2, ts: 0.05 },
             reference: reference(0),
