@@ -249,7 +249,9 @@ fn passive_runs_agree_with_mujoco_and_pinocchio_rk4() {
 fn drives_agree_with_an_independent_python_simulation() {
     let t_start = std::time::Instant::now();
     let Some(fx) = fixtures_dir("drive simulation cross-check") else { return };
-    let Some(c) = cases_where(&fx, |l| l.ends_with("/double_pendulum.urdf")).into_iter().next() else { panic!("double pendulum fixture missing") };
+    let Some(c) = cases_where(&fx, |l| l.ends_with("/double_pendulum.urdf")).into_iter().next() else {
+        panic!("double pendulum fixture missing")
+    };
     println!("analysed in {:.2} s", t_start.elapsed().as_secs_f64());
     let (m, n) = (&c.m, c.m.dof());
     assert_eq!(n, 2);
@@ -269,7 +271,17 @@ fn drives_agree_with_an_independent_python_simulation() {
     let drives = vec![
         Drive {
             coordinate: 0,
-            motor: Motor { kind: MotorKind::DcPermanentMagnet, r: 1.0, l: 1e-3, k: 0.03, j: 1.4e-5, d: 1e-6, v_max: 24.0, i_max: 2.0, tc: 2e-3 },
+            motor: Motor {
+                kind: MotorKind::DcPermanentMagnet,
+                r: 1.0,
+                l: 1e-3,
+                k: 0.03,
+                j: 1.4e-5,
+                d: 1e-6,
+                v_max: 24.0,
+                i_max: 2.0,
+                tc: 2e-3,
+            },
             transmission: Transmission { ratio: 20.0, eta: 1.0 },
             controller: Controller { kp: 20.0, ks: 0.2, ts: 0.05 },
             reference: reference(0),

@@ -42,7 +42,17 @@ fn drives(m: &Mechanism) -> Vec<Drive> {
             let amp = 0.5 - 0.05 * k as f64;
             Drive {
                 coordinate: k,
-                motor: Motor { kind: MotorKind::DcPermanentMagnet, r: 0.299, l: 8.2e-5, k: 0.0302, j: 1.42e-5, d: 0.0, v_max: 48.0, i_max: 30.0, tc: 0.001 },
+                motor: Motor {
+                    kind: MotorKind::DcPermanentMagnet,
+                    r: 0.299,
+                    l: 8.2e-5,
+                    k: 0.0302,
+                    j: 1.42e-5,
+                    d: 0.0,
+                    v_max: 48.0,
+                    i_max: 30.0,
+                    tc: 0.001,
+                },
                 transmission: Transmission { ratio: 100.0, eta: 1.0 },
                 controller: Controller { kp: 10.0, ks: 0.5, ts: 0.05 },
                 reference: Reference::Motion {

@@ -322,7 +322,18 @@ fn initial_step<P: Problem>(p: &P, y: &[f64], f0: &[f64], s: &Settings, h_max: f
 /// The first time in (a, b] where switching function `j` has the sign it has at `b`: Illinois
 /// on the continuous extension, to [`EVENT_TIME_TOL`]; returns the right end of the bracket.
 #[allow(clippy::too_many_arguments)]
-fn locate<P: Problem>(p: &P, dense: &Dense, j: usize, mut a: f64, mut ga: f64, mut b: f64, mut gb: f64, y: &mut [f64], dy: &mut [f64], g: &mut [f64]) -> f64 {
+fn locate<P: Problem>(
+    p: &P,
+    dense: &Dense,
+    j: usize,
+    mut a: f64,
+    mut ga: f64,
+    mut b: f64,
+    mut gb: f64,
+    y: &mut [f64],
+    dy: &mut [f64],
+    g: &mut [f64],
+) -> f64 {
     let tol = EVENT_TIME_TOL * b.abs().max(1.0);
     let mut side = 0i8;
     for _ in 0..200 {

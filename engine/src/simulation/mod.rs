@@ -18,29 +18,38 @@
 //! - `Motors.DCPermanentMagnet`: `i_cmd = limit(i_ref, ±I_max)`,
 //!   `v_cmd = R·i_cmd + k·w + L/Tc·(i_cmd − i)`, `v = limit(v_cmd, ±V_max)`,
 //!   `L·di/dt = v − R·i − k·w`, `τ = k·i`, `J·ẇ = τ − d·w − τ_a` (`τ_a` the torque into the gear);
+//! - `Motors.ServoMotor` (AC servo): `i_cmd = limit(i_ref, ±I_max)`, `Tc·di/dt = i_cmd − i`,
+//!   `τ = k·i`, `J·ẇ = τ − τ_a` (no voltage model: servo datasheets give no winding R, L);
 //! - `Gears.Ideal`/`LeadScrew`: the joint gets `r·τ_a`; `Gears.Efficiency` (MSL `LossyGear`,
 //!   `lossTable = [0, η, η, 0, 0]`): `η·r·τ_a` while power flows from the motor to the joint
 //!   (`τ_a·w ≥ 0`), `r·τ_a/η` while it flows back. The rotor inertia thus appears on the joint as
-//!   an armature `J·r²` (times `η` or `1/η`), added to the mass matrix. The flow direction depends
-//!   on the acceleration through `τ_a`; it is found by trying the direction of `(k·i − d·w)·w` and
-//!   switching drives whose `τ_a·w` disagrees (at most 4 passes). MSL's stuck mode at `w = 0`
-//!   (`LossyGear` locking while the torque ratio lies between η and 1/η) is not modelled: at
-//!   `w = 0` the flow counts as forward.
-//! - Saturations are `smooth(0, noEvent(...))` in the classes: continuous, without events, so
-//!   they are evaluated as plain clamps (no chatter: no mode switching in the integrator).
+//!   an armature `J·r²` (times `η` or `1/η`), added to the mass matrix.
+//!
+//! # Modes and events
+//! The limiters (current, voltage) and a lossy gear's direction of power flow are *modes*
+//! (`Mode`): between events the equations are evaluated in fixed modes (a limiter linear or at
+//! ±its limit, a gear forward or backward), so the right-hand side is smooth there. The
+//! switching functions `i_ref ∓ I_max`, `v_cmd ∓ V_max` and `τ_a·w` are watched by the
+//! integrator ([`integrate`]): a step across which one changes sign and after which another mode
+//! is called for is cut back to the crossing (located to 1e-12 s), the mode switches there and
+//! the integration restarts. The classes write the limiters as `smooth(0, noEvent(...))`
+//! (continuous): the mode formulation computes the same function, without a step across its
+//! kinks. A lossy gear whose new mode calls for the old one at once (MSL's `LossyGear` would
+//! lock: its torque ratio between η and 1/η) keeps its mode until its switching function
+//! crosses again; the locked state itself is not modelled. The reference's samples (a motion's
+//! or a table's, interpolated linearly) are breakpoints where steps end.
 //!
 //! Extra generalised forces (joint damping, friction, couplings) enter through
 //! [`GeneralisedForces`], added to the drive torques before the forward dynamics.
 //!
 //! # Integration
-//! `ode_solvers::Dopri5` (Dormand–Prince 5(4), error control, dense output at the output
-//! interval): pure Rust on nalgebra 0.33 (our version). The drive equations are mildly stiff
-//! (current-loop time constant `Tc`, electrical `L/R` under voltage saturation, ~0.1–1 ms),
-//! which an explicit method follows at steps of that size: while a motor's voltage is limited,
-//! `−R/L` (about −3600/s for the default motor) bounds the step near 1 ms, stable under error
-//! control. Dopri5's stiffness abort is off for that reason; `max_steps` bounds the work. A
-//! stiff (implicit) solver would take larger steps there; the explicit one was chosen for
-//! being small, pure Rust and on our nalgebra (`diffsol` brings its own linear-algebra stack).
+//! [`integrate`]: Dormand–Prince 5(4) with Hairer's PI step-size control and its continuous
+//! extension (output samples, event location), our own so that steps end at breakpoints and
+//! events (`ode_solvers`' `Dopri5`, used before, steps across kinks). The drive equations are
+//! mildly stiff (current loop `1/Tc`, electrical `R/L`, ~1000–5000/s), which the explicit
+//! method follows at steps near 1 ms, stable under error control; `max_steps` bounds the work.
+//! Tolerances are the caller's (`Options::rtol`, `atol`; the service uses 1e-6 and 1e-8; the
+//! cross-check with Python 1e-10 and 1e-12).
 
 mod answer;
 pub mod integrate;

@@ -94,7 +94,17 @@ fn pendulum_drive(m: &Mechanism, i_max: f64, eta: f64, reference: Reference) -> 
     let _ = m;
     Drive {
         coordinate: 0,
-        motor: Motor { kind: MotorKind::DcPermanentMagnet, r: 0.299, l: 8.2e-5, k: 0.0302, j: 1.42e-5, d: 0.0, v_max: 24.0, i_max, tc: 0.001 },
+        motor: Motor {
+            kind: MotorKind::DcPermanentMagnet,
+            r: 0.299,
+            l: 8.2e-5,
+            k: 0.0302,
+            j: 1.42e-5,
+            d: 0.0,
+            v_max: 24.0,
+            i_max,
+            tc: 0.001,
+        },
         transmission: Transmission { ratio: 50.0, eta },
         controller: Controller { kp: 10.0, ks: 0.05, ts: 0.05 },
         reference,
@@ -214,4 +224,33 @@ fn the_result_file_reads_back_with_the_packages_names() {
             assert!(q.angle_to(&pose.rotation) < 1e-5, "{body} at {k}");
         }
     }
+}
+
+#[test]
+fn the_servo_motor_class_is_simulated_and_the_msl_machine_is_refused_by_name() {
+    use crate::pipeline::back::modelica::mechatronics::{ClassChoice, JointKind, ParamValue};
+    let choice = |class: &str, params: &[(&str, f64)]| ClassChoice {
+        modelica_class: class.to_string(),
+        params: params.iter().map(|(n, v)| (n.to_string(), ParamValue::Real(*v))).collect(),
+        instance: String::new(),
+    };
+    let gear = choice("Modelica.Mechanics.Rotational.Components.IdealGear", &[("ratio", 50.0)]);
+    let controller = choice("cad2mo.Drives.Controllers.CascadePPI", &[("kp", 10.0), ("ks", 0.05), ("Ts", 0.05)]);
+    let servo = choice("cad2mo.Drives.Motors.ServoMotor", &[("k", 0.05), ("J", 1.42e-5), ("I_max", 5.0)]);
+    let m = arm(1);
+    let target = m.q0()[0] + 0.5;
+    let drive = drive_of("drives.J1", 0, JointKind::Revolute, &servo, &gear, &controller, Reference::Constant(target)).expect("servo");
+    assert_eq!(drive.motor.kind, MotorKind::Servo);
+    assert_eq!((drive.motor.k, drive.motor.i_max, drive.motor.tc), (0.05, 5.0, 0.001));
+    // The servo drive holds the pendulum at the reference: Tc·di/dt = i_cmd − i, τ = k·i.
+    let g = Vector3::new(0.0, -9.81, 0.0);
+    let opts = Options { duration: 2.0, output_interval: 0.01, rtol: 1e-8, atol: 1e-10, ..Options::default() };
+    let run = simulate(&m, &g, std::slice::from_ref(&drive), &NoForces, &Start { q: m.q0(), qd: vec![0.0] }, &opts, &never).expect("runs");
+    let last = run.q.last().expect("samples")[0];
+    assert!((last - target).abs() < 1e-3, "ends at {last}, reference {target}");
+    let s = run.drives[0].last().expect("samples");
+    assert!((s.tau - 0.05 * s.i).abs() < 1e-15 && s.v == 0.0, "{s:?}");
+    let msl = choice("Modelica.Electrical.Machines.BasicMachines.DCMachines.DC_PermanentMagnet", &[]);
+    let err = drive_of("drives.J1", 0, JointKind::Revolute, &msl, &gear, &controller, Reference::Constant(0.0)).expect_err("refused");
+    assert!(matches!(&err, SimulationError::Field { field, .. } if field == "drives.J1.motor"), "{err}");
 }
