@@ -562,8 +562,15 @@ async fn convert(ctx: &Ctx, job: &ClaimedJob) -> Result<Stored, JobError> {
         crate::store::collision::edits(&ctx.store, &job.model_id).await?.into_iter().map(|(a, b, x)| ((a, b), x)).collect();
     let shape_cache: Arc<dyn cad2mo_engine::collision::ShapeCache> = ctx.shapes.clone();
     let step_cache: Arc<dyn cad2mo_engine::pipeline::front::mesh::step::StepCache> = ctx.steps.clone();
-    let context =
-        export::Context { name_hints: hints, live, collision_edits, shape_cache: Some(shape_cache), step_cache: Some(step_cache) };
+    let scene = crate::store::scene::get(&ctx.store, &job.model_id).await?;
+    let context = export::Context {
+        name_hints: hints,
+        live,
+        collision_edits,
+        shape_cache: Some(shape_cache),
+        step_cache: Some(step_cache),
+        scene,
+    };
     let blobs = ctx.blobs.clone();
     let board = ctx.board.clone();
     let job_id = job.id.clone();

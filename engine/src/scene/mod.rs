@@ -540,5 +540,7 @@ impl SceneObject {
     }
 }
 
+pub mod package;
+
 #[cfg(test)]
 mod tests;

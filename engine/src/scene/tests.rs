@@ -50,6 +50,19 @@ fn every_bad_field_is_named() {
     assert_eq!(b(serde_json::json!({"name": "2bad"})), ["objects[0].name"]);
     assert_eq!(b(serde_json::json!({"kind": "flying"})), ["objects[0].kind"]);
     assert_eq!(b(serde_json::json!({"kind": "free"})), ["objects[0].mass"]);
+    assert_eq!(b(serde_json::json!({"kind": "free", "mass": 0})), ["objects[0].mass"]);
+    assert_eq!(b(serde_json::json!({"kind": "free", "mass": -2})), ["objects[0].mass"]);
+    // Principal moments: positive, and each at most the sum of the other two.
+    assert_eq!(b(serde_json::json!({"kind": "free", "mass": 1, "inertia": [0.1, 0.1, 0.3]})), ["objects[0].inertia"]);
+    assert_eq!(b(serde_json::json!({"kind": "free", "mass": 1, "inertia": [0.1, 0, 0.1]})), ["objects[0].inertia"]);
+    assert_eq!(b(serde_json::json!({"kind": "free", "mass": 1, "inertia": [-0.1, 0.1, 0.1]})), ["objects[0].inertia"]);
+    assert!(check(
+        &spec(serde_json::json!({"objects": [{"name": "a", "shape": {"kind": "box", "size": [1, 1, 1]}, "position": [0, 0, 0],
+            "kind": "free", "mass": 1, "inertia": [0.1, 0.1, 0.2]}]})),
+        &bodies
+    )
+    .is_ok(), "a flat plate's moments (A + B = C) are physical");
+    assert_eq!(b(serde_json::json!({"mass": 1})), ["objects[0].mass"]);
     assert_eq!(b(serde_json::json!({"kind": "moving"})), ["objects[0].motion"]);
     assert_eq!(b(serde_json::json!({"attached_to": "NOPE"})), ["objects[0].attached_to"]);
     assert_eq!(b(serde_json::json!({"color": [2, 0, 0]})), ["objects[0].color"]);
