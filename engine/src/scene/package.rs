@@ -390,7 +390,7 @@ pub fn mjcf(mjcf: &str, scene: &Scene) -> String {
         }
     }
     for line in mjcf.split_inclusive('\n') {
-        if line.trim_end() == "</worldbody>" {
+        if line.trim() == "</worldbody>" {
             out.push_str(&world);
         }
         out.push_str(line);
