@@ -185,6 +185,24 @@ async fn scenes_are_stored_checked_and_collide() {
     json_of(put(scene(0.55)).await.expect("put"), 200).await;
     let (_, v2, job2) = app.upload_version_ok(&id, arm(), &[]).await;
     assert_eq!(app.wait_for_job(&job2).await["status"], "succeeded");
+    // The job wrote the stored scene into the new version's package: Mechatronics and MJCF.
+    let zip = app.package(&id, v2).await.bytes().await.expect("zip");
+    let mut z = zip::ZipArchive::new(std::io::Cursor::new(zip.to_vec())).expect("zip");
+    let mut read = |suffix: &str| -> String {
+        let name = z.file_names().find(|n| n.ends_with(suffix)).unwrap_or_else(|| panic!("no {suffix}")).to_string();
+        let mut s = String::new();
+        std::io::Read::read_to_string(&mut z.by_name(&name).expect("entry"), &mut s).expect("utf-8");
+        s
+    };
+    let mech = read("/Mechatronics.mo");
+    for needle in
+        ["scene_wall_shape(", "Parts.Body scene_pallet(m=3,", "\"scene_crate\"", "connect(arm.frame_a, scene_tool_frame.frame_a);"]
+    {
+        assert!(mech.contains(needle), "the package's Mechatronics.mo lacks {needle}");
+    }
+    let mjcf = read(".mjcf.xml");
+    assert!(mjcf.contains("<body name=\"pallet\"") && mjcf.contains("<freejoint name=\"pallet_free\"/>"), "{mjcf}");
+    assert!(mjcf.contains("<geom name=\"wall\" type=\"box\""), "{mjcf}");
     same_scene(&json_of(app.get(&url).await, 200).await, &scene(0.55));
     let c = json_of(app.get(&format!("/api/models/{id}/versions/{v2}/collision")).await, 200).await;
     assert_eq!(interference_names(&c), [("arm".to_string(), "wall".to_string())], "{c:#}");

@@ -563,14 +563,8 @@ async fn convert(ctx: &Ctx, job: &ClaimedJob) -> Result<Stored, JobError> {
     let shape_cache: Arc<dyn cad2mo_engine::collision::ShapeCache> = ctx.shapes.clone();
     let step_cache: Arc<dyn cad2mo_engine::pipeline::front::mesh::step::StepCache> = ctx.steps.clone();
     let scene = crate::store::scene::get(&ctx.store, &job.model_id).await?;
-    let context = export::Context {
-        name_hints: hints,
-        live,
-        collision_edits,
-        shape_cache: Some(shape_cache),
-        step_cache: Some(step_cache),
-        scene,
-    };
+    let context =
+        export::Context { name_hints: hints, live, collision_edits, shape_cache: Some(shape_cache), step_cache: Some(step_cache), scene };
     let blobs = ctx.blobs.clone();
     let board = ctx.board.clone();
     let job_id = job.id.clone();

@@ -103,9 +103,7 @@ fn shape_modifiers(shape: &Shape) -> String {
         Shape::Sphere { radius: r } => ("sphere", [-r, 0.0, 0.0], [1.0, 0.0, 0.0], 2.0 * r, 2.0 * r, 2.0 * r),
         Shape::Cylinder { radius: r, length: l } => ("cylinder", [0.0, 0.0, -l / 2.0], [0.0, 0.0, 1.0], l, 2.0 * r, 2.0 * r),
         // Drawn as the cylinder through both caps.
-        Shape::Capsule { radius: r, length: l } => {
-            ("cylinder", [0.0, 0.0, -l / 2.0 - r], [0.0, 0.0, 1.0], l + 2.0 * r, 2.0 * r, 2.0 * r)
-        }
+        Shape::Capsule { radius: r, length: l } => ("cylinder", [0.0, 0.0, -l / 2.0 - r], [0.0, 0.0, 1.0], l + 2.0 * r, 2.0 * r, 2.0 * r),
     };
     let width_dir = if dir[0] == 1.0 { "{0, 1, 0}" } else { "{1, 0, 0}" };
     format!(

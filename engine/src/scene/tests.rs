@@ -56,12 +56,15 @@ fn every_bad_field_is_named() {
     assert_eq!(b(serde_json::json!({"kind": "free", "mass": 1, "inertia": [0.1, 0.1, 0.3]})), ["objects[0].inertia"]);
     assert_eq!(b(serde_json::json!({"kind": "free", "mass": 1, "inertia": [0.1, 0, 0.1]})), ["objects[0].inertia"]);
     assert_eq!(b(serde_json::json!({"kind": "free", "mass": 1, "inertia": [-0.1, 0.1, 0.1]})), ["objects[0].inertia"]);
-    assert!(check(
-        &spec(serde_json::json!({"objects": [{"name": "a", "shape": {"kind": "box", "size": [1, 1, 1]}, "position": [0, 0, 0],
+    assert!(
+        check(
+            &spec(serde_json::json!({"objects": [{"name": "a", "shape": {"kind": "box", "size": [1, 1, 1]}, "position": [0, 0, 0],
             "kind": "free", "mass": 1, "inertia": [0.1, 0.1, 0.2]}]})),
-        &bodies
-    )
-    .is_ok(), "a flat plate's moments (A + B = C) are physical");
+            &bodies
+        )
+        .is_ok(),
+        "a flat plate's moments (A + B = C) are physical"
+    );
     assert_eq!(b(serde_json::json!({"mass": 1})), ["objects[0].mass"]);
     assert_eq!(b(serde_json::json!({"kind": "moving"})), ["objects[0].motion"]);
     assert_eq!(b(serde_json::json!({"attached_to": "NOPE"})), ["objects[0].attached_to"]);
