@@ -196,7 +196,7 @@ async fn scenes_are_stored_checked_and_collide() {
     };
     let mech = read("/Mechatronics.mo");
     for needle in
-        ["scene_wall_shape(", "Parts.Body scene_pallet(m=3,", "\"scene_crate\"", "connect(arm.frame_a, scene_tool_frame.frame_a);"]
+        ["scene_wall_shape(", "Parts.Body scene_pallet(m=3.0,", "\"scene_crate\"", "connect(arm.frame_a, scene_tool_frame.frame_a);"]
     {
         assert!(mech.contains(needle), "the package's Mechatronics.mo lacks {needle}");
     }
