@@ -70,6 +70,9 @@ pub struct Options {
     /// (objects this version cannot take are left out with a `scene-object-omitted` warning),
     /// then written into `Mechatronics.mo` and the MJCF.
     pub scene: crate::scene::SceneSpec,
+    /// The meshes uploaded for the scene by name: mesh objects take their hull for contacts and
+    /// the package gets their files under `Resources/Shapes/`.
+    pub scene_meshes: crate::scene::Meshes,
 }
 
 impl Default for Options {
@@ -87,6 +90,7 @@ impl Default for Options {
             shape_cache: None,
             step_cache: None,
             scene: Default::default(),
+            scene_meshes: Default::default(),
         }
     }
 }
@@ -464,11 +468,11 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
     report.collision = Some(collision_report);
     // The scene: its objects checked against this version's bodies (those it cannot take left
     // out, named), then its part of Mechatronics and of the MJCF.
-    let (scene, omitted) = crate::scene::check_stored(&opts.scene, &names);
+    let (scene, omitted) = crate::scene::check_stored(&opts.scene, &names, &opts.scene_meshes);
     for i in omitted {
         report.warnings.push(Warning::new("scene-object-omitted", format!("{} {}: left out of the package", i.field, i.message), ""));
     }
-    let scene_modelica = crate::scene::package::modelica(&scene);
+    let scene_modelica = crate::scene::package::modelica(&scene, &package_name);
     // The shape files (collision parts, DXF and STL per body) and the MuJoCo and URDF exports
     // depend on nothing below: they are written on other threads meanwhile.
     let mut files = pkg.files;
@@ -499,6 +503,9 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
         let join = |h: std::thread::ScopedJoinHandle<'_, _>| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e));
         let drives = obs.drives(&report, &opts.drives);
         files.extend(back::modelica::mechatronics::components(&package_name));
+        if opts.write_shapes {
+            files.extend(crate::scene::package::mesh_files(scene, &opts.scene_meshes, &package_name));
+        }
         let extras = obs.extras(
             &observe::ModelView { model: &a.model, validated: &a.validated, layout: &pkg.layout, package_name: &package_name },
             &drives,

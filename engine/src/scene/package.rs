@@ -96,7 +96,15 @@ pub fn xyz_angles(q: &UnitQuaternion<f64>) -> [f64; 3] {
 }
 
 /// The MSL shape modifiers drawing `shape` centred on its frame.
-fn shape_modifiers(shape: &Shape) -> String {
+fn shape_modifiers(shape: &Shape, pkg: &str) -> String {
+    if let Shape::Mesh { mesh, scale, .. } = shape {
+        // An external shape: length, width and height scale the file's x, y and z.
+        return format!(
+            "shapeType=\"modelica://{pkg}/Resources/Shapes/{}\", r_shape={{0, 0, 0}}, lengthDirection={{1, 0, 0}}, widthDirection={{0, 1, 0}}, length={s}, width={s}, height={s}, extra=0",
+            mesh_file(mesh),
+            s = num(*scale)
+        );
+    }
     let (kind, r_shape, dir, len, w, h) = match *shape {
         Shape::Box { size: [a, b, c] } => ("box", [-a / 2.0, 0.0, 0.0], [1.0, 0.0, 0.0], a, b, c),
         Shape::Plane => ("box", [-PLANE_SIZE / 2.0, 0.0, -PLANE_DEPTH / 2.0], [1.0, 0.0, 0.0], PLANE_SIZE, PLANE_SIZE, PLANE_DEPTH),
@@ -104,6 +112,7 @@ fn shape_modifiers(shape: &Shape) -> String {
         Shape::Cylinder { radius: r, length: l } => ("cylinder", [0.0, 0.0, -l / 2.0], [0.0, 0.0, 1.0], l, 2.0 * r, 2.0 * r),
         // Drawn as the cylinder through both caps.
         Shape::Capsule { radius: r, length: l } => ("cylinder", [0.0, 0.0, -l / 2.0 - r], [0.0, 0.0, 1.0], l + 2.0 * r, 2.0 * r, 2.0 * r),
+        Shape::Mesh { .. } => unreachable!("drawn from its file above"),
     };
     let width_dir = if dir[0] == 1.0 { "{0, 1, 0}" } else { "{1, 0, 0}" };
     format!(
@@ -163,7 +172,28 @@ fn matrix(rows: impl Iterator<Item = Vec<f64>>) -> String {
 }
 
 /// The scene's declarations for `Mechatronics` and its members of the contact world.
-pub fn modelica(scene: &Scene) -> Modelica {
+/// The file of a scene mesh under `Resources/Shapes/` (a `-` keeps it apart from the bodies'
+/// shapes, whose stems are identifiers).
+pub fn mesh_file(mesh: &str) -> String {
+    format!("scene-{mesh}.stl")
+}
+
+/// The scene's mesh files for the package: `(path, bytes)` under `{pkg}/Resources/Shapes/`, one
+/// per mesh some object uses.
+pub fn mesh_files(scene: &Scene, meshes: &super::Meshes, pkg: &str) -> Vec<(String, Vec<u8>)> {
+    let used: std::collections::BTreeSet<&str> = scene
+        .objects
+        .iter()
+        .filter_map(|o| match &o.shape {
+            Shape::Mesh { mesh, .. } => Some(mesh.as_str()),
+            _ => None,
+        })
+        .collect();
+    used.into_iter().filter_map(|m| Some((format!("{pkg}/Resources/Shapes/{}", mesh_file(m)), meshes.get(m)?.stl.clone()))).collect()
+}
+
+/// The scene's part of `Mechatronics` in package `pkg`.
+pub fn modelica(scene: &Scene, pkg: &str) -> Modelica {
     if scene.objects.is_empty() {
         return Modelica::default();
     }
@@ -278,7 +308,7 @@ pub fn modelica(scene: &Scene) -> Modelica {
         let _ = writeln!(
             decl,
             "  Modelica.Mechanics.MultiBody.Visualizers.Advanced.Shape {c}_shape({}, color={{{}, {}, {}}}, r={r}, R={rot}) if {} \"Shape of {}\"\n    {PLACEHOLDER};",
-            shape_modifiers(&o.shape),
+            shape_modifiers(&o.shape, pkg),
             num(rgb[0]),
             num(rgb[1]),
             num(rgb[2]),
@@ -304,6 +334,7 @@ fn mj(x: f64) -> String {
 
 fn geom(o: &SceneObject, pose: &Isometry3<f64>) -> String {
     let (kind, size) = match o.shape {
+        Shape::Mesh { .. } => ("mesh", String::new()),
         Shape::Box { size: [a, b, c] } => ("box", format!("{} {} {}", mj(a / 2.0), mj(b / 2.0), mj(c / 2.0))),
         Shape::Plane => ("plane", format!("{} {} {}", mj(PLANE_SIZE / 2.0), mj(PLANE_SIZE / 2.0), mj(PLANE_DEPTH))),
         Shape::Sphere { radius } => ("sphere", mj(radius)),
@@ -312,8 +343,9 @@ fn geom(o: &SceneObject, pose: &Isometry3<f64>) -> String {
     };
     let (t, q) = (pose.translation.vector, pose.rotation);
     let [r, g, b] = o.color;
+    let size = if kind == "mesh" { format!("mesh=\"scene-{}\"", attr(&o.name)) } else { format!("size=\"{size}\"") };
     format!(
-        "<geom name=\"{}\" type=\"{kind}\" size=\"{size}\" pos=\"{} {} {}\" quat=\"{} {} {} {}\" rgba=\"{} {} {} {}\"/>",
+        "<geom name=\"{}\" type=\"{kind}\" {size} pos=\"{} {} {}\" quat=\"{} {} {} {}\" rgba=\"{} {} {} {}\"/>",
         attr(&o.name),
         mj(t.x),
         mj(t.y),
@@ -387,7 +419,34 @@ pub fn mjcf(mjcf: &str, scene: &Scene) -> String {
             }
         }
     }
+    // Mesh assets, one per mesh object (its unit's scale), in the model's <asset> or a new one.
+    let mut assets = String::new();
+    for o in &scene.objects {
+        if let Shape::Mesh { mesh, scale, .. } = &o.shape {
+            let _ = writeln!(
+                assets,
+                "    <mesh name=\"scene-{}\" file=\"{}\" scale=\"{s} {s} {s}\"/>",
+                attr(&o.name),
+                attr(&mesh_file(mesh)),
+                s = mj(*scale)
+            );
+        }
+    }
+    let has_asset = mjcf.lines().any(|l| l.trim() == "</asset>");
     for line in mjcf.split_inclusive('\n') {
+        if !assets.is_empty() {
+            let t = line.trim();
+            if (has_asset && t == "</asset>") || (!has_asset && t.starts_with("<worldbody")) {
+                if !has_asset {
+                    out.push_str("  <asset>\n");
+                }
+                out.push_str(&assets);
+                if !has_asset {
+                    out.push_str("  </asset>\n");
+                }
+                assets.clear();
+            }
+        }
         if line.trim() == "</worldbody>" {
             out.push_str(&world);
         }
