@@ -296,9 +296,8 @@ async fn mesh_objects_are_uploaded_collide_and_ship() {
     let (id, _, job) = app.upload_model_ok(arm(), &[]).await;
     assert_eq!(app.wait_for_job(&job).await["status"], "succeeded");
     let mesh_url = |name: &str, file: &str| app.url(&format!("/api/models/{id}/scene/meshes/{name}?file={file}"));
-    let upload = |name: &str, file: &str, body: Vec<u8>| {
-        app.client.put(mesh_url(name, file)).header("X-Requested-With", "cad2mo").body(body).send()
-    };
+    let upload =
+        |name: &str, file: &str, body: Vec<u8>| app.client.put(mesh_url(name, file)).header("X-Requested-With", "cad2mo").body(body).send();
 
     // Upload a cube of 100 mm (ASCII STL) and a tetrahedron (OBJ); read them back.
     let r = json_of(upload("block", "block.stl", cube_stl(100.0).into_bytes()).await.expect("put"), 200).await;
@@ -309,7 +308,8 @@ async fn mesh_objects_are_uploaded_collide_and_ship() {
     assert_eq!(list, json!({"meshes": [{"name": "block", "triangles": 12}, {"name": "tetra", "triangles": 4}]}));
 
     // Bad uploads: 422 naming the file or the name; too big: 413.
-    let p = json_of(upload("bad", "bad.stl", b"solid x\nfacet normal 0 0 0\nouter loop\nvertex 1 2\n".to_vec()).await.expect("put"), 422).await;
+    let p =
+        json_of(upload("bad", "bad.stl", b"solid x\nfacet normal 0 0 0\nouter loop\nvertex 1 2\n".to_vec()).await.expect("put"), 422).await;
     assert_eq!(p["errors"][0]["field"], "file", "{p:#}");
     let p = json_of(upload("flat", "flat.obj", b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n".to_vec()).await.expect("put"), 422).await;
     assert_eq!(p["errors"][0]["field"], "file", "{p:#}");
@@ -324,9 +324,7 @@ async fn mesh_objects_are_uploaded_collide_and_ship() {
     // A mesh object at the arm's top, in mm: the cube spans z 0.55 .. 0.65, the arm reaches
     // 0.6, so they overlap by 0.05 m upwards (sideways by 0.07 m): an interference of depth 0.05.
     let url = format!("/api/models/{id}/scene");
-    let block = |mesh: &str, unit: &str| {
-        json!({"objects": [{"name": "block", "shape": {"kind": "mesh", "mesh": mesh, "unit": unit}, "position": [0, 0, 0.6]}]})
-    };
+    let block = |mesh: &str, unit: &str| json!({"objects": [{"name": "block", "shape": {"kind": "mesh", "mesh": mesh, "unit": unit}, "position": [0, 0, 0.6]}]});
     let stored = json_of(app.client.put(app.url(&url)).json(&block("block", "mm")).send().await.expect("put"), 200).await;
     same_scene(&stored, &block("block", "mm"));
     let collision = |v: i64| format!("/api/models/{id}/versions/{v}/collision");
@@ -340,7 +338,10 @@ async fn mesh_objects_are_uploaded_collide_and_ship() {
         (block("nope", "mm"), "objects[0].shape.mesh"),
         (block("block", "furlong"), "objects[0].shape.unit"),
         (json!({"objects": [{"name": "b", "shape": {"kind": "mesh"}, "position": [0, 0, 0]}]}), "objects[0].shape.mesh"),
-        (json!({"objects": [{"name": "b", "shape": {"kind": "box", "size": [1, 1, 1], "unit": "mm"}, "position": [0, 0, 0]}]}), "objects[0].shape.unit"),
+        (
+            json!({"objects": [{"name": "b", "shape": {"kind": "box", "size": [1, 1, 1], "unit": "mm"}, "position": [0, 0, 0]}]}),
+            "objects[0].shape.unit",
+        ),
     ] {
         let p = json_of(app.client.put(app.url(&url)).json(&body).send().await.expect("put"), 422).await;
         assert_eq!(p["errors"][0]["field"], field, "{body}: {p:#}");

@@ -563,11 +563,8 @@ async fn convert(ctx: &Ctx, job: &ClaimedJob) -> Result<Stored, JobError> {
     let shape_cache: Arc<dyn cad2mo_engine::collision::ShapeCache> = ctx.shapes.clone();
     let step_cache: Arc<dyn cad2mo_engine::pipeline::front::mesh::step::StepCache> = ctx.steps.clone();
     let scene = crate::store::scene::get(&ctx.store, &job.model_id).await?;
-    let mesh_rows: Vec<(String, String)> = crate::store::scene::meshes(&ctx.store, &job.model_id)
-        .await?
-        .into_iter()
-        .map(|r| (r.name, r.blob_sha256))
-        .collect();
+    let mesh_rows: Vec<(String, String)> =
+        crate::store::scene::meshes(&ctx.store, &job.model_id).await?.into_iter().map(|r| (r.name, r.blob_sha256)).collect();
     let scene_meshes = {
         let blobs = ctx.blobs.clone();
         tokio::task::spawn_blocking(move || crate::service::scene::load_meshes(&mesh_rows, |h| blobs.get(h)))

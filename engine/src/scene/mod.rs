@@ -144,14 +144,28 @@ pub struct PoseRow {
 /// A checked primitive, in its own frame.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Shape {
-    Box { size: [f64; 3] },
-    Cylinder { radius: f64, length: f64 },
-    Sphere { radius: f64 },
-    Capsule { radius: f64, length: f64 },
+    Box {
+        size: [f64; 3],
+    },
+    Cylinder {
+        radius: f64,
+        length: f64,
+    },
+    Sphere {
+        radius: f64,
+    },
+    Capsule {
+        radius: f64,
+        length: f64,
+    },
     Plane,
     /// An uploaded mesh, `scale` m per file unit; collisions take its convex hull (`hull`, in
     /// metres in the object's frame).
-    Mesh { mesh: String, scale: f64, hull: ConvexPart },
+    Mesh {
+        mesh: String,
+        scale: f64,
+        hull: ConvexPart,
+    },
 }
 
 /// A checked object's kind.

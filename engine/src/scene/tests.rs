@@ -142,7 +142,9 @@ fn mesh_objects_take_their_hull_scaled_by_their_unit_and_ship_their_file() {
     assert_eq!(files.len(), 1);
     assert_eq!(files[0].0, "P/Resources/Shapes/scene-tetra.stl");
     let m = package::modelica(&s, "P");
-    assert!(m.declarations.contains("shapeType=\"modelica://P/Resources/Shapes/scene-tetra.stl\"") && m.declarations.contains("length=0.001,"));
+    assert!(
+        m.declarations.contains("shapeType=\"modelica://P/Resources/Shapes/scene-tetra.stl\"") && m.declarations.contains("length=0.001,")
+    );
     let x = package::mjcf("<mujoco>\n  <worldbody>\n  </worldbody>\n</mujoco>\n", &s);
     assert!(x.contains("  <asset>\n    <mesh name=\"scene-wedge\" file=\"scene-tetra.stl\" scale=\"0.001 0.001 0.001\"/>\n"), "{x}");
     assert!(x.find("</asset>").expect("asset") < x.find("<worldbody>").expect("worldbody"), "{x}");

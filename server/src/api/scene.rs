@@ -8,10 +8,10 @@ use axum::routing::{get, put};
 use axum::{Json, Router};
 
 use super::collision::shapes;
+use super::error::blocking;
 use super::error::FieldError;
 use super::extract::Path;
 use super::motions::model_exists;
-use super::error::blocking;
 use super::ApiError;
 use crate::app::AppState;
 use crate::service;

@@ -57,10 +57,7 @@ pub fn read_mesh(name: &str, file: &str, bytes: &[u8]) -> Result<SceneMesh, Scen
 }
 
 /// The stored meshes from their blobs (`get`: a blob's bytes by hash), by name.
-pub fn load_meshes(
-    rows: &[(String, String)],
-    get: impl Fn(&str) -> std::io::Result<Option<Vec<u8>>>,
-) -> anyhow::Result<Meshes> {
+pub fn load_meshes(rows: &[(String, String)], get: impl Fn(&str) -> std::io::Result<Option<Vec<u8>>>) -> anyhow::Result<Meshes> {
     let mut out = Meshes::new();
     for (name, hash) in rows {
         let bytes = get(hash)?.ok_or_else(|| anyhow::anyhow!("the blob {hash} of scene mesh {name} is missing"))?;

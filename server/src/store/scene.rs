@@ -57,16 +57,14 @@ pub async fn put_mesh(store: &Store, model_id: &str, name: &str, blob_sha256: &s
         .bind(name)
         .execute(&mut *tx)
         .await?;
-    sqlx::query(&store.pool.sql(
-        "INSERT INTO scene_meshes (model_id, name, blob_sha256, triangles, updated_at) VALUES (?, ?, ?, ?, ?)",
-    ))
-    .bind(model_id)
-    .bind(name)
-    .bind(blob_sha256)
-    .bind(triangles)
-    .bind(&t)
-    .execute(&mut *tx)
-    .await?;
+    sqlx::query(&store.pool.sql("INSERT INTO scene_meshes (model_id, name, blob_sha256, triangles, updated_at) VALUES (?, ?, ?, ?, ?)"))
+        .bind(model_id)
+        .bind(name)
+        .bind(blob_sha256)
+        .bind(triangles)
+        .bind(&t)
+        .execute(&mut *tx)
+        .await?;
     tx.commit().await?;
     Ok(())
 }
