@@ -1,5 +1,5 @@
 //! Scenes (issue 29): the machine's environment, no IO. A model's scene is a list of named
-//! objects (primitives: box, cylinder, sphere, capsule, plane), each static (fixed in the world or
+//! objects (primitives: box, cylinder, sphere, capsule, plane; or an uploaded mesh, see [`mesh`]), each static (fixed in the world or
 //! attached to a body), moving (a prescribed motion: constant velocity, or a table of poses over
 //! time) or free (a rigid object with mass). The user's [`SceneSpec`] is checked once
 //! ([`check`]: every problem an [`Issue`] naming its field, e.g. `objects[2].rotation`) into a
