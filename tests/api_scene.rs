@@ -185,6 +185,24 @@ async fn scenes_are_stored_checked_and_collide() {
     json_of(put(scene(0.55)).await.expect("put"), 200).await;
     let (_, v2, job2) = app.upload_version_ok(&id, arm(), &[]).await;
     assert_eq!(app.wait_for_job(&job2).await["status"], "succeeded");
+    // The job wrote the stored scene into the new version's package: Mechatronics and MJCF.
+    let zip = app.package(&id, v2).await.bytes().await.expect("zip");
+    let mut z = zip::ZipArchive::new(std::io::Cursor::new(zip.to_vec())).expect("zip");
+    let mut read = |suffix: &str| -> String {
+        let name = z.file_names().find(|n| n.ends_with(suffix)).unwrap_or_else(|| panic!("no {suffix}")).to_string();
+        let mut s = String::new();
+        std::io::Read::read_to_string(&mut z.by_name(&name).expect("entry"), &mut s).expect("utf-8");
+        s
+    };
+    let mech = read("/Mechatronics.mo");
+    for needle in
+        ["scene_wall_shape(", "Parts.Body scene_pallet(m=3.0,", "\"scene_crate\"", "connect(arm.frame_a, scene_tool_frame.frame_a);"]
+    {
+        assert!(mech.contains(needle), "the package's Mechatronics.mo lacks {needle}");
+    }
+    let mjcf = read(".mjcf.xml");
+    assert!(mjcf.contains("<body name=\"pallet\"") && mjcf.contains("<freejoint name=\"pallet_free\"/>"), "{mjcf}");
+    assert!(mjcf.contains("<geom name=\"wall\" type=\"box\""), "{mjcf}");
     same_scene(&json_of(app.get(&url).await, 200).await, &scene(0.55));
     let c = json_of(app.get(&format!("/api/models/{id}/versions/{v2}/collision")).await, 200).await;
     assert_eq!(interference_names(&c), [("arm".to_string(), "wall".to_string())], "{c:#}");
@@ -250,4 +268,106 @@ async fn bad_scenes_are_422s_naming_the_field() {
     assert_eq!(p["errors"][0]["field"], "objects", "{p:#}");
     // Nothing of it was stored.
     same_scene(&json_of(app.get(&url).await, 200).await, &scene(0.55));
+}
+
+/// An ASCII STL cube of edge `edge` (file units) centred on the origin: 12 triangles.
+fn cube_stl(edge: f64) -> String {
+    let h = edge / 2.0;
+    let c = |i: usize| [if i & 1 != 0 { h } else { -h }, if i & 2 != 0 { h } else { -h }, if i & 4 != 0 { h } else { -h }];
+    // Each face as two triangles of corner indices (outward winding).
+    let faces = [[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]];
+    let mut s = String::from("solid cube\n");
+    for f in faces {
+        for t in [[f[0], f[1], f[2]], [f[0], f[2], f[3]]] {
+            s += "facet normal 0 0 0\nouter loop\n";
+            for k in t {
+                let p = c(k);
+                s += &format!("vertex {} {} {}\n", p[0], p[1], p[2]);
+            }
+            s += "endloop\nendfacet\n";
+        }
+    }
+    s + "endsolid cube\n"
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn mesh_objects_are_uploaded_collide_and_ship() {
+    let app = TestApp::spawn().await;
+    let (id, _, job) = app.upload_model_ok(arm(), &[]).await;
+    assert_eq!(app.wait_for_job(&job).await["status"], "succeeded");
+    let mesh_url = |name: &str, file: &str| app.url(&format!("/api/models/{id}/scene/meshes/{name}?file={file}"));
+    let upload =
+        |name: &str, file: &str, body: Vec<u8>| app.client.put(mesh_url(name, file)).header("X-Requested-With", "cad2mo").body(body).send();
+
+    // Upload a cube of 100 mm (ASCII STL) and a tetrahedron (OBJ); read them back.
+    let r = json_of(upload("block", "block.stl", cube_stl(100.0).into_bytes()).await.expect("put"), 200).await;
+    assert_eq!(r, json!({"name": "block", "triangles": 12}));
+    let obj = b"v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n".to_vec();
+    json_of(upload("tetra", "tetra.obj", obj).await.expect("put"), 200).await;
+    let list = json_of(app.get(&format!("/api/models/{id}/scene/meshes")).await, 200).await;
+    assert_eq!(list, json!({"meshes": [{"name": "block", "triangles": 12}, {"name": "tetra", "triangles": 4}]}));
+
+    // Bad uploads: 422 naming the file or the name; too big: 413.
+    let p =
+        json_of(upload("bad", "bad.stl", b"solid x\nfacet normal 0 0 0\nouter loop\nvertex 1 2\n".to_vec()).await.expect("put"), 422).await;
+    assert_eq!(p["errors"][0]["field"], "file", "{p:#}");
+    let p = json_of(upload("flat", "flat.obj", b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n".to_vec()).await.expect("put"), 422).await;
+    assert_eq!(p["errors"][0]["field"], "file", "{p:#}");
+    assert!(p["errors"][0]["message"].as_str().expect("message").contains("flat"), "{p:#}");
+    let p = json_of(upload("v", "v.wrl", cube_stl(1.0).into_bytes()).await.expect("put"), 422).await;
+    assert_eq!(p["errors"][0]["field"], "file", "{p:#}");
+    let p = json_of(upload("9lives", "c.stl", cube_stl(1.0).into_bytes()).await.expect("put"), 422).await;
+    assert_eq!(p["errors"][0]["field"], "name", "{p:#}");
+    let big = vec![b' '; cad2mo_engine::scene::mesh::MAX_MESH_BYTES + 1];
+    assert_eq!(upload("big", "big.stl", big).await.expect("put").status().as_u16(), 413);
+
+    // A mesh object at the arm's top, in mm: the cube spans z 0.55 .. 0.65, the arm reaches
+    // 0.6, so they overlap by 0.05 m upwards (sideways by 0.07 m): an interference of depth 0.05.
+    let url = format!("/api/models/{id}/scene");
+    let block = |mesh: &str, unit: &str| json!({"objects": [{"name": "block", "shape": {"kind": "mesh", "mesh": mesh, "unit": unit}, "position": [0, 0, 0.6]}]});
+    let stored = json_of(app.client.put(app.url(&url)).json(&block("block", "mm")).send().await.expect("put"), 200).await;
+    same_scene(&stored, &block("block", "mm"));
+    let collision = |v: i64| format!("/api/models/{id}/versions/{v}/collision");
+    let c = json_of(app.get(&collision(1)).await, 200).await;
+    assert_eq!(interference_names(&c), [("arm".to_string(), "block".to_string())], "{c:#}");
+    let depth = c["interferences"][0]["depth"].as_f64().expect("depth");
+    assert!((depth - 0.05).abs() < 1e-6, "depth {depth}: {c:#}");
+
+    // Bad mesh objects: 422 naming the field.
+    for (body, field) in [
+        (block("nope", "mm"), "objects[0].shape.mesh"),
+        (block("block", "furlong"), "objects[0].shape.unit"),
+        (json!({"objects": [{"name": "b", "shape": {"kind": "mesh"}, "position": [0, 0, 0]}]}), "objects[0].shape.mesh"),
+        (
+            json!({"objects": [{"name": "b", "shape": {"kind": "box", "size": [1, 1, 1], "unit": "mm"}, "position": [0, 0, 0]}]}),
+            "objects[0].shape.unit",
+        ),
+    ] {
+        let p = json_of(app.client.put(app.url(&url)).json(&body).send().await.expect("put"), 422).await;
+        assert_eq!(p["errors"][0]["field"], field, "{body}: {p:#}");
+    }
+
+    // The package of a new version holds the mesh file, Mechatronics draws it, the MJCF has a
+    // mesh asset scaled to metres and a mesh geom.
+    let (_, v2, job2) = app.upload_version_ok(&id, arm(), &[]).await;
+    assert_eq!(app.wait_for_job(&job2).await["status"], "succeeded");
+    let zip = app.package(&id, v2).await.bytes().await.expect("zip");
+    let mut z = zip::ZipArchive::new(std::io::Cursor::new(zip.to_vec())).expect("zip");
+    let stl_name = z.file_names().find(|n| n.ends_with("/Resources/Shapes/scene-block.stl")).expect("the mesh file").to_string();
+    let mut stl = Vec::new();
+    std::io::Read::read_to_end(&mut z.by_name(&stl_name).expect("entry"), &mut stl).expect("read");
+    assert_eq!(stl.len(), 84 + 12 * 50, "a binary STL of 12 triangles");
+    let mut read = |suffix: &str| -> String {
+        let name = z.file_names().find(|n| n.ends_with(suffix)).unwrap_or_else(|| panic!("no {suffix}")).to_string();
+        let mut s = String::new();
+        std::io::Read::read_to_string(&mut z.by_name(&name).expect("entry"), &mut s).expect("utf-8");
+        s
+    };
+    let mech = read("/Mechatronics.mo");
+    assert!(mech.contains("/Resources/Shapes/scene-block.stl\"") && mech.contains("length=0.001, width=0.001, height=0.001"), "{mech}");
+    let mjcf = read(".mjcf.xml");
+    assert!(mjcf.contains("<mesh name=\"scene-block\" file=\"scene-block.stl\" scale=\"0.001 0.001 0.001\"/>"), "{mjcf}");
+    assert!(mjcf.contains("<geom name=\"block\" type=\"mesh\" mesh=\"scene-block\""), "{mjcf}");
+    let c = json_of(app.get(&collision(v2)).await, 200).await;
+    assert_eq!(interference_names(&c), [("arm".to_string(), "block".to_string())], "{c:#}");
 }

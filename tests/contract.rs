@@ -179,7 +179,7 @@ async fn the_service_keeps_its_contract() {
         config += &format!("{} = {}\n", toml_str(k), toml_str(v));
     }
     config += &format!("\"path.version\" = {version}\n\"query.from\" = 1\n\"query.to\" = {version}\n\n");
-    let operations: [Operation; 35] = [
+    let operations: [Operation; 36] = [
         ("getResult", vec![("path.result_id", &result_ids[0])], ""),
         ("deleteResult", vec![("path.result_id", &result_ids[1])], ""),
         ("listResultVariables", vec![("path.result_id", &result_ids[0])], ""),
@@ -200,7 +200,12 @@ async fn the_service_keeps_its_contract() {
         (
             "putScene",
             vec![],
-            "rotations orthonormal, names unique and not a body's, sizes within 0.1 mm .. 1 km, fields fitting the shape and kind, no mesh yet",
+            "rotations orthonormal, names unique and not a body's, sizes within 0.1 mm .. 1 km, fields fitting the shape and kind, meshes uploaded first",
+        ),
+        (
+            "putSceneMesh",
+            vec![],
+            "the body must be an STL, OBJ or COLLADA mesh (file= names its format) of at most 200,000 triangles, not flat; the name an identifier",
         ),
         ("putJointLimits", vec![], "position limits must contain the CAD pose, rates must be > 0"),
         ("deleteModel", vec![("path.model_id", &doomed_model)], ""),

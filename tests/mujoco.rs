@@ -359,3 +359,130 @@ fn losses_reach_modelica_urdf_and_mjcf() {
         assert!(r.is_ok(), "msl-check: {}", r.unwrap_or_else(|e| e));
     }
 }
+
+/// The scene in the package (issue 29): a static table, a free pallet above it, a conveyor
+/// moving at constant velocity, a box following a pose table and a tool attached to the arm.
+/// Mechatronics.mo holds them (msl-check and rumoca clean); the MJCF loads in MuJoCo with the
+/// scene's bodies, and the pallet dropped from 2.5 cm comes to rest on the table.
+#[test]
+fn scene_is_in_the_package_and_a_free_pallet_rests_on_the_table_in_mujoco() {
+    let urdf = r#"<robot name="cell">
+  <link name="world"/>
+  <link name="base"><inertial><mass value="2"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial>
+    <visual><geometry><box size="0.2 0.2 0.1"/></geometry></visual></link>
+  <link name="arm"><inertial><origin xyz="0.2 0 0"/><mass value="1"/><inertia ixx="0.001" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial>
+    <visual><origin xyz="0.2 0 0"/><geometry><box size="0.4 0.05 0.05"/></geometry></visual></link>
+  <joint name="fix" type="fixed"><parent link="world"/><child link="base"/></joint>
+  <joint name="J1" type="revolute"><parent link="base"/><child link="arm"/><origin xyz="0 0 0.3"/><axis xyz="0 0 1"/><limit lower="-2" upper="2" effort="1" velocity="1"/></joint>
+</robot>"#;
+    let scene: cad2mo_engine::scene::SceneSpec = serde_json::from_value(serde_json::json!({"objects": [
+        {"name": "table", "shape": {"kind": "box", "size": [0.6, 0.4, 0.04]}, "position": [1.0, 0, 0.4], "color": [0.6, 0.4, 0.2]},
+        {"name": "pallet", "shape": {"kind": "box", "size": [0.2, 0.2, 0.05]}, "position": [1.0, 0, 0.47], "kind": "free", "mass": 1.5,
+         "rotation": [[0, -1, 0], [1, 0, 0], [0, 0, 1]]},
+        {"name": "conveyor", "shape": {"kind": "box", "size": [0.3, 0.3, 0.1]}, "position": [0, 1.5, 0.05], "kind": "moving",
+         "motion": {"velocity": [0.1, 0, 0]}},
+        {"name": "gate", "shape": {"kind": "cylinder", "radius": 0.05, "length": 0.5}, "position": [0, -1, 0.25], "kind": "moving",
+         "motion": {"poses": [{"time": 0, "position": [0, -1, 0.25]},
+                              {"time": 2, "position": [0, -1, 0.5], "rotation": [[1, 0, 0], [0, 0, -1], [0, 1, 0]]}]}},
+        {"name": "tool", "shape": {"kind": "capsule", "radius": 0.01, "length": 0.1}, "position": [0.4, 0, 0], "attached_to": "arm"},
+        {"name": "floor", "shape": {"kind": "plane"}, "position": [0, 0, 0]}
+    ]}))
+    .expect("scene");
+    let bundle = Bundle::from_files("x", [("cell.urdf".to_string(), urdf.as_bytes().to_vec())]).expect("bundle");
+    let opts = Options { write_shapes: false, scene, ..Options::default() };
+    let out = pipeline::convert(&bundle, &opts).expect("convert");
+    let file = |suffix: &str| {
+        let (_, b) = out.files.iter().find(|(p, _)| p.ends_with(suffix)).unwrap_or_else(|| panic!("{suffix}"));
+        String::from_utf8(b.clone()).expect("utf-8")
+    };
+    let mech = file("/Mechatronics.mo");
+    for needle in [
+        "Modelica.Mechanics.MultiBody.Parts.Body scene_pallet(m=1.5,",
+        "scene_table_shape(shapeType=\"box\"",
+        "scene_conveyor_shape(",
+        "{0.0, 1.5, 0.05} + {0.1, 0.0, 0.0}*time",
+        "CombiTimeTable scene_gate_path(",
+        "FixedTranslation scene_tool_frame(r={0.4, 0.0, 0.0}",
+        "connect(arm.frame_a, scene_tool_frame.frame_a);",
+        "connect(collisionForce_scene_pallet.frame_b, scene_pallet.frame_a);",
+        "connect(collisionForce_scene_tool.frame_b, scene_tool_frame.frame_b);",
+        "parameter Boolean collisions = true",
+    ] {
+        assert!(mech.contains(needle), "Mechatronics.mo lacks {needle}:\n{mech}");
+    }
+    assert!(!mech.contains("collisionForce_scene_table"), "a static object gets no force");
+    let contact = file("/Resources/Collision/contact.txt");
+    assert!(contact.contains("\nbodies 8\n") && contact.contains(" scene_pallet\n") && contact.contains(" scene_floor\n"), "{contact}");
+    // The package as a folder: msl-check and rumoca.
+    let dir = tempfile::tempdir().expect("tempdir");
+    for (p, b) in &out.files {
+        let path = dir.path().join(p);
+        std::fs::create_dir_all(path.parent().expect("folder")).expect("mkdir");
+        std::fs::write(&path, b).expect("write");
+    }
+    let pkg = dir.path().join(&out.report.package_name);
+    match cad2mo_tests::common::msl_check(&pkg) {
+        Some(r) => {
+            let text = r.unwrap_or_else(|e| panic!("msl-check: {e}"));
+            assert!(text.contains(" 0 problems"), "msl-check: {text}");
+        }
+        None => assert!(!tools_required(), "msl-check is required"),
+    }
+    if let Some(errors) = cad2mo_tests::common::modelica_syntax_errors(&pkg) {
+        assert!(errors.is_empty(), "rumoca parse errors:\n{}", errors.join("\n"));
+    }
+    // MuJoCo: the scene's bodies load; the pallet falls 2.5 cm onto the table and stays there.
+    let mjcf = file(".mjcf.xml");
+    assert!(mjcf.contains("<geom name=\"table\" type=\"box\" size=\"0.3 0.2 0.02\""), "{mjcf}");
+    let path = dir.path().join("cell.mjcf.xml");
+    std::fs::write(&path, &mjcf).expect("write");
+    let script = r#"
+import sys
+try:
+    import mujoco
+except Exception as e:
+    print("mujoco not importable:", e); sys.exit(3)
+m = mujoco.MjModel.from_xml_path(sys.argv[1])
+d = mujoco.MjData(m)
+names = [m.body(i).name for i in range(m.nbody)]
+geoms = [m.geom(i).name for i in range(m.ngeom)]
+p = m.body("pallet").id
+assert m.body("conveyor").mocapid[0] >= 0, "conveyor is a mocap body"
+assert m.body_mass[p] == 1.5, m.body_mass[p]
+mujoco.mj_forward(m, d)
+tool = d.geom_xpos[m.geom("tool").id].copy()
+while d.time < 1.5:
+    mujoco.mj_step(m, d)
+print(" ".join(names)); print(" ".join(g for g in geoms if g))
+print(d.xpos[p][0], d.xpos[p][1], d.xpos[p][2], abs(d.qvel[m.joint("pallet_free").dofadr[0]:][:6]).max(), tool[0], tool[2])
+"#;
+    let run = match Command::new("python3").arg("-c").arg(script).arg(&path).output() {
+        Ok(r) => r,
+        Err(e) => {
+            assert!(!tools_required(), "python3 not runnable: {e}");
+            return;
+        }
+    };
+    if run.status.code() == Some(3) {
+        assert!(!tools_required(), "{}", String::from_utf8_lossy(&run.stdout));
+        println!("NOTICE: mujoco not importable; scene check skipped");
+        return;
+    }
+    let text = String::from_utf8_lossy(&run.stdout).to_string();
+    assert!(run.status.success(), "MuJoCo refused the scene: {text}{}", String::from_utf8_lossy(&run.stderr));
+    let lines: Vec<&str> = text.lines().collect();
+    for b in ["pallet", "conveyor", "gate", "base", "arm"] {
+        assert!(lines[0].split_whitespace().any(|n| n == b), "body {b} in MuJoCo: {text}");
+    }
+    for g in ["table", "floor", "tool"] {
+        assert!(lines[1].split_whitespace().any(|n| n == g), "geom {g} in MuJoCo: {text}");
+    }
+    let v: Vec<f64> = lines[2].split_whitespace().map(|t| t.parse().expect("number")).collect();
+    // Table top at 0.42 m; the pallet's centre rests 0.025 m above it.
+    println!("pallet after 1.5 s: ({:.5}, {:.5}, {:.5}) m, largest speed {:.2e}", v[0], v[1], v[2], v[3]);
+    assert!((v[2] - 0.445).abs() < 2e-3, "pallet at rest on the table: z = {}", v[2]);
+    assert!((v[0] - 1.0).abs() < 1e-3 && v[1].abs() < 1e-3, "pallet stays over the table: {v:?}");
+    assert!(v[3] < 1e-2, "pallet at rest: {}", v[3]);
+    // The tool stands 0.4 m along the arm, which is 0.3 m above the base.
+    assert!((v[4] - 0.4).abs() < 1e-9 && (v[5] - 0.3).abs() < 1e-9, "tool on the arm: {v:?}");
+}

@@ -562,8 +562,25 @@ async fn convert(ctx: &Ctx, job: &ClaimedJob) -> Result<Stored, JobError> {
         crate::store::collision::edits(&ctx.store, &job.model_id).await?.into_iter().map(|(a, b, x)| ((a, b), x)).collect();
     let shape_cache: Arc<dyn cad2mo_engine::collision::ShapeCache> = ctx.shapes.clone();
     let step_cache: Arc<dyn cad2mo_engine::pipeline::front::mesh::step::StepCache> = ctx.steps.clone();
-    let context =
-        export::Context { name_hints: hints, live, collision_edits, shape_cache: Some(shape_cache), step_cache: Some(step_cache) };
+    let scene = crate::store::scene::get(&ctx.store, &job.model_id).await?;
+    let mesh_rows: Vec<(String, String)> =
+        crate::store::scene::meshes(&ctx.store, &job.model_id).await?.into_iter().map(|r| (r.name, r.blob_sha256)).collect();
+    let scene_meshes = {
+        let blobs = ctx.blobs.clone();
+        tokio::task::spawn_blocking(move || crate::service::scene::load_meshes(&mesh_rows, |h| blobs.get(h)))
+            .await
+            .map_err(|e| JobError::Internal(e.into()))?
+            .map_err(JobError::Internal)?
+    };
+    let context = export::Context {
+        name_hints: hints,
+        live,
+        collision_edits,
+        shape_cache: Some(shape_cache),
+        step_cache: Some(step_cache),
+        scene,
+        scene_meshes,
+    };
     let blobs = ctx.blobs.clone();
     let board = ctx.board.clone();
     let job_id = job.id.clone();

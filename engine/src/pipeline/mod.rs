@@ -66,6 +66,13 @@ pub struct Options {
     /// kept after (`None`: each conversion meshes its STEP files, each distinct file once). Owned
     /// by the caller like `shape_cache`; never changes the output.
     pub step_cache: Option<std::sync::Arc<dyn front::mesh::step::StepCache>>,
+    /// The model's scene (issue 29), as stored: checked against the bodies' Modelica names
+    /// (objects this version cannot take are left out with a `scene-object-omitted` warning),
+    /// then written into `Mechatronics.mo` and the MJCF.
+    pub scene: crate::scene::SceneSpec,
+    /// The meshes uploaded for the scene by name: mesh objects take their hull for contacts and
+    /// the package gets their files under `Resources/Shapes/`.
+    pub scene_meshes: crate::scene::Meshes,
 }
 
 impl Default for Options {
@@ -82,6 +89,8 @@ impl Default for Options {
             collision_edits: Default::default(),
             shape_cache: None,
             step_cache: None,
+            scene: Default::default(),
+            scene_meshes: Default::default(),
         }
     }
 }
@@ -457,12 +466,19 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
     obs.progress(Stage::Collision, 1, 1);
     report.warnings.extend(collision_warnings);
     report.collision = Some(collision_report);
+    // The scene: its objects checked against this version's bodies (those it cannot take left
+    // out, named), then its part of Mechatronics and of the MJCF.
+    let (scene, omitted) = crate::scene::check_stored(&opts.scene, &names, &opts.scene_meshes);
+    for i in omitted {
+        report.warnings.push(Warning::new("scene-object-omitted", format!("{} {}: left out of the package", i.field, i.message), ""));
+    }
+    let scene_modelica = crate::scene::package::modelica(&scene, &package_name);
     // The shape files (collision parts, DXF and STL per body) and the MuJoCo and URDF exports
     // depend on nothing below: they are written on other threads meanwhile.
     let mut files = pkg.files;
     std::thread::scope(|scope| {
-        let (model, validated, layout, collision, names, pkg_name) =
-            (&a.model, &a.validated, &pkg.layout, &collision, &names, &package_name);
+        let (model, validated, layout, collision, names, pkg_name, scene) =
+            (&a.model, &a.validated, &pkg.layout, &collision, &names, &package_name, &scene);
         let shape_files = opts.write_shapes.then(|| scope.spawn(move || collision.files(pkg_name, names)));
         let mesh_files = opts.write_shapes.then(|| {
             scope.spawn(move || {
@@ -477,13 +493,19 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
             })
         });
         let exports = scope.spawn(move || {
-            let mjcf = back::mjcf::file(model, validated, layout, pkg_name, gravity, opts.write_shapes);
+            let mut mjcf = back::mjcf::file(model, validated, layout, pkg_name, gravity, opts.write_shapes);
+            if !scene.objects.is_empty() {
+                mjcf.1 = crate::scene::package::mjcf(&String::from_utf8_lossy(&mjcf.1), scene).into_bytes();
+            }
             let urdf = back::urdf::file(model, validated, layout, pkg_name, opts.write_shapes);
             vec![mjcf, back::urdf::relative_file(&urdf, pkg_name), urdf]
         });
         let join = |h: std::thread::ScopedJoinHandle<'_, _>| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e));
         let drives = obs.drives(&report, &opts.drives);
         files.extend(back::modelica::mechatronics::components(&package_name));
+        if opts.write_shapes {
+            files.extend(crate::scene::package::mesh_files(scene, &opts.scene_meshes, &package_name));
+        }
         let extras = obs.extras(
             &observe::ModelView { model: &a.model, validated: &a.validated, layout: &pkg.layout, package_name: &package_name },
             &drives,
@@ -507,7 +529,13 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
             ));
         }
         let parts = collision.parts();
-        let contacts = back::modelica::mechatronics::collision::declarations(&package_name, names, &parts, &collision.allowed_pairs());
+        let contacts = back::modelica::mechatronics::collision::declarations_with_scene(
+            &package_name,
+            names,
+            &parts,
+            &collision.allowed_pairs(),
+            &scene_modelica.members,
+        );
         files.extend(back::modelica::mechatronics::mechatronics(
             &package_name,
             &drives,
@@ -515,6 +543,7 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
             &back::modelica::mechatronics::Additions {
                 live,
                 collision: contacts.as_ref(),
+                scene: (!scene_modelica.declarations.is_empty()).then_some(scene_modelica.declarations.as_str()),
                 diagram: Some(&pkg.layout.diagram),
                 experiment: Some(&back::modelica::Experiment::for_model(&a.model, gravity)),
             },

@@ -1,5 +1,5 @@
 //! Scenes (issue 29): the machine's environment, no IO. A model's scene is a list of named
-//! objects (primitives: box, cylinder, sphere, capsule, plane), each static (fixed in the world or
+//! objects (primitives: box, cylinder, sphere, capsule, plane; or an uploaded mesh, see [`mesh`]), each static (fixed in the world or
 //! attached to a body), moving (a prescribed motion: constant velocity, or a table of poses over
 //! time) or free (a rigid object with mass). The user's [`SceneSpec`] is checked once
 //! ([`check`]: every problem an [`Issue`] naming its field, e.g. `objects[2].rotation`) into a
@@ -112,8 +112,12 @@ pub struct ShapeSpec {
     /// Cylinder: full length; capsule: the length of its axis segment (without the caps).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub length: Option<f64>,
+    /// Mesh: the name of a mesh uploaded for the model's scene.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub mesh: Option<String>,
+    /// Mesh: the unit of its file's coordinates, `m` (default), `mm`, `cm` or `in`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub unit: Option<String>,
 }
 
 /// A moving object's motion: exactly one of `velocity` (m/s, world, from its position at t = 0)
@@ -140,11 +144,28 @@ pub struct PoseRow {
 /// A checked primitive, in its own frame.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Shape {
-    Box { size: [f64; 3] },
-    Cylinder { radius: f64, length: f64 },
-    Sphere { radius: f64 },
-    Capsule { radius: f64, length: f64 },
+    Box {
+        size: [f64; 3],
+    },
+    Cylinder {
+        radius: f64,
+        length: f64,
+    },
+    Sphere {
+        radius: f64,
+    },
+    Capsule {
+        radius: f64,
+        length: f64,
+    },
     Plane,
+    /// An uploaded mesh, `scale` m per file unit; collisions take its convex hull (`hull`, in
+    /// metres in the object's frame).
+    Mesh {
+        mesh: String,
+        scale: f64,
+        hull: ConvexPart,
+    },
 }
 
 /// A checked object's kind.
@@ -225,28 +246,65 @@ pub fn valid_name(name: &str) -> bool {
     matches!(c.next(), Some(f) if f.is_ascii_alphabetic()) && c.all(|x| x.is_ascii_alphanumeric() || x == '_') && name.len() <= MAX_NAME
 }
 
-fn shape_of(s: &ShapeSpec, field: &str, issues: &mut Vec<Issue>) -> Option<Shape> {
+fn shape_of(s: &ShapeSpec, field: &str, meshes: &Meshes, issues: &mut Vec<Issue>) -> Option<Shape> {
     let mut bad = |f: &str, m: String| issues.push(Issue::new(format!("{field}.{f}"), m));
     let allowed: &[&str] = match s.kind.as_str() {
         "box" => &["size"],
         "cylinder" | "capsule" => &["radius", "length"],
         "sphere" => &["radius"],
         "plane" => &[],
-        "mesh" => {
-            bad("kind", "mesh scene objects are not supported yet: use a box, cylinder, sphere, capsule or plane".into());
-            return None;
-        }
+        "mesh" => &["mesh", "unit"],
         k => {
-            bad("kind", format!("unknown shape kind {:?}: box, cylinder, sphere, capsule or plane", crate::pipeline::ir::clip(k, 40)));
+            bad(
+                "kind",
+                format!("unknown shape kind {:?}: box, cylinder, sphere, capsule, plane or mesh", crate::pipeline::ir::clip(k, 40)),
+            );
             return None;
         }
     };
-    for (f, given) in
-        [("size", s.size.is_some()), ("radius", s.radius.is_some()), ("length", s.length.is_some()), ("mesh", s.mesh.is_some())]
-    {
+    for (f, given) in [
+        ("size", s.size.is_some()),
+        ("radius", s.radius.is_some()),
+        ("length", s.length.is_some()),
+        ("mesh", s.mesh.is_some()),
+        ("unit", s.unit.is_some()),
+    ] {
         if given && !allowed.contains(&f) {
             bad(f, format!("a {} has no {f}", s.kind));
         }
+    }
+    if s.kind == "mesh" {
+        let scale = mesh::unit_scale(s.unit.as_deref().unwrap_or("m"));
+        if scale.is_none() {
+            let u = crate::pipeline::ir::clip(s.unit.as_deref().unwrap_or_default(), 20);
+            bad("unit", format!("unknown unit {u:?}: m, mm, cm or in"));
+        }
+        let found = match &s.mesh {
+            None => {
+                bad("mesh", "a mesh object names its mesh (uploaded with PUT .../scene/meshes/{name})".into());
+                None
+            }
+            Some(m) => match meshes.get(m) {
+                Some(found) => Some(found),
+                None => {
+                    let known: Vec<&str> = meshes.keys().map(String::as_str).take(20).collect();
+                    let m = crate::pipeline::ir::clip(m, 70);
+                    bad("mesh", format!("no mesh {m} was uploaded for this scene (meshes: {})", known.join(", ")));
+                    None
+                }
+            },
+        };
+        let (Some(scale), Some(found)) = (scale, found) else { return None };
+        let mut hull = found.hull.clone();
+        for v in &mut hull.vertices {
+            *v = v.map(|x| x * scale);
+        }
+        let extent = hull.vertices.iter().flatten().fold(0.0f64, |a, x| a.max(x.abs()));
+        if extent > MAX_LENGTH {
+            bad("unit", format!("the mesh reaches {extent:.1} m from its origin in this unit, more than {MAX_LENGTH} m"));
+            return None;
+        }
+        return Some(Shape::Mesh { mesh: s.mesh.clone().unwrap_or_default(), scale, hull });
     }
     let n = issues.len();
     let mut get =
@@ -272,6 +330,11 @@ fn shape_of(s: &ShapeSpec, field: &str, issues: &mut Vec<Issue>) -> Option<Shape
 /// attachments (to a body in `bodies`, static objects only), motions and masses. Every
 /// problem is returned at once.
 pub fn check(spec: &SceneSpec, bodies: &[String]) -> Result<Scene, Vec<Issue>> {
+    check_with(spec, bodies, &Meshes::new())
+}
+
+/// [`check`] with the scene's uploaded meshes (mesh objects name one of them).
+pub fn check_with(spec: &SceneSpec, bodies: &[String], meshes: &Meshes) -> Result<Scene, Vec<Issue>> {
     let mut issues = Vec::new();
     if spec.objects.len() > MAX_OBJECTS {
         return Err(vec![Issue::new("objects", format!("{} objects is more than the limit of {MAX_OBJECTS}", spec.objects.len()))]);
@@ -296,7 +359,7 @@ pub fn check(spec: &SceneSpec, bodies: &[String]) -> Result<Scene, Vec<Issue>> {
         } else if bodies.iter().any(|b| b == &o.name) || o.name == "world" {
             issues.push(Issue::new(f("name"), format!("the name {shown} is a body of the model: choose another")));
         }
-        let shape = shape_of(&o.shape, &f("shape"), &mut issues);
+        let shape = shape_of(&o.shape, &f("shape"), meshes, &mut issues);
         let p = position(&o.position).map_err(|m| issues.push(Issue::new(f("position"), m))).ok();
         let r = rotation(&o.rotation).map_err(|m| issues.push(Issue::new(f("rotation"), m))).ok();
         let color = o.color.unwrap_or(DEFAULT_COLOR);
@@ -395,11 +458,11 @@ pub fn check(spec: &SceneSpec, bodies: &[String]) -> Result<Scene, Vec<Issue>> {
 
 /// A stored scene against a version's bodies: each object checked on its own, those that fail
 /// (their name is now a body's, their body is gone) left out with the issues naming them.
-pub fn check_stored(spec: &SceneSpec, bodies: &[String]) -> (Scene, Vec<Issue>) {
+pub fn check_stored(spec: &SceneSpec, bodies: &[String], meshes: &Meshes) -> (Scene, Vec<Issue>) {
     let mut scene = Scene::default();
     let mut left_out = Vec::new();
     for (k, o) in spec.objects.iter().enumerate() {
-        match check(&SceneSpec { objects: vec![o.clone()] }, bodies) {
+        match check_with(&SceneSpec { objects: vec![o.clone()] }, bodies, meshes) {
             Ok(s) => scene.objects.extend(s.objects),
             Err(issues) => left_out
                 .extend(issues.into_iter().map(|i| Issue::new(i.field.replacen("objects[0]", &format!("objects[{k}]"), 1), i.message))),
@@ -467,6 +530,13 @@ pub fn solid_inertia(s: &Shape, m: f64) -> [f64; 3] {
             [t, t, 0.5 * m * r * r]
         }
         Shape::Plane => [1.0; 3],
+        // The box around the hull: an upper bound.
+        Shape::Mesh { ref hull, .. } => {
+            let (lo, hi) = hull.vertices.iter().fold(([f64::MAX; 3], [f64::MIN; 3]), |(lo, hi), v| {
+                ([lo[0].min(v[0]), lo[1].min(v[1]), lo[2].min(v[2])], [hi[0].max(v[0]), hi[1].max(v[1]), hi[2].max(v[2])])
+            });
+            solid_inertia(&Shape::Box { size: [hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]] }, m)
+        }
     }
 }
 
@@ -483,17 +553,18 @@ impl SceneObject {
     /// The object's convex collision shape in its own frame (a cylinder: a circumscribed prism
     /// of [`CYLINDER_SIDES`] sides).
     pub fn shape(&self) -> BodyShape {
-        let (kind, part) = match self.shape {
+        let (kind, part) = match &self.shape {
             Shape::Box { size } => (ShapeKind::Box, box_part([size[0] / 2.0, size[1] / 2.0, size[2] / 2.0], [0.0; 3])),
+            Shape::Mesh { hull, .. } => (ShapeKind::Hull, hull.clone()),
             Shape::Plane => {
                 (ShapeKind::Box, box_part([PLANE_SIZE / 2.0, PLANE_SIZE / 2.0, PLANE_DEPTH / 2.0], [0.0, 0.0, -PLANE_DEPTH / 2.0]))
             }
-            Shape::Sphere { radius } => (ShapeKind::Sphere, ConvexPart { vertices: vec![[0.0; 3]], faces: Vec::new(), radius }),
-            Shape::Capsule { radius, length } => (
+            &Shape::Sphere { radius } => (ShapeKind::Sphere, ConvexPart { vertices: vec![[0.0; 3]], faces: Vec::new(), radius }),
+            &Shape::Capsule { radius, length } => (
                 ShapeKind::Capsule,
                 ConvexPart { vertices: vec![[0.0, 0.0, -length / 2.0], [0.0, 0.0, length / 2.0]], faces: Vec::new(), radius },
             ),
-            Shape::Cylinder { radius, length } => {
+            &Shape::Cylinder { radius, length } => {
                 let rc = radius / (std::f64::consts::PI / CYLINDER_SIDES as f64).cos();
                 let mut vertices = Vec::with_capacity(2 * CYLINDER_SIDES);
                 for z in [-length / 2.0, length / 2.0] {
@@ -539,6 +610,11 @@ impl SceneObject {
         }
     }
 }
+
+pub mod mesh;
+pub mod package;
+
+pub use mesh::{Meshes, SceneMesh};
 
 #[cfg(test)]
 mod tests;

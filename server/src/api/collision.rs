@@ -38,7 +38,8 @@ async fn scene_shapes(
     if spec.objects.is_empty() {
         return Ok((number, s, Vec::new()));
     }
-    let (with, left_out) = blocking(move || Ok(crate::service::scene::with_scene(&s, &spec))).await?;
+    let meshes = super::scene::meshes(state, model_id).await?;
+    let (with, left_out) = blocking(move || Ok(crate::service::scene::with_scene(&s, &spec, &meshes))).await?;
     Ok((number, Arc::new(with), left_out))
 }
 

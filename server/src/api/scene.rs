@@ -4,10 +4,11 @@
 use axum::body::Bytes;
 use axum::extract::{DefaultBodyLimit, State};
 use axum::http::StatusCode;
-use axum::routing::get;
+use axum::routing::{get, put};
 use axum::{Json, Router};
 
 use super::collision::shapes;
+use super::error::blocking;
 use super::error::FieldError;
 use super::extract::Path;
 use super::motions::model_exists;
@@ -15,7 +16,8 @@ use super::ApiError;
 use crate::app::AppState;
 use crate::service;
 use crate::store;
-use cad2mo_engine::scene::SceneSpec;
+use cad2mo_engine::scene::mesh::MAX_MESH_BYTES;
+use cad2mo_engine::scene::{Meshes, SceneSpec};
 
 /// Largest scene body (a full pose table of 10,000 rows fits).
 const SCENE_BODY_LIMIT: usize = 4 << 20;
@@ -24,6 +26,69 @@ pub fn router() -> Router<AppState> {
     Router::new()
         .route("/api/models/{model_id}/scene", get(get_scene).put(put_scene).delete(delete_scene))
         .layer(DefaultBodyLimit::max(SCENE_BODY_LIMIT + 1))
+        .merge(
+            Router::new()
+                .route("/api/models/{model_id}/scene/meshes", get(list_meshes))
+                .route("/api/models/{model_id}/scene/meshes/{name}", put(put_mesh))
+                .layer(DefaultBodyLimit::max(MAX_MESH_BYTES + 1)),
+        )
+}
+
+/// The meshes uploaded for a model's scene, read from their blobs.
+pub async fn meshes(state: &AppState, model_id: &str) -> Result<Meshes, ApiError> {
+    let rows: Vec<(String, String)> =
+        store::scene::meshes(&state.store, model_id).await?.into_iter().map(|r| (r.name, r.blob_sha256)).collect();
+    if rows.is_empty() {
+        return Ok(Meshes::new());
+    }
+    let blobs = state.blobs.clone();
+    blocking(move || Ok(service::scene::load_meshes(&rows, |h| blobs.get(h))?)).await
+}
+
+#[derive(serde::Deserialize)]
+struct MeshQuery {
+    /// The uploaded file's name: its extension chooses the reader (default `mesh.stl`).
+    file: Option<String>,
+}
+
+/// One uploaded mesh as the API shows it.
+#[derive(serde::Serialize)]
+struct MeshView {
+    name: String,
+    triangles: i64,
+}
+
+async fn list_meshes(State(state): State<AppState>, Path(model_id): Path<String>) -> Result<Json<serde_json::Value>, ApiError> {
+    model_exists(&state, &model_id).await?;
+    let rows = store::scene::meshes(&state.store, &model_id).await?;
+    let meshes: Vec<_> = rows.into_iter().map(|r| serde_json::json!({"name": r.name, "triangles": r.triangles})).collect();
+    Ok(Json(serde_json::json!({ "meshes": meshes })))
+}
+
+/// Uploads (or replaces) a scene mesh: the body is the file (STL binary or ASCII, OBJ, COLLADA),
+/// `?file=` its name (`.stl` by default). A bad name, an unreadable or too large file: 422/413
+/// naming `name` or `file`.
+async fn put_mesh(
+    State(state): State<AppState>,
+    Path((model_id, name)): Path<(String, String)>,
+    axum::extract::Query(q): axum::extract::Query<MeshQuery>,
+    body: Bytes,
+) -> Result<(StatusCode, Json<MeshView>), ApiError> {
+    model_exists(&state, &model_id).await?;
+    if body.len() > MAX_MESH_BYTES {
+        return Err(ApiError::PayloadTooLarge { limit: MAX_MESH_BYTES as u64 });
+    }
+    let file = q.file.unwrap_or_else(|| "mesh.stl".into());
+    let blobs = state.blobs.clone();
+    let n = name.clone();
+    let (hash, triangles) = blocking(move || {
+        let mesh = service::scene::read_mesh(&n, &file, &body)?;
+        let hash = blobs.put(&mesh.stl).map_err(|e| ApiError::Internal(e.into()))?;
+        Ok((hash, mesh.triangles))
+    })
+    .await?;
+    store::scene::put_mesh(&state.store, &model_id, &name, &hash, triangles as i64).await?;
+    Ok((StatusCode::OK, Json(MeshView { name, triangles: triangles as i64 })))
 }
 
 async fn get_scene(State(state): State<AppState>, Path(model_id): Path<String>) -> Result<Json<SceneSpec>, ApiError> {
@@ -55,7 +120,8 @@ async fn put_scene(State(state): State<AppState>, Path(model_id): Path<String>, 
     let spec = parse(&body)?;
     // Names are checked against the bodies of the latest converted version.
     let (_, s) = shapes(&state, &model_id, None).await?;
-    service::scene::check(&spec, &s.bodies[..s.model_bodies])?;
+    let meshes = meshes(&state, &model_id).await?;
+    service::scene::check(&spec, &s.bodies[..s.model_bodies], &meshes)?;
     store::scene::put(&state.store, &model_id, &spec).await?;
     Ok(Json(store::scene::get(&state.store, &model_id).await?))
 }

@@ -167,6 +167,8 @@ pub fn build_package(
     opts.collision_edits = context.collision_edits.clone();
     opts.shape_cache = context.shape_cache.clone();
     opts.step_cache = context.step_cache.clone();
+    opts.scene = context.scene.clone();
+    opts.scene_meshes = context.scene_meshes.clone();
     let mut obs = BuildObserver {
         drives,
         motions,
@@ -212,6 +214,10 @@ pub struct Context {
     pub shape_cache: Option<std::sync::Arc<dyn cad2mo_engine::collision::ShapeCache>>,
     /// The process's STEP tessellations by file content (see [`pipeline::Options::step_cache`]).
     pub step_cache: Option<std::sync::Arc<dyn cad2mo_engine::pipeline::front::mesh::step::StepCache>>,
+    /// The model's scene (its objects go into `Mechatronics.mo` and the MJCF).
+    pub scene: cad2mo_engine::scene::SceneSpec,
+    /// The meshes uploaded for the scene, by name.
+    pub scene_meshes: cad2mo_engine::scene::Meshes,
 }
 
 /// The model's motions and joint limits, for the package's `Motions` and sizing files.

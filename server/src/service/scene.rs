@@ -6,7 +6,7 @@
 use nalgebra::Isometry3;
 use serde::Serialize;
 
-use cad2mo_engine::scene::{self, Issue, SceneObject, SceneSpec};
+use cad2mo_engine::scene::{self, Issue, Meshes, SceneMesh, SceneObject, SceneSpec};
 
 use crate::service::collisions::VersionShapes;
 use crate::service::FieldError;
@@ -37,9 +37,34 @@ impl From<Vec<Issue>> for SceneError {
 }
 
 /// Checks a scene the user gives against the bodies of the model's latest converted version.
-pub fn check(spec: &SceneSpec, bodies: &[String]) -> Result<(), SceneError> {
-    scene::check(spec, bodies)?;
+pub fn check(spec: &SceneSpec, bodies: &[String], meshes: &Meshes) -> Result<(), SceneError> {
+    scene::check_with(spec, bodies, meshes)?;
     Ok(())
+}
+
+/// An uploaded scene mesh named `name` from the file `file` (its extension chooses the reader):
+/// refused with an issue naming `name` (a bad name) or `file` (not a readable mesh, too big).
+pub fn read_mesh(name: &str, file: &str, bytes: &[u8]) -> Result<SceneMesh, SceneError> {
+    if !scene::valid_name(name) {
+        let shown = cad2mo_engine::pipeline::ir::clip(name, 70);
+        return Err(vec![Issue::new(
+            "name",
+            format!("{shown:?} is not a valid mesh name: a letter, then letters, digits or _, at most {} characters", scene::MAX_NAME),
+        )]
+        .into());
+    }
+    scene::mesh::read(file, bytes).map_err(|m| vec![Issue::new("file", m)].into())
+}
+
+/// The stored meshes from their blobs (`get`: a blob's bytes by hash), by name.
+pub fn load_meshes(rows: &[(String, String)], get: impl Fn(&str) -> std::io::Result<Option<Vec<u8>>>) -> anyhow::Result<Meshes> {
+    let mut out = Meshes::new();
+    for (name, hash) in rows {
+        let bytes = get(hash)?.ok_or_else(|| anyhow::anyhow!("the blob {hash} of scene mesh {name} is missing"))?;
+        let mesh = scene::mesh::from_stl(&bytes).map_err(|e| anyhow::anyhow!("scene mesh {name} is corrupt: {e}"))?;
+        out.insert(name.clone(), mesh);
+    }
+    Ok(out)
 }
 
 /// A scene object left out of a version's checks, and why.
@@ -54,9 +79,9 @@ pub struct LeftOut {
 /// allowed by default (an object and the body it is attached to; two objects fixed in the
 /// world). Objects this version cannot take (their name is now a body's, their body is gone)
 /// are left out and returned.
-pub fn with_scene(v: &VersionShapes, spec: &SceneSpec) -> (VersionShapes, Vec<LeftOut>) {
+pub fn with_scene(v: &VersionShapes, spec: &SceneSpec, meshes: &Meshes) -> (VersionShapes, Vec<LeftOut>) {
     let model = &v.bodies[..v.model_bodies];
-    let (scene, left_out) = scene::check_stored(spec, model);
+    let (scene, left_out) = scene::check_stored(spec, model, meshes);
     let left_out = left_out.into_iter().map(|i| LeftOut { field: i.field, message: i.message }).collect();
     let mut out = VersionShapes {
         bodies: model.to_vec(),

@@ -13,14 +13,16 @@ use std::collections::BTreeSet;
 use super::blobs::Blobs;
 use super::{Store, StoreError};
 
-/// Every blob hash a row refers to: versions' bundles, packages and reports, result files.
+/// Every blob hash a row refers to: versions' bundles, packages and reports, result files, scene
+/// meshes.
 /// Read-only.
 pub async fn referenced_blobs(store: &Store) -> Result<BTreeSet<String>, StoreError> {
     let rows: Vec<(Option<String>,)> = sqlx::query_as(
         "SELECT bundle_sha256 FROM versions
          UNION SELECT package_sha256 FROM versions
          UNION SELECT report_sha256 FROM versions
-         UNION SELECT blob_sha256 FROM results",
+         UNION SELECT blob_sha256 FROM results
+         UNION SELECT blob_sha256 FROM scene_meshes",
     )
     .fetch_all(&store.pool)
     .await?;

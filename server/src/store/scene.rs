@@ -39,3 +39,42 @@ pub async fn put(store: &Store, model_id: &str, scene: &SceneSpec) -> Result<(),
     tx.commit().await?;
     Ok(())
 }
+
+/// A mesh uploaded for a model's scene.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct MeshRow {
+    pub name: String,
+    pub blob_sha256: String,
+    pub triangles: i64,
+}
+
+/// Stores (or replaces) a scene mesh's row; its blob is stored first by the caller.
+pub async fn put_mesh(store: &Store, model_id: &str, name: &str, blob_sha256: &str, triangles: i64) -> Result<(), StoreError> {
+    let t = now(&store.pool).await?;
+    let mut tx = store.pool.begin().await?;
+    sqlx::query(&store.pool.sql("DELETE FROM scene_meshes WHERE model_id = ? AND name = ?"))
+        .bind(model_id)
+        .bind(name)
+        .execute(&mut *tx)
+        .await?;
+    sqlx::query(&store.pool.sql("INSERT INTO scene_meshes (model_id, name, blob_sha256, triangles, updated_at) VALUES (?, ?, ?, ?, ?)"))
+        .bind(model_id)
+        .bind(name)
+        .bind(blob_sha256)
+        .bind(triangles)
+        .bind(&t)
+        .execute(&mut *tx)
+        .await?;
+    tx.commit().await?;
+    Ok(())
+}
+
+/// The meshes uploaded for a model's scene, by name.
+pub async fn meshes(store: &Store, model_id: &str) -> Result<Vec<MeshRow>, StoreError> {
+    let rows: Vec<(String, String, i64)> =
+        sqlx::query_as(&store.pool.sql("SELECT name, blob_sha256, triangles FROM scene_meshes WHERE model_id = ? ORDER BY name"))
+            .bind(model_id)
+            .fetch_all(&store.pool)
+            .await?;
+    Ok(rows.into_iter().map(|(name, blob_sha256, triangles)| MeshRow { name, blob_sha256, triangles }).collect())
+}

@@ -12,6 +12,7 @@ import { renderMotion } from './motion.js';
 import { renderResults } from './results.js';
 import { renderLive } from './live.js';
 import { renderCollision } from './collision.js';
+import { renderScene } from './scene.js';
 import { renderDiagram } from './diagram.js';
 
 const DEG = 180 / Math.PI;
@@ -128,6 +129,7 @@ export async function renderViewer(main, id, v, initialTab) {
     { id: 'results', label: 'Results', render: (p) => (results = renderResults(p, { modelId: id, versionNumber: v, viewer, say, select, stage: resultsStage })) },
     { id: 'live', label: 'Live', render: (p) => (live = renderLive(p, { modelId: id, versionNumber: v, viewer, say, stage: liveStage })) },
     { id: 'collision', label: 'Collision', render: (p) => (collision = renderCollision(p, { modelId: id, versionNumber: v, viewer, say, resetPose })) },
+    { id: 'scene', label: 'Scene', render: (p) => renderScene(p, { modelId: id, bodies: (report.bodies || []).map((b) => b.modelica_name), say }) },
     { id: 'diagram', label: 'Modelica diagram', render: (p) => renderDiagram(p, { version, report, select, stage: diagramStage }) },
   ];
   let collision = null;

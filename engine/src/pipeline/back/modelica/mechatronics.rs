@@ -694,6 +694,9 @@ pub struct Additions<'a> {
     /// The contact forces' declarations and shape file ([`collision::declarations`]); their
     /// package files are written with them.
     pub collision: Option<&'a collision::Contacts>,
+    /// The scene's declarations (`crate::scene::package::Modelica::declarations`: its objects'
+    /// shapes, tables, free bodies; their contacts come with `collision`).
+    pub scene: Option<&'a str>,
     /// The Mechanics diagram, which Mechatronics places its components around.
     pub diagram: Option<&'a Sheet>,
     /// The experiment Mechanics runs (Mechatronics runs it too unless a motion or a reference
@@ -838,6 +841,9 @@ pub fn mechatronics(
             )));
         }
         decl.push_str(live::declarations(pkg, target, bodies).trim_end_matches('\n'));
+    }
+    if let Some(scene) = additions.scene {
+        decl.push_str(scene.trim_end_matches('\n'));
     }
     if let Some(c) = additions.collision {
         decl.push_str(c.declarations.trim_end_matches('\n'));

@@ -180,13 +180,32 @@ pub struct Contacts {
 /// pairs (i < j, indices into `bodies`) allowed to touch, whose contacts are not computed (every
 /// other pair is). `None` when no body has a shape.
 pub fn declarations(pkg: &str, bodies: &[String], shapes: &[Option<Vec<ConvexPart>>], allowed: &[(usize, usize)]) -> Option<Contacts> {
+    declarations_with_scene(pkg, bodies, shapes, allowed, &[])
+}
+
+/// [`declarations`] with the scene's objects after the bodies (`crate::scene::package`): their
+/// poses and velocities from their members' expressions, a `BodyForce` only for those a force
+/// acts on (free objects, objects attached to a body), the pairs of two prescribed objects and
+/// of an attached object and its body allowed to touch; `collisions` defaults to true when the
+/// scene has a free object (it would fall through everything).
+pub fn declarations_with_scene(
+    pkg: &str,
+    bodies: &[String],
+    shapes: &[Option<Vec<ConvexPart>>],
+    allowed: &[(usize, usize)],
+    scene: &[crate::scene::package::Member],
+) -> Option<Contacts> {
     let shaped: Vec<usize> = (0..bodies.len())
         .filter(|&i| shapes.get(i).and_then(|s| s.as_ref()).is_some_and(|p| p.iter().any(|q| !q.vertices.is_empty())))
         .collect();
-    if shaped.is_empty() {
+    let scene: Vec<&crate::scene::package::Member> = scene.iter().filter(|m| m.parts.iter().any(|q| !q.vertices.is_empty())).collect();
+    if shaped.is_empty() && scene.is_empty() {
         return None;
     }
-    let n = shaped.len();
+    let nb = shaped.len();
+    let n = nb + scene.len();
+    // Every member's name, in the world's order.
+    let names: Vec<&str> = shaped.iter().map(|&i| bodies[i].as_str()).chain(scene.iter().map(|m| m.name.as_str())).collect();
     // The shape file: bodies, parts (radius, vertices), allowed pairs.
     let mut f = String::new();
     let _ = writeln!(f, "cad2mo-collision 1");
@@ -197,12 +216,18 @@ pub fn declarations(pkg: &str, bodies: &[String], shapes: &[Option<Vec<ConvexPar
     );
     let _ = writeln!(f, "# \"allow <body> <body>\": a pair allowed to touch (no contact force); every other pair is checked.");
     let _ = writeln!(f, "bodies {n}");
-    for (k, &i) in shaped.iter().enumerate() {
-        let _ = writeln!(f, "body {} {}", k + 1, bodies[i]);
+    for (k, name) in names.iter().enumerate() {
+        let _ = writeln!(f, "body {} {name}", k + 1);
     }
     let mut parts = 0usize;
-    for (k, &i) in shaped.iter().enumerate() {
-        for p in shapes[i].iter().flatten().filter(|p| !p.vertices.is_empty()) {
+    let member_parts = |k: usize| -> Vec<&ConvexPart> {
+        match shaped.get(k) {
+            Some(&i) => shapes[i].iter().flatten().collect(),
+            None => scene[k - nb].parts.iter().collect(),
+        }
+    };
+    for k in 0..n {
+        for p in member_parts(k).into_iter().filter(|p| !p.vertices.is_empty()) {
             parts += 1;
             let _ = writeln!(f, "part {} {} {}", k + 1, num(p.radius.max(0.0)), p.vertices.len());
             for v in &p.vertices {
@@ -222,6 +247,17 @@ pub fn declarations(pkg: &str, bodies: &[String], shapes: &[Option<Vec<ConvexPar
             (a > 0 && b > 0 && a != b).then_some((a.min(b), a.max(b)))
         })
         .collect();
+    for (a, m) in scene.iter().enumerate() {
+        let a = nb + a + 1;
+        if let Some(b) = m.attached_to.as_ref().and_then(|b| shaped.iter().position(|&i| bodies[i] == *b)) {
+            pairs.push((b + 1, a));
+        }
+        for (c, other) in scene.iter().enumerate().take(a - nb - 1) {
+            if m.prescribed && other.prescribed {
+                pairs.push((nb + c + 1, a));
+            }
+        }
+    }
     pairs.sort_unstable();
     pairs.dedup();
     for (a, b) in &pairs {
@@ -229,7 +265,11 @@ pub fn declarations(pkg: &str, bodies: &[String], shapes: &[Option<Vec<ConvexPar
     }
     let allowed = pairs.len();
     let _ = writeln!(f, "end");
-    let list = |f: &dyn Fn(&str) -> String| shaped.iter().map(|&i| f(&bodies[i])).collect::<Vec<_>>().join(", ");
+    // A member's expression: a body's from its name, a scene object's from its member.
+    let list = |f: &dyn Fn(&str) -> String, g: &dyn Fn(&crate::scene::package::Member) -> String| {
+        shaped.iter().map(|&i| f(&bodies[i])).chain(scene.iter().map(|m| g(m))).collect::<Vec<_>>().join(", ")
+    };
+    let free = scene.iter().any(|m| m.force_frame.is_some() && m.attached_to.is_none());
     let mut s = String::new();
     let _ = writeln!(
         s,
@@ -239,29 +279,34 @@ pub fn declarations(pkg: &str, bodies: &[String], shapes: &[Option<Vec<ConvexPar
     );
     let _ = writeln!(
         s,
-        "  parameter Boolean collisions = false \"Apply contact forces between the bodies' collision shapes\"\n    annotation (Dialog(group=\"Collisions\"), choices(checkBox=true));"
+        "  parameter Boolean collisions = {free} \"Apply contact forces between the bodies' collision shapes\"\n    annotation (Dialog(group=\"Collisions\"), choices(checkBox=true));"
     );
     let _ = writeln!(
         s,
         "  {pkg}.Components.Collision.World collisionWorld(\n    enabled=collisions,\n    nBodies={n},\n    bodyNames={{{}}},\n    r_0={{{}}},\n    R_T={{{}}},\n    v_0={{{}}},\n    w_a={{{}}}) \"Contact forces between the collision shapes (read from {SHAPE_FILE} when collisions is true)\"\n    {PLACEHOLDER};",
-        list(&|b| format!("\"{b}\"")),
-        list(&|b| format!("{b}.frame_a.r_0")),
-        list(&|b| format!("{b}.frame_a.R.T")),
-        list(&|b| format!("{b}.v_0")),
-        list(&|b| format!("{b}.w_a")),
+        list(&|b| format!("\"{b}\""), &|m| format!("\"{}\"", m.name)),
+        list(&|b| format!("{b}.frame_a.r_0"), &|m| m.r_0.clone()),
+        list(&|b| format!("{b}.frame_a.R.T"), &|m| m.r_t.clone()),
+        list(&|b| format!("{b}.v_0"), &|m| m.v_0.clone()),
+        list(&|b| format!("{b}.w_a"), &|m| m.w_a.clone()),
     );
-    for (k, &i) in shaped.iter().enumerate() {
+    // (member name, the frame its force acts on), 1-based place
+    let forced: Vec<(usize, &str, String)> = shaped
+        .iter()
+        .enumerate()
+        .map(|(k, &i)| (k + 1, bodies[i].as_str(), format!("{}.frame_a", bodies[i])))
+        .chain(scene.iter().enumerate().filter_map(|(k, m)| Some((nb + k + 1, m.name.as_str(), m.force_frame.clone()?))))
+        .collect();
+    for (k1, name, _) in &forced {
         let _ = writeln!(
             s,
-            "  {pkg}.Components.Collision.BodyForce {}(force=collisionWorld.force[{k1}, :], torque=collisionWorld.torque[{k1}, :]) if collisions \"Contact force and torque on {} (from collisionWorld)\"\n    {PLACEHOLDER};",
-            force_name(&bodies[i]),
-            bodies[i],
-            k1 = k + 1
+            "  {pkg}.Components.Collision.BodyForce {}(force=collisionWorld.force[{k1}, :], torque=collisionWorld.torque[{k1}, :]) if collisions \"Contact force and torque on {name} (from collisionWorld)\"\n    {PLACEHOLDER};",
+            force_name(name),
         );
     }
     let _ = writeln!(s, "equation");
-    for &i in &shaped {
-        let _ = writeln!(s, "  connect({}.frame_b, {}.frame_a);", force_name(&bodies[i]), bodies[i]);
+    for (_, name, frame) in &forced {
+        let _ = writeln!(s, "  connect({}.frame_b, {frame});", force_name(name));
     }
     let _ = writeln!(s, "public");
     Some(Contacts { declarations: s, shape_file: f.into_bytes() })

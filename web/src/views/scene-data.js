@@ -1,0 +1,90 @@
+// Scene tab (issue 29), the pure part: primitives with their default sizes, poses from typed
+// numbers (position in metres, rotation as angles in degrees about x, then y, then z: R = Rx·Ry·Rz,
+// rows as the API takes them) and back, unique names, and the API's field errors per object.
+
+/** Default shapes of the primitives a user can add (SI units). */
+export const PRIMITIVES = {
+  box: { kind: 'box', size: [0.2, 0.2, 0.2] },
+  cylinder: { kind: 'cylinder', radius: 0.1, length: 0.2 },
+  sphere: { kind: 'sphere', radius: 0.1 },
+  capsule: { kind: 'capsule', radius: 0.05, length: 0.2 },
+  plane: { kind: 'plane' },
+};
+
+/** A name for a new object of `kind` that no object or body has (`box1`, `box2`, ...). */
+export function freshName(kind, taken) {
+  const used = new Set(taken);
+  for (let i = 1; ; i += 1) {
+    const n = `${kind}${i}`;
+    if (!used.has(n)) return n;
+  }
+}
+
+/** A new static object of primitive `kind` at the origin. */
+export function newObject(kind, taken) {
+  const shape = PRIMITIVES[kind];
+  if (!shape) throw new Error(`unknown primitive ${kind}`);
+  return { name: freshName(kind, taken), shape: structuredClone(shape), position: [0, 0, 0], rotation: [[1, 0, 0], [0, 1, 0], [0, 0, 1]] };
+}
+
+const rad = (d) => (d * Math.PI) / 180;
+const deg = (r) => (r * 180) / Math.PI;
+
+/** Rotation rows R = Rx(a)·Ry(b)·Rz(c), angles in degrees. */
+export function rotationFromAngles([a, b, c]) {
+  const [ca, sa, cb, sb, cc, sc] = [Math.cos(rad(a)), Math.sin(rad(a)), Math.cos(rad(b)), Math.sin(rad(b)), Math.cos(rad(c)), Math.sin(rad(c))];
+  return [
+    [cb * cc, -cb * sc, sb],
+    [sa * sb * cc + ca * sc, -sa * sb * sc + ca * cc, -sa * cb],
+    [-ca * sb * cc + sa * sc, ca * sb * sc + sa * cc, ca * cb],
+  ];
+}
+
+/** The angles (degrees) of rotation rows, as `rotationFromAngles` takes them. */
+export function anglesFromRotation(r) {
+  const b = Math.asin(Math.max(-1, Math.min(1, r[0][2])));
+  if (1 - Math.abs(r[0][2]) < 1e-12) return [deg(Math.atan2(r[2][1], r[1][1])), deg(b), 0];
+  return [deg(Math.atan2(-r[1][2], r[2][2])), deg(b), deg(Math.atan2(-r[0][1], r[0][0]))];
+}
+
+/**
+ * Parses typed numbers: three finite numbers, or an error message naming the field.
+ * @returns {{value?: number[], error?: string}}
+ */
+export function parseTriple(texts, field) {
+  const value = texts.map((t) => (String(t).trim() === '' ? NaN : Number(t)));
+  if (value.length !== 3 || !value.every(Number.isFinite)) return { error: `${field}: three numbers are needed` };
+  return { value };
+}
+
+/** The object with a new pose from typed numbers (position m, angles °), or the error. */
+export function withPose(obj, positionTexts, angleTexts) {
+  const p = parseTriple(positionTexts, 'position');
+  if (p.error) return { error: p.error };
+  const a = parseTriple(angleTexts, 'rotation');
+  if (a.error) return { error: a.error };
+  return { object: { ...obj, position: p.value, rotation: rotationFromAngles(a.value) } };
+}
+
+/** The API's field errors (`objects[2].rotation`) by object index. */
+export function errorsByObject(errors) {
+  const out = new Map();
+  for (const e of errors || []) {
+    const m = /^objects\[(\d+)\]\.?(.*)$/.exec(e.field || '');
+    const k = m ? Number(m[1]) : -1;
+    if (!out.has(k)) out.set(k, []);
+    out.get(k).push(`${m ? m[2] || 'object' : e.field}: ${e.message}`);
+  }
+  return out;
+}
+
+/** A short description of an object's shape and kind. */
+export function describe(o) {
+  const s = o.shape;
+  const dims = s.kind === 'box' ? s.size.join(' × ') + ' m'
+    : s.kind === 'plane' ? 'z = 0 surface'
+    : s.kind === 'sphere' ? `r ${s.radius} m`
+    : `r ${s.radius} m, length ${s.length} m`;
+  const kind = o.kind || 'static';
+  return `${s.kind} (${dims}), ${kind}${o.attached_to ? ` on ${o.attached_to}` : ''}`;
+}
