@@ -35,6 +35,8 @@ test('long CAD names are cut in the middle, keeping both ends', () => {
   assert.ok(n.startsWith(a.split('…')[0]), a);
   assert.ok(n.endsWith(a.split('…')[1]), a);
   assert.equal(a.split('…')[1], 'DISTAL_JOINT'.slice(-a.split('…')[1].length));
+  // The head ends at a separator when one is near: whole words, not "SIM_L_HAND_M…".
+  assert.ok(abbreviate(n, 26).startsWith('SIM_L_HAND_…'), abbreviate(n, 26));
   assert.equal(abbreviate('J1', 24), 'J1');
   assert.equal(abbreviate(n, n.length), n);
   // Two names that differ only at the end stay different.

@@ -34,7 +34,7 @@ export function symbolOf(siUnit, units = DEFAULT_UNITS) {
 export function toDisplay(si, siUnit, units) {
   if (si === null || si === undefined || !Number.isFinite(si)) return si;
   const f = factorOf(siUnit, units);
-  if (f === 1) return si === 0 ? 0 : si;
+  if (f === 1) return si;
   const x = si * f;
   return x === 0 ? 0 : Number(x.toPrecision(12));
 }
