@@ -4,6 +4,7 @@
 import assert from 'node:assert/strict';
 import { basename, join } from 'node:path';
 import { launch, waitForModel, checkModelPixels } from './lib.mjs';
+import { checkWorkspace, checkUnits, checkViewports, checkDiagram } from './workspace.mjs';
 
 const url = process.env.CAD2MO_URL;
 const shots = process.env.CAD2MO_SCREENSHOTS;
@@ -50,7 +51,22 @@ try {
     }
     counts.loops = report.loops.length;
     await page.screenshot({ path: join(shots, `render-${name}.png`) });
-    results.push({ name, ...counts, pixels });
+    // The workspace at the scale of a real model (issue 30): iCub's hand, 11 long joint names.
+    let workspace = null;
+    if (/hand/i.test(name)) {
+      const t0 = Date.now();
+      const step = (s) => console.error(`render: ${s}`);
+      const wide = await checkWorkspace(page, { name: 'hand', shots, width: 1440, height: 900, step });
+      const units = await checkUnits(page);
+      step('viewports');
+      const viewports = await checkViewports(page, { name: 'hand', shots });
+      const narrow = await checkWorkspace(page, { name: 'hand', shots, width: 390, height: 844, step });
+      await page.setViewportSize({ width: 1280, height: 860 });
+      workspace = { wide, narrow, units, viewports, seconds: (Date.now() - t0) / 1000 };
+    }
+    // The diagrams of the real exports (issue 30): legible names, icons; screenshots.
+    const diagram = /hand|legs/i.test(name) ? await checkDiagram(page, { name, shots }) : null;
+    results.push({ name, ...counts, pixels, workspace, diagram });
   }
   assert.deepEqual(errors, [], 'page errors');
 } finally {

@@ -50,7 +50,13 @@ export function abbreviate(name, max = 24) {
   // Prefer ending the head at a separator if one is close (within 4 characters).
   const sep = Math.max(s.lastIndexOf('_', head), s.lastIndexOf('-', head), s.lastIndexOf('.', head));
   if (sep > head - 4 && sep > 0) head = sep + 1;
-  return `${s.slice(0, head)}…${s.slice(s.length - (keep - head))}`;
+  // And the tail starts at a word: a cut word ("OX_LITTLE" of "PROX_LITTLE") is dropped.
+  let from = s.length - (keep - head);
+  if (!/[_.\-]/.test(s[from - 1])) {
+    const m = /[_.\-]/.exec(s.slice(from, from + 5));
+    if (m && from + m.index + 1 < s.length - 3) from += m.index + 1;
+  }
+  return `${s.slice(0, head)}…${s.slice(from)}`;
 }
 
 /** Rows whose name holds every word of `query` (case-insensitive); all rows for an empty query. */

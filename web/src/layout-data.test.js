@@ -37,6 +37,8 @@ test('long CAD names are cut in the middle, keeping both ends', () => {
   assert.equal(a.split('…')[1], 'DISTAL_JOINT'.slice(-a.split('…')[1].length));
   // The head ends at a separator when one is near: whole words, not "SIM_L_HAND_M…".
   assert.ok(abbreviate(n, 26).startsWith('SIM_L_HAND_…'), abbreviate(n, 26));
+  // ... and the tail starts at a word.
+  assert.equal(abbreviate('SIM_L_HAND_PALM_NAKED_SIM_L_HAND_PROX_LITTLE_FINGER', 28), 'SIM_L_HAND_…LITTLE_FINGER');
   assert.equal(abbreviate('J1', 24), 'J1');
   assert.equal(abbreviate(n, n.length), n);
   // Two names that differ only at the end stay different.
