@@ -221,7 +221,7 @@ export async function renderViewer(main, id, v, initialTab) {
   const workspace = h('div', { class: 'workspace model-layout' });
   const limitsNow = () => sizeLimits(window.innerWidth, window.innerHeight);
   let sideW = loadSize(localStorage, 'cad2mo.layout.side', Math.round(window.innerWidth * 0.38), limitsNow().side.min, limitsNow().side.max);
-  let dockH = loadSize(localStorage, 'cad2mo.layout.dock', Math.round(window.innerHeight * 0.3), limitsNow().dock.min, limitsNow().dock.max);
+  let dockH = loadSize(localStorage, 'cad2mo.layout.dock', Math.round(window.innerHeight * 0.26), limitsNow().dock.min, limitsNow().dock.max);
   const applySizes = () => {
     const l = limitsNow();
     workspace.style.setProperty('--side-w', `${clamp(sideW, l.side.min, l.side.max)}px`);
