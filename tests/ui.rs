@@ -399,6 +399,7 @@ fn models_render_in_chromium() {
         }
         assert_eq!(ws["viewports"]["quad"].as_array().map(|q| q.len()), Some(4), "four viewports drawn: {ws}");
         assert!(ws["viewports"]["distance"].as_f64().is_some_and(|d| d > 0.0), "a measured distance: {ws}");
+        assert!(ws["viewports"]["collisionShapes"].as_u64().is_some_and(|n| n >= 10), "the hand's collision shapes shown: {ws}");
         for r in &results[2..4] {
             assert_eq!(r["diagram"]["icons"], r["diagram"]["components"], "an icon per diagram component: {r}");
         }
@@ -408,6 +409,7 @@ fn models_render_in_chromium() {
             "ws-hand-1440-drives",
             "ws-hand-quad",
             "ws-hand-sbs",
+            "ws-hand-collision-shapes",
             "diagram-left_hand_mk3",
             "diagram-legs_mechanism",
         ] {

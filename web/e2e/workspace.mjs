@@ -212,6 +212,21 @@ export async function checkViewports(page, { name, shots }) {
   const single = await count();
   assert.equal(single.length, 1);
 
+  // Collision shapes: each body's convex shape from the package, drawn over it, and hidden again.
+  const plain = await page.evaluate(() => window.cad2moViewer.renderer.domElement.toDataURL());
+  await page.getByRole('checkbox', { name: 'Collision shapes', exact: true }).check();
+  const shapes = await page.evaluate(async () => {
+    const v = window.cad2moViewer;
+    await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
+    v.render();
+    return { n: v.collisionShapes?.size ?? 0, visible: [...(v.collisionShapes?.values() || [])].filter((m) => m.visible).length, picture: v.renderer.domElement.toDataURL() };
+  });
+  assert.ok(shapes.n >= 10 && shapes.visible === shapes.n, `the hand's collision shapes are shown: ${shapes.n} (${shapes.visible} visible)`);
+  assert.notEqual(shapes.picture, plain, 'the shapes are drawn');
+  await page.screenshot({ path: join(shots, `ws-${name}-collision-shapes.png`) });
+  await page.getByRole('checkbox', { name: 'Collision shapes', exact: true }).uncheck();
+  assert.equal(await page.evaluate(() => [...window.cad2moViewer.collisionShapes.values()].filter((m) => m.visible).length), 0, 'hidden again');
+
   // The measuring tool: two points picked on the meshes, their distance shown.
   await page.getByRole('button', { name: 'Measure' }).click();
   const canvas = await page.locator('.stage canvas').boundingBox();
@@ -244,7 +259,7 @@ export async function checkViewports(page, { name, shots }) {
   await page.screenshot({ path: join(shots, `ws-${name}-measure.png`) });
   await page.getByRole('button', { name: 'Stop measuring' }).click();
   await grid.check();
-  return { quad: quad.map((q) => Number(q.share.toFixed(3))), sbs: sbs.map((q) => Number(q.share.toFixed(3))), distance };
+  return { quad: quad.map((q) => Number(q.share.toFixed(3))), sbs: sbs.map((q) => Number(q.share.toFixed(3))), distance, collisionShapes: shapes.n };
 }
 
 /** Every component name of the diagram in view is at least 9 px high on screen, or hidden; a screenshot. */

@@ -527,6 +527,32 @@ export class Viewer {
     this.invalidate();
   }
 
+  /**
+   * Shows (on) or hides each body's collision shape, drawn as a translucent orange wireframe
+   * in the body's frame: `shapes` maps body names to {positions, indices} in CS1 (metres),
+   * given on the first call that shows them.
+   */
+  setCollisionShapes(on, shapes) {
+    if (on && !this.collisionShapes && shapes) {
+      this.collisionShapes = new Map();
+      this.collisionMaterial = new THREE.MeshBasicMaterial({ color: 0xe06000, wireframe: true, transparent: true, opacity: 0.35, depthTest: false });
+      for (const [name, s] of shapes) {
+        const b = this.bodies.get(name);
+        if (!b || !s.indices.length) continue;
+        const g = new THREE.BufferGeometry();
+        g.setAttribute('position', new THREE.Float32BufferAttribute(s.positions, 3));
+        g.setIndex(s.indices);
+        const m = new THREE.Mesh(g, this.collisionMaterial);
+        m.renderOrder = 15;
+        b.group.add(m);
+        this.collisionShapes.set(name, m);
+      }
+    }
+    for (const m of this.collisionShapes?.values() || []) m.visible = !!on;
+    this.invalidate();
+    return this.collisionShapes?.size ?? 0;
+  }
+
   /** Highlights one body or joint (null clears). */
   select(sel) {
     this.selected = sel;

@@ -7,6 +7,7 @@ import { api, download, enc } from '../api.js';
 import { h, fill, errorBox, say, tabs, num, plural } from '../ui.js';
 import { Viewer, niceStep } from '../viewer/viewer.js';
 import { coordinates } from '../viewer/kinematics.js';
+import { parseObj } from '../viewer/obj.js';
 import { renderDrives } from './drives.js';
 import { renderMotion } from './motion.js';
 import { renderResults } from './results.js';
@@ -37,6 +38,21 @@ async function loadMeshes(version, report) {
   performance.measure('cad2mo:download', { start: t0, end: t1 });
   performance.measure('cad2mo:unzip', { start: t1, end: t2 });
   performance.measure('cad2mo:parse', { start: t2, end: t3 });
+  // The collision shapes are unzipped from the same bytes when first shown.
+  out.collisionShapes = () => collisionShapes(zip, report);
+  return out;
+}
+
+/** Each body's collision shape from the package (Resources/Collision/<body>.obj), by body name. */
+function collisionShapes(zip, report) {
+  const names = new Set(report.bodies.map((b) => b.modelica_name));
+  const files = unzipSync(zip, { filter: (f) => /\/Resources\/Collision\/[^/]+\.obj$/.test(f.name) });
+  const out = new Map();
+  const text = new TextDecoder();
+  for (const [path, bytes] of Object.entries(files)) {
+    const name = path.split('/').pop().replace(/\.obj$/, '');
+    if (names.has(name)) out.set(name, parseObj(text.decode(bytes)));
+  }
   return out;
 }
 
@@ -76,6 +92,7 @@ export async function renderViewer(main, id, v, initialTab) {
   const details = h('div', { class: 'details' });
   const anaglyph = h('input', { type: 'checkbox', id: 'anaglyph' });
   const grid = h('input', { type: 'checkbox', id: 'grid', checked: true });
+  const shapesBox = h('input', { type: 'checkbox', id: 'collision-shapes' });
   const units = getUnits();
   const angleSel = h('select', { id: 'unit-angle' }, h('option', { value: 'deg', selected: units.angle === 'deg' }, 'degrees'), h('option', { value: 'rad', selected: units.angle === 'rad' }, 'radians'));
   const lengthSel = h('select', { id: 'unit-length' }, h('option', { value: 'mm', selected: units.length === 'mm' }, 'mm'), h('option', { value: 'm', selected: units.length === 'm' }, 'm'));
@@ -94,6 +111,7 @@ export async function renderViewer(main, id, v, initialTab) {
     h('button', { type: 'button', onclick: () => resetPose() }, 'Reset pose'),
     h('span', { class: 'check' }, anaglyph, h('label', { for: 'anaglyph' }, 'Red-cyan anaglyph')),
     h('span', { class: 'check' }, grid, h('label', { for: 'grid' }, 'Grid and world frame')),
+    h('span', { class: 'check' }, shapesBox, h('label', { for: 'collision-shapes' }, 'Collision shapes')),
     h('span', { class: 'check' }, h('label', { for: 'view-layout' }, 'Viewports'), layoutSel),
     measureBtn,
     measureOut,
@@ -129,6 +147,15 @@ export async function renderViewer(main, id, v, initialTab) {
     delete measureOut.dataset.distance;
   });
   grid.addEventListener('change', () => viewer.setGrid(grid.checked));
+  shapesBox.addEventListener('change', () => {
+    try {
+      const n = viewer.setCollisionShapes?.(shapesBox.checked, shapesBox.checked && !viewer.collisionShapes ? meshes.collisionShapes() : null);
+      if (shapesBox.checked && !n) say('This version has no collision shapes in its package', 'info');
+    } catch (e) {
+      shapesBox.checked = false;
+      say(`The collision shapes could not be read: ${e.message}`, 'error');
+    }
+  });
   const sliders = new Map();
   const resetPose = () => {
     viewer.resetPose();
