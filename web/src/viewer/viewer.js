@@ -412,6 +412,7 @@ export class Viewer {
     cam.position.copy(centre).addScaledVector(dir, -this.size * 4);
     cam.lookAt(centre);
     cam.updateProjectionMatrix();
+    cam.updateMatrixWorld(); // project() works before the first render too
     return cam;
   }
 
@@ -660,6 +661,10 @@ export class Viewer {
     else if (this.layout === 'quad' || this.layout === 'sbs') {
       const hgt = Math.max(this.host.clientHeight, 1);
       const r = this.renderer;
+      // The whole canvas first: no part of an earlier picture survives in a viewport.
+      r.setScissorTest(false);
+      r.setViewport(0, 0, Math.max(this.host.clientWidth, 1), hgt);
+      r.clear();
       r.setScissorTest(true);
       for (const v of this.viewports()) {
         // three.js viewports count from the bottom-left corner.
@@ -674,18 +679,23 @@ export class Viewer {
     if (this.host.dataset.rendered === '1') performance.measure('cad2mo:first-frame', { start: t0 });
   }
 
-  /** Where the model's meshes are on screen, in canvas CSS pixels: {x0, y0, x1, y1}. */
-  screenBox(name) {
+  /**
+   * Where the model's meshes are on screen, in canvas CSS pixels: {x0, y0, x1, y1}; in viewport
+   * `vp` (one of viewports()) when given, else in the whole canvas through the main camera.
+   */
+  screenBox(name, vp) {
     const out = { x0: Infinity, y0: Infinity, x1: -Infinity, y1: -Infinity };
     const canvas = this.renderer.domElement;
+    const cam = vp?.camera || this.camera;
+    const [ox, oy, w, hgt] = vp ? [vp.x, vp.y, vp.w, vp.h] : [0, 0, canvas.clientWidth, canvas.clientHeight];
     for (const [n, b] of this.bodies) {
       if (!b.hasMesh || (name && n !== name)) continue;
       b.group.updateMatrixWorld(true);
       const box = new THREE.Box3().setFromObject(b.group);
       for (const c of corners(box)) {
-        const p = c.project(this.camera);
-        const x = ((p.x + 1) / 2) * canvas.clientWidth;
-        const y = ((1 - p.y) / 2) * canvas.clientHeight;
+        const p = c.project(cam);
+        const x = ox + ((p.x + 1) / 2) * w;
+        const y = oy + ((1 - p.y) / 2) * hgt;
         out.x0 = Math.min(out.x0, x);
         out.y0 = Math.min(out.y0, y);
         out.x1 = Math.max(out.x1, x);
