@@ -97,6 +97,11 @@ export async function checkWorkspace(page, { name, shots, width, height, step = 
     assert.equal(reach.count, 0, `${name} at ${width}×${height}, ${tab}: ${reach.count} of ${reach.checked} controls out of their panel or the window: ${reach.bad.join('; ')}`);
     assert.ok(reach.pageOverflow <= 1, `${name} at ${width}×${height}, ${tab}: the page is ${reach.pageOverflow}px wider than the window: ${reach.wide.join('; ')}`);
     out.tabs[tab] = reach.checked;
+    // Abbreviated joint names stay tellable apart: no two rows read alike.
+    if (tab === 'Drives' || tab === 'Motion') {
+      const shown = await panel.locator(tab === 'Drives' ? 'table.drives tbody th button' : 'table.keyframe-table tbody th .name').allTextContents();
+      assert.equal(new Set(shown).size, shown.length, `${name}, ${tab}: rows that read alike: ${shown.join(' | ')}`);
+    }
     // In a wide window the drives and keyframe tables fit without scrolling sideways.
     if (width >= 1200 && (tab === 'Drives' || tab === 'Motion')) {
       const sel = tab === 'Drives' ? 'table.drives' : 'table.keyframe-table';

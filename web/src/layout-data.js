@@ -68,3 +68,23 @@ export function filterRows(rows, query, nameOf = (r) => r) {
     return words.every((w) => n.includes(w));
   });
 }
+
+/**
+ * Names abbreviated to `max` characters each, but never two alike: names whose abbreviations
+ * collide get longer ones (up to the full name) until every shown name is distinct.
+ * @returns {Map<string, string>} name → shown text
+ */
+export function abbreviateAll(names, max = 24) {
+  const out = new Map();
+  const len = new Map();
+  for (const n of names) len.set(n, max);
+  for (let round = 0; round < 100; round++) {
+    for (const n of names) out.set(n, abbreviate(n, len.get(n)));
+    const seen = new Map();
+    for (const n of names) seen.set(out.get(n), [...(seen.get(out.get(n)) || []), n]);
+    const clash = [...seen.values()].filter((g) => new Set(g).size > 1).flat();
+    if (!clash.length) break;
+    for (const n of clash) len.set(n, Math.min(String(n).length, len.get(n) + 4));
+  }
+  return out;
+}

@@ -52,3 +52,15 @@ test('the joint filter matches every word anywhere in the name', () => {
   assert.deepEqual(filterRows(rows, 'distal thumb'), ['thumb_distal']);
   assert.deepEqual(filterRows([{ name: 'a_b' }], 'b', (r) => r.name), [{ name: 'a_b' }]);
 });
+
+test('abbreviations of a set of names are all different', async () => {
+  const { abbreviateAll } = await import('./layout-data.js');
+  const names = ['SIM_L_HAND_PALM_NAKED_SIM_L_HAND_PROX_LITTLE_FINGER', 'SIM_L_HAND_PROX_LITTLE_FINGER_SIM_L_HAND_DIST_LITTLE_FINGER', 'SIM_L_HAND_PALM_NAKED_SIM_L_HAND_METACARPUS_INDEX', 'J1', 'J1'];
+  const shown = abbreviateAll(names, 28);
+  const texts = [...new Set(names)].map((n) => shown.get(n));
+  assert.equal(new Set(texts).size, texts.length, JSON.stringify(texts));
+  for (const n of names) assert.ok(shown.get(n).length <= Math.max(28, n.length));
+  assert.equal(shown.get('J1'), 'J1');
+  // Without a clash, the plain abbreviation.
+  assert.equal(shown.get(names[2]), 'SIM_L_HAND_…METACARPUS_INDEX');
+});

@@ -5,7 +5,7 @@
 
 import { api, download, enc, waitForJob, describeJob } from '../api.js';
 import { h, fill, errorBox, say, num, unitLabel, limits, checkValue, field, confirmAction } from '../ui.js';
-import { abbreviate } from '../layout-data.js';
+import { abbreviate, abbreviateAll } from '../layout-data.js';
 import { getUnits, toDisplay, fromDisplay, symbolOf, parseNumber } from '../units.js';
 
 const SLOTS = [
@@ -50,6 +50,7 @@ export async function renderDrives(panel, ctx) {
       fill(tableBox, h('p', { class: 'muted' }, 'This model has no drivable (revolute or prismatic tree) joints.'));
       return;
     }
+    const shortName = abbreviateAll(data.joints.map((j) => j.name), 28); // never two rows alike
     const rows = data.joints.map((j) => {
       const d = driveOf(j.name);
       const inst = (id) => {
@@ -60,7 +61,7 @@ export async function renderDrives(panel, ctx) {
       return h(
         'tr',
         { dataset: { joint: j.name }, class: current === j.name ? 'selected' : '' },
-        h('th', { scope: 'row' }, h('button', { type: 'button', class: 'link', title: j.name, 'aria-label': `Open the drive of ${j.name}`, onclick: () => open(j.name, true) }, abbreviate(j.name, 28))),
+        h('th', { scope: 'row' }, h('button', { type: 'button', class: 'link', title: j.name, 'aria-label': `Open the drive of ${j.name}`, onclick: () => open(j.name, true) }, shortName.get(j.name))),
         h('td', { class: 'kind' }, j.kind),
         h('td', {}, d ? inst(d.motor_instance) : h('span', { class: 'muted' }, 'none')),
         h('td', {}, d ? inst(d.gear_instance) : ''),

@@ -13,7 +13,7 @@ import { simulationBody, driveRows, trackingErrors, positionVariable, valueAt } 
 import { sweepRows, firstContactText, contactMarkers, touchedBy, witnessLine, pairKey } from './collision-data.js';
 import { advance, SPEEDS } from './results-data.js';
 import { getUnits, factorOf, symbolOf } from '../units.js';
-import { abbreviate, filterRows } from '../layout-data.js';
+import { abbreviateAll, filterRows } from '../layout-data.js';
 
 const INTERPOLATIONS = [
   ['ptp', 'Point to point (speed/acceleration limits)'],
@@ -334,6 +334,7 @@ export function renderMotion(panel, ctx) {
    */
   function keyframeTable() {
     const all = driven();
+    const shortName = abbreviateAll(all.map((j) => j.name), 30); // never two rows alike
     const search = h('input', { type: 'search', id: 'kf-filter', value: jointFilter, autocomplete: 'off', placeholder: 'name or part of it' });
     const count = h('small', { class: 'muted kf-filter-count' });
     const body = h('tbody');
@@ -346,7 +347,7 @@ export function renderMotion(panel, ctx) {
           h(
             'tr',
             { dataset: { joint: j.name } },
-            h('th', { scope: 'row', title: j.name }, h('span', { class: 'name', title: j.name }, abbreviate(j.name, 28)), h('small', { class: 'muted' }, ` [${unitOf(j.name)}]`)),
+            h('th', { scope: 'row', title: j.name }, h('span', { class: 'name', title: j.name }, shortName.get(j.name)), h('small', { class: 'muted' }, ` [${unitOf(j.name)}]`)),
             spec.keyframes.map((kf, k) =>
               h(
                 'td',
