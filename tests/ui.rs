@@ -369,7 +369,20 @@ fn models_render_in_chromium() {
             .expect("copy");
         let legs = work.path().join("legs_mechanism.zip");
         std::fs::write(&legs, zip_dir(&legs_dir)).expect("zip");
-        bundles.extend([hand, legs]);
+        // PR2 (URDF, 82 links, 81 joints of which 30 move, 10 mimic): the workspace at the scale of 40+ joints.
+        // Its meshes are named package://example-robot-data/robots/pr2_description/..., so the
+        // bundle keeps that folder.
+        let pr2_dir = fixtures.join("urdf/Gepetto+example-robot-data/39aa9437/robots/pr2_description");
+        let files: Vec<(String, Vec<u8>)> = cad2mo_tests::common::files_with_ext(&pr2_dir, &[""])
+            .into_iter()
+            .map(|p| {
+                let rel = p.strip_prefix(&pr2_dir).expect("under dir").to_string_lossy().replace('\\', "/");
+                (format!("robots/pr2_description/{rel}"), std::fs::read(&p).expect("read"))
+            })
+            .collect();
+        let pr2 = work.path().join("pr2.zip");
+        std::fs::write(&pr2, cad2mo_engine::pipeline::back::bundle::write_zip(&files).expect("zip")).expect("zip");
+        bundles.extend([hand, legs, pr2]);
     }
     let shots = workspace_root().join("target/ui-screenshots");
     std::fs::create_dir_all(&shots).expect("screenshot folder");
@@ -403,7 +416,19 @@ fn models_render_in_chromium() {
         for r in &results[2..4] {
             assert_eq!(r["diagram"]["icons"], r["diagram"]["components"], "an icon per diagram component: {r}");
         }
+        // PR2's workspace: the same reach checks on every tab with 30 moving joints.
+        let pr2 = &results[4];
+        assert!(pr2["axes"].as_u64().is_some_and(|n| n >= 30), "PR2's 30 moving joints are drawn: {pr2}");
+        assert!(pr2["bodies"].as_u64().is_some_and(|n| n >= 40), "PR2's bodies are listed: {pr2}");
+        let ws = &pr2["workspace"];
+        for size in ["wide", "narrow"] {
+            assert_eq!(ws[size]["viewAndPlay"]["play"], true, "PR2 {size}: {ws}");
+            assert_eq!(ws[size]["tabs"].as_object().map(|t| t.len()), Some(8), "PR2 {size}: every tab checked: {ws}");
+        }
         for png in [
+            "ws-pr2-1440-motion",
+            "ws-pr2-1440-drives",
+            "ws-pr2-390-motion",
             "ws-hand-1440-motion",
             "ws-hand-390-motion",
             "ws-hand-1440-drives",

@@ -224,6 +224,62 @@ export async function checkViewports(page, { name, shots }) {
   const single = await count();
   assert.equal(single.length, 1);
 
+  // Named views: the camera looks down against "up" (top) or horizontally (front, side), the
+  // whole model in the window; Fit selection frames one small body so it fills the view.
+  const camera = () =>
+    page.evaluate(() => {
+      const v = window.cad2moViewer;
+      const d = v.controls.target.clone().sub(v.camera.position).normalize();
+      const c = v.renderer.domElement;
+      const b = v.screenBox();
+      return { down: -d.dot(v.up), inside: b.x0 >= -1 && b.y0 >= -1 && b.x1 <= c.clientWidth + 1 && b.y1 <= c.clientHeight + 1, fwd: d.toArray() };
+    });
+  const views = {};
+  for (const view of ['top', 'front', 'side', 'iso']) {
+    await page.getByLabel('Named view').selectOption(view);
+    views[view] = await camera();
+    assert.ok(views[view].inside, `${name}: the ${view} view shows the whole model: ${JSON.stringify(views[view])}`);
+  }
+  assert.ok(views.top.down > 0.999, `the top view looks down: ${JSON.stringify(views.top)}`);
+  for (const v of ['front', 'side']) assert.ok(Math.abs(views[v].down) < 1e-6, `the ${v} view is horizontal: ${JSON.stringify(views[v])}`);
+  assert.ok(Math.abs(views.front.fwd.reduce((s, x, i) => s + x * views.side.fwd[i], 0)) < 1e-6, 'front and side are at right angles');
+  assert.ok(views.iso.down > 0.1 && views.iso.down < 0.9, 'iso looks down obliquely');
+  const fit = await page.evaluate(() => {
+    const v = window.cad2moViewer;
+    const c = v.renderer.domElement;
+    // The body drawn smallest in the whole-model view.
+    const span = (n) => {
+      const b = v.screenBox(n);
+      return Math.max(b.x1 - b.x0, b.y1 - b.y0);
+    };
+    const [small] = [...v.bodies.entries()].filter(([, b]) => b.hasMesh).map(([n]) => [n, span(n)]).sort((a, b) => a[1] - b[1]);
+    v.onPick({ kind: 'body', name: small[0] });
+    return { name: small[0], before: small[1], view: Math.min(c.clientWidth, c.clientHeight) };
+  });
+  await page.getByRole('button', { name: 'Fit selection' }).click();
+  fit.after = await page.evaluate((n) => {
+    const b = window.cad2moViewer.screenBox(n);
+    return Math.max(b.x1 - b.x0, b.y1 - b.y0);
+  }, fit.name);
+  assert.ok(fit.after > 0.4 * fit.view && fit.after > 2 * fit.before, `Fit selection frames ${fit.name}: ${JSON.stringify(fit)}`);
+  await page.getByLabel('Named view').selectOption('iso');
+  // Transparency: every body's material see-through, a different picture, and back.
+  const picture = () =>
+    page.evaluate(async () => {
+      const v = window.cad2moViewer;
+      await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
+      v.render();
+      return { url: v.renderer.domElement.toDataURL(), opacities: [...new Set([...v.bodies.values()].flatMap((b) => b.materials.map((m) => (m.transparent ? m.opacity : 1))))] };
+    });
+  const solid = await picture();
+  await page.getByLabel('Transparent').check();
+  const seeThrough = await picture();
+  await page.screenshot({ path: join(shots, `ws-${name}-transparent.png`) });
+  assert.deepEqual(seeThrough.opacities, [0.35], 'every body is see-through');
+  assert.notEqual(seeThrough.url, solid.url, 'the see-through picture differs');
+  await page.getByLabel('Transparent').uncheck();
+  assert.deepEqual((await picture()).opacities, [1], 'solid again');
+
   // Collision shapes: each body's convex shape from the package, drawn over it, and hidden again.
   const plain = await page.evaluate(() => window.cad2moViewer.renderer.domElement.toDataURL());
   await page.getByRole('checkbox', { name: 'Collision shapes', exact: true }).check();
@@ -271,7 +327,7 @@ export async function checkViewports(page, { name, shots }) {
   await page.screenshot({ path: join(shots, `ws-${name}-measure.png`) });
   await page.getByRole('button', { name: 'Stop measuring' }).click();
   await grid.check();
-  return { quad: quad.map((q) => Number(q.share.toFixed(3))), sbs: sbs.map((q) => Number(q.share.toFixed(3))), distance, collisionShapes: shapes.n };
+  return { quad: quad.map((q) => Number(q.share.toFixed(3))), sbs: sbs.map((q) => Number(q.share.toFixed(3))), distance, collisionShapes: shapes.n, views: Object.keys(views), fit };
 }
 
 /** Every component name of the diagram in view is at least 9 px high on screen, or hidden; a screenshot. */

@@ -378,6 +378,83 @@ export class Viewer {
   }
 
   /**
+   * A named view of the whole model: 'top' (looking down, against "up"), 'front', 'side'
+   * (horizontal, as in the four-viewport layout) or 'iso' (the oblique view of Reset view).
+   */
+  namedView(name) {
+    const { fwd, right } = this.horizontalAxes();
+    // Top: straight down, a hair behind so that "forward" points up the screen (the orbit keeps
+    // "up" as the camera's up and cannot sit exactly on it).
+    const iso = fwd.clone().negate().add(right).normalize().addScaledVector(this.up, 0.8);
+    const dir = { top: this.up.clone().addScaledVector(fwd, -1e-4), front: fwd.clone().negate(), side: right.clone(), iso }[name];
+    if (!dir) throw new Error(`unknown view ${name}`);
+    this.lookAlong(dir, this.poseBox());
+  }
+
+  /**
+   * Frames the selected body (its meshes or CG dot) or joint (its arrows) from the current
+   * viewing direction; the whole model when nothing is selected. Returns whether a selection was framed.
+   */
+  fitSelection() {
+    const sel = this.selected;
+    const box = new THREE.Box3();
+    if (sel?.kind === 'body' && this.bodies.has(sel.name)) box.expandByObject(this.bodies.get(sel.name).group);
+    else if (sel?.kind === 'joint' && this.joints.has(sel.name)) for (const a of this.joints.get(sel.name).arrows) box.expandByObject(a);
+    const dir = this.camera.position.clone().sub(this.controls.target).normalize();
+    this.lookAlong(dir, box.isEmpty() ? this.poseBox() : box);
+    return !box.isEmpty();
+  }
+
+  /** Places the perspective camera on `dir` (from the target towards the eye) so that `box` fills the view. */
+  lookAlong(dir, box) {
+    const centre = box.getCenter(new THREE.Vector3());
+    const size = Math.max(box.getSize(new THREE.Vector3()).length(), this.size / 1000);
+    // The box's bounding sphere inside the narrower of the two half-angles of the view.
+    const half = (this.camera.fov * Math.PI) / 360;
+    const narrow = Math.min(half, Math.atan(Math.tan(half) * this.camera.aspect));
+    const dist = (size / 2 / Math.sin(narrow)) * 1.05;
+    this.camera.position.copy(centre).addScaledVector(dir.clone().normalize(), dist);
+    this.camera.near = dist / 200;
+    this.camera.far = dist * 50 + this.size * 10;
+    this.camera.updateProjectionMatrix();
+    this.controls.target.copy(centre);
+    this.controls.update();
+    this.camera.updateMatrixWorld();
+    this.invalidate();
+  }
+
+  /** The box around the bodies as they are posed now (the model's box when none has a shape). */
+  poseBox() {
+    const box = new THREE.Box3();
+    for (const b of this.bodies.values()) if (b.hasMesh) box.expandByObject(b.group);
+    return box.isEmpty() ? this.box.clone() : box;
+  }
+
+  /** The horizontal "forward" (the world axis least aligned with up) and "right" directions. */
+  horizontalAxes() {
+    const up = this.up;
+    const axes = [new THREE.Vector3(1, 0, 0), new THREE.Vector3(0, 1, 0), new THREE.Vector3(0, 0, 1)];
+    const fwd = axes.sort((a, b) => Math.abs(a.dot(up)) - Math.abs(b.dot(up)))[0].clone();
+    fwd.addScaledVector(up, -fwd.dot(up)).normalize();
+    return { fwd, right: new THREE.Vector3().crossVectors(fwd, up).normalize() };
+  }
+
+  /** See-through bodies (opacity 0.35, no depth writes) so inner parts and axes show; returns the opacity. */
+  setTransparent(on) {
+    this.transparentOn = !!on;
+    for (const b of this.bodies.values()) {
+      for (const m of b.materials) {
+        m.transparent = this.transparentOn;
+        m.opacity = this.transparentOn ? 0.35 : 1;
+        m.depthWrite = !this.transparentOn;
+        m.needsUpdate = true;
+      }
+    }
+    this.invalidate();
+    return this.transparentOn ? 0.35 : 1;
+  }
+
+  /**
    * The viewport layout: 'single' (the perspective view), 'quad' (top, front and side
    * orthographic views beside the perspective one) or 'sbs' (side-by-side stereo: left eye on the
    * left half, right eye on the right, for polarised dual projection and 3D displays).
@@ -428,10 +505,7 @@ export class Viewer {
       const hh = Math.floor(hgt / 2);
       const up = this.up.clone();
       // A horizontal "forward" direction: the world axis least aligned with up, made horizontal.
-      const axes = [new THREE.Vector3(1, 0, 0), new THREE.Vector3(0, 1, 0), new THREE.Vector3(0, 0, 1)];
-      const fwd = axes.sort((a, b) => Math.abs(a.dot(up)) - Math.abs(b.dot(up)))[0].clone();
-      fwd.addScaledVector(up, -fwd.dot(up)).normalize();
-      const right = new THREE.Vector3().crossVectors(fwd, up).normalize();
+      const { fwd, right } = this.horizontalAxes();
       const a = (ww, h2) => ww / Math.max(h2, 1);
       this.perspQuad ||= new THREE.PerspectiveCamera();
       this.perspQuad.copy(this.camera);

@@ -99,6 +99,9 @@ export async function renderViewer(main, id, v, initialTab) {
   // Viewports: one perspective view, four (top, front, side orthographic + perspective), or
   // side-by-side stereo (beside the red-cyan anaglyph); the measuring tool.
   const layoutSel = h('select', { id: 'view-layout' }, h('option', { value: 'single' }, 'Single view'), h('option', { value: 'quad' }, 'Four views'), h('option', { value: 'sbs' }, 'Side-by-side stereo'));
+  // Named views of the whole model, framing the selection, see-through bodies.
+  const viewSel = h('select', { id: 'named-view' }, h('option', { value: '' }, 'View from…'), ...['iso', 'top', 'front', 'side'].map((v) => h('option', { value: v }, { iso: 'Iso', top: 'Top', front: 'Front', side: 'Side' }[v])));
+  const transparentBox = h('input', { type: 'checkbox', id: 'transparent' });
   const measureOut = h('output', { class: 'measure-out', 'aria-live': 'polite' });
   const measureBtn = h('button', { type: 'button', id: 'measure', 'aria-pressed': 'false' }, 'Measure');
   angleSel.addEventListener('change', () => setUnits({ angle: angleSel.value }));
@@ -111,7 +114,10 @@ export async function renderViewer(main, id, v, initialTab) {
     h('button', { type: 'button', onclick: () => resetPose() }, 'Reset pose'),
     h('span', { class: 'check' }, anaglyph, h('label', { for: 'anaglyph' }, 'Red-cyan anaglyph')),
     h('span', { class: 'check' }, grid, h('label', { for: 'grid' }, 'Grid and world frame')),
+    h('span', { class: 'check' }, h('label', { for: 'named-view', class: 'visually-hidden' }, 'Named view'), viewSel),
+    h('button', { type: 'button', id: 'fit-selection', onclick: () => viewer.fitSelection?.() }, 'Fit selection'),
     h('span', { class: 'check' }, shapesBox, h('label', { for: 'collision-shapes' }, 'Collision shapes')),
+    h('span', { class: 'check' }, transparentBox, h('label', { for: 'transparent' }, 'Transparent')),
     h('span', { class: 'check' }, h('label', { for: 'view-layout' }, 'Viewports'), layoutSel),
     measureBtn,
     measureOut,
@@ -147,6 +153,11 @@ export async function renderViewer(main, id, v, initialTab) {
     delete measureOut.dataset.distance;
   });
   grid.addEventListener('change', () => viewer.setGrid(grid.checked));
+  viewSel.addEventListener('change', () => {
+    if (viewSel.value) viewer.namedView?.(viewSel.value);
+    viewSel.value = '';
+  });
+  transparentBox.addEventListener('change', () => viewer.setTransparent?.(transparentBox.checked));
   shapesBox.addEventListener('change', () => {
     try {
       const n = viewer.setCollisionShapes?.(shapesBox.checked, shapesBox.checked && !viewer.collisionShapes ? meshes.collisionShapes() : null);
@@ -541,7 +552,7 @@ function describe(report, sel) {
     if (b.subsystem.length) row('Subsystem', b.subsystem.join(' / '));
     row('Mass', `${num(b.mass)} kg`);
     row('CG (world)', `${mm(b.cg_world)} mm`);
-    row('Inertia about CG', h('span', { class: 'matrix' }, b.inertia_cg.map((r) => h('span', {}, r.map(num).join('  ')))), ' kg·m²');
+    row('Inertia about CG', h('span', { class: 'matrix scroll' }, b.inertia_cg.map((r) => h('span', {}, r.map(num).join('  ')))), ' kg·m²');
     row('CS1 (world)', `${mm(b.cs1.position_world)} mm`);
     row('Shape', b.triangles ? `${b.triangles} triangles from ${b.geometry.join(', ') || 'VRML'}` : 'none');
     if (b.lumped.length) row('Lumped', b.lumped.join(', '));
