@@ -38,7 +38,7 @@ function outOfReach() {
   const pageOverflow = document.documentElement.scrollWidth - vw;
   // What sticks out of the window when the page is wider than it (outside boxes that scroll).
   const wide = pageOverflow > 1
-    ? [...document.querySelectorAll('body *')].filter((e) => !e.closest('.scroll') && e.getBoundingClientRect().right > vw + 1).slice(0, 6).map((e) => `${e.tagName.toLowerCase()}.${e.className} → ${Math.round(e.getBoundingClientRect().right)}`)
+    ? [...document.querySelectorAll('body *')].filter((e) => !e.parentElement.closest('.scroll') && e.getBoundingClientRect().right > vw + 1).slice(0, 6).map((e) => `${e.tagName.toLowerCase()}.${e.className} → ${Math.round(e.getBoundingClientRect().right)}`)
     : [];
   return { checked, bad: bad.slice(0, 10), count: bad.length, pageOverflow, wide };
 }

@@ -688,8 +688,17 @@ export class Viewer {
         this.contactGroup.add(s);
       }
     }
+    this.contactGroup.visible = !this.contactsHidden;
     this.scene.add(this.contactGroup);
     this.invalidate();
+  }
+
+  /** Shows or hides the contact points and lines (kept while hidden); returns how many lines there are. */
+  setContactsShown(on) {
+    this.contactsHidden = !on;
+    if (this.contactGroup) this.contactGroup.visible = !!on;
+    this.invalidate();
+    return this.contactLines().length;
   }
 
   /** The contact lines drawn now, read from the scene: [{from, to}] in world coordinates. */

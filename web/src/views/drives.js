@@ -6,6 +6,7 @@
 import { api, download, enc, waitForJob, describeJob } from '../api.js';
 import { h, fill, errorBox, say, num, unitLabel, limits, checkValue, field, confirmAction } from '../ui.js';
 import { abbreviate, abbreviateAll } from '../layout-data.js';
+import { placeFieldErrors, driveControl } from '../field-errors.js';
 import { getUnits, toDisplay, fromDisplay, symbolOf, parseNumber } from '../units.js';
 
 const SLOTS = [
@@ -186,6 +187,12 @@ export async function renderDrives(panel, ctx) {
     async function save(e) {
       e.preventDefault();
       fill(out);
+      // The service's messages of the last attempt go; the form's own checks run again below.
+      for (const m of form.querySelectorAll('.field-msg.from-server')) {
+        m.textContent = '';
+        m.classList.remove('from-server');
+        m.closest('.field')?.querySelector('[aria-invalid="true"]')?.setAttribute('aria-invalid', 'false');
+      }
       const problems = [];
       for (const s of SLOTS) if (!picks[s.slot].value) problems.push(`Choose a ${s.label.toLowerCase()} instance`);
       let firstBad = null;
@@ -228,6 +235,19 @@ export async function renderDrives(panel, ctx) {
         say(`Saved the drive of ${jointName}`, 'ok');
       } catch (err) {
         fill(out, errorBox(err, 'The service refused the drive'));
+        // Each refused field's message also goes next to its control, which is marked invalid.
+        const { at } = placeFieldErrors(err.errors, driveControl);
+        let first = null;
+        for (const [key, messages] of at) {
+          const control = key === 'reference' ? ref : picks[key] || form.querySelector(`[name="${CSS.escape(key)}"]`);
+          const msg = control?.closest('.field')?.querySelector('.field-msg');
+          if (!msg) continue;
+          control.setAttribute('aria-invalid', 'true');
+          msg.textContent = messages.join('; ');
+          msg.classList.add('from-server');
+          first ??= control;
+        }
+        first?.focus();
       }
     }
 

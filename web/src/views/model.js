@@ -89,7 +89,8 @@ export async function renderViewer(main, id, v, initialTab) {
 
   const stage = h('div', { class: 'stage' });
   const info = h('p', { class: 'selection muted', 'aria-live': 'polite' }, 'Nothing selected');
-  const details = h('div', { class: 'details' });
+  // Scrolls sideways by itself if a value cannot wrap (never the page).
+  const details = h('div', { class: 'details scroll' });
   const anaglyph = h('input', { type: 'checkbox', id: 'anaglyph' });
   const grid = h('input', { type: 'checkbox', id: 'grid', checked: true });
   const shapesBox = h('input', { type: 'checkbox', id: 'collision-shapes' });
@@ -100,8 +101,10 @@ export async function renderViewer(main, id, v, initialTab) {
   // side-by-side stereo (beside the red-cyan anaglyph); the measuring tool.
   const layoutSel = h('select', { id: 'view-layout' }, h('option', { value: 'single' }, 'Single view'), h('option', { value: 'quad' }, 'Four views'), h('option', { value: 'sbs' }, 'Side-by-side stereo'));
   // Named views of the whole model, framing the selection, see-through bodies.
-  const viewSel = h('select', { id: 'named-view' }, h('option', { value: '' }, 'View from…'), ...['iso', 'top', 'front', 'side'].map((v) => h('option', { value: v }, { iso: 'Iso', top: 'Top', front: 'Front', side: 'Side' }[v])));
+  const viewSel = h('select', { id: 'named-view', 'aria-label': 'Named view' }, h('option', { value: '' }, 'View from…'), ...['iso', 'top', 'front', 'side'].map((v) => h('option', { value: v }, { iso: 'Iso', top: 'Top', front: 'Front', side: 'Side' }[v])));
   const transparentBox = h('input', { type: 'checkbox', id: 'transparent' });
+  // Contact points and closest-point lines of the collision checks, when there are any.
+  const contactsBox = h('input', { type: 'checkbox', id: 'contact-points', checked: true });
   const measureOut = h('output', { class: 'measure-out', 'aria-live': 'polite' });
   const measureBtn = h('button', { type: 'button', id: 'measure', 'aria-pressed': 'false' }, 'Measure');
   angleSel.addEventListener('change', () => setUnits({ angle: angleSel.value }));
@@ -114,10 +117,11 @@ export async function renderViewer(main, id, v, initialTab) {
     h('button', { type: 'button', onclick: () => resetPose() }, 'Reset pose'),
     h('span', { class: 'check' }, anaglyph, h('label', { for: 'anaglyph' }, 'Red-cyan anaglyph')),
     h('span', { class: 'check' }, grid, h('label', { for: 'grid' }, 'Grid and world frame')),
-    h('span', { class: 'check' }, h('label', { for: 'named-view', class: 'visually-hidden' }, 'Named view'), viewSel),
+    viewSel,
     h('button', { type: 'button', id: 'fit-selection', onclick: () => viewer.fitSelection?.() }, 'Fit selection'),
     h('span', { class: 'check' }, shapesBox, h('label', { for: 'collision-shapes' }, 'Collision shapes')),
     h('span', { class: 'check' }, transparentBox, h('label', { for: 'transparent' }, 'Transparent')),
+    h('span', { class: 'check' }, contactsBox, h('label', { for: 'contact-points' }, 'Contact points')),
     h('span', { class: 'check' }, h('label', { for: 'view-layout' }, 'Viewports'), layoutSel),
     measureBtn,
     measureOut,
@@ -158,6 +162,10 @@ export async function renderViewer(main, id, v, initialTab) {
     viewSel.value = '';
   });
   transparentBox.addEventListener('change', () => viewer.setTransparent?.(transparentBox.checked));
+  contactsBox.addEventListener('change', () => {
+    const n = viewer.setContactsShown?.(contactsBox.checked);
+    if (contactsBox.checked && !n) say('No contact points to show: run a collision check (Collision tab or a motion’s check) first', 'info');
+  });
   shapesBox.addEventListener('change', () => {
     try {
       const n = viewer.setCollisionShapes?.(shapesBox.checked, shapesBox.checked && !viewer.collisionShapes ? meshes.collisionShapes() : null);
