@@ -335,7 +335,12 @@ fn browser_kinematics_match_the_modelica_model() {
 /// four-bar (a closed loop), and, when `../shared` is there, real CAD exports written by others:
 /// the self-contained iCub left hand (XML + STL, upper-case names resolved case-insensitively)
 /// and the 29-body LEGS mechanism (XML only, closed loops). Each must draw where its meshes
-/// project, list every body, and link its report into the 3D view.
+/// project, list every body, and link its report into the 3D view. On the hand (11 joints with
+/// long names) `web/e2e/workspace.mjs` checks the workspace (issue 30): on every tab at 1440×900
+/// and 390×844 no control or table out of its panel or the window, the 3D view and Play on screen
+/// together, the unit choice in the keyframe table and plots, exact typed slider values, four
+/// viewports and side-by-side stereo drawn (pixels), the measuring tool; the hand's and LEGS'
+/// diagrams have an icon per component and names ≥ 9 px high or hidden.
 #[test]
 fn models_render_in_chromium() {
     if let Some(why) = missing_tools() {
@@ -364,7 +369,20 @@ fn models_render_in_chromium() {
             .expect("copy");
         let legs = work.path().join("legs_mechanism.zip");
         std::fs::write(&legs, zip_dir(&legs_dir)).expect("zip");
-        bundles.extend([hand, legs]);
+        // PR2 (URDF, 82 links, 81 joints of which 30 move, 10 mimic): the workspace at the scale of 40+ joints.
+        // Its meshes are named package://example-robot-data/robots/pr2_description/..., so the
+        // bundle keeps that folder.
+        let pr2_dir = fixtures.join("urdf/Gepetto+example-robot-data/39aa9437/robots/pr2_description");
+        let files: Vec<(String, Vec<u8>)> = cad2mo_tests::common::files_with_ext(&pr2_dir, &[""])
+            .into_iter()
+            .map(|p| {
+                let rel = p.strip_prefix(&pr2_dir).expect("under dir").to_string_lossy().replace('\\', "/");
+                (format!("robots/pr2_description/{rel}"), std::fs::read(&p).expect("read"))
+            })
+            .collect();
+        let pr2 = work.path().join("pr2.zip");
+        std::fs::write(&pr2, cad2mo_engine::pipeline::back::bundle::write_zip(&files).expect("zip")).expect("zip");
+        bundles.extend([hand, legs, pr2]);
     }
     let shots = workspace_root().join("target/ui-screenshots");
     std::fs::create_dir_all(&shots).expect("screenshot folder");
@@ -385,6 +403,40 @@ fn models_render_in_chromium() {
     if let Some(hand) = results.get(2) {
         assert!(hand["meshes"].as_u64().expect("meshes") >= 10, "the hand's meshes are drawn: {hand}");
         assert!(results[3]["bodies"].as_u64().expect("bodies") >= 29, "{}", results[3]);
+        // The workspace on the hand (web/e2e/workspace.mjs asserted the bounding boxes of every
+        // tab at both sizes): every tab was checked, the 3D view and Play were on screen together.
+        let ws = &hand["workspace"];
+        for size in ["wide", "narrow"] {
+            assert_eq!(ws[size]["viewAndPlay"]["play"], true, "{size}: {ws}");
+            assert_eq!(ws[size]["tabs"].as_object().map(|t| t.len()), Some(8), "{size}: every tab checked: {ws}");
+        }
+        assert_eq!(ws["viewports"]["quad"].as_array().map(|q| q.len()), Some(4), "four viewports drawn: {ws}");
+        assert!(ws["viewports"]["distance"].as_f64().is_some_and(|d| d > 0.0), "a measured distance: {ws}");
+        assert!(ws["viewports"]["collisionShapes"].as_u64().is_some_and(|n| n >= 10), "the hand's collision shapes shown: {ws}");
+        for r in &results[2..4] {
+            assert_eq!(r["diagram"]["icons"], r["diagram"]["components"], "an icon per diagram component: {r}");
+        }
+        // PR2's workspace at 1440×900: the same reach checks on every tab with 30 moving joints.
+        let pr2 = &results[4];
+        assert!(pr2["axes"].as_u64().is_some_and(|n| n >= 30), "PR2's 30 moving joints are drawn: {pr2}");
+        assert!(pr2["bodies"].as_u64().is_some_and(|n| n >= 40), "PR2's bodies are listed: {pr2}");
+        let ws = &pr2["workspace"];
+        assert_eq!(ws["wide"]["viewAndPlay"]["play"], true, "PR2: {ws}");
+        assert_eq!(ws["wide"]["tabs"].as_object().map(|t| t.len()), Some(8), "PR2: every tab checked: {ws}");
+        for png in [
+            "ws-pr2-1440-motion",
+            "ws-pr2-1440-drives",
+            "ws-hand-1440-motion",
+            "ws-hand-390-motion",
+            "ws-hand-1440-drives",
+            "ws-hand-quad",
+            "ws-hand-sbs",
+            "ws-hand-collision-shapes",
+            "diagram-left_hand_mk3",
+            "diagram-legs_mechanism",
+        ] {
+            assert!(shots.join(format!("{png}.png")).exists(), "screenshot {png}");
+        }
     }
     println!("{}", serde_json::Value::Array(results));
     rt.block_on(app.stop());

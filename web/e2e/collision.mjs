@@ -158,6 +158,13 @@ export async function collisionSteps(page, { step, shot }) {
   const atCad = await scene(page);
   checkLine(atCad, { ...inter }, 1e-6, 'CAD pose');
   await shot(page, '26-collision-interference');
+  // The Contact points toggle hides the line and dots (kept) and shows them again.
+  const contactsShown = () => page.evaluate(() => window.cad2moViewer.contactGroup.visible);
+  await page.getByLabel('Contact points').uncheck();
+  assert.equal(await contactsShown(), false, 'contact points hidden');
+  assert.equal((await scene(page)).lines.length, 1, 'the contact line is kept while hidden');
+  await page.getByLabel('Contact points').check();
+  assert.equal(await contactsShown(), true, 'contact points shown again');
 
   // ---- Back to the default: no interference, no marks.
   await row.getByRole('button', { name: `Reset ${a} and ${b} to the default` }).click();

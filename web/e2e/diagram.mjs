@@ -24,8 +24,22 @@ export async function diagramSteps(page, { step, shot }) {
   assert.ok(lines >= pkg.bodies.length, `a line per connection: ${lines}`);
   // A click on a body in the diagram selects it.
   const body = pkg.bodies.find((b) => b.shape) || pkg.bodies[0];
-  await view.locator(`svg g[data-component="${body.modelica_name}"] rect`).click();
+  await view.locator(`svg g[data-component="${body.modelica_name}"] > rect`).click();
   await page.locator('.selection').filter({ hasText: `Selected body ${body.modelica_name}` }).waitFor();
+  // Its parameters show beside the diagram (issue 30).
+  assert.match(await page.getByRole('table', { name: `Parameters of ${body.modelica_name}` }).textContent(), /kg/);
+  // An icon per component, by its class kind; every name legible (≥ 9 px high) or hidden.
+  const look = await view.evaluate((v) => {
+    const gs = [...v.querySelectorAll('svg g[data-component]')];
+    const small = gs
+      .map((g) => g.querySelector(':scope > text'))
+      .filter((t) => t && t.getAttribute('visibility') !== 'hidden' && t.getBoundingClientRect().height < 9)
+      .map((t) => `${t.textContent} ${t.getBoundingClientRect().height.toFixed(1)}px`);
+    return { components: gs.length, icons: v.querySelectorAll('svg g[data-component] > g.icon').length, kinds: [...new Set(gs.map((g) => g.dataset.kind))], small };
+  });
+  assert.equal(look.icons, look.components, `an icon per component: ${JSON.stringify(look)}`);
+  assert.ok(look.kinds.includes('body') && look.kinds.includes('revolute'), `body and joint icons: ${look.kinds}`);
+  assert.deepEqual(look.small, [], 'component names shown below 9 px');
   await shot(page, '28-modelica-diagram');
 
   step('diagram: Mechatronics');
@@ -33,5 +47,5 @@ export async function diagramSteps(page, { step, shot }) {
   await page.locator('.diagram-status').filter({ hasText: 'Mechatronics:' }).waitFor();
   const drives = await view.locator('svg g[data-component^="drive_"]').count();
   await shot(page, '29-mechatronics-diagram');
-  return { components: shown.length, lines, drives };
+  return { components: shown.length, lines, drives, kinds: look.kinds };
 }

@@ -60,7 +60,7 @@ export async function motionSteps(page, { joint, step, shot, downloads, strict }
   assert.equal(await editor.locator('li.keyframe').count(), 2);
   // The sliders' pose was captured into keyframe 1 (joint values, in degrees).
   const kf1 = editor.locator('li[data-keyframe="1"]');
-  const captured = await kf1.locator('.joint-values input').first().inputValue();
+  const captured = await page.locator('table.keyframe-table td[data-keyframe="1"] input').first().inputValue();
   assert.ok(Math.abs(Number(captured)) > 1, `keyframe 1 holds the moved pose: ${captured}`);
   await page.locator('#motion-play').waitFor({ timeout: 60_000 });
 
@@ -107,7 +107,7 @@ export async function motionSteps(page, { joint, step, shot, downloads, strict }
 
   // ---- A keyframe the planner refuses: the problem shows at that keyframe; then fixed.
   step('motion: keyframe problem');
-  const first = kf1.locator('.joint-values input').first();
+  const first = page.locator('table.keyframe-table td[data-keyframe="1"] input').first();
   await first.fill('400');
   await first.press('Tab');
   await editor.getByRole('button', { name: 'Save motion' }).click();
@@ -116,8 +116,8 @@ export async function motionSteps(page, { joint, step, shot, downloads, strict }
   assert.match(await problem.textContent(), /limit/i);
   await problem.scrollIntoViewIfNeeded();
   await shot(page, '17-motion-problem');
-  await page.locator('li[data-keyframe="1"] .joint-values input').first().fill(captured);
-  await page.locator('li[data-keyframe="1"] .joint-values input').first().press('Tab');
+  await page.locator('table.keyframe-table td[data-keyframe="1"] input').first().fill(captured);
+  await page.locator('table.keyframe-table td[data-keyframe="1"] input').first().press('Tab');
   await editor.getByRole('button', { name: 'Save motion' }).click();
   await page.locator('#motion-play').waitFor();
   assert.equal(await page.locator('.kf-problem').count(), 0, 'no problem left');
@@ -176,9 +176,11 @@ export async function motionSteps(page, { joint, step, shot, downloads, strict }
     assert.ok(p.drawn > 500, `the ${key} plot has drawn: ${JSON.stringify(p)}`);
   }
   // Clicking a chart seeks: the 3D time follows.
+  // (locator.click scrolls the chart out from under the dock's sticky player if needed)
   const q = page.locator('.plot[data-plot="q"] .u-over');
+  await q.scrollIntoViewIfNeeded();
   const qb = await q.boundingBox();
-  await page.mouse.click(qb.x + qb.width * 0.25, qb.y + qb.height / 2);
+  await q.click({ position: { x: qb.width * 0.25, y: qb.height / 2 } });
   const seeked = Number(await player.getAttribute('data-time'));
   assert.ok(Math.abs(seeked - duration * 0.25) < duration * 0.05, `a click on the plot seeks to ${seeked} of ${duration}`);
   await shot(page, '18-motion-plots');
@@ -197,7 +199,22 @@ export async function motionSteps(page, { joint, step, shot, downloads, strict }
     const cells = await page.locator(`table.simulation-drives tr[data-joint="${joint}"] td`).allTextContents();
     assert.match(cells[2], / \/ .* A$/, `current against its limit: ${cells}`);
     assert.match(await page.locator('.simulation-out .verdict').textContent(), /holds the path|does not hold the path/);
+    // Issue 28's plots: the tracking error of every joint, the current against its limits.
+    await page.locator('.plot[data-plot="tracking"] .uplot').waitFor();
+    await page.locator('.plot[data-plot="sim-i"] .uplot').waitFor();
+    assert.match(await page.locator('.plot[data-plot="tracking"] .u-legend').textContent(), new RegExp(joint));
+    // The simulated motion animates, with the planned one as a ghost; the two differ by the error.
+    await page.getByLabel('Play the simulated motion (the planned one as a ghost)').check();
+    const dur = Number(await page.locator('#motion-scrub').getAttribute('max'));
+    await page.locator('#motion-scrub').fill(String(dur / 2));
+    const ghost = await page.evaluate(() => {
+      const v = window.cad2moViewer;
+      return { groups: v.ghost?.size ?? 0, visible: [...(v.ghost?.values() || [])].filter((g) => g.parent).length };
+    });
+    assert.ok(ghost.groups > 0 && ghost.visible === ghost.groups, `the planned motion is drawn as a ghost: ${JSON.stringify(ghost)}`);
     await shot(page, '18c-motion-simulation');
+    await page.getByLabel('Play the simulated motion (the planned one as a ghost)').uncheck();
+    assert.equal(await page.evaluate(() => window.cad2moViewer.ghost ?? null), null, 'the ghost goes with the switch');
   }
 
   // ---- Joint limits: defaults greyed as placeholders; a custom speed, then back to defaults.

@@ -197,9 +197,11 @@ export async function resultsSteps(page, { step, shot, downloads }) {
   await page.locator(`section.result-chart[data-chart="2"] .chips li[data-var="${moving[1]}.frame_a.r_0[3]"]`).waitFor({ state: 'detached' });
   await shot(page, '22-results-plots');
   // A click on a chart seeks the 3D time there.
-  await page.locator('section.result-chart[data-chart="1"] .u-over').scrollIntoViewIfNeeded();
-  const over = await page.locator('section.result-chart[data-chart="1"] .u-over').boundingBox();
-  await page.mouse.click(over.x + over.width * 0.25, over.y + over.height / 2);
+  // (locator.click scrolls the chart out from under the dock's sticky player if needed)
+  const overEl = page.locator('section.result-chart[data-chart="1"] .u-over');
+  await overEl.scrollIntoViewIfNeeded();
+  const over = await overEl.boundingBox();
+  await overEl.click({ position: { x: over.width * 0.25, y: over.height / 2 } });
   const player = page.locator('.results-player');
   const seeked = Number(await player.getAttribute('data-time'));
   assert.ok(Math.abs(seeked - 0.5) < 0.05, `a click a quarter into the chart seeks to ${seeked} s`);

@@ -152,6 +152,8 @@ try {
   await editor.waitFor();
   await editor.getByLabel('Motor instance').selectOption({ label: 'maxon RE 40 148877 (24 V) (DC permanent-magnet motor)' });
   await editor.getByLabel('Gear instance').selectOption({ label: 'maxon GP 42 C 74:1 (Gear with efficiency)' });
+  // A new drive starts with nothing chosen (issue 30): the controller is picked too.
+  await editor.getByLabel('Controller instance').selectOption({ index: 1 });
   const ratio = editor.getByLabel('Gear ratio', { exact: false });
   await ratio.fill('25000');
   await editor.getByRole('button', { name: 'Save drive' }).click();

@@ -1,7 +1,7 @@
 // The single-page app: a hash router over five screens. Every screen gets its data from the API.
 
 import './style.css';
-import { h, fill, errorBox } from './ui.js';
+import { h, fill, errorBox, clearStaleStatus } from './ui.js';
 import { renderModels, renderModel } from './views/models.js';
 import { renderLibrary } from './views/library.js';
 import { renderSettings } from './views/settings.js';
@@ -32,6 +32,8 @@ async function route() {
   const main = document.getElementById('main');
   cleanup?.();
   cleanup = null;
+  // An error said on the previous page (e.g. a first contact of another model) does not stay.
+  clearStaleStatus();
   generation += 1;
   const mine = generation;
   for (const a of document.querySelectorAll('[data-nav]')) {

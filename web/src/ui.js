@@ -43,6 +43,15 @@ export function say(message, kind = 'info') {
   if (kind !== 'error') statusTimer = setTimeout(() => (el.textContent = ''), 6000);
 }
 
+/** Clears a lasting (error) message of the status line: it belongs to the page that said it. */
+export function clearStaleStatus() {
+  const el = document.getElementById('status');
+  if (el && el.dataset.kind === 'error') {
+    el.textContent = '';
+    delete el.dataset.kind;
+  }
+}
+
 /** A visible, announced error box for `err` (an ApiError or any Error). */
 export function errorBox(err, title) {
   const lines = err instanceof ApiError ? err.lines() : [err?.message || String(err)];

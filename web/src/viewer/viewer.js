@@ -235,6 +235,47 @@ export class Viewer {
     this.applyPose();
   }
 
+  /**
+   * A semi-transparent second copy of the model at the joint values `q` (Map coordinate key →
+   * value), e.g. the planned motion beside the simulated one; `null` removes it. The copy shares
+   * the meshes' geometry and is not pickable.
+   */
+  setGhost(q) {
+    if (!q) {
+      if (this.ghost) {
+        for (const g of this.ghost.values()) this.scene.remove(g);
+        this.ghostMaterial.dispose();
+        this.ghost = null;
+        this.invalidate();
+      }
+      return;
+    }
+    if (!this.ghost) {
+      this.ghost = new Map();
+      this.ghostMaterial = new THREE.MeshBasicMaterial({ color: 0x2f6fd0, transparent: true, opacity: 0.3, depthWrite: false, side: THREE.DoubleSide });
+      for (const [name, b] of this.bodies) {
+        if (!b.hasMesh) continue;
+        const g = new THREE.Group();
+        g.matrixAutoUpdate = false;
+        g.name = `ghost:${name}`;
+        for (const child of b.group.children) {
+          if (!child.isMesh) continue;
+          const m = new THREE.Mesh(child.geometry, this.ghostMaterial);
+          m.renderOrder = 5;
+          g.add(m);
+        }
+        this.scene.add(g);
+        this.ghost.set(name, g);
+      }
+    }
+    const deltas = bodyDeltas(this.report, q);
+    for (const [name, g] of this.ghost) {
+      g.matrix.multiplyMatrices(deltas.get(name) || new THREE.Matrix4(), this.bodies.get(name).cad);
+      g.matrixWorldNeedsUpdate = true;
+    }
+    this.invalidate();
+  }
+
   resetPose() {
     this.q.clear();
     this.applyPose();
@@ -336,6 +377,167 @@ export class Viewer {
     this.invalidate();
   }
 
+  /**
+   * A named view of the whole model: 'top' (looking down, against "up"), 'front', 'side'
+   * (horizontal, as in the four-viewport layout) or 'iso' (the oblique view of Reset view).
+   */
+  namedView(name) {
+    const { fwd, right } = this.horizontalAxes();
+    // Top: straight down, a hair behind so that "forward" points up the screen (the orbit keeps
+    // "up" as the camera's up and cannot sit exactly on it).
+    const iso = fwd.clone().negate().add(right).normalize().addScaledVector(this.up, 0.8);
+    const dir = { top: this.up.clone().addScaledVector(fwd, -1e-4), front: fwd.clone().negate(), side: right.clone(), iso }[name];
+    if (!dir) throw new Error(`unknown view ${name}`);
+    this.lookAlong(dir, this.poseBox());
+  }
+
+  /**
+   * Frames the selected body (its meshes or CG dot) or joint (its arrows) from the current
+   * viewing direction; the whole model when nothing is selected. Returns whether a selection was framed.
+   */
+  fitSelection() {
+    const sel = this.selected;
+    const box = new THREE.Box3();
+    if (sel?.kind === 'body' && this.bodies.has(sel.name)) box.expandByObject(this.bodies.get(sel.name).group);
+    else if (sel?.kind === 'joint' && this.joints.has(sel.name)) for (const a of this.joints.get(sel.name).arrows) box.expandByObject(a);
+    const dir = this.camera.position.clone().sub(this.controls.target).normalize();
+    this.lookAlong(dir, box.isEmpty() ? this.poseBox() : box);
+    return !box.isEmpty();
+  }
+
+  /** Places the perspective camera on `dir` (from the target towards the eye) so that `box` fills the view. */
+  lookAlong(dir, box) {
+    const centre = box.getCenter(new THREE.Vector3());
+    const size = Math.max(box.getSize(new THREE.Vector3()).length(), this.size / 1000);
+    // The box's bounding sphere inside the narrower of the two half-angles of the view.
+    const half = (this.camera.fov * Math.PI) / 360;
+    const narrow = Math.min(half, Math.atan(Math.tan(half) * this.camera.aspect));
+    const dist = (size / 2 / Math.sin(narrow)) * 1.05;
+    this.camera.position.copy(centre).addScaledVector(dir.clone().normalize(), dist);
+    this.camera.near = dist / 200;
+    this.camera.far = dist * 50 + this.size * 10;
+    this.camera.updateProjectionMatrix();
+    this.controls.target.copy(centre);
+    this.controls.update();
+    this.camera.updateMatrixWorld();
+    this.invalidate();
+  }
+
+  /** The box around the bodies as they are posed now (the model's box when none has a shape). */
+  poseBox() {
+    const box = new THREE.Box3();
+    for (const b of this.bodies.values()) if (b.hasMesh) box.expandByObject(b.group);
+    return box.isEmpty() ? this.box.clone() : box;
+  }
+
+  /** The horizontal "forward" (the world axis least aligned with up) and "right" directions. */
+  horizontalAxes() {
+    const up = this.up;
+    const axes = [new THREE.Vector3(1, 0, 0), new THREE.Vector3(0, 1, 0), new THREE.Vector3(0, 0, 1)];
+    const fwd = axes.sort((a, b) => Math.abs(a.dot(up)) - Math.abs(b.dot(up)))[0].clone();
+    fwd.addScaledVector(up, -fwd.dot(up)).normalize();
+    return { fwd, right: new THREE.Vector3().crossVectors(fwd, up).normalize() };
+  }
+
+  /** See-through bodies (opacity 0.35, no depth writes) so inner parts and axes show; returns the opacity. */
+  setTransparent(on) {
+    this.transparentOn = !!on;
+    for (const b of this.bodies.values()) {
+      for (const m of b.materials) {
+        m.transparent = this.transparentOn;
+        m.opacity = this.transparentOn ? 0.35 : 1;
+        m.depthWrite = !this.transparentOn;
+        m.needsUpdate = true;
+      }
+    }
+    this.invalidate();
+    return this.transparentOn ? 0.35 : 1;
+  }
+
+  /**
+   * The viewport layout: 'single' (the perspective view), 'quad' (top, front and side
+   * orthographic views beside the perspective one) or 'sbs' (side-by-side stereo: left eye on the
+   * left half, right eye on the right, for polarised dual projection and 3D displays).
+   */
+  setLayout(mode) {
+    this.layout = ['quad', 'sbs'].includes(mode) ? mode : 'single';
+    this.host.dataset.layout = this.layout;
+    this.labels?.remove();
+    this.labels = null;
+    if (this.layout !== 'single') {
+      const names = this.layout === 'quad' ? ['Top', 'Front', 'Side', 'Perspective'] : ['Left eye', 'Right eye'];
+      this.labels = document.createElement('div');
+      this.labels.className = `viewport-labels viewport-${this.layout}`;
+      this.labels.setAttribute('aria-hidden', 'true');
+      for (const n of names) {
+        const d = document.createElement('span');
+        d.textContent = n;
+        this.labels.append(d);
+      }
+      this.host.append(this.labels);
+    }
+    this.invalidate();
+  }
+
+  /** An orthographic camera looking at the model along `dir` (towards the model) with `up`. */
+  orthoCamera(dir, up, aspect) {
+    const centre = this.box.getCenter(new THREE.Vector3());
+    const s = (this.size / 2) * 1.1;
+    const [hw, hh] = aspect >= 1 ? [s * aspect, s] : [s, s / aspect];
+    const cam = new THREE.OrthographicCamera(-hw, hw, hh, -hh, this.size / 1000, this.size * 20);
+    cam.up.copy(up);
+    cam.position.copy(centre).addScaledVector(dir, -this.size * 4);
+    cam.lookAt(centre);
+    cam.updateProjectionMatrix();
+    cam.updateMatrixWorld(); // project() works before the first render too
+    return cam;
+  }
+
+  /**
+   * The viewports of the current layout: [{x, y, w, h, camera}] in canvas CSS pixels from the
+   * top-left corner. The orthographic directions follow "up" (against gravity).
+   */
+  viewports() {
+    const w = Math.max(this.host.clientWidth, 1);
+    const hgt = Math.max(this.host.clientHeight, 1);
+    if (this.layout === 'quad') {
+      const hw = Math.floor(w / 2);
+      const hh = Math.floor(hgt / 2);
+      const up = this.up.clone();
+      // A horizontal "forward" direction: the world axis least aligned with up, made horizontal.
+      const { fwd, right } = this.horizontalAxes();
+      const a = (ww, h2) => ww / Math.max(h2, 1);
+      this.perspQuad ||= new THREE.PerspectiveCamera();
+      this.perspQuad.copy(this.camera);
+      this.perspQuad.aspect = a(w - hw, hgt - hh);
+      this.perspQuad.updateProjectionMatrix();
+      return [
+        { x: 0, y: 0, w: hw, h: hh, camera: this.orthoCamera(up.clone().negate(), fwd, a(hw, hh)), name: 'top' },
+        { x: hw, y: 0, w: w - hw, h: hh, camera: this.orthoCamera(fwd, up, a(w - hw, hh)), name: 'front' },
+        { x: 0, y: hh, w: hw, h: hgt - hh, camera: this.orthoCamera(right.clone().negate(), up, a(hw, hgt - hh)), name: 'side' },
+        { x: hw, y: hh, w: w - hw, h: hgt - hh, camera: this.perspQuad, name: 'perspective' },
+      ];
+    }
+    if (this.layout === 'sbs') {
+      const hw = Math.floor(w / 2);
+      this.stereo ||= new THREE.StereoCamera();
+      this.stereo.eyeSep = this.camera.position.distanceTo(this.controls.target) / 30;
+      const eye = this.sbsCamera ||= new THREE.PerspectiveCamera();
+      eye.copy(this.camera);
+      // Each eye keeps the picture's proportions in its half (full side-by-side).
+      eye.aspect = hw / hgt;
+      eye.updateProjectionMatrix();
+      eye.updateMatrixWorld();
+      this.stereo.aspect = 1;
+      this.stereo.update(eye);
+      return [
+        { x: 0, y: 0, w: hw, h: hgt, camera: this.stereo.cameraL, name: 'left' },
+        { x: hw, y: 0, w: w - hw, h: hgt, camera: this.stereo.cameraR, name: 'right' },
+      ];
+    }
+    return [{ x: 0, y: 0, w, h: hgt, camera: this.camera, name: 'single' }];
+  }
+
   setAnaglyph(on) {
     if (on && !this.anaglyph) {
       this.anaglyph = new AnaglyphEffect(this.renderer);
@@ -349,6 +551,81 @@ export class Viewer {
     this.grid.visible = on;
     this.axes.visible = on;
     this.invalidate();
+  }
+
+  /**
+   * The measuring tool: while on, clicks pick points on the meshes instead of selecting; every
+   * second point closes a measurement, drawn as a line, reported to `onMeasure({a, b, distance})`.
+   */
+  setMeasuring(on, onMeasure) {
+    this.measuring = !!on;
+    this.onMeasure = onMeasure;
+    this.measurePts = [];
+    if (!on) this.clearMeasure();
+  }
+
+  clearMeasure() {
+    if (this.measureObj) {
+      this.scene.remove(this.measureObj);
+      this.measureObj.traverse((o) => {
+        o.geometry?.dispose?.();
+        o.material?.dispose?.();
+      });
+      this.measureObj = null;
+    }
+    this.invalidate();
+  }
+
+  /** Adds a picked point (world, m) to the measurement; null (a miss) is ignored. */
+  measurePoint(p) {
+    if (!p) return;
+    if (this.measurePts.length >= 2) this.measurePts = [];
+    this.measurePts.push(p.clone());
+    this.clearMeasure();
+    const g = new THREE.Group();
+    const dot = this.size * 0.008;
+    for (const q of this.measurePts) {
+      const m = new THREE.Mesh(new THREE.SphereGeometry(dot, 12, 8), new THREE.MeshBasicMaterial({ color: 0xe07000, depthTest: false }));
+      m.position.copy(q);
+      m.renderOrder = 20;
+      g.add(m);
+    }
+    if (this.measurePts.length === 2) {
+      const [a, b] = this.measurePts;
+      const line = new THREE.Line(new THREE.BufferGeometry().setFromPoints([a, b]), new THREE.LineBasicMaterial({ color: 0xe07000, depthTest: false }));
+      line.renderOrder = 20;
+      g.add(line);
+      this.onMeasure?.({ a: a.toArray(), b: b.toArray(), distance: a.distanceTo(b) });
+    } else this.onMeasure?.({ a: this.measurePts[0].toArray(), b: null, distance: null });
+    this.measureObj = g;
+    this.scene.add(g);
+    this.invalidate();
+  }
+
+  /**
+   * Shows (on) or hides each body's collision shape, drawn as a translucent orange wireframe
+   * in the body's frame: `shapes` maps body names to {positions, indices} in CS1 (metres),
+   * given on the first call that shows them.
+   */
+  setCollisionShapes(on, shapes) {
+    if (on && !this.collisionShapes && shapes) {
+      this.collisionShapes = new Map();
+      this.collisionMaterial = new THREE.MeshBasicMaterial({ color: 0xe06000, wireframe: true, transparent: true, opacity: 0.35, depthTest: false });
+      for (const [name, s] of shapes) {
+        const b = this.bodies.get(name);
+        if (!b || !s.indices.length) continue;
+        const g = new THREE.BufferGeometry();
+        g.setAttribute('position', new THREE.Float32BufferAttribute(s.positions, 3));
+        g.setIndex(s.indices);
+        const m = new THREE.Mesh(g, this.collisionMaterial);
+        m.renderOrder = 15;
+        b.group.add(m);
+        this.collisionShapes.set(name, m);
+      }
+    }
+    for (const m of this.collisionShapes?.values() || []) m.visible = !!on;
+    this.invalidate();
+    return this.collisionShapes?.size ?? 0;
   }
 
   /** Highlights one body or joint (null clears). */
@@ -411,8 +688,17 @@ export class Viewer {
         this.contactGroup.add(s);
       }
     }
+    this.contactGroup.visible = !this.contactsHidden;
     this.scene.add(this.contactGroup);
     this.invalidate();
+  }
+
+  /** Shows or hides the contact points and lines (kept while hidden); returns how many lines there are. */
+  setContactsShown(on) {
+    this.contactsHidden = !on;
+    if (this.contactGroup) this.contactGroup.visible = !!on;
+    this.invalidate();
+    return this.contactLines().length;
   }
 
   /** The contact lines drawn now, read from the scene: [{from, to}] in world coordinates. */
@@ -455,23 +741,44 @@ export class Viewer {
       this.anaglyph.planeDistance = dist;
       this.anaglyph.render(this.scene, this.camera);
     }
-    else this.renderer.render(this.scene, this.camera);
+    else if (this.layout === 'quad' || this.layout === 'sbs') {
+      const hgt = Math.max(this.host.clientHeight, 1);
+      const r = this.renderer;
+      // The whole canvas first: no part of an earlier picture survives in a viewport.
+      r.setScissorTest(false);
+      r.setViewport(0, 0, Math.max(this.host.clientWidth, 1), hgt);
+      r.clear();
+      r.setScissorTest(true);
+      for (const v of this.viewports()) {
+        // three.js viewports count from the bottom-left corner.
+        r.setViewport(v.x, hgt - v.y - v.h, v.w, v.h);
+        r.setScissor(v.x, hgt - v.y - v.h, v.w, v.h);
+        r.render(this.scene, v.camera);
+      }
+      r.setScissorTest(false);
+      r.setViewport(0, 0, Math.max(this.host.clientWidth, 1), hgt);
+    } else this.renderer.render(this.scene, this.camera);
     this.host.dataset.rendered = String((Number(this.host.dataset.rendered) || 0) + 1);
     if (this.host.dataset.rendered === '1') performance.measure('cad2mo:first-frame', { start: t0 });
   }
 
-  /** Where the model's meshes are on screen, in canvas CSS pixels: {x0, y0, x1, y1}. */
-  screenBox(name) {
+  /**
+   * Where the model's meshes are on screen, in canvas CSS pixels: {x0, y0, x1, y1}; in viewport
+   * `vp` (one of viewports()) when given, else in the whole canvas through the main camera.
+   */
+  screenBox(name, vp) {
     const out = { x0: Infinity, y0: Infinity, x1: -Infinity, y1: -Infinity };
     const canvas = this.renderer.domElement;
+    const cam = vp?.camera || this.camera;
+    const [ox, oy, w, hgt] = vp ? [vp.x, vp.y, vp.w, vp.h] : [0, 0, canvas.clientWidth, canvas.clientHeight];
     for (const [n, b] of this.bodies) {
       if (!b.hasMesh || (name && n !== name)) continue;
       b.group.updateMatrixWorld(true);
       const box = new THREE.Box3().setFromObject(b.group);
       for (const c of corners(box)) {
-        const p = c.project(this.camera);
-        const x = ((p.x + 1) / 2) * canvas.clientWidth;
-        const y = ((1 - p.y) / 2) * canvas.clientHeight;
+        const p = c.project(cam);
+        const x = ox + ((p.x + 1) / 2) * w;
+        const y = oy + ((1 - p.y) / 2) * hgt;
         out.x0 = Math.min(out.x0, x);
         out.y0 = Math.min(out.y0, y);
         out.x1 = Math.max(out.x1, x);
@@ -489,8 +796,17 @@ export class Viewer {
     canvas.addEventListener('pointerup', (e) => {
       if (!down || Math.hypot(e.clientX - down.x, e.clientY - down.y) > 4) return;
       const r = canvas.getBoundingClientRect();
-      const p = new THREE.Vector2(((e.clientX - r.left) / r.width) * 2 - 1, -((e.clientY - r.top) / r.height) * 2 + 1);
-      ray.setFromCamera(p, this.camera);
+      // The viewport under the pointer, and the point in its own coordinates.
+      const cx = e.clientX - r.left;
+      const cy = e.clientY - r.top;
+      const vp = this.viewports().find((v) => cx >= v.x && cx < v.x + v.w && cy >= v.y && cy < v.y + v.h) || this.viewports()[0];
+      const p = new THREE.Vector2(((cx - vp.x) / vp.w) * 2 - 1, -((cy - vp.y) / vp.h) * 2 + 1);
+      ray.setFromCamera(p, vp.camera);
+      if (this.measuring) {
+        const hit = ray.intersectObjects([...this.bodies.values()].map((b) => b.group), true).find((h) => h.object.userData.pick && h.object.visible);
+        this.measurePoint(hit ? hit.point : null);
+        return;
+      }
       const targets = [];
       for (const [, b] of this.bodies) targets.push(b.group);
       for (const [, j] of this.joints) targets.push(j.group);
@@ -502,6 +818,9 @@ export class Viewer {
   }
 
   dispose() {
+    this.setGhost(null);
+    this.clearMeasure();
+    this.labels?.remove();
     this.hideGizmo();
     cancelAnimationFrame(this.frame);
     this.resize.disconnect();

@@ -4,7 +4,11 @@
 
 import { api, enc } from '../api.js';
 import { h, fill, errorBox, num } from '../ui.js';
+import { abbreviate } from '../layout-data.js';
 import { shapeRows, matrixRows, pairEdit, resetAllEdit, witnessLine, interferenceText, pairKey, mm } from './collision-data.js';
+
+/** A long CAD name cut to fit its cell, the full name on hover. */
+const nameCell = (n) => h('span', { class: 'name', title: n }, abbreviate(n, 26));
 
 /**
  * @param {HTMLElement} panel
@@ -67,7 +71,7 @@ export function renderCollision(panel, ctx) {
       h(
         'tr',
         { dataset: { body: r.body }, class: r.hasShape ? '' : 'no-shape' },
-        h('th', { scope: 'row' }, r.body),
+        h('th', { scope: 'row' }, nameCell(r.body)),
         h('td', {}, r.kind),
         h('td', { class: 'num' }, String(r.parts)),
         h('td', { class: 'num' }, String(r.vertices)),
@@ -149,8 +153,8 @@ export function renderCollision(panel, ctx) {
       return h(
         'tr',
         { dataset: { a: r.a, b: r.b }, class: `${r.custom ? 'custom' : ''} ${r.allowed ? 'allowed' : 'checked'}` },
-        h('th', { scope: 'row' }, r.a),
-        h('th', { scope: 'row' }, r.b),
+        h('th', { scope: 'row' }, nameCell(r.a)),
+        h('th', { scope: 'row' }, nameCell(r.b)),
         h('td', { class: 'may-touch' }, box),
         h('td', { class: 'state' }, r.custom ? h('span', { class: 'badge' }, 'custom') : h('span', { class: 'muted' }, 'default'), ' ', h('small', { class: 'muted' }, r.why)),
         h(

@@ -5,6 +5,9 @@
 
 import { api, download, enc, waitForJob, describeJob } from '../api.js';
 import { h, fill, errorBox, say, num, unitLabel, limits, checkValue, field, confirmAction } from '../ui.js';
+import { abbreviate, abbreviateAll } from '../layout-data.js';
+import { placeFieldErrors, driveControl } from '../field-errors.js';
+import { getUnits, toDisplay, fromDisplay, symbolOf, parseNumber } from '../units.js';
 
 const SLOTS = [
   { slot: 'gear', domain: 'gear', label: 'Gear' },
@@ -48,14 +51,18 @@ export async function renderDrives(panel, ctx) {
       fill(tableBox, h('p', { class: 'muted' }, 'This model has no drivable (revolute or prismatic tree) joints.'));
       return;
     }
+    const shortName = abbreviateAll(data.joints.map((j) => j.name), 28); // never two rows alike
     const rows = data.joints.map((j) => {
       const d = driveOf(j.name);
-      const inst = (id) => instById.get(id)?.name || '—';
+      const inst = (id) => {
+        const n = instById.get(id)?.name || '—';
+        return h('span', { class: 'name', title: n }, abbreviate(n, 30));
+      };
       const ratio = d ? d.overrides?.gear?.ratio ?? instById.get(d.gear_instance)?.values?.ratio : null;
       return h(
         'tr',
         { dataset: { joint: j.name }, class: current === j.name ? 'selected' : '' },
-        h('th', { scope: 'row' }, h('button', { type: 'button', class: 'link', onclick: () => open(j.name, true) }, j.name)),
+        h('th', { scope: 'row' }, h('button', { type: 'button', class: 'link', title: j.name, 'aria-label': `Open the drive of ${j.name}`, onclick: () => open(j.name, true) }, shortName.get(j.name))),
         h('td', { class: 'kind' }, j.kind),
         h('td', {}, d ? inst(d.motor_instance) : h('span', { class: 'muted' }, 'none')),
         h('td', {}, d ? inst(d.gear_instance) : ''),
@@ -103,7 +110,9 @@ export async function renderDrives(panel, ctx) {
 
     const section = (spec) => {
       const options = instances.filter((i) => i.domain === spec.domain);
-      const chosen = existing?.[`${spec.slot}_instance`] || defaultInstance(spec.slot, joint, options)?.id || '';
+      // A new drive starts with nothing chosen: a joint must not look assigned before it is.
+      const chosen = existing?.[`${spec.slot}_instance`] || '';
+      const hint = existing ? null : defaultInstance(spec.slot, joint, options);
       const sel = h(
         'select',
         { id: `drive-${spec.slot}`, name: spec.slot, required: true },
@@ -113,7 +122,13 @@ export async function renderDrives(panel, ctx) {
       picks[spec.slot] = sel;
       paramsBox[spec.slot] = h('div', { class: 'params' });
       sel.addEventListener('change', () => renderParams(spec.slot));
-      return h('fieldset', { class: `slot slot-${spec.slot}` }, h('legend', {}, spec.label), field(`${spec.label} instance`, sel), paramsBox[spec.slot]);
+      return h(
+        'fieldset',
+        { class: `slot slot-${spec.slot}` },
+        h('legend', {}, spec.label),
+        field(`${spec.label} instance`, sel, hint && spec.slot === 'gear' && joint.kind === 'prismatic' && /screw/i.test(hint.class_name) ? `A prismatic joint is usually driven by a lead screw, e.g. ${hint.name}.` : undefined),
+        paramsBox[spec.slot],
+      );
     };
 
     // Editable parameters of the chosen instance; overrides kept where the user typed them.
@@ -135,7 +150,8 @@ export async function renderDrives(panel, ctx) {
         const label = p.name === 'ratio' ? 'Gear ratio' : p.name;
         const f = field(`${label}${unit ? ` [${unit}]` : ''}`, input, `${p.comment} · limits ${limits(p)}${unit ? ' ' + unit : ''} · library value ${num(inst.values[p.name])}`);
         const check = () => {
-          const msg = checkValue({ ...p, label }, input.value);
+          // A gear ratio of 0 would disconnect the motor: refused here, at the field.
+          const msg = checkValue({ ...p, label }, input.value) || (p.name === 'ratio' && Number(input.value) === 0 && input.value.trim() !== '' ? 'Gear ratio must not be 0 (the motor would be disconnected)' : null);
           input.setAttribute('aria-invalid', String(!!msg));
           f.querySelector('.field-msg').textContent = msg || '';
           return msg;
@@ -147,12 +163,14 @@ export async function renderDrives(panel, ctx) {
       fill(paramsBox[slot], rows.length ? rows : h('p', { class: 'muted' }, 'No editable parameters (nameplate values only).'));
     };
 
-    const ref = h('input', { type: 'text', inputmode: 'decimal', id: 'drive-reference', name: 'reference', value: existing?.reference?.kind === 'constant' ? String(existing.reference.value * (joint.kind === 'revolute' ? 180 / Math.PI : 1000)) : '' });
-    const refUnit = joint.kind === 'revolute' ? '°' : 'mm';
+    const si = joint.kind === 'revolute' ? 'rad' : 'm';
+    const units = getUnits();
+    const ref = h('input', { type: 'text', inputmode: 'decimal', id: 'drive-reference', name: 'reference', value: existing?.reference?.kind === 'constant' ? String(toDisplay(existing.reference.value, si, units)) : '' });
+    const refUnit = symbolOf(si, units);
     const form = h(
       'form',
       { class: 'drive-editor card', 'aria-label': `Drive of ${jointName}`, novalidate: true, onsubmit: save },
-      h('h3', {}, `Drive of ${jointName} `, h('small', { class: 'muted' }, `${joint.kind}, start ${num(Math.round(joint.start * (joint.kind === 'revolute' ? 180 / Math.PI : 1000) * 1e6) / 1e6)} ${refUnit}`)),
+      h('h3', { class: 'drive-title' }, `Drive of `, h('span', { class: 'name', title: jointName }, abbreviate(jointName, 36)), ' ', h('small', { class: 'muted' }, `${joint.kind}, start ${num(toDisplay(joint.start, si, units))} ${refUnit}`)),
       SLOTS.map(section),
       field(`Reference position [${refUnit}] (empty: hold the start position)`, ref),
       out,
@@ -169,6 +187,12 @@ export async function renderDrives(panel, ctx) {
     async function save(e) {
       e.preventDefault();
       fill(out);
+      // The service's messages of the last attempt go; the form's own checks run again below.
+      for (const m of form.querySelectorAll('.field-msg.from-server')) {
+        m.textContent = '';
+        m.classList.remove('from-server');
+        m.closest('.field')?.querySelector('[aria-invalid="true"]')?.setAttribute('aria-invalid', 'false');
+      }
       const problems = [];
       for (const s of SLOTS) if (!picks[s.slot].value) problems.push(`Choose a ${s.label.toLowerCase()} instance`);
       let firstBad = null;
@@ -181,9 +205,9 @@ export async function renderDrives(panel, ctx) {
       }
       let reference;
       if (ref.value.trim() !== '') {
-        const x = Number(ref.value);
+        const x = parseNumber(ref.value);
         if (!Number.isFinite(x)) problems.push(`Reference position: "${ref.value}" is not a number`);
-        else reference = { kind: 'constant', value: joint.kind === 'revolute' ? (x * Math.PI) / 180 : x / 1000 };
+        else reference = { kind: 'constant', value: fromDisplay(x, si, units) };
       }
       if (problems.length) {
         fill(out, h('div', { class: 'error', role: 'alert' }, h('strong', {}, 'Not saved'), h('ul', {}, problems.map((p) => h('li', {}, p)))));
@@ -211,6 +235,19 @@ export async function renderDrives(panel, ctx) {
         say(`Saved the drive of ${jointName}`, 'ok');
       } catch (err) {
         fill(out, errorBox(err, 'The service refused the drive'));
+        // Each refused field's message also goes next to its control, which is marked invalid.
+        const { at } = placeFieldErrors(err.errors, driveControl);
+        let first = null;
+        for (const [key, messages] of at) {
+          const control = key === 'reference' ? ref : picks[key] || form.querySelector(`[name="${CSS.escape(key)}"]`);
+          const msg = control?.closest('.field')?.querySelector('.field-msg');
+          if (!msg) continue;
+          control.setAttribute('aria-invalid', 'true');
+          msg.textContent = messages.join('; ');
+          msg.classList.add('from-server');
+          first ??= control;
+        }
+        first?.focus();
       }
     }
 
@@ -230,16 +267,24 @@ export async function renderDrives(panel, ctx) {
 
   async function regenerate() {
     regen.disabled = true;
-    fill(regenOut, h('p', { role: 'status' }, 'Regenerating…'));
+    // Progress from the first moment: the job's stage and fraction, then the download.
+    const bar = h('progress', { 'aria-label': 'Regenerating the package' });
+    const state = h('span', { role: 'status' }, 'Asking for a re-export…');
+    fill(regenOut, h('div', { class: 'regen-progress' }, bar, state));
     try {
       const q = await api(`/api/models/${enc(modelId)}/reexport`, { method: 'POST' });
-      const job = await waitForJob(q.job_id, (j) => fill(regenOut, h('p', { role: 'status' }, `Re-export of v${q.version}: ${describeJob(j)}`)));
+      const job = await waitForJob(q.job_id, (j) => {
+        if (j.progress && Number.isFinite(j.progress.fraction)) bar.value = j.progress.fraction;
+        state.textContent = `Re-export of v${q.version}: ${describeJob(j)}`;
+      });
       if (job.status !== 'succeeded') {
         fill(regenOut, errorBox({ message: job.error?.detail || 'the re-export failed' }, 'Re-export failed'));
         return;
       }
-      fill(regenOut, h('p', { class: 'ok', role: 'status' }, `Package of v${q.version} regenerated with ${data.drives.filter((d) => d.status === 'active').length} drives.`));
+      bar.removeAttribute('value');
+      state.textContent = `Downloading the package of v${q.version}…`;
       await download(`/api/models/${enc(modelId)}/versions/${q.version}/package.zip`, `package-v${q.version}.zip`);
+      fill(regenOut, h('p', { class: 'ok', role: 'status' }, `Package of v${q.version} regenerated with ${data.drives.filter((d) => d.status === 'active').length} drives and downloaded.`));
     } catch (err) {
       fill(regenOut, errorBox(err, 'Could not regenerate'));
     } finally {

@@ -7,6 +7,7 @@ import { api, download, enc } from '../api.js';
 import { h, fill, errorBox, say, tabs, num, plural } from '../ui.js';
 import { Viewer, niceStep } from '../viewer/viewer.js';
 import { coordinates } from '../viewer/kinematics.js';
+import { parseObj } from '../viewer/obj.js';
 import { renderDrives } from './drives.js';
 import { renderMotion } from './motion.js';
 import { renderResults } from './results.js';
@@ -14,6 +15,8 @@ import { renderLive } from './live.js';
 import { renderCollision } from './collision.js';
 import { renderScene } from './scene.js';
 import { renderDiagram } from './diagram.js';
+import { getUnits, setUnits, onUnits, toDisplay, fromDisplay, symbolOf, parseNumber } from '../units.js';
+import { sizeLimits, loadSize, saveSize, clamp, abbreviate } from '../layout-data.js';
 
 const DEG = 180 / Math.PI;
 
@@ -36,6 +39,21 @@ async function loadMeshes(version, report) {
   performance.measure('cad2mo:download', { start: t0, end: t1 });
   performance.measure('cad2mo:unzip', { start: t1, end: t2 });
   performance.measure('cad2mo:parse', { start: t2, end: t3 });
+  // The collision shapes are unzipped from the same bytes when first shown.
+  out.collisionShapes = () => collisionShapes(zip, report);
+  return out;
+}
+
+/** Each body's collision shape from the package (Resources/Collision/<body>.obj), by body name. */
+function collisionShapes(zip, report) {
+  const names = new Set(report.bodies.map((b) => b.modelica_name));
+  const files = unzipSync(zip, { filter: (f) => /\/Resources\/Collision\/[^/]+\.obj$/.test(f.name) });
+  const out = new Map();
+  const text = new TextDecoder();
+  for (const [path, bytes] of Object.entries(files)) {
+    const name = path.split('/').pop().replace(/\.obj$/, '');
+    if (names.has(name)) out.set(name, parseObj(text.decode(bytes)));
+  }
   return out;
 }
 
@@ -53,8 +71,12 @@ export async function renderViewer(main, id, v, initialTab) {
     );
     return;
   }
+  // The joints' position limits span the sliders (none while the service cannot tell).
+  const jointsInfo = api(`/api/models/${enc(id)}/joints`).catch(() => null);
   const report = await api(version.links.report);
   const meshes = await loadMeshes(version, report);
+  const limitsOf = new Map();
+  for (const j of (await jointsInfo)?.joints || []) if (Array.isArray(j.limits?.position)) limitsOf.set(j.name, j.limits.position);
 
   let selection = null;
   const listeners = new Set(); // each list re-marks its selected entry
@@ -68,16 +90,43 @@ export async function renderViewer(main, id, v, initialTab) {
 
   const stage = h('div', { class: 'stage' });
   const info = h('p', { class: 'selection muted', 'aria-live': 'polite' }, 'Nothing selected');
-  const details = h('div', { class: 'details' });
+  // Scrolls sideways by itself if a value cannot wrap (never the page).
+  const details = h('div', { class: 'details scroll' });
   const anaglyph = h('input', { type: 'checkbox', id: 'anaglyph' });
   const grid = h('input', { type: 'checkbox', id: 'grid', checked: true });
+  const shapesBox = h('input', { type: 'checkbox', id: 'collision-shapes' });
+  const units = getUnits();
+  const angleSel = h('select', { id: 'unit-angle' }, h('option', { value: 'deg', selected: units.angle === 'deg' }, 'degrees'), h('option', { value: 'rad', selected: units.angle === 'rad' }, 'radians'));
+  const lengthSel = h('select', { id: 'unit-length' }, h('option', { value: 'mm', selected: units.length === 'mm' }, 'mm'), h('option', { value: 'm', selected: units.length === 'm' }, 'm'));
+  // Viewports: one perspective view, four (top, front, side orthographic + perspective), or
+  // side-by-side stereo (beside the red-cyan anaglyph); the measuring tool.
+  const layoutSel = h('select', { id: 'view-layout' }, h('option', { value: 'single' }, 'Single view'), h('option', { value: 'quad' }, 'Four views'), h('option', { value: 'sbs' }, 'Side-by-side stereo'));
+  // Named views of the whole model, framing the selection, see-through bodies.
+  const viewSel = h('select', { id: 'named-view', 'aria-label': 'Named view' }, h('option', { value: '' }, 'View from…'), ...['iso', 'top', 'front', 'side'].map((v) => h('option', { value: v }, { iso: 'Iso', top: 'Top', front: 'Front', side: 'Side' }[v])));
+  const transparentBox = h('input', { type: 'checkbox', id: 'transparent' });
+  // Contact points and closest-point lines of the collision checks, when there are any.
+  const contactsBox = h('input', { type: 'checkbox', id: 'contact-points', checked: true });
+  const measureOut = h('output', { class: 'measure-out', 'aria-live': 'polite' });
+  const measureBtn = h('button', { type: 'button', id: 'measure', 'aria-pressed': 'false' }, 'Measure');
+  angleSel.addEventListener('change', () => setUnits({ angle: angleSel.value }));
+  lengthSel.addEventListener('change', () => setUnits({ length: lengthSel.value }));
   const toolbar = h(
     'div',
-    { class: 'toolbar', role: 'toolbar', 'aria-label': '3D view' },
+    // A row that wraps in a wide window and scrolls by itself in a narrow one.
+    { class: 'toolbar scroll', role: 'toolbar', 'aria-label': '3D view' },
     h('button', { type: 'button', onclick: () => viewer.resetView() }, 'Reset view'),
     h('button', { type: 'button', onclick: () => resetPose() }, 'Reset pose'),
     h('span', { class: 'check' }, anaglyph, h('label', { for: 'anaglyph' }, 'Red-cyan anaglyph')),
     h('span', { class: 'check' }, grid, h('label', { for: 'grid' }, 'Grid and world frame')),
+    viewSel,
+    h('button', { type: 'button', id: 'fit-selection', onclick: () => viewer.fitSelection?.() }, 'Fit selection'),
+    h('span', { class: 'check' }, shapesBox, h('label', { for: 'collision-shapes' }, 'Collision shapes')),
+    h('span', { class: 'check' }, transparentBox, h('label', { for: 'transparent' }, 'Transparent')),
+    h('span', { class: 'check' }, contactsBox, h('label', { for: 'contact-points' }, 'Contact points')),
+    h('span', { class: 'check' }, h('label', { for: 'view-layout' }, 'Viewports'), layoutSel),
+    measureBtn,
+    measureOut,
+    h('span', { class: 'check units' }, h('label', { for: 'unit-angle' }, 'Angles'), angleSel, h('label', { for: 'unit-length' }, 'Lengths'), lengthSel),
     h('button', { type: 'button', onclick: () => download(version.links.package, `${report.package_name}-v${v}.zip`).catch((e) => say(e.message, 'error')) }, 'Download package'),
     h('button', { type: 'button', onclick: () => download(version.links.urdf, `${report.package_name}-v${v}.urdf`).catch((e) => say(e.message, 'error')) }, 'Download URDF'),
   );
@@ -94,7 +143,39 @@ export async function renderViewer(main, id, v, initialTab) {
   performance.measure('cad2mo:scene', { start: tv });
   window.cad2moViewer = viewer; // for the end-to-end tests and the console
   anaglyph.addEventListener('change', () => viewer.setAnaglyph(anaglyph.checked));
+  layoutSel.addEventListener('change', () => viewer.setLayout?.(layoutSel.value));
+  const showMeasure = (m) => {
+    const u = getUnits();
+    measureOut.textContent = m.distance === null ? 'Pick the second point' : `Distance ${num(toDisplay(m.distance, 'm', u))} ${symbolOf('m', u)}`;
+    measureOut.dataset.distance = m.distance === null ? '' : String(m.distance);
+  };
+  measureBtn.addEventListener('click', () => {
+    const on = measureBtn.getAttribute('aria-pressed') !== 'true';
+    measureBtn.setAttribute('aria-pressed', String(on));
+    measureBtn.textContent = on ? 'Stop measuring' : 'Measure';
+    viewer.setMeasuring?.(on, showMeasure);
+    measureOut.textContent = on ? 'Pick two points on the model' : '';
+    delete measureOut.dataset.distance;
+  });
   grid.addEventListener('change', () => viewer.setGrid(grid.checked));
+  viewSel.addEventListener('change', () => {
+    if (viewSel.value) viewer.namedView?.(viewSel.value);
+    viewSel.value = '';
+  });
+  transparentBox.addEventListener('change', () => viewer.setTransparent?.(transparentBox.checked));
+  contactsBox.addEventListener('change', () => {
+    const n = viewer.setContactsShown?.(contactsBox.checked);
+    if (contactsBox.checked && !n) say('No contact points to show: run a collision check (Collision tab or a motion’s check) first', 'info');
+  });
+  shapesBox.addEventListener('change', () => {
+    try {
+      const n = viewer.setCollisionShapes?.(shapesBox.checked, shapesBox.checked && !viewer.collisionShapes ? meshes.collisionShapes() : null);
+      if (shapesBox.checked && !n) say('This version has no collision shapes in its package', 'info');
+    } catch (e) {
+      shapesBox.checked = false;
+      say(`The collision shapes could not be read: ${e.message}`, 'error');
+    }
+  });
   const sliders = new Map();
   const resetPose = () => {
     viewer.resetPose();
@@ -115,6 +196,16 @@ export async function renderViewer(main, id, v, initialTab) {
     viewer.setCoordinates(entries);
     for (const [key, value] of entries) sliders.get(key)?.set(value);
   };
+  // The planned motion as a ghost beside the simulated one (joint values by name; null hides it).
+  const setGhost = (values) => {
+    if (!values) return viewer.setGhost?.(null);
+    const q = new Map();
+    for (const [name, value] of Object.entries(values)) {
+      const c = byElement.get(name);
+      if (c && Number.isFinite(value)) q.set(c.key, value);
+    }
+    viewer.setGhost?.(q);
+  };
   const currentJoints = () => {
     const out = {};
     for (const [name, c] of byElement) out[name] = viewer.q?.get(c.key) ?? c.q0;
@@ -125,7 +216,7 @@ export async function renderViewer(main, id, v, initialTab) {
     { id: 'structure', label: 'Structure', render: (p) => renderStructure(p) },
     { id: 'report', label: 'Report', render: (p) => renderReport(p) },
     { id: 'drives', label: 'Drives', render: (p) => renderDrives(p, { modelId: id, version, report, select, selected: () => selection, onSelect: (f) => listeners.add(f) }) },
-    { id: 'motion', label: 'Motion', render: (p) => (motion = renderMotion(p, { modelId: id, version, versionNumber: v, report, viewer, setJoints, currentJoints, say, stage: motionStage, drivesChanged })) },
+    { id: 'motion', label: 'Motion', render: (p) => (motion = renderMotion(p, { modelId: id, version, versionNumber: v, report, viewer, setJoints, setGhost, currentJoints, say, stage: motionStage, drivesChanged })) },
     { id: 'results', label: 'Results', render: (p) => (results = renderResults(p, { modelId: id, versionNumber: v, viewer, say, select, stage: resultsStage })) },
     { id: 'live', label: 'Live', render: (p) => (live = renderLive(p, { modelId: id, versionNumber: v, viewer, say, stage: liveStage })) },
     { id: 'collision', label: 'Collision', render: (p) => (collision = renderCollision(p, { modelId: id, versionNumber: v, viewer, say, resetPose })) },
@@ -146,6 +237,7 @@ export async function renderViewer(main, id, v, initialTab) {
   const liveStage = h('div', { class: 'motion-stage live-stage', hidden: true });
   // The Modelica diagram likewise, shown with its tab.
   const diagramStage = h('div', { class: 'motion-stage diagram-stage', hidden: true });
+  let workspaceEl = null; // set once built; tabs() calls onChange before
   const t = tabs(tabSpec, {
     initial: tabSpec.some((x) => x.id === initialTab) ? initialTab : 'structure',
     label: 'Model details',
@@ -154,6 +246,8 @@ export async function renderViewer(main, id, v, initialTab) {
       resultsStage.hidden = tab !== 'results';
       liveStage.hidden = tab !== 'live';
       diagramStage.hidden = tab !== 'diagram';
+      // The diagram takes the dock at full width and most of the height; the 3D view stays above.
+      workspaceEl?.classList.toggle('diagram-mode', tab === 'diagram');
       // Hide before show: both tabs pose the bodies, and hiding one hands them back to the joints.
       if (tab !== 'results') results?.shown(false);
       if (tab !== 'live') live?.shown(false);
@@ -166,12 +260,65 @@ export async function renderViewer(main, id, v, initialTab) {
     },
   });
 
+  // The workspace: the 3D view (always on screen), the side panel with the tabs, and the bottom
+  // dock with the player, plots and the selection's details; both panels resize by their
+  // splitters (mouse or arrow keys) and keep their sizes in localStorage.
+  const view3d = h('section', { class: 'view3d', 'aria-label': '3D view' }, toolbar, stage, info);
+  const side = h('section', { class: 'side', 'aria-label': 'Model details' }, t.el);
+  const dock = h('section', { class: 'dock', 'aria-label': 'Player, plots and details' }, motionStage, resultsStage, liveStage, diagramStage, details);
+  const workspace = h('div', { class: 'workspace model-layout' });
+  const limitsNow = () => sizeLimits(window.innerWidth, window.innerHeight);
+  let sideW = loadSize(localStorage, 'cad2mo.layout.side', Math.round(window.innerWidth * 0.38), limitsNow().side.min, limitsNow().side.max);
+  let dockH = loadSize(localStorage, 'cad2mo.layout.dock', Math.round(window.innerHeight * 0.26), limitsNow().dock.min, limitsNow().dock.max);
+  const applySizes = () => {
+    const l = limitsNow();
+    workspace.style.setProperty('--side-w', `${clamp(sideW, l.side.min, l.side.max)}px`);
+    workspace.style.setProperty('--dock-h', `${clamp(dockH, l.dock.min, l.dock.max)}px`);
+    // Wide windows: the workspace fills the window below its heading; narrow ones stack.
+    const wide = window.matchMedia('(min-width: 901px)').matches;
+    workspace.style.height = wide ? `${Math.max(480, window.innerHeight - workspace.getBoundingClientRect().top - window.scrollY - 8)}px` : '';
+  };
+  const splitV = splitter({
+    orientation: 'vertical',
+    label: 'Resize the side panel',
+    get: () => sideW,
+    set: (x) => ((sideW = clamp(x, limitsNow().side.min, limitsNow().side.max)), applySizes()),
+    save: () => saveSize(localStorage, 'cad2mo.layout.side', sideW),
+    sign: -1,
+  });
+  const splitH = splitter({
+    orientation: 'horizontal',
+    label: 'Resize the bottom dock',
+    get: () => dockH,
+    set: (x) => ((dockH = clamp(x, limitsNow().dock.min, limitsNow().dock.max)), applySizes()),
+    save: () => saveSize(localStorage, 'cad2mo.layout.dock', dockH),
+    sign: -1,
+  });
+  workspace.append(view3d, splitH, dock, splitV, side);
+  workspaceEl = workspace;
+  workspace.classList.toggle('diagram-mode', !diagramStage.hidden);
   fill(
     main,
-    h('p', { class: 'crumbs' }, h('a', { href: '#/models' }, 'Models'), ' / ', h('a', { href: `#/models/${enc(id)}` }, model.name), ' / ', `v${v}`),
-    h('h1', {}, `${model.name} `, h('small', { class: 'muted' }, `v${v} · package ${report.package_name}`)),
-    h('div', { class: 'model-layout' }, h('section', { class: 'view3d', 'aria-label': '3D view' }, toolbar, stage, info, details, motionStage, resultsStage, liveStage, diagramStage), h('section', { class: 'side' }, t.el)),
+    h(
+      'div',
+      { class: 'model-head' },
+      h('p', { class: 'crumbs' }, h('a', { href: '#/models' }, 'Models'), ' / ', h('a', { href: `#/models/${enc(id)}` }, model.name), ' / ', `v${v}`),
+      h('h1', {}, `${model.name} `, h('small', { class: 'muted' }, `v${v} · package ${report.package_name}`)),
+    ),
+    workspace,
   );
+  applySizes();
+  window.addEventListener('resize', applySizes);
+  // Units changed in the toolbar: every number shown in the old unit is drawn again.
+  const offUnits = onUnits(() => {
+    delete t.panel('structure').dataset.rendered;
+    if (t.panel('structure').hidden === false) {
+      t.panel('structure').dataset.rendered = '1';
+      renderStructure(t.panel('structure'));
+    }
+    motion?.unitsChanged?.();
+    if (selection) fill(details, describe(report, selection));
+  });
 
 
   // ---- Structure: bodies and joints, with a slider per joint coordinate.
@@ -219,37 +366,68 @@ export async function renderViewer(main, id, v, initialTab) {
   }
 
   function slider(c) {
-    const rot = c.kind === 'revolute';
-    const scale = rot ? DEG : 1000; // shown in degrees or millimetres
-    const span = rot ? 180 : Math.max(0.05, viewer.size) * 1000;
-    const start = Math.round(c.q0 * scale * 1e6) / 1e6; // no float noise in the display
-    const input = h('input', {
-      type: 'range',
-      id: `q-${c.key}`,
-      min: String(start - span),
-      max: String(start + span),
-      step: rot ? '0.5' : String(niceStep(span / 400)),
-      value: String(start),
-      dataset: { coordinate: c.key },
-    });
-    const out = h('output', { for: input.id });
-    const show = (x = Number(input.value)) => (out.textContent = `${num(x)} ${rot ? '°' : 'mm'}`);
-    input.addEventListener('input', () => {
-      viewer.setCoordinate(c.key, Number(input.value) / scale);
-      show();
+    const si = c.kind === 'revolute' ? 'rad' : 'm';
+    const u = getUnits();
+    const sym = symbolOf(si, u);
+    const shown = (q) => toDisplay(q, si, u);
+    const start = shown(c.q0); // the CAD pose, exactly
+    // The joint's limits when known (widened to hold the CAD pose), else a turn or the model's size.
+    const lim = limitsOf.get(c.element);
+    let lo;
+    let hi;
+    if (lim && Number.isFinite(lim[0]) && Number.isFinite(lim[1]) && lim[1] > lim[0]) {
+      lo = Math.min(shown(lim[0]), start);
+      hi = Math.max(shown(lim[1]), start);
+    } else {
+      const span = si === 'rad' ? shown(Math.PI) : shown(Math.max(0.05, viewer.size));
+      lo = start - span;
+      hi = start + span;
+    }
+    // step="any": the CAD pose and every typed value are reachable, not snapped to a grid; the
+    // arrow keys move by a round step of the span.
+    const keyStep = niceStep((hi - lo) / 400);
+    const input = h('input', { type: 'range', id: `q-${c.key}`, min: String(lo), max: String(hi), step: 'any', value: String(start), dataset: { coordinate: c.key } });
+    const entry = h('input', { type: 'text', inputmode: 'decimal', id: `qv-${c.key}`, class: 'q-entry', value: num(start), autocomplete: 'off', 'aria-label': `${c.element} [${sym}]` });
+    const msg = h('span', { class: 'field-msg', 'aria-live': 'polite' });
+    const apply = (x, fromEntry = false) => {
+      input.value = String(x);
+      if (!fromEntry) entry.value = num(x);
+      entry.setAttribute('aria-invalid', 'false');
+      msg.textContent = '';
+      viewer.setCoordinate(c.key, fromDisplay(x, si, u));
       motion?.poseChanged?.();
+    };
+    input.addEventListener('input', () => apply(Number(input.value)));
+    input.addEventListener('keydown', (e) => {
+      const d = { ArrowRight: 1, ArrowUp: 1, ArrowLeft: -1, ArrowDown: -1, PageUp: 10, PageDown: -10 }[e.key];
+      if (d === undefined) return;
+      e.preventDefault();
+      apply(clamp(Number(input.value) + d * keyStep, lo, hi));
     });
-    input.addEventListener('focus', () => select({ kind: 'joint', name: c.joint }, { scroll: false }));
-    show();
+    entry.addEventListener('change', () => {
+      const x = parseNumber(entry.value);
+      const bad = x === null || Number.isNaN(x) ? `${c.element}: "${entry.value}" is not a number` : x < lo - 1e-9 || x > hi + 1e-9 ? `${c.element}: ${num(x)} ${sym} is outside ${num(lo)} … ${num(hi)} ${sym}` : null;
+      entry.setAttribute('aria-invalid', String(!!bad));
+      msg.textContent = bad || '';
+      if (!bad) apply(x, true);
+    });
+    for (const el of [input, entry]) el.addEventListener('focus', () => select({ kind: 'joint', name: c.joint }, { scroll: false }));
     sliders.set(c.key, {
-      reset: () => ((input.value = String(start)), show()),
+      reset: () => ((input.value = String(start)), (entry.value = num(start)), (msg.textContent = '')),
       set: (value) => {
-        const x = Math.round(value * scale * 1e6) / 1e6;
+        const x = shown(value);
         input.value = String(x);
-        show(x);
+        entry.value = num(x);
       },
     });
-    return h('div', { class: 'slider' }, h('label', { for: input.id }, `${c.element} (${c.kind}, start ${num(start)} ${rot ? '°' : 'mm'})`), input, out);
+    return h(
+      'div',
+      { class: 'slider' },
+      h('label', { for: input.id, title: c.element }, `${abbreviate(c.element, 40)} (${c.kind}, CAD pose ${num(start)} ${sym}${lim ? `, limits ${num(lo)} … ${num(hi)}` : ''})`),
+      input,
+      h('span', { class: 'q-value' }, entry, h('span', { class: 'unit' }, sym)),
+      msg,
+    );
   }
 
   // ---- Report: warnings, loops, free bodies and geometry matches, linked to the 3D view.
@@ -319,6 +497,8 @@ export async function renderViewer(main, id, v, initialTab) {
   }
 
   return () => {
+    window.removeEventListener('resize', applySizes);
+    offUnits();
     motion?.dispose?.();
     results?.dispose();
     live?.dispose();
@@ -326,6 +506,41 @@ export async function renderViewer(main, id, v, initialTab) {
     viewer.dispose();
     if (window.cad2moViewer === viewer) delete window.cad2moViewer;
   };
+}
+
+/**
+ * A splitter between two panels: drag it, or focus it and press the arrow keys (16 px, Page keys
+ * 64 px). `get`/`set` read and change the panel's size, `save` keeps it; `sign` -1 when moving
+ * right/down shrinks the panel.
+ */
+function splitter({ orientation, label, get, set, save, sign }) {
+  const vertical = orientation === 'vertical';
+  const el = h('div', { class: `splitter splitter-${orientation}`, role: 'separator', tabindex: '0', 'aria-orientation': orientation, 'aria-label': label, title: label });
+  el.addEventListener('pointerdown', (e) => {
+    e.preventDefault();
+    el.setPointerCapture(e.pointerId);
+    const from = vertical ? e.clientX : e.clientY;
+    const size0 = get();
+    const move = (m) => set(size0 + sign * ((vertical ? m.clientX : m.clientY) - from));
+    const up = () => {
+      el.removeEventListener('pointermove', move);
+      el.removeEventListener('pointerup', up);
+      el.removeEventListener('pointercancel', up);
+      save();
+    };
+    el.addEventListener('pointermove', move);
+    el.addEventListener('pointerup', up);
+    el.addEventListener('pointercancel', up);
+  });
+  el.addEventListener('keydown', (e) => {
+    const keys = vertical ? { ArrowLeft: -16, ArrowRight: 16, PageUp: -64, PageDown: 64 } : { ArrowUp: -16, ArrowDown: 16, PageUp: -64, PageDown: 64 };
+    const d = keys[e.key];
+    if (d === undefined) return;
+    e.preventDefault();
+    set(get() + sign * d);
+    save();
+  });
+  return el;
 }
 
 /** Stands in for the 3D view where WebGL is missing. */
@@ -347,7 +562,7 @@ function describe(report, sel) {
     if (b.subsystem.length) row('Subsystem', b.subsystem.join(' / '));
     row('Mass', `${num(b.mass)} kg`);
     row('CG (world)', `${mm(b.cg_world)} mm`);
-    row('Inertia about CG', h('span', { class: 'matrix' }, b.inertia_cg.map((r) => h('span', {}, r.map(num).join('  ')))), ' kg·m²');
+    row('Inertia about CG', h('span', { class: 'matrix scroll' }, b.inertia_cg.map((r) => h('span', {}, r.map(num).join('  ')))), ' kg·m²');
     row('CS1 (world)', `${mm(b.cs1.position_world)} mm`);
     row('Shape', b.triangles ? `${b.triangles} triangles from ${b.geometry.join(', ') || 'VRML'}` : 'none');
     if (b.lumped.length) row('Lumped', b.lumped.join(', '));
@@ -362,7 +577,8 @@ function describe(report, sel) {
         row(e.modelica_name, e.kind);
         continue;
       }
-      const start = e.kind === 'revolute' ? `${num(Math.round(e.initial_q * DEG * 1e6) / 1e6)}°` : `${num(e.initial_q * 1000)} mm`;
+      const si = e.kind === 'revolute' ? 'rad' : 'm';
+      const start = `${num(toDisplay(e.initial_q, si, getUnits()))} ${symbolOf(si, getUnits())}`;
       row(e.modelica_name, `${e.kind} about (${e.axis_world.map(num).join(', ')}) through (${mm(e.origin_world)}) mm, start ${start}`);
     }
     row('Start fixed', j.start_fixed ? 'yes' : 'no (solved with the loop)');

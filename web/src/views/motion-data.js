@@ -219,3 +219,29 @@ export function defaultToolFrame(frames, depths) {
   }
   return best?.f || null;
 }
+
+/**
+ * Tick labels for an axis whose ticks are `splits`: decimals enough to tell neighbouring ticks
+ * apart (0.0002, 0.0004 rather than 0, 0), exponent notation for very small or large spans.
+ */
+export function tickLabels(splits) {
+  const vs = splits.filter((v) => v !== null && Number.isFinite(v));
+  let step = Infinity;
+  for (let i = 1; i < vs.length; i++) {
+    const d = Math.abs(vs[i] - vs[i - 1]);
+    if (d > 0) step = Math.min(step, d);
+  }
+  const big = Math.max(0, ...vs.map(Math.abs));
+  if (!Number.isFinite(step)) step = big || 1;
+  const exp = step < 1e-4 || big >= 1e6;
+  const decimals = Math.min(12, Math.max(0, Math.ceil(-Math.log10(step) - 1e-9)));
+  return splits.map((v) => {
+    if (v === null || !Number.isFinite(v)) return '';
+    if (v === 0 || Math.abs(v) < step * 1e-6) return '0';
+    if (exp) {
+      const digits = Math.min(6, Math.max(1, Math.ceil(Math.log10(Math.abs(v) / step) + 1e-9)));
+      return v.toExponential(digits - 1).replace('e+', 'e');
+    }
+    return v.toFixed(decimals);
+  });
+}

@@ -89,3 +89,14 @@ test('bodyDepths and defaultToolFrame pick the end of the chain', async () => {
   assert.equal(defaultToolFrame(frames, d).node_id, '3');
   assert.equal(defaultToolFrame([], d), null);
 });
+
+test('tick labels tell small ticks apart (the acceleration axis showed only "0")', async () => {
+  const { tickLabels } = await import('./motion-data.js');
+  assert.deepEqual(tickLabels([0, 0.0002, 0.0004]), ['0', '0.0002', '0.0004']);
+  assert.deepEqual(tickLabels([-0.5, 0, 0.5, 1]), ['-0.5', '0', '0.5', '1.0']);
+  assert.deepEqual(tickLabels([0, 50, 100]), ['0', '50', '100']);
+  assert.deepEqual(tickLabels([1e-6, 2e-6, 3e-6]), ['1e-6', '2e-6', '3e-6']);
+  assert.deepEqual(tickLabels([2e6, 4e6]), ['2e6', '4e6']);
+  assert.deepEqual(tickLabels([0.1, 0.2, 0.30000000000000004]), ['0.1', '0.2', '0.3']);
+  assert.deepEqual(tickLabels([null, 1]), ['', '1']);
+});

@@ -7,10 +7,13 @@
 
 import { api, enc } from '../api.js';
 import { h, fill, errorBox, num, field, confirmAction, newId, unitLabel } from '../ui.js';
-import { displayScale, displayUnit, sampleAt, keyframeProblems, throttle, applyAlternative, rotationRows, freshName, bodyDepths, defaultToolFrame } from './motion-data.js';
+import { sampleAt, keyframeProblems, throttle, applyAlternative, rotationRows, freshName, bodyDepths, defaultToolFrame } from './motion-data.js';
 import { sizingQuery, verdict, standingLabel, limitingText } from './sizing-data.js';
-import { simulationBody, driveRows } from './simulation-data.js';
+import { simulationBody, driveRows, trackingErrors, positionVariable, valueAt } from './simulation-data.js';
 import { sweepRows, firstContactText, contactMarkers, touchedBy, witnessLine, pairKey } from './collision-data.js';
+import { advance, SPEEDS } from './results-data.js';
+import { getUnits, factorOf, symbolOf } from '../units.js';
+import { abbreviateAll, filterRows } from '../layout-data.js';
 
 const INTERPOLATIONS = [
   ['ptp', 'Point to point (speed/acceleration limits)'],
@@ -72,8 +75,19 @@ export function renderMotion(panel, ctx) {
     for (const j of driven()) if (Number.isFinite(now[j.name])) out[j.name] = now[j.name];
     return out;
   };
-  const scaleOf = (name) => displayScale(jointInfo(name)?.unit || 'rad');
-  const unitOf = (name) => displayUnit(jointInfo(name)?.unit || 'rad');
+  // Joint values in the units chosen in the toolbar (degrees or radians, mm or m).
+  const scaleOf = (name) => factorOf(jointInfo(name)?.unit || 'rad', getUnits());
+  const unitOf = (name) => symbolOf(jointInfo(name)?.unit || 'rad', getUnits());
+  const displayScale = (unit) => factorOf(unit, getUnits());
+  const displayUnit = (unit) => symbolOf(unit, getUnits());
+  let jointFilter = ''; // the keyframe table's joint search
+  // The last closed-loop run of this motion: its answer, its series by name, and whether the
+  // player shows it (the simulated motion, with the planned one as a ghost).
+  let sim = null;
+  let simView = false;
+  let simPlots = [];
+  let speed = 1;
+  let loop = false;
 
   // ---------------------------------------------------------------- loading
   async function load() {
@@ -175,6 +189,7 @@ export function renderMotion(panel, ctx) {
         { class: 'card motion-editor', 'aria-label': `Motion ${current.name}`, novalidate: true, onsubmit: (e) => (e.preventDefault(), save()) },
         field('Motion name', name),
         h('h3', {}, `Keyframes (${spec.keyframes.length})`),
+        keyframeTable(),
         h('ol', { class: 'keyframes', start: '0' }, kfs),
         h(
           'div',
@@ -261,20 +276,8 @@ export function renderMotion(panel, ctx) {
       const dependent = (joints?.joints || []).filter((j) => j.independent === false);
       const loopFollowers = dependent.filter((j) => !j.mimic);
       const mimicFollowers = dependent.filter((j) => j.mimic);
-      const rows = driven().map((j) =>
-        h(
-          'label',
-          { class: 'jv' },
-          h('span', {}, `${j.name} [${unitOf(j.name)}]`),
-          numberInput(`${id}-${j.name}`, kf.values?.[j.name], scaleOf(j.name), (v) => {
-            kf.values ??= {};
-            if (v === null) delete kf.values[j.name];
-            else kf.values[j.name] = v;
-          }, { placeholder: k === 0 ? 'CAD pose' : 'previous' }),
-        ),
-      );
       body = [
-        h('div', { class: 'joint-values' }, rows),
+        h('p', { class: 'muted kf-values-note' }, `Joint values: column ${k} of the table above.`),
         loopFollowers.length ? h('p', { class: 'muted' }, `${loopFollowers.map((j) => j.name).join(', ')} follow the loops.`) : null,
         mimicFollowers.length
           ? h('p', { class: 'muted' }, `${mimicFollowers.map((j) => `${j.name} follows ${j.mimic.leader}`).join(', ')} (mimic coupling).`)
@@ -320,6 +323,67 @@ export function renderMotion(panel, ctx) {
         h('button', { type: 'button', disabled: k === 0, onclick: () => move(k, -1), 'aria-label': `Move keyframe ${k} up` }, '↑'),
         h('button', { type: 'button', disabled: k === spec.keyframes.length - 1, onclick: () => move(k, 1), 'aria-label': `Move keyframe ${k} down` }, '↓'),
         h('button', { type: 'button', class: 'danger', disabled: spec.keyframes.length <= 2, onclick: () => removeKf(k), 'aria-label': `Remove keyframe ${k}` }, 'Remove'),
+      ),
+    );
+  }
+
+  /**
+   * The joint values of every keyframe as one table: a row per driven joint (filtered by the
+   * search), a column per keyframe; tool keyframes' columns are solved by IK and show no fields.
+   * The table scrolls inside its box when there are many keyframes; the joint column stays.
+   */
+  function keyframeTable() {
+    const all = driven();
+    const shortName = abbreviateAll(all.map((j) => j.name), 30); // never two rows alike
+    const search = h('input', { type: 'search', id: 'kf-filter', value: jointFilter, autocomplete: 'off', placeholder: 'name or part of it' });
+    const count = h('small', { class: 'muted kf-filter-count' });
+    const body = h('tbody');
+    const draw = () => {
+      const rows = filterRows(all, jointFilter, (j) => j.name);
+      count.textContent = `${rows.length} of ${all.length} joints`;
+      fill(
+        body,
+        rows.map((j) =>
+          h(
+            'tr',
+            { dataset: { joint: j.name } },
+            h('th', { scope: 'row', title: j.name }, h('span', { class: 'name', title: j.name }, shortName.get(j.name)), h('small', { class: 'muted' }, ` [${unitOf(j.name)}]`)),
+            spec.keyframes.map((kf, k) =>
+              h(
+                'td',
+                { dataset: { keyframe: String(k) } },
+                kf.kind === 'tool'
+                  ? h('span', { class: 'muted', title: 'A tool keyframe: the joints come from inverse kinematics' }, 'IK')
+                  : numberInput(`kf${k}-${j.name}`, kf.values?.[j.name], scaleOf(j.name), (v) => {
+                      kf.values ??= {};
+                      if (v === null) delete kf.values[j.name];
+                      else kf.values[j.name] = v;
+                    }, { placeholder: k === 0 ? 'CAD' : 'prev.', label: `Keyframe ${k} ${j.name} [${unitOf(j.name)}]` }),
+              ),
+            ),
+          ),
+        ),
+      );
+    };
+    search.addEventListener('input', () => {
+      jointFilter = search.value;
+      draw();
+    });
+    draw();
+    return h(
+      'div',
+      { class: 'kf-table-wrap' },
+      h('div', { class: 'row kf-filter' }, h('label', { for: search.id }, 'Filter joints'), search, count),
+      h(
+        'div',
+        { class: 'scroll kf-table-box' },
+        h(
+          'table',
+          { class: 'keyframe-table' },
+          h('caption', { class: 'visually-hidden' }, 'Joint values per keyframe (empty: the CAD pose in keyframe 0, else the previous keyframe)'),
+          h('thead', {}, h('tr', {}, h('th', { scope: 'col' }, 'Joint'), spec.keyframes.map((kf, k) => h('th', { scope: 'col', class: 'num' }, `${k}${kf.kind === 'tool' ? ' (tool)' : ''}`)))),
+          body,
+        ),
       ),
     );
   }
@@ -446,6 +510,7 @@ export function renderMotion(panel, ctx) {
   // ---------------------------------------------------------------- planning: trajectory and sizing
   async function plan() {
     stop();
+    clearSim();
     traj = null;
     sizing = null;
     problems = new Map();
@@ -513,6 +578,7 @@ export function renderMotion(panel, ctx) {
         ),
         answer.tool ? h('p', { class: 'muted tool-error' }, `Tool ${answer.tool.frame}: position error up to ${num(answer.tool.max_position_error * 1000)} mm, orientation up to ${num(answer.tool.max_orientation_error)} rad.`) : null,
         h('p', { class: 'muted' }, `${answer.solver}; ${answer.steps} steps in ${num(answer.wall_time_s)} s. The run is stored as result `, h('code', {}, answer.result_id || '—'), ': open it under Results to animate and plot it.'),
+        answer.result_id ? simulatedView() : null,
       );
     }
     fill(
@@ -534,12 +600,109 @@ export function renderMotion(panel, ctx) {
   async function simulate() {
     const box = simBox.querySelector('.simulation-out');
     fill(box, h('p', { role: 'status' }, 'Simulating the drives…'));
+    clearSim();
     try {
       const answer = await api(`${base}/simulations`, { method: 'POST', body: simulationBody({ motionId: current.id, motionDuration: traj.duration, ...simForm }) });
-      if (!disposed) renderSimulate(answer);
+      if (disposed) return;
+      sim = { answer, series: new Map() };
+      if (answer.result_id) await loadSimSeries(sim);
+      if (!disposed && sim?.answer === answer) renderSimulate(answer);
     } catch (e) {
       fill(box, errorBox(e, 'The simulation did not run'));
     }
+  }
+
+  /** The run's joint positions, motor currents and voltages, read back from its stored result. */
+  async function loadSimSeries(run) {
+    const wanted = traj.joints.map((j, i) => positionVariable(j, traj.units[i]));
+    const perDrive = run.answer.drives.flatMap((d) => [`drive_${d.joint}.motor.i`, `drive_${d.joint}.motor.v`]);
+    for (const names of [wanted, perDrive]) {
+      for (let k = 0; k < names.length; k += 50) {
+        const q = names.slice(k, k + 50).map((n) => `name=${enc(n)}`).join('&');
+        try {
+          const got = await api(`/api/results/${enc(run.answer.result_id)}/series?${q}&width=2000`);
+          for (const v of got.variables) run.series.set(v.name, v);
+        } catch (e) {
+          run.problem = e.message;
+        }
+      }
+    }
+  }
+
+  function clearSim() {
+    for (const p of simPlots) p.destroy();
+    simPlots = [];
+    if (simView) ctx.setGhost?.(null);
+    simView = false;
+    sim = null;
+  }
+
+  /** The simulated motion's joint values at time t (SI, by joint name). */
+  function simulatedAt(t) {
+    const out = {};
+    traj.joints.forEach((j, i) => {
+      const v = valueAt(sim.series.get(positionVariable(j, traj.units[i])), t);
+      if (v !== null) out[j] = v;
+    });
+    return out;
+  }
+
+  /**
+   * The run's plots (tracking error per joint, motor current and voltage against their limits)
+   * and the switch that animates the simulated motion with the planned one as a ghost.
+   */
+  function simulatedView() {
+    for (const p of simPlots) p.destroy();
+    simPlots = [];
+    if (!sim) return null;
+    const toggle = h('input', { type: 'checkbox', id: 'sim-animate', checked: simView });
+    toggle.addEventListener('change', () => {
+      simView = toggle.checked;
+      if (!simView) ctx.setGhost?.(null);
+      setTime(time);
+    });
+    const plotsEl = h('div', { class: 'plots-box sim-plots' });
+    const errors = trackingErrors(traj, sim.series);
+    const draw = async () => {
+      const { timePlot, signalPlot } = await import('./plots.js');
+      if (disposed || !sim) return;
+      if (errors.names.length) {
+        const box = h('div', { class: 'plot', dataset: { plot: 'tracking' } });
+        plotsEl.append(box);
+        const series = errors.series.map((ys, i) => ys.map((y) => y * displayScale(errors.units[i])));
+        simPlots.push(timePlot(box, { title: 'Tracking error (simulated − planned)', t: errors.t, series, names: errors.names, units: errors.units.map(displayUnit), onSeek: (t) => seek(t), marks: () => [] }));
+      }
+      for (const [key, title, unit, limit] of [
+        ['i', 'Motor current against its limit', 'A', 'i_max'],
+        ['v', 'Motor voltage against its limit', 'V', 'v_max'],
+      ]) {
+        const signals = [];
+        for (const d of sim.answer.drives) {
+          const s = sim.series.get(`drive_${d.joint}.motor.${key}`);
+          if (!s) continue;
+          signals.push({ name: `${d.joint} ${key}`, unit, t: s.t, y: s.y });
+          const lim = d[limit];
+          if (Number.isFinite(lim) && lim > 0) {
+            const span = [s.t[0], s.t.at(-1)];
+            signals.push({ name: `${d.joint} +limit`, unit, t: span, y: [lim, lim] }, { name: `${d.joint} −limit`, unit, t: span, y: [-lim, -lim] });
+          }
+        }
+        if (!signals.length) continue;
+        const box = h('div', { class: 'plot', dataset: { plot: `sim-${key}` } });
+        plotsEl.append(box);
+        simPlots.push(signalPlot(box, { title, signals, onSeek: (t) => seek(t) }));
+      }
+      for (const p of simPlots) p.setTime(time);
+    };
+    draw();
+    return h(
+      'div',
+      { class: 'sim-view' },
+      h('span', { class: 'check' }, toggle, h('label', { for: toggle.id }, 'Play the simulated motion (the planned one as a ghost)')),
+      errors.missing.length ? h('p', { class: 'warning' }, `The run has no positions of ${errors.missing.join(', ')}.`) : null,
+      sim.problem ? h('p', { class: 'warning' }, `Some series of the run could not be read: ${sim.problem}`) : null,
+      plotsEl,
+    );
   }
 
   async function loadSizing() {
@@ -583,6 +746,19 @@ export function renderMotion(panel, ctx) {
     });
     clock = h('output', { for: scrub.id, class: 'motion-clock' });
     playBtn = h('button', { type: 'button', id: 'motion-play', onclick: () => (playing ? stop() : play()) }, 'Play');
+    const dt = 1 / traj.rate;
+    const back = h('button', { type: 'button', id: 'motion-step-back', 'aria-label': 'Step back one sample', title: 'Step back one sample', onclick: () => seek(time - dt) }, '« Step');
+    const fwd = h('button', { type: 'button', id: 'motion-step', 'aria-label': 'Step forward one sample', title: 'Step forward one sample', onclick: () => seek(time + dt) }, 'Step »');
+    const speedSel = h('select', { id: 'motion-speed' }, SPEEDS.filter((x) => x <= 4).map((x) => h('option', { value: String(x), selected: x === speed }, `${x}×`)));
+    speedSel.addEventListener('change', () => {
+      speed = Number(speedSel.value);
+      if (playing) {
+        stop();
+        play();
+      }
+    });
+    const loopBox = h('input', { type: 'checkbox', id: 'motion-loop', checked: loop });
+    loopBox.addEventListener('change', () => (loop = loopBox.checked));
     timelineCursor = h('div', { class: 'timeline-cursor', 'aria-hidden': 'true' });
     const marks = traj.keyframes.map((k) =>
       h(
@@ -605,14 +781,29 @@ export function renderMotion(panel, ctx) {
         ? h('p', { class: 'warning' }, `Motions are planned on the latest version (v${traj.version}); this page shows v${ctx.versionNumber}, whose joints may differ.`)
         : null,
       h('div', { class: 'timeline', role: 'group', 'aria-label': 'Keyframe and first-contact times' }, marks, contactMarks(d), timelineCursor),
-      h('div', { class: 'player row' }, playBtn, h('label', { for: scrub.id, class: 'visually-hidden' }, 'Motion time'), scrub, clock),
+      h(
+        'div',
+        { class: 'player row' },
+        playBtn,
+        back,
+        fwd,
+        h('label', { for: scrub.id, class: 'visually-hidden' }, 'Motion time'),
+        scrub,
+        clock,
+        h('span', { class: 'player-options' }, h('label', { for: speedSel.id }, 'Speed'), speedSel, h('span', { class: 'check' }, loopBox, h('label', { for: loopBox.id }, 'Loop'))),
+      ),
     );
   }
 
   function setTime(t) {
     if (!traj) return;
     time = Math.max(0, Math.min(t, traj.duration));
-    ctx.setJoints(sampleAt(traj, time));
+    if (simView && sim) {
+      // The simulated motion moves the model; the planned one is the ghost.
+      ctx.setJoints(simulatedAt(time));
+      ctx.setGhost?.(sampleAt(traj, time));
+    } else ctx.setJoints(sampleAt(traj, time));
+    for (const p of simPlots) p.setTime(time);
     if (scrub) scrub.value = String(time);
     if (clock) clock.textContent = `${time.toFixed(2)} s / ${num(traj.duration)} s`;
     if (timelineCursor) timelineCursor.style.left = `${traj.duration > 0 ? (time / traj.duration) * 100 : 0}%`;
@@ -629,16 +820,17 @@ export function renderMotion(panel, ctx) {
 
   function play() {
     if (!traj) return;
-    if (time >= traj.duration) time = 0;
+    if (time >= traj.duration && !loop) time = 0;
     playing = true;
     playerBox.dataset.playing = 'true';
     if (playBtn) playBtn.textContent = 'Pause';
-    const t0 = performance.now() - time * 1000;
+    let last = performance.now();
     const tick = (now) => {
       if (!playing) return;
-      const t = (now - t0) / 1000;
+      const { t, ended } = advance(time, (now - last) / 1000, { speed, start: 0, stop: traj.duration, loop });
+      last = now;
       setTime(t);
-      if (t >= traj.duration) return stop();
+      if (ended) return stop();
       raf = requestAnimationFrame(tick);
     };
     raf = requestAnimationFrame(tick);
@@ -663,19 +855,24 @@ export function renderMotion(panel, ctx) {
     plots = [];
     fill(plotsBox, h('h3', {}, 'Plots'));
     const names = traj.joints;
-    const units = (suffix) => traj.units.map((u) => `${u}${suffix}`);
+    // q, qd and qdd in the toolbar's units (as the sliders and keyframes show them).
+    const units = (suffix) => traj.units.map((u) => `${displayUnit(u)}${suffix}`);
+    const scaled = (series) => series.map((ys, i) => {
+      const f = displayScale(traj.units[i]);
+      return f === 1 ? ys : ys.map((y) => y * f);
+    });
     const tauUnits = traj.units.map((u) => (u === 'rad' ? 'N·m' : 'N'));
     const seekTo = (t) => seek(t);
-    for (const [key, title, us] of [
-      ['q', 'Position q', units('')],
-      ['qd', 'Speed qd', units('/s')],
-      ['qdd', 'Acceleration qdd', units('/s²')],
-      ['tau', 'Torque / force', tauUnits],
+    for (const [key, title, us, scale] of [
+      ['q', 'Position q', units(''), true],
+      ['qd', 'Speed qd', units('/s'), true],
+      ['qdd', 'Acceleration qdd', units('/s²'), true],
+      ['tau', 'Torque / force', tauUnits, false],
     ]) {
       if (!traj[key]) continue;
       const box = h('div', { class: 'plot', dataset: { plot: key } });
       plotsBox.append(box);
-      plots.push(timePlot(box, { title, t: traj.t, series: traj[key], names, units: us, onSeek: seekTo, marks: () => contactMarkers(collisions, traj?.duration || 0).map((m) => m.time) }));
+      plots.push(timePlot(box, { title, t: traj.t, series: scale ? scaled(traj[key]) : traj[key], names, units: us, onSeek: seekTo, marks: () => contactMarkers(collisions, traj?.duration || 0).map((m) => m.time) }));
     }
     for (const d of sizing?.drives || []) {
       if (!d.operating_points?.speed?.length) {
@@ -916,7 +1113,8 @@ export function renderMotion(panel, ctx) {
       renderCollisions();
       renderPlayer();
       setTime(time);
-      ctx.say(firstContactText(c), c.first_contact ? 'error' : 'ok');
+      // A passing note (it clears itself), not an error that outlives the model: the finding stays in the table.
+      ctx.say(firstContactText(c), c.first_contact ? 'info' : 'ok');
     } catch (e) {
       if (button) button.disabled = false;
       collisionBox.append(errorBox(e, 'The collisions could not be checked'));
@@ -1190,7 +1388,16 @@ export function renderMotion(panel, ctx) {
   load();
   return {
     poseChanged,
+    /** The toolbar's units changed: keyframes, limits and plots are drawn in the new ones. */
+    unitsChanged() {
+      if (disposed || !joints) return;
+      renderEditor();
+      renderLimits();
+      renderPlots();
+    },
     shown(on) {
+      // The ghost belongs to this tab.
+      if (!on) ctx.setGhost?.(null);
       // The closest-point line belongs to this tab.
       if (!on && contactPair) {
         contactPair = null;
@@ -1201,6 +1408,7 @@ export function renderMotion(panel, ctx) {
     dispose() {
       disposed = true;
       stop();
+      clearSim();
       hideGizmo();
       for (const p of plots) p.destroy();
       plots = [];

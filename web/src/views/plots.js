@@ -4,7 +4,10 @@
 
 import uPlot from 'uplot';
 import 'uplot/dist/uPlot.min.css';
-import { torqueSpeedData, nearestIndex } from './motion-data.js';
+import { torqueSpeedData, nearestIndex, tickLabels } from './motion-data.js';
+
+/** Axis tick labels with as many decimals as the tick spacing needs (never a row of "0"). */
+const ticks = (u, splits) => tickLabels(splits);
 
 const COLORS = ['#1f5fa8', '#d03030', '#1e7b34', '#8a5a00', '#7030c0', '#0a8a8a', '#c04080', '#555'];
 const CURSOR = '#f0a030';
@@ -90,6 +93,12 @@ function timeChart(box, opts, data, label, onSeek, keepTime) {
   };
 }
 
+/** The y axis label when every line has one unit, e.g. "[°/s]". */
+function sameUnit(units) {
+  const set = new Set(units);
+  return set.size === 1 ? `[${units[0]}]` : undefined;
+}
+
 /**
  * One chart of `series` (arrays over traj.t), one line per joint; `marks()` gives times to mark
  * (first contacts). Returns {setTime(t), destroy()}.
@@ -104,7 +113,9 @@ export function timePlot(box, { title, t, series, names, units, onSeek, marks })
     scales: { x: { time: false } },
     cursor: { drag: { x: false, y: false } },
     series: [{ label: 't [s]' }, ...names.map((n, i) => ({ label: `${n} [${units[i]}]`, stroke: COLORS[i % COLORS.length], width: 1.5 }))],
-    axes: [{ label: 't [s]' }, { size: 56 }],
+    // The legend names the lines (no column of "--" values while the mouse is elsewhere).
+    legend: { live: false },
+    axes: [{ label: 't [s]', values: ticks }, { size: 64, values: ticks, label: sameUnit(units) }],
     hooks: { draw: [markLines(marks), cursorLine(() => time)] },
   };
   return timeChart(box, opts, [t, ...series], `${title} against time`, onSeek, (x) => (time = x));
@@ -133,7 +144,8 @@ export function torqueSpeedPlot(box, { title, op, envelope }) {
       line('peak torque', '#b3261e', []),
       line('−peak torque', '#b3261e', []),
     ],
-    axes: [{ label: 'motor speed [rad/s]' }, { label: 'torque [N·m]', size: 56 }],
+    legend: { live: false },
+    axes: [{ label: 'motor speed [rad/s]', values: ticks }, { label: 'torque [N·m]', size: 64, values: ticks }],
     hooks: {
       draw: [
         (u) => {
@@ -209,7 +221,7 @@ export function signalPlot(box, { title, signals, onSeek }) {
         ? signals.map((s, i) => ({ label: s.unit && s.unit !== '1' ? `${s.name} [${s.unit}]` : s.name, stroke: COLORS[i % COLORS.length], width: 1.5, spanGaps: true, points: { show: false } }))
         : [{ label: '(no variables)' }]),
     ],
-    axes: [{ label: 't [s]' }, { size: 64 }],
+    axes: [{ label: 't [s]', values: ticks }, { size: 64, values: ticks }],
     hooks: { draw: [cursorLine(() => time)] },
   };
   return timeChart(box, opts, data, `${title}: ${signals.map((s) => s.name).join(', ') || 'no variables'} against time`, onSeek, (x) => (time = x));

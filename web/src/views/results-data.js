@@ -184,3 +184,24 @@ export function csvName(name) {
   const base = String(name || 'result').replace(/\.mat$/i, '').replace(/[^\w.+-]+/g, '_') || 'result';
   return `${base}-signals.csv`;
 }
+
+/**
+ * The joint coordinates of the model (revolute and prismatic elements of tree joints, by their
+ * Modelica names) that a result does not hold: why a result with some joint angles animates
+ * fewer bodies than it has.
+ * @param {object} report  the conversion report
+ * @param {string[]} found the result's joints_found
+ */
+export function missingJoints(report, found) {
+  const have = new Set(found || []);
+  const out = [];
+  for (const j of report?.joints || []) {
+    if (!j.in_tree) continue;
+    for (const e of j.elements || []) {
+      if (e.kind !== 'revolute' && e.kind !== 'prismatic') continue;
+      const name = e.modelica_name || j.modelica_name;
+      if (!have.has(name) && !have.has(j.modelica_name)) out.push(name);
+    }
+  }
+  return out;
+}

@@ -101,3 +101,18 @@ test('signalsCsv: one time column when shared, merged instants otherwise; names 
   assert.equal(signalsCsv([]), 'time [s]\n');
   assert.equal(csvName('full Robot.MAT'), 'full_Robot-signals.csv');
 });
+
+test('missingJoints names the tree coordinates a result lacks', async () => {
+  const { missingJoints } = await import('./results-data.js');
+  const report = {
+    joints: [
+      { modelica_name: 'J1', in_tree: true, elements: [{ kind: 'revolute', modelica_name: 'J1' }] },
+      { modelica_name: 'J2', in_tree: true, elements: [{ kind: 'prismatic', modelica_name: 'J2' }] },
+      { modelica_name: 'W', in_tree: true, elements: [{ kind: 'weld', modelica_name: 'W' }] },
+      { modelica_name: 'C', in_tree: false, elements: [{ kind: 'revolute', modelica_name: 'C' }] },
+    ],
+  };
+  assert.deepEqual(missingJoints(report, ['J1']), ['J2']);
+  assert.deepEqual(missingJoints(report, ['J1', 'J2']), []);
+  assert.deepEqual(missingJoints(report, undefined), ['J1', 'J2']);
+});

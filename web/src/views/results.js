@@ -6,7 +6,7 @@
 
 import { api, enc } from '../api.js';
 import { h, fill, errorBox, confirmAction, num, bytes, when, plural } from '../ui.js';
-import { parsePoses, posesAt } from './results-data.js';
+import { parsePoses, posesAt, missingJoints } from './results-data.js';
 import { resultUpload, resultTable, resultPlayer, resultCharts, deleteResult } from './result-kit.js';
 
 /**
@@ -107,6 +107,13 @@ export function renderResults(panel, ctx) {
       r,
       h('h3', {}, `Play ${r.name} `, h('small', { class: 'muted' }, `${num(r.stop - r.start)} s, ${plural(stream.bodies.length, 'body', 'bodies')} animated`)),
       stream.bodies.length ? null : h('p', { class: 'warning' }, 'This result has no body poses: the 3D view keeps the joint sliders’ pose.'),
+      // Some joint angles but not all: the bodies they would move need the missing ones too.
+      (() => {
+        const lacking = r.joints_found?.length ? missingJoints(ctx.viewer?.report, r.joints_found) : [];
+        return lacking.length
+          ? h('p', { class: 'warning missing-joints' }, `This result holds ${plural(r.joints_found.length, 'joint coordinate')} of the model but not ${lacking.join(', ')}: bodies that depend on ${lacking.length === 1 ? 'it' : 'them'} are not animated.`)
+          : null;
+      })(),
     );
   }
 

@@ -33,3 +33,53 @@ export function driveRows(answer) {
     saturated: d.saturated.length ? d.saturated.map(([a, b]) => `${a.toFixed(3)}–${b.toFixed(3)} s`).join(', ') : 'never',
   }));
 }
+
+/** The result variable of a joint coordinate's position: `<joint>.phi`, or `<joint>.s` for a prismatic one (unit m). */
+export function positionVariable(joint, unit) {
+  return `${joint}.${unit === 'm' ? 's' : 'phi'}`;
+}
+
+/** The value of series {t, y} at time `t` by linear interpolation, clamped to its ends; null when empty. */
+export function valueAt(series, t) {
+  const ts = series?.t;
+  if (!ts?.length) return null;
+  if (t <= ts[0]) return series.y[0];
+  const n = ts.length - 1;
+  if (t >= ts[n]) return series.y[n];
+  let lo = 0;
+  let hi = n;
+  while (hi - lo > 1) {
+    const mid = (lo + hi) >> 1;
+    if (ts[mid] <= t) lo = mid;
+    else hi = mid;
+  }
+  const f = (t - ts[lo]) / (ts[hi] - ts[lo] || 1);
+  return series.y[lo] + f * (series.y[hi] - series.y[lo]);
+}
+
+/**
+ * The tracking error on the planned trajectory's grid: for each joint of `traj` whose simulated
+ * position is in `simulated` (by variable name), simulated − planned at every planned instant up
+ * to the run's end. Returns {t, names, units, series} (SI) for a time plot; joints the run lacks
+ * are listed in `missing`.
+ */
+export function trackingErrors(traj, simulated) {
+  const names = [];
+  const units = [];
+  const series = [];
+  const missing = [];
+  const end = Math.min(...traj.joints.map((j, i) => simulated.get(positionVariable(j, traj.units[i]))?.t?.at(-1) ?? Infinity), traj.t.at(-1) ?? 0);
+  const k = traj.t.findLastIndex((t) => t <= end + 1e-12) + 1;
+  const t = traj.t.slice(0, k);
+  traj.joints.forEach((j, i) => {
+    const s = simulated.get(positionVariable(j, traj.units[i]));
+    if (!s) {
+      missing.push(j);
+      return;
+    }
+    names.push(j);
+    units.push(traj.units[i]);
+    series.push(t.map((x, n) => valueAt(s, x) - traj.q[i][n]));
+  });
+  return { t, names, units, series, missing };
+}

@@ -21,3 +21,28 @@ test('driveRows states current and voltage against their limits and the saturati
   assert.equal(rows[0].saturated, '0.100–0.250 s');
   assert.equal(driveRows({ drives: [{ ...{ joint: 'J2', unit: 'm', max_error: 0, rms_error: 0, max_current: 1, i_max: 2, max_voltage: 1, v_max: 2 }, saturated: [] }] })[0].saturated, 'never');
 });
+
+test('tracking errors: simulated minus planned on the planned grid, missing joints named', async () => {
+  const { trackingErrors, valueAt, positionVariable } = await import('./simulation-data.js');
+  assert.equal(positionVariable('J1', 'rad'), 'J1.phi');
+  assert.equal(positionVariable('S', 'm'), 'S.s');
+  const s = { t: [0, 1, 2], y: [0, 10, 30] };
+  assert.equal(valueAt(s, 0.5), 5);
+  assert.equal(valueAt(s, 1.5), 20);
+  assert.equal(valueAt(s, -1), 0);
+  assert.equal(valueAt(s, 9), 30);
+  assert.equal(valueAt({ t: [], y: [] }, 1), null);
+  const traj = { t: [0, 0.5, 1, 1.5], joints: ['J1', 'S', 'J3'], units: ['rad', 'm', 'rad'], q: [[0, 1, 2, 3], [0, 0, 0, 0], [5, 5, 5, 5]] };
+  const sim = new Map([
+    ['J1.phi', { t: [0, 1], y: [0, 2.2] }],
+    ['S.s', { t: [0, 1], y: [0.001, 0.001] }],
+  ]);
+  const e = trackingErrors(traj, sim);
+  // The run ends at 1 s: the planned instants after it are left out.
+  assert.deepEqual(e.t, [0, 0.5, 1]);
+  assert.deepEqual(e.names, ['J1', 'S']);
+  assert.deepEqual(e.units, ['rad', 'm']);
+  assert.deepEqual(e.missing, ['J3']);
+  assert.ok(Math.abs(e.series[0][1] - 0.1) < 1e-12 && Math.abs(e.series[0][2] - 0.2) < 1e-12, JSON.stringify(e.series[0]));
+  assert.deepEqual(e.series[1], [0.001, 0.001, 0.001]);
+});
