@@ -408,7 +408,7 @@ fn models_render_in_chromium() {
         let ws = &hand["workspace"];
         for size in ["wide", "narrow"] {
             assert_eq!(ws[size]["viewAndPlay"]["play"], true, "{size}: {ws}");
-            assert_eq!(ws[size]["tabs"].as_object().map(|t| t.len()), Some(8), "{size}: every tab checked: {ws}");
+            assert_eq!(ws[size]["tabs"].as_object().map(|t| t.len()), Some(9), "{size}: every tab checked: {ws}");
         }
         assert_eq!(ws["viewports"]["quad"].as_array().map(|q| q.len()), Some(4), "four viewports drawn: {ws}");
         assert!(ws["viewports"]["distance"].as_f64().is_some_and(|d| d > 0.0), "a measured distance: {ws}");
@@ -422,7 +422,7 @@ fn models_render_in_chromium() {
         assert!(pr2["bodies"].as_u64().is_some_and(|n| n >= 40), "PR2's bodies are listed: {pr2}");
         let ws = &pr2["workspace"];
         assert_eq!(ws["wide"]["viewAndPlay"]["play"], true, "PR2: {ws}");
-        assert_eq!(ws["wide"]["tabs"].as_object().map(|t| t.len()), Some(8), "PR2: every tab checked: {ws}");
+        assert_eq!(ws["wide"]["tabs"].as_object().map(|t| t.len()), Some(9), "PR2: every tab checked: {ws}");
         for png in [
             "ws-pr2-1440-motion",
             "ws-pr2-1440-drives",

@@ -55,7 +55,7 @@ function viewAndPlay() {
   return { stage: inWindow(stage) && usable, play: inWindow(r) && top === play, stageBox: [stage.left, stage.top, stage.width, stage.height].map(Math.round), playBox: [r.left, r.top].map(Math.round) };
 }
 
-const TABS = ['Structure', 'Report', 'Drives', 'Motion', 'Results', 'Live', 'Collision', 'Modelica diagram'];
+const TABS = ['Structure', 'Report', 'Drives', 'Motion', 'Results', 'Live', 'Collision', 'Scene', 'Modelica diagram'];
 
 /**
  * Opens every tab of the model on the page at `width`×`height`, checks reach on each, and the
