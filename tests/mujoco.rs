@@ -241,20 +241,7 @@ for _ in range(4000):
     mujoco.mj_step(m, d)
 print(m.neq, d.qpos[lead], d.qpos[follow])
 "#;
-    let run = match Command::new("python3").arg("-c").arg(script).arg(&path).output() {
-        Ok(r) => r,
-        Err(e) => {
-            assert!(!tools_required(), "python3 not runnable: {e}");
-            return;
-        }
-    };
-    if run.status.code() == Some(3) {
-        assert!(!tools_required(), "{}", String::from_utf8_lossy(&run.stdout));
-        println!("NOTICE: mujoco not importable; load check skipped");
-        return;
-    }
-    let text = String::from_utf8_lossy(&run.stdout).to_string();
-    assert!(run.status.success(), "MuJoCo refused the model: {text}{}", String::from_utf8_lossy(&run.stderr));
+    let Some(text) = run_mujoco_script(script, &path, "load check", "model") else { return };
     let v: Vec<f64> = text.split_whitespace().map(|t| t.parse().expect("number")).collect();
     assert_eq!(v[0], 1.0, "one equality: {text}");
     assert!((v[2] - 2.0 * v[1]).abs() < 1e-3, "the follower tracks 2 x the leader: {text}");
@@ -456,20 +443,7 @@ while d.time < 1.5:
 print(" ".join(names)); print(" ".join(g for g in geoms if g))
 print(d.xpos[p][0], d.xpos[p][1], d.xpos[p][2], abs(d.qvel[m.joint("pallet_free").dofadr[0]:][:6]).max(), tool[0], tool[2])
 "#;
-    let run = match Command::new("python3").arg("-c").arg(script).arg(&path).output() {
-        Ok(r) => r,
-        Err(e) => {
-            assert!(!tools_required(), "python3 not runnable: {e}");
-            return;
-        }
-    };
-    if run.status.code() == Some(3) {
-        assert!(!tools_required(), "{}", String::from_utf8_lossy(&run.stdout));
-        println!("NOTICE: mujoco not importable; scene check skipped");
-        return;
-    }
-    let text = String::from_utf8_lossy(&run.stdout).to_string();
-    assert!(run.status.success(), "MuJoCo refused the scene: {text}{}", String::from_utf8_lossy(&run.stderr));
+    let Some(text) = run_mujoco_script(script, &path, "scene check", "scene") else { return };
     let lines: Vec<&str> = text.lines().collect();
     for b in ["pallet", "conveyor", "gate", "base", "arm"] {
         assert!(lines[0].split_whitespace().any(|n| n == b), "body {b} in MuJoCo: {text}");
@@ -485,4 +459,26 @@ print(d.xpos[p][0], d.xpos[p][1], d.xpos[p][2], abs(d.qvel[m.joint("pallet_free"
     assert!(v[3] < 1e-2, "pallet at rest: {}", v[3]);
     // The tool stands 0.4 m along the arm, which is 0.3 m above the base.
     assert!((v[4] - 0.4).abs() < 1e-9 && (v[5] - 0.3).abs() < 1e-9, "tool on the arm: {v:?}");
+}
+
+/// Runs a Python `script` (which exits 3 when `mujoco` cannot be imported) on the file `path`
+/// and returns its standard output; `None` (with a notice) when python3 or mujoco is missing and
+/// the tools are not required. `check` names the check for the notice, `what` the file for the
+/// failure message.
+fn run_mujoco_script(script: &str, path: &Path, check: &str, what: &str) -> Option<String> {
+    let run = match Command::new("python3").arg("-c").arg(script).arg(path).output() {
+        Ok(r) => r,
+        Err(e) => {
+            assert!(!tools_required(), "python3 not runnable: {e}");
+            return None;
+        }
+    };
+    if run.status.code() == Some(3) {
+        assert!(!tools_required(), "{}", String::from_utf8_lossy(&run.stdout));
+        println!("NOTICE: mujoco not importable; {check} skipped");
+        return None;
+    }
+    let text = String::from_utf8_lossy(&run.stdout).to_string();
+    assert!(run.status.success(), "MuJoCo refused the {what}: {text}{}", String::from_utf8_lossy(&run.stderr));
+    Some(text)
 }

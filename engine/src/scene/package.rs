@@ -27,6 +27,7 @@ use nalgebra::{Isometry3, UnitQuaternion, Vector3};
 
 use super::{Kind, Motion, Scene, SceneObject, Shape, PLANE_DEPTH, PLANE_SIZE};
 use crate::collision::ConvexPart;
+use crate::pipeline::back::mjcf::{attr, n as mj, quat, v3};
 use crate::pipeline::back::modelica::diagram::extend::PLACEHOLDER;
 
 /// Largest rotation between two rows of a pose table as written into the Modelica table.
@@ -323,15 +324,6 @@ pub fn modelica(scene: &Scene, pkg: &str) -> Modelica {
     Modelica { declarations, members, has_free }
 }
 
-fn attr(s: &str) -> String {
-    s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
-}
-
-fn mj(x: f64) -> String {
-    let x = if x == 0.0 { 0.0 } else { x };
-    format!("{x:?}")
-}
-
 fn geom(o: &SceneObject, pose: &Isometry3<f64>) -> String {
     let (kind, size) = match o.shape {
         Shape::Mesh { .. } => ("mesh", String::new()),
@@ -345,15 +337,10 @@ fn geom(o: &SceneObject, pose: &Isometry3<f64>) -> String {
     let [r, g, b] = o.color;
     let size = if kind == "mesh" { format!("mesh=\"scene-{}\"", attr(&o.name)) } else { format!("size=\"{size}\"") };
     format!(
-        "<geom name=\"{}\" type=\"{kind}\" {size} pos=\"{} {} {}\" quat=\"{} {} {} {}\" rgba=\"{} {} {} {}\"/>",
+        "<geom name=\"{}\" type=\"{kind}\" {size} pos=\"{}\" quat=\"{}\" rgba=\"{} {} {} {}\"/>",
         attr(&o.name),
-        mj(t.x),
-        mj(t.y),
-        mj(t.z),
-        mj(q.w),
-        mj(q.i),
-        mj(q.j),
-        mj(q.k),
+        v3(&t),
+        quat(&q),
         mj(r),
         mj(g),
         mj(b),
@@ -384,15 +371,10 @@ pub fn mjcf(mjcf: &str, scene: &Scene) -> String {
                 );
                 let _ = writeln!(
                     world,
-                    "    <body name=\"{}\" mocap=\"true\" pos=\"{} {} {}\" quat=\"{} {} {} {}\">\n      {}\n    </body>",
+                    "    <body name=\"{}\" mocap=\"true\" pos=\"{}\" quat=\"{}\">\n      {}\n    </body>",
                     attr(&o.name),
-                    mj(p.translation.x),
-                    mj(p.translation.y),
-                    mj(p.translation.z),
-                    mj(p.rotation.w),
-                    mj(p.rotation.i),
-                    mj(p.rotation.j),
-                    mj(p.rotation.k),
+                    v3(&p.translation.vector),
+                    quat(&p.rotation),
                     geom(o, &Isometry3::identity())
                 );
             }
@@ -400,15 +382,10 @@ pub fn mjcf(mjcf: &str, scene: &Scene) -> String {
                 let p = o.pose;
                 let _ = writeln!(
                     world,
-                    "    <body name=\"{}\" pos=\"{} {} {}\" quat=\"{} {} {} {}\">\n      <freejoint name=\"{}_free\"/>\n      <inertial pos=\"0 0 0\" mass=\"{}\" diaginertia=\"{} {} {}\"/>\n      {}\n    </body>",
+                    "    <body name=\"{}\" pos=\"{}\" quat=\"{}\">\n      <freejoint name=\"{}_free\"/>\n      <inertial pos=\"0 0 0\" mass=\"{}\" diaginertia=\"{} {} {}\"/>\n      {}\n    </body>",
                     attr(&o.name),
-                    mj(p.translation.x),
-                    mj(p.translation.y),
-                    mj(p.translation.z),
-                    mj(p.rotation.w),
-                    mj(p.rotation.i),
-                    mj(p.rotation.j),
-                    mj(p.rotation.k),
+                    v3(&p.translation.vector),
+                    quat(&p.rotation),
                     attr(&o.name),
                     mj(*mass),
                     mj(inertia[0]),

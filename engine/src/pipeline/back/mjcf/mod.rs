@@ -53,16 +53,17 @@ const MAX_INDENT: usize = 32;
 const INDENT: &str = "                                                                ";
 const _: () = assert!(INDENT.len() == 2 * MAX_INDENT);
 
-fn n(x: f64) -> String {
+/// A number as MJCF gets it: the shortest round-trip decimal, `-0` as `0`.
+pub(crate) fn n(x: f64) -> String {
     let x = if x == 0.0 { 0.0 } else { x };
     format!("{x:?}")
 }
 
-fn v3(v: &Vector3<f64>) -> String {
+pub(crate) fn v3(v: &Vector3<f64>) -> String {
     format!("{} {} {}", n(v.x), n(v.y), n(v.z))
 }
 
-fn quat(q: &UnitQuaternion<f64>) -> String {
+pub(crate) fn quat(q: &UnitQuaternion<f64>) -> String {
     format!("{} {} {} {}", n(q.w), n(q.i), n(q.j), n(q.k))
 }
 
@@ -71,7 +72,8 @@ fn comment(s: &str) -> String {
     attr(s).replace("--", "- -")
 }
 
-fn attr(s: &str) -> String {
+/// Text safe inside an XML attribute.
+pub(crate) fn attr(s: &str) -> String {
     s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
 }
 
