@@ -123,7 +123,8 @@ export async function resultsSteps(page, { step, shot, downloads }) {
 
   step('results: refusals at the upload');
   await page.getByRole('tab', { name: 'Results' }).click();
-  await page.locator('.results-list-box table.results, .results-list-box p').first().waitFor();
+  // The list has loaded (not its "Loading…" line): the count below is the stored one.
+  await page.locator('.results-list-box[data-state=listed]').waitFor();
   // Results stored before this tab's steps (the closed-loop simulation's run, issue 28).
   const before = await page.locator('table.results tr[data-result-id]').count();
   const input = page.locator('section.results-upload input[type=file]');

@@ -67,7 +67,7 @@ export async function standaloneSteps(page, { step, shot, downloads, checkLabels
   await page.getByRole('link', { name: 'Results', exact: true }).click();
   await page.getByRole('heading', { name: 'Results', exact: true, level: 1 }).waitFor();
   assert.equal(await page.getByRole('link', { name: 'Results', exact: true }).getAttribute('aria-current'), 'page');
-  await page.locator('.results-list-box table.results, .results-list-box p').first().waitFor();
+  await page.locator('.results-list-box[data-state=listed]').waitFor();
   const before = await page.locator('table.results tr[data-result-id]').count();
 
   step('standalone results: a refusal at the upload');

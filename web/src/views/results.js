@@ -55,6 +55,7 @@ export function renderResults(panel, ctx) {
 
   // ---------------------------------------------------------------- list
   async function load() {
+    delete listBox.dataset.state;
     fill(listBox, h('p', { class: 'muted' }, 'Loading the results…'));
     try {
       results = await api(listUrl);
@@ -67,6 +68,7 @@ export function renderResults(panel, ctx) {
   }
 
   function renderList() {
+    listBox.dataset.state = 'listed'; // the e2e run waits for it (the list loads after the tab opens)
     if (!results.length) {
       fill(listBox, h('p', { class: 'muted' }, 'No results for this version yet.'));
       return;

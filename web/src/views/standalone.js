@@ -74,6 +74,7 @@ export async function renderStandalone(main, initialId) {
   });
 
   function renderList() {
+    listBox.dataset.state = 'listed'; // the e2e run waits for it (the list loads after the page opens)
     if (!results.length) {
       fill(listBox, h('p', { class: 'muted' }, 'No results yet.'));
       return;
