@@ -204,6 +204,34 @@ impl UsedCells {
         let (tile, word, mask) = Self::at(p);
         self.tiles.get(&tile).is_some_and(|t| t[word] & mask != 0)
     }
+
+    /// Whether a cell of the straight grid segment from `a` to `b` (one axis) other than
+    /// `skip1` and `skip2` is used; `work` counts the tiles looked at.
+    fn any_on(&self, a: (i32, i32), b: (i32, i32), skip1: (i32, i32), skip2: (i32, i32), work: &mut u64) -> bool {
+        let horizontal = a.1 == b.1;
+        let (lo, hi, fixed) = if horizontal { (a.0.min(b.0), a.0.max(b.0), a.1) } else { (a.1.min(b.1), a.1.max(b.1), a.0) };
+        let mut v = lo;
+        while v <= hi {
+            let end = (v | 15).min(hi); // the last cell of this tile along the segment
+            *work += 1;
+            let probe = if horizontal { (v, fixed) } else { (fixed, v) };
+            let (tile, _, _) = Self::at(probe);
+            if let Some(t) = self.tiles.get(&tile) {
+                for k in v..=end {
+                    let p = if horizontal { (k, fixed) } else { (fixed, k) };
+                    if p == skip1 || p == skip2 {
+                        continue;
+                    }
+                    let (_, word, mask) = Self::at(p);
+                    if t[word] & mask != 0 {
+                        return true;
+                    }
+                }
+            }
+            v = end + 1;
+        }
+        false
+    }
 }
 
 /// The components of a diagram and their wires.

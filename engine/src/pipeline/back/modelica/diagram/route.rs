@@ -66,16 +66,19 @@ fn stub(((px, py), (dx, dy)): ((f64, f64), (i32, i32)), rect: &Rect) -> Vec<(f64
 
 const DIRS: [(i32, i32); 4] = [(1, 0), (-1, 0), (0, 1), (0, -1)];
 
-/// Per-search state: dense arrays for a small window, hash maps for a large one (a long wire's
-/// window is mostly never visited). The dense arrays are kept per thread between searches and
-/// only the entries a search touched are reset after it (a fresh array per wire cost more in
-/// clearing memory than the search itself on large sheets).
+/// Per-search state: dense arrays for a window of up to [`DENSE_CELLS`] cells, hash maps for a
+/// larger one (a long wire's window is mostly never visited). The dense arrays are kept per
+/// thread between searches and only the entries a search touched are reset after it (a fresh
+/// array per wire cost more in clearing memory than the search itself on large sheets). They
+/// are all zero when clean, so the memory a search never reaches is never written (the
+/// allocator's zeroed pages): a large window costs what the search visits.
 enum Cells {
     Dense(Dense),
     Sparse { state: GridMap<usize, u8>, best: GridMap<usize, u32>, from: GridMap<usize, u32> },
 }
 
-/// Dense search state of [`DENSE_CELLS`] cells, clean (0 / `u32::MAX`) outside `touched_*`.
+/// Dense search state of [`DENSE_CELLS`] cells, zero outside `touched_*`: `best` holds a
+/// state's cost plus one and `from` its predecessor plus one (0: none yet).
 struct Dense {
     state: Vec<u8>,
     best: Vec<u32>,
@@ -88,8 +91,8 @@ impl Dense {
     fn fresh() -> Dense {
         Dense {
             state: vec![0; DENSE_CELLS],
-            best: vec![u32::MAX; DENSE_CELLS * 5],
-            from: vec![u32::MAX; DENSE_CELLS * 5],
+            best: vec![0; DENSE_CELLS * 5],
+            from: vec![0; DENSE_CELLS * 5],
             touched_cells: Vec::new(),
             touched_nodes: Vec::new(),
         }
@@ -107,8 +110,8 @@ impl Drop for Cells {
                 d.state[c as usize] = 0;
             }
             for &n in &d.touched_nodes {
-                d.best[n as usize] = u32::MAX;
-                d.from[n as usize] = u32::MAX;
+                d.best[n as usize] = 0;
+                d.from[n as usize] = 0;
             }
             d.touched_cells.clear();
             d.touched_nodes.clear();
@@ -121,7 +124,9 @@ impl Drop for Cells {
     }
 }
 
-const DENSE_CELLS: usize = 1 << 16;
+/// Cells of the largest dense window: 2^20 (1,024 × 1,024 grid units; 41 MB of address space
+/// per routing thread, of which only the pages a search reaches are ever written).
+const DENSE_CELLS: usize = 1 << 20;
 
 impl Cells {
     fn new(cells: usize) -> Cells {
@@ -145,24 +150,24 @@ impl Cells {
     }
     fn best(&self, n: usize) -> u32 {
         match self {
-            Cells::Dense(d) => d.best[n],
+            Cells::Dense(d) => d.best[n].wrapping_sub(1),
             Cells::Sparse { best, .. } => best.get(&n).copied().unwrap_or(u32::MAX),
         }
     }
     fn from(&self, n: usize) -> u32 {
         match self {
-            Cells::Dense(d) => d.from[n],
+            Cells::Dense(d) => d.from[n].wrapping_sub(1),
             Cells::Sparse { from, .. } => from.get(&n).copied().unwrap_or(u32::MAX),
         }
     }
     fn set(&mut self, n: usize, cost: u32, prev: u32) {
         match self {
             Cells::Dense(d) => {
-                if d.best[n] == u32::MAX && d.from[n] == u32::MAX {
+                if d.best[n] == 0 && d.from[n] == 0 {
                     d.touched_nodes.push(n as u32);
                 }
-                d.best[n] = cost;
-                d.from[n] = prev;
+                d.best[n] = cost.wrapping_add(1);
+                d.from[n] = prev.wrapping_add(1);
             }
             Cells::Sparse { best, from, .. } => {
                 best.insert(n, cost);
@@ -322,6 +327,81 @@ fn fallback(sheet: &mut Sheet, s: P, t: P) -> Option<Vec<P>> {
     None
 }
 
+/// Longest direct route (grid units) [`direct`] tries: its check costs a unit of work per cell,
+/// so this bounds that work per wire.
+const DIRECT_CELLS: i32 = 400;
+
+/// Whether no wire uses a cell of the corner list `pts` other than its two ends (one unit of
+/// work per tile of 16 × 16 cells looked at). Wires from one connector all start at its grid
+/// point, so the ends are shared by every route alike and the search charges them alike.
+fn unused(sheet: &mut Sheet, pts: &[P]) -> bool {
+    let (s, t) = (pts[0], pts[pts.len() - 1]);
+    let mut work = 0;
+    let clear = pts.windows(2).all(|w| !sheet.used.any_on(w[0], w[1], s, t, &mut work));
+    sheet.work += work;
+    clear
+}
+
+/// A route from `s` to `t` that needs no search: a straight line, one elbow, or two elbows (a Z
+/// through a channel near one of the ends), the first that stays out of every keep-out box and
+/// shares no cell with another wire. The straight line and the elbows (the only routes with at
+/// most one bend, as short as any route) are tried first, then the Zs that go only towards
+/// `t` (as short), then those that overshoot (around a component, or out and back where both
+/// connectors face the same way). The elbow first leaves `s` along `first_x` (the stub's
+/// direction). Only for ends at most [`DIRECT_CELLS`] apart.
+fn direct(sheet: &mut Sheet, s: P, t: P, first_x: bool) -> Option<Vec<P>> {
+    if (s.0 - t.0).abs() + (s.1 - t.1).abs() > DIRECT_CELLS {
+        return None;
+    }
+    let ok = |sheet: &mut Sheet, pts: &[P]| clear_path(sheet, pts) && unused(sheet, pts);
+    if s.0 == t.0 || s.1 == t.1 {
+        if ok(sheet, &[s, t]) {
+            return Some(vec![s, t]);
+        }
+    } else {
+        let (h, v) = ([s, (t.0, s.1), t], [s, (s.0, t.1), t]);
+        for pts in if first_x { [h, v] } else { [v, h] } {
+            if ok(sheet, &pts) {
+                return Some(pts.to_vec());
+            }
+        }
+    }
+    let between = |v: i32, a: i32, b: i32| a.min(b) < v && v < a.max(b);
+    let columns = s.1 != t.1;
+    let rows = s.0 != t.0;
+    for inside in [true, false] {
+        if columns || s.0 == t.0 {
+            for c in near(t.0).chain(near(s.0)).filter(|&c| between(c, s.0, t.0) == inside) {
+                let pts = [s, (c, s.1), (c, t.1), t];
+                if ok(sheet, &pts) {
+                    return Some(pts.to_vec());
+                }
+            }
+        }
+        if rows || s.1 == t.1 {
+            for r in near(t.1).chain(near(s.1)).filter(|&r| between(r, s.1, t.1) == inside) {
+                let pts = [s, (s.0, r), (t.0, r), t];
+                if ok(sheet, &pts) {
+                    return Some(pts.to_vec());
+                }
+            }
+        }
+    }
+    None
+}
+
+/// The grid points of a corner list, each once, from its first to its last.
+fn cells_of(pts: &[P]) -> Vec<P> {
+    let mut out = vec![pts[0]];
+    for w in pts.windows(2) {
+        let (a, b) = (w[0], w[1]);
+        let n = (b.0 - a.0).abs() + (b.1 - a.1).abs();
+        let (dx, dy) = ((b.0 - a.0).signum(), (b.1 - a.1).signum());
+        out.extend((1..=n).map(|k| (a.0 + k * dx, a.1 + k * dy)));
+    }
+    out
+}
+
 /// Drops repeated points and the middle one of three collinear points.
 fn simplify(pts: Vec<(f64, f64)>) -> Vec<(f64, f64)> {
     let mut out: Vec<(f64, f64)> = Vec::with_capacity(pts.len());
@@ -355,8 +435,13 @@ pub(super) fn route(sheet: &mut Sheet, a: End, b: End) -> Vec<(f64, f64)> {
     let pool = (SHEET_EXPANSIONS_START + SHEET_EXPANSIONS_PER_WIRE * (sheet.wires.len() as u64 + 1)).saturating_sub(sheet.spent);
     let mut allowance = WIRE_EXPANSIONS.min(pool);
     let distance = u64::from((s.0 - t.0).unsigned_abs() + (s.1 - t.1).unsigned_abs());
-    let mut path = None;
+    // The stub of `a` leaves its connector along x when its first segment is horizontal.
+    let first_x = sa.len() >= 2 && (sa[0].1 - sa[1].1).abs() < 1e-9 && (sa[0].0 - sa[1].0).abs() > 1e-9;
+    let mut path = direct(sheet, s, t, first_x).map(|corners| cells_of(&corners));
     for grow in WINDOWS {
+        if path.is_some() {
+            break;
+        }
         if distance > allowance {
             break;
         }
@@ -370,8 +455,9 @@ pub(super) fn route(sheet: &mut Sheet, a: End, b: End) -> Vec<(f64, f64)> {
         }
     }
     let Some(path) = path else {
+        let r = fallback(sheet, s, t);
         let mut pts = sa;
-        match fallback(sheet, s, t) {
+        match r {
             // Not marked as used: that would cost the wire's length.
             Some(corners) => pts.extend(corners.iter().map(|&(x, y)| (f64::from(x * GRID), f64::from(y * GRID)))),
             // No clear route: a straight orthogonal elbow (the layout test reports it).
