@@ -84,7 +84,58 @@ export function describe(o) {
   const dims = s.kind === 'box' ? s.size.join(' × ') + ' m'
     : s.kind === 'plane' ? 'z = 0 surface'
     : s.kind === 'sphere' ? `r ${s.radius} m`
+    : s.kind === 'mesh' ? `${s.mesh}, ${s.unit || 'm'}`
     : `r ${s.radius} m, length ${s.length} m`;
   const kind = o.kind || 'static';
   return `${s.kind} (${dims}), ${kind}${o.attached_to ? ` on ${o.attached_to}` : ''}`;
+}
+
+/** The units a mesh file may be in, as the API names them (metres per unit in viewer.js). */
+export const MESH_FILE_UNITS = ['m', 'mm', 'cm', 'in'];
+
+/** Mesh files the service reads, by extension. */
+export const MESH_FILE_TYPES = ['.stl', '.obj', '.dae'];
+
+/**
+ * A copy of `o` under a name no object or body has (`box1` → `box2`, `table` → `table1`),
+ * moved by `offset` (m, in its own frame's axes) so that it does not sit inside the original.
+ */
+export function duplicateObject(o, taken, offset = [0, 0, 0]) {
+  const copy = structuredClone(o);
+  copy.name = freshName(o.name.replace(/\d+$/, '') || 'object', taken);
+  copy.position = o.position.map((x, i) => x + offset[i]);
+  return copy;
+}
+
+/**
+ * The mesh name for an uploaded file (the API wants a letter, then letters, digits or _): its
+ * stem with other characters as _, a leading `m` where it would not start with a letter, at
+ * most 60 characters. `null` with a message when the file's type is not one the service reads.
+ */
+export function meshNameFromFile(fileName) {
+  const dot = fileName.lastIndexOf('.');
+  const ext = dot >= 0 ? fileName.slice(dot).toLowerCase() : '';
+  if (!MESH_FILE_TYPES.includes(ext)) return { error: `file: ${fileName} is not an STL, OBJ or COLLADA (.dae) mesh` };
+  let stem = fileName.slice(0, dot).replace(/^.*[\\/]/, '').replace(/[^A-Za-z0-9_]/g, '_');
+  if (!/^[A-Za-z]/.test(stem)) stem = `m${stem}`;
+  return { name: stem.slice(0, 60) };
+}
+
+/** A new static object showing uploaded mesh `mesh` (file units `unit`) at the origin. */
+export function meshObject(mesh, unit, taken) {
+  if (!MESH_FILE_UNITS.includes(unit)) throw new Error(`unknown unit ${unit}`);
+  return { name: freshName(mesh, taken), shape: { kind: 'mesh', mesh, unit }, position: [0, 0, 0], rotation: [[1, 0, 0], [0, 1, 0], [0, 0, 1]] };
+}
+
+/** The object moved by a world translation `d` (m) when its frame is the world (`parent` null). */
+export function translated(o, d) {
+  return { ...o, position: o.position.map((x, i) => x + d[i]) };
+}
+
+/** Interferences at the CAD pose that involve one of the scene's objects (by name). */
+export function sceneInterferences(interferences, objects) {
+  const names = new Set(objects.map((o) => o.name));
+  return (interferences || [])
+    .filter((i) => names.has(i.a) || names.has(i.b))
+    .map((i) => (names.has(i.a) ? { object: i.a, other: i.b, depth: i.depth } : { object: i.b, other: i.a, depth: i.depth }));
 }

@@ -35,3 +35,24 @@ test('typed poses are checked and errors are named', () => {
   assert.deepEqual(byObj.get(-1), ['scene: not JSON']);
   assert.equal(describe({ ...o, kind: 'free' }), 'box (0.2 × 0.2 × 0.2 m), free');
 });
+
+test('duplicates get a free name and an offset; mesh files give names and objects', async () => {
+  const { duplicateObject, meshNameFromFile, meshObject, sceneInterferences } = await import('./scene-data.js');
+  const o = { ...newObject('box', []), color: [1, 0, 0] };
+  const d = duplicateObject(o, ['box1', 'box2'], [0.3, 0, 0]);
+  assert.equal(d.name, 'box3');
+  assert.deepEqual(d.position, [0.3, 0, 0]);
+  assert.deepEqual(d.color, [1, 0, 0]);
+  d.shape.size[0] = 9;
+  assert.equal(o.shape.size[0], 0.2, 'the copy shares nothing with the original');
+  assert.equal(duplicateObject({ ...o, name: 'table' }, ['table']).name, 'table1');
+  assert.deepEqual(meshNameFromFile('C:\\parts\\2-pallet v3.STL'), { name: 'm2_pallet_v3' });
+  assert.deepEqual(meshNameFromFile('fixture.obj'), { name: 'fixture' });
+  assert.match(meshNameFromFile('fixture.wrl').error, /^file: /);
+  const m = meshObject('fixture', 'mm', ['fixture1']);
+  assert.deepEqual([m.name, m.shape], ['fixture2', { kind: 'mesh', mesh: 'fixture', unit: 'mm' }]);
+  assert.throws(() => meshObject('fixture', 'furlong', []));
+  assert.equal(describe(m), 'mesh (fixture, mm), static');
+  const inter = [{ a: 'ARM', b: 'box1', depth: 0.01 }, { a: 'ARM', b: 'BASE', depth: 0.02 }, { a: 'box1', b: 'LINK', depth: 0.03 }];
+  assert.deepEqual(sceneInterferences(inter, [o]), [{ object: 'box1', other: 'ARM', depth: 0.01 }, { object: 'box1', other: 'LINK', depth: 0.03 }]);
+});
