@@ -15,10 +15,31 @@ function drawn(page, name) {
   return page.evaluate((n) => {
     const e = window.cad2moViewer.sceneObjects.get(n);
     if (!e) return null;
-    e.mesh.updateMatrixWorld(true);
+    e.mesh.updateWorldMatrix(true, false); // its body's matrix first (the view updates it when it draws)
     const m = e.mesh.matrixWorld.elements;
     return { origin: [m[12], m[13], m[14]], visible: e.mesh.visible, gizmo: !!window.cad2moViewer.gizmo };
   }, name);
+}
+
+/**
+ * Waits until object `name` is drawn away from (`away`) or back at `at` (by 1 mm, resp. 1e-9 m);
+ * the drawn origin then, or null after 5 s.
+ */
+async function awayFrom(page, name, at, away) {
+  const ok = await page
+    .waitForFunction(
+      ({ n, p, away }) => {
+        const e = window.cad2moViewer.sceneObjects.get(n);
+        e.mesh.updateWorldMatrix(true, false);
+        const m = e.mesh.matrixWorld.elements;
+        const d = Math.hypot(m[12] - p[0], m[13] - p[1], m[14] - p[2]);
+        return (away ? d > 1e-3 : d < 1e-9) && [m[12], m[13], m[14]];
+      },
+      { n: name, p: at, away },
+      { timeout: 5000 },
+    )
+    .catch(() => null);
+  return ok ? ok.jsonValue() : null;
 }
 
 /** The typed position numbers of the selected object. */
@@ -26,6 +47,18 @@ async function typed(page, name) {
   const out = [];
   for (const a of 'xyz') out.push(Number(await page.getByLabel(`${name} position ${a}`, { exact: true }).inputValue()));
   return out;
+}
+
+/** An ASCII STL cube of edge `edge` (file units) centred on its origin: 12 triangles. */
+function cubeStl(edge) {
+  const h = edge / 2;
+  const c = (i) => [i & 1 ? h : -h, i & 2 ? h : -h, i & 4 ? h : -h];
+  const faces = [[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]];
+  let s = 'solid cube\n';
+  for (const f of faces) {
+    for (const t of [[f[0], f[1], f[2]], [f[0], f[2], f[3]]]) s += `facet normal 0 0 0\nouter loop\n${t.map((k) => `vertex ${c(k).join(' ')}\n`).join('')}endloop\nendfacet\n`;
+  }
+  return `${s}endsolid cube\n`;
 }
 
 const near = (a, b, tol) => a.every((x, i) => Math.abs(x - b[i]) <= tol);
@@ -58,7 +91,10 @@ export async function sceneSteps(page, { step, shot }) {
     tc.getHelper().updateMatrixWorld(true);
     // TransformControls' invisible picker for the x arrow of its translate mode.
     const x = tc._gizmo.picker.translate.children.find((o) => o.name === 'X');
-    const p = x.getWorldPosition(v.gizmo.target.position.clone());
+    // Its offset from the gizmo's centre is in its geometry: the middle of its box, in the world.
+    x.updateWorldMatrix(true, false);
+    x.geometry.computeBoundingBox();
+    const p = x.geometry.boundingBox.getCenter(v.gizmo.target.position.clone()).applyMatrix4(x.matrixWorld);
     const origin = v.gizmo.target.position.toArray();
     const a = v.toScreen(origin);
     const b = v.toScreen([origin[0] + 0.05, origin[1], origin[2]]);
@@ -70,6 +106,7 @@ export async function sceneSteps(page, { step, shot }) {
   const sy = canvas.y + handle.at.y;
   await page.mouse.move(sx, sy);
   await page.mouse.move(sx + 1, sy);
+  assert.equal(await page.evaluate(() => window.cad2moViewer.gizmo.controls.axis), 'X', `the pointer is on the gizmo's x handle: ${JSON.stringify(handle)}`);
   await page.mouse.down();
   await page.mouse.move(sx + handle.dir.x * 40, sy + handle.dir.y * 40, { steps: 5 });
   await page.mouse.move(sx + handle.dir.x * 80, sy + handle.dir.y * 80, { steps: 5 });
@@ -134,16 +171,87 @@ export async function sceneSteps(page, { step, shot }) {
   assert.match(await item.textContent(), new RegExp(`^box1 touches ${link.name} depth [\\d.]+ mm$`));
   const stored = await page.evaluate(async (path) => (await fetch(path)).json(), `/api/models/${id}/scene`);
   assert.ok(near(stored.objects[0].position, target, 1e-12), `stored at the typed position: ${JSON.stringify(stored)}`);
+  await item.scrollIntoViewIfNeeded();
   await shot(page, '31-scene-interference');
   await page.getByRole('tab', { name: 'Collision', exact: true }).click();
-  const listed = page.locator('ul.interferences li').filter({ hasText: 'box1' });
+  const listed = page.locator(`ul.interferences li[data-a="box1"][data-b="${link.name}"], ul.interferences li[data-a="${link.name}"][data-b="box1"]`);
   await listed.waitFor();
   assert.match(await listed.textContent(), new RegExp(`(box1 — ${link.name}|${link.name} — box1)`));
+
+  // ---- Duplicate, hide (and undo it), drop onto the surface below, attach to a link.
+  step('scene: duplicate, visibility, drop, attach');
+  await page.getByRole('tab', { name: 'Scene', exact: true }).click();
+  await panel.getByRole('button', { name: 'Duplicate' }).click();
+  await panel.locator('tr[data-object="box2"].selected').waitFor();
+  const copy = await typed(page, 'box2');
+  assert.ok(copy[0] > target[0] + 0.2 && near(copy.slice(1), target.slice(1), 1e-12), `box2 beside box1: ${copy}`);
+  await panel.getByLabel('box2 visible').uncheck();
+  assert.equal((await drawn(page, 'box2')).visible, false, 'box2 hidden');
+  await page.keyboard.press('Control+z');
+  assert.equal((await drawn(page, 'box2')).visible, true, 'Ctrl+Z shows box2 again');
+  // Lifted 1 m above box1, then dropped: it comes down onto what is below it (box1 or a link) and rests there.
+  const up = await page.evaluate(() => window.cad2moViewer.up.toArray());
+  const high = target.map((x, i) => x + up[i]);
+  for (const [k, a] of [...'xyz'].entries()) await page.getByLabel(`box2 position ${a}`, { exact: true }).fill(String(high[k]));
+  await page.getByRole('button', { name: 'Apply pose' }).click();
+  await panel.getByRole('button', { name: 'Drop onto surface' }).click();
+  const dropped = await typed(page, 'box2');
+  const rest = await page.evaluate(() => window.cad2moViewer.dropDistance('box2'));
+  // It moved against "up" only (the arm's gravity is along -y), by more than the gap to box1's top.
+  const fell = dropped.map((x, i) => high[i] - x);
+  const along = fell[0] * up[0] + fell[1] * up[1] + fell[2] * up[2];
+  assert.ok(along > 0.05 && near(fell, up.map((u) => u * along), 1e-9), `box2 came down along gravity: ${high} → ${dropped}`);
+  assert.ok(rest && Math.abs(rest.distance) < 1e-6, `box2 rests on ${rest?.onto?.name}: ${JSON.stringify(rest)}`);
+  // Attached to the link it rests on, it moves with it (its joint's slider) and keeps its place when attached.
+  const before = (await drawn(page, 'box2')).origin;
+  await panel.getByLabel('box2 attached to').selectOption(rest.onto.kind === 'body' ? rest.onto.name : link.name);
+  assert.ok(near((await drawn(page, 'box2')).origin, before, 1e-9), 'attaching keeps its place in the world');
+  await page.getByRole('tab', { name: 'Structure', exact: true }).click();
+  const slider = page.locator('.slider input[type=range]').first();
+  await slider.focus();
+  for (let k = 0; k < 15; k++) await page.keyboard.press('ArrowRight');
+  const moved = await awayFrom(page, 'box2', before, true);
+  assert.ok(moved, 'box2 moves with its body');
+  await page.getByRole('button', { name: 'Reset pose' }).click();
+  assert.ok(await awayFrom(page, 'box2', before, false), 'and back with it');
+  await page.getByRole('tab', { name: 'Scene', exact: true }).click();
+  await shot(page, '32-scene-dropped');
+
+  // ---- Import a mesh (a 50 mm cube, ASCII STL, in mm): uploaded, drawn from the stored STL at
+  // its size in metres; then put on a point picked on the model (a click in the 3D view).
+  step('scene: mesh import, place on a picked point');
+  await panel.getByLabel('Unit of the mesh file').selectOption('mm');
+  await page.locator('#scene-mesh-file').setInputFiles({ name: 'cube.stl', mimeType: 'model/stl', buffer: Buffer.from(cubeStl(50)) });
+  await panel.locator('tr[data-object="cube1"].selected').waitFor();
+  await page.waitForFunction(() => window.cad2moViewer.sceneObjects.get('cube1')?.mesh.material.wireframe === false);
+  const size = await page.evaluate(() => window.cad2moViewer.objectBox('cube1').getSize(window.cad2moViewer.up.clone()).toArray());
+  assert.ok(near(size, [0.05, 0.05, 0.05], 1e-6), `the cube drawn 50 mm wide: ${size}`);
+  // box2 framed in the view (its row selected, Fit selection), then cube1 selected again.
+  await panel.locator('tr[data-object="box2"] button.pick').click();
+  await page.getByRole('button', { name: 'Fit selection' }).click();
+  await panel.locator('tr[data-object="cube1"] button.pick').click();
+  await panel.locator('tr[data-object="cube1"].selected').waitFor();
+  // Aimed at the middle of box2's top (seen from above at an angle).
+  const aim = await page.evaluate(() => {
+    const v = window.cad2moViewer;
+    const b = v.objectBox('box2');
+    const top = b.getCenter(v.up.clone()).toArray();
+    const hUp = Math.abs(b.getSize(v.up.clone()).dot(v.up)) / 2;
+    return v.toScreen(top.map((x, i) => x + v.up.toArray()[i] * hUp));
+  });
+  await panel.getByRole('button', { name: 'Place on picked point' }).click();
+  await page.mouse.click(canvas.x + aim.x, canvas.y + aim.y);
+  await page.waitForFunction(() => window.cad2moViewer.surfacePicked !== undefined && !document.querySelector('#scene-place[aria-pressed=true]'));
+  const placed = await page.evaluate(() => ({ foot: window.cad2moViewer.objectFoot('cube1'), picked: window.cad2moViewer.surfacePicked, rest: window.cad2moViewer.dropDistance('cube1') }));
+  assert.equal(placed.picked.object.name, 'box2', `the click picked box2's top: ${JSON.stringify(placed)}`);
+  assert.ok(near(placed.foot, placed.picked.point, 1e-6), `the cube's underside is at the picked point: ${JSON.stringify(placed)}`);
+  assert.ok(placed.rest && Math.abs(placed.rest.distance) < 1e-6 && placed.rest.onto.name === 'box2', `the cube rests on box2: ${JSON.stringify(placed)}`);
+  await shot(page, '33-scene-mesh-placed');
 
   // ---- Clean up: later steps expect a model without a scene.
   await page.evaluate(async ({ path, headers }) => {
     const r = await fetch(path, { method: 'DELETE', headers });
     if (r.status !== 204) throw new Error(`DELETE ${path}: ${r.status}`);
   }, { path: `/api/models/${id}/scene`, headers: H });
-  return { box: target, dragged, link: link.name, version: Number(v), seconds: (Date.now() - t0) / 1000 };
+  return { box: target, dragged, link: link.name, dropped_onto: rest.onto.name, version: Number(v), seconds: (Date.now() - t0) / 1000 };
 }

@@ -501,6 +501,15 @@ export class Viewer {
     return best;
   }
 
+  /** The pose in body `body`'s CS1 as it is now (the world when null) of a world matrix. */
+  localPoseIn(body, world) {
+    const b = body ? this.bodies.get(body) : null;
+    if (body && !b) return null;
+    if (!b) return poseOf(world);
+    b.group.updateMatrixWorld(true);
+    return poseOf(b.group.matrixWorld.clone().invert().multiply(world));
+  }
+
   /** An object's pose in its own frame after moving it by world translation `d` (m). */
   objectPoseMovedBy(name, d) {
     const world = this.objectWorldPose(name);
@@ -602,10 +611,14 @@ export class Viewer {
     this.invalidate();
   }
 
-  /** The box around the bodies as they are posed now (the model's box when none has a shape). */
+  /**
+   * The box around the bodies as they are posed now and the visible scene objects (planes
+   * aside: they are drawn wider than the model); the model's box when none has a shape.
+   */
   poseBox() {
     const box = new THREE.Box3();
     for (const b of this.bodies.values()) if (b.hasMesh) box.expandByObject(b.group);
+    for (const [name, o] of this.sceneObjects) if (o.spec.shape.kind !== 'plane' && isShown(o.mesh)) box.union(this.objectBox(name));
     return box.isEmpty() ? this.box.clone() : box;
   }
 
@@ -993,7 +1006,9 @@ export class Viewer {
         const { exclude, done } = this.surfacePick;
         this.surfacePick = null;
         const hit = ray.intersectObjects(this.surfaces(), true).find((h) => h.object.userData.pick && h.object.visible && h.object.userData.pick.name !== exclude);
-        done(hit ? { point: hit.point.toArray(), object: hit.object.userData.pick } : null);
+        // Kept for the end-to-end test: what the last surface pick found.
+        this.surfacePicked = hit ? { point: hit.point.toArray(), object: hit.object.userData.pick } : null;
+        done(this.surfacePicked);
         return;
       }
       if (this.measuring) {

@@ -126,7 +126,7 @@ export function renderScene(panel, ctx) {
     h('h2', {}, 'Scene objects'),
     h('p', { class: 'muted' }, 'The machine\'s environment: objects take part in the collision checks and in the package (regenerate it after saving). Select one to place it with the gizmo or by numbers.'),
     h('div', { class: 'scene-add' }, kind, add),
-    h('div', { class: 'scene-import' }, h('label', { for: 'scene-mesh-file' }, 'Import a mesh '), file, ' ', h('label', { for: 'scene-mesh-unit' }, 'in '), unit),
+    h('div', { class: 'scene-import' }, h('label', { for: 'scene-mesh-file' }, 'Import a mesh'), h('label', { for: 'scene-mesh-unit' }, 'in'), unit, file),
     h('div', { class: 'scene-history', role: 'group', 'aria-label': 'Undo and redo' }, undoBtn, ' ', redoBtn),
     list,
     editor,
@@ -217,12 +217,13 @@ export function renderScene(panel, ctx) {
     posInputs = inputs('position');
     rotInputs = inputs('angle about');
     showPose(o);
-    const note = h('div', { class: 'error', role: 'alert' });
+    const note = h('div', { class: 'error', role: 'alert', hidden: true });
     const apply = h('button', { type: 'button' }, 'Apply pose');
     apply.addEventListener('click', () => {
       const r = withPose(objects[k], posInputs.map((i) => i.value), rotInputs.map((i) => i.value));
       if (r.error) {
         fill(note, r.error);
+        note.hidden = false;
         return;
       }
       edit(`set the pose of ${o.name}`, () => (objects[k] = r.object));
@@ -239,12 +240,32 @@ export function renderScene(panel, ctx) {
       gizmo?.setMode(mode);
     });
     const frame = o.attached_to ? `in ${o.attached_to}'s frame` : 'in the world';
+    // Attached to a body (static objects): it keeps its place in the world and moves with the body.
+    const attach = h(
+      'select',
+      { id: 'scene-attach', 'aria-label': `${o.name} attached to`, disabled: (o.kind || 'static') !== 'static' },
+      h('option', { value: '' }, 'the world'),
+      ...(ctx.bodies || []).map((b) => h('option', { value: b, selected: b === o.attached_to }, b)),
+    );
+    attach.addEventListener('change', () => {
+      const world = viewer.objectWorldPose?.(o.name);
+      const to = attach.value || null;
+      let pose = { position: o.position, rotation: o.rotation || IDENTITY };
+      if (world) pose = viewer.localPoseIn?.(to, world) || pose;
+      edit(to ? `attach ${o.name} to ${to}` : `detach ${o.name}`, () => {
+        const next = { ...objects[k], position: pose.position, rotation: pose.rotation };
+        if (to) next.attached_to = to;
+        else delete next.attached_to;
+        objects[k] = next;
+      });
+    });
     fill(
       editor,
       h('h3', {}, `${o.name} `, h('small', { class: 'muted' }, frame)),
       h('div', { class: 'scene-pose' }, h('span', {}, 'Position x, y, z (m) '), ...posInputs),
       h('div', { class: 'scene-pose' }, h('span', {}, 'Angles about x, y, z (°) '), ...rotInputs),
       h('div', { class: 'scene-actions' }, apply, ' ', h('label', { for: 'scene-gizmo-mode' }, 'Gizmo '), modeSel),
+      h('div', { class: 'scene-actions' }, h('label', { for: 'scene-attach' }, 'Attached to'), attach),
       h(
         'div',
         { class: 'scene-actions' },
@@ -288,10 +309,9 @@ export function renderScene(panel, ctx) {
   function syncGizmo() {
     const world = visible && selected && objects[indexOf(selected)]?.visible !== false ? viewer.objectWorldPose?.(selected) : null;
     if (!world) {
-      if (gizmo) {
-        gizmo.dispose();
-        gizmo = null;
-      }
+      // (Another tab's gizmo may have replaced ours: that one stays.)
+      if (gizmo && viewer.gizmo === gizmo) gizmo.dispose();
+      gizmo = null;
       return;
     }
     if (gizmo && viewer.gizmo === gizmo) {
@@ -496,7 +516,7 @@ export function renderScene(panel, ctx) {
       disposed = true;
       document.removeEventListener('keydown', onKey);
       cancelPlacing();
-      gizmo?.dispose();
+      if (gizmo && viewer.gizmo === gizmo) gizmo.dispose();
     },
   };
 }
