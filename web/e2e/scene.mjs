@@ -109,6 +109,9 @@ export async function sceneSteps(page, { step, shot }) {
   assert.equal(await page.evaluate(() => window.cad2moViewer.gizmo.controls.axis), 'X', `the pointer is on the gizmo's x handle: ${JSON.stringify(handle)}`);
   await page.mouse.down();
   await page.mouse.move(sx + handle.dir.x * 40, sy + handle.dir.y * 40, { steps: 5 });
+  // While the button is still down, the typed numbers already follow.
+  const midway = await typed(page, 'box1');
+  assert.ok(midway[0] > 0.005, `the typed x follows the gizmo during the drag: ${midway}`);
   await page.mouse.move(sx + handle.dir.x * 80, sy + handle.dir.y * 80, { steps: 5 });
   await page.mouse.up();
   const dragged = await typed(page, 'box1');

@@ -405,6 +405,7 @@ export function renderScene(panel, ctx) {
       const foot = viewer.objectFoot(name);
       const p = viewer.objectPoseMovedBy(name, hit.point.map((x, i) => x - foot[i]));
       edit(`place ${name} on ${hit.object.name}`, () => (objects[j] = { ...objects[j], position: p.position, rotation: p.rotation }));
+      ctx.say?.(`${name} placed on ${hit.object.name}`, 'info');
     });
     render();
     ctx.say?.(`Click a surface in the 3D view to place ${name} on it`, 'info');
@@ -484,7 +485,7 @@ export function renderScene(panel, ctx) {
     const found = sceneInterferences(data.interferences, objects);
     fill(
       interferences,
-      h('h3', {}, 'Interferences at the CAD pose'),
+      h('h3', {}, 'Interferences of the saved scene at the CAD pose'),
       found.length
         ? h(
             'ul',
