@@ -7,6 +7,7 @@ import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { AnaglyphEffect } from 'three/addons/effects/AnaglyphEffect.js';
 import { TransformControls } from 'three/addons/controls/TransformControls.js';
 import { bodyDeltas, frameMatrix } from './kinematics.js';
+import { poseAt } from '../views/scene-data.js';
 
 /** A scene with the viewers' lights: sky and ground, a sun, a fill light from below behind. */
 export function litScene() {
@@ -401,7 +402,8 @@ export class Viewer {
       const scale = file ? MESH_UNITS[o.shape.unit || 'm'] || 1 : 1;
       const entry = { mesh, parent, spec: o, scale };
       this.sceneObjects.set(o.name, entry);
-      this.placeObject(entry, o.position, o.rotation);
+      const p = poseAt(o, this.sceneTime || 0);
+      this.placeObject(entry, p.position, p.rotation);
     }
     this.paintBodies();
     this.invalidate();
@@ -430,6 +432,22 @@ export class Viewer {
     e.spec = { ...e.spec, position, rotation };
     this.placeObject(e, position, rotation);
     this.invalidate();
+  }
+
+  /**
+   * The time (s) of the motion or result shown: moving objects go where their prescribed motion
+   * puts them then (0: their pose at the start, as the Scene tab edits it).
+   */
+  setSceneTime(t) {
+    this.sceneTime = t;
+    let moved = false;
+    for (const e of this.sceneObjects.values()) {
+      if (e.spec.kind !== 'moving') continue;
+      const p = poseAt(e.spec, t);
+      this.placeObject(e, p.position, p.rotation);
+      moved = true;
+    }
+    if (moved) this.invalidate();
   }
 
   setSceneObjectVisible(name, on) {

@@ -139,3 +139,67 @@ export function sceneInterferences(interferences, objects) {
     .filter((i) => names.has(i.a) || names.has(i.b))
     .map((i) => (names.has(i.a) ? { object: i.a, other: i.b, depth: i.depth } : { object: i.b, other: i.a, depth: i.depth }));
 }
+
+/** Unit quaternion [w, x, y, z] of rotation rows (Shepperd's method). */
+export function quatOf(r) {
+  const tr = r[0][0] + r[1][1] + r[2][2];
+  let q;
+  if (tr > 0) {
+    const s = Math.sqrt(tr + 1) * 2;
+    q = [s / 4, (r[2][1] - r[1][2]) / s, (r[0][2] - r[2][0]) / s, (r[1][0] - r[0][1]) / s];
+  } else if (r[0][0] > r[1][1] && r[0][0] > r[2][2]) {
+    const s = Math.sqrt(1 + r[0][0] - r[1][1] - r[2][2]) * 2;
+    q = [(r[2][1] - r[1][2]) / s, s / 4, (r[0][1] + r[1][0]) / s, (r[0][2] + r[2][0]) / s];
+  } else if (r[1][1] > r[2][2]) {
+    const s = Math.sqrt(1 + r[1][1] - r[0][0] - r[2][2]) * 2;
+    q = [(r[0][2] - r[2][0]) / s, (r[0][1] + r[1][0]) / s, s / 4, (r[1][2] + r[2][1]) / s];
+  } else {
+    const s = Math.sqrt(1 + r[2][2] - r[0][0] - r[1][1]) * 2;
+    q = [(r[1][0] - r[0][1]) / s, (r[0][2] + r[2][0]) / s, (r[1][2] + r[2][1]) / s, s / 4];
+  }
+  const n = Math.hypot(...q);
+  return q.map((x) => x / n);
+}
+
+/** Rotation rows of a unit quaternion [w, x, y, z]. */
+export function rotationOfQuat([w, x, y, z]) {
+  return [
+    [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+    [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+    [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)],
+  ];
+}
+
+/** Spherical interpolation of unit quaternions (the shorter way). */
+function slerp(a, b, s) {
+  let d = a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3];
+  const bb = d < 0 ? b.map((x) => -x) : b;
+  d = Math.abs(d);
+  if (d > 1 - 1e-12) return a.map((x, i) => x + (bb[i] - x) * s);
+  const th = Math.acos(d);
+  const [ka, kb] = [Math.sin((1 - s) * th) / Math.sin(th), Math.sin(s * th) / Math.sin(th)];
+  return a.map((x, i) => ka * x + kb * bb[i]);
+}
+
+/**
+ * An object's pose at time `t` (s), as the collision checks take it (engine `pose_at`): static
+ * and free objects at their pose; moving ones at position + velocity·t, or along their pose
+ * table (linear in position, slerp in rotation between rows, held before the first row and
+ * after the last).
+ */
+export function poseAt(o, t) {
+  const rotation = o.rotation || [[1, 0, 0], [0, 1, 0], [0, 0, 1]];
+  const m = o.kind === 'moving' ? o.motion : null;
+  if (m?.velocity) return { position: o.position.map((x, i) => x + m.velocity[i] * t), rotation };
+  const rows = m?.poses;
+  if (!rows?.length) return { position: o.position, rotation };
+  const rot = (r) => r.rotation || [[1, 0, 0], [0, 1, 0], [0, 0, 1]];
+  if (t <= rows[0].time) return { position: rows[0].position, rotation: rot(rows[0]) };
+  const last = rows[rows.length - 1];
+  if (t >= last.time) return { position: last.position, rotation: rot(last) };
+  let k = 0;
+  while (rows[k + 1].time < t) k += 1;
+  const [a, b] = [rows[k], rows[k + 1]];
+  const s = (t - a.time) / (b.time - a.time);
+  return { position: a.position.map((x, i) => x + (b.position[i] - x) * s), rotation: rotationOfQuat(slerp(quatOf(rot(a)), quatOf(rot(b)), s)) };
+}

@@ -56,3 +56,20 @@ test('duplicates get a free name and an offset; mesh files give names and object
   const inter = [{ a: 'ARM', b: 'box1', depth: 0.01 }, { a: 'ARM', b: 'BASE', depth: 0.02 }, { a: 'box1', b: 'LINK', depth: 0.03 }];
   assert.deepEqual(sceneInterferences(inter, [o]), [{ object: 'box1', other: 'ARM', depth: 0.01 }, { object: 'box1', other: 'LINK', depth: 0.03 }]);
 });
+
+test('moving objects: pose at a time by velocity or along the pose table', async () => {
+  const { poseAt, quatOf, rotationOfQuat } = await import('./scene-data.js');
+  const o = { ...newObject('box', []), position: [1, 0, 0] };
+  assert.deepEqual(poseAt(o, 5).position, [1, 0, 0], 'static objects stay');
+  const conveyor = { ...o, kind: 'moving', motion: { velocity: [0.5, 0, -0.1] } };
+  assert.deepEqual(poseAt(conveyor, 2).position, [2, 0, -0.2]);
+  const z90 = rotationFromAngles([0, 0, 90]);
+  const table = { ...o, kind: 'moving', motion: { poses: [{ time: 1, position: [0, 0, 0] }, { time: 3, position: [2, 4, 0], rotation: z90 }] } };
+  assert.deepEqual(poseAt(table, 0).position, [0, 0, 0], 'held before the first row');
+  assert.deepEqual(poseAt(table, 9).position, [2, 4, 0], 'held after the last');
+  const mid = poseAt(table, 2);
+  assert.deepEqual(mid.position, [1, 2, 0]);
+  anglesFromRotation(mid.rotation).forEach((a, k) => assert.ok(Math.abs(a - [0, 0, 45][k]) < 1e-9, `45° about z halfway: ${anglesFromRotation(mid.rotation)}`));
+  const r = rotationFromAngles([170, -30, 100]);
+  rotationOfQuat(quatOf(r)).forEach((row, i) => row.forEach((x, j) => assert.ok(Math.abs(x - r[i][j]) < 1e-12)));
+});

@@ -86,6 +86,10 @@ export function sceneLayer(modelId, viewer) {
   return layer;
 }
 
+/** `#rrggbb` of an sRGB colour with components in 0..1, and back (rounded to 1/255). */
+const hexOf = (c) => `#${c.map((x) => Math.round(Math.min(1, Math.max(0, x)) * 255).toString(16).padStart(2, '0')).join('')}`;
+const rgbOf = (hex) => [1, 3, 5].map((i) => Math.round((parseInt(hex.slice(i, i + 2), 16) / 255) * 1e4) / 1e4);
+
 /** A number as a typed field shows it: rounded to a micrometre or a micro-degree. */
 const shown = (x) => String(Math.round(x * 1e6) / 1e6);
 
@@ -247,6 +251,9 @@ export function renderScene(panel, ctx) {
       h('option', { value: '' }, 'the world'),
       ...(ctx.bodies || []).map((b) => h('option', { value: b, selected: b === o.attached_to }, b)),
     );
+    // Its colour (sRGB 0..1 in the API; the 3D view's default grey-blue when none).
+    const colour = h('input', { type: 'color', id: 'scene-colour', 'aria-label': `${o.name} colour`, value: hexOf(o.color || [0.62, 0.66, 0.72]) });
+    colour.addEventListener('change', () => edit(`colour ${o.name}`, () => (objects[k] = { ...objects[k], color: rgbOf(colour.value) })));
     attach.addEventListener('change', () => {
       const world = viewer.objectWorldPose?.(o.name);
       const to = attach.value || null;
@@ -265,7 +272,7 @@ export function renderScene(panel, ctx) {
       h('div', { class: 'scene-pose' }, h('span', {}, 'Position x, y, z (m) '), ...posInputs),
       h('div', { class: 'scene-pose' }, h('span', {}, 'Angles about x, y, z (°) '), ...rotInputs),
       h('div', { class: 'scene-actions' }, apply, ' ', h('label', { for: 'scene-gizmo-mode' }, 'Gizmo '), modeSel),
-      h('div', { class: 'scene-actions' }, h('label', { for: 'scene-attach' }, 'Attached to'), attach),
+      h('div', { class: 'scene-actions' }, h('label', { for: 'scene-attach' }, 'Attached to'), attach, h('label', { for: 'scene-colour' }, 'Colour'), colour),
       h(
         'div',
         { class: 'scene-actions' },
@@ -510,6 +517,8 @@ export function renderScene(panel, ctx) {
   return {
     shown(on) {
       visible = on;
+      // Objects are edited at their pose at the start (a moving one's motion starts there).
+      if (on) viewer.setSceneTime?.(0);
       if (!on) cancelPlacing();
       syncGizmo();
     },
