@@ -73,6 +73,8 @@ export async function sceneSteps(page, { step, shot }) {
 
   // ---- Add a box: listed, drawn at the origin, selected with the gizmo on it.
   step('scene: add a box');
+  // The model at its CAD pose (earlier steps moved it): the interferences are checked there.
+  await page.getByRole('button', { name: 'Reset pose' }).click();
   await page.getByRole('tab', { name: 'Scene', exact: true }).click();
   const panel = page.locator('#panel-scene');
   await panel.getByText('No scene objects yet').waitFor();
