@@ -255,8 +255,10 @@ async fn end_to_end_in_chromium() {
         "13f-narrow-collision",
         "28-modelica-diagram",
         "29-mechatronics-diagram",
-        "30-scene-gizmo",
-        "31-scene-interference",
+        "34-scene-gizmo",
+        "35-scene-interference",
+        "36-scene-dropped",
+        "37-scene-mesh-placed",
     ] {
         assert!(shots.join(format!("{png}.png")).exists(), "screenshot {png}");
     }

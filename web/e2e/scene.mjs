@@ -120,7 +120,7 @@ export async function sceneSteps(page, { step, shot }) {
   assert.ok(dragged[0] > 0.01 && Math.abs(dragged[1]) < 1e-9 && Math.abs(dragged[2]) < 1e-9, `the gizmo moved box1 along +x only: ${dragged}`);
   box = await drawn(page, 'box1');
   assert.ok(near(box.origin, dragged, 1e-6), `the typed numbers follow the gizmo: ${dragged} vs drawn ${box.origin}`);
-  await shot(page, '30-scene-gizmo');
+  await shot(page, '34-scene-gizmo');
 
   // ---- Typed numbers: into the middle of a link (its mesh box at the CAD pose).
   step('scene: typed pose');
@@ -176,8 +176,11 @@ export async function sceneSteps(page, { step, shot }) {
   assert.match(await item.textContent(), new RegExp(`^box1 touches ${link.name} depth [\\d.]+ mm$`));
   const stored = await page.evaluate(async (path) => (await fetch(path)).json(), `/api/models/${id}/scene`);
   assert.ok(near(stored.objects[0].position, target, 1e-12), `stored at the typed position: ${JSON.stringify(stored)}`);
-  await item.scrollIntoViewIfNeeded();
-  await shot(page, '31-scene-interference');
+  await item.evaluate((el) => el.scrollIntoView({ block: 'center' }));
+  // In 3D: the box and the link tinted, a line between their witness points.
+  const tinted = await page.evaluate((n) => [window.cad2moViewer.marked.has('box1'), window.cad2moViewer.marked.has(n), window.cad2moViewer.contactLines().length], link.name);
+  assert.ok(tinted[0] && tinted[1] && tinted[2] >= 1, `the interference marked in 3D: ${tinted}`);
+  await shot(page, '35-scene-interference');
   await page.getByRole('tab', { name: 'Collision', exact: true }).click();
   const listed = page.locator(`ul.interferences li[data-a="box1"][data-b="${link.name}"], ul.interferences li[data-a="${link.name}"][data-b="box1"]`);
   await listed.waitFor();
@@ -220,7 +223,7 @@ export async function sceneSteps(page, { step, shot }) {
   await page.getByRole('button', { name: 'Reset pose' }).click();
   assert.ok(await awayFrom(page, 'box2', before, false), 'and back with it');
   await page.getByRole('tab', { name: 'Scene', exact: true }).click();
-  await shot(page, '32-scene-dropped');
+  await shot(page, '36-scene-dropped');
 
   // ---- Import a mesh (a 50 mm cube, ASCII STL, in mm): uploaded, drawn from the stored STL at
   // its size in metres; then put on a point picked on the model (a click in the 3D view).
@@ -251,7 +254,7 @@ export async function sceneSteps(page, { step, shot }) {
   assert.equal(placed.picked.object.name, 'box2', `the click picked box2's top: ${JSON.stringify(placed)}`);
   assert.ok(near(placed.foot, placed.picked.point, 1e-6), `the cube's underside is at the picked point: ${JSON.stringify(placed)}`);
   assert.ok(placed.rest && Math.abs(placed.rest.distance) < 1e-6 && placed.rest.onto.name === 'box2', `the cube rests on box2: ${JSON.stringify(placed)}`);
-  await shot(page, '33-scene-mesh-placed');
+  await shot(page, '37-scene-mesh-placed');
 
   // ---- Clean up: later steps expect a model without a scene.
   await page.evaluate(async ({ path, headers }) => {

@@ -27,6 +27,7 @@ import {
   sceneInterferences,
 } from './scene-data.js';
 import { History, historyKey } from './scene-history.js';
+import { witnessLine } from './collision-data.js';
 
 const IDENTITY = [[1, 0, 0], [0, 1, 0], [0, 0, 1]];
 
@@ -112,6 +113,7 @@ export function renderScene(panel, ctx) {
   let dragBefore = null; // the scene before the running gizmo drag
   let placing = false; // waiting for a click on a surface
   let mode = 'translate';
+  let marked = false; // this tab's interference marks are in the 3D view
   const history = new History();
 
   const list = h('div', { class: 'scene-objects scroll', 'aria-live': 'polite' });
@@ -141,8 +143,16 @@ export function renderScene(panel, ctx) {
   const taken = () => [...objects.map((o) => o.name), ...(ctx.bodies || [])];
   const indexOf = (name) => objects.findIndex((o) => o.name === name);
 
+  /** Takes this tab's interference marks out of the 3D view. */
+  function unmark() {
+    if (!marked) return;
+    marked = false;
+    viewer.setContacts?.([], []);
+  }
+
   /** Marks the scene edited and draws it again (list, editor, 3D, gizmo). */
   function changed() {
+    unmark();
     dirty = true;
     status.textContent = 'Unsaved changes';
     layer.draw(objects);
@@ -490,6 +500,12 @@ export function renderScene(panel, ctx) {
     }
     if (disposed) return;
     const found = sceneInterferences(data.interferences, objects);
+    // In 3D too: the touching objects and bodies tinted, a line between each pair's witness points.
+    const touching = (data.interferences || []).filter((i) => found.some((f) => (f.object === i.a && f.other === i.b) || (f.object === i.b && f.other === i.a)));
+    if (touching.length && visible && !dirty) {
+      viewer.setContacts?.([...new Set(touching.flatMap((i) => [i.a, i.b]))], touching.map(witnessLine));
+      marked = true;
+    }
     fill(
       interferences,
       h('h3', {}, 'Interferences of the saved scene at the CAD pose'),
@@ -519,7 +535,10 @@ export function renderScene(panel, ctx) {
       visible = on;
       // Objects are edited at their pose at the start (a moving one's motion starts there).
       if (on) viewer.setSceneTime?.(0);
-      if (!on) cancelPlacing();
+      if (!on) {
+        cancelPlacing();
+        unmark();
+      }
       syncGizmo();
     },
     dispose() {
