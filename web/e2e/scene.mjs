@@ -1,10 +1,13 @@
 // The Scene tab (issue 29), end to end (part of ui.mjs, on the model view of the uploaded arm):
 // add a box (drawn in the 3D view, selected, with the gizmo), move it with the gizmo by a real
 // mouse drag on the canvas (on the gizmo's x handle, found in the three.js scene and projected
-// to the screen), set a position inside a link by typed numbers, undo twice and redo twice
-// (button, Ctrl+Z, Ctrl+Shift+Z, Ctrl+Y: the typed numbers and the drawn box go back and
-// forth), save, and see the interference of the box with the link named in the Scene tab and
-// the Collision tab. The scene is removed at the end (later steps expect none).
+// to the screen; the typed numbers follow during the drag), set a pose inside a link by typed
+// numbers (the gizmo follows), undo twice and redo twice (button, Ctrl+Z, Ctrl+Shift+Z, Ctrl+Y:
+// the typed numbers and the drawn box go back and forth), save, and see the interference of the
+// box with the link named in the Scene tab and the Collision tab and marked in 3D. Then:
+// duplicate, hide and undo, drop onto the surface below, attach to a link and follow it, import
+// a mesh (STL in mm) and put it on a point picked in 3D, delete and undo. The scene is removed
+// at the end (later steps expect none).
 
 import assert from 'node:assert/strict';
 
@@ -142,12 +145,21 @@ export async function sceneSteps(page, { step, shot }) {
   });
   const target = link.centre.map((x) => Math.round(x * 1e4) / 1e4);
   for (const [k, a] of [...'xyz'].entries()) await page.getByLabel(`box1 position ${a}`, { exact: true }).fill(String(target[k]));
+  // Turned 30° about y (the arm's "up"): its footprint stays level.
+  await page.getByLabel('box1 angle about y', { exact: true }).fill('30');
   await page.getByRole('button', { name: 'Apply pose' }).click();
   await page.waitForFunction((t) => {
     const e = window.cad2moViewer.sceneObjects.get('box1');
     return e && Math.abs(e.mesh.matrix.elements[12] - t[0]) < 1e-9 && Math.abs(e.mesh.matrix.elements[14] - t[2]) < 1e-9;
   }, target);
   assert.ok(near((await drawn(page, 'box1')).origin, target, 1e-9), 'the box is drawn at the typed position');
+  // The gizmo follows the typed numbers: at the position, turned 30° about y.
+  const g = await page.evaluate(() => {
+    const t = window.cad2moViewer.gizmo.target;
+    return { p: t.position.toArray(), q: t.quaternion.toArray() };
+  });
+  const half = (15 * Math.PI) / 180;
+  assert.ok(near(g.p, target, 1e-9) && near(g.q, [0, Math.sin(half), 0, Math.cos(half)], 1e-9), `the gizmo at the typed pose: ${JSON.stringify(g)}`);
 
   // ---- Undo and redo: the numbers and the drawn box go back and forth.
   step('scene: undo and redo');
@@ -255,6 +267,13 @@ export async function sceneSteps(page, { step, shot }) {
   assert.ok(near(placed.foot, placed.picked.point, 1e-6), `the cube's underside is at the picked point: ${JSON.stringify(placed)}`);
   assert.ok(placed.rest && Math.abs(placed.rest.distance) < 1e-6 && placed.rest.onto.name === 'box2', `the cube rests on box2: ${JSON.stringify(placed)}`);
   await shot(page, '37-scene-mesh-placed');
+  // Delete, and undo it.
+  await panel.getByRole('button', { name: 'Delete', exact: true }).click();
+  await panel.locator('tr[data-object="cube1"]').waitFor({ state: 'detached' });
+  assert.equal(await page.evaluate(() => window.cad2moViewer.sceneObjects.has('cube1')), false, 'cube1 gone from the 3D view');
+  await page.getByRole('button', { name: 'Undo', exact: true }).click();
+  await panel.locator('tr[data-object="cube1"]').waitFor();
+  assert.equal(await page.evaluate(() => window.cad2moViewer.sceneObjects.has('cube1')), true, 'cube1 back after undo');
 
   // ---- Clean up: later steps expect a model without a scene.
   await page.evaluate(async ({ path, headers }) => {
