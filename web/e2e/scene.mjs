@@ -3,11 +3,12 @@
 // mouse drag on the canvas (on the gizmo's x handle, found in the three.js scene and projected
 // to the screen; the typed numbers follow during the drag), set a pose inside a link by typed
 // numbers (the gizmo follows), undo twice and redo twice (button, Ctrl+Z, Ctrl+Shift+Z, Ctrl+Y:
-// the typed numbers and the drawn box go back and forth), save, and see the interference of the
-// box with the link named in the Scene tab and the Collision tab and marked in 3D. Then:
-// duplicate, hide and undo, drop onto the surface below, attach to a link and follow it, import
-// a mesh (STL in mm) and put it on a point picked in 3D, delete and undo. The scene is removed
-// at the end (later steps expect none).
+// the typed numbers and the drawn box go back and forth), turn it with the gizmo's rotate ring
+// (a real drag too: the typed angles follow), save, and see the interference of the box with the
+// link named in the Scene tab and the Collision tab and marked in 3D. Then: duplicate, hide and
+// undo, drop onto the surface below, attach to a link and follow it, import a mesh (STL in mm)
+// and put it on a point picked in 3D, delete and undo. The scene is removed at the end (later
+// steps expect none).
 
 import assert from 'node:assert/strict';
 
@@ -179,6 +180,55 @@ export async function sceneSteps(page, { step, shot }) {
   await expectAt(target, 'Ctrl+Y: redo the typed pose');
   assert.equal(await page.getByRole('button', { name: 'Redo', exact: true }).isDisabled(), true, 'nothing more to redo');
 
+  // ---- The gizmo's rotate mode: a real drag along its y ring (the arm's "up") turns the box
+  // about y only; the typed angles follow, the position stays.
+  step('scene: gizmo rotate');
+  await panel.getByLabel('Gizmo', { exact: true }).selectOption('rotate');
+  // Points on the y ring's centre line (its picker: a torus of radius 0.5 in the handle's xz
+  // plane) with the ring's tangent there, on screen; the first the gizmo takes as its y handle.
+  const ringPoints = await page.evaluate(() => {
+    const v = window.cad2moViewer;
+    v.render();
+    const y = v.gizmo.controls._gizmo.picker.rotate.children.find((o) => o.name === 'Y');
+    y.updateWorldMatrix(true, false);
+    y.geometry.computeBoundingBox();
+    const { min, max } = y.geometry.boundingBox;
+    const V = v.gizmo.target.position.constructor;
+    const c = new V((min.x + max.x) / 2, (min.y + max.y) / 2, (min.z + max.z) / 2);
+    const r = (max.x - min.x) / 2 - 0.1;
+    const out = [];
+    for (let k = 0; k < 12; k++) {
+      const a = (k * Math.PI) / 6;
+      const on = new V(c.x + r * Math.cos(a), c.y, c.z + r * Math.sin(a)).applyMatrix4(y.matrixWorld);
+      const ahead = new V(c.x + r * Math.cos(a) - 0.2 * Math.sin(a), c.y, c.z + r * Math.sin(a) + 0.2 * Math.cos(a)).applyMatrix4(y.matrixWorld);
+      const p = v.toScreen(on.toArray());
+      const q = v.toScreen(ahead.toArray());
+      const len = Math.hypot(q.x - p.x, q.y - p.y);
+      if (len > 1e-6) out.push({ at: p, dir: { x: (q.x - p.x) / len, y: (q.y - p.y) / len } });
+    }
+    return out;
+  });
+  let ring = null;
+  const view = await page.locator('.stage canvas').boundingBox(); // where the canvas is now
+  for (const p of ringPoints) {
+    await page.mouse.move(view.x + p.at.x, view.y + p.at.y);
+    if ((await page.evaluate(() => window.cad2moViewer.gizmo.controls.axis)) === 'Y') {
+      ring = p;
+      break;
+    }
+  }
+  assert.ok(ring, `the pointer finds the gizmo's y ring: ${JSON.stringify(ringPoints)}`);
+  const [rx, ry] = [view.x + ring.at.x, view.y + ring.at.y];
+  await page.mouse.down();
+  await page.mouse.move(rx + ring.dir.x * 30, ry + ring.dir.y * 30, { steps: 5 });
+  await page.mouse.move(rx + ring.dir.x * 60, ry + ring.dir.y * 60, { steps: 5 });
+  await page.mouse.up();
+  const turned = [];
+  for (const a of 'xyz') turned.push(Number(await page.getByLabel(`box1 angle about ${a}`, { exact: true }).inputValue()));
+  assert.ok(Math.abs(turned[1] - 30) > 1 && Math.abs(turned[0]) < 1e-6 && Math.abs(turned[2]) < 1e-6, `the ring turned box1 about y only: ${turned}°`);
+  assert.ok(near(await typed(page, 'box1'), target, 1e-9), 'turning keeps the position');
+  await panel.getByLabel('Gizmo', { exact: true }).selectOption('translate');
+
   // ---- Save: the interference of the box with the link is named (Scene and Collision tabs).
   step('scene: save and interference');
   await page.getByRole('button', { name: 'Save scene' }).click();
@@ -260,7 +310,8 @@ export async function sceneSteps(page, { step, shot }) {
     return v.toScreen(top.map((x, i) => x + v.up.toArray()[i] * hUp));
   });
   await panel.getByRole('button', { name: 'Place on picked point' }).click();
-  await page.mouse.click(canvas.x + aim.x, canvas.y + aim.y);
+  const view2 = await page.locator('.stage canvas').boundingBox();
+  await page.mouse.click(view2.x + aim.x, view2.y + aim.y);
   await page.waitForFunction(() => window.cad2moViewer.surfacePicked !== undefined && !document.querySelector('#scene-place[aria-pressed=true]'));
   const placed = await page.evaluate(() => ({ foot: window.cad2moViewer.objectFoot('cube1'), picked: window.cad2moViewer.surfacePicked, rest: window.cad2moViewer.dropDistance('cube1') }));
   assert.equal(placed.picked.object.name, 'box2', `the click picked box2's top: ${JSON.stringify(placed)}`);
@@ -280,5 +331,5 @@ export async function sceneSteps(page, { step, shot }) {
     const r = await fetch(path, { method: 'DELETE', headers });
     if (r.status !== 204) throw new Error(`DELETE ${path}: ${r.status}`);
   }, { path: `/api/models/${id}/scene`, headers: H });
-  return { box: target, dragged, link: link.name, dropped_onto: rest.onto.name, version: Number(v), seconds: (Date.now() - t0) / 1000 };
+  return { box: target, dragged, turned_deg: turned[1], link: link.name, dropped_onto: rest.onto.name, version: Number(v), seconds: (Date.now() - t0) / 1000 };
 }
