@@ -7,10 +7,12 @@
 // (a real drag too: the typed angles follow), save, and see the interference of the box with the
 // link named in the Scene tab and the Collision tab and marked in 3D. Then: duplicate, hide and
 // undo, drop onto the surface below, attach to a link and follow it, import a mesh (STL in mm)
-// and put it on a point picked in 3D, delete and undo. The scene is removed at the end (later
+// and put it on a point picked in 3D, delete and undo, resize by numbers (0 refused, naming the
+// field). The scene is removed at the end (later
 // steps expect none).
 
 import assert from 'node:assert/strict';
+import { rotationFromAngles } from '../src/views/scene-data.js';
 
 const H = { 'X-Requested-With': 'cad2mo' };
 
@@ -225,7 +227,10 @@ export async function sceneSteps(page, { step, shot }) {
   await page.mouse.up();
   const turned = [];
   for (const a of 'xyz') turned.push(Number(await page.getByLabel(`box1 angle about ${a}`, { exact: true }).inputValue()));
-  assert.ok(Math.abs(turned[1] - 30) > 1 && Math.abs(turned[0]) < 1e-6 && Math.abs(turned[2]) < 1e-6, `the ring turned box1 about y only: ${turned}°`);
+  // About y only: y stays y (the typed angles may read e.g. 180, -85.8, 180 for a turn past 90°).
+  const R = rotationFromAngles(turned);
+  const about = (Math.atan2(R[0][2], R[0][0]) * 180) / Math.PI;
+  assert.ok(R[1][1] > 1 - 1e-9 && Math.abs(about - 30) > 1, `the ring turned box1 about y only (to ${about}°): ${turned}°`);
   assert.ok(near(await typed(page, 'box1'), target, 1e-9), 'turning keeps the position');
   await panel.getByLabel('Gizmo', { exact: true }).selectOption('translate');
 
@@ -326,10 +331,20 @@ export async function sceneSteps(page, { step, shot }) {
   await panel.locator('tr[data-object="cube1"]').waitFor();
   assert.equal(await page.evaluate(() => window.cad2moViewer.sceneObjects.has('cube1')), true, 'cube1 back after undo');
 
+  // ---- A primitive's size by numbers: refused out of range (naming the field), then applied.
+  await panel.locator('tr[data-object="box2"] button.pick').click();
+  await page.getByLabel('box2 size x', { exact: true }).fill('0');
+  await panel.getByRole('button', { name: 'Apply size' }).click();
+  await panel.getByText(/^shape\.size\[0\]: "0" must be a length/).waitFor();
+  await page.getByLabel('box2 size x', { exact: true }).fill('0.3');
+  await panel.getByRole('button', { name: 'Apply size' }).click();
+  await page.waitForFunction(() => window.cad2moViewer.sceneObjects.get('box2')?.mesh.geometry.parameters?.width === 0.3);
+  assert.match(await panel.locator('tr[data-object="box2"]').textContent(), /box \(0\.3 × 0\.2 × 0\.2 m\)/);
+
   // ---- Clean up: later steps expect a model without a scene.
   await page.evaluate(async ({ path, headers }) => {
     const r = await fetch(path, { method: 'DELETE', headers });
     if (r.status !== 204) throw new Error(`DELETE ${path}: ${r.status}`);
   }, { path: `/api/models/${id}/scene`, headers: H });
-  return { box: target, dragged, turned_deg: turned[1], link: link.name, dropped_onto: rest.onto.name, version: Number(v), seconds: (Date.now() - t0) / 1000 };
+  return { box: target, dragged, turned_deg: about, link: link.name, dropped_onto: rest.onto.name, version: Number(v), seconds: (Date.now() - t0) / 1000 };
 }

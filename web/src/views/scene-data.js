@@ -203,3 +203,31 @@ export function poseAt(o, t) {
   const s = (t - a.time) / (b.time - a.time);
   return { position: a.position.map((x, i) => x + (b.position[i] - x) * s), rotation: rotationOfQuat(slerp(quatOf(rot(a)), quatOf(rot(b)), s)) };
 }
+
+/** Sizes the API accepts (m): 0.1 mm .. 1 km, as engine/src/scene checks them. */
+export const SIZE_RANGE = [1e-4, 1000];
+
+/**
+ * The editable dimensions of a primitive: [{field, label, value}] in metres (`size[0]`, `radius`,
+ * `length`, ...); none for a plane or a mesh (a mesh's unit scales its file).
+ */
+export function shapeFields(s) {
+  if (s.kind === 'box') return ['x', 'y', 'z'].map((a, i) => ({ field: `size[${i}]`, label: `size ${a}`, value: s.size[i] }));
+  if (s.kind === 'sphere') return [{ field: 'radius', label: 'radius', value: s.radius }];
+  if (s.kind === 'cylinder' || s.kind === 'capsule') return [{ field: 'radius', label: 'radius', value: s.radius }, { field: 'length', label: 'length', value: s.length }];
+  return [];
+}
+
+/** The object with new dimensions from typed numbers (shapeFields' order), or an error naming the field. */
+export function withShape(o, texts) {
+  const fields = shapeFields(o.shape);
+  const shape = structuredClone(o.shape);
+  for (const [k, f] of fields.entries()) {
+    const t = String(texts[k] ?? '').trim();
+    const v = t === '' ? NaN : Number(t);
+    if (!Number.isFinite(v) || v < SIZE_RANGE[0] || v > SIZE_RANGE[1]) return { error: `shape.${f.field}: "${t}" must be a length from ${SIZE_RANGE[0]} to ${SIZE_RANGE[1]} m` };
+    if (f.field.startsWith('size')) shape.size[k] = v;
+    else shape[f.field] = v;
+  }
+  return { object: { ...o, shape } };
+}

@@ -73,3 +73,17 @@ test('moving objects: pose at a time by velocity or along the pose table', async
   const r = rotationFromAngles([170, -30, 100]);
   rotationOfQuat(quatOf(r)).forEach((row, i) => row.forEach((x, j) => assert.ok(Math.abs(x - r[i][j]) < 1e-12)));
 });
+
+test('primitive dimensions by typed numbers, checked like the API', async () => {
+  const { shapeFields, withShape } = await import('./scene-data.js');
+  const box = newObject('box', []);
+  assert.deepEqual(shapeFields(box.shape).map((f) => f.field), ['size[0]', 'size[1]', 'size[2]']);
+  assert.deepEqual(withShape(box, ['1', '0.5', '0.04']).object.shape.size, [1, 0.5, 0.04]);
+  assert.deepEqual(box.shape.size, [0.2, 0.2, 0.2], 'the original is unchanged');
+  assert.match(withShape(box, ['1', '0', '1']).error, /^shape\.size\[1\]: "0" must be/);
+  assert.match(withShape(box, ['1', '1', '2000']).error, /^shape\.size\[2\]/);
+  const cyl = newObject('cylinder', []);
+  assert.deepEqual(withShape(cyl, ['0.05', '0.3']).object.shape, { kind: 'cylinder', radius: 0.05, length: 0.3 });
+  assert.match(withShape(cyl, ['x', '0.3']).error, /^shape\.radius/);
+  assert.deepEqual(shapeFields(newObject('plane', []).shape), []);
+});

@@ -25,6 +25,8 @@ import {
   meshNameFromFile,
   meshObject,
   sceneInterferences,
+  shapeFields,
+  withShape,
 } from './scene-data.js';
 import { History, historyKey } from './scene-history.js';
 import { witnessLine } from './collision-data.js';
@@ -243,6 +245,22 @@ export function renderScene(panel, ctx) {
       edit(`set the pose of ${o.name}`, () => (objects[k] = r.object));
     });
     for (const i of [...posInputs, ...rotInputs]) i.addEventListener('keydown', (e) => e.key === 'Enter' && apply.click());
+    // The primitive's dimensions (m): applied on their own (an undoable edit).
+    const dims = shapeFields(o.shape).map((f) => h('input', { type: 'text', inputmode: 'decimal', size: 7, value: shown(f.value), 'aria-label': `${o.name} ${f.label}` }));
+    const resize = h('button', { type: 'button' }, 'Apply size');
+    resize.addEventListener('click', () => {
+      const r = withShape(objects[k], dims.map((i) => i.value));
+      if (r.error) {
+        fill(note, r.error);
+        note.hidden = false;
+        return;
+      }
+      edit(`resize ${o.name}`, () => (objects[k] = r.object));
+    });
+    for (const i of dims) i.addEventListener('keydown', (e) => e.key === 'Enter' && resize.click());
+    const sizeRow = dims.length
+      ? h('div', { class: 'scene-pose' }, h('span', {}, `${shapeFields(o.shape).map((f) => f.label).join(', ')} (m)`), ...dims, resize)
+      : null;
     const modeSel = h(
       'select',
       { id: 'scene-gizmo-mode', 'aria-label': 'Gizmo' },
@@ -282,6 +300,7 @@ export function renderScene(panel, ctx) {
       h('div', { class: 'scene-pose' }, h('span', {}, 'Position x, y, z (m) '), ...posInputs),
       h('div', { class: 'scene-pose' }, h('span', {}, 'Angles about x, y, z (°) '), ...rotInputs),
       h('div', { class: 'scene-actions' }, apply, ' ', h('label', { for: 'scene-gizmo-mode' }, 'Gizmo '), modeSel),
+      sizeRow,
       h('div', { class: 'scene-actions' }, h('label', { for: 'scene-attach' }, 'Attached to'), attach, h('label', { for: 'scene-colour' }, 'Colour'), colour),
       h(
         'div',
