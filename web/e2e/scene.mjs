@@ -8,8 +8,7 @@
 // link named in the Scene tab and the Collision tab and marked in 3D. Then: duplicate, hide and
 // undo, drop onto the surface below, attach to a link and follow it, import a mesh (STL in mm)
 // and put it on a point picked in 3D, delete and undo, resize by numbers (0 refused, naming the
-// field). The scene is removed at the end (later
-// steps expect none).
+// field). The scene is removed at the end (later steps expect none).
 
 import assert from 'node:assert/strict';
 import { rotationFromAngles } from '../src/views/scene-data.js';
