@@ -306,6 +306,20 @@ async fn mesh_objects_are_uploaded_collide_and_ship() {
     json_of(upload("tetra", "tetra.obj", obj).await.expect("put"), 200).await;
     let list = json_of(app.get(&format!("/api/models/{id}/scene/meshes")).await, 200).await;
     assert_eq!(list, json!({"meshes": [{"name": "block", "triangles": 12}, {"name": "tetra", "triangles": 4}]}));
+    // Each mesh's file as stored (the 3D view draws it): a binary STL of its triangles, in the
+    // file's own units (the cube's corners at ±50 mm); an unknown mesh is a 404.
+    let r = app.get(&format!("/api/models/{id}/scene/meshes/block")).await;
+    assert_eq!(r.status().as_u16(), 200);
+    assert_eq!(r.headers()["content-type"], "model/stl");
+    let stl = r.bytes().await.expect("stl");
+    assert_eq!(stl.len(), 84 + 12 * 50, "a binary STL of 12 triangles");
+    assert_eq!(u32::from_le_bytes(stl[80..84].try_into().expect("count")), 12);
+    let coords: Vec<f32> = (0..12)
+        .flat_map(|k| (0..9).map(move |i| 84 + 50 * k + 12 + 4 * i))
+        .map(|o| f32::from_le_bytes(stl[o..o + 4].try_into().expect("f32")))
+        .collect();
+    assert!(coords.iter().all(|c| c.abs() == 50.0), "the cube's corners at ±50 (mm, as uploaded): {coords:?}");
+    assert_eq!(app.get(&format!("/api/models/{id}/scene/meshes/nope")).await.status().as_u16(), 404);
 
     // Bad uploads: 422 naming the file or the name; too big: 413.
     let p =

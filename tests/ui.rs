@@ -235,6 +235,12 @@ async fn end_to_end_in_chromium() {
     println!("diagram: {diagram}");
     assert!(diagram["components"].as_u64().is_some_and(|n| n >= 6), "components drawn: {diagram}");
     assert!(diagram["drives"].as_u64().is_some_and(|n| n >= 1), "the saved drive in the Mechatronics diagram: {diagram}");
+    // The Scene tab (web/e2e/scene.mjs): a box moved by a real gizmo drag, placed by numbers in a
+    // link, undone and redone, saved, and its interference with the link named.
+    let scene = &result["scene"];
+    println!("scene: {scene}");
+    assert!(scene["dragged"][0].as_f64().is_some_and(|x| x > 0.0), "the gizmo moved the box along +x: {scene}");
+    assert!(scene["link"].as_str().is_some_and(|l| !l.is_empty()), "the box's interference names a link: {scene}");
     for png in [
         "1-models-empty",
         "2-model-3d",
@@ -249,6 +255,10 @@ async fn end_to_end_in_chromium() {
         "13f-narrow-collision",
         "28-modelica-diagram",
         "29-mechatronics-diagram",
+        "34-scene-gizmo",
+        "35-scene-interference",
+        "36-scene-dropped",
+        "37-scene-mesh-placed",
     ] {
         assert!(shots.join(format!("{png}.png")).exists(), "screenshot {png}");
     }

@@ -23,6 +23,7 @@ import { resultsSteps } from './results.mjs';
 import { liveSteps } from './live.mjs';
 import { collisionSteps } from './collision.mjs';
 import { diagramSteps } from './diagram.mjs';
+import { sceneSteps } from './scene.mjs';
 import { standaloneSteps } from './standalone.mjs';
 
 const url = process.env.CAD2MO_URL;
@@ -199,6 +200,10 @@ try {
   const diagram = await diagramSteps(page, { step, shot });
   await checkLabels(page, 'the diagram tab');
 
+  // ---- The Scene (issue 29): a box placed with the gizmo and by numbers, undo/redo, its interference.
+  const scene = await sceneSteps(page, { step, shot });
+  await checkLabels(page, 'the scene tab');
+
   // ---- The Results page: a result of any Modelica model, its Dymola visual shapes in 3D.
   const standalone = await standaloneSteps(page, { step, shot, downloads, checkLabels });
 
@@ -371,7 +376,7 @@ try {
   assert.ok(overflowLib <= 1, `the library is ${overflowLib}px wider than a narrow window`);
 
   assert.deepEqual(consoleErrors, [], 'the page logged errors');
-  console.log(JSON.stringify({ joint, package: packagePath, library: libraryPath, motion, results, live, collision, diagram, standalone }));
+  console.log(JSON.stringify({ joint, package: packagePath, library: libraryPath, motion, results, live, collision, diagram, scene, standalone }));
 } finally {
   await browser.close();
 }

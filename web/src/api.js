@@ -62,7 +62,11 @@ async function failure(resp) {
 /** JSON request. `body` is sent as JSON unless it is FormData or a string. */
 export async function api(path, { method = 'GET', body, accept } = {}) {
   const init = { method, headers: headers(accept ? { Accept: accept } : {}) };
-  if (body instanceof FormData || typeof body === 'string') {
+  if (body instanceof ArrayBuffer || ArrayBuffer.isView(body) || (typeof Blob !== 'undefined' && body instanceof Blob)) {
+    // A file as it is (e.g. a scene mesh).
+    init.body = body;
+    init.headers['Content-Type'] = 'application/octet-stream';
+  } else if (body instanceof FormData || typeof body === 'string') {
     init.body = body;
     if (typeof body === 'string') init.headers['Content-Type'] = 'application/xml';
   } else if (body !== undefined) {
@@ -79,7 +83,7 @@ export async function api(path, { method = 'GET', body, accept } = {}) {
   if (resp.status === 204) return null;
   const type = resp.headers.get('Content-Type') || '';
   if (type.includes('json')) return resp.json();
-  if (type.includes('zip') || type.includes('octet-stream')) return resp.arrayBuffer();
+  if (type.includes('zip') || type.includes('octet-stream') || type.includes('stl')) return resp.arrayBuffer();
   return resp.text();
 }
 

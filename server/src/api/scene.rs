@@ -3,7 +3,8 @@
 
 use axum::body::Bytes;
 use axum::extract::{DefaultBodyLimit, State};
-use axum::http::StatusCode;
+use axum::http::{header, StatusCode};
+use axum::response::IntoResponse;
 use axum::routing::{get, put};
 use axum::{Json, Router};
 
@@ -29,7 +30,7 @@ pub fn router() -> Router<AppState> {
         .merge(
             Router::new()
                 .route("/api/models/{model_id}/scene/meshes", get(list_meshes))
-                .route("/api/models/{model_id}/scene/meshes/{name}", put(put_mesh))
+                .route("/api/models/{model_id}/scene/meshes/{name}", put(put_mesh).get(get_mesh))
                 .layer(DefaultBodyLimit::max(MAX_MESH_BYTES + 1)),
         )
 }
@@ -89,6 +90,27 @@ async fn put_mesh(
     .await?;
     store::scene::put_mesh(&state.store, &model_id, &name, &hash, triangles as i64).await?;
     Ok((StatusCode::OK, Json(MeshView { name, triangles: triangles as i64 })))
+}
+
+/// One uploaded mesh's file as stored: a binary STL in the file's own units (the 3D view draws
+/// mesh objects from it). An unknown mesh: 404.
+async fn get_mesh(State(state): State<AppState>, Path((model_id, name)): Path<(String, String)>) -> Result<impl IntoResponse, ApiError> {
+    model_exists(&state, &model_id).await?;
+    let row = store::scene::meshes(&state.store, &model_id)
+        .await?
+        .into_iter()
+        .find(|r| r.name == name)
+        .ok_or_else(|| ApiError::NotFound(format!("scene mesh {name}")))?;
+    let blobs = state.blobs.clone();
+    let hash = row.blob_sha256.clone();
+    let bytes = blocking(move || {
+        blobs
+            .get(&hash)
+            .map_err(|e| ApiError::Internal(e.into()))?
+            .ok_or_else(|| ApiError::Internal(anyhow::anyhow!("the blob {hash} of a scene mesh is missing")))
+    })
+    .await?;
+    Ok(([(header::CONTENT_TYPE, "model/stl".to_string()), (header::ETAG, format!("\"{}\"", row.blob_sha256))], bytes))
 }
 
 async fn get_scene(State(state): State<AppState>, Path(model_id): Path<String>) -> Result<Json<SceneSpec>, ApiError> {

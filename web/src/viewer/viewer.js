@@ -7,6 +7,7 @@ import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { AnaglyphEffect } from 'three/addons/effects/AnaglyphEffect.js';
 import { TransformControls } from 'three/addons/controls/TransformControls.js';
 import { bodyDeltas, frameMatrix } from './kinematics.js';
+import { poseAt } from '../views/scene-data.js';
 
 /** A scene with the viewers' lights: sky and ground, a sun, a fill light from below behind. */
 export function litScene() {
@@ -26,6 +27,9 @@ const HIGHLIGHT = new THREE.Color(0xff9900);
 const CONTACT = new THREE.Color(0xe01010); // bodies of a colliding pair
 const CONTACT_LINE = 0x00b050; // closest-point lines (green: unlike the red tint of the pair)
 const JOINT_COLORS = { revolute: 0xd03030, prismatic: 0x7030c0 };
+const SCENE_COLOR = [0.62, 0.66, 0.72]; // scene objects without a colour of their own
+/** Metres per unit of a scene mesh's file (the object's `unit`). */
+export const MESH_UNITS = { m: 1, mm: 0.001, cm: 0.01, in: 0.0254 };
 
 export class Viewer {
   /**
@@ -57,6 +61,11 @@ export class Viewer {
     this.bodies = new Map(); // name → {group, cad: Matrix4, materials}
     this.joints = new Map(); // name → {group, arrows}
     this.build(meshes);
+    // Scene objects (issue 29): world objects under this group, attached ones in their body's group.
+    this.sceneRoot = new THREE.Group();
+    this.sceneRoot.name = 'scene-objects';
+    this.scene.add(this.sceneRoot);
+    this.sceneObjects = new Map(); // name → {mesh, parent, spec, scale}
 
     this.camera = new THREE.PerspectiveCamera(40, 1, this.size / 1000, this.size * 100);
     this.camera.up.copy(this.up);
@@ -352,6 +361,202 @@ export class Viewer {
     this.gizmo?.dispose();
   }
 
+  // ------------------------------------------------------------ scene objects (issue 29)
+
+  /**
+   * Draws the scene's objects (the API's form: shape, position, rotation rows, colour, visible,
+   * attached_to) with the model: primitives as three.js geometries in their own frames
+   * (cylinders and capsules along z, a plane as its z = 0 surface), mesh objects from
+   * `meshes` (mesh name → geometry in the file's units, scaled by the object's unit; a mesh not
+   * loaded yet is drawn as a small wire box). A world object sits in the world; an attached one
+   * in its body's frame_a (CS1), so it moves with the body whatever poses it (joint values,
+   * results, the live view). Replaces what was drawn before.
+   */
+  setSceneObjects(objects, meshes = new Map()) {
+    this.clearSceneObjects();
+    for (const o of objects) {
+      const own = sceneGeometry(o.shape, this.size);
+      const file = o.shape.kind === 'mesh' ? meshes.get(o.shape.mesh) : null;
+      const geom = own || file || new THREE.BoxGeometry(this.size * 0.05, this.size * 0.05, this.size * 0.05);
+      const color = srgb(o.color || SCENE_COLOR);
+      const plane = o.shape.kind === 'plane';
+      const mat = new THREE.MeshStandardMaterial({
+        color,
+        roughness: 0.7,
+        metalness: 0.05,
+        side: THREE.DoubleSide,
+        wireframe: !own && !file,
+        transparent: plane,
+        opacity: plane ? 0.55 : 1,
+        depthWrite: !plane,
+      });
+      const mesh = new THREE.Mesh(geom, mat);
+      mesh.name = `scene:${o.name}`;
+      mesh.matrixAutoUpdate = false;
+      mesh.userData.pick = { kind: 'object', name: o.name };
+      mesh.userData.ownGeometry = !file;
+      mesh.visible = o.visible !== false;
+      const body = o.attached_to ? this.bodies.get(o.attached_to) : null;
+      const parent = body ? body.group : this.sceneRoot;
+      parent.add(mesh);
+      const scale = file ? MESH_UNITS[o.shape.unit || 'm'] || 1 : 1;
+      const entry = { mesh, parent, spec: o, scale };
+      this.sceneObjects.set(o.name, entry);
+      const p = poseAt(o, this.sceneTime || 0);
+      this.placeObject(entry, p.position, p.rotation);
+    }
+    this.paintBodies();
+    this.invalidate();
+  }
+
+  clearSceneObjects() {
+    for (const o of this.sceneObjects.values()) {
+      o.parent.remove(o.mesh);
+      if (o.mesh.userData.ownGeometry) o.mesh.geometry.dispose();
+      o.mesh.material.dispose();
+    }
+    this.sceneObjects.clear();
+    this.invalidate();
+  }
+
+  placeObject(entry, position, rotation) {
+    entry.mesh.matrix.copy(poseMatrix(position, rotation));
+    if (entry.scale !== 1) entry.mesh.matrix.scale(new THREE.Vector3(entry.scale, entry.scale, entry.scale));
+    entry.mesh.matrixWorldNeedsUpdate = true;
+  }
+
+  /** Moves one drawn object to a new pose (its own frame: world, or its body's CS1). */
+  setSceneObjectPose(name, position, rotation) {
+    const e = this.sceneObjects.get(name);
+    if (!e) return;
+    e.spec = { ...e.spec, position, rotation };
+    this.placeObject(e, position, rotation);
+    this.invalidate();
+  }
+
+  /**
+   * The time (s) of the motion or result shown: moving objects go where their prescribed motion
+   * puts them then (0: their pose at the start, as the Scene tab edits it).
+   */
+  setSceneTime(t) {
+    this.sceneTime = t;
+    let moved = false;
+    for (const e of this.sceneObjects.values()) {
+      if (e.spec.kind !== 'moving') continue;
+      const p = poseAt(e.spec, t);
+      this.placeObject(e, p.position, p.rotation);
+      moved = true;
+    }
+    if (moved) this.invalidate();
+  }
+
+  setSceneObjectVisible(name, on) {
+    const e = this.sceneObjects.get(name);
+    if (e) e.mesh.visible = !!on;
+    this.invalidate();
+  }
+
+  /** The world matrix of the frame an object's pose is given in (identity, or its body's CS1 now). */
+  objectParentMatrix(name) {
+    const e = this.sceneObjects.get(name);
+    if (!e || e.parent === this.sceneRoot) return new THREE.Matrix4();
+    e.parent.updateMatrixWorld(true);
+    return e.parent.matrixWorld.clone();
+  }
+
+  /** An object's frame in the world now (unscaled): parent · pose. */
+  objectWorldPose(name) {
+    const e = this.sceneObjects.get(name);
+    if (!e) return null;
+    return this.objectParentMatrix(name).multiply(poseMatrix(e.spec.position, e.spec.rotation));
+  }
+
+  /** The pose (position, rotation rows) in an object's own frame of a world matrix. */
+  objectLocalPose(name, world) {
+    const local = this.objectParentMatrix(name).invert().multiply(world);
+    return poseOf(local);
+  }
+
+  /** Meshes that can be picked as surfaces: the bodies' and the visible scene objects'. */
+  surfaces() {
+    return [this.sceneRoot, ...[...this.bodies.values()].map((b) => b.group)];
+  }
+
+  /** The world box of a drawn object (its mesh's vertices). */
+  objectBox(name) {
+    const e = this.sceneObjects.get(name);
+    if (!e) return null;
+    e.parent.updateMatrixWorld(true);
+    e.mesh.updateMatrixWorld(true);
+    return new THREE.Box3().setFromObject(e.mesh, true);
+  }
+
+  /**
+   * Snap by dropping: how far object `name` can move against "up" (along gravity) before it
+   * rests on the first surface below it (a body or another visible object), from rays cast down
+   * from its footprint (the centre and corners of its box at its lowest level). Returns
+   * {distance, onto} or null when nothing is below.
+   */
+  dropDistance(name) {
+    const box = this.objectBox(name);
+    if (!box) return null;
+    const up = this.up;
+    const cs = corners(box);
+    const low = Math.min(...cs.map((c) => c.dot(up)));
+    const centre = box.getCenter(new THREE.Vector3());
+    const lift = this.size * 1e-4; // start just above the footprint, so a resting object finds its support at ≈ 0
+    const starts = [centre, ...cs].map((c) => c.clone().addScaledVector(up, low - c.dot(up) + lift));
+    const ray = new THREE.Raycaster();
+    const down = up.clone().negate();
+    let best = null;
+    for (const p of starts) {
+      ray.set(p, down);
+      const hit = ray
+        .intersectObjects(this.surfaces(), true)
+        .find((h) => h.object.userData.pick && h.object.visible && h.object.userData.pick.name !== name && isShown(h.object));
+      if (hit && (!best || hit.distance < best.distance)) best = { distance: hit.distance - lift, onto: hit.object.userData.pick };
+    }
+    return best;
+  }
+
+  /** The pose in body `body`'s CS1 as it is now (the world when null) of a world matrix. */
+  localPoseIn(body, world) {
+    const b = body ? this.bodies.get(body) : null;
+    if (body && !b) return null;
+    if (!b) return poseOf(world);
+    b.group.updateMatrixWorld(true);
+    return poseOf(b.group.matrixWorld.clone().invert().multiply(world));
+  }
+
+  /** An object's pose in its own frame after moving it by world translation `d` (m). */
+  objectPoseMovedBy(name, d) {
+    const world = this.objectWorldPose(name);
+    if (!world) return null;
+    return this.objectLocalPose(name, new THREE.Matrix4().makeTranslation(d[0], d[1], d[2]).multiply(world));
+  }
+
+  /** The middle of an object's underside (its box's centre at its lowest level along "up"), world. */
+  objectFoot(name) {
+    const box = this.objectBox(name);
+    if (!box) return null;
+    const low = Math.min(...corners(box).map((c) => c.dot(this.up)));
+    const centre = box.getCenter(new THREE.Vector3());
+    return centre.addScaledVector(this.up, low - centre.dot(this.up)).toArray();
+  }
+
+  /**
+   * The next click on the 3D view picks a surface point instead of selecting: `done({point,
+   * object})` with the world point and what it lies on ({kind, name}), or done(null) for a miss.
+   * Object `exclude` (the one being placed) is not a surface. `cancelSurfacePick()` stops waiting.
+   */
+  pickSurface(exclude, done) {
+    this.surfacePick = { exclude, done };
+  }
+
+  cancelSurfacePick() {
+    this.surfacePick = null;
+  }
+
   /** Where a world point is on the canvas, in CSS pixels (for tests and overlays). */
   toScreen(p) {
     const v = new THREE.Vector3(...p).project(this.camera);
@@ -400,6 +605,7 @@ export class Viewer {
     const box = new THREE.Box3();
     if (sel?.kind === 'body' && this.bodies.has(sel.name)) box.expandByObject(this.bodies.get(sel.name).group);
     else if (sel?.kind === 'joint' && this.joints.has(sel.name)) for (const a of this.joints.get(sel.name).arrows) box.expandByObject(a);
+    else if (sel?.kind === 'object' && this.sceneObjects.has(sel.name)) box.union(this.objectBox(sel.name));
     const dir = this.camera.position.clone().sub(this.controls.target).normalize();
     this.lookAlong(dir, box.isEmpty() ? this.poseBox() : box);
     return !box.isEmpty();
@@ -423,10 +629,14 @@ export class Viewer {
     this.invalidate();
   }
 
-  /** The box around the bodies as they are posed now (the model's box when none has a shape). */
+  /**
+   * The box around the bodies as they are posed now and the visible scene objects (planes
+   * aside: they are drawn wider than the model); the model's box when none has a shape.
+   */
   poseBox() {
     const box = new THREE.Box3();
     for (const b of this.bodies.values()) if (b.hasMesh) box.expandByObject(b.group);
+    for (const [name, o] of this.sceneObjects) if (o.spec.shape.kind !== 'plane' && isShown(o.mesh)) box.union(this.objectBox(name));
     return box.isEmpty() ? this.box.clone() : box;
   }
 
@@ -642,9 +852,15 @@ export class Viewer {
     this.invalidate();
   }
 
-  /** Emissive tint: the selected body orange, bodies of a marked (colliding) pair red. */
+  /** Emissive tint: the selected body or scene object orange, those of a marked (colliding) pair red. */
   paintBodies() {
     const sel = this.selected;
+    for (const [name, o] of this.sceneObjects || []) {
+      const m = o.mesh.material;
+      if (sel?.kind === 'object' && sel.name === name) m.emissive.copy(HIGHLIGHT).multiplyScalar(0.45);
+      else if (this.marked?.has(name)) m.emissive.copy(CONTACT).multiplyScalar(0.55);
+      else m.emissive.setRGB(0, 0, 0);
+    }
     for (const [name, b] of this.bodies) {
       const on = sel?.kind === 'body' && sel.name === name;
       const marked = this.marked?.has(name);
@@ -661,7 +877,7 @@ export class Viewer {
    * drawn as segments with a dot at each end, over the meshes (no depth test). Empty clears.
    */
   setContacts(names = [], lines = []) {
-    this.marked = new Set(names.filter((n) => this.bodies.has(n)));
+    this.marked = new Set(names.filter((n) => this.bodies.has(n) || this.sceneObjects.has(n)));
     this.paintBodies();
     if (this.contactGroup) {
       this.scene.remove(this.contactGroup);
@@ -795,6 +1011,8 @@ export class Viewer {
     canvas.addEventListener('pointerdown', (e) => (down = { x: e.clientX, y: e.clientY }));
     canvas.addEventListener('pointerup', (e) => {
       if (!down || Math.hypot(e.clientX - down.x, e.clientY - down.y) > 4) return;
+      // A click on the gizmo's handles is the gizmo's, not a pick.
+      if (this.gizmo?.controls.axis) return;
       const r = canvas.getBoundingClientRect();
       // The viewport under the pointer, and the point in its own coordinates.
       const cx = e.clientX - r.left;
@@ -802,12 +1020,21 @@ export class Viewer {
       const vp = this.viewports().find((v) => cx >= v.x && cx < v.x + v.w && cy >= v.y && cy < v.y + v.h) || this.viewports()[0];
       const p = new THREE.Vector2(((cx - vp.x) / vp.w) * 2 - 1, -((cy - vp.y) / vp.h) * 2 + 1);
       ray.setFromCamera(p, vp.camera);
+      if (this.surfacePick) {
+        const { exclude, done } = this.surfacePick;
+        this.surfacePick = null;
+        const hit = ray.intersectObjects(this.surfaces(), true).find((h) => h.object.userData.pick && h.object.visible && h.object.userData.pick.name !== exclude);
+        // Kept for the end-to-end test: what the last surface pick found.
+        this.surfacePicked = hit ? { point: hit.point.toArray(), object: hit.object.userData.pick } : null;
+        done(this.surfacePicked);
+        return;
+      }
       if (this.measuring) {
-        const hit = ray.intersectObjects([...this.bodies.values()].map((b) => b.group), true).find((h) => h.object.userData.pick && h.object.visible);
+        const hit = ray.intersectObjects(this.surfaces(), true).find((h) => h.object.userData.pick && h.object.visible);
         this.measurePoint(hit ? hit.point : null);
         return;
       }
-      const targets = [];
+      const targets = [this.sceneRoot];
       for (const [, b] of this.bodies) targets.push(b.group);
       for (const [, j] of this.joints) targets.push(j.group);
       const hits = ray.intersectObjects(targets, true).filter((h) => h.object.userData.pick && h.object.visible);
@@ -851,4 +1078,48 @@ export function niceStep(x) {
 /** A CAD colour (sRGB components in 0..1, as in the report and the Modelica shapes). */
 function srgb([r, g, b]) {
   return new THREE.Color().setRGB(r, g, b, THREE.SRGBColorSpace);
+}
+
+/** Whether an object and all its parents are visible. */
+function isShown(o) {
+  for (let x = o; x; x = x.parent) if (!x.visible) return false;
+  return true;
+}
+
+/** A matrix from a position and rotation rows (frame → parent). */
+export function poseMatrix(p, r = [[1, 0, 0], [0, 1, 0], [0, 0, 1]]) {
+  return new THREE.Matrix4().set(r[0][0], r[0][1], r[0][2], p[0], r[1][0], r[1][1], r[1][2], p[1], r[2][0], r[2][1], r[2][2], p[2], 0, 0, 0, 1);
+}
+
+/** Position and rotation rows of a rigid matrix (its rotation made orthonormal: the gizmo's quaternion). */
+export function poseOf(m) {
+  const position = new THREE.Vector3();
+  const q = new THREE.Quaternion();
+  m.decompose(position, q, new THREE.Vector3());
+  const e = new THREE.Matrix4().makeRotationFromQuaternion(q.normalize()).elements;
+  return { position: position.toArray(), rotation: [0, 1, 2].map((i) => [e[i], e[i + 4], e[i + 8]]) };
+}
+
+/**
+ * A primitive's geometry in its own frame (SI): box edges x, y, z; cylinder and capsule along z,
+ * centred; a sphere; a plane as a square of its z = 0 surface, a few model sizes wide (the
+ * collision checks take it 200 m wide). Null for a mesh shape.
+ */
+function sceneGeometry(s, modelSize) {
+  switch (s.kind) {
+    case 'box':
+      return new THREE.BoxGeometry(...s.size);
+    case 'cylinder':
+      return new THREE.CylinderGeometry(s.radius, s.radius, s.length, 32).rotateX(Math.PI / 2);
+    case 'sphere':
+      return new THREE.SphereGeometry(s.radius, 32, 16);
+    case 'capsule':
+      return new THREE.CapsuleGeometry(s.radius, s.length, 8, 24).rotateX(Math.PI / 2);
+    case 'plane': {
+      const w = niceStep(modelSize * 4);
+      return new THREE.PlaneGeometry(w, w);
+    }
+    default:
+      return null;
+  }
 }

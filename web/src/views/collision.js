@@ -212,6 +212,10 @@ export function renderCollision(panel, ctx) {
 
   load();
   return {
+    /** The scene changed (saved in the Scene tab): its objects' interferences are checked again. */
+    reload() {
+      if (data && !disposed) reloadInterferences();
+    },
     shown(on) {
       // The 3D marks belong to this tab.
       if (!on && chosen) clear();

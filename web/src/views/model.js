@@ -13,7 +13,7 @@ import { renderMotion } from './motion.js';
 import { renderResults } from './results.js';
 import { renderLive } from './live.js';
 import { renderCollision } from './collision.js';
-import { renderScene } from './scene.js';
+import { renderScene, sceneLayer } from './scene.js';
 import { renderDiagram } from './diagram.js';
 import { getUnits, setUnits, onUnits, toDisplay, fromDisplay, symbolOf, parseNumber } from '../units.js';
 import { sizeLimits, loadSize, saveSize, clamp, abbreviate } from '../layout-data.js';
@@ -142,6 +142,10 @@ export async function renderViewer(main, id, v, initialTab) {
   }
   performance.measure('cad2mo:scene', { start: tv });
   window.cad2moViewer = viewer; // for the end-to-end tests and the console
+  // The scene's objects (issue 29) in the 3D view, whichever tab is shown; the Scene tab edits them.
+  const layer = sceneLayer(id, viewer);
+  const sceneLoaded = layer.load();
+  sceneLoaded.catch((e) => say(`The scene could not be loaded: ${e.message}`, 'error'));
   anaglyph.addEventListener('change', () => viewer.setAnaglyph(anaglyph.checked));
   layoutSel.addEventListener('change', () => viewer.setLayout?.(layoutSel.value));
   const showMeasure = (m) => {
@@ -220,10 +224,28 @@ export async function renderViewer(main, id, v, initialTab) {
     { id: 'results', label: 'Results', render: (p) => (results = renderResults(p, { modelId: id, versionNumber: v, viewer, say, select, stage: resultsStage })) },
     { id: 'live', label: 'Live', render: (p) => (live = renderLive(p, { modelId: id, versionNumber: v, viewer, say, stage: liveStage })) },
     { id: 'collision', label: 'Collision', render: (p) => (collision = renderCollision(p, { modelId: id, versionNumber: v, viewer, say, resetPose })) },
-    { id: 'scene', label: 'Scene', render: (p) => renderScene(p, { modelId: id, bodies: (report.bodies || []).map((b) => b.modelica_name), say }) },
+    {
+      id: 'scene',
+      label: 'Scene',
+      render: (p) =>
+        (scene = renderScene(p, {
+          modelId: id,
+          versionNumber: v,
+          bodies: (report.bodies || []).map((b) => b.modelica_name),
+          viewer,
+          layer,
+          loaded: sceneLoaded,
+          select,
+          onSelect: (f) => listeners.add(f),
+          say,
+          // The Collision tab's interferences depend on the scene.
+          sceneSaved: () => collision?.reload?.(),
+        })),
+    },
     { id: 'diagram', label: 'Modelica diagram', render: (p) => renderDiagram(p, { version, report, select, stage: diagramStage }) },
   ];
   let collision = null;
+  let scene = null;
   let motion = null;
   let results = null;
   let live = null;
@@ -253,6 +275,8 @@ export async function renderViewer(main, id, v, initialTab) {
       if (tab !== 'live') live?.shown(false);
       // Collision marks in 3D belong to the tab that drew them.
       if (tab !== 'collision') collision?.shown(false);
+      // The scene's gizmo belongs to its tab.
+      scene?.shown(tab === 'scene');
       if (tab !== 'motion') motion?.shown?.(false);
       if (tab === 'results') results?.shown(true);
       if (tab === 'live') live?.shown(true);
@@ -503,6 +527,7 @@ export async function renderViewer(main, id, v, initialTab) {
     results?.dispose();
     live?.dispose();
     collision?.dispose();
+    scene?.dispose();
     viewer.dispose();
     if (window.cad2moViewer === viewer) delete window.cad2moViewer;
   };
@@ -546,7 +571,7 @@ function splitter({ orientation, label, get, set, save, sign }) {
 /** Stands in for the 3D view where WebGL is missing. */
 function blindViewer() {
   const noop = () => {};
-  return { size: 1, q: new Map(), select: noop, setCoordinate: noop, setCoordinates: noop, setBodyPoses: noop, frameNow: () => null, showGizmo: () => null, hideGizmo: noop, resetPose: noop, resetView: noop, setAnaglyph: noop, setGrid: noop, setContacts: noop, contactLines: () => [], dispose: noop };
+  return { size: 1, q: new Map(), select: noop, setCoordinate: noop, setCoordinates: noop, setBodyPoses: noop, frameNow: () => null, showGizmo: () => null, hideGizmo: noop, setSceneObjects: noop, objectWorldPose: () => null, resetPose: noop, resetView: noop, setAnaglyph: noop, setGrid: noop, setContacts: noop, contactLines: () => [], dispose: noop };
 }
 
 const mm = (v) => v.map((x) => num(x * 1000)).join(', ');

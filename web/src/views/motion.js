@@ -803,6 +803,8 @@ export function renderMotion(panel, ctx) {
       ctx.setJoints(simulatedAt(time));
       ctx.setGhost?.(sampleAt(traj, time));
     } else ctx.setJoints(sampleAt(traj, time));
+    // Moving scene objects follow the same clock.
+    viewer.setSceneTime?.(time);
     for (const p of simPlots) p.setTime(time);
     if (scrub) scrub.value = String(time);
     if (clock) clock.textContent = `${time.toFixed(2)} s / ${num(traj.duration)} s`;

@@ -36,6 +36,7 @@ export function renderResults(panel, ctx) {
   const player = resultPlayer(playerBox, {
     onTime(t) {
       if (shown && stream?.bodies.length) viewer.setBodyPoses(stream.bodies, posesAt(stream, t, poseBuf));
+      if (shown) viewer.setSceneTime?.(t);
       plots.update();
     },
   });

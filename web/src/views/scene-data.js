@@ -84,7 +84,150 @@ export function describe(o) {
   const dims = s.kind === 'box' ? s.size.join(' × ') + ' m'
     : s.kind === 'plane' ? 'z = 0 surface'
     : s.kind === 'sphere' ? `r ${s.radius} m`
+    : s.kind === 'mesh' ? `${s.mesh}, ${s.unit || 'm'}`
     : `r ${s.radius} m, length ${s.length} m`;
   const kind = o.kind || 'static';
   return `${s.kind} (${dims}), ${kind}${o.attached_to ? ` on ${o.attached_to}` : ''}`;
+}
+
+/** The units a mesh file may be in, as the API names them (metres per unit in viewer.js). */
+export const MESH_FILE_UNITS = ['m', 'mm', 'cm', 'in'];
+
+/** Mesh files the service reads, by extension. */
+export const MESH_FILE_TYPES = ['.stl', '.obj', '.dae'];
+
+/**
+ * A copy of `o` under a name no object or body has (`box1` → `box2`, `table` → `table1`),
+ * moved by `offset` (m, in its own frame's axes) so that it does not sit inside the original.
+ */
+export function duplicateObject(o, taken, offset = [0, 0, 0]) {
+  const copy = structuredClone(o);
+  copy.name = freshName(o.name.replace(/\d+$/, '') || 'object', taken);
+  copy.position = o.position.map((x, i) => x + offset[i]);
+  return copy;
+}
+
+/**
+ * The mesh name for an uploaded file (the API wants a letter, then letters, digits or _): its
+ * stem with other characters as _, a leading `m` where it would not start with a letter, at
+ * most 60 characters. `null` with a message when the file's type is not one the service reads.
+ */
+export function meshNameFromFile(fileName) {
+  const dot = fileName.lastIndexOf('.');
+  const ext = dot >= 0 ? fileName.slice(dot).toLowerCase() : '';
+  if (!MESH_FILE_TYPES.includes(ext)) return { error: `file: ${fileName} is not an STL, OBJ or COLLADA (.dae) mesh` };
+  let stem = fileName.slice(0, dot).replace(/^.*[\\/]/, '').replace(/[^A-Za-z0-9_]/g, '_');
+  if (!/^[A-Za-z]/.test(stem)) stem = `m${stem}`;
+  return { name: stem.slice(0, 60) };
+}
+
+/** A new static object showing uploaded mesh `mesh` (file units `unit`) at the origin. */
+export function meshObject(mesh, unit, taken) {
+  if (!MESH_FILE_UNITS.includes(unit)) throw new Error(`unknown unit ${unit}`);
+  return { name: freshName(mesh, taken), shape: { kind: 'mesh', mesh, unit }, position: [0, 0, 0], rotation: [[1, 0, 0], [0, 1, 0], [0, 0, 1]] };
+}
+
+/** The object moved by a world translation `d` (m) when its frame is the world (`parent` null). */
+export function translated(o, d) {
+  return { ...o, position: o.position.map((x, i) => x + d[i]) };
+}
+
+/** Interferences at the CAD pose that involve one of the scene's objects (by name). */
+export function sceneInterferences(interferences, objects) {
+  const names = new Set(objects.map((o) => o.name));
+  return (interferences || [])
+    .filter((i) => names.has(i.a) || names.has(i.b))
+    .map((i) => (names.has(i.a) ? { object: i.a, other: i.b, depth: i.depth } : { object: i.b, other: i.a, depth: i.depth }));
+}
+
+/** Unit quaternion [w, x, y, z] of rotation rows (Shepperd's method). */
+export function quatOf(r) {
+  const tr = r[0][0] + r[1][1] + r[2][2];
+  let q;
+  if (tr > 0) {
+    const s = Math.sqrt(tr + 1) * 2;
+    q = [s / 4, (r[2][1] - r[1][2]) / s, (r[0][2] - r[2][0]) / s, (r[1][0] - r[0][1]) / s];
+  } else if (r[0][0] > r[1][1] && r[0][0] > r[2][2]) {
+    const s = Math.sqrt(1 + r[0][0] - r[1][1] - r[2][2]) * 2;
+    q = [(r[2][1] - r[1][2]) / s, s / 4, (r[0][1] + r[1][0]) / s, (r[0][2] + r[2][0]) / s];
+  } else if (r[1][1] > r[2][2]) {
+    const s = Math.sqrt(1 + r[1][1] - r[0][0] - r[2][2]) * 2;
+    q = [(r[0][2] - r[2][0]) / s, (r[0][1] + r[1][0]) / s, s / 4, (r[1][2] + r[2][1]) / s];
+  } else {
+    const s = Math.sqrt(1 + r[2][2] - r[0][0] - r[1][1]) * 2;
+    q = [(r[1][0] - r[0][1]) / s, (r[0][2] + r[2][0]) / s, (r[1][2] + r[2][1]) / s, s / 4];
+  }
+  const n = Math.hypot(...q);
+  return q.map((x) => x / n);
+}
+
+/** Rotation rows of a unit quaternion [w, x, y, z]. */
+export function rotationOfQuat([w, x, y, z]) {
+  return [
+    [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+    [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+    [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)],
+  ];
+}
+
+/** Spherical interpolation of unit quaternions (the shorter way). */
+function slerp(a, b, s) {
+  let d = a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3];
+  const bb = d < 0 ? b.map((x) => -x) : b;
+  d = Math.abs(d);
+  if (d > 1 - 1e-12) return a.map((x, i) => x + (bb[i] - x) * s);
+  const th = Math.acos(d);
+  const [ka, kb] = [Math.sin((1 - s) * th) / Math.sin(th), Math.sin(s * th) / Math.sin(th)];
+  return a.map((x, i) => ka * x + kb * bb[i]);
+}
+
+/**
+ * An object's pose at time `t` (s), as the collision checks take it (engine `pose_at`): static
+ * and free objects at their pose; moving ones at position + velocity·t, or along their pose
+ * table (linear in position, slerp in rotation between rows, held before the first row and
+ * after the last).
+ */
+export function poseAt(o, t) {
+  const rotation = o.rotation || [[1, 0, 0], [0, 1, 0], [0, 0, 1]];
+  const m = o.kind === 'moving' ? o.motion : null;
+  if (m?.velocity) return { position: o.position.map((x, i) => x + m.velocity[i] * t), rotation };
+  const rows = m?.poses;
+  if (!rows?.length) return { position: o.position, rotation };
+  const rot = (r) => r.rotation || [[1, 0, 0], [0, 1, 0], [0, 0, 1]];
+  if (t <= rows[0].time) return { position: rows[0].position, rotation: rot(rows[0]) };
+  const last = rows[rows.length - 1];
+  if (t >= last.time) return { position: last.position, rotation: rot(last) };
+  let k = 0;
+  while (rows[k + 1].time < t) k += 1;
+  const [a, b] = [rows[k], rows[k + 1]];
+  const s = (t - a.time) / (b.time - a.time);
+  return { position: a.position.map((x, i) => x + (b.position[i] - x) * s), rotation: rotationOfQuat(slerp(quatOf(rot(a)), quatOf(rot(b)), s)) };
+}
+
+/** Sizes the API accepts (m): 0.1 mm .. 1 km, as engine/src/scene checks them. */
+export const SIZE_RANGE = [1e-4, 1000];
+
+/**
+ * The editable dimensions of a primitive: [{field, label, value}] in metres (`size[0]`, `radius`,
+ * `length`, ...); none for a plane or a mesh (a mesh's unit scales its file).
+ */
+export function shapeFields(s) {
+  if (s.kind === 'box') return ['x', 'y', 'z'].map((a, i) => ({ field: `size[${i}]`, label: `size ${a}`, value: s.size[i] }));
+  if (s.kind === 'sphere') return [{ field: 'radius', label: 'radius', value: s.radius }];
+  if (s.kind === 'cylinder' || s.kind === 'capsule') return [{ field: 'radius', label: 'radius', value: s.radius }, { field: 'length', label: 'length', value: s.length }];
+  return [];
+}
+
+/** The object with new dimensions from typed numbers (shapeFields' order), or an error naming the field. */
+export function withShape(o, texts) {
+  const fields = shapeFields(o.shape);
+  const shape = structuredClone(o.shape);
+  for (const [k, f] of fields.entries()) {
+    const t = String(texts[k] ?? '').trim();
+    const v = t === '' ? NaN : Number(t);
+    if (!Number.isFinite(v) || v < SIZE_RANGE[0] || v > SIZE_RANGE[1]) return { error: `shape.${f.field}: "${t}" must be a length from ${SIZE_RANGE[0]} to ${SIZE_RANGE[1]} m` };
+    if (f.field.startsWith('size')) shape.size[k] = v;
+    else shape[f.field] = v;
+  }
+  return { object: { ...o, shape } };
 }

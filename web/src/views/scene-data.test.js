@@ -35,3 +35,55 @@ test('typed poses are checked and errors are named', () => {
   assert.deepEqual(byObj.get(-1), ['scene: not JSON']);
   assert.equal(describe({ ...o, kind: 'free' }), 'box (0.2 × 0.2 × 0.2 m), free');
 });
+
+test('duplicates get a free name and an offset; mesh files give names and objects', async () => {
+  const { duplicateObject, meshNameFromFile, meshObject, sceneInterferences } = await import('./scene-data.js');
+  const o = { ...newObject('box', []), color: [1, 0, 0] };
+  const d = duplicateObject(o, ['box1', 'box2'], [0.3, 0, 0]);
+  assert.equal(d.name, 'box3');
+  assert.deepEqual(d.position, [0.3, 0, 0]);
+  assert.deepEqual(d.color, [1, 0, 0]);
+  d.shape.size[0] = 9;
+  assert.equal(o.shape.size[0], 0.2, 'the copy shares nothing with the original');
+  assert.equal(duplicateObject({ ...o, name: 'table' }, ['table']).name, 'table1');
+  assert.deepEqual(meshNameFromFile('C:\\parts\\2-pallet v3.STL'), { name: 'm2_pallet_v3' });
+  assert.deepEqual(meshNameFromFile('fixture.obj'), { name: 'fixture' });
+  assert.match(meshNameFromFile('fixture.wrl').error, /^file: /);
+  const m = meshObject('fixture', 'mm', ['fixture1']);
+  assert.deepEqual([m.name, m.shape], ['fixture2', { kind: 'mesh', mesh: 'fixture', unit: 'mm' }]);
+  assert.throws(() => meshObject('fixture', 'furlong', []));
+  assert.equal(describe(m), 'mesh (fixture, mm), static');
+  const inter = [{ a: 'ARM', b: 'box1', depth: 0.01 }, { a: 'ARM', b: 'BASE', depth: 0.02 }, { a: 'box1', b: 'LINK', depth: 0.03 }];
+  assert.deepEqual(sceneInterferences(inter, [o]), [{ object: 'box1', other: 'ARM', depth: 0.01 }, { object: 'box1', other: 'LINK', depth: 0.03 }]);
+});
+
+test('moving objects: pose at a time by velocity or along the pose table', async () => {
+  const { poseAt, quatOf, rotationOfQuat } = await import('./scene-data.js');
+  const o = { ...newObject('box', []), position: [1, 0, 0] };
+  assert.deepEqual(poseAt(o, 5).position, [1, 0, 0], 'static objects stay');
+  const conveyor = { ...o, kind: 'moving', motion: { velocity: [0.5, 0, -0.1] } };
+  assert.deepEqual(poseAt(conveyor, 2).position, [2, 0, -0.2]);
+  const z90 = rotationFromAngles([0, 0, 90]);
+  const table = { ...o, kind: 'moving', motion: { poses: [{ time: 1, position: [0, 0, 0] }, { time: 3, position: [2, 4, 0], rotation: z90 }] } };
+  assert.deepEqual(poseAt(table, 0).position, [0, 0, 0], 'held before the first row');
+  assert.deepEqual(poseAt(table, 9).position, [2, 4, 0], 'held after the last');
+  const mid = poseAt(table, 2);
+  assert.deepEqual(mid.position, [1, 2, 0]);
+  anglesFromRotation(mid.rotation).forEach((a, k) => assert.ok(Math.abs(a - [0, 0, 45][k]) < 1e-9, `45° about z halfway: ${anglesFromRotation(mid.rotation)}`));
+  const r = rotationFromAngles([170, -30, 100]);
+  rotationOfQuat(quatOf(r)).forEach((row, i) => row.forEach((x, j) => assert.ok(Math.abs(x - r[i][j]) < 1e-12)));
+});
+
+test('primitive dimensions by typed numbers, checked like the API', async () => {
+  const { shapeFields, withShape } = await import('./scene-data.js');
+  const box = newObject('box', []);
+  assert.deepEqual(shapeFields(box.shape).map((f) => f.field), ['size[0]', 'size[1]', 'size[2]']);
+  assert.deepEqual(withShape(box, ['1', '0.5', '0.04']).object.shape.size, [1, 0.5, 0.04]);
+  assert.deepEqual(box.shape.size, [0.2, 0.2, 0.2], 'the original is unchanged');
+  assert.match(withShape(box, ['1', '0', '1']).error, /^shape\.size\[1\]: "0" must be/);
+  assert.match(withShape(box, ['1', '1', '2000']).error, /^shape\.size\[2\]/);
+  const cyl = newObject('cylinder', []);
+  assert.deepEqual(withShape(cyl, ['0.05', '0.3']).object.shape, { kind: 'cylinder', radius: 0.05, length: 0.3 });
+  assert.match(withShape(cyl, ['x', '0.3']).error, /^shape\.radius/);
+  assert.deepEqual(shapeFields(newObject('plane', []).shape), []);
+});
