@@ -165,12 +165,12 @@ try {
   await ratio.fill('100');
   const eta = editor.getByLabel('eta');
   await eta.fill('0');
-  const [refusal] = await Promise.all([
+  const [driveRefusal] = await Promise.all([
     page.waitForResponse((r) => r.request().method() === 'PUT' && r.url().includes(`/drives/${encodeURIComponent(joint)}`)),
     editor.getByRole('button', { name: 'Save drive' }).click(),
   ]);
-  assert.equal(refusal.status(), 422, 'the service refused the drive');
-  const problem = await refusal.json();
+  assert.equal(driveRefusal.status(), 422, 'the service refused the drive');
+  const problem = await driveRefusal.json();
   const etaError = (problem.errors || []).find((e) => /(^|\.)eta$/.test(e.field));
   assert.ok(etaError, `the 422 names the eta field: ${JSON.stringify(problem)}`);
   await editor.getByText(/eta of .* = 0\.0 must be in \(0, 1\]/).first().waitFor();
@@ -183,8 +183,9 @@ try {
       fromServer: msg.classList.contains('from-server'),
       invalid: input.getAttribute('aria-invalid'),
       describedBy: (input.getAttribute('aria-describedby') || '').split(' ').includes(msg.id),
-      // Under the input, in its column, close by (the hint line between them at most).
-      below: b.top >= a.bottom - 1 && b.top - a.bottom < 60 && b.left < a.right && b.right > a.left && b.height > 0,
+      // Under the input, in its column, close by (its hint between them at most).
+      below: b.top >= a.bottom - 1 && b.top - a.bottom <= 8 + (f.querySelector('small')?.getBoundingClientRect().height || 0) && b.left < a.right && b.right > a.left && b.height > 0,
+      boxes: [a, b].map((r) => [r.left, r.top, r.right, r.bottom].map(Math.round)),
       focused: document.activeElement === input,
     };
   });

@@ -780,9 +780,12 @@ export class Viewer {
     const place = xrPlacement(this.up.toArray(), { min: box.min.toArray(), max: box.max.toArray() });
     const xrm = this.renderer.xr;
     xrm.enabled = true;
-    xrm.setReferenceSpaceType(session.enabledFeatures?.includes?.('local-floor') === false ? 'local' : 'local-floor');
+    // Without a floor-level space the origin is at the eyes: the floor is about 1.6 m below.
+    const floor = session.enabledFeatures?.includes?.('local-floor') !== false;
+    xrm.setReferenceSpaceType(floor ? 'local-floor' : 'local');
     this.scene.quaternion.fromArray(place.quaternion);
     this.scene.position.fromArray(place.position);
+    if (!floor) this.scene.position.y -= 1.6;
     this.scene.updateMatrixWorld(true);
     const end = () => {
       this.renderer.setAnimationLoop(null);
