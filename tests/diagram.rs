@@ -300,7 +300,11 @@ fn contact_force_wires_stay_beside_their_bodies_on_a_real_model() {
     for line in mechatronics.lines.iter().filter(|l| l.a.starts_with("collisionForce_") || l.b.starts_with("collisionForce_")) {
         let (force, body) = if line.a.starts_with("collisionForce_") { (&line.a, &line.b) } else { (&line.b, &line.a) };
         let body = body.split('.').next().expect("component");
-        assert_eq!(force.split('.').next(), Some(format!("collisionForce_{body}").as_str()), "a contact force wired to another body: {line:?}");
+        assert_eq!(
+            force.split('.').next(),
+            Some(format!("collisionForce_{body}").as_str()),
+            "a contact force wired to another body: {line:?}"
+        );
         let length: f64 = line.points.windows(2).map(|p| manhattan(p[0], p[1])).sum();
         let xs = line.points.iter().map(|p| p.0);
         let ys = line.points.iter().map(|p| p.1);
@@ -315,7 +319,10 @@ fn contact_force_wires_stay_beside_their_bodies_on_a_real_model() {
             .expect("the contact force placed");
         assert!(length <= 1.5 * spacing, "{force}: a wire {length} long, component spacing {spacing}: {:?}", line.points);
         assert!(manhattan(force_at, body_at) <= 1.5 * spacing, "{force} stands at {force_at:?}, {body} at {body_at:?} (spacing {spacing})");
-        assert!(span_x < 0.1 * sheet_w && span_y < 0.1 * sheet_h, "{force}: crosses the sheet ({span_x} x {span_y} of {sheet_w} x {sheet_h})");
+        assert!(
+            span_x < 0.1 * sheet_w && span_y < 0.1 * sheet_h,
+            "{force}: crosses the sheet ({span_x} x {span_y} of {sheet_w} x {sheet_h})"
+        );
         wires.push(length);
     }
     println!(
@@ -325,5 +332,8 @@ fn contact_force_wires_stay_beside_their_bodies_on_a_real_model() {
     );
     assert!(forces >= 10 && wires.len() == forces, "a wire per contact force: {} wires, {forces} forces", wires.len());
     // No signal wires from the collision world: each force reads its row by binding.
-    assert!(!mechatronics.lines.iter().any(|l| l.a.starts_with("collisionWorld") || l.b.starts_with("collisionWorld")), "wires from the collision world");
+    assert!(
+        !mechatronics.lines.iter().any(|l| l.a.starts_with("collisionWorld") || l.b.starts_with("collisionWorld")),
+        "wires from the collision world"
+    );
 }

@@ -186,13 +186,15 @@ try {
       // Under the input, in its column, close by (its hint between them at most).
       below: b.top >= a.bottom - 1 && b.top - a.bottom <= 8 + (f.querySelector('small')?.getBoundingClientRect().height || 0) && b.left < a.right && b.right > a.left && b.height > 0,
       boxes: [a, b].map((r) => [r.left, r.top, r.right, r.bottom].map(Math.round)),
+      // The whole message inside the form (a long class name wraps rather than runs out).
+      inside: msg.scrollWidth <= msg.clientWidth + 1 && b.right <= input.form.getBoundingClientRect().right + 1,
       focused: document.activeElement === input,
     };
   });
   assert.equal(atField.text, etaError.message, `the service's message at the eta field: ${JSON.stringify(atField)}`);
   assert.deepEqual(
-    [atField.fromServer, atField.invalid, atField.describedBy, atField.below, atField.focused],
-    [true, 'true', true, true, true],
+    [atField.fromServer, atField.invalid, atField.describedBy, atField.below, atField.inside, atField.focused],
+    [true, 'true', true, true, true, true],
     `the 422 is shown at its field (marked invalid, described by the message, focused): ${JSON.stringify(atField)}`,
   );
   await shot(page, '6b-drives-refused-at-field');

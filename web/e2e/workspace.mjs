@@ -451,6 +451,7 @@ async function checkContactWires(page, { name, shots }) {
       measured,
     };
   });
+  await page.evaluate(() => window.scrollTo(0, 0));
   await page.screenshot({ path: join(shots, `diagram-${name}-mechatronics.png`) });
   assert.ok(wires.forces >= 2 && wires.measured.length === wires.forces, `${name}: a wire per contact force: ${JSON.stringify(wires)}`);
   assert.equal(wires.fromWorld, 0, `${name}: no wires from the collision world`);

@@ -209,7 +209,11 @@ async fn put(
         };
         if let (Ok(motor), Ok(gear), Ok(controller)) = (choice("motor"), choice("gear"), choice("controller")) {
             // Which slot each class fills, so a refused parameter is named by its field.
-            let classes = [("motor", motor.modelica_class.clone()), ("gear", gear.modelica_class.clone()), ("controller", controller.modelica_class.clone())];
+            let classes = [
+                ("motor", motor.modelica_class.clone()),
+                ("gear", gear.modelica_class.clone()),
+                ("controller", controller.modelica_class.clone()),
+            ];
             let resolved = drives::ResolvedDrive { joint: joint.clone(), motor, gear, controller, reference: reference.clone() };
             let (plans, _) = drives::plans(&report, &[resolved]);
             if let Err(e) =
