@@ -101,6 +101,16 @@ async fn drives_survive_a_cad_change_and_reexport() {
     let p: Value = put_drive(&app, &model, "SLIDER_TOOL", &swapped).await.json().await.expect("problem");
     assert!(p["errors"].as_array().expect("errors").len() >= 2, "{p}");
     assert_eq!(put_drive(&app, &model, "NO_SUCH_JOINT", &body).await.status(), 404);
+    // Within the library's limits but refused by the generator (efficiency 0): the 422 names the
+    // parameter's field, so the drive editor shows it at its control.
+    let lossy = instance_of(&app, "gear", "cad2mo.Drives.Gears.Efficiency").await;
+    let eta0 =
+        json!({"motor_instance": motor, "gear_instance": lossy, "controller_instance": controller, "overrides": {"gear": {"eta": 0}}});
+    let r = put_drive(&app, &model, "RootPart_BRACKET", &eta0).await;
+    assert_eq!(r.status(), 422);
+    let p: Value = r.json().await.expect("problem");
+    assert_eq!(p["errors"][0]["field"], "overrides.gear.eta", "{p}");
+    assert!(p["errors"][0]["message"].as_str().is_some_and(|m| m.contains("must be in (0, 1]")), "{p}");
     let one: Value = app.get(&format!("/api/models/{model}/drives/SLIDER_TOOL")).await.json().await.expect("drive");
     assert_eq!(one["overrides"]["gear"]["ratio"], 100);
     assert_eq!(one["reference"]["kind"], "table");

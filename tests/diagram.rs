@@ -266,3 +266,74 @@ fn routing_work_grows_linearly_with_the_diagram() {
     let ratio = at(2000) / at(500);
     assert!(ratio <= 4.0 * 1.3, "work grew {ratio:.2} times from 500 to 2,000 bodies: {rows:?}");
 }
+
+/// The contact forces of `Mechatronics` on a real model with collision shapes (iCub's left hand,
+/// 13 bodies, each with a convex shape): one `BodyForce` per body standing beside its body, wired
+/// to it by one short frame line, never a bundle of wires across the sheet (issue 30). Short:
+/// each line at most 1.5 times the component spacing of `Mechanics` (the median distance from a
+/// component to its nearest neighbour) long, ending within that distance of its body, and
+/// spanning less than a tenth of the sheet either way.
+#[test]
+fn contact_force_wires_stay_beside_their_bodies_on_a_real_model() {
+    let Some(fx) = fixtures_dir("contact force wiring on iCub's hand") else { return };
+    let out = convert_path(&fx.join("stl/robotology+icub-models-generator/25e4033/left_hand_mk3"), &options()).expect("converts");
+    let text = |suffix: &str| out.files.iter().find(|(p, _)| p.ends_with(suffix)).map(|(_, b)| String::from_utf8_lossy(b).to_string());
+    let mechanics = svg::read(&text("/Mechanics.mo").expect("Mechanics"));
+    let mechatronics = svg::read(&text("/Mechatronics.mo").expect("Mechatronics"));
+    let errors = check_package("left_hand_mk3", &out);
+    assert!(errors.is_empty(), "{}", errors.join("\n"));
+    let centre = |e: &[Pt; 2]| ((e[0].0 + e[1].0) / 2.0, (e[0].1 + e[1].1) / 2.0);
+    let manhattan = |a: Pt, b: Pt| (a.0 - b.0).abs() + (a.1 - b.1).abs();
+    // The component spacing: the median distance from a Mechanics component to its nearest one.
+    let centres: Vec<Pt> = mechanics.components.iter().map(|c| centre(&c.extent)).collect();
+    let mut nearest: Vec<f64> = centres
+        .iter()
+        .enumerate()
+        .map(|(i, &a)| centres.iter().enumerate().filter(|&(j, _)| j != i).map(|(_, &b)| manhattan(a, b)).fold(f64::INFINITY, f64::min))
+        .collect();
+    nearest.sort_by(f64::total_cmp);
+    let spacing = nearest[nearest.len() / 2];
+    let sheet = mechatronics.extent.expect("the Mechatronics diagram's extent");
+    let (sheet_w, sheet_h) = ((sheet[1].0 - sheet[0].0).abs(), (sheet[1].1 - sheet[0].1).abs());
+    let forces = mechatronics.components.iter().filter(|c| c.class.ends_with(".Components.Collision.BodyForce")).count();
+    let mut wires = Vec::new();
+    for line in mechatronics.lines.iter().filter(|l| l.a.starts_with("collisionForce_") || l.b.starts_with("collisionForce_")) {
+        let (force, body) = if line.a.starts_with("collisionForce_") { (&line.a, &line.b) } else { (&line.b, &line.a) };
+        let body = body.split('.').next().expect("component");
+        assert_eq!(
+            force.split('.').next(),
+            Some(format!("collisionForce_{body}").as_str()),
+            "a contact force wired to another body: {line:?}"
+        );
+        let length: f64 = line.points.windows(2).map(|p| manhattan(p[0], p[1])).sum();
+        let xs = line.points.iter().map(|p| p.0);
+        let ys = line.points.iter().map(|p| p.1);
+        let span_x = xs.clone().fold(f64::NEG_INFINITY, f64::max) - xs.fold(f64::INFINITY, f64::min);
+        let span_y = ys.clone().fold(f64::NEG_INFINITY, f64::max) - ys.fold(f64::INFINITY, f64::min);
+        let body_at = mechanics.components.iter().find(|c| c.name == body).map(|c| centre(&c.extent)).expect("the body in Mechanics");
+        let force_at = mechatronics
+            .components
+            .iter()
+            .find(|c| Some(c.name.as_str()) == force.split('.').next())
+            .map(|c| centre(&c.extent))
+            .expect("the contact force placed");
+        assert!(length <= 1.5 * spacing, "{force}: a wire {length} long, component spacing {spacing}: {:?}", line.points);
+        assert!(manhattan(force_at, body_at) <= 1.5 * spacing, "{force} stands at {force_at:?}, {body} at {body_at:?} (spacing {spacing})");
+        assert!(
+            span_x < 0.1 * sheet_w && span_y < 0.1 * sheet_h,
+            "{force}: crosses the sheet ({span_x} x {span_y} of {sheet_w} x {sheet_h})"
+        );
+        wires.push(length);
+    }
+    println!(
+        "{} contact wires ({forces} contact forces), longest {:?}, component spacing {spacing}, sheet {sheet_w} x {sheet_h}",
+        wires.len(),
+        wires.iter().copied().fold(0.0, f64::max)
+    );
+    assert!(forces >= 10 && wires.len() == forces, "a wire per contact force: {} wires, {forces} forces", wires.len());
+    // No signal wires from the collision world: each force reads its row by binding.
+    assert!(
+        !mechatronics.lines.iter().any(|l| l.a.starts_with("collisionWorld") || l.b.starts_with("collisionWorld")),
+        "wires from the collision world"
+    );
+}

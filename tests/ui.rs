@@ -245,6 +245,7 @@ async fn end_to_end_in_chromium() {
         "1-models-empty",
         "2-model-3d",
         "6-drives-refused",
+        "6b-drives-refused-at-field",
         "7-drives-saved",
         "8-library",
         "10-model-versions",
@@ -349,8 +350,10 @@ fn browser_kinematics_match_the_modelica_model() {
 /// long names) `web/e2e/workspace.mjs` checks the workspace (issue 30): on every tab at 1440×900
 /// and 390×844 no control or table out of its panel or the window, the 3D view and Play on screen
 /// together, the unit choice in the keyframe table and plots, exact typed slider values, four
-/// viewports and side-by-side stereo drawn (pixels), the measuring tool; the hand's and LEGS'
-/// diagrams have an icon per component and names ≥ 9 px high or hidden.
+/// viewports and side-by-side stereo drawn (pixels), the measuring tool, Enter VR disabled with
+/// its reason (no WebXR in headless Chromium); the hand's and LEGS' diagrams have an icon per
+/// component and names ≥ 9 px high or hidden, and the hand's Mechatronics diagram short contact
+/// force wires; PR2 (30 moving joints) gets the same reach checks at both sizes.
 #[test]
 fn models_render_in_chromium() {
     if let Some(why) = missing_tools() {
@@ -426,16 +429,27 @@ fn models_render_in_chromium() {
         for r in &results[2..4] {
             assert_eq!(r["diagram"]["icons"], r["diagram"]["components"], "an icon per diagram component: {r}");
         }
+        // Immersive VR: headless Chromium offers none, so Enter VR is disabled with the reason.
+        assert_eq!(ws["vr"]["xr"], "unsupported", "Enter VR disabled without WebXR: {ws}");
+        assert!(ws["vr"]["reason"].as_str().is_some_and(|r| !r.is_empty()), "the reason is its tooltip: {ws}");
+        // The hand's contact forces stand beside their bodies in the Mechatronics diagram.
+        let contacts = &hand["diagram"]["contacts"];
+        assert!(contacts["forces"].as_u64().is_some_and(|n| n >= 10), "the hand's contact forces drawn: {contacts}");
         // PR2's workspace at 1440×900: the same reach checks on every tab with 30 moving joints.
         let pr2 = &results[4];
         assert!(pr2["axes"].as_u64().is_some_and(|n| n >= 30), "PR2's 30 moving joints are drawn: {pr2}");
         assert!(pr2["bodies"].as_u64().is_some_and(|n| n >= 40), "PR2's bodies are listed: {pr2}");
         let ws = &pr2["workspace"];
-        assert_eq!(ws["wide"]["viewAndPlay"]["play"], true, "PR2: {ws}");
-        assert_eq!(ws["wide"]["tabs"].as_object().map(|t| t.len()), Some(9), "PR2: every tab checked: {ws}");
+        for size in ["wide", "narrow"] {
+            assert_eq!(ws[size]["viewAndPlay"]["play"], true, "PR2 {size}: {ws}");
+            assert_eq!(ws[size]["tabs"].as_object().map(|t| t.len()), Some(9), "PR2 {size}: every tab checked: {ws}");
+        }
         for png in [
             "ws-pr2-1440-motion",
             "ws-pr2-1440-drives",
+            "ws-pr2-390-motion",
+            "ws-pr2-390-drives",
+            "diagram-left_hand_mk3-mechatronics",
             "ws-hand-1440-motion",
             "ws-hand-390-motion",
             "ws-hand-1440-drives",

@@ -161,12 +161,44 @@ try {
   await editor.getByText('Gear ratio = 25000 is above the maximum 10000').first().waitFor();
   assert.equal(await ratio.getAttribute('aria-invalid'), 'true');
   await shot(page, '6-drives-refused');
-  // Within the limits the page knows, but refused by the generator: the service's message shows.
+  // Within the limits the page knows, but refused by the generator: the live service answers
+  // 422 naming the field, and its message shows at that field (issue 30), not only in a box.
   await ratio.fill('100');
   const eta = editor.getByLabel('eta');
   await eta.fill('0');
-  await editor.getByRole('button', { name: 'Save drive' }).click();
+  const [driveRefusal] = await Promise.all([
+    page.waitForResponse((r) => r.request().method() === 'PUT' && r.url().includes(`/drives/${encodeURIComponent(joint)}`)),
+    editor.getByRole('button', { name: 'Save drive' }).click(),
+  ]);
+  assert.equal(driveRefusal.status(), 422, 'the service refused the drive');
+  const problem = await driveRefusal.json();
+  const etaError = (problem.errors || []).find((e) => /(^|\.)eta$/.test(e.field));
+  assert.ok(etaError, `the 422 names the eta field: ${JSON.stringify(problem)}`);
   await editor.getByText(/eta of .* = 0\.0 must be in \(0, 1\]/).first().waitFor();
+  const atField = await eta.evaluate((input) => {
+    const f = input.closest('.field');
+    const msg = f.querySelector('.field-msg');
+    const [a, b] = [input.getBoundingClientRect(), msg.getBoundingClientRect()];
+    return {
+      text: msg.textContent,
+      fromServer: msg.classList.contains('from-server'),
+      invalid: input.getAttribute('aria-invalid'),
+      describedBy: (input.getAttribute('aria-describedby') || '').split(' ').includes(msg.id),
+      // Under the input, in its column, close by (its hint between them at most).
+      below: b.top >= a.bottom - 1 && b.top - a.bottom <= 8 + (f.querySelector('small')?.getBoundingClientRect().height || 0) && b.left < a.right && b.right > a.left && b.height > 0,
+      boxes: [a, b].map((r) => [r.left, r.top, r.right, r.bottom].map(Math.round)),
+      // The whole message inside the form (a long class name wraps rather than runs out).
+      inside: msg.scrollWidth <= msg.clientWidth + 1 && b.right <= input.form.getBoundingClientRect().right + 1,
+      focused: document.activeElement === input,
+    };
+  });
+  assert.equal(atField.text, etaError.message, `the service's message at the eta field: ${JSON.stringify(atField)}`);
+  assert.deepEqual(
+    [atField.fromServer, atField.invalid, atField.describedBy, atField.below, atField.inside, atField.focused],
+    [true, 'true', true, true, true, true],
+    `the 422 is shown at its field (marked invalid, described by the message, focused): ${JSON.stringify(atField)}`,
+  );
+  await shot(page, '6b-drives-refused-at-field');
   await eta.fill('0.72');
   await editor.getByRole('button', { name: 'Save drive' }).click();
   await page.getByText(`Saved the drive of ${joint}.`).waitFor();

@@ -55,6 +55,37 @@ function viewAndPlay() {
   return { stage: inWindow(stage) && usable, play: inWindow(r) && top === play, stageBox: [stage.left, stage.top, stage.width, stage.height].map(Math.round), playBox: [r.left, r.top].map(Math.round) };
 }
 
+/**
+ * In a narrow window (stacked layout): the 3D view, the dock and the side panel one above the
+ * other at the window's width; every visible table that is wider than its panel sits in a box
+ * that scrolls sideways by itself (overflow-x auto or scroll, no wider than the panel), so the
+ * table scrolls, not the page.
+ */
+function stackedAndScrolling() {
+  const box = (sel) => document.querySelector(sel)?.getBoundingClientRect();
+  const vw = document.documentElement.clientWidth;
+  const view = box('.workspace > .view3d');
+  const side = box('.workspace > .side');
+  const stacked = !!view && !!side && side.top >= view.bottom - 1 && Math.abs(side.left - view.left) <= 2 && side.width >= 0.9 * vw - 40 && view.width >= 0.9 * vw - 40;
+  const bad = [];
+  let wide = 0;
+  for (const panel of document.querySelectorAll('.workspace > .side, .workspace > .dock')) {
+    if (panel.closest('[hidden]')) continue;
+    const p = panel.getBoundingClientRect();
+    for (const t of panel.querySelectorAll('table')) {
+      if (t.closest('[hidden]') || t.closest('.diagram-view')) continue;
+      const r = t.getBoundingClientRect();
+      if (r.width === 0 || r.width <= p.width + 1) continue;
+      wide++;
+      let scroller = t.parentElement;
+      while (scroller && scroller !== panel && !/(auto|scroll)/.test(getComputedStyle(scroller).overflowX)) scroller = scroller.parentElement;
+      const ok = scroller && scroller !== panel && scroller.getBoundingClientRect().width <= p.width + 1 && scroller.scrollWidth > scroller.clientWidth;
+      if (!ok) bad.push(`${t.className || t.getAttribute('aria-label') || 'table'} ${Math.round(r.width)}px in a ${Math.round(p.width)}px panel`);
+    }
+  }
+  return { stacked, view: view && [view.left, view.top, view.width, view.height].map(Math.round), side: side && [side.left, side.top, side.width].map(Math.round), wide, bad };
+}
+
 const TABS = ['Structure', 'Report', 'Drives', 'Motion', 'Results', 'Live', 'Collision', 'Scene', 'Modelica diagram'];
 
 /**
@@ -97,6 +128,18 @@ export async function checkWorkspace(page, { name, shots, width, height, step = 
     assert.equal(reach.count, 0, `${name} at ${width}×${height}, ${tab}: ${reach.count} of ${reach.checked} controls out of their panel or the window: ${reach.bad.join('; ')}`);
     assert.ok(reach.pageOverflow <= 1, `${name} at ${width}×${height}, ${tab}: the page is ${reach.pageOverflow}px wider than the window: ${reach.wide.join('; ')}`);
     out.tabs[tab] = reach.checked;
+    if (width < 700) {
+      // Stacked: tables wider than the window scroll inside themselves.
+      const st = await page.evaluate(stackedAndScrolling);
+      assert.ok(st.stacked, `${name} at ${width}×${height}, ${tab}: the panels are not stacked: ${JSON.stringify(st)}`);
+      assert.deepEqual(st.bad, [], `${name} at ${width}×${height}, ${tab}: tables wider than their panel that do not scroll by themselves`);
+      out.wideTables = (out.wideTables || 0) + st.wide;
+      // The tables themselves, for review (a screenshot of the window shows a part of them).
+      if (tab === 'Drives' || tab === 'Motion') {
+        const sel = tab === 'Drives' ? 'table.drives' : 'table.keyframe-table';
+        await panel.locator(sel).screenshot({ path: join(shots, `ws-${name}-${width}-${tab.toLowerCase()}-table.png`) });
+      }
+    }
     // Abbreviated joint names stay tellable apart: no two rows read alike.
     if (tab === 'Drives' || tab === 'Motion') {
       const shown = await panel.locator(tab === 'Drives' ? 'table.drives tbody th button' : 'table.keyframe-table tbody th .name').allTextContents();
@@ -330,8 +373,37 @@ export async function checkViewports(page, { name, shots }) {
   return { quad: quad.map((q) => Number(q.share.toFixed(3))), sbs: sbs.map((q) => Number(q.share.toFixed(3))), distance, collisionShapes: shapes.n, views: Object.keys(views), fit };
 }
 
+/**
+ * Immersive VR (WebXR): the Enter VR button is enabled only where the browser says an
+ * immersive-vr session works; headless Chromium has none, so here it is disabled with the
+ * reason as its tooltip (the decision itself is unit-tested in src/viewer/xr-data.test.js).
+ */
+export async function checkVR(page) {
+  const btn = page.locator('#enter-vr');
+  await page.waitForFunction(() => document.querySelector('#enter-vr')?.dataset.xr !== 'checking', null, { timeout: 10_000 });
+  const state = await btn.evaluate((b) => ({
+    xr: b.dataset.xr,
+    disabled: b.disabled,
+    title: b.title,
+    wrapTitle: b.parentElement.title,
+    hasXR: 'xr' in navigator,
+    supported: navigator.xr ? null : false,
+  }));
+  if (state.hasXR) {
+    state.supported = await page.evaluate(() =>
+      Promise.race([navigator.xr.isSessionSupported('immersive-vr').catch(() => false), new Promise((r) => setTimeout(() => r('no answer'), 6000))]),
+    );
+  }
+  assert.ok(state.supported === false || state.supported === 'no answer', `this browser offers immersive VR: the test expects a headless one without: ${JSON.stringify(state)}`);
+  assert.equal(state.xr, 'unsupported', JSON.stringify(state));
+  assert.equal(state.disabled, true, `Enter VR is disabled without immersive VR: ${JSON.stringify(state)}`);
+  assert.match(state.title, /WebXR|VR device|immersive VR|secure page/, `the reason is its tooltip: ${JSON.stringify(state)}`);
+  assert.equal(state.wrapTitle, state.title, 'the reason shows over the disabled button too');
+  return state;
+}
+
 /** Every component name of the diagram in view is at least 9 px high on screen, or hidden; a screenshot. */
-export async function checkDiagram(page, { name, shots }) {
+export async function checkDiagram(page, { name, shots, contacts = false }) {
   await page.getByRole('tab', { name: 'Modelica diagram', exact: true }).click();
   await page.locator('.diagram-view svg g[data-component]').first().waitFor();
   const look = await page.locator('.diagram-view').evaluate((v) => {
@@ -342,5 +414,48 @@ export async function checkDiagram(page, { name, shots }) {
   await page.screenshot({ path: join(shots, `diagram-${name}.png`) });
   assert.deepEqual(look.small, [], `${name}: diagram names below 9 px`);
   assert.equal(look.icons, look.components, `${name}: an icon per component`);
+  if (contacts) look.contacts = await checkContactWires(page, { name, shots });
   return look;
+}
+
+/**
+ * The Mechatronics diagram of a model with collision shapes: a contact force beside each body
+ * with one short wire to it, never a bundle across the sheet (issue 30). Each contact wire (its
+ * polyline's connect title names a collisionForce_) is at most 4 median component widths long
+ * and spans less than a tenth of the drawing either way; no wire leaves the collision world.
+ */
+async function checkContactWires(page, { name, shots }) {
+  await page.getByLabel('Model', { exact: true }).selectOption('Mechatronics');
+  await page.locator('.diagram-status', { hasText: /^Mechatronics:/ }).waitFor();
+  const wires = await page.locator('.diagram-view svg').evaluate((svg) => {
+    const vb = svg.viewBox.baseVal;
+    const widths = [...svg.querySelectorAll('g[data-component] > rect')].map((r) => Number(r.getAttribute('width'))).sort((a, b) => a - b);
+    const median = widths[Math.floor(widths.length / 2)];
+    const lines = [...svg.querySelectorAll('polyline')].map((p) => ({
+      title: p.querySelector('title')?.textContent || '',
+      pts: p.getAttribute('points').trim().split(/\s+/).map((xy) => xy.split(',').map(Number)),
+    }));
+    const contact = lines.filter((l) => /^connect\(collisionForce_/.test(l.title));
+    const measured = contact.map((l) => {
+      const xs = l.pts.map((p) => p[0]);
+      const ys = l.pts.map((p) => p[1]);
+      let length = 0;
+      for (let i = 1; i < l.pts.length; i++) length += Math.abs(l.pts[i][0] - l.pts[i - 1][0]) + Math.abs(l.pts[i][1] - l.pts[i - 1][1]);
+      return { title: l.title, length, spanX: Math.max(...xs) - Math.min(...xs), spanY: Math.max(...ys) - Math.min(...ys) };
+    });
+    return {
+      sheet: [vb.width, vb.height],
+      median,
+      forces: svg.querySelectorAll('g[data-component^="collisionForce_"]').length,
+      fromWorld: lines.filter((l) => /collisionWorld/.test(l.title)).length,
+      measured,
+    };
+  });
+  await page.evaluate(() => window.scrollTo(0, 0));
+  await page.screenshot({ path: join(shots, `diagram-${name}-mechatronics.png`) });
+  assert.ok(wires.forces >= 2 && wires.measured.length === wires.forces, `${name}: a wire per contact force: ${JSON.stringify(wires)}`);
+  assert.equal(wires.fromWorld, 0, `${name}: no wires from the collision world`);
+  const long = wires.measured.filter((w) => w.length > 4 * wires.median || w.spanX >= 0.1 * wires.sheet[0] || w.spanY >= 0.1 * wires.sheet[1]);
+  assert.deepEqual(long, [], `${name}: contact wires that are long or cross the sheet (median component width ${wires.median}, sheet ${wires.sheet})`);
+  return { forces: wires.forces, longest: Math.max(...wires.measured.map((w) => w.length)), median: wires.median, sheet: wires.sheet };
 }

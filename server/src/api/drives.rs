@@ -208,12 +208,19 @@ async fn put(
             drives::choice(class, inst, body.overrides.get(slot))
         };
         if let (Ok(motor), Ok(gear), Ok(controller)) = (choice("motor"), choice("gear"), choice("controller")) {
+            // Which slot each class fills, so a refused parameter is named by its field.
+            let classes = [
+                ("motor", motor.modelica_class.clone()),
+                ("gear", gear.modelica_class.clone()),
+                ("controller", controller.modelica_class.clone()),
+            ];
             let resolved = drives::ResolvedDrive { joint: joint.clone(), motor, gear, controller, reference: reference.clone() };
             let (plans, _) = drives::plans(&report, &[resolved]);
             if let Err(e) =
                 cad2mo_engine::pipeline::back::modelica::mechatronics::mechatronics("Check", &plans, &[], &Default::default(), "")
             {
-                errors.push(FieldError { field: "drive".into(), message: e.to_string() });
+                let classes: Vec<(&str, &str)> = classes.iter().map(|(s, c)| (*s, c.as_str())).collect();
+                errors.push(FieldError { field: drives::generator_field(&e, &classes), message: e.to_string() });
             }
         }
     }

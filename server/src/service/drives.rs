@@ -12,7 +12,7 @@ use serde_json::{Map, Value as Json};
 use super::FieldError;
 use crate::store::StoreError;
 use cad2mo_engine::library::{Class, Instance, Issue, Value};
-use cad2mo_engine::pipeline::back::modelica::mechatronics::{ClassChoice, DrivePlan, JointKind, ParamValue, Reference};
+use cad2mo_engine::pipeline::back::modelica::mechatronics::{ClassChoice, DrivePlan, JointKind, MechatronicsError, ParamValue, Reference};
 
 /// The reference a joint follows.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -47,6 +47,25 @@ fn to_param(v: &Value) -> ParamValue {
         Value::Boolean(b) => ParamValue::Boolean(*b),
         Value::String(s) => ParamValue::String(s.clone()),
     }
+}
+
+/// The request field a refusal of the Mechatronics generator is about, so that a form shows it
+/// at its control: `overrides.<slot>.<param>` for a parameter of the class chosen for a slot
+/// (`classes`: slot and Modelica class, e.g. `("gear", "cad2mo.Drives.Gears.Efficiency")`),
+/// `<slot>_instance` for a class that does not fit, `reference` for the reference, else `drive`.
+pub fn generator_field(e: &MechatronicsError, classes: &[(&str, &str)]) -> String {
+    let slot_of = |class: &str| classes.iter().find(|(_, c)| *c == class).map(|(s, _)| *s);
+    let param = match e {
+        MechatronicsError::OutOfRange { class, param, .. }
+        | MechatronicsError::WrongType { class, param, .. }
+        | MechatronicsError::UnknownParameter { class, param, .. }
+        | MechatronicsError::DuplicateParameter { class, param, .. } => slot_of(class).map(|s| format!("overrides.{s}.{param}")),
+        MechatronicsError::UnknownClass { slot, .. } => Some(format!("{slot}_instance")),
+        MechatronicsError::GearDoesNotFitJoint { .. } => Some("gear_instance".to_string()),
+        MechatronicsError::BadReference { .. } => Some("reference".to_string()),
+        _ => None,
+    };
+    param.unwrap_or_else(|| "drive".to_string())
 }
 
 /// Checks a reference: finite values, non-decreasing times.

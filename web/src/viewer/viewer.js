@@ -1,6 +1,7 @@
 // The 3D view (three.js): every body's mesh in its CAD colour at its pose, joint axes as arrows,
 // the world frame and a ground grid, orbit/pan/zoom, picking, a red-cyan anaglyph mode, and
-// poses from the joint coordinates (kinematics.js). Renders on demand, not in a loop.
+// poses from the joint coordinates (kinematics.js). Renders on demand, not in a loop (in a WebXR
+// headset, every frame the session asks for: enterVR).
 
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
@@ -8,6 +9,7 @@ import { AnaglyphEffect } from 'three/addons/effects/AnaglyphEffect.js';
 import { TransformControls } from 'three/addons/controls/TransformControls.js';
 import { bodyDeltas, frameMatrix } from './kinematics.js';
 import { poseAt } from '../views/scene-data.js';
+import { xrPlacement } from './xr-data.js';
 
 /** A scene with the viewers' lights: sky and ground, a sun, a fill light from below behind. */
 export function litScene() {
@@ -941,7 +943,8 @@ export class Viewer {
   }
 
   invalidate() {
-    if (this.frame) return;
+    // In a headset the session's own loop draws every frame.
+    if (this.frame || this.xrSession) return;
     this.frame = requestAnimationFrame(() => {
       this.frame = null;
       this.render();
@@ -976,6 +979,52 @@ export class Viewer {
     } else this.renderer.render(this.scene, this.camera);
     this.host.dataset.rendered = String((Number(this.host.dataset.rendered) || 0) + 1);
     if (this.host.dataset.rendered === '1') performance.measure('cad2mo:first-frame', { start: t0 });
+  }
+
+  /**
+   * Immersive VR (WebXR, three.js `renderer.xr`): requests an 'immersive-vr' session from `xr`
+   * (navigator.xr), stands the model upright on the floor in front of the user at its true size
+   * (xrPlacement), and renders every frame the headset asks for until the session ends, when
+   * the page's view comes back as it was. Resolves with the session; rejects with the browser's
+   * reason (no device, permission refused).
+   */
+  async enterVR(xr) {
+    const session = await xr.requestSession('immersive-vr', { optionalFeatures: ['local-floor'] });
+    const box = new THREE.Box3();
+    for (const [, b] of this.bodies) if (b.hasMesh) box.expandByObject(b.group);
+    if (box.isEmpty()) box.setFromObject(this.scene);
+    const place = xrPlacement(this.up.toArray(), { min: box.min.toArray(), max: box.max.toArray() });
+    const xrm = this.renderer.xr;
+    xrm.enabled = true;
+    // Without a floor-level space the origin is at the eyes: the floor is about 1.6 m below.
+    const floor = session.enabledFeatures?.includes?.('local-floor') !== false;
+    xrm.setReferenceSpaceType(floor ? 'local-floor' : 'local');
+    this.scene.quaternion.fromArray(place.quaternion);
+    this.scene.position.fromArray(place.position);
+    if (!floor) this.scene.position.y -= 1.6;
+    this.scene.updateMatrixWorld(true);
+    const end = () => {
+      this.renderer.setAnimationLoop(null);
+      xrm.enabled = false;
+      this.scene.quaternion.identity();
+      this.scene.position.set(0, 0, 0);
+      this.scene.updateMatrixWorld(true);
+      this.xrSession = null;
+      this.host.dataset.xr = 'ended';
+      this.fit();
+    };
+    session.addEventListener('end', end);
+    try {
+      await xrm.setSession(session);
+    } catch (e) {
+      end();
+      await session.end().catch(() => {});
+      throw e;
+    }
+    this.xrSession = session;
+    this.host.dataset.xr = 'immersive';
+    this.renderer.setAnimationLoop(() => this.renderer.render(this.scene, this.camera));
+    return session;
   }
 
   /**
@@ -1045,6 +1094,7 @@ export class Viewer {
   }
 
   dispose() {
+    this.xrSession?.end().catch(() => {});
     this.setGhost(null);
     this.clearMeasure();
     this.labels?.remove();

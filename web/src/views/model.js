@@ -6,6 +6,7 @@ import { STLLoader } from 'three/addons/loaders/STLLoader.js';
 import { api, download, enc } from '../api.js';
 import { h, fill, errorBox, say, tabs, num, plural } from '../ui.js';
 import { Viewer, niceStep } from '../viewer/viewer.js';
+import { immersiveSupport } from '../viewer/xr-data.js';
 import { coordinates } from '../viewer/kinematics.js';
 import { parseObj } from '../viewer/obj.js';
 import { renderDrives } from './drives.js';
@@ -107,6 +108,11 @@ export async function renderViewer(main, id, v, initialTab) {
   // Contact points and closest-point lines of the collision checks, when there are any.
   const contactsBox = h('input', { type: 'checkbox', id: 'contact-points', checked: true });
   const measureOut = h('output', { class: 'measure-out', 'aria-live': 'polite' });
+  // Immersive VR (WebXR): enabled only when the browser says an immersive session works; until
+  // then, and otherwise, disabled with the reason as its tooltip (on the wrapper too: a disabled
+  // button gets no pointer events in some browsers).
+  const vrBtn = h('button', { type: 'button', id: 'enter-vr', disabled: true, title: 'Checking whether this browser offers immersive VR…', 'data-xr': 'checking' }, 'Enter VR');
+  const vrWrap = h('span', { class: 'vr-wrap', title: vrBtn.title }, vrBtn);
   const measureBtn = h('button', { type: 'button', id: 'measure', 'aria-pressed': 'false' }, 'Measure');
   angleSel.addEventListener('change', () => setUnits({ angle: angleSel.value }));
   lengthSel.addEventListener('change', () => setUnits({ length: lengthSel.value }));
@@ -124,6 +130,7 @@ export async function renderViewer(main, id, v, initialTab) {
     h('span', { class: 'check' }, transparentBox, h('label', { for: 'transparent' }, 'Transparent')),
     h('span', { class: 'check' }, contactsBox, h('label', { for: 'contact-points' }, 'Contact points')),
     h('span', { class: 'check' }, h('label', { for: 'view-layout' }, 'Viewports'), layoutSel),
+    vrWrap,
     measureBtn,
     measureOut,
     h('span', { class: 'check units' }, h('label', { for: 'unit-angle' }, 'Angles'), angleSel, h('label', { for: 'unit-length' }, 'Lengths'), lengthSel),
@@ -147,6 +154,30 @@ export async function renderViewer(main, id, v, initialTab) {
   const sceneLoaded = layer.load();
   sceneLoaded.catch((e) => say(`The scene could not be loaded: ${e.message}`, 'error'));
   anaglyph.addEventListener('change', () => viewer.setAnaglyph(anaglyph.checked));
+  const vrReason = (why) => {
+    vrBtn.title = why;
+    vrWrap.title = why;
+  };
+  immersiveSupport(navigator, window.isSecureContext).then(({ supported, reason }) => {
+    const ok = supported && typeof viewer.enterVR === 'function';
+    vrBtn.disabled = !ok;
+    vrBtn.dataset.xr = ok ? 'supported' : 'unsupported';
+    vrReason(ok ? 'View the model at its true size in your VR headset (WebXR)' : reason || 'The 3D view needs WebGL for VR');
+  });
+  vrBtn.addEventListener('click', async () => {
+    vrBtn.disabled = true;
+    try {
+      const session = await viewer.enterVR(navigator.xr);
+      vrBtn.dataset.xr = 'immersive';
+      session.addEventListener('end', () => {
+        vrBtn.disabled = false;
+        vrBtn.dataset.xr = 'supported';
+      });
+    } catch (e) {
+      vrBtn.disabled = false;
+      say(`Could not enter VR: ${e?.message || e}`, 'error');
+    }
+  });
   layoutSel.addEventListener('change', () => viewer.setLayout?.(layoutSel.value));
   const showMeasure = (m) => {
     const u = getUnits();
