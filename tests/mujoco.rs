@@ -14,7 +14,7 @@ use std::process::Command;
 use cad2mo_engine::mechanism::{Mechanism, XorShift};
 use cad2mo_engine::pipeline::front::bundle::Bundle;
 use cad2mo_engine::pipeline::{self, Options};
-use cad2mo_tests::common::{files_with_ext, fixtures_dir, tools_required, workspace_root};
+use cad2mo_tests::common::{files_with_ext, fixtures_dir, python_check, tools_required};
 use nalgebra::Vector3;
 
 #[path = "../engine/benches/support/gen.rs"]
@@ -96,32 +96,8 @@ fn compare_with(label: &str, m: &Mechanism, mjcf: &str, samples: usize, seed: u6
         qs.push(q);
         qds.push(qd);
     }
-    let input = dir.path().join("in.json");
-    let output = dir.path().join("out.json");
-    std::fs::write(&input, serde_json::json!({"model": model_path, "samples": spec, "keep_damping": losses}).to_string())
-        .expect("write spec");
-    let script = workspace_root().join("tests/tools/mujoco_check.py");
-    let run = Command::new("python3").arg(&script).arg(&input).arg(&output).output();
-    let run = match run {
-        Ok(r) => r,
-        Err(e) => {
-            assert!(!tools_required(), "python3 not runnable: {e}");
-            println!("NOTICE: python3 not runnable ({e}); MuJoCo cross-check skipped");
-            return None;
-        }
-    };
-    if run.status.code() == Some(3) {
-        assert!(!tools_required(), "mujoco not importable: {}", String::from_utf8_lossy(&run.stdout));
-        println!("NOTICE: {}; MuJoCo cross-check skipped (python3 -m pip install mujoco)", String::from_utf8_lossy(&run.stdout).trim());
-        return None;
-    }
-    assert!(
-        run.status.success(),
-        "{label}: mujoco_check.py failed:\n{}{}",
-        String::from_utf8_lossy(&run.stdout),
-        String::from_utf8_lossy(&run.stderr)
-    );
-    let result: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&output).expect("read out")).expect("json");
+    let spec = serde_json::json!({"model": model_path, "samples": spec, "keep_damping": losses});
+    let result = python_check(dir.path(), "mujoco_check.py", &spec, label, "MuJoCo cross-check (python3 -m pip install mujoco)")?;
     assert_eq!(result["nv"].as_u64(), Some(n as u64), "{label}: MuJoCo has a different number of dofs");
     let mut worst_rel = 0.0f64;
     for (s, q) in qs.iter().enumerate() {

@@ -7,12 +7,11 @@
 //! CAD2MO_REQUIRE_TOOLS=1.
 
 use std::path::{Path, PathBuf};
-use std::process::Command;
 
 use cad2mo_engine::mechanism::{Mechanism, XorShift};
 use cad2mo_engine::pipeline::front::bundle::Limits;
 use cad2mo_engine::pipeline::{self, Options};
-use cad2mo_tests::common::{files_with_ext, fixture_bundle, fixtures_dir, sorted_dirs, tools_required, workspace_root};
+use cad2mo_tests::common::{files_with_ext, fixture_bundle, fixtures_dir, python_check, sorted_dirs, workspace_root};
 use nalgebra::{Isometry3, Matrix3, Quaternion, Rotation3, Translation3, UnitQuaternion, Vector3};
 
 const TOL: f64 = 1e-9;
@@ -22,30 +21,8 @@ fn mujoco(label: &str, urdf: &str, samples: &[serde_json::Value]) -> Option<serd
     let dir = tempfile::tempdir().expect("tempdir");
     let path = dir.path().join("robot.urdf");
     std::fs::write(&path, urdf).expect("write urdf");
-    let input = dir.path().join("in.json");
-    let output = dir.path().join("out.json");
-    std::fs::write(&input, serde_json::json!({"urdf": path, "samples": samples}).to_string()).expect("write spec");
-    let script = workspace_root().join("tests/tools/urdf_mujoco.py");
-    let run = match Command::new("python3").arg(&script).arg(&input).arg(&output).output() {
-        Ok(r) => r,
-        Err(e) => {
-            assert!(!tools_required(), "python3 not runnable: {e}");
-            println!("NOTICE: python3 not runnable ({e}); URDF MuJoCo check skipped");
-            return None;
-        }
-    };
-    if run.status.code() == Some(3) {
-        assert!(!tools_required(), "mujoco not importable: {}", String::from_utf8_lossy(&run.stdout));
-        println!("NOTICE: {}; URDF MuJoCo check skipped (python3 -m pip install mujoco)", String::from_utf8_lossy(&run.stdout).trim());
-        return None;
-    }
-    assert!(
-        run.status.success(),
-        "{label}: MuJoCo could not load the URDF:\n{}{}\n{urdf}",
-        String::from_utf8_lossy(&run.stdout),
-        String::from_utf8_lossy(&run.stderr)
-    );
-    Some(serde_json::from_str(&std::fs::read_to_string(&output).expect("read out")).expect("json"))
+    let spec = serde_json::json!({"urdf": path, "samples": samples});
+    python_check(dir.path(), "urdf_mujoco.py", &spec, label, "URDF MuJoCo check (python3 -m pip install mujoco)")
 }
 
 fn pose_of(result: &serde_json::Value, s: usize, body: &str) -> Option<Isometry3<f64>> {

@@ -34,6 +34,32 @@ pub fn tools_required() -> bool {
     std::env::var("CAD2MO_REQUIRE_TOOLS").is_ok_and(|v| v == "1")
 }
 
+/// Runs one of `tests/tools/`'s Python checks: writes `spec` to `in.json` in `dir`, runs
+/// `python3 tests/tools/<script> in.json out.json` and returns `out.json`'s value. `None` (with a
+/// notice naming `check`) when python3 or the module the script needs is missing (the script
+/// exits 3), unless the tools are required; a failed run fails the test with its output.
+pub fn python_check(dir: &Path, script: &str, spec: &serde_json::Value, label: &str, check: &str) -> Option<serde_json::Value> {
+    let (input, output) = (dir.join("in.json"), dir.join("out.json"));
+    std::fs::write(&input, spec.to_string()).expect("write spec");
+    let script_path = workspace_root().join("tests/tools").join(script);
+    let run = match std::process::Command::new("python3").arg(&script_path).arg(&input).arg(&output).output() {
+        Ok(r) => r,
+        Err(e) => {
+            assert!(!tools_required(), "python3 not runnable: {e}");
+            println!("NOTICE: python3 not runnable ({e}); {check} skipped");
+            return None;
+        }
+    };
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    if run.status.code() == Some(3) {
+        assert!(!tools_required(), "{}", stdout.trim());
+        println!("NOTICE: {}; {check} skipped", stdout.trim());
+        return None;
+    }
+    assert!(run.status.success(), "{label}: {script} failed:\n{stdout}{}", String::from_utf8_lossy(&run.stderr));
+    Some(serde_json::from_str(&std::fs::read_to_string(&output).expect("read out")).expect("json"))
+}
+
 /// Reads a bundle from disk and converts it.
 pub fn convert_path(path: &Path, opts: &Options) -> Result<Output, String> {
     let bundle = cad2mo::read_bundle(path, &Limits::default())?;
