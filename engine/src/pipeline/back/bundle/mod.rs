@@ -76,9 +76,16 @@ pub fn write_zip_observed(files: &[(String, Vec<u8>)], done: &mut dyn FnMut(usiz
     };
     let threads = std::thread::available_parallelism().map_or(1, |t| t.get()).min(n.max(1)).min(8);
     let mut packed: Vec<Option<Packed>> = (0..n).map(|_| None).collect();
+    // Progress is reported from this thread only (`done` need not be `Send`): the files it
+    // deflates, then the end, which the other threads may reach first (on a busy machine they
+    // can deflate every file before this thread takes one).
+    let mut last = 0;
     std::thread::scope(|scope| {
         let helpers: Vec<_> = (1..threads).map(|_| scope.spawn(|| work(&mut |_| {}))).collect();
-        for (i, p) in work(&mut |k| done(k, n)) {
+        for (i, p) in work(&mut |k| {
+            last = k;
+            done(k, n);
+        }) {
             packed[i] = Some(p);
         }
         for h in helpers {
@@ -87,6 +94,9 @@ pub fn write_zip_observed(files: &[(String, Vec<u8>)], done: &mut dyn FnMut(usiz
             }
         }
     });
+    if last < n {
+        done(n, n);
+    }
     let size: usize =
         packed.iter().flatten().map(|p| p.data.len()).sum::<usize>() + files.iter().map(|(p, _)| 2 * p.len() + 76).sum::<usize>() + 22;
     let mut out = Vec::with_capacity(size);
@@ -219,6 +229,7 @@ mod tests {
         let mut seen = Vec::new();
         super::write_zip_observed(&files, &mut |k, n| seen.push((k, n))).unwrap();
         assert!(!seen.is_empty());
+        assert_eq!(seen.last(), Some(&(300, 300)), "the end is reported");
         assert!(seen.iter().all(|&(k, n)| n == 300 && (1..=300).contains(&k)));
         assert!(seen.windows(2).all(|w| w[0].0 < w[1].0));
     }
