@@ -63,7 +63,7 @@ use nalgebra::Vector3;
 use crate::mechanism::{ClosedState, ForwardWorkspace, Mechanism, MechanismError, Workspace};
 
 pub use answer::{saturation_intervals, verdict, Tolerances, Tracking, Verdict};
-pub use output::{result_file, series, JointLosses};
+pub use output::{body_frames, result_file, series, JointLosses};
 pub use parts::drive_of;
 
 /// Longest simulated time, s.
@@ -249,6 +249,17 @@ pub trait GeneralisedForces {
     fn add(&self, t: f64, q: &[f64], qd: &[f64], tau: &mut [f64]);
 }
 
+/// Hears the output samples while the run is integrated, as the integration reaches them (the
+/// service's live view sends body poses from them). Samples are numbered from 0 at t = 0, every
+/// `Options::output_interval`; `last` marks the run's final one.
+pub trait Observer {
+    /// Whether sample `index` at `t` is wanted: only wanted samples are evaluated for it.
+    fn wants(&mut self, index: usize, t: f64, last: bool) -> bool;
+    /// A wanted sample: every tree coordinate (`q`, loops closed, exactly as in [`Run::q`] for a
+    /// mechanism without loops; with loops the dependent ones agree to the closure's tolerance).
+    fn sample(&mut self, index: usize, t: f64, last: bool, q: &[f64]);
+}
+
 /// No extra forces.
 pub struct NoForces;
 
@@ -390,6 +401,9 @@ struct Model<'a> {
     samples: RefCell<Vec<RawSample>>,
     cancel: &'a dyn Fn() -> bool,
     cancelled: Cell<Option<f64>>,
+    /// The observer and the index of the run's last sample.
+    observer: Option<RefCell<&'a mut dyn Observer>>,
+    last_sample: usize,
 }
 
 impl Model<'_> {
@@ -510,7 +524,21 @@ impl integrate::Problem for Model<'_> {
 
     fn sample(&self, t: f64, y: &[f64]) {
         let modes = self.scratch.borrow().modes.clone();
+        let index = self.samples.borrow().len();
         self.samples.borrow_mut().push((t, y.to_vec(), modes));
+        if let Some(o) = &self.observer {
+            let last = index == self.last_sample;
+            if o.borrow_mut().wants(index, t, last) {
+                // The sample's coordinates as the run's post-pass evaluates them (same modes).
+                let (mut dy, mut g) = (vec![0.0; y.len()], vec![0.0; SWITCHES * self.drives.len()]);
+                let evaluations = self.scratch.borrow().evaluations;
+                if Model::eval(self, t, y, &mut dy, &mut g).is_ok() {
+                    let q = self.scratch.borrow().state.q.clone();
+                    o.borrow_mut().sample(index, t, last, &q);
+                }
+                self.scratch.borrow_mut().evaluations = evaluations;
+            }
+        }
     }
 
     fn stop(&self, t: f64) -> bool {
@@ -598,6 +626,20 @@ fn check(m: &Mechanism, drives: &[Drive], start: &Start, opts: &Options) -> Resu
     Ok(())
 }
 
+/// The index of the last output sample (the integrator's rule: times `k·interval` up to the
+/// duration, within 1e-9 of it).
+fn last_sample(duration: f64, interval: f64) -> usize {
+    let t_last = duration * (1.0 + 1e-9);
+    let mut k = (t_last / interval).floor().max(0.0) as usize;
+    while (k + 1) as f64 * interval <= t_last {
+        k += 1;
+    }
+    while k > 0 && k as f64 * interval > t_last {
+        k -= 1;
+    }
+    k
+}
+
 /// Simulates `m` under `gravity` with `drives` (empty: a passive run) and extra `forces`
 /// from `start` for `opts.duration`. `cancel` is asked after every step; when it answers true
 /// the run stops with [`SimulationError::Cancelled`]. Drive currents and integrators start at 0.
@@ -609,6 +651,21 @@ pub fn simulate(
     start: &Start,
     opts: &Options,
     cancel: &dyn Fn() -> bool,
+) -> Result<Run, SimulationError> {
+    simulate_observed(m, gravity, drives, forces, start, opts, cancel, None)
+}
+
+/// [`simulate`], handing the output samples to `observer` as the integration reaches them.
+#[allow(clippy::too_many_arguments)]
+pub fn simulate_observed<'a>(
+    m: &'a Mechanism,
+    gravity: &Vector3<f64>,
+    drives: &'a [Drive],
+    forces: &'a dyn GeneralisedForces,
+    start: &Start,
+    opts: &Options,
+    cancel: &'a dyn Fn() -> bool,
+    observer: Option<&'a mut (dyn Observer + 'a)>,
 ) -> Result<Run, SimulationError> {
     check(m, drives, start, opts)?;
     let n = m.dof();
@@ -643,6 +700,8 @@ pub fn simulate(
         samples: RefCell::new(Vec::new()),
         cancel,
         cancelled: Cell::new(None),
+        observer: observer.map(RefCell::new),
+        last_sample: last_sample(opts.duration, opts.output_interval),
     };
     let settings = integrate::Settings {
         rtol: opts.rtol,

@@ -61,22 +61,30 @@ pub fn series(m: &Mechanism, run: &Run, drives: &[Drive]) -> Result<Vec<(String,
     for q in &run.q {
         let k = m.forward(q)?;
         for (p, &b) in placed.iter().enumerate() {
-            let pose = m.body_pose(&k, BodyId(b as u32))?;
-            let r = pose.translation.vector;
-            // R.T = (frame -> world)ᵀ.
-            let t = pose.rotation.to_rotation_matrix().into_inner().transpose();
-            let base = first + 12 * p;
-            for i in 0..3 {
-                out[base + i].1.push(r[i]);
-            }
-            for i in 0..3 {
-                for j in 0..3 {
-                    out[base + 3 + 3 * i + j].1.push(t[(i, j)]);
-                }
+            let f = frame_a(m, &k, b)?;
+            for (x, v) in f.iter().enumerate() {
+                out[first + 12 * p + x].1.push(*v);
             }
         }
     }
     Ok(out)
+}
+
+/// A placed body's `frame_a.r_0[1..3]` and `frame_a.R.T` row by row (MSL: `R.T` = (frame →
+/// world)ᵀ).
+fn frame_a(m: &Mechanism, k: &crate::mechanism::Kinematics, b: usize) -> Result<[f64; 12], MechanismError> {
+    let pose = m.body_pose(k, BodyId(b as u32))?;
+    let r = pose.translation.vector;
+    let t = pose.rotation.to_rotation_matrix().into_inner().transpose();
+    Ok(std::array::from_fn(|x| if x < 3 { r[x] } else { t[((x - 3) / 3, (x - 3) % 3)] }))
+}
+
+/// Every body's `frame_a.r_0` and `R.T` (12 numbers, as [`series`] writes them) at the tree
+/// coordinates `q`, in the package's body order: what a live-view frame carries
+/// (`live::encode`). An error when a body has no place in the mechanism.
+pub fn body_frames(m: &Mechanism, q: &[f64]) -> Result<Vec<[f64; 12]>, MechanismError> {
+    let k = m.forward(q)?;
+    (0..m.body_names().len()).map(|b| frame_a(m, &k, b)).collect()
 }
 
 /// The run as a MAT v4 trajectory file (float64).

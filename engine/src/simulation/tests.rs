@@ -254,3 +254,48 @@ fn the_servo_motor_class_is_simulated_and_the_msl_machine_is_refused_by_name() {
     let err = drive_of("drives.J1", 0, JointKind::Revolute, &msl, &gear, &controller, Reference::Constant(0.0)).expect_err("refused");
     assert!(matches!(&err, SimulationError::Field { field, .. } if field == "drives.J1.motor"), "{err}");
 }
+
+/// Collects what an observer hears: every third sample and the last.
+struct Every3 {
+    heard: Vec<(usize, f64, bool, Vec<f64>)>,
+}
+
+impl Observer for Every3 {
+    fn wants(&mut self, index: usize, _t: f64, last: bool) -> bool {
+        index % 3 == 0 || last
+    }
+    fn sample(&mut self, index: usize, t: f64, last: bool, q: &[f64]) {
+        self.heard.push((index, t, last, q.to_vec()));
+    }
+}
+
+#[test]
+fn an_observer_hears_the_samples_of_the_run_while_it_runs() {
+    let m = arm(2);
+    let g = Vector3::new(0.0, -9.81, 0.0);
+    let start = Start { q: m.q0(), qd: vec![0.0; 2] };
+    // 0.5 s at 0.035 s: the last sample (14, 0.49 s) is not at the duration.
+    let opts = Options { duration: 0.5, output_interval: 0.035, ..Options::default() };
+    let drive = pendulum_drive(&m, 10.0, 0.9, Reference::Constant(m.q0()[0] + 0.3));
+    let mut o = Every3 { heard: Vec::new() };
+    let run = simulate_observed(&m, &g, std::slice::from_ref(&drive), &NoForces, &start, &opts, &never, Some(&mut o)).expect("runs");
+    let plain = simulate(&m, &g, std::slice::from_ref(&drive), &NoForces, &start, &opts, &never).expect("runs");
+    assert_eq!(run, plain, "observing changes nothing");
+    let wanted: Vec<usize> = (0..run.t.len()).filter(|i| i % 3 == 0 || *i == run.t.len() - 1).collect();
+    assert_eq!(o.heard.iter().map(|h| h.0).collect::<Vec<_>>(), wanted);
+    for (index, t, last, q) in &o.heard {
+        assert_eq!(*t, run.t[*index]);
+        assert_eq!(q, &run.q[*index], "sample {index}");
+        assert_eq!(*last, *index == run.t.len() - 1);
+    }
+    // The bodies' frames as the result file has them.
+    let series = series(&m, &run, std::slice::from_ref(&drive)).expect("series");
+    let (index, _, _, q) = o.heard.last().expect("heard");
+    let frames = body_frames(&m, q).expect("frames");
+    assert_eq!(frames.len(), m.body_names().len());
+    for (b, name) in m.body_names().iter().enumerate() {
+        let r1 = series.iter().find(|(n, _)| *n == format!("{name}.frame_a.r_0[1]")).expect("r_0");
+        let t23 = series.iter().find(|(n, _)| *n == format!("{name}.frame_a.R.T[2,3]")).expect("R.T");
+        assert_eq!((frames[b][0], frames[b][3 + 5]), (r1.1[*index], t23.1[*index]), "{name}");
+    }
+}
