@@ -360,6 +360,16 @@ async fn where_tokens_are_required_frames_and_viewers_need_one() {
     let after = counters(&json_of(get("/api/live".into()).await.expect("live"), 200).await);
     assert_eq!(after.1 - before.1, 10, "only the signed run is relayed");
     assert_eq!(after.2["unauthenticated"].as_u64().expect("n") - before.2["unauthenticated"].as_u64().expect("n"), 20);
+    // A live simulation signs its frames with the caller's token (its SHA-256 keys them).
+    let body = serde_json::json!({"duration": 0.1, "drives": false, "live": true, "live_real_time": false});
+    let r = app.client.post(app.url(&format!("/api/models/{id}/simulations"))).header("authorization", auth.clone()).json(&body).send();
+    let sim = json_of(r.await.expect("simulate"), 201).await;
+    let mut seen = Seen::default();
+    read_until_end(&mut ws, &mut seen).await;
+    assert_eq!(seen.frames.len() as u64, sim["live"]["frames"].as_u64().expect("frames"), "{sim:#}");
+    assert!(seen.frames.iter().all(|f| u64::from(f.0) == sim["live"]["run"].as_u64().expect("run")));
+    let last = counters(&json_of(get("/api/live".into()).await.expect("live"), 200).await);
+    assert_eq!(last.2["unauthenticated"], after.2["unauthenticated"], "no simulation frame is unsigned");
     let _ = ws.send(Message::Close(None)).await;
 }
 
