@@ -227,7 +227,7 @@ fn the_result_file_reads_back_with_the_packages_names() {
 }
 
 #[test]
-fn the_servo_motor_class_is_simulated_and_the_msl_machine_is_refused_by_name() {
+fn the_servo_motor_class_and_the_msl_machine_are_simulated_and_other_motors_refused_by_name() {
     use crate::pipeline::back::modelica::mechatronics::{ClassChoice, JointKind, ParamValue};
     let choice = |class: &str, params: &[(&str, f64)]| ClassChoice {
         modelica_class: class.to_string(),
@@ -250,8 +250,38 @@ fn the_servo_motor_class_is_simulated_and_the_msl_machine_is_refused_by_name() {
     assert!((last - target).abs() < 1e-3, "ends at {last}, reference {target}");
     let s = run.drives[0].last().expect("samples");
     assert!((s.tau - 0.05 * s.i).abs() < 1e-15 && s.v == 0.0, "{s:?}");
-    let msl = choice("Modelica.Electrical.Machines.BasicMachines.DCMachines.DC_PermanentMagnet", &[]);
-    let err = drive_of("drives.J1", 0, JointKind::Revolute, &msl, &gear, &controller, Reference::Constant(0.0)).expect_err("refused");
+    // The MSL machine (Motors.MSL_DC_PermanentMagnet): its constants from the nominal point at
+    // the armature's temperatures, as MSL's convertResistance and turnsRatio compute them.
+    let msl = choice(
+        "Modelica.Electrical.Machines.BasicMachines.DCMachines.DC_PermanentMagnet",
+        &[
+            ("VaNominal", 24.0),
+            ("IaNominal", 2.0),
+            ("wNominal", 300.0),
+            ("TaNominal", 353.15),
+            ("Ra", 1.0),
+            ("TaRef", 293.15),
+            ("alpha20a", 0.004),
+            ("La", 2e-4),
+            ("Jr", 2e-5),
+            ("TaOperational", 373.15),
+        ],
+    );
+    let d = drive_of("drives.J1", 0, JointKind::Revolute, &msl, &gear, &controller, Reference::Constant(target)).expect("the MSL machine");
+    // Ra(T) = Ra·(1 + 0.004·(T − 293.15)): 1.24 Ω at 353.15 K, 1.32 Ω at 373.15 K.
+    let want = Motor { kind: MotorKind::DcPermanentMagnet, r: 1.32, l: 2e-4, k: (24.0 - 1.24 * 2.0) / 300.0, j: 2e-5, d: 0.0, v_max: 24.0, i_max: 2.0, tc: 0.001 };
+    for (got, w, what) in [(d.motor.r, want.r, "R"), (d.motor.k, want.k, "k")] {
+        assert!((got - w).abs() < 1e-12, "{what}: {got}, want {w}");
+    }
+    assert_eq!((d.motor.l, d.motor.j, d.motor.v_max, d.motor.i_max, d.motor.tc), (want.l, want.j, want.v_max, want.i_max, want.tc));
+    let run = simulate(&m, &g, std::slice::from_ref(&d), &NoForces, &Start { q: m.q0(), qd: vec![0.0] }, &opts, &never).expect("runs");
+    let last = run.q.last().expect("samples")[0];
+    assert!((last - target).abs() < 1e-3, "the MSL machine ends at {last}, reference {target}");
+    let bad = choice("Modelica.Electrical.Machines.BasicMachines.DCMachines.DC_PermanentMagnet", &[("VaNominal", 1.0), ("IaNominal", 100.0)]);
+    let err = drive_of("drives.J1", 0, JointKind::Revolute, &bad, &gear, &controller, Reference::Constant(0.0)).expect_err("refused");
+    assert!(matches!(&err, SimulationError::Field { field, .. } if field == "drives.J1.motor.VaNominal"), "{err}");
+    let other = choice("Modelica.Electrical.Machines.BasicMachines.InductionMachines.IM_SquirrelCage", &[]);
+    let err = drive_of("drives.J1", 0, JointKind::Revolute, &other, &gear, &controller, Reference::Constant(0.0)).expect_err("refused");
     assert!(matches!(&err, SimulationError::Field { field, .. } if field == "drives.J1.motor"), "{err}");
 }
 
