@@ -20,6 +20,10 @@
 //!   `L·di/dt = v − R·i − k·w`, `τ = k·i`, `J·ẇ = τ − d·w − τ_a` (`τ_a` the torque into the gear);
 //! - `Motors.ServoMotor` (AC servo): `i_cmd = limit(i_ref, ±I_max)`, `Tc·di/dt = i_cmd − i`,
 //!   `τ = k·i`, `J·ẇ = τ − τ_a` (no voltage model: servo datasheets give no winding R, L);
+//! - `Motors.MSL_DC_PermanentMagnet` (the MSL machine in the wrapper's current loop): with MSL's
+//!   default zero brush, core, stray-load and friction losses it is the DC motor above with
+//!   `R = Ra(TaOperational)`, `L = La`, `k = (VaNominal − Ra(TaNominal)·IaNominal)/wNominal`,
+//!   `J = Jr`, `d = 0` (`parts.rs`);
 //! - `Gears.Ideal`/`LeadScrew`: the joint gets `r·τ_a`; `Gears.Efficiency` (MSL `LossyGear`,
 //!   `lossTable = [0, η, η, 0, 0]`): `η·r·τ_a` while power flows from the motor to the joint
 //!   (`τ_a·w ≥ 0`), `r·τ_a/η` while it flows back. The rotor inertia thus appears on the joint as
@@ -38,6 +42,9 @@
 //! lock: its torque ratio between η and 1/η) keeps its mode until its switching function
 //! crosses again; the locked state itself is not modelled. The reference's samples (a motion's
 //! or a table's, interpolated linearly) are breakpoints where steps end.
+//!
+//! An [`Observer`] ([`simulate_observed`]) hears the output samples as the integration reaches
+//! them (the service sends live-view frames from them); the engine itself does no IO.
 //!
 //! Extra generalised forces (joint damping, friction, couplings) enter through
 //! [`GeneralisedForces`], added to the drive torques before the forward dynamics.
