@@ -362,11 +362,24 @@ pub struct RunCollisions {
     pub first_contact: Option<FirstContact>,
     /// The pairs that touch, the earliest first.
     pub contacts: Vec<RunContact>,
+    /// Why the run was not checked (the check's budget), when it was not.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub not_checked: Option<String>,
 }
 
 /// Checks a simulated run: the model's coordinates `q[i]` at `times[i]` (its output samples).
 pub fn along_run(mech: &Mechanism, v: &VersionShapes, edits: &Edits, times: &[f64], q: &[Vec<f64>]) -> Result<RunCollisions, CollisionError> {
-    within_budget(v, edits, times.len()).map_err(|what| CollisionError::TooLarge(format!("the run is too large to check for collisions: {what}")))?;
+    if let Err(what) = within_budget(v, edits, times.len()) {
+        // The run stands; only its contacts are unknown.
+        return Ok(RunCollisions {
+            samples: times.len(),
+            pairs_checked: 0,
+            guarantee: String::new(),
+            first_contact: None,
+            contacts: Vec::new(),
+            not_checked: Some(format!("the run is too large to check for collisions: {what}")),
+        });
+    }
     let (sweep, pairs, first_contact) = sweep_along(mech, v, edits, times, &|i| q[i].clone())?;
     let mut contacts: Vec<RunContact> = pairs
         .iter()
@@ -375,5 +388,52 @@ pub fn along_run(mech: &Mechanism, v: &VersionShapes, edits: &Edits, times: &[f6
         })
         .collect();
     contacts.sort_by(|x, y| x.first_contact.total_cmp(&y.first_contact));
-    Ok(RunCollisions { samples: sweep.samples, pairs_checked: pairs.len(), guarantee: sweep.guarantee, first_contact, contacts })
+    Ok(RunCollisions { samples: sweep.samples, pairs_checked: pairs.len(), guarantee: sweep.guarantee, first_contact, contacts, not_checked: None })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn shapes(bodies: usize) -> VersionShapes {
+        let part = collision::ConvexPart { vertices: vec![[0.0, 0.0, 0.0]], faces: Vec::new(), radius: 0.1 };
+        let shape = BodyShape {
+            kind: ShapeKind::Hull,
+            parts: vec![part],
+            vertex_count: 1,
+            fit_error: 0.0,
+            volume_ratio: 0.0,
+            source_triangles: 0,
+            warnings: Vec::new(),
+        };
+        VersionShapes {
+            bodies: (0..bodies).map(|b| format!("B{b}")).collect(),
+            shapes: vec![Some(shape); bodies],
+            joined: BTreeMap::new(),
+            cad: vec![Isometry3::identity(); bodies],
+            report_bodies: serde_json::Value::Null,
+            model_bodies: bodies,
+            scene: Vec::new(),
+        }
+    }
+
+    /// A simulated run beyond the check's budgets is answered without its contacts, saying why
+    /// (the run itself stands), and the budget counts checked pairs only.
+    #[test]
+    fn the_budgets_count_samples_poses_and_checked_pairs() {
+        let v = shapes(200);
+        // 200 bodies: 19,900 pairs × 2001 samples is beyond 20 M pair tests.
+        let err = within_budget(&v, &Edits::new(), 2001).expect_err("too many pair tests");
+        assert!(err.contains("19900 checked pairs"), "{err}");
+        assert!(within_budget(&v, &Edits::new(), 1000).is_ok());
+        assert!(within_budget(&shapes(2), &Edits::new(), MAX_SWEEP_SAMPLES + 1).expect_err("samples").contains("samples"));
+        // Pairs allowed by the matrix are not checked, so not counted.
+        let mut joined = shapes(200);
+        for a in 0..200 {
+            for b in a + 1..200 {
+                joined.joined.insert((a, b), "test".into());
+            }
+        }
+        assert!(within_budget(&joined, &Edits::new(), 2001).is_ok());
+    }
 }

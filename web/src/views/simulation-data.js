@@ -95,6 +95,7 @@ export function trackingErrors(traj, simulated) {
 export function contactLine(answer) {
   const c = answer?.collisions;
   if (!c) return null;
+  if (c.not_checked) return { contact: false, text: `Contacts not checked: ${c.not_checked}.` };
   if (!c.first_contact) return { contact: false, text: `No contact along the simulated motion (${c.pairs_checked} checked pairs, ${c.samples} samples).` };
   const f = c.first_contact;
   const more = c.contacts.length > 1 ? ` ${c.contacts.length} pairs touch: ${c.contacts.map((p) => `${p.a}/${p.b} at ${p.first_contact.toFixed(3)} s`).join(', ')}.` : '';

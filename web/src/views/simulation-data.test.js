@@ -61,5 +61,6 @@ test('contactLine names the first contact along the simulated motion, or says th
   });
   assert.equal(hit.contact, true);
   assert.equal(hit.text, 'First contact along the simulated motion: arm touches obstacle at 0.332 s. 2 pairs touch: arm/obstacle at 0.332 s, base/crate at 0.800 s.');
+  assert.equal(contactLine({ collisions: { samples: 2001, pairs_checked: 0, first_contact: null, contacts: [], not_checked: 'too large' } }).text, 'Contacts not checked: too large.');
   assert.equal(simulationBody({ motionId: 'm', motionDuration: 1, maxJointErrorMilli: '', maxToolErrorMm: '', live: true }).live, true);
 });
