@@ -384,7 +384,8 @@ async fn stored_frames(app: &TestApp, rid: &str, bodies: &[String]) -> (Vec<f64>
     let mut columns: Vec<Vec<f64>> = Vec::new();
     let mut t = Vec::new();
     for chunk in names.chunks(48) {
-        let q: Vec<String> = chunk.iter().map(|n| format!("name={}", n.replace('[', "%5B").replace(']', "%5D").replace(',', "%2C"))).collect();
+        let q: Vec<String> =
+            chunk.iter().map(|n| format!("name={}", n.replace('[', "%5B").replace(']', "%5D").replace(',', "%2C"))).collect();
         let got = json_of(app.get(&format!("/api/results/{rid}/series?{}&width=10000", q.join("&"))).await, 200).await;
         for v in got["variables"].as_array().expect("variables") {
             t = v["t"].as_array().expect("t").iter().map(|x| x.as_f64().expect("t")).collect();
@@ -406,7 +407,11 @@ async fn a_live_simulation_is_relayed_with_the_poses_of_its_stored_result() {
     let (id, v, job) = app.upload_model_ok(arm_zip(2), &[("gravity", "0,0,-9.81")]).await;
     assert_eq!(app.wait_for_job(&job).await["status"], "succeeded");
     let url = app.url(&format!("/api/models/{id}/simulations"));
-    let p = json_of(app.client.post(&url).json(&serde_json::json!({"duration": 0.5, "live": true, "live_period": 0.001})).send().await.expect("post"), 422).await;
+    let p = json_of(
+        app.client.post(&url).json(&serde_json::json!({"duration": 0.5, "live": true, "live_period": 0.001})).send().await.expect("post"),
+        422,
+    )
+    .await;
     assert_eq!(p["errors"][0]["field"], "live_period", "{p:#}");
 
     let mut ws = connect(&app, &format!("/api/models/{id}/versions/{v}/live/ws"), "cad2mo.live").await.expect("websocket");
@@ -426,7 +431,11 @@ async fn a_live_simulation_is_relayed_with_the_poses_of_its_stored_result() {
     println!("live simulation: {} frames in {wall:.3} s, {:#}", seen.frames.len(), sim["live"]);
     assert!(wall >= 0.5, "paced to the wall clock: {wall} s");
     let live = &sim["live"];
-    assert_eq!((live["frames"].as_u64(), live["send_errors"].as_u64(), live["real_time"].as_bool()), (Some(26), Some(0), Some(true)), "{sim:#}");
+    assert_eq!(
+        (live["frames"].as_u64(), live["send_errors"].as_u64(), live["real_time"].as_bool()),
+        (Some(26), Some(0), Some(true)),
+        "{sim:#}"
+    );
     assert!((live["period"].as_f64().expect("period") - 0.02).abs() < 1e-12, "{live:#}");
     assert_eq!(seen.frames.len(), 26, "every frame relayed: {:?}", seen.texts);
     let hello = seen.texts.iter().find(|x| x["type"] == "hello").expect("hello");
@@ -438,7 +447,8 @@ async fn a_live_simulation_is_relayed_with_the_poses_of_its_stored_result() {
         let i = t.iter().position(|x| x == time).unwrap_or_else(|| panic!("frame {k} at {time} s is no instant of the result"));
         assert!((time - 0.02 * k as f64).abs() < 1e-12, "frame {k} at {time} s");
         // The stored poses as a frame carries them: the relay's own path from r_0 and R.T.
-        let h = cad2mo_engine::live::Header { model, version: v as u32, layout: cad2mo_engine::live::layout_id(&bodies), ..Default::default() };
+        let h =
+            cad2mo_engine::live::Header { model, version: v as u32, layout: cad2mo_engine::live::layout_id(&bodies), ..Default::default() };
         let bytes = cad2mo_engine::live::encode(&h, &stored[i], None);
         let mut want = Vec::new();
         cad2mo_engine::live::poses_into(&cad2mo_engine::live::decode(&bytes).expect("frame"), &mut want).expect("poses");

@@ -196,7 +196,9 @@ async fn scenes_are_stored_checked_and_collide() {
     let series = json_of(app.get(&format!("/api/results/{rid}/series?name=shoulder.phi&width=10000")).await, 200).await;
     let times: Vec<f64> = serde_json::from_value(series["variables"][0]["t"].clone()).expect("t");
     let q: Vec<f64> = serde_json::from_value(series["variables"][0]["y"].clone()).expect("q");
-    let t_sim = contact("arm", "obstacle").unwrap_or_else(|| panic!("the falling arm meets the obstacle: {c:#}, q {:?}", q.iter().step_by(200).collect::<Vec<_>>()))["first_contact"]
+    let t_sim = contact("arm", "obstacle")
+        .unwrap_or_else(|| panic!("the falling arm meets the obstacle: {c:#}, q {:?}", q.iter().step_by(200).collect::<Vec<_>>()))
+        ["first_contact"]
         .as_f64()
         .expect("time");
     assert_eq!(times.len(), c["samples"].as_u64().expect("samples") as usize, "{c:#}");
@@ -204,7 +206,8 @@ async fn scenes_are_stored_checked_and_collide() {
     let step = times[1] - times[0];
     assert!((t_sim - times[k]).abs() <= step + 1e-9, "first contact {t_sim} s, independent {} s; {}", times[k], c["guarantee"]);
     assert!(times[k] > 0.05 && q[0] == 0.3, "it falls from 0.3 rad: {} s, q0 {}", times[k], q[0]);
-    let t_crate = contact("base", "crate").unwrap_or_else(|| panic!("the crate reaches the base: {c:#}"))["first_contact"].as_f64().expect("t");
+    let t_crate =
+        contact("base", "crate").unwrap_or_else(|| panic!("the crate reaches the base: {c:#}"))["first_contact"].as_f64().expect("t");
     assert!((t_crate - 0.8).abs() <= step + 1e-9, "crate contact at {t_crate} s");
     let first = c["first_contact"]["time"].as_f64().expect("first contact");
     assert!(first <= t_sim.min(t_crate), "{c:#}");

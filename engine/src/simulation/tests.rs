@@ -269,7 +269,17 @@ fn the_servo_motor_class_and_the_msl_machine_are_simulated_and_other_motors_refu
     );
     let d = drive_of("drives.J1", 0, JointKind::Revolute, &msl, &gear, &controller, Reference::Constant(target)).expect("the MSL machine");
     // Ra(T) = Ra·(1 + 0.004·(T − 293.15)): 1.24 Ω at 353.15 K, 1.32 Ω at 373.15 K.
-    let want = Motor { kind: MotorKind::DcPermanentMagnet, r: 1.32, l: 2e-4, k: (24.0 - 1.24 * 2.0) / 300.0, j: 2e-5, d: 0.0, v_max: 24.0, i_max: 2.0, tc: 0.001 };
+    let want = Motor {
+        kind: MotorKind::DcPermanentMagnet,
+        r: 1.32,
+        l: 2e-4,
+        k: (24.0 - 1.24 * 2.0) / 300.0,
+        j: 2e-5,
+        d: 0.0,
+        v_max: 24.0,
+        i_max: 2.0,
+        tc: 0.001,
+    };
     for (got, w, what) in [(d.motor.r, want.r, "R"), (d.motor.k, want.k, "k")] {
         assert!((got - w).abs() < 1e-12, "{what}: {got}, want {w}");
     }
@@ -277,7 +287,8 @@ fn the_servo_motor_class_and_the_msl_machine_are_simulated_and_other_motors_refu
     let run = simulate(&m, &g, std::slice::from_ref(&d), &NoForces, &Start { q: m.q0(), qd: vec![0.0] }, &opts, &never).expect("runs");
     let last = run.q.last().expect("samples")[0];
     assert!((last - target).abs() < 1e-3, "the MSL machine ends at {last}, reference {target}");
-    let bad = choice("Modelica.Electrical.Machines.BasicMachines.DCMachines.DC_PermanentMagnet", &[("VaNominal", 1.0), ("IaNominal", 100.0)]);
+    let bad =
+        choice("Modelica.Electrical.Machines.BasicMachines.DCMachines.DC_PermanentMagnet", &[("VaNominal", 1.0), ("IaNominal", 100.0)]);
     let err = drive_of("drives.J1", 0, JointKind::Revolute, &bad, &gear, &controller, Reference::Constant(0.0)).expect_err("refused");
     assert!(matches!(&err, SimulationError::Field { field, .. } if field == "drives.J1.motor.VaNominal"), "{err}");
     let other = choice("Modelica.Electrical.Machines.BasicMachines.InductionMachines.IM_SquirrelCage", &[]);

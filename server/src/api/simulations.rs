@@ -92,10 +92,8 @@ async fn create(
 /// Where a run's live frames go: the relay's port at the host packages send to, the version's
 /// bodies as the relay knows them, the caller's token where frames must be signed.
 async fn live_target(state: &AppState, model_id: &str, version: i64, headers: &HeaderMap) -> Result<LiveTarget, ApiError> {
-    let off = |why: String| ApiError::Invalid {
-        detail: format!("live: {why}"),
-        errors: vec![FieldError { field: "live".into(), message: why }],
-    };
+    let off =
+        |why: String| ApiError::Invalid { detail: format!("live: {why}"), errors: vec![FieldError { field: "live".into(), message: why }] };
     let Some(addr) = state.relay.addr() else {
         return Err(off(format!("the service's live view is off ({})", state.relay.off_reason().unwrap_or("not listening"))));
     };

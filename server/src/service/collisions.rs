@@ -368,7 +368,13 @@ pub struct RunCollisions {
 }
 
 /// Checks a simulated run: the model's coordinates `q[i]` at `times[i]` (its output samples).
-pub fn along_run(mech: &Mechanism, v: &VersionShapes, edits: &Edits, times: &[f64], q: &[Vec<f64>]) -> Result<RunCollisions, CollisionError> {
+pub fn along_run(
+    mech: &Mechanism,
+    v: &VersionShapes,
+    edits: &Edits,
+    times: &[f64],
+    q: &[Vec<f64>],
+) -> Result<RunCollisions, CollisionError> {
     if let Err(what) = within_budget(v, edits, times.len()) {
         // The run stands; only its contacts are unknown.
         return Ok(RunCollisions {
@@ -388,7 +394,14 @@ pub fn along_run(mech: &Mechanism, v: &VersionShapes, edits: &Edits, times: &[f6
         })
         .collect();
     contacts.sort_by(|x, y| x.first_contact.total_cmp(&y.first_contact));
-    Ok(RunCollisions { samples: sweep.samples, pairs_checked: pairs.len(), guarantee: sweep.guarantee, first_contact, contacts, not_checked: None })
+    Ok(RunCollisions {
+        samples: sweep.samples,
+        pairs_checked: pairs.len(),
+        guarantee: sweep.guarantee,
+        first_contact,
+        contacts,
+        not_checked: None,
+    })
 }
 
 #[cfg(test)]

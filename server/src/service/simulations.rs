@@ -19,10 +19,10 @@ use std::time::{Duration, Instant};
 
 use serde::{Deserialize, Serialize};
 
+use super::collisions::{along_run, Edits, RunCollisions, VersionShapes};
 use super::drives::{DriveError, ReferenceSpec, ResolvedDrive};
 use super::motions::{self, Kinematic, MotionError};
 use super::results::ResultError;
-use super::collisions::{along_run, Edits, RunCollisions, VersionShapes};
 use super::FieldError;
 use crate::store::StoreError;
 use cad2mo_engine::live;
@@ -386,7 +386,10 @@ pub fn run(req: &SimulationRequest, inputs: &Inputs, cancel: &AtomicBool, deadli
         (true, Some(target)) => match (target.host.as_str(), target.port).to_socket_addrs().map(|mut a| a.next()) {
             Ok(Some(addr)) => Some((target, addr)),
             Ok(None) | Err(_) => {
-                errors.push(FieldError { field: "live".into(), message: format!("the live view's address {}:{} does not resolve", target.host, target.port) });
+                errors.push(FieldError {
+                    field: "live".into(),
+                    message: format!("the live view's address {}:{} does not resolve", target.host, target.port),
+                });
                 None
             }
         },
