@@ -461,3 +461,18 @@ async fn a_live_simulation_is_relayed_with_the_poses_of_its_stored_result() {
     assert_ne!(seen.frames[0].3, seen.frames[25].3);
     assert!(seen.texts.iter().any(|x| x["type"] == "end"));
 }
+
+/// With the live view off, a live simulation is a 422 naming `live` and saying why; without
+/// `live` the same run works.
+#[tokio::test]
+async fn a_live_simulation_needs_the_live_view_on() {
+    let app = TestApp::spawn_with(|s| s.live_bind = None).await;
+    let (id, _, job) = app.upload_model_ok(arm_zip(1), &[]).await;
+    assert_eq!(app.wait_for_job(&job).await["status"], "succeeded");
+    let url = app.url(&format!("/api/models/{id}/simulations"));
+    let p = json_of(app.client.post(&url).json(&serde_json::json!({"duration": 0.05, "live": true})).send().await.expect("post"), 422).await;
+    assert_eq!(p["errors"][0]["field"], "live", "{p:#}");
+    assert!(p["errors"][0]["message"].as_str().expect("message").contains("live view is off"), "{p:#}");
+    let sim = json_of(app.client.post(&url).json(&serde_json::json!({"duration": 0.05})).send().await.expect("post"), 201).await;
+    assert!(sim.get("live").is_none(), "{sim:#}");
+}
