@@ -470,7 +470,8 @@ async fn a_live_simulation_needs_the_live_view_on() {
     let (id, _, job) = app.upload_model_ok(arm_zip(1), &[]).await;
     assert_eq!(app.wait_for_job(&job).await["status"], "succeeded");
     let url = app.url(&format!("/api/models/{id}/simulations"));
-    let p = json_of(app.client.post(&url).json(&serde_json::json!({"duration": 0.05, "live": true})).send().await.expect("post"), 422).await;
+    let p =
+        json_of(app.client.post(&url).json(&serde_json::json!({"duration": 0.05, "live": true})).send().await.expect("post"), 422).await;
     assert_eq!(p["errors"][0]["field"], "live", "{p:#}");
     assert!(p["errors"][0]["message"].as_str().expect("message").contains("live view is off"), "{p:#}");
     let sim = json_of(app.client.post(&url).json(&serde_json::json!({"duration": 0.05})).send().await.expect("post"), 201).await;

@@ -107,6 +107,10 @@ pub enum MotorKind {
     /// current loop's voltage, limited to ±`v_max`.
     #[default]
     DcPermanentMagnet,
+    /// `Motors.MSL_DC_PermanentMagnet`: the same equations as `DcPermanentMagnet` (the MSL
+    /// machine without losses, constants from its nominal point: `parts.rs`); the result file
+    /// adds the machine's own variable names (`motor.dcpm.ia`, ...).
+    MslDcPermanentMagnet,
     /// `Motors.ServoMotor`: the servo amplifier's current loop as a first-order lag,
     /// `Tc·di/dt = i_cmd − i`; no voltage model (`r`, `l`, `v_max` and `d` unused).
     Servo,
@@ -450,7 +454,7 @@ impl Model<'_> {
             gd[0] = i_ref - mo.i_max;
             gd[1] = i_ref + mo.i_max;
             let (v_cmd, v, di) = match mo.kind {
-                MotorKind::DcPermanentMagnet => {
+                MotorKind::DcPermanentMagnet | MotorKind::MslDcPermanentMagnet => {
                     let v_cmd = mo.r * i_cmd + mo.k * w + mo.l / mo.tc * (i_cmd - i);
                     let v = limited(v_cmd, mo.v_max, mode.voltage);
                     gd[2] = v_cmd - mo.v_max;
@@ -605,7 +609,7 @@ fn check(m: &Mechanism, drives: &[Drive], start: &Start, opts: &Options) -> Resu
             return Err(field(f("coordinate"), format!("coordinate {c} has two drives")));
         }
         let mo = &drive.motor;
-        if mo.kind == MotorKind::DcPermanentMagnet {
+        if mo.kind != MotorKind::Servo {
             positive(f("motor.R"), mo.r, true)?;
             positive(f("motor.L"), mo.l, false)?;
             positive(f("motor.d"), mo.d, true)?;

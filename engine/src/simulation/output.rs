@@ -1,7 +1,8 @@
 //! A run as a MAT v4 result with the variable names a Modelica tool writes for our package
 //! (`Mechatronics` extends `Mechanics`): `<joint>.phi`/`w`/`a` (`s`/`v`/`a` for prismatic joints),
 //! `drive_<joint>.motor.i` (and `i_cmd`, `v`, `v_cmd`, `phi`, `w`, `tau`, the limits `I_max`,
-//! `V_max`), `drive_<joint>.controller.q_ref`/`qd_ref`/`i_ref`, and every placed body's
+//! `V_max`; for the MSL machine also `motor.dcpm.ia`, `phiMechanical`, `wMechanical`,
+//! `tauElectrical` and `motor.supply.v`), `drive_<joint>.controller.q_ref`/`qd_ref`/`i_ref`, and every placed body's
 //! `<body>.frame_a.r_0[i]` and `<body>.frame_a.R.T[i,j]` (MSL: `R.T` turns world vectors into
 //! frame coordinates, so it is the transpose of the frame -> world rotation). Written in float64
 //! (OpenModelica's spelling `R.T[i,j]`), read back by `results::mat` like an uploaded result.
@@ -41,6 +42,15 @@ pub fn series(m: &Mechanism, run: &Run, drives: &[Drive]) -> Result<Vec<(String,
         out.push((format!("{motor}.tau"), col(|x| x.tau)));
         out.push((format!("{motor}.I_max"), vec![drive.motor.i_max; s.len()]));
         out.push((format!("{motor}.V_max"), vec![drive.motor.v_max; s.len()]));
+        if drive.motor.kind == super::MotorKind::MslDcPermanentMagnet {
+            // The wrapper's MSL machine and power stage by their own names (the names above,
+            // which the UI plots, stay for every DC motor).
+            out.push((format!("{motor}.dcpm.ia"), col(|x| x.i)));
+            out.push((format!("{motor}.dcpm.phiMechanical"), col(|x| x.phi)));
+            out.push((format!("{motor}.dcpm.wMechanical"), col(|x| x.w)));
+            out.push((format!("{motor}.dcpm.tauElectrical"), col(|x| x.tau)));
+            out.push((format!("{motor}.supply.v"), col(|x| x.v)));
+        }
         out.push((format!("{ctrl}.q_ref"), col(|x| x.q_ref)));
         out.push((format!("{ctrl}.qd_ref"), col(|x| x.qd_ref)));
         out.push((format!("{ctrl}.i_ref"), col(|x| x.i_ref)));

@@ -76,7 +76,7 @@ pub fn drive_of(
                 ));
             }
             Motor {
-                kind: MotorKind::DcPermanentMagnet,
+                kind: MotorKind::MslDcPermanentMagnet,
                 r: convert_resistance(ra, t_ref, alpha, real(motor, "TaOperational", 293.15, &pm)?),
                 l: real(motor, "La", 0.0015, &pm)?,
                 k: psi,
@@ -99,12 +99,14 @@ pub fn drive_of(
             i_max: real(motor, "I_max", 9.3, &pm)?,
             tc: real(motor, "Tc", 0.001, &pm)?,
         },
-        other => return Err(field(
-            pm,
-            format!(
+        other => {
+            return Err(field(
+                pm,
+                format!(
                 "the simulation knows the motor classes {DC_PERMANENT_MAGNET}, {MSL_DC_CLASS} and {SERVO_MOTOR_CLASS} only, not {other}"
             ),
-        )),
+            ))
+        }
     };
     let transmission = match (gear.modelica_class.as_str(), kind) {
         ("Modelica.Mechanics.Rotational.Components.IdealGear", JointKind::Revolute) => {

@@ -270,7 +270,7 @@ fn the_servo_motor_class_and_the_msl_machine_are_simulated_and_other_motors_refu
     let d = drive_of("drives.J1", 0, JointKind::Revolute, &msl, &gear, &controller, Reference::Constant(target)).expect("the MSL machine");
     // Ra(T) = Ra·(1 + 0.004·(T − 293.15)): 1.24 Ω at 353.15 K, 1.32 Ω at 373.15 K.
     let want = Motor {
-        kind: MotorKind::DcPermanentMagnet,
+        kind: MotorKind::MslDcPermanentMagnet,
         r: 1.32,
         l: 2e-4,
         k: (24.0 - 1.24 * 2.0) / 300.0,
@@ -287,6 +287,18 @@ fn the_servo_motor_class_and_the_msl_machine_are_simulated_and_other_motors_refu
     let run = simulate(&m, &g, std::slice::from_ref(&d), &NoForces, &Start { q: m.q0(), qd: vec![0.0] }, &opts, &never).expect("runs");
     let last = run.q.last().expect("samples")[0];
     assert!((last - target).abs() < 1e-3, "the MSL machine ends at {last}, reference {target}");
+    assert_eq!(d.motor.kind, want.kind);
+    // The same run as the DC motor class with the derived constants; the result file names the
+    // MSL machine's variables too.
+    let mut dc = d.clone();
+    dc.motor.kind = MotorKind::DcPermanentMagnet;
+    let dc_run = simulate(&m, &g, std::slice::from_ref(&dc), &NoForces, &Start { q: m.q0(), qd: vec![0.0] }, &opts, &never).expect("runs");
+    assert_eq!(dc_run.q, run.q);
+    let names: Vec<String> = series(&m, &run, std::slice::from_ref(&d)).expect("series").into_iter().map(|(n, _)| n).collect();
+    let joint = &m.coordinates()[0].name;
+    for v in ["motor.i", "motor.dcpm.ia", "motor.dcpm.wMechanical", "motor.dcpm.tauElectrical", "motor.supply.v"] {
+        assert!(names.contains(&format!("drive_{joint}.{v}")), "{v} in {names:?}");
+    }
     let bad =
         choice("Modelica.Electrical.Machines.BasicMachines.DCMachines.DC_PermanentMagnet", &[("VaNominal", 1.0), ("IaNominal", 100.0)]);
     let err = drive_of("drives.J1", 0, JointKind::Revolute, &bad, &gear, &controller, Reference::Constant(0.0)).expect_err("refused");
