@@ -399,7 +399,8 @@ pub fn run(req: &SimulationRequest, inputs: &Inputs, cancel: &AtomicBool, deadli
     }
     // Output samples within the file's bound.
     let placed = (0..m.body_names().len()).filter(|&b| m.body_attachment(cad2mo_engine::pipeline::ir::BodyId(b as u32)).is_some()).count();
-    let variables = 1 + 3 * n + 12 * drives.len() + 12 * placed;
+    // Per drive 12 signals, 17 with the MSL machine's own names.
+    let variables = 1 + 3 * n + 17 * drives.len() + 12 * placed;
     let instants = MAX_SAMPLES.min(MAX_RESULT_VALUES / variables.max(1)).max(2);
     let opts = sim::Options {
         duration: req.duration,
