@@ -360,5 +360,120 @@ async fn where_tokens_are_required_frames_and_viewers_need_one() {
     let after = counters(&json_of(get("/api/live".into()).await.expect("live"), 200).await);
     assert_eq!(after.1 - before.1, 10, "only the signed run is relayed");
     assert_eq!(after.2["unauthenticated"].as_u64().expect("n") - before.2["unauthenticated"].as_u64().expect("n"), 20);
+    // A live simulation signs its frames with the caller's token (its SHA-256 keys them).
+    let body = serde_json::json!({"duration": 0.1, "drives": false, "live": true, "live_real_time": false});
+    let r = app.client.post(app.url(&format!("/api/models/{id}/simulations"))).header("authorization", auth.clone()).json(&body).send();
+    let sim = json_of(r.await.expect("simulate"), 201).await;
+    let mut seen = Seen::default();
+    read_until_end(&mut ws, &mut seen).await;
+    assert_eq!(seen.frames.len() as u64, sim["live"]["frames"].as_u64().expect("frames"), "{sim:#}");
+    assert!(seen.frames.iter().all(|f| u64::from(f.0) == sim["live"]["run"].as_u64().expect("run")));
+    let last = counters(&json_of(get("/api/live".into()).await.expect("live"), 200).await);
+    assert_eq!(last.2["unauthenticated"], after.2["unauthenticated"], "no simulation frame is unsigned");
     let _ = ws.send(Message::Close(None)).await;
+}
+
+/// The bodies' frames of a stored result at each of its instants, read through the results API:
+/// per instant, 12 numbers per body (`frame_a.r_0`, then `R.T` row by row), bodies in `bodies`' order.
+async fn stored_frames(app: &TestApp, rid: &str, bodies: &[String]) -> (Vec<f64>, Vec<Vec<[f64; 12]>>) {
+    let mut names = Vec::new();
+    for b in bodies {
+        names.extend((1..=3).map(|i| format!("{b}.frame_a.r_0[{i}]")));
+        names.extend((1..=3).flat_map(|i| (1..=3).map(move |j| format!("{b}.frame_a.R.T[{i},{j}]"))));
+    }
+    let mut columns: Vec<Vec<f64>> = Vec::new();
+    let mut t = Vec::new();
+    for chunk in names.chunks(48) {
+        let q: Vec<String> =
+            chunk.iter().map(|n| format!("name={}", n.replace('[', "%5B").replace(']', "%5D").replace(',', "%2C"))).collect();
+        let got = json_of(app.get(&format!("/api/results/{rid}/series?{}&width=10000", q.join("&"))).await, 200).await;
+        for v in got["variables"].as_array().expect("variables") {
+            t = v["t"].as_array().expect("t").iter().map(|x| x.as_f64().expect("t")).collect();
+            columns.push(v["y"].as_array().expect("y").iter().map(|x| x.as_f64().expect("y")).collect());
+        }
+    }
+    assert_eq!(columns.len(), 12 * bodies.len());
+    let frames = (0..t.len()).map(|k| (0..bodies.len()).map(|b| std::array::from_fn(|x| columns[12 * b + x][k])).collect()).collect();
+    (t, frames)
+}
+
+/// A closed-loop simulation with `live` on sends its bodies' poses to the relay while it runs
+/// (paced to the wall clock, a frame every 0.02 s of simulated time, the last one final): the
+/// Live tab's WebSocket gets every frame, each at an instant of the stored result and equal to
+/// the result's poses there as the protocol carries them (f32, re-orthonormalised) within 1e-9.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_live_simulation_is_relayed_with_the_poses_of_its_stored_result() {
+    let app = TestApp::spawn().await;
+    let (id, v, job) = app.upload_model_ok(arm_zip(2), &[("gravity", "0,0,-9.81")]).await;
+    assert_eq!(app.wait_for_job(&job).await["status"], "succeeded");
+    let url = app.url(&format!("/api/models/{id}/simulations"));
+    let p = json_of(
+        app.client.post(&url).json(&serde_json::json!({"duration": 0.5, "live": true, "live_period": 0.001})).send().await.expect("post"),
+        422,
+    )
+    .await;
+    assert_eq!(p["errors"][0]["field"], "live_period", "{p:#}");
+
+    let mut ws = connect(&app, &format!("/api/models/{id}/versions/{v}/live/ws"), "cad2mo.live").await.expect("websocket");
+    let started = std::time::Instant::now();
+    let joints = json_of(app.get(&format!("/api/models/{id}/joints")).await, 200).await;
+    let first = joints["joints"][0]["name"].as_str().expect("joint").to_string();
+    let body = serde_json::json!({"duration": 0.5, "drives": false, "start": {first: 0.4}, "live": true});
+    let post = tokio::spawn({
+        let client = app.client.clone();
+        async move { client.post(&url).json(&body).send().await.expect("post") }
+    });
+    let mut seen = Seen::default();
+    read_until_end(&mut ws, &mut seen).await;
+    let sim = json_of(post.await.expect("task"), 201).await;
+    let wall = started.elapsed().as_secs_f64();
+    let _ = ws.send(Message::Close(None)).await;
+    println!("live simulation: {} frames in {wall:.3} s, {:#}", seen.frames.len(), sim["live"]);
+    assert!(wall >= 0.5, "paced to the wall clock: {wall} s");
+    let live = &sim["live"];
+    assert_eq!(
+        (live["frames"].as_u64(), live["send_errors"].as_u64(), live["real_time"].as_bool()),
+        (Some(26), Some(0), Some(true)),
+        "{sim:#}"
+    );
+    assert!((live["period"].as_f64().expect("period") - 0.02).abs() < 1e-12, "{live:#}");
+    assert_eq!(seen.frames.len(), 26, "every frame relayed: {:?}", seen.texts);
+    let hello = seen.texts.iter().find(|x| x["type"] == "hello").expect("hello");
+    let bodies: Vec<String> = hello["bodies"].as_array().expect("bodies").iter().map(|b| b.as_str().expect("name").to_string()).collect();
+    let (t, stored) = stored_frames(&app, sim["result_id"].as_str().expect("result"), &bodies).await;
+    let model: [u8; 16] = hex_bytes(&id.replace('-', ""));
+    for (k, (run, seq, time, poses)) in seen.frames.iter().enumerate() {
+        assert_eq!((u64::from(*run), *seq as usize), (live["run"].as_u64().expect("run"), k));
+        let i = t.iter().position(|x| x == time).unwrap_or_else(|| panic!("frame {k} at {time} s is no instant of the result"));
+        assert!((time - 0.02 * k as f64).abs() < 1e-12, "frame {k} at {time} s");
+        // The stored poses as a frame carries them: the relay's own path from r_0 and R.T.
+        let h =
+            cad2mo_engine::live::Header { model, version: v as u32, layout: cad2mo_engine::live::layout_id(&bodies), ..Default::default() };
+        let bytes = cad2mo_engine::live::encode(&h, &stored[i], None);
+        let mut want = Vec::new();
+        cad2mo_engine::live::poses_into(&cad2mo_engine::live::decode(&bytes).expect("frame"), &mut want).expect("poses");
+        assert_eq!(poses.len(), want.len());
+        for (c, (a, b)) in poses.iter().zip(&want).enumerate() {
+            assert!((f64::from(*a) - f64::from(*b)).abs() <= 1e-9, "frame {k} (t = {time}), number {c}: {a} relayed, {b} stored");
+        }
+    }
+    // The arm fell: the last frame is not the first.
+    assert_ne!(seen.frames[0].3, seen.frames[25].3);
+    assert!(seen.texts.iter().any(|x| x["type"] == "end"));
+}
+
+/// With the live view off, a live simulation is a 422 naming `live` and saying why; without
+/// `live` the same run works.
+#[tokio::test]
+async fn a_live_simulation_needs_the_live_view_on() {
+    let app = TestApp::spawn_with(|s| s.live_bind = None).await;
+    let (id, _, job) = app.upload_model_ok(arm_zip(1), &[]).await;
+    assert_eq!(app.wait_for_job(&job).await["status"], "succeeded");
+    let url = app.url(&format!("/api/models/{id}/simulations"));
+    let p =
+        json_of(app.client.post(&url).json(&serde_json::json!({"duration": 0.05, "live": true})).send().await.expect("post"), 422).await;
+    assert_eq!(p["errors"][0]["field"], "live", "{p:#}");
+    assert!(p["errors"][0]["message"].as_str().expect("message").contains("live view is off"), "{p:#}");
+    let sim = json_of(app.client.post(&url).json(&serde_json::json!({"duration": 0.05})).send().await.expect("post"), 201).await;
+    assert!(sim.get("live").is_none(), "{sim:#}");
 }

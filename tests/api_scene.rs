@@ -8,14 +8,15 @@
 use cad2mo_tests::app::{json_of, TestApp};
 use serde_json::{json, Value};
 
-/// A base box (0.1 × 0.1 × 0.2 m, z 0 .. 0.2) and an arm box (0.04 × 0.04 × 0.4 m) on a
-/// revolute shoulder about y at z = 0.2, pointing up at q = 0.
+/// A base box (0.1 × 0.1 × 0.2 m, z 0 .. 0.2) and an arm box (0.04 × 0.04 × 0.4 m, its centre
+/// of mass in its middle) on a revolute shoulder about y at z = 0.2, pointing up at q = 0.
 fn arm() -> Vec<u8> {
     let inertial = r#"<inertial><mass value="1"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial>"#;
+    let arm_inertial = inertial.replace("<mass", r#"<origin xyz="0 0 0.2"/><mass"#);
     let urdf = format!(
         r#"<robot name="scenearm">
 <link name="base">{inertial}<visual><origin xyz="0 0 0.1"/><geometry><box size="0.1 0.1 0.2"/></geometry></visual></link>
-<link name="arm">{inertial}<visual><origin xyz="0 0 0.2"/><geometry><box size="0.04 0.04 0.4"/></geometry></visual></link>
+<link name="arm">{arm_inertial}<visual><origin xyz="0 0 0.2"/><geometry><box size="0.04 0.04 0.4"/></geometry></visual></link>
 <joint name="shoulder" type="revolute"><parent link="base"/><child link="arm"/><origin xyz="0 0 0.2"/><axis xyz="0 1 0"/>
 <limit lower="-3" upper="3" effort="10" velocity="2"/></joint></robot>"#
     );
@@ -180,6 +181,39 @@ async fn scenes_are_stored_checked_and_collide() {
     // against the arm.
     assert!(pair(&s, "arm", "tool").is_none(), "{s:#}");
     assert!(pair(&s, "obstacle", "tool").is_some(), "{s:#}");
+
+    // The closed-loop simulation checks the simulated motion: the arm, let go at 0.3 rad, falls
+    // under gravity through the obstacle, and the crate arrives meanwhile. Its first contacts
+    // are the independent check's on the run's stored samples.
+    let body = json!({"duration": 1.0, "drives": false, "start": {"shoulder": 0.3}});
+    let r = app.client.post(app.url(&format!("/api/models/{id}/simulations"))).json(&body).send().await.expect("simulate");
+    let sim = json_of(r, 201).await;
+    let c = &sim["collisions"];
+    let contact = |a: &str, b: &str| {
+        c["contacts"].as_array().expect("contacts").iter().find(|p| (p["a"] == a && p["b"] == b) || (p["a"] == b && p["b"] == a)).cloned()
+    };
+    let rid = sim["result_id"].as_str().expect("result");
+    let series = json_of(app.get(&format!("/api/results/{rid}/series?name=shoulder.phi&width=10000")).await, 200).await;
+    let times: Vec<f64> = serde_json::from_value(series["variables"][0]["t"].clone()).expect("t");
+    let q: Vec<f64> = serde_json::from_value(series["variables"][0]["y"].clone()).expect("q");
+    let t_sim = contact("arm", "obstacle")
+        .unwrap_or_else(|| panic!("the falling arm meets the obstacle: {c:#}, q {:?}", q.iter().step_by(200).collect::<Vec<_>>()))
+        ["first_contact"]
+        .as_f64()
+        .expect("time");
+    assert_eq!(times.len(), c["samples"].as_u64().expect("samples") as usize, "{c:#}");
+    let k = q.iter().position(|&a| arm_meets_obstacle(a)).expect("the fall meets the obstacle");
+    let step = times[1] - times[0];
+    assert!((t_sim - times[k]).abs() <= step + 1e-9, "first contact {t_sim} s, independent {} s; {}", times[k], c["guarantee"]);
+    assert!(times[k] > 0.05 && q[0] == 0.3, "it falls from 0.3 rad: {} s, q0 {}", times[k], q[0]);
+    let t_crate =
+        contact("base", "crate").unwrap_or_else(|| panic!("the crate reaches the base: {c:#}"))["first_contact"].as_f64().expect("t");
+    assert!((t_crate - 0.8).abs() <= step + 1e-9, "crate contact at {t_crate} s");
+    let first = c["first_contact"]["time"].as_f64().expect("first contact");
+    assert!(first <= t_sim.min(t_crate), "{c:#}");
+    assert_eq!(sim["ok"], false, "a contact fails the verdict: {sim:#}");
+    assert!(sim["reasons"].as_array().expect("reasons").iter().any(|r| r.as_str().expect("reason").contains("touches")), "{sim:#}");
+    println!("simulated fall: arm/obstacle first contact {t_sim} s (independent {} s), base/crate {t_crate} s", times[k]);
 
     // A new CAD version keeps the scene (keyed by names); its interference view names it.
     json_of(put(scene(0.55)).await.expect("put"), 200).await;

@@ -199,6 +199,8 @@ export async function motionSteps(page, { joint, step, shot, downloads, strict }
     const cells = await page.locator(`table.simulation-drives tr[data-joint="${joint}"] td`).allTextContents();
     assert.match(cells[2], / \/ .* A$/, `current against its limit: ${cells}`);
     assert.match(await page.locator('.simulation-out .verdict').textContent(), /holds the path|does not hold the path/);
+    // Issue 29: the simulated motion checked for contact, stated in one line.
+    assert.match(await page.locator('.simulation-out .contact-line').textContent(), /contact along the simulated motion/);
     // Issue 28's plots: the tracking error of every joint, the current against its limits.
     await page.locator('.plot[data-plot="tracking"] .uplot').waitFor();
     await page.locator('.plot[data-plot="sim-i"] .uplot').waitFor();

@@ -20,6 +20,10 @@
 //!   `L·di/dt = v − R·i − k·w`, `τ = k·i`, `J·ẇ = τ − d·w − τ_a` (`τ_a` the torque into the gear);
 //! - `Motors.ServoMotor` (AC servo): `i_cmd = limit(i_ref, ±I_max)`, `Tc·di/dt = i_cmd − i`,
 //!   `τ = k·i`, `J·ẇ = τ − τ_a` (no voltage model: servo datasheets give no winding R, L);
+//! - `Motors.MSL_DC_PermanentMagnet` (the MSL machine in the wrapper's current loop): with MSL's
+//!   default zero brush, core, stray-load and friction losses it is the DC motor above with
+//!   `R = Ra(TaOperational)`, `L = La`, `k = (VaNominal − Ra(TaNominal)·IaNominal)/wNominal`,
+//!   `J = Jr`, `d = 0` (`parts.rs`);
 //! - `Gears.Ideal`/`LeadScrew`: the joint gets `r·τ_a`; `Gears.Efficiency` (MSL `LossyGear`,
 //!   `lossTable = [0, η, η, 0, 0]`): `η·r·τ_a` while power flows from the motor to the joint
 //!   (`τ_a·w ≥ 0`), `r·τ_a/η` while it flows back. The rotor inertia thus appears on the joint as
@@ -38,6 +42,9 @@
 //! lock: its torque ratio between η and 1/η) keeps its mode until its switching function
 //! crosses again; the locked state itself is not modelled. The reference's samples (a motion's
 //! or a table's, interpolated linearly) are breakpoints where steps end.
+//!
+//! An [`Observer`] ([`simulate_observed`]) hears the output samples as the integration reaches
+//! them (the service sends live-view frames from them); the engine itself does no IO.
 //!
 //! Extra generalised forces (joint damping, friction, couplings) enter through
 //! [`GeneralisedForces`], added to the drive torques before the forward dynamics.
@@ -63,7 +70,7 @@ use nalgebra::Vector3;
 use crate::mechanism::{ClosedState, ForwardWorkspace, Mechanism, MechanismError, Workspace};
 
 pub use answer::{saturation_intervals, verdict, Tolerances, Tracking, Verdict};
-pub use output::{result_file, series, JointLosses};
+pub use output::{body_frames, result_file, series, JointLosses};
 pub use parts::drive_of;
 
 /// Longest simulated time, s.
@@ -100,6 +107,10 @@ pub enum MotorKind {
     /// current loop's voltage, limited to ±`v_max`.
     #[default]
     DcPermanentMagnet,
+    /// `Motors.MSL_DC_PermanentMagnet`: the same equations as `DcPermanentMagnet` (the MSL
+    /// machine without losses, constants from its nominal point: `parts.rs`); the result file
+    /// adds the machine's own variable names (`motor.dcpm.ia`, ...).
+    MslDcPermanentMagnet,
     /// `Motors.ServoMotor`: the servo amplifier's current loop as a first-order lag,
     /// `Tc·di/dt = i_cmd − i`; no voltage model (`r`, `l`, `v_max` and `d` unused).
     Servo,
@@ -249,6 +260,17 @@ pub trait GeneralisedForces {
     fn add(&self, t: f64, q: &[f64], qd: &[f64], tau: &mut [f64]);
 }
 
+/// Hears the output samples while the run is integrated, as the integration reaches them (the
+/// service's live view sends body poses from them). Samples are numbered from 0 at t = 0, every
+/// `Options::output_interval`; `last` marks the run's final one.
+pub trait Observer {
+    /// Whether sample `index` at `t` is wanted: only wanted samples are evaluated for it.
+    fn wants(&mut self, index: usize, t: f64, last: bool) -> bool;
+    /// A wanted sample: every tree coordinate (`q`, loops closed, exactly as in [`Run::q`] for a
+    /// mechanism without loops; with loops the dependent ones agree to the closure's tolerance).
+    fn sample(&mut self, index: usize, t: f64, last: bool, q: &[f64]);
+}
+
 /// No extra forces.
 pub struct NoForces;
 
@@ -390,6 +412,9 @@ struct Model<'a> {
     samples: RefCell<Vec<RawSample>>,
     cancel: &'a dyn Fn() -> bool,
     cancelled: Cell<Option<f64>>,
+    /// The observer and the index of the run's last sample.
+    observer: Option<RefCell<&'a mut dyn Observer>>,
+    last_sample: usize,
 }
 
 impl Model<'_> {
@@ -429,7 +454,7 @@ impl Model<'_> {
             gd[0] = i_ref - mo.i_max;
             gd[1] = i_ref + mo.i_max;
             let (v_cmd, v, di) = match mo.kind {
-                MotorKind::DcPermanentMagnet => {
+                MotorKind::DcPermanentMagnet | MotorKind::MslDcPermanentMagnet => {
                     let v_cmd = mo.r * i_cmd + mo.k * w + mo.l / mo.tc * (i_cmd - i);
                     let v = limited(v_cmd, mo.v_max, mode.voltage);
                     gd[2] = v_cmd - mo.v_max;
@@ -510,7 +535,21 @@ impl integrate::Problem for Model<'_> {
 
     fn sample(&self, t: f64, y: &[f64]) {
         let modes = self.scratch.borrow().modes.clone();
+        let index = self.samples.borrow().len();
         self.samples.borrow_mut().push((t, y.to_vec(), modes));
+        if let Some(o) = &self.observer {
+            let last = index == self.last_sample;
+            if o.borrow_mut().wants(index, t, last) {
+                // The sample's coordinates as the run's post-pass evaluates them (same modes).
+                let (mut dy, mut g) = (vec![0.0; y.len()], vec![0.0; SWITCHES * self.drives.len()]);
+                let evaluations = self.scratch.borrow().evaluations;
+                if Model::eval(self, t, y, &mut dy, &mut g).is_ok() {
+                    let q = self.scratch.borrow().state.q.clone();
+                    o.borrow_mut().sample(index, t, last, &q);
+                }
+                self.scratch.borrow_mut().evaluations = evaluations;
+            }
+        }
     }
 
     fn stop(&self, t: f64) -> bool {
@@ -570,7 +609,7 @@ fn check(m: &Mechanism, drives: &[Drive], start: &Start, opts: &Options) -> Resu
             return Err(field(f("coordinate"), format!("coordinate {c} has two drives")));
         }
         let mo = &drive.motor;
-        if mo.kind == MotorKind::DcPermanentMagnet {
+        if mo.kind != MotorKind::Servo {
             positive(f("motor.R"), mo.r, true)?;
             positive(f("motor.L"), mo.l, false)?;
             positive(f("motor.d"), mo.d, true)?;
@@ -598,6 +637,20 @@ fn check(m: &Mechanism, drives: &[Drive], start: &Start, opts: &Options) -> Resu
     Ok(())
 }
 
+/// The index of the last output sample (the integrator's rule: times `k·interval` up to the
+/// duration, within 1e-9 of it).
+fn last_sample(duration: f64, interval: f64) -> usize {
+    let t_last = duration * (1.0 + 1e-9);
+    let mut k = (t_last / interval).floor().max(0.0) as usize;
+    while (k + 1) as f64 * interval <= t_last {
+        k += 1;
+    }
+    while k > 0 && k as f64 * interval > t_last {
+        k -= 1;
+    }
+    k
+}
+
 /// Simulates `m` under `gravity` with `drives` (empty: a passive run) and extra `forces`
 /// from `start` for `opts.duration`. `cancel` is asked after every step; when it answers true
 /// the run stops with [`SimulationError::Cancelled`]. Drive currents and integrators start at 0.
@@ -609,6 +662,21 @@ pub fn simulate(
     start: &Start,
     opts: &Options,
     cancel: &dyn Fn() -> bool,
+) -> Result<Run, SimulationError> {
+    simulate_observed(m, gravity, drives, forces, start, opts, cancel, None)
+}
+
+/// [`simulate`], handing the output samples to `observer` as the integration reaches them.
+#[allow(clippy::too_many_arguments)]
+pub fn simulate_observed<'a>(
+    m: &'a Mechanism,
+    gravity: &Vector3<f64>,
+    drives: &'a [Drive],
+    forces: &'a dyn GeneralisedForces,
+    start: &Start,
+    opts: &Options,
+    cancel: &'a dyn Fn() -> bool,
+    observer: Option<&'a mut (dyn Observer + 'a)>,
 ) -> Result<Run, SimulationError> {
     check(m, drives, start, opts)?;
     let n = m.dof();
@@ -643,6 +711,8 @@ pub fn simulate(
         samples: RefCell::new(Vec::new()),
         cancel,
         cancelled: Cell::new(None),
+        observer: observer.map(RefCell::new),
+        last_sample: last_sample(opts.duration, opts.output_interval),
     };
     let settings = integrate::Settings {
         rtol: opts.rtol,

@@ -1,7 +1,8 @@
 //! A run as a MAT v4 result with the variable names a Modelica tool writes for our package
 //! (`Mechatronics` extends `Mechanics`): `<joint>.phi`/`w`/`a` (`s`/`v`/`a` for prismatic joints),
 //! `drive_<joint>.motor.i` (and `i_cmd`, `v`, `v_cmd`, `phi`, `w`, `tau`, the limits `I_max`,
-//! `V_max`), `drive_<joint>.controller.q_ref`/`qd_ref`/`i_ref`, and every placed body's
+//! `V_max`; for the MSL machine also `motor.dcpm.ia`, `phiMechanical`, `wMechanical`,
+//! `tauElectrical` and `motor.supply.v`), `drive_<joint>.controller.q_ref`/`qd_ref`/`i_ref`, and every placed body's
 //! `<body>.frame_a.r_0[i]` and `<body>.frame_a.R.T[i,j]` (MSL: `R.T` turns world vectors into
 //! frame coordinates, so it is the transpose of the frame -> world rotation). Written in float64
 //! (OpenModelica's spelling `R.T[i,j]`), read back by `results::mat` like an uploaded result.
@@ -41,6 +42,15 @@ pub fn series(m: &Mechanism, run: &Run, drives: &[Drive]) -> Result<Vec<(String,
         out.push((format!("{motor}.tau"), col(|x| x.tau)));
         out.push((format!("{motor}.I_max"), vec![drive.motor.i_max; s.len()]));
         out.push((format!("{motor}.V_max"), vec![drive.motor.v_max; s.len()]));
+        if drive.motor.kind == super::MotorKind::MslDcPermanentMagnet {
+            // The wrapper's MSL machine and power stage by their own names (the names above,
+            // which the UI plots, stay for every DC motor).
+            out.push((format!("{motor}.dcpm.ia"), col(|x| x.i)));
+            out.push((format!("{motor}.dcpm.phiMechanical"), col(|x| x.phi)));
+            out.push((format!("{motor}.dcpm.wMechanical"), col(|x| x.w)));
+            out.push((format!("{motor}.dcpm.tauElectrical"), col(|x| x.tau)));
+            out.push((format!("{motor}.supply.v"), col(|x| x.v)));
+        }
         out.push((format!("{ctrl}.q_ref"), col(|x| x.q_ref)));
         out.push((format!("{ctrl}.qd_ref"), col(|x| x.qd_ref)));
         out.push((format!("{ctrl}.i_ref"), col(|x| x.i_ref)));
@@ -61,22 +71,30 @@ pub fn series(m: &Mechanism, run: &Run, drives: &[Drive]) -> Result<Vec<(String,
     for q in &run.q {
         let k = m.forward(q)?;
         for (p, &b) in placed.iter().enumerate() {
-            let pose = m.body_pose(&k, BodyId(b as u32))?;
-            let r = pose.translation.vector;
-            // R.T = (frame -> world)ᵀ.
-            let t = pose.rotation.to_rotation_matrix().into_inner().transpose();
-            let base = first + 12 * p;
-            for i in 0..3 {
-                out[base + i].1.push(r[i]);
-            }
-            for i in 0..3 {
-                for j in 0..3 {
-                    out[base + 3 + 3 * i + j].1.push(t[(i, j)]);
-                }
+            let f = frame_a(m, &k, b)?;
+            for (x, v) in f.iter().enumerate() {
+                out[first + 12 * p + x].1.push(*v);
             }
         }
     }
     Ok(out)
+}
+
+/// A placed body's `frame_a.r_0[1..3]` and `frame_a.R.T` row by row (MSL: `R.T` = (frame →
+/// world)ᵀ).
+fn frame_a(m: &Mechanism, k: &crate::mechanism::Kinematics, b: usize) -> Result<[f64; 12], MechanismError> {
+    let pose = m.body_pose(k, BodyId(b as u32))?;
+    let r = pose.translation.vector;
+    let t = pose.rotation.to_rotation_matrix().into_inner().transpose();
+    Ok(std::array::from_fn(|x| if x < 3 { r[x] } else { t[((x - 3) / 3, (x - 3) % 3)] }))
+}
+
+/// Every body's `frame_a.r_0` and `R.T` (12 numbers, as [`series`] writes them) at the tree
+/// coordinates `q`, in the package's body order: what a live-view frame carries
+/// (`live::encode`). An error when a body has no place in the mechanism.
+pub fn body_frames(m: &Mechanism, q: &[f64]) -> Result<Vec<[f64; 12]>, MechanismError> {
+    let k = m.forward(q)?;
+    (0..m.body_names().len()).map(|b| frame_a(m, &k, b)).collect()
 }
 
 /// The run as a MAT v4 trajectory file (float64).

@@ -3,7 +3,7 @@
 
 use crate::pipeline::back::modelica::mechatronics::{ClassChoice, JointKind, ParamValue};
 
-use crate::sizing::parts::SERVO_MOTOR_CLASS;
+use crate::sizing::parts::{convert_resistance, MSL_DC_CLASS, SERVO_MOTOR_CLASS};
 
 use super::{field, Controller, Drive, Motor, MotorKind, Reference, SimulationError, Transmission};
 
@@ -52,6 +52,41 @@ pub fn drive_of(
             i_max: real(motor, "I_max", 10.0, &pm)?,
             tc: real(motor, "Tc", 0.001, &pm)?,
         },
+        // `Motors.MSL_DC_PermanentMagnet`: the MSL machine with the class's (and MSL's) zero brush,
+        // core, stray-load and friction losses is the DC motor above with R = Ra at TaOperational,
+        // L = La, k = psi = (VaNominal - Ra(TaNominal)*IaNominal)/wNominal (MSL's turnsRatio with
+        // its unit excitation flux), J = Jr (the stator is fixed), d = 0; the wrapper's current
+        // loop and limits (V_max = VaNominal, I_max = IaNominal, Tc = 0.001) are the same.
+        MSL_DC_CLASS => {
+            let va = real(motor, "VaNominal", 100.0, &pm)?;
+            let ia = real(motor, "IaNominal", 100.0, &pm)?;
+            let w_nominal = real(motor, "wNominal", 1425.0 * std::f64::consts::PI / 30.0, &pm)?;
+            let t_ref = real(motor, "TaRef", 293.15, &pm)?;
+            let t_nominal = real(motor, "TaNominal", 293.15, &pm)?;
+            let ra = real(motor, "Ra", 0.05, &pm)?;
+            let alpha = real(motor, "alpha20a", 0.0, &pm)?;
+            if !(w_nominal.is_finite() && w_nominal > 0.0) {
+                return Err(field(format!("{pm}.wNominal"), format!("must be positive, got {w_nominal}")));
+            }
+            let psi = (va - convert_resistance(ra, t_ref, alpha, t_nominal) * ia) / w_nominal;
+            if !(psi.is_finite() && psi > 0.0) {
+                return Err(field(
+                    format!("{pm}.VaNominal"),
+                    format!("the machine's EMF constant (VaNominal - Ra(TaNominal)*IaNominal)/wNominal is {psi}: it must be positive"),
+                ));
+            }
+            Motor {
+                kind: MotorKind::MslDcPermanentMagnet,
+                r: convert_resistance(ra, t_ref, alpha, real(motor, "TaOperational", 293.15, &pm)?),
+                l: real(motor, "La", 0.0015, &pm)?,
+                k: psi,
+                j: real(motor, "Jr", 0.15, &pm)?,
+                d: 0.0,
+                v_max: real(motor, "V_max", va, &pm)?,
+                i_max: real(motor, "I_max", ia, &pm)?,
+                tc: real(motor, "Tc", 0.001, &pm)?,
+            }
+        }
         // `Motors.ServoMotor`: `Tc*der(i) = i_cmd - i`, `tau = k*i`, `J*der(w) = tau + flange.tau`.
         SERVO_MOTOR_CLASS => Motor {
             kind: MotorKind::Servo,
@@ -67,7 +102,9 @@ pub fn drive_of(
         other => {
             return Err(field(
                 pm,
-                format!("the simulation knows the motor classes {DC_PERMANENT_MAGNET} and {SERVO_MOTOR_CLASS} only, not {other}"),
+                format!(
+                "the simulation knows the motor classes {DC_PERMANENT_MAGNET}, {MSL_DC_CLASS} and {SERVO_MOTOR_CLASS} only, not {other}"
+            ),
             ))
         }
     };

@@ -227,7 +227,7 @@ fn the_result_file_reads_back_with_the_packages_names() {
 }
 
 #[test]
-fn the_servo_motor_class_is_simulated_and_the_msl_machine_is_refused_by_name() {
+fn the_servo_motor_class_and_the_msl_machine_are_simulated_and_other_motors_refused_by_name() {
     use crate::pipeline::back::modelica::mechatronics::{ClassChoice, JointKind, ParamValue};
     let choice = |class: &str, params: &[(&str, f64)]| ClassChoice {
         modelica_class: class.to_string(),
@@ -250,7 +250,105 @@ fn the_servo_motor_class_is_simulated_and_the_msl_machine_is_refused_by_name() {
     assert!((last - target).abs() < 1e-3, "ends at {last}, reference {target}");
     let s = run.drives[0].last().expect("samples");
     assert!((s.tau - 0.05 * s.i).abs() < 1e-15 && s.v == 0.0, "{s:?}");
-    let msl = choice("Modelica.Electrical.Machines.BasicMachines.DCMachines.DC_PermanentMagnet", &[]);
-    let err = drive_of("drives.J1", 0, JointKind::Revolute, &msl, &gear, &controller, Reference::Constant(0.0)).expect_err("refused");
+    // The MSL machine (Motors.MSL_DC_PermanentMagnet): its constants from the nominal point at
+    // the armature's temperatures, as MSL's convertResistance and turnsRatio compute them.
+    let msl = choice(
+        "Modelica.Electrical.Machines.BasicMachines.DCMachines.DC_PermanentMagnet",
+        &[
+            ("VaNominal", 24.0),
+            ("IaNominal", 2.0),
+            ("wNominal", 300.0),
+            ("TaNominal", 353.15),
+            ("Ra", 1.0),
+            ("TaRef", 293.15),
+            ("alpha20a", 0.004),
+            ("La", 2e-4),
+            ("Jr", 2e-5),
+            ("TaOperational", 373.15),
+        ],
+    );
+    let d = drive_of("drives.J1", 0, JointKind::Revolute, &msl, &gear, &controller, Reference::Constant(target)).expect("the MSL machine");
+    // Ra(T) = Ra·(1 + 0.004·(T − 293.15)): 1.24 Ω at 353.15 K, 1.32 Ω at 373.15 K.
+    let want = Motor {
+        kind: MotorKind::MslDcPermanentMagnet,
+        r: 1.32,
+        l: 2e-4,
+        k: (24.0 - 1.24 * 2.0) / 300.0,
+        j: 2e-5,
+        d: 0.0,
+        v_max: 24.0,
+        i_max: 2.0,
+        tc: 0.001,
+    };
+    for (got, w, what) in [(d.motor.r, want.r, "R"), (d.motor.k, want.k, "k")] {
+        assert!((got - w).abs() < 1e-12, "{what}: {got}, want {w}");
+    }
+    assert_eq!((d.motor.l, d.motor.j, d.motor.v_max, d.motor.i_max, d.motor.tc), (want.l, want.j, want.v_max, want.i_max, want.tc));
+    let run = simulate(&m, &g, std::slice::from_ref(&d), &NoForces, &Start { q: m.q0(), qd: vec![0.0] }, &opts, &never).expect("runs");
+    let last = run.q.last().expect("samples")[0];
+    assert!((last - target).abs() < 1e-3, "the MSL machine ends at {last}, reference {target}");
+    assert_eq!(d.motor.kind, want.kind);
+    // The same run as the DC motor class with the derived constants; the result file names the
+    // MSL machine's variables too.
+    let mut dc = d.clone();
+    dc.motor.kind = MotorKind::DcPermanentMagnet;
+    let dc_run = simulate(&m, &g, std::slice::from_ref(&dc), &NoForces, &Start { q: m.q0(), qd: vec![0.0] }, &opts, &never).expect("runs");
+    assert_eq!(dc_run.q, run.q);
+    let names: Vec<String> = series(&m, &run, std::slice::from_ref(&d)).expect("series").into_iter().map(|(n, _)| n).collect();
+    let joint = &m.coordinates()[0].name;
+    for v in ["motor.i", "motor.dcpm.ia", "motor.dcpm.wMechanical", "motor.dcpm.tauElectrical", "motor.supply.v"] {
+        assert!(names.contains(&format!("drive_{joint}.{v}")), "{v} in {names:?}");
+    }
+    let bad =
+        choice("Modelica.Electrical.Machines.BasicMachines.DCMachines.DC_PermanentMagnet", &[("VaNominal", 1.0), ("IaNominal", 100.0)]);
+    let err = drive_of("drives.J1", 0, JointKind::Revolute, &bad, &gear, &controller, Reference::Constant(0.0)).expect_err("refused");
+    assert!(matches!(&err, SimulationError::Field { field, .. } if field == "drives.J1.motor.VaNominal"), "{err}");
+    let other = choice("Modelica.Electrical.Machines.BasicMachines.InductionMachines.IM_SquirrelCage", &[]);
+    let err = drive_of("drives.J1", 0, JointKind::Revolute, &other, &gear, &controller, Reference::Constant(0.0)).expect_err("refused");
     assert!(matches!(&err, SimulationError::Field { field, .. } if field == "drives.J1.motor"), "{err}");
+}
+
+/// Collects what an observer hears: every third sample and the last.
+struct Every3 {
+    heard: Vec<(usize, f64, bool, Vec<f64>)>,
+}
+
+impl Observer for Every3 {
+    fn wants(&mut self, index: usize, _t: f64, last: bool) -> bool {
+        index % 3 == 0 || last
+    }
+    fn sample(&mut self, index: usize, t: f64, last: bool, q: &[f64]) {
+        self.heard.push((index, t, last, q.to_vec()));
+    }
+}
+
+#[test]
+fn an_observer_hears_the_samples_of_the_run_while_it_runs() {
+    let m = arm(2);
+    let g = Vector3::new(0.0, -9.81, 0.0);
+    let start = Start { q: m.q0(), qd: vec![0.0; 2] };
+    // 0.5 s at 0.035 s: the last sample (14, 0.49 s) is not at the duration.
+    let opts = Options { duration: 0.5, output_interval: 0.035, ..Options::default() };
+    let drive = pendulum_drive(&m, 10.0, 0.9, Reference::Constant(m.q0()[0] + 0.3));
+    let mut o = Every3 { heard: Vec::new() };
+    let run = simulate_observed(&m, &g, std::slice::from_ref(&drive), &NoForces, &start, &opts, &never, Some(&mut o)).expect("runs");
+    let plain = simulate(&m, &g, std::slice::from_ref(&drive), &NoForces, &start, &opts, &never).expect("runs");
+    assert_eq!(run, plain, "observing changes nothing");
+    let wanted: Vec<usize> = (0..run.t.len()).filter(|i| i % 3 == 0 || *i == run.t.len() - 1).collect();
+    assert_eq!(o.heard.iter().map(|h| h.0).collect::<Vec<_>>(), wanted);
+    for (index, t, last, q) in &o.heard {
+        assert_eq!(*t, run.t[*index]);
+        assert_eq!(q, &run.q[*index], "sample {index}");
+        assert_eq!(*last, *index == run.t.len() - 1);
+    }
+    // The bodies' frames as the result file has them.
+    let series = series(&m, &run, std::slice::from_ref(&drive)).expect("series");
+    let (index, _, _, q) = o.heard.last().expect("heard");
+    let frames = body_frames(&m, q).expect("frames");
+    assert_eq!(frames.len(), m.body_names().len());
+    for (b, name) in m.body_names().iter().enumerate() {
+        let r1 = series.iter().find(|(n, _)| *n == format!("{name}.frame_a.r_0[1]")).expect("r_0");
+        let t23 = series.iter().find(|(n, _)| *n == format!("{name}.frame_a.R.T[2,3]")).expect("R.T");
+        assert_eq!((frames[b][0], frames[b][3 + 5]), (r1.1[*index], t23.1[*index]), "{name}");
+    }
 }

@@ -201,7 +201,7 @@ fn positive(part: &PartRef, name: &str, x: f64) -> Result<f64, SizingError> {
 
 /// MSL `Machines.Thermal.convertResistance`: `R` given at `t_ref` with the temperature
 /// coefficient `alpha20` at 20 °C, at temperature `t` (K).
-fn convert_resistance(r: f64, t_ref: f64, alpha20: f64, t: f64) -> f64 {
+pub(crate) fn convert_resistance(r: f64, t_ref: f64, alpha20: f64, t: f64) -> f64 {
     let alpha_ref = alpha20 / (1.0 + alpha20 * (t_ref - 293.15));
     r * (1.0 + alpha_ref * (t - t_ref))
 }

@@ -21,7 +21,7 @@ fn is_public(method: &Method, path: &str) -> bool {
 
 /// The token of an `Authorization: Bearer <token>` header (scheme case-insensitive), or, since
 /// browsers cannot set headers on a WebSocket, of a `bearer.<token>` WebSocket sub-protocol.
-fn bearer(headers: &HeaderMap) -> Option<&str> {
+pub(super) fn bearer(headers: &HeaderMap) -> Option<&str> {
     if let Some(value) = headers.get(header::AUTHORIZATION) {
         let value = value.to_str().ok()?.trim();
         let (scheme, token) = value.split_once(' ')?;

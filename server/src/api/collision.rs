@@ -28,7 +28,7 @@ pub fn router() -> Router<AppState> {
 
 /// The shapes of a version with the model's scene objects after its bodies (issue 29), and the
 /// scene objects this version leaves out.
-async fn scene_shapes(
+pub(super) async fn scene_shapes(
     state: &AppState,
     model_id: &str,
     version: Option<i64>,
@@ -64,7 +64,7 @@ pub(super) async fn shapes(state: &AppState, model_id: &str, version: Option<i64
     Ok((v.version, s))
 }
 
-async fn edits(state: &AppState, model_id: &str) -> Result<Edits, ApiError> {
+pub(super) async fn edits(state: &AppState, model_id: &str) -> Result<Edits, ApiError> {
     Ok(store::collision::edits(&state.store, model_id).await?.into_iter().map(|(a, b, x)| ((a, b), x)).collect())
 }
 

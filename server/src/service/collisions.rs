@@ -6,7 +6,7 @@
 use std::collections::{BTreeMap, BTreeSet};
 
 use nalgebra::{Isometry3, Matrix3, Rotation3, Translation3, UnitQuaternion, Vector3};
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use cad2mo_engine::collision::{self, BodyShape, ShapeKind, SweepOptions};
 use cad2mo_engine::mechanism::Mechanism;
@@ -203,7 +203,7 @@ pub fn interferences(v: &VersionShapes, edits: &Edits) -> Vec<InterferenceReport
         .collect()
 }
 
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct FirstContact {
     pub a: String,
     pub b: String,
@@ -250,11 +250,30 @@ pub fn along_motion(
     name: &str,
     p: &Planned,
 ) -> Result<MotionCollisions, CollisionError> {
-    if mech.body_names() != &v.bodies[..v.model_bodies] {
-        return Err(internal("the mechanism's bodies differ from the package's".into()));
-    }
-    // The budgets, checked before anything is sampled.
     let samples = p.sample_count(SWEEP_RATE);
+    within_budget(v, edits, samples).map_err(|what| {
+        CollisionError::TooLarge(format!(
+            "motion \"{}\" ({:.1} s) is too long to check for collisions at {SWEEP_RATE} Hz: {what}; shorten the motion",
+            cad2mo_engine::pipeline::ir::clip(name, 200),
+            p.duration
+        ))
+    })?;
+    let s = p.closed_samples(mech, SWEEP_RATE).map_err(|issues| crate::service::motions::invalid(name, issues))?;
+    let n = mech.dof();
+    let (sweep, pairs, first_contact) = sweep_along(mech, v, edits, &s.t, &|i| (0..n).map(|a| s.q[a][i]).collect())?;
+    Ok(MotionCollisions {
+        motion: name.to_string(),
+        version,
+        samples: sweep.samples,
+        rate_hz: SWEEP_RATE,
+        guarantee: sweep.guarantee,
+        first_contact,
+        pairs,
+    })
+}
+
+/// The budgets of a check of `samples` samples: `Err` names the one exceeded.
+fn within_budget(v: &VersionShapes, edits: &Edits, samples: usize) -> Result<(), String> {
     let bodies = v.bodies.len();
     let with: Vec<usize> = (0..bodies).filter(|&i| v.shapes[i].is_some()).collect();
     let pairs_checked = with
@@ -263,35 +282,41 @@ pub fn along_motion(
         .flat_map(|(x, &i)| with[x + 1..].iter().map(move |&j| (i, j)))
         .filter(|&(i, j)| checked(v, edits, i, j))
         .count();
-    let over = |what: String| {
-        Err(CollisionError::TooLarge(format!(
-            "motion \"{}\" ({:.1} s) is too long to check for collisions at {SWEEP_RATE} Hz: {what}; shorten the motion",
-            cad2mo_engine::pipeline::ir::clip(name, 200),
-            p.duration
-        )))
-    };
     if samples > MAX_SWEEP_SAMPLES {
-        return over(format!("{samples} samples is more than the limit of {MAX_SWEEP_SAMPLES} samples"));
+        return Err(format!("{samples} samples is more than the limit of {MAX_SWEEP_SAMPLES} samples"));
     }
     if samples.saturating_mul(bodies) > MAX_SWEEP_POSES {
-        return over(format!("{samples} samples × {bodies} bodies is more than the limit of {MAX_SWEEP_POSES} body poses per check"));
+        return Err(format!("{samples} samples × {bodies} bodies is more than the limit of {MAX_SWEEP_POSES} body poses per check"));
     }
     if samples.saturating_mul(pairs_checked) > MAX_SWEEP_PAIR_SAMPLES {
-        return over(format!(
+        return Err(format!(
             "{samples} samples × {pairs_checked} checked pairs is more than the limit of {MAX_SWEEP_PAIR_SAMPLES} pair tests per check"
         ));
     }
-    let s = p.closed_samples(mech, SWEEP_RATE).map_err(|issues| crate::service::motions::invalid(name, issues))?;
-    let n = mech.dof();
+    Ok(())
+}
+
+/// The sweep of every checked pair (bodies and scene objects, the current matrix) at `times`,
+/// the model's coordinates at sample `i` being `q_at(i)`; the pairs the closest first and the
+/// first contact.
+fn sweep_along(
+    mech: &Mechanism,
+    v: &VersionShapes,
+    edits: &Edits,
+    times: &[f64],
+    q_at: &dyn Fn(usize) -> Vec<f64>,
+) -> Result<(collision::Sweep, Vec<PairSweepView>, Option<FirstContact>), CollisionError> {
+    if mech.body_names() != &v.bodies[..v.model_bodies] {
+        return Err(internal("the mechanism's bodies differ from the package's".into()));
+    }
     // Poses computed on demand (the sweep asks once per sample), not kept here as well.
     let failed: std::cell::RefCell<Option<String>> = std::cell::RefCell::new(None);
     let pose_at = |i: usize| -> Vec<Isometry3<f64>> {
-        let q: Vec<f64> = (0..n).map(|a| s.q[a][i]).collect();
-        match mech.forward(&q) {
+        match mech.forward(&q_at(i)) {
             Ok(k) => {
                 let model: Vec<Isometry3<f64>> =
                     (0..v.model_bodies).map(|b| mech.body_pose(&k, BodyId(b as u32)).unwrap_or_else(|_| v.cad[b])).collect();
-                crate::service::scene::poses(v, model, s.t[i])
+                crate::service::scene::poses(v, model, times[i])
             }
             Err(e) => {
                 failed.borrow_mut().get_or_insert_with(|| e.to_string());
@@ -300,7 +325,7 @@ pub fn along_motion(
         }
     };
     let world = collision::World::new(&v.shapes);
-    let sweep = collision::sweep(&world, &s.t, &pose_at, &|i, j| checked(v, edits, i, j), &SweepOptions::default());
+    let sweep = collision::sweep(&world, times, &pose_at, &|i, j| checked(v, edits, i, j), &SweepOptions::default());
     if let Some(e) = failed.into_inner() {
         return Err(internal(e));
     }
@@ -311,13 +336,117 @@ pub fn along_motion(
         .iter()
         .filter_map(|p| p.sweep.first_contact.map(|t| FirstContact { a: p.a.clone(), b: p.b.clone(), time: t }))
         .min_by(|x, y| x.time.total_cmp(&y.time));
-    Ok(MotionCollisions {
-        motion: name.to_string(),
-        version,
+    Ok((sweep, pairs, first_contact))
+}
+
+/// A pair that touches along a simulated run.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct RunContact {
+    pub a: String,
+    pub b: String,
+    /// The first output sample where it touches or penetrates, s.
+    pub first_contact: f64,
+    /// Its deepest penetration over the samples, m.
+    pub max_depth: f64,
+}
+
+/// The contacts along a simulated run (issue 29): every checked pair of the version's bodies and
+/// the model's scene objects (static, attached and moving ones at their poses of the run's time;
+/// free ones held at their pose) at the run's output samples.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct RunCollisions {
+    pub samples: usize,
+    /// Checked pairs (both with a collision shape).
+    pub pairs_checked: usize,
+    pub guarantee: String,
+    pub first_contact: Option<FirstContact>,
+    /// The pairs that touch, the earliest first.
+    pub contacts: Vec<RunContact>,
+    /// Why the run was not checked (the check's budget), when it was not.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub not_checked: Option<String>,
+}
+
+/// Checks a simulated run: the model's coordinates `q[i]` at `times[i]` (its output samples).
+pub fn along_run(
+    mech: &Mechanism,
+    v: &VersionShapes,
+    edits: &Edits,
+    times: &[f64],
+    q: &[Vec<f64>],
+) -> Result<RunCollisions, CollisionError> {
+    if let Err(what) = within_budget(v, edits, times.len()) {
+        // The run stands; only its contacts are unknown.
+        return Ok(RunCollisions {
+            samples: times.len(),
+            pairs_checked: 0,
+            guarantee: String::new(),
+            first_contact: None,
+            contacts: Vec::new(),
+            not_checked: Some(format!("the run is too large to check for collisions: {what}")),
+        });
+    }
+    let (sweep, pairs, first_contact) = sweep_along(mech, v, edits, times, &|i| q[i].clone())?;
+    let mut contacts: Vec<RunContact> = pairs
+        .iter()
+        .filter_map(|p| {
+            p.sweep.first_contact.map(|t| RunContact { a: p.a.clone(), b: p.b.clone(), first_contact: t, max_depth: p.sweep.max_depth })
+        })
+        .collect();
+    contacts.sort_by(|x, y| x.first_contact.total_cmp(&y.first_contact));
+    Ok(RunCollisions {
         samples: sweep.samples,
-        rate_hz: SWEEP_RATE,
+        pairs_checked: pairs.len(),
         guarantee: sweep.guarantee,
         first_contact,
-        pairs,
+        contacts,
+        not_checked: None,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn shapes(bodies: usize) -> VersionShapes {
+        let part = collision::ConvexPart { vertices: vec![[0.0, 0.0, 0.0]], faces: Vec::new(), radius: 0.1 };
+        let shape = BodyShape {
+            kind: ShapeKind::Hull,
+            parts: vec![part],
+            vertex_count: 1,
+            fit_error: 0.0,
+            volume_ratio: 0.0,
+            source_triangles: 0,
+            warnings: Vec::new(),
+        };
+        VersionShapes {
+            bodies: (0..bodies).map(|b| format!("B{b}")).collect(),
+            shapes: vec![Some(shape); bodies],
+            joined: BTreeMap::new(),
+            cad: vec![Isometry3::identity(); bodies],
+            report_bodies: serde_json::Value::Null,
+            model_bodies: bodies,
+            scene: Vec::new(),
+        }
+    }
+
+    /// A simulated run beyond the check's budgets is answered without its contacts, saying why
+    /// (the run itself stands), and the budget counts checked pairs only.
+    #[test]
+    fn the_budgets_count_samples_poses_and_checked_pairs() {
+        let v = shapes(200);
+        // 200 bodies: 19,900 pairs × 2001 samples is beyond 20 M pair tests.
+        let err = within_budget(&v, &Edits::new(), 2001).expect_err("too many pair tests");
+        assert!(err.contains("19900 checked pairs"), "{err}");
+        assert!(within_budget(&v, &Edits::new(), 1000).is_ok());
+        assert!(within_budget(&shapes(2), &Edits::new(), MAX_SWEEP_SAMPLES + 1).expect_err("samples").contains("samples"));
+        // Pairs allowed by the matrix are not checked, so not counted.
+        let mut joined = shapes(200);
+        for a in 0..200 {
+            for b in a + 1..200 {
+                joined.joined.insert((a, b), "test".into());
+            }
+        }
+        assert!(within_budget(&joined, &Edits::new(), 2001).is_ok());
+    }
 }

@@ -12,17 +12,20 @@
 //! the package's variable names and stored like an uploaded one.
 
 use std::collections::BTreeMap;
+use std::net::ToSocketAddrs;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use serde::{Deserialize, Serialize};
 
+use super::collisions::{along_run, Edits, RunCollisions, VersionShapes};
 use super::drives::{DriveError, ReferenceSpec, ResolvedDrive};
 use super::motions::{self, Kinematic, MotionError};
 use super::results::ResultError;
 use super::FieldError;
 use crate::store::StoreError;
+use cad2mo_engine::live;
 use cad2mo_engine::mechanism::CoordKind;
 use cad2mo_engine::motion::plan::{LimitsEdit, MotionSpec, Target};
 use cad2mo_engine::pipeline::back::modelica::mechatronics::JointKind;
@@ -43,6 +46,10 @@ const MAX_REFERENCE_SAMPLES: usize = 200_000;
 /// The solver's tolerances (relative, absolute), stated with every answer.
 pub const RTOL: f64 = 1e-6;
 pub const ATOL: f64 = 1e-8;
+/// Simulated time between live frames by default, s (the packages' `livePeriod`).
+pub const LIVE_PERIOD: f64 = 0.02;
+/// The shortest time between live frames, s (simulated, and wall-clock when not paced): 60 frames/s.
+pub const LIVE_MIN_PERIOD: f64 = 1.0 / 60.0;
 
 /// What a request asks: `{"duration": s, "drives": bool, "motion_id"?: id, "start"?: {joint: value},
 /// "max_joint_error"?: rad or m, "max_tool_error"?: m, "tool"?: frame node id}`.
@@ -67,10 +74,27 @@ pub struct SimulationRequest {
     /// first tool keyframe.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tool: Option<String>,
+    /// Send the bodies' poses to the live view while the run runs (frames as a package's C
+    /// sender makes them, to the service's live port).
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub live: bool,
+    /// Simulated time between two frames, s ([`LIVE_MIN_PERIOD`] ..= 1; default
+    /// [`LIVE_PERIOD`], the packages' `livePeriod`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub live_period: Option<f64>,
+    /// Pace the run to the wall clock while it sends frames (default true: the Live tab shows
+    /// the motion at its real speed); false: frames as fast as the run makes them, at most one
+    /// per [`LIVE_MIN_PERIOD`] of wall-clock time.
+    #[serde(default = "yes", skip_serializing_if = "is_true")]
+    pub live_real_time: bool,
 }
 
 fn yes() -> bool {
     true
+}
+
+fn is_true(b: &bool) -> bool {
+    *b
 }
 
 /// Why a simulation use case failed.
@@ -147,6 +171,43 @@ pub struct Answer {
     pub rejected_steps: u32,
     pub evaluations: u32,
     pub wall_time_s: f64,
+    /// Contacts along the simulated motion (bodies and scene objects under the model's
+    /// allowed-collision matrix, issue 29); absent in runs stored before it existed.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub collisions: Option<RunCollisions>,
+    /// What the run sent to the live view, when asked.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub live: Option<LiveSent>,
+}
+
+/// The frames a run sent to the live view.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct LiveSent {
+    /// The frames' run id (docs/live-protocol.md).
+    pub run: u32,
+    /// Frames sent, and sends the socket refused (a full buffer: the frame is lost).
+    pub frames: u32,
+    pub send_errors: u32,
+    /// Simulated time between frames, s: a whole number of output intervals.
+    pub period: f64,
+    pub real_time: bool,
+    /// Where they went (`host:port`).
+    pub to: String,
+}
+
+/// Where a run's live frames go, and what they name.
+#[derive(Clone, Debug)]
+pub struct LiveTarget {
+    /// The live view's UDP address as packages reach it (`--live-host`, the bound port).
+    pub host: String,
+    pub port: u16,
+    pub model: [u8; 16],
+    pub version: u32,
+    /// The version's bodies as the relay knows them (the report's, in order).
+    pub bodies: Vec<String>,
+    /// The caller's API token where the relay requires signed frames (only its SHA-256 keys the
+    /// signature, as in the C sender; the token is not sent).
+    pub token: Option<String>,
 }
 
 /// What the blocking part of a run makes: the answer and the result file.
@@ -161,6 +222,11 @@ pub struct Inputs {
     pub motion: Option<(String, MotionSpec)>,
     pub edits: BTreeMap<String, LimitsEdit>,
     pub drives: Vec<ResolvedDrive>,
+    /// The version's collision shapes with the model's scene, and the allowed-collision edits:
+    /// the simulated motion is checked against them.
+    pub collisions: Option<(Arc<VersionShapes>, Edits)>,
+    /// Where live frames go when the request asks for them.
+    pub live: Option<LiveTarget>,
 }
 
 fn kind_of(k: CoordKind) -> JointKind {
@@ -181,6 +247,11 @@ pub fn check_request(req: &SimulationRequest) -> Result<(), SimulationError> {
             if !(v.is_finite() && v > 0.0) {
                 errors.push(FieldError { field: name.into(), message: format!("must be a positive number, got {v}") });
             }
+        }
+    }
+    if let Some(p) = req.live_period {
+        if !(p.is_finite() && (LIVE_MIN_PERIOD..=1.0).contains(&p)) {
+            errors.push(FieldError { field: "live_period".into(), message: format!("must be in [1/60, 1] s, got {p}") });
         }
     }
     for (j, v) in &req.start {
@@ -292,12 +363,44 @@ pub fn run(req: &SimulationRequest, inputs: &Inputs, cancel: &AtomicBool, deadli
             message: "needs a tool frame (tool, or a motion with a tool keyframe)".into(),
         });
     }
+    let live = match (&req.live, &inputs.live) {
+        (false, _) => None,
+        (true, None) => {
+            errors.push(FieldError { field: "live".into(), message: "the service's live view is off".into() });
+            None
+        }
+        (true, Some(target)) if target.bodies.len() > live::MAX_BODIES => {
+            errors.push(FieldError {
+                field: "live".into(),
+                message: format!("the model has {} bodies: a live frame holds at most {}", target.bodies.len(), live::MAX_BODIES),
+            });
+            None
+        }
+        (true, Some(target)) if target.bodies != m.body_names() => {
+            errors.push(FieldError {
+                field: "live".into(),
+                message: "the version's bodies as the live view knows them differ from the simulated mechanism's".into(),
+            });
+            None
+        }
+        (true, Some(target)) => match (target.host.as_str(), target.port).to_socket_addrs().map(|mut a| a.next()) {
+            Ok(Some(addr)) => Some((target, addr)),
+            Ok(None) | Err(_) => {
+                errors.push(FieldError {
+                    field: "live".into(),
+                    message: format!("the live view's address {}:{} does not resolve", target.host, target.port),
+                });
+                None
+            }
+        },
+    };
     if !errors.is_empty() {
         return Err(SimulationError::Invalid(errors));
     }
     // Output samples within the file's bound.
     let placed = (0..m.body_names().len()).filter(|&b| m.body_attachment(cad2mo_engine::pipeline::ir::BodyId(b as u32)).is_some()).count();
-    let variables = 1 + 3 * n + 12 * drives.len() + 12 * placed;
+    // Per drive 12 signals, 17 with the MSL machine's own names.
+    let variables = 1 + 3 * n + 17 * drives.len() + 12 * placed;
     let instants = MAX_SAMPLES.min(MAX_RESULT_VALUES / variables.max(1)).max(2);
     let opts = sim::Options {
         duration: req.duration,
@@ -318,7 +421,14 @@ pub fn run(req: &SimulationRequest, inputs: &Inputs, cancel: &AtomicBool, deadli
     };
     let start = sim::Start { q, qd: vec![0.0; n] };
     let losses = sim::JointLosses(m);
-    let run = match sim::simulate(m, &k.gravity, &drives, &losses, &start, &opts, &stop) {
+    let mut sender = match live {
+        None => None,
+        Some((target, addr)) => Some(LiveSender::new(m, target, addr, req, opts.output_interval, cancel).map_err(|e| {
+            SimulationError::Invalid(vec![FieldError { field: "live".into(), message: format!("cannot send to the live view: {e}") }])
+        })?),
+    };
+    let observer = sender.as_mut().map(|s| s as &mut dyn sim::Observer);
+    let run = match sim::simulate_observed(m, &k.gravity, &drives, &losses, &start, &opts, &stop, observer) {
         Ok(r) => r,
         Err(EngineError::Cancelled { t }) if timed_out.load(Ordering::Relaxed) => {
             return Err(SimulationError::Stopped(format!(
@@ -342,7 +452,16 @@ pub fn run(req: &SimulationRequest, inputs: &Inputs, cancel: &AtomicBool, deadli
     };
     let all_names: Vec<String> = coords.iter().map(|c| c.name.clone()).collect();
     let tol = sim::Tolerances { max_joint_error: req.max_joint_error.unwrap_or(f64::INFINITY), max_tool_error: req.max_tool_error };
-    let verdict = sim::verdict(&tracking, &all_names, tool_errors.as_deref(), &tol);
+    let mut verdict = sim::verdict(&tracking, &all_names, tool_errors.as_deref(), &tol);
+    // The simulated (not the planned) motion against the bodies and the scene.
+    let collisions = match &inputs.collisions {
+        Some((shapes, edits)) => Some(along_run(m, shapes, edits, &run.t, &run.q).map_err(|e| SimulationError::Stopped(e.to_string()))?),
+        None => None,
+    };
+    if let Some(c) = collisions.as_ref().and_then(|c| c.first_contact.as_ref()) {
+        verdict.ok = false;
+        verdict.reasons.push(format!("{} touches {} at t = {:.4} s", c.a, c.b, c.time));
+    }
     let unit = |c: usize| if coords[c].kind == CoordKind::Prismatic { "m" } else { "rad" };
     let answer = Answer {
         ok: verdict.ok,
@@ -385,9 +504,122 @@ pub fn run(req: &SimulationRequest, inputs: &Inputs, cancel: &AtomicBool, deadli
         rejected_steps: run.rejected_steps,
         evaluations: run.evaluations,
         wall_time_s,
+        collisions,
+        live: sender.map(|s| s.sent()),
     };
     let file = sim::result_file(m, &run, &drives).map_err(|e| SimulationError::Internal(anyhow::anyhow!(e.to_string())))?;
     Ok(Ran { answer, file })
+}
+
+/// Sends a run's body poses to the live view as the packages' C sender does
+/// (`Resources/Include/cad2mo_live.c`, docs/live-protocol.md): one UDP datagram per frame, never
+/// blocking (a full buffer loses that frame), signed with the caller's token where the relay
+/// requires it, the last one `FINAL`. A frame at every `stride`-th output sample, `stride` the
+/// fewest output intervals that make up the requested period; paced to the wall clock unless
+/// the request says otherwise (then at most one frame per [`LIVE_MIN_PERIOD`] of wall-clock time).
+struct LiveSender<'a> {
+    m: &'a cad2mo_engine::mechanism::Mechanism,
+    socket: std::net::UdpSocket,
+    to: std::net::SocketAddr,
+    header: live::Header,
+    token: Option<&'a str>,
+    stride: usize,
+    period: f64,
+    real_time: bool,
+    started: Instant,
+    last_sent: Option<Instant>,
+    frames: u32,
+    send_errors: u32,
+    cancel: &'a AtomicBool,
+}
+
+impl<'a> LiveSender<'a> {
+    fn new(
+        m: &'a cad2mo_engine::mechanism::Mechanism,
+        target: &'a LiveTarget,
+        to: std::net::SocketAddr,
+        req: &SimulationRequest,
+        interval: f64,
+        cancel: &'a AtomicBool,
+    ) -> std::io::Result<LiveSender<'a>> {
+        let local: std::net::SocketAddr = if to.is_ipv4() { ([0u8; 4], 0).into() } else { ([0u16; 8], 0).into() };
+        let socket = std::net::UdpSocket::bind(local)?;
+        socket.set_nonblocking(true)?;
+        let wanted = req.live_period.unwrap_or(LIVE_PERIOD);
+        let stride = ((wanted / interval) * (1.0 - 1e-12)).ceil().max(1.0) as usize;
+        let id = uuid::Uuid::new_v4();
+        let run = u32::from_le_bytes([id.as_bytes()[0], id.as_bytes()[1], id.as_bytes()[2], id.as_bytes()[3]]);
+        let header = live::Header {
+            model: target.model,
+            version: target.version,
+            layout: live::layout_id(&target.bodies),
+            run,
+            seq: 0,
+            time: 0.0,
+            last: false,
+        };
+        Ok(LiveSender {
+            m,
+            socket,
+            to,
+            header,
+            token: target.token.as_deref(),
+            stride,
+            period: stride as f64 * interval,
+            real_time: req.live_real_time,
+            started: Instant::now(),
+            last_sent: None,
+            frames: 0,
+            send_errors: 0,
+            cancel,
+        })
+    }
+
+    fn sent(&self) -> LiveSent {
+        LiveSent {
+            run: self.header.run,
+            frames: self.frames,
+            send_errors: self.send_errors,
+            period: self.period,
+            real_time: self.real_time,
+            to: self.to.to_string(),
+        }
+    }
+}
+
+impl sim::Observer for LiveSender<'_> {
+    fn wants(&mut self, index: usize, _t: f64, last: bool) -> bool {
+        if last {
+            return true;
+        }
+        if index % self.stride != 0 {
+            return false;
+        }
+        self.real_time || self.last_sent.is_none_or(|w| w.elapsed().as_secs_f64() >= LIVE_MIN_PERIOD)
+    }
+
+    fn sample(&mut self, _index: usize, t: f64, last: bool, q: &[f64]) {
+        if self.real_time {
+            // Not ahead of the wall clock; a cancelled run stops waiting.
+            let due = self.started + Duration::from_secs_f64(t);
+            while let Some(wait) = due.checked_duration_since(Instant::now()) {
+                if self.cancel.load(Ordering::Relaxed) {
+                    return;
+                }
+                std::thread::sleep(wait.min(Duration::from_millis(50)));
+            }
+        }
+        let Ok(bodies) = sim::body_frames(self.m, q) else { return };
+        self.header.time = t;
+        self.header.last = last;
+        let frame = live::encode(&self.header, &bodies, self.token);
+        match self.socket.send_to(&frame, self.to) {
+            Ok(_) => self.frames += 1,
+            Err(_) => self.send_errors += 1,
+        }
+        self.header.seq = self.header.seq.wrapping_add(1);
+        self.last_sent = Some(Instant::now());
+    }
 }
 
 /// A stored simulation as served.

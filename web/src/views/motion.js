@@ -9,7 +9,7 @@ import { api, enc } from '../api.js';
 import { h, fill, errorBox, num, field, confirmAction, newId, unitLabel } from '../ui.js';
 import { sampleAt, keyframeProblems, throttle, applyAlternative, rotationRows, freshName, bodyDepths, defaultToolFrame } from './motion-data.js';
 import { sizingQuery, verdict, standingLabel, limitingText } from './sizing-data.js';
-import { simulationBody, driveRows, trackingErrors, positionVariable, valueAt } from './simulation-data.js';
+import { simulationBody, driveRows, trackingErrors, positionVariable, valueAt, contactLine } from './simulation-data.js';
 import { sweepRows, firstContactText, contactMarkers, touchedBy, witnessLine, pairKey } from './collision-data.js';
 import { advance, SPEEDS } from './results-data.js';
 import { getUnits, factorOf, symbolOf } from '../units.js';
@@ -58,7 +58,7 @@ export function renderMotion(panel, ctx) {
   const sizingBox = h('div', { class: 'sizing-box' });
   // The closed-loop simulation of the drives along the motion (issue 28), beside the sizing.
   const simBox = h('div', { class: 'simulation-box' });
-  const simForm = { maxJointErrorMilli: '', maxToolErrorMm: '' };
+  const simForm = { maxJointErrorMilli: '', maxToolErrorMm: '', live: false };
   const collisionBox = h('div', { class: 'motion-collisions', 'aria-live': 'polite' });
   const limitsBox = h('div', { class: 'limits-box' });
   fill(panel, h('h2', {}, 'Motions'), listBox, editorBox, gizmoBox, h('h2', {}, 'Joint limits'), limitsBox);
@@ -576,6 +576,10 @@ export function renderMotion(panel, ctx) {
             ),
           ),
         ),
+        (() => {
+          const c = contactLine(answer);
+          return c ? h('p', { class: `contact-line ${c.contact ? 'fail' : 'muted'}` }, c.text) : null;
+        })(),
         answer.tool ? h('p', { class: 'muted tool-error' }, `Tool ${answer.tool.frame}: position error up to ${num(answer.tool.max_position_error * 1000)} mm, orientation up to ${num(answer.tool.max_orientation_error)} rad.`) : null,
         h('p', { class: 'muted' }, `${answer.solver}; ${answer.steps} steps in ${num(answer.wall_time_s)} s. The run is stored as result `, h('code', {}, answer.result_id || '—'), ': open it under Results to animate and plot it.'),
         answer.result_id ? simulatedView() : null,
@@ -590,6 +594,8 @@ export function renderMotion(panel, ctx) {
         input('maxJointErrorMilli', 'Max joint error (mrad or mm)'),
         ' ',
         input('maxToolErrorMm', 'Max tool error (mm)'),
+        ' ',
+        h('label', { title: 'The run sends its poses to the Live tab while it runs, at the speed of the wall clock' }, h('input', { type: 'checkbox', class: 'simulate-live', checked: !!simForm.live, onchange: (e) => (simForm.live = e.currentTarget.checked) }), ' Show in the Live tab'),
         ' ',
         h('button', { type: 'submit', class: 'simulate' }, 'Simulate'),
       ),

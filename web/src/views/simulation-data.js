@@ -3,11 +3,13 @@
 
 /**
  * The POST body of `/api/models/{id}/simulations` for a motion: the run lasts the motion plus
- * half a second of settling; tolerances only when set (joint error in mrad/mm, tool error in mm).
- * @param {{motionId: string, motionDuration: number, maxJointErrorMilli: string|number, maxToolErrorMm: string|number}} f
+ * half a second of settling; tolerances only when set (joint error in mrad/mm, tool error in mm);
+ * `live`: the run sends its poses to the Live tab while it runs (paced to the wall clock).
+ * @param {{motionId: string, motionDuration: number, maxJointErrorMilli: string|number, maxToolErrorMm: string|number, live?: boolean}} f
  */
 export function simulationBody(f) {
   const body = { duration: Math.min(60, Math.max(0.01, Number(f.motionDuration) + 0.5)), drives: true, motion_id: f.motionId };
+  if (f.live) body.live = true;
   const j = Number(f.maxJointErrorMilli);
   if (f.maxJointErrorMilli !== '' && Number.isFinite(j) && j > 0) body.max_joint_error = j / 1000;
   const t = Number(f.maxToolErrorMm);
@@ -82,4 +84,20 @@ export function trackingErrors(traj, simulated) {
     series.push(t.map((x, n) => valueAt(s, x) - traj.q[i][n]));
   });
   return { t, names, units, series, missing };
+}
+
+/**
+ * The line on contacts along the simulated motion (issue 29): the first contact's pair and time
+ * and how many pairs touch, or that none does among the checked pairs; null when the answer has
+ * no check (runs stored before it).
+ * @param {object} answer the service's answer
+ */
+export function contactLine(answer) {
+  const c = answer?.collisions;
+  if (!c) return null;
+  if (c.not_checked) return { contact: false, text: `Contacts not checked: ${c.not_checked}.` };
+  if (!c.first_contact) return { contact: false, text: `No contact along the simulated motion (${c.pairs_checked} checked pairs, ${c.samples} samples).` };
+  const f = c.first_contact;
+  const more = c.contacts.length > 1 ? ` ${c.contacts.length} pairs touch: ${c.contacts.map((p) => `${p.a}/${p.b} at ${p.first_contact.toFixed(3)} s`).join(', ')}.` : '';
+  return { contact: true, text: `First contact along the simulated motion: ${f.a} touches ${f.b} at ${f.time.toFixed(3)} s.${more}` };
 }

@@ -1,6 +1,6 @@
 import test from 'node:test';
 import assert from 'node:assert/strict';
-import { simulationBody, driveRows } from './simulation-data.js';
+import { simulationBody, driveRows, contactLine } from './simulation-data.js';
 
 test('simulationBody sends tolerances only when set, in SI', () => {
   assert.deepEqual(simulationBody({ motionId: 'm', motionDuration: 2, maxJointErrorMilli: '', maxToolErrorMm: '' }), { duration: 2.5, drives: true, motion_id: 'm' });
@@ -45,4 +45,22 @@ test('tracking errors: simulated minus planned on the planned grid, missing join
   assert.deepEqual(e.missing, ['J3']);
   assert.ok(Math.abs(e.series[0][1] - 0.1) < 1e-12 && Math.abs(e.series[0][2] - 0.2) < 1e-12, JSON.stringify(e.series[0]));
   assert.deepEqual(e.series[1], [0.001, 0.001, 0.001]);
+});
+
+test('contactLine names the first contact along the simulated motion, or says there is none', () => {
+  assert.equal(contactLine({}), null);
+  const clear = contactLine({ collisions: { samples: 2001, pairs_checked: 3, first_contact: null, contacts: [] } });
+  assert.deepEqual(clear, { contact: false, text: 'No contact along the simulated motion (3 checked pairs, 2001 samples).' });
+  const hit = contactLine({
+    collisions: {
+      samples: 2001,
+      pairs_checked: 3,
+      first_contact: { a: 'arm', b: 'obstacle', time: 0.3315 },
+      contacts: [{ a: 'arm', b: 'obstacle', first_contact: 0.3315, max_depth: 0.01 }, { a: 'base', b: 'crate', first_contact: 0.8, max_depth: 0.1 }],
+    },
+  });
+  assert.equal(hit.contact, true);
+  assert.equal(hit.text, 'First contact along the simulated motion: arm touches obstacle at 0.332 s. 2 pairs touch: arm/obstacle at 0.332 s, base/crate at 0.800 s.');
+  assert.equal(contactLine({ collisions: { samples: 2001, pairs_checked: 0, first_contact: null, contacts: [], not_checked: 'too large' } }).text, 'Contacts not checked: too large.');
+  assert.equal(simulationBody({ motionId: 'm', motionDuration: 1, maxJointErrorMilli: '', maxToolErrorMm: '', live: true }).live, true);
 });
