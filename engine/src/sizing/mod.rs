@@ -62,6 +62,8 @@
 pub mod parts;
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod worked_example;
 
 use serde::Serialize;
 
