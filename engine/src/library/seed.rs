@@ -1173,8 +1173,7 @@ fn maxon_catalogue() -> Vec<NamedInstance> {
         push(c, "EC 45 flat Ø42.9 mm, 30 W", doc30, "92.5", no_w30, thermal30, "11.5", col);
     }
     let doc70 = "Document: maxon catalogue page \"EC 45 flat Ø43.5 mm, brushless, 70 watt\", Motor Data (provisional), values at nominal voltage 24, 36, 48, 60 V, as published in the online flipbook https://online.flippingbook.com/view/1042987/324 (page 324). The stored copy prints the table one winding at a time without line labels; each winding's numbers were matched to the lines by the page's own relations (line 13 speed constant × line 1 nominal voltage ≈ line 2 no load speed, nominal voltage / line 10 terminal resistance ≈ line 8 stall current, R·J/k² = line 15), and its 24 V column agrees with the first seed's EC 45 flat 70 W (24 V).";
-    let thermal70 =
-        "thermal resistances 2.55 K/W and 6.64 K/W (lines 17, 18), thermal time constant motor 127 s (line 20)";
+    let thermal70 = "thermal resistances 2.55 K/W and 6.64 K/W (lines 17, 18), thermal time constant motor 127 s (line 20)";
     let w70_max = "w_max = line 23 max. speed 10 000 rpm.";
     for c in &w70 {
         let col = format!("{} V winding", c.u);

@@ -41,7 +41,19 @@ fn load() -> Load {
     let t: Vec<f64> = (0..n).map(|i| i as f64 / RATE).collect();
     let half = T_MOVE / 2.0;
     // At the end (the last sample) the table is at rest: no acceleration, no torque.
-    let qdd: Vec<f64> = t.iter().enumerate().map(|(i, &x)| if i + 1 == n { 0.0 } else if x < half { a } else { -a }).collect();
+    let qdd: Vec<f64> = t
+        .iter()
+        .enumerate()
+        .map(|(i, &x)| {
+            if i + 1 == n {
+                0.0
+            } else if x < half {
+                a
+            } else {
+                -a
+            }
+        })
+        .collect();
     let qd: Vec<f64> = t.iter().map(|&x| if x < half { a * x } else { a * (T_MOVE - x) }).collect();
     let tau = qdd.iter().map(|x| J_LOAD * x).collect();
     Load { t, qd, qdd, tau }
