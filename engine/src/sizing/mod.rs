@@ -62,8 +62,6 @@
 pub mod parts;
 #[cfg(test)]
 mod tests;
-#[cfg(test)]
-mod worked_example;
 
 use serde::Serialize;
 

@@ -13,10 +13,11 @@
 
 use std::f64::consts::PI;
 
-use super::*;
 use crate::library::seed;
+use crate::pipeline::back::modelica::mechatronics::JointKind;
+use crate::sizing::{rank, size_drive, Amplifier, AxisLoad, Brake, Catalog, Gear, Motor, PartRef, Settings};
 
-const DOC: &str = include_str!("../../../docs/sizing-example.md");
+const DOC: &str = include_str!("../../../../docs/sizing-example.md");
 
 /// The example's numbers.
 const J_LOAD: f64 = 0.005;
