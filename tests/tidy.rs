@@ -88,9 +88,11 @@ fn check_module(root: &Path, module: &str, forbidden: &[&str], min_files: usize)
     let files = if root.is_file() { vec![root.to_path_buf()] } else { files_with_ext(root, &[".rs"]) };
     assert!(files.len() > min_files, "{module} sources not found under {}", root.display());
     for f in files {
-        // Unit tests kept in their own `tests.rs` and the shared `testutil.rs` (both declared under
-        // `#[cfg(test)]`) may do anything.
-        if f.file_name().is_some_and(|n| n == "tests.rs" || n == "testutil.rs") {
+        // Unit tests kept in their own `tests.rs`, its sub-modules under `tests/` and the shared
+        // `testutil.rs` (all declared under `#[cfg(test)]`) may do anything.
+        let under_tests =
+            f.strip_prefix(root).is_ok_and(|rel| rel.parent().is_some_and(|p| p.components().any(|c| c.as_os_str() == "tests")));
+        if under_tests || f.file_name().is_some_and(|n| n == "tests.rs" || n == "testutil.rs") {
             continue;
         }
         let src = non_test_source(&f);

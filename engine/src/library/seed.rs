@@ -439,7 +439,7 @@ fn instances() -> Vec<SeedInstance> {
             MAXON_RE40,
             DC_MOTOR,
             "maxon RE 40 148877 (24 V)",
-            "maxon RE 40 Ø40 mm, graphite brushes, 150 W, order number 148877 (24 V winding), maxon catalog motor data, nominal values at 24 V and 25 °C: terminal resistance 0.317 Ω, terminal inductance 0.0823 mH, torque constant 30.2 mNm/A, rotor inertia 134 gcm², nominal voltage 24 V, nominal (max. continuous) current 5.77 A. d is estimated from the no-load current 137 mA at the no-load speed 7580 rpm (d = I0·k/ω0). Datasheet values for the drive sizing (same catalog): nominal torque (max. continuous torque) 170 mNm (= 30.2 mNm/A · (5.77 A - 0.137 A)), max. permissible speed 12000 rpm. maxon prints no peak torque besides the stall torque 2280 mNm at 24 V (the sizing's voltage check covers the speed-torque line), so T_peak is left empty: the peak check then uses k·I_max, the current limit of the generated drive.",
+            "maxon RE 40 Ø40 mm, graphite brushes, 150 W, order number 148877 (24 V winding), maxon catalog motor data, nominal values at 24 V and 25 °C: terminal resistance 0.317 Ω, terminal inductance 0.0823 mH, torque constant 30.2 mNm/A, rotor inertia 134 gcm², nominal voltage 24 V, nominal (max. continuous) current 5.77 A. d is estimated from the no-load current 137 mA at the no-load speed 7580 rpm (d = I0·k/ω0). Datasheet values for the drive sizing (same catalog): nominal torque (max. continuous torque) 170 mNm (= 30.2 mNm/A · (5.77 A - 0.137 A)), max. permissible speed 12000 rpm. T_peak and T_stall missing: maxon prints no short-time torque limit, and the catalog's stall torque (2280 mNm at 24 V) is not entered here because this first-seed entry's page was not checked again; without either the sizing's peak check is not evaluated and names motor.T_peak or motor.T_stall as missing (never k·I_max, the continuous current's torque, which is only the generated drive's current limit).",
             values(json!({
                 "R": {"value": 0.317, "unit": "Ohm"},
                 "L": {"value": 0.0823, "unit": "mH"},
@@ -1134,9 +1134,10 @@ fn maxon_catalogue() -> Vec<NamedInstance> {
         MaxonColumn { id: ids[5], u: "60", t_nom: "143", i_nom: "0.92", stall: "1240", r: "7.370", l: "4.270", k: "152", tau_m: "5.770" },
     ];
     let mut out = Vec::new();
-    let mut push = |c: &MaxonColumn, title: &str, doc: &str, j: &str, w_max: &str, thermal: &str, column: &str| {
+    #[allow(clippy::too_many_arguments)]
+    let mut push = |c: &MaxonColumn, title: &str, doc: &str, j: &str, w_max: &str, thermal: &str, tau_w: &str, column: &str| {
         let source = format!(
-            "maxon {title}, {u} V winding (block-commutated brushless, modelled as a DC motor with the phase-to-phase values). {doc} Values ({column}): V_max = line 1 nominal voltage {u} V; R = line 10 terminal resistance phase to phase {r} Ω; L = line 11 terminal inductance phase to phase {l} mH; k = line 12 torque constant {k} mNm/A; J = line 16 rotor inertia {j} gcm²; I_max = line 6 nominal current (max. continuous current) {i} A; T_nom = line 5 nominal torque (max. continuous torque) {t} mNm; {w_max} The column's own consistency: R·J/k² = line 15 mechanical time constant {tau} ms. d = 0: the page prints no viscous friction coefficient, and d = 0 is the class's rule for that case. Tc = 0.001 s is the class's drive-setting default, not a motor value. T_peak missing: maxon prints no short-time torque limit, only that the motor may be briefly overloaded (recurring) without a figure. T_stall = line 7 stall torque {stall} mNm (a point of the speed-torque line at nominal voltage: the most the motor delivers at that voltage), the peak check's limit where the maker gives no short-time limit. Printed, without a parameter here: {thermal}.",
+            "maxon {title}, {u} V winding (block-commutated brushless, modelled as a DC motor with the phase-to-phase values). {doc} Values ({column}): V_max = line 1 nominal voltage {u} V; R = line 10 terminal resistance phase to phase {r} Ω; L = line 11 terminal inductance phase to phase {l} mH; k = line 12 torque constant {k} mNm/A; J = line 16 rotor inertia {j} gcm²; I_max = line 6 nominal current (max. continuous current) {i} A; T_nom = line 5 nominal torque (max. continuous torque) {t} mNm; {w_max} The column's own consistency: R·J/k² = line 15 mechanical time constant {tau} ms. d = 0: the page prints no viscous friction coefficient, and d = 0 is the class's rule for that case. Tc = 0.001 s is the class's drive-setting default, not a motor value. T_peak missing: maxon prints no short-time torque limit, only that the motor may be briefly overloaded (recurring) without a figure. T_stall = line 7 stall torque {stall} mNm (a point of the speed-torque line at nominal voltage: the most the motor delivers at that voltage), the peak check's limit where the maker gives no short-time limit. tau_th_w = line 19 thermal time constant winding {tau_w} s (the sizing's thermal check). Printed, without a parameter here: {thermal}.",
             u = c.u,
             r = c.r,
             l = c.l,
@@ -1156,7 +1157,8 @@ fn maxon_catalogue() -> Vec<NamedInstance> {
             "I_max": {"value": printed(c.i_nom), "unit": "A"},
             "Tc": 0.001,
             "T_nom": {"value": printed(c.t_nom), "unit": "mNm"},
-            "T_stall": {"value": printed(c.stall), "unit": "mNm"}
+            "T_stall": {"value": printed(c.stall), "unit": "mNm"},
+            "tau_th_w": {"value": printed(tau_w), "unit": "s"}
         });
         if w_max.starts_with("w_max = ") {
             v["w_max"] = json!({"value": 10000, "unit": "rpm"});
@@ -1164,19 +1166,18 @@ fn maxon_catalogue() -> Vec<NamedInstance> {
         out.push((c.id, DC_MOTOR, format!("maxon {title}, {} V", c.u), source, values(v)));
     };
     let doc30 = "Document: maxon catalogue page \"EC 45 flat Ø42.9 mm, brushless, 30 Watt\" (maxon EC motor, May 2012 edition, catalogue page 193), motor data table, values at nominal voltage, as published at https://vdocuments.us/ec-45-flat-429-mm-brushless-30-generator-30wpdf-ec-45-flat-429-mm-brushless.html (the stored copy prints lines 1-16 as rows of six columns: two columns per nominal voltage 12, 12, 24, 24, 36, 36 V; this instance is the first column of its voltage's pair, and which of the page's two variants, with Hall sensors or sensorless, that column is the stored copy does not say).";
-    let thermal30 = "thermal resistances housing-ambient 5.7 K/W and winding-housing 3.96 K/W (lines 17, 18), thermal time constant winding 11.5 s and motor 251 s (lines 19, 20)";
+    let thermal30 = "thermal resistances housing-ambient 5.7 K/W and winding-housing 3.96 K/W (lines 17, 18), thermal time constant motor 251 s (line 20)";
     let no_w30 =
         "w_max missing: line 23 (max. permissible speed) is cut off in the stored copy of the page, so the speed check is not evaluated.";
     for (c, col) in w30.iter().zip(["column 1", "column 3", "column 5"]) {
-        push(c, "EC 45 flat Ø42.9 mm, 30 W", doc30, "92.5", no_w30, thermal30, col);
+        push(c, "EC 45 flat Ø42.9 mm, 30 W", doc30, "92.5", no_w30, thermal30, "11.5", col);
     }
     let doc70 = "Document: maxon catalogue page \"EC 45 flat Ø43.5 mm, brushless, 70 watt\", Motor Data (provisional), values at nominal voltage 24, 36, 48, 60 V, as published in the online flipbook https://online.flippingbook.com/view/1042987/324 (page 324). The stored copy prints the table one winding at a time without line labels; each winding's numbers were matched to the lines by the page's own relations (line 13 speed constant × line 1 nominal voltage ≈ line 2 no load speed, nominal voltage / line 10 terminal resistance ≈ line 8 stall current, R·J/k² = line 15), and its 24 V column agrees with the first seed's EC 45 flat 70 W (24 V).";
-    let thermal70 =
-        "thermal resistances 2.55 K/W and 6.64 K/W (lines 17, 18), thermal time constant winding 43.1 s and motor 127 s (lines 19, 20)";
+    let thermal70 = "thermal resistances 2.55 K/W and 6.64 K/W (lines 17, 18), thermal time constant motor 127 s (line 20)";
     let w70_max = "w_max = line 23 max. speed 10 000 rpm.";
     for c in &w70 {
         let col = format!("{} V winding", c.u);
-        push(c, "EC 45 flat Ø43.5 mm, 70 W", doc70, "181", w70_max, thermal70, &col);
+        push(c, "EC 45 flat Ø43.5 mm, 70 W", doc70, "181", w70_max, thermal70, "43.1", &col);
     }
     out
 }

@@ -6,6 +6,8 @@ use std::f64::consts::PI;
 use super::*;
 use crate::library::{seed, Value};
 
+mod worked_example;
+
 fn part(name: &str) -> PartRef {
     PartRef { id: format!("id-{name}"), name: name.to_string() }
 }
