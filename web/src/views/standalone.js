@@ -51,6 +51,7 @@ export async function renderStandalone(main, initialId) {
   );
 
   const player = resultPlayer(playerBox, {
+    times: () => stream?.times,
     onTime(t) {
       if (view && stream) {
         state = shapesAt(stream, t, state);
