@@ -447,6 +447,14 @@ export async function checkDiagram(page, { name, shots, contacts = false }) {
     return { components: texts.length, shown: shown.length, small: shown.filter((t) => t.getBoundingClientRect().height < 9).map((t) => t.textContent).slice(0, 5), icons: v.querySelectorAll('g.icon').length };
   });
   await page.screenshot({ path: join(shots, `diagram-${name}.png`) });
+  // Its own full-width view: the dock spans the workspace, under the 3D view and the side panel.
+  look.width = await page.evaluate(() => {
+    const w = document.querySelector('.workspace').getBoundingClientRect();
+    const d = document.querySelector('.workspace > .dock').getBoundingClientRect();
+    const s = document.querySelector('.workspace > .side').getBoundingClientRect();
+    return { dock: Math.round(d.width), workspace: Math.round(w.width), under: d.top >= s.bottom - 1 };
+  });
+  assert.ok(look.width.dock >= look.width.workspace - 2 && look.width.under, `${name}: the diagram is not full width: ${JSON.stringify(look.width)}`);
   assert.deepEqual(look.small, [], `${name}: diagram names below 9 px`);
   assert.equal(look.icons, look.components, `${name}: an icon per component`);
   // Zoomed out: names are hidden once their components are small on screen, never drawn

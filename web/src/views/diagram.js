@@ -1,9 +1,9 @@
 // The "Modelica diagram" tab: the version's Mechanics (or Mechatronics) diagram as Dymola and
 // OMEdit draw it, from the package's own Placement and Line annotations (the service renders it
-// as SVG). The picture fills the bottom dock at full width (the 3D view stays above it), with zoom
-// buttons; every component gets an icon drawn from primitives by its class kind, names are
-// labelled in screen pixels (hidden when the component is too small on screen), and clicking a
-// component shows its parameters (and selects a body or joint everywhere).
+// as SVG). The picture fills the bottom dock across the whole window (the 3D view and the tabs
+// stay above it), with zoom buttons; every component gets an icon drawn from primitives by its
+// class kind, names are labelled in screen pixels (hidden when the component is too small on
+// screen), and clicking a component shows its parameters (and selects a body or joint everywhere).
 
 import { api } from '../api.js';
 import { h, fill, errorBox, num } from '../ui.js';
