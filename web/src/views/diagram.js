@@ -5,9 +5,9 @@
 // class kind, names are labelled in screen pixels (hidden when the component is too small on
 // screen), and clicking a component shows its parameters (and selects a body or joint everywhere).
 
-import { api } from '../api.js';
+import { api, enc } from '../api.js';
 import { h, fill, errorBox, num } from '../ui.js';
-import { componentKind, labelPlan, parseTitle } from './diagram-data.js';
+import { componentKind, labelPlan, parseTitle, driveParamRows } from './diagram-data.js';
 import { getUnits, toDisplay, symbolOf } from '../units.js';
 import { abbreviate } from '../layout-data.js';
 
@@ -84,9 +84,9 @@ function icon(kind, x, y, w, hh) {
 
 /**
  * @param {HTMLElement} panel  the tab panel
- * @param {{ version: any, report: any, select: Function, stage: HTMLElement }} ctx
+ * @param {{ modelId?: string, version: any, report: any, select: Function, stage: HTMLElement }} ctx
  */
-export function renderDiagram(panel, { version, report, select, stage }) {
+export function renderDiagram(panel, { modelId, version, report, select, stage }) {
   let which = 'Mechanics';
   let zoom = 1;
   const view = h('div', { class: 'diagram-view', tabIndex: 0, 'aria-label': 'Modelica diagram' });
@@ -169,13 +169,31 @@ export function renderDiagram(panel, { version, report, select, stage }) {
         }
       }
     }
-    fill(
-      paramsBox,
-      h('h3', {}, `Parameters of ${name}`),
-      h('table', { class: 'details-table diagram-params-table', 'aria-label': `Parameters of ${name}` }, h('tbody', {}, rows.map(([k, v]) => h('tr', {}, h('th', { scope: 'row' }, k), h('td', {}, v))))),
-    );
+    const show = (list) =>
+      fill(
+        paramsBox,
+        h('h3', {}, `Parameters of ${name}`),
+        h('table', { class: 'details-table diagram-params-table', 'aria-label': `Parameters of ${name}` }, h('tbody', {}, list.map(([k, v]) => h('tr', {}, h('th', { scope: 'row' }, k), h('td', {}, v))))),
+      );
+    show(rows);
+    // A drive: what the Drives tab stored for its joint (motor, gear, ratio, controller).
+    const drive = /^drive_(.+)$/.exec(name);
+    if (drive && modelId) {
+      paramsBox.dataset.loading = 'true';
+      drives ||= Promise.all([api(`/api/models/${enc(modelId)}/drives`), api('/api/library/instances')]);
+      drives
+        .then(([d, inst]) => {
+          if (paramsBox.querySelector('h3')?.textContent !== `Parameters of ${name}`) return;
+          const instById = new Map(inst.map((i) => [i.id, i]));
+          show([...rows, ...driveParamRows(drive[1], d.drives.find((x) => x.joint === drive[1]), instById)]);
+        })
+        .catch((e) => paramsBox.append(errorBox(e, 'The drive could not be loaded')))
+        .finally(() => delete paramsBox.dataset.loading);
+    }
   };
+  let drives = null; // the drives and library instances, loaded at the first drive clicked
   async function load() {
+    drives = null; // read again: they may have changed in the Drives tab
     status.textContent = `Loading the ${which} diagram…`;
     open.href = url();
     try {
