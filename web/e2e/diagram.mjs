@@ -54,8 +54,8 @@ export async function diagramSteps(page, { step, shot }) {
   await params.locator('th', { hasText: 'Motor' }).waitFor();
   const rows = Object.fromEntries(await params.locator('tr').evaluateAll((trs) => trs.map((tr) => [tr.querySelector('th').textContent, tr.querySelector('td').textContent])));
   const stored = await page.evaluate(async ({ id, joint }) => {
-    const d = (await (await fetch(`/api/models/${id}/drives`)).json()).drives.find((x) => x.joint === joint);
-    const names = new Map((await (await fetch('/api/library/instances')).json()).map((i) => [i.id, i.name]));
+    const d = (await (await fetch(`/api/models/${id}/drives`, { headers: { 'X-Requested-With': 'cad2mo' } })).json()).drives.find((x) => x.joint === joint);
+    const names = new Map((await (await fetch('/api/library/instances', { headers: { 'X-Requested-With': 'cad2mo' } })).json()).map((i) => [i.id, i.name]));
     return { motor: names.get(d.motor_instance), gear: names.get(d.gear_instance), controller: names.get(d.controller_instance) };
   }, { id, joint: driveName.slice('drive_'.length) });
   assert.equal(rows.Joint, driveName.slice('drive_'.length), JSON.stringify(rows));
