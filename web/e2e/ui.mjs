@@ -156,6 +156,18 @@ try {
   // A new drive starts with nothing chosen (issue 30): the controller is picked too.
   await editor.getByLabel('Controller instance').selectOption({ index: 1 });
   const ratio = editor.getByLabel('Gear ratio', { exact: false });
+  // Ratio 0 is refused at its field before anything is sent (issue 30: it was sent unchecked).
+  await ratio.fill('0');
+  let sent = 0;
+  const count = (r) => r.method() === 'PUT' && r.url().includes('/drives/') && sent++;
+  page.on('request', count);
+  await editor.getByRole('button', { name: 'Save drive' }).click();
+  await page.waitForTimeout(200);
+  const zeroMsg = await ratio.evaluate((el) => el.closest('.field')?.querySelector('.field-msg')?.textContent);
+  page.off('request', count);
+  assert.equal(zeroMsg, 'Gear ratio must not be 0 (the motor would be disconnected)', 'the message at the ratio field');
+  assert.equal(await ratio.getAttribute('aria-invalid'), 'true');
+  assert.equal(sent, 0, 'ratio 0 is not sent');
   await ratio.fill('25000');
   await editor.getByRole('button', { name: 'Save drive' }).click();
   await editor.getByText('Gear ratio = 25000 is above the maximum 10000').first().waitFor();
