@@ -169,14 +169,14 @@ export async function renderStandalone(main, initialId) {
    */
   async function extraOf(shapeName) {
     const owner = shapeName.split('.').slice(0, -1).join('.');
+    const id = enc(current.id);
     for (const n of [`${shapeName}.extra`, owner && `${owner}.extra`].filter(Boolean)) {
-      try {
-        const got = await api(`/api/results/${enc(current.id)}/series?name=${enc(n)}&width=10`);
-        const y = got.variables?.[0]?.y?.[0];
-        if (Number.isFinite(y)) return y;
-      } catch {
-        // not in this result: try the next name
-      }
+      // Searched first: asking for the series of a name the result lacks is a 404.
+      const found = await api(`/api/results/${id}/variables?search=${enc(n)}&limit=50`).catch(() => null);
+      if (!found?.variables?.some((v) => v.name === n)) continue;
+      const got = await api(`/api/results/${id}/series?name=${enc(n)}&width=10`).catch(() => null);
+      const y = got?.variables?.[0]?.y?.[0];
+      if (Number.isFinite(y)) return y;
     }
     return 0;
   }
