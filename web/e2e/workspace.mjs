@@ -176,6 +176,9 @@ export async function checkUnits(page) {
   await page.getByLabel('Angles').selectOption('rad');
   await page.locator('table.keyframe-table tbody th', { hasText: '[rad]' }).first().waitFor();
   await page.locator('.plot[data-plot="q"] .u-legend', { hasText: '[rad]' }).waitFor();
+  // The legend names the joints' lines, not a column of "--" values (issue 30).
+  const legend = await page.locator('.plot[data-plot="q"] .u-legend').textContent();
+  assert.doesNotMatch(legend, /--/, `the legend: ${legend}`);
   // The joint filter keeps the rows whose name matches.
   const rows = await page.locator('table.keyframe-table tbody tr').count();
   const first = await page.locator('table.keyframe-table tbody tr').first().getAttribute('data-joint');
