@@ -245,12 +245,13 @@ export function renderDiagram(panel, { modelId, version, report, select, stage }
   fill(
     panel,
     h('h2', {}, 'Modelica diagram'),
+    // The controls first: the side panel is short while the diagram takes the dock.
+    h('p', {}, h('label', {}, 'Model ', choice), ' ', h('button', { type: 'button', onclick: () => zoomBy(1.25) }, 'Zoom in'), ' ', h('button', { type: 'button', onclick: () => zoomBy(0.8) }, 'Zoom out'), ' ', open),
     h(
       'p',
       { class: 'muted' },
       'The diagram Dymola and OMEdit show for this package: the kinematic tree from the world (left) to the deepest bodies (right), each body with the frames fixed on it, joints between them; dashed red lines close loops. Mechatronics adds each drive above its joint and each contact force beside its body, wired to it alone (the collision world feeds every force by name, so no wires cross the sheet).',
     ),
-    h('p', {}, h('label', {}, 'Model ', choice), ' ', h('button', { type: 'button', onclick: () => zoomBy(1.25) }, 'Zoom in'), ' ', h('button', { type: 'button', onclick: () => zoomBy(0.8) }, 'Zoom out'), ' ', open),
   );
   fill(stage, status, view, paramsBox);
   load();
