@@ -46,6 +46,21 @@ export async function diagramSteps(page, { step, shot }) {
   await page.getByRole('combobox', { name: 'Model' }).selectOption('Mechatronics');
   await page.locator('.diagram-status').filter({ hasText: 'Mechatronics:' }).waitFor();
   const drives = await view.locator('svg g[data-component^="drive_"]').count();
+  // A drive's parameters: what the Drives tab stored for its joint (motor, gear, ratio, controller).
+  const driveBox = view.locator('svg g[data-component^="drive_"]').first();
+  const driveName = await driveBox.getAttribute('data-component');
+  await driveBox.locator(':scope > rect').click();
+  const params = page.getByRole('table', { name: `Parameters of ${driveName}` });
+  await params.locator('th', { hasText: 'Motor' }).waitFor();
+  const rows = Object.fromEntries(await params.locator('tr').evaluateAll((trs) => trs.map((tr) => [tr.querySelector('th').textContent, tr.querySelector('td').textContent])));
+  const stored = await page.evaluate(async ({ id, joint }) => {
+    const d = (await (await fetch(`/api/models/${id}/drives`, { headers: { 'X-Requested-With': 'cad2mo' } })).json()).drives.find((x) => x.joint === joint);
+    const names = new Map((await (await fetch('/api/library/instances', { headers: { 'X-Requested-With': 'cad2mo' } })).json()).map((i) => [i.id, i.name]));
+    return { motor: names.get(d.motor_instance), gear: names.get(d.gear_instance), controller: names.get(d.controller_instance) };
+  }, { id, joint: driveName.slice('drive_'.length) });
+  assert.equal(rows.Joint, driveName.slice('drive_'.length), JSON.stringify(rows));
+  assert.deepEqual([rows.Motor, rows.Gear, rows.Controller], [stored.motor, stored.gear, stored.controller], `the drive's parameters: ${JSON.stringify(rows)}`);
+  assert.ok(Number(rows.Ratio) > 0, `its ratio: ${JSON.stringify(rows)}`);
   await shot(page, '29-mechatronics-diagram');
   return { components: shown.length, lines, drives, kinds: look.kinds };
 }

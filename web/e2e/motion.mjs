@@ -145,6 +145,14 @@ export async function motionSteps(page, { joint, step, shot, downloads, strict }
   const paused = await player.getAttribute('data-time');
   await page.waitForTimeout(250);
   assert.equal(await player.getAttribute('data-time'), paused, 'paused');
+  // Step: one sample forward and back, staying paused (at the end, forward stays there).
+  const sample = Number(await page.locator('#motion-scrub').getAttribute('step'));
+  const end = Number(await page.locator('#motion-scrub').getAttribute('max'));
+  await page.locator('#motion-step').click();
+  const stepped = Number(await player.getAttribute('data-time'));
+  assert.ok(Math.abs(stepped - Math.min(Number(paused) + sample, end)) < 2e-3 && (await player.getAttribute('data-playing')) === 'false', `Step » moves one sample (${sample} s) from ${paused}: ${stepped}`);
+  await page.locator('#motion-step-back').click();
+  assert.ok(Math.abs(Number(await player.getAttribute('data-time')) - Math.max(stepped - sample, 0)) < 2e-3, '« Step goes back one sample');
   const duration = Number(await page.locator('#motion-scrub').getAttribute('max'));
   assert.ok(duration > 0, 'the motion takes time');
   await page.locator('#motion-scrub').fill(String(duration / 2));

@@ -241,6 +241,14 @@ export async function resultsSteps(page, { step, shot, downloads }) {
   const paused = await player.getAttribute('data-time');
   await page.waitForTimeout(200);
   assert.equal(await player.getAttribute('data-time'), paused, 'paused');
+  // Step: to the next sample of the result (every 0.02 s) and back, staying paused.
+  await page.locator('#results-step').click();
+  const stepped = Number(await player.getAttribute('data-time'));
+  const next = time.find((x) => x > Number(paused) + 1e-6);
+  assert.ok(Math.abs(stepped - next) < 1e-6 && (await player.getAttribute('data-playing')) === 'false', `Step » goes from ${paused} to the next sample ${next}: ${stepped}`);
+  await page.locator('#results-step-back').click();
+  const back = Number(await player.getAttribute('data-time'));
+  assert.ok(Math.abs(back - time.filter((x) => x < next - 1e-6).pop()) < 1e-6, `« Step goes back one sample from ${stepped}: ${back}`);
   await page.locator('#results-speed').selectOption('10');
   await page.locator('#results-play').click();
   await page.waitForFunction(() => document.querySelector('.results-player').dataset.playing === 'false', null, { timeout: 10_000 });

@@ -178,6 +178,34 @@ export async function standaloneSteps(page, { step, shot, downloads, checkLabels
     robot = { shapes: scene.shapes.length, drawn: drawn.length, frames: scene.frames.length };
     step(`fullRobot ${JSON.stringify(robot)}`);
     await shot(page, '33-standalone-fullrobot');
+    // Its DXF shapes are boxes until their files are chosen (issue 30): a chosen b1.dxf (3D faces
+    // of a 0.1 m tetrahedron written here) draws b1's shape, read in the browser; a file no shape
+    // names and one without 3D faces are named.
+    step('standalone results: RobotR3 shape files');
+    const chooser = page.locator('.shape-files-box');
+    const listed = await chooser.textContent();
+    for (let i = 0; i <= 6; i++) assert.ok(listed.includes(`b${i}.dxf`), `b${i}.dxf is listed: ${listed}`);
+    const faces = [[[0, 0, 0], [0.1, 0, 0], [0, 0.1, 0]], [[0, 0, 0], [0, 0.1, 0], [0, 0, 0.1]], [[0, 0, 0], [0, 0, 0.1], [0.1, 0, 0]], [[0.1, 0, 0], [0, 0, 0.1], [0, 0.1, 0]]];
+    const dxf = (fs) => ['  0', 'SECTION', '  2', 'ENTITIES', ...fs.flatMap((c) => ['  0', '3DFACE', '  8', '0', ...[...c, c[2]].flatMap((p, k) => [` 1${k}`, String(p[0]), ` 2${k}`, String(p[1]), ` 3${k}`, String(p[2])])]), '  0', 'ENDSEC', '  0', 'EOF', ''].join('\r\n');
+    const files = { 'b1.dxf': dxf(faces), 'B2.DXF': dxf([]).replace('ENTITIES', 'ENTITIES\r\n  0\r\nLINE'), 'notes.dxf': dxf(faces) };
+    for (const [n, text] of Object.entries(files)) writeFileSync(join(downloads, n), text);
+    await page.locator('#shape-files').setInputFiles(Object.keys(files).map((n) => join(downloads, n)));
+    const out = page.locator('.shape-files-out');
+    await out.locator('p.ok').waitFor();
+    const said = await out.textContent();
+    assert.match(said, /Drawn from b1\.dxf \(1 shape\)/, said);
+    assert.match(said, /No shape of this result names notes\.dxf/, said);
+    assert.match(said, /B2\.DXF has no 3DFACE entities/, said);
+    const left = await out.locator('p.muted').last().textContent();
+    assert.ok(left.startsWith('Still boxes: ') && left.includes('b0.dxf') && !left.includes('b1.dxf'), left);
+    const b1 = (await inspect(page)).shapes.filter((x) => x.from === 'b1.dxf');
+    assert.equal(b1.length, 1, 'one shape drawn from b1.dxf');
+    assert.equal(b1[0].vertices, 12, 'the four 3D faces are drawn');
+    // Placed in the shape's frame: unscaled with MSL's extra = 0, scaled by length, width, height otherwise.
+    const col = Math.hypot(b1[0].matrix[0], b1[0].matrix[1], b1[0].matrix[2]);
+    if (!b1[0].scaled) assert.ok(Math.abs(col - 1) < 1e-6, `b1.dxf drawn at its own size: ${col}`);
+    robot.fileShape = { from: 'b1.dxf', scaled: b1[0].scaled, scale: col };
+    await shot(page, '33b-standalone-fullrobot-dxf');
     await page.getByRole('button', { name: 'Delete result fullRobot.mat' }).click();
     await page.getByRole('dialog').getByRole('button', { name: 'Delete' }).click();
     await page.locator('tr[data-result-id]', { hasText: 'fullRobot.mat' }).waitFor({ state: 'detached' });

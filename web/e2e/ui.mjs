@@ -156,6 +156,18 @@ try {
   // A new drive starts with nothing chosen (issue 30): the controller is picked too.
   await editor.getByLabel('Controller instance').selectOption({ index: 1 });
   const ratio = editor.getByLabel('Gear ratio', { exact: false });
+  // Ratio 0 is refused at its field before anything is sent (issue 30: it was sent unchecked).
+  await ratio.fill('0');
+  let sent = 0;
+  const count = (r) => r.method() === 'PUT' && r.url().includes('/drives/') && sent++;
+  page.on('request', count);
+  await editor.getByRole('button', { name: 'Save drive' }).click();
+  await page.waitForTimeout(200);
+  const zeroMsg = await ratio.evaluate((el) => el.closest('.field')?.querySelector('.field-msg')?.textContent);
+  page.off('request', count);
+  assert.equal(zeroMsg, 'Gear ratio must not be 0 (the motor would be disconnected)', 'the message at the ratio field');
+  assert.equal(await ratio.getAttribute('aria-invalid'), 'true');
+  assert.equal(sent, 0, 'ratio 0 is not sent');
   await ratio.fill('25000');
   await editor.getByRole('button', { name: 'Save drive' }).click();
   await editor.getByText('Gear ratio = 25000 is above the maximum 10000').first().waitFor();
@@ -208,7 +220,22 @@ try {
   await shot(page, '7-drives-saved');
   await checkLabels(page, 'the drives tab');
   step('regenerate and download');
+  // Progress from the first moment (it once stayed silent for 8 s): what the page shows under
+  // the button, recorded from the click on.
+  await page.evaluate(() => {
+    const seen = (window.regenSeen = []);
+    const t0 = performance.now();
+    const note = () => {
+      const p = document.querySelector('.regen-progress');
+      if (p) seen.push({ ms: Math.round(performance.now() - t0), bar: !!p.querySelector('progress[aria-label="Regenerating the package"]'), text: p.textContent });
+    };
+    new MutationObserver(note).observe(document.body, { subtree: true, childList: true, characterData: true });
+  });
   const [pkg] = await Promise.all([page.waitForEvent('download', { timeout: 60_000 }), page.getByRole('button', { name: 'Regenerate and download package' }).click()]);
+  const regenSeen = await page.evaluate(() => window.regenSeen);
+  assert.ok(regenSeen.length && regenSeen[0].bar && regenSeen[0].ms < 500, `a progress bar at once: ${JSON.stringify(regenSeen.slice(0, 3))}`);
+  assert.ok(regenSeen.some((x) => /Re-export of v\d+: /.test(x.text)) && regenSeen.some((x) => /Downloading the package of v\d+/.test(x.text)), `the job's stage, then the download: ${JSON.stringify(regenSeen.map((x) => x.text))}`);
+  await page.locator('p.ok', { hasText: /regenerated with \d+ drives and downloaded/ }).waitFor();
   const packagePath = join(downloads, pkg.suggestedFilename());
   await pkg.saveAs(packagePath);
 

@@ -176,6 +176,9 @@ export async function checkUnits(page) {
   await page.getByLabel('Angles').selectOption('rad');
   await page.locator('table.keyframe-table tbody th', { hasText: '[rad]' }).first().waitFor();
   await page.locator('.plot[data-plot="q"] .u-legend', { hasText: '[rad]' }).waitFor();
+  // The legend names the joints' lines, not a column of "--" values (issue 30).
+  const legend = await page.locator('.plot[data-plot="q"] .u-legend').textContent();
+  assert.doesNotMatch(legend, /--/, `the legend: ${legend}`);
   // The joint filter keeps the rows whose name matches.
   const rows = await page.locator('table.keyframe-table tbody tr').count();
   const first = await page.locator('table.keyframe-table tbody tr').first().getAttribute('data-joint');
@@ -204,6 +207,41 @@ export async function checkUnits(page) {
   assert.ok(back.q === undefined || back.q === q0, `Reset pose puts the joint exactly at its CAD pose: ${back.q} vs ${q0}`);
   assert.equal(Number(back.range), Number((q0 * 180 / Math.PI).toPrecision(12)) || 0, `the slider shows the CAD pose exactly: ${JSON.stringify(back)}`);
   return { key, q0 };
+}
+
+/**
+ * A prismatic joint's slider (the issue's read −0.840798 mm at the CAD pose): it shows the CAD
+ * pose exactly, spans the joint's limits, and a typed length reaches the joint exactly (mm).
+ */
+export async function checkPrismatic(page) {
+  await page.getByRole('tab', { name: 'Structure', exact: true }).click();
+  const found = await page.evaluate(() => {
+    for (const j of window.cad2moViewer.report.joints) {
+      const i = (j.elements || []).findIndex((e) => e.kind === 'prismatic');
+      if (i >= 0) return { key: `${j.modelica_name}#${i}`, q0: j.elements[i].initial_q };
+    }
+    return null;
+  });
+  assert.ok(found, 'a prismatic joint');
+  const read = () =>
+    page.evaluate((k) => {
+      const r = document.getElementById(`q-${k}`);
+      return { value: Number(r.value), min: Number(r.min), max: Number(r.max), entry: document.getElementById(`qv-${k}`).value, q: window.cad2moViewer.q.get(k) };
+    }, found.key);
+  const atStart = await read();
+  const cad = Number((found.q0 * 1000).toPrecision(12)) || 0;
+  assert.equal(atStart.value, cad, `the slider shows the CAD pose ${cad} mm exactly: ${JSON.stringify(atStart)}`);
+  assert.ok(atStart.min <= cad && cad <= atStart.max && atStart.max > atStart.min, `the slider spans the limits and the CAD pose: ${JSON.stringify(atStart)}`);
+  const target = Number(((atStart.min + atStart.max) / 2).toFixed(1));
+  const entry = page.locator(`[id="qv-${found.key}"]`);
+  await entry.fill(String(target));
+  await entry.press('Enter');
+  const moved = await read();
+  assert.ok(Math.abs(moved.q - target / 1000) < 1e-15 && moved.value === target, `typed ${target} mm: ${JSON.stringify(moved)}`);
+  await page.getByRole('button', { name: 'Reset pose' }).click();
+  const back = await read();
+  assert.ok(back.value === cad && (back.q === undefined || back.q === found.q0), `Reset pose: back at the CAD pose: ${JSON.stringify(back)}`);
+  return { joint: found.key, cad, limits: [atStart.min, atStart.max], typed: target };
 }
 
 /**
@@ -412,8 +450,37 @@ export async function checkDiagram(page, { name, shots, contacts = false }) {
     return { components: texts.length, shown: shown.length, small: shown.filter((t) => t.getBoundingClientRect().height < 9).map((t) => t.textContent).slice(0, 5), icons: v.querySelectorAll('g.icon').length };
   });
   await page.screenshot({ path: join(shots, `diagram-${name}.png`) });
+  // Its own full-width view: the dock spans the workspace, under the 3D view and the side panel.
+  look.width = await page.evaluate(() => {
+    const w = document.querySelector('.workspace').getBoundingClientRect();
+    const d = document.querySelector('.workspace > .dock').getBoundingClientRect();
+    const s = document.querySelector('.workspace > .side').getBoundingClientRect();
+    return { dock: Math.round(d.width), workspace: Math.round(w.width), under: d.top >= s.bottom - 1 };
+  });
+  assert.ok(look.width.dock >= look.width.workspace - 2 && look.width.under, `${name}: the diagram is not full width: ${JSON.stringify(look.width)}`);
   assert.deepEqual(look.small, [], `${name}: diagram names below 9 px`);
   assert.equal(look.icons, look.components, `${name}: an icon per component`);
+  // Zoomed out: names are hidden once their components are small on screen, never drawn
+  // unreadable; zoomed back in they return.
+  const labels = () =>
+    page.locator('.diagram-view').evaluate((v) => {
+      const shown = [...v.querySelectorAll('svg g[data-component] > text')].filter((t) => t.getAttribute('visibility') !== 'hidden');
+      return { hidden: Number(v.querySelector('svg').dataset.hiddenLabels), shown: shown.length, small: shown.filter((t) => t.getBoundingClientRect().height < 9).length };
+    });
+  const atDefault = await labels();
+  let outs = 0;
+  let far = atDefault;
+  while (far.hidden <= atDefault.hidden && outs < 12) {
+    await page.getByRole('button', { name: 'Zoom out', exact: true }).click();
+    outs++;
+    far = await labels();
+    assert.equal(far.small, 0, `${name}: zoomed out ${outs}×, names below 9 px are drawn: ${JSON.stringify(far)}`);
+  }
+  assert.ok(far.hidden > atDefault.hidden, `${name}: zooming out hides names: ${JSON.stringify({ atDefault, far, outs })}`);
+  await page.screenshot({ path: join(shots, `diagram-${name}-zoomed-out.png`) });
+  for (let i = 0; i < outs; i++) await page.getByRole('button', { name: 'Zoom in', exact: true }).click();
+  assert.equal((await labels()).hidden, atDefault.hidden, `${name}: zoomed back in, the names return`);
+  look.zoomOuts = outs;
   if (contacts) look.contacts = await checkContactWires(page, { name, shots });
   return look;
 }

@@ -1,6 +1,7 @@
 // The 3D view of a standalone result: the Dymola visual shapes of any Modelica model drawn as
 // primitives in their colours (box, cylinder, sphere, cone; a labelled small box for file and
-// other shapes) and its frames as small axis triads, posed from the shape stream. The same
+// other shapes until the user supplies the files: DXF 3D faces or STL, drawn in the shape's
+// frame scaled by length, width and height) and its frames as small axis triads, posed from the shape stream. The same
 // style as the model viewer: light background, hemisphere and two directional lights, a grid
 // normal to "up" (+y, MSL's default gravity along −y), orbit controls; renders on demand.
 
@@ -108,8 +109,9 @@ export class ShapeView {
   setState(v) {
     const m = new THREE.Matrix4();
     const e = new Array(16);
+    this.last = v;
     this.def.shapes.forEach((s, k) => {
-      shapeMatrix(s.kind, v, 12 * k, e);
+      shapeMatrix(this.shapes[k].matrixKind || s.kind, v, 12 * k, e);
       m.fromArray(e);
       const entry = this.shapes[k];
       entry.mesh.matrix.copy(m);
@@ -140,7 +142,7 @@ export class ShapeView {
     this.size = size;
     for (const f of this.frames) f.axes.scale.setScalar(size * 0.06);
     this.shapes.forEach((s) => {
-      if (s.kind !== 'file' && s.kind !== 'other') return;
+      if ((s.kind !== 'file' && s.kind !== 'other') || s.drawnFrom) return;
       s.label = label(s.file ? fileLabel(s.file) : shortName(s.name), size * 0.03);
       s.label.center.set(0, 0);
       this.scene.add(s.label);
@@ -197,6 +199,31 @@ export class ShapeView {
     this.host.dataset.rendered = String(Number(this.host.dataset.rendered || 0) + 1);
   }
 
+  /**
+   * Draws the file shapes `indices` with `geometry` (the file's coordinates, in the shape's
+   * frame) instead of their labelled box; `from` names the file (inspect() reports it).
+   * `scaled(k)`: whether shape k scales the file by its length, width and height (MSL's
+   * extra ≠ 0); otherwise the file's coordinates are metres as they stand (extra = 0, the default).
+   */
+  useFile(indices, geometry, from, scaled = () => false) {
+    if (!geometry.getAttribute('normal')) geometry.computeVertexNormals();
+    for (const k of indices) {
+      const s = this.shapes[k];
+      if (!s) continue;
+      s.mesh.geometry = geometry;
+      s.drawnFrom = from;
+      s.matrixKind = scaled(k) ? 'file' : 'file-raw';
+      if (s.label) {
+        this.scene.remove(s.label);
+        s.label.material.map?.dispose();
+        s.label.material.dispose();
+        s.label = null;
+      }
+    }
+    if (this.last) this.setState(this.last);
+    this.invalidate();
+  }
+
   /** What the scene draws now, for the end-to-end tests: world matrices, bounds and colours. */
   inspect() {
     this.scene.updateMatrixWorld(true);
@@ -214,6 +241,9 @@ export class ShapeView {
           color: s.color,
           hex: c.getHexString(THREE.SRGBColorSpace),
           visible: s.mesh.visible,
+          from: s.drawnFrom || null,
+          scaled: s.drawnFrom ? s.matrixKind === 'file' : null,
+          vertices: s.mesh.geometry.getAttribute('position').count,
         };
       }),
       frames: this.frames.map((f) => ({ name: f.name, position: f.axes.position.toArray(), quaternion: f.axes.quaternion.toArray() })),

@@ -42,3 +42,26 @@ export function parseTitle(title) {
   const i = t.lastIndexOf(' ');
   return i < 0 ? { className: t, name: '' } : { className: t.slice(0, i), name: t.slice(i + 1) };
 }
+
+/**
+ * The parameter rows of a Mechatronics drive component (drive_<joint>): the joint, the library
+ * instances of its motor, gear and controller (by name), the gear ratio (the drive's own override
+ * or the gear's value) and any other overridden values.
+ * @param {string} joint
+ * @param {object|undefined} drive  one of GET /api/models/{id}/drives' drives
+ * @param {Map<string, {name: string, values?: object}>} instById  the library's instances
+ * @returns {[string, string][]}
+ */
+export function driveParamRows(joint, drive, instById) {
+  if (!drive) return [['Joint', joint], ['Drive', 'none stored for this joint']];
+  const name = (id) => (id ? instById.get(id)?.name || id : '—');
+  const rows = [['Joint', joint], ['Motor', name(drive.motor_instance)], ['Gear', name(drive.gear_instance)]];
+  const ratio = drive.overrides?.gear?.ratio ?? instById.get(drive.gear_instance)?.values?.ratio;
+  if (ratio !== undefined && ratio !== null) rows.push(['Ratio', String(ratio)]);
+  rows.push(['Controller', name(drive.controller_instance)]);
+  for (const [slot, values] of Object.entries(drive.overrides || {})) {
+    for (const [k, v] of Object.entries(values || {})) if (!(slot === 'gear' && k === 'ratio')) rows.push([`${slot}.${k}`, String(v)]);
+  }
+  if (drive.status && drive.status !== 'active') rows.push(['Status', drive.status]);
+  return rows;
+}

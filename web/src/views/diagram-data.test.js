@@ -36,3 +36,17 @@ test('the component title splits into class and name', () => {
   assert.deepEqual(parseTitle('Modelica.Mechanics.MultiBody.Parts.Body LINK1'), { className: 'Modelica.Mechanics.MultiBody.Parts.Body', name: 'LINK1' });
   assert.deepEqual(parseTitle('World'), { className: 'World', name: '' });
 });
+
+test('a drive component shows its motor, gear, ratio, controller and overrides', async () => {
+  const { driveParamRows } = await import('./diagram-data.js');
+  const inst = new Map([
+    ['m1', { name: 'maxon RE 40' }],
+    ['g1', { name: 'GP 52 C', values: { ratio: 43 } }],
+    ['c1', { name: 'Cascade PI' }],
+  ]);
+  const d = { joint: 'J1', motor_instance: 'm1', gear_instance: 'g1', controller_instance: 'c1', overrides: { gear: { ratio: 100, eta: 0.8 } }, status: 'active' };
+  assert.deepEqual(driveParamRows('J1', d, inst), [['Joint', 'J1'], ['Motor', 'maxon RE 40'], ['Gear', 'GP 52 C'], ['Ratio', '100'], ['Controller', 'Cascade PI'], ['gear.eta', '0.8']]);
+  assert.deepEqual(driveParamRows('J1', { ...d, overrides: {} }, inst).find((r) => r[0] === 'Ratio'), ['Ratio', '43'], "the gear's own ratio");
+  assert.deepEqual(driveParamRows('J2', undefined, inst), [['Joint', 'J2'], ['Drive', 'none stored for this joint']]);
+  assert.deepEqual(driveParamRows('J1', { ...d, status: 'orphaned' }, inst).pop(), ['Status', 'orphaned']);
+});

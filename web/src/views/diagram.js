@@ -1,13 +1,13 @@
 // The "Modelica diagram" tab: the version's Mechanics (or Mechatronics) diagram as Dymola and
 // OMEdit draw it, from the package's own Placement and Line annotations (the service renders it
-// as SVG). The picture fills the bottom dock at full width (the 3D view stays above it), with zoom
-// buttons; every component gets an icon drawn from primitives by its class kind, names are
-// labelled in screen pixels (hidden when the component is too small on screen), and clicking a
-// component shows its parameters (and selects a body or joint everywhere).
+// as SVG). The picture fills the bottom dock across the whole window (the 3D view and the tabs
+// stay above it), with zoom buttons; every component gets an icon drawn from primitives by its
+// class kind, names are labelled in screen pixels (hidden when the component is too small on
+// screen), and clicking a component shows its parameters (and selects a body or joint everywhere).
 
-import { api } from '../api.js';
+import { api, enc } from '../api.js';
 import { h, fill, errorBox, num } from '../ui.js';
-import { componentKind, labelPlan, parseTitle } from './diagram-data.js';
+import { componentKind, labelPlan, parseTitle, driveParamRows } from './diagram-data.js';
 import { getUnits, toDisplay, symbolOf } from '../units.js';
 import { abbreviate } from '../layout-data.js';
 
@@ -84,9 +84,9 @@ function icon(kind, x, y, w, hh) {
 
 /**
  * @param {HTMLElement} panel  the tab panel
- * @param {{ version: any, report: any, select: Function, stage: HTMLElement }} ctx
+ * @param {{ modelId?: string, version: any, report: any, select: Function, stage: HTMLElement }} ctx
  */
-export function renderDiagram(panel, { version, report, select, stage }) {
+export function renderDiagram(panel, { modelId, version, report, select, stage }) {
   let which = 'Mechanics';
   let zoom = 1;
   const view = h('div', { class: 'diagram-view', tabIndex: 0, 'aria-label': 'Modelica diagram' });
@@ -169,13 +169,31 @@ export function renderDiagram(panel, { version, report, select, stage }) {
         }
       }
     }
-    fill(
-      paramsBox,
-      h('h3', {}, `Parameters of ${name}`),
-      h('table', { class: 'details-table diagram-params-table', 'aria-label': `Parameters of ${name}` }, h('tbody', {}, rows.map(([k, v]) => h('tr', {}, h('th', { scope: 'row' }, k), h('td', {}, v))))),
-    );
+    const show = (list) =>
+      fill(
+        paramsBox,
+        h('h3', {}, `Parameters of ${name}`),
+        h('table', { class: 'details-table diagram-params-table', 'aria-label': `Parameters of ${name}` }, h('tbody', {}, list.map(([k, v]) => h('tr', {}, h('th', { scope: 'row' }, k), h('td', {}, v))))),
+      );
+    show(rows);
+    // A drive: what the Drives tab stored for its joint (motor, gear, ratio, controller).
+    const drive = /^drive_(.+)$/.exec(name);
+    if (drive && modelId) {
+      paramsBox.dataset.loading = 'true';
+      drives ||= Promise.all([api(`/api/models/${enc(modelId)}/drives`), api('/api/library/instances')]);
+      drives
+        .then(([d, inst]) => {
+          if (paramsBox.querySelector('h3')?.textContent !== `Parameters of ${name}`) return;
+          const instById = new Map(inst.map((i) => [i.id, i]));
+          show([...rows, ...driveParamRows(drive[1], d.drives.find((x) => x.joint === drive[1]), instById)]);
+        })
+        .catch((e) => paramsBox.append(errorBox(e, 'The drive could not be loaded')))
+        .finally(() => delete paramsBox.dataset.loading);
+    }
   };
+  let drives = null; // the drives and library instances, loaded at the first drive clicked
   async function load() {
+    drives = null; // read again: they may have changed in the Drives tab
     status.textContent = `Loading the ${which} diagram…`;
     open.href = url();
     try {
@@ -227,12 +245,13 @@ export function renderDiagram(panel, { version, report, select, stage }) {
   fill(
     panel,
     h('h2', {}, 'Modelica diagram'),
+    // The controls first: the side panel is short while the diagram takes the dock.
+    h('p', {}, h('label', {}, 'Model ', choice), ' ', h('button', { type: 'button', onclick: () => zoomBy(1.25) }, 'Zoom in'), ' ', h('button', { type: 'button', onclick: () => zoomBy(0.8) }, 'Zoom out'), ' ', open),
     h(
       'p',
       { class: 'muted' },
       'The diagram Dymola and OMEdit show for this package: the kinematic tree from the world (left) to the deepest bodies (right), each body with the frames fixed on it, joints between them; dashed red lines close loops. Mechatronics adds each drive above its joint and each contact force beside its body, wired to it alone (the collision world feeds every force by name, so no wires cross the sheet).',
     ),
-    h('p', {}, h('label', {}, 'Model ', choice), ' ', h('button', { type: 'button', onclick: () => zoomBy(1.25) }, 'Zoom in'), ' ', h('button', { type: 'button', onclick: () => zoomBy(0.8) }, 'Zoom out'), ' ', open),
   );
   fill(stage, status, view, paramsBox);
   load();

@@ -273,7 +273,7 @@ export async function renderViewer(main, id, v, initialTab) {
           sceneSaved: () => collision?.reload?.(),
         })),
     },
-    { id: 'diagram', label: 'Modelica diagram', render: (p) => renderDiagram(p, { version, report, select, stage: diagramStage }) },
+    { id: 'diagram', label: 'Modelica diagram', render: (p) => renderDiagram(p, { modelId: id, version, report, select, stage: diagramStage }) },
   ];
   let collision = null;
   let scene = null;

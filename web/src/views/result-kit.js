@@ -5,7 +5,7 @@
 
 import { api, upload, enc, ApiError } from '../api.js';
 import { h, fill, errorBox, num, bytes, when, plural, newId, unitLabel } from '../ui.js';
-import { valueAt, advance, SPEEDS, signalsCsv, csvName } from './results-data.js';
+import { valueAt, advance, SPEEDS, stepTime, signalsCsv, csvName } from './results-data.js';
 
 const SEARCH_LIMIT = 50;
 
@@ -117,12 +117,14 @@ export function resultUpload(box, { url, hint, say, done }) {
 }
 
 /**
- * The timeline of an open result: Play/Pause, a scrub slider, the clock, speed and loop. The
- * box carries data-time and data-playing (read by the end-to-end tests).
+ * The timeline of an open result: Play/Pause, a scrub slider, the clock, a step back and
+ * forward to the neighbouring sample, speed and loop. The box carries data-time and
+ * data-playing (read by the end-to-end tests).
  * @param {HTMLElement} box
- * @param {{onTime: (t: number) => void}} o  called whenever the time changes
+ * @param {{onTime: (t: number) => void, times?: () => ArrayLike<number> | undefined}} o
+ *   onTime: called whenever the time changes; times: the result's sample instants (for Step)
  */
-export function resultPlayer(box, { onTime }) {
+export function resultPlayer(box, { onTime, times = () => undefined }) {
   let result = null;
   let time = 0;
   let playing = false;
@@ -180,6 +182,12 @@ export function resultPlayer(box, { onTime }) {
     });
     clock = h('output', { for: scrub.id, class: 'motion-clock' });
     playBtn = h('button', { type: 'button', id: 'results-play', onclick: () => (playing ? stop() : play()) }, 'Play');
+    const stepBy = (dir) => {
+      stop();
+      setTime(stepTime(times(), time, dir, r));
+    };
+    const back = h('button', { type: 'button', id: 'results-step-back', 'aria-label': 'Step back one sample', title: 'Step back one sample', onclick: () => stepBy(-1) }, '« Step');
+    const fwd = h('button', { type: 'button', id: 'results-step', 'aria-label': 'Step forward one sample', title: 'Step forward one sample', onclick: () => stepBy(1) }, 'Step »');
     const speedSel = h('select', { id: 'results-speed' }, SPEEDS.map((s) => h('option', { value: String(s), selected: s === speed }, `${s}×`)));
     speedSel.addEventListener('change', () => {
       speed = Number(speedSel.value);
@@ -194,7 +202,7 @@ export function resultPlayer(box, { onTime }) {
       box,
       ...head,
       h('div', { class: 'player row' }, playBtn, h('label', { for: scrub.id, class: 'visually-hidden' }, 'Result time'), scrub, clock),
-      h('div', { class: 'row player-options' }, h('label', { for: speedSel.id }, 'Speed'), speedSel, h('span', { class: 'check' }, loopBox, h('label', { for: loopBox.id }, 'Loop'))),
+      h('div', { class: 'row player-options' }, back, fwd, h('label', { for: speedSel.id }, 'Speed'), speedSel, h('span', { class: 'check' }, loopBox, h('label', { for: loopBox.id }, 'Loop'))),
     );
     setTime(time);
   }

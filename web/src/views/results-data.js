@@ -134,8 +134,26 @@ export function advance(t, dt, { speed, start, stop, loop }) {
   return { t: next, ended: false };
 }
 
-/** The playback speeds offered (× real time). */
-export const SPEEDS = [0.1, 0.25, 0.5, 1, 2, 5, 10];
+/** The playback speeds offered (× real time): 0.1× to 4× everywhere, 10× for long results. */
+export const SPEEDS = [0.1, 0.25, 0.5, 1, 2, 4, 10];
+
+/**
+ * The time one step from `t` (`dir` +1 forward, −1 back): the first sample of ascending `times`
+ * after t (before it, going back), within [start, stop]; at the last (first) sample it stays.
+ * Without samples, a hundredth of the span.
+ */
+export function stepTime(times, t, dir, { start, stop }) {
+  const clampT = (x) => Math.max(start, Math.min(stop, x));
+  const n = times?.length ?? 0;
+  if (!n) return clampT(t + (dir * (stop - start)) / 100);
+  const eps = 1e-9 * Math.max(1, Math.abs(stop - start));
+  if (dir > 0) {
+    for (let i = 0; i < n; i++) if (times[i] > t + eps) return clampT(times[i]);
+    return clampT(times[n - 1]);
+  }
+  for (let i = n - 1; i >= 0; i--) if (times[i] < t - eps) return clampT(times[i]);
+  return clampT(times[0]);
+}
 
 function csvField(s) {
   const text = String(s);

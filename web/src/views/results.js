@@ -34,6 +34,7 @@ export function renderResults(panel, ctx) {
   fill(ctx.stage, playerBox, plotsBox);
 
   const player = resultPlayer(playerBox, {
+    times: () => stream?.times,
     onTime(t) {
       if (shown && stream?.bodies.length) viewer.setBodyPoses(stream.bodies, posesAt(stream, t, poseBuf));
       if (shown) viewer.setSceneTime?.(t);

@@ -89,7 +89,8 @@ export function shapeAxes(rx, ry) {
  * primitives run along their x axis from 0 to 1: a box 1 × 1 × 1 centred in y and z; a cylinder
  * and a cone (base at x = 0, tip at x = 1) of diameter 1; a sphere of diameter 1 centred at x =
  * 0.5. Scales: box, file and other (length, width, height); cylinder, pipecylinder and cone
- * (length, width, width); sphere (length, length, length).
+ * (length, width, width); sphere (length, length, length); file-raw (a file drawn from the
+ * user's file with MSL's extra = 0: its coordinates unscaled, only placed and turned).
  * @param {ArrayLike<number>} v  12 values: r, rx, ry, size
  */
 export function shapeMatrix(kind, v, o = 0, out = new Array(16)) {
@@ -98,6 +99,7 @@ export function shapeMatrix(kind, v, o = 0, out = new Array(16)) {
   const [l, w, hgt] = [v[o + 9], v[o + 10], v[o + 11]];
   let s;
   if (kind === 'sphere') s = [l, l, l];
+  else if (kind === 'file-raw') s = [1, 1, 1];
   else if (kind === 'cylinder' || kind === 'pipecylinder' || kind === 'cone') s = [l, w, w];
   else s = [l, w, hgt];
   const cols = [ex, ey, ez];
@@ -164,4 +166,32 @@ export function streamBounds(stream, samples = 200) {
 export function fileLabel(path) {
   const name = String(path).replace(/["'\])\s]+$/, '').split(/[\\/]/).pop();
   return name.replace(/^["'[(\s]+/, '') || String(path);
+}
+
+/**
+ * Which file shapes the user's files draw: a file matches every file shape whose path names the
+ * same file, by name without extension and case (b0.dxf or B0.STL for …/RobotR3/b0.dxf).
+ * @param {{kind: string, file?: string}[]} shapes  the result's shapes (GET …/shapes)
+ * @param {string[]} names  the chosen files' names
+ * @returns {{used: Map<string, number[]>, unused: string[], missing: string[]}}
+ *   used: file name → indices of the shapes it draws; unused: files no shape names; missing:
+ *   the file labels of file shapes still without a file (each once)
+ */
+export function matchShapeFiles(shapes, names) {
+  const stem = (p) => String(p).split(/[\\/]/).pop().replace(/\.[^.]*$/, '').toLowerCase();
+  const used = new Map();
+  const unused = [];
+  const covered = new Set();
+  for (const n of names) {
+    const idx = [];
+    shapes.forEach((s, k) => {
+      if (s.kind === 'file' && s.file && stem(fileLabel(s.file)) === stem(n)) idx.push(k);
+    });
+    if (idx.length) {
+      used.set(n, idx);
+      idx.forEach((k) => covered.add(k));
+    } else unused.push(n);
+  }
+  const missing = [...new Set(shapes.filter((s, k) => s.kind === 'file' && s.file && !covered.has(k)).map((s) => fileLabel(s.file)))];
+  return { used, unused, missing };
 }

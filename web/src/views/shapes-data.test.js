@@ -75,6 +75,12 @@ test('shape matrix scales the unit primitive per kind', () => {
   const s = shapeMatrix('sphere', v);
   assert.equal(s[1], 2);
   assert.equal(s[10], 2);
+  // A user's file with extra = 0: placed and turned, its coordinates not scaled.
+  const f = shapeMatrix('file-raw', v);
+  const applyF = (p) => [0, 1, 2].map((i) => f[i] * p[0] + f[4 + i] * p[1] + f[8 + i] * p[2] + f[12 + i]);
+  assert.deepEqual(applyF([1, 0, 0]), [1, 3, 3]);
+  assert.deepEqual(applyF([0, 0, 1]), [1, 2, 4]);
+  assert.deepEqual(shapeMatrix('file', v), m, 'extra ≠ 0: scaled like a box');
 });
 
 test('short names', () => {
@@ -95,4 +101,20 @@ test('file shape labels', () => {
   assert.equal(fileLabel('modelica://Modelica/Resources/Data/Shapes/RobotR3/b0.dxf"]'), 'b0.dxf');
   assert.equal(fileLabel('C:\\shapes\\a.stl'), 'a.stl');
   assert.equal(fileLabel('"part.stl"'), 'part.stl');
+});
+
+test('chosen files draw the file shapes that name them, by name without extension and case', async () => {
+  const { matchShapeFiles } = await import('./shapes-data.js');
+  const shapes = [
+    { kind: 'file', file: 'modelica://Modelica/Resources/Data/Shapes/RobotR3/b0.dxf' },
+    { kind: 'box' },
+    { kind: 'file', file: 'modelica://Modelica/Resources/Data/Shapes/RobotR3/b1.dxf' },
+    { kind: 'file', file: 'modelica://Modelica/Resources/Data/Shapes/RobotR3/b0.dxf' },
+    { kind: 'file', file: 'modelica://Modelica/Resources/Data/Shapes/RobotR3/b2.dxf' },
+  ];
+  const m = matchShapeFiles(shapes, ['B0.STL', 'b2.dxf', 'notes.dxf']);
+  assert.deepEqual([...m.used], [['B0.STL', [0, 3]], ['b2.dxf', [4]]]);
+  assert.deepEqual(m.unused, ['notes.dxf']);
+  assert.deepEqual(m.missing, ['b1.dxf']);
+  assert.deepEqual(matchShapeFiles(shapes, []).missing, ['b0.dxf', 'b1.dxf', 'b2.dxf']);
 });

@@ -3,12 +3,15 @@
 // the standalone results; an open result shows its summary, its Dymola visual shapes and frames
 // in 3D animated from the shape stream with the timeline player, and the charts of searched
 // variables with the CSV export (the player and charts are the Results tab's, result-kit.js).
+// File shapes (RobotR3's b0.dxf … b6.dxf) are labelled boxes until the user chooses the files
+// (DXF 3D faces or STL, read in the browser, not uploaded): each then draws the shapes naming it.
 
 import { api, enc } from '../api.js';
 import { h, fill, errorBox, confirmAction, num, bytes, when, plural, say } from '../ui.js';
 import { resultUpload, resultTable, resultPlayer, resultCharts, deleteResult } from './result-kit.js';
-import { parseShapePoses, shapesAt, streamBounds } from './shapes-data.js';
+import { parseShapePoses, shapesAt, streamBounds, matchShapeFiles, fileLabel } from './shapes-data.js';
 import { ShapeView } from '../viewer/shapes.js';
+import { parseDxfFaces } from '../viewer/dxf.js';
 
 const LIST = '/api/results';
 
@@ -28,6 +31,7 @@ export async function renderStandalone(main, initialId) {
   const uploadBox = h('section', { class: 'results-upload', 'aria-label': 'Upload a result' });
   const listBox = h('div', { class: 'results-list-box' });
   const summaryBox = h('div', { class: 'result-summary-box' });
+  const filesBox = h('div', { class: 'shape-files-box' });
   const stage = h('div', { class: 'stage shapes-stage' });
   const grid = h('input', { type: 'checkbox', id: 'shapes-grid', checked: true });
   grid.addEventListener('change', () => view?.setGrid(grid.checked));
@@ -46,11 +50,12 @@ export async function renderStandalone(main, initialId) {
     h('h1', {}, 'Results'),
     h('p', { class: 'muted' }, 'Simulation results of any Modelica model: the Dymola visual shapes (MSL Visualizers, the bodies’ shapes) and frames drawn in 3D, any variable plotted.'),
     h('div', { class: 'results-top' }, uploadBox, listBox),
-    h('div', { class: 'model-layout' }, view3d, h('section', { class: 'side' }, summaryBox)),
+    h('div', { class: 'model-layout' }, view3d, h('section', { class: 'side' }, summaryBox, filesBox)),
     plotsBox,
   );
 
   const player = resultPlayer(playerBox, {
+    times: () => stream?.times,
     onTime(t) {
       if (view && stream) {
         state = shapesAt(stream, t, state);
@@ -109,6 +114,88 @@ export async function renderStandalone(main, initialId) {
     );
   }
 
+  /**
+   * The chooser of the files a result's file shapes name (shown while some are boxes): chosen
+   * DXF or STL files are read here and drawn in place of the boxes of the shapes naming them.
+   */
+  function renderFiles(def) {
+    const named = matchShapeFiles(def.shapes, []).missing;
+    if (!view || !named.length) return fill(filesBox);
+    const input = h('input', { type: 'file', id: 'shape-files', multiple: true, accept: '.dxf,.stl' });
+    const out = h('div', { class: 'shape-files-out', 'aria-live': 'polite' });
+    input.addEventListener('change', async () => {
+      const files = [...input.files];
+      if (!files.length) return;
+      const shown = view;
+      const m = matchShapeFiles(def.shapes, files.map((f) => f.name));
+      const drawn = [];
+      const refused = [];
+      for (const f of files) {
+        const idx = m.used.get(f.name);
+        if (!idx) continue;
+        try {
+          const geometry = await readShapeFile(f);
+          const extras = await Promise.all(idx.map((k) => extraOf(def.shapes[k].name)));
+          if (shown !== view) return;
+          view.useFile(idx, geometry, f.name, (k) => extras[idx.indexOf(k)] !== 0);
+          drawn.push(`${f.name} (${plural(idx.length, 'shape')})`);
+        } catch (e) {
+          refused.push(e);
+        }
+      }
+      const left = [...new Set(def.shapes.flatMap((x, k) => (x.kind === 'file' && x.file && !view.shapes[k]?.drawnFrom ? [fileLabel(x.file)] : [])))];
+      fill(
+        out,
+        drawn.length ? h('p', { class: 'ok', role: 'status' }, `Drawn from ${drawn.join(', ')}.`) : null,
+        m.unused.length ? h('p', { class: 'warning' }, `No shape of this result names ${m.unused.join(', ')}.`) : null,
+        ...refused.map((e) => errorBox(e, 'A file could not be read')),
+        left.length ? h('p', { class: 'muted' }, `Still boxes: ${left.join(', ')}.`) : null,
+      );
+      input.value = '';
+    });
+    fill(
+      filesBox,
+      h('h3', {}, 'Shape files'),
+      h('p', { class: 'muted' }, `${plural(named.length, 'file')} named by this result's shapes ${named.length === 1 ? 'is' : 'are'} drawn as labelled boxes: ${named.join(', ')}. Choose ${named.length === 1 ? 'it' : 'them'} (DXF or STL, e.g. from the Modelica library's Resources folder the shapes name) to draw the shapes; they are read in this browser, not uploaded.`),
+      h('p', {}, h('label', { for: input.id }, 'Shape files (DXF or STL) '), input),
+      out,
+    );
+  }
+
+  /**
+   * MSL's `extra` of a file shape from the result (the shape's own, else its owner's, as
+   * BodyShape passes it down): non-zero scales the file by length, width and height. Absent: 0,
+   * MSL's default.
+   */
+  async function extraOf(shapeName) {
+    const owner = shapeName.split('.').slice(0, -1).join('.');
+    const id = enc(current.id);
+    for (const n of [`${shapeName}.extra`, owner && `${owner}.extra`].filter(Boolean)) {
+      // Searched first: asking for the series of a name the result lacks is a 404.
+      const found = await api(`/api/results/${id}/variables?search=${enc(n)}&limit=50`).catch(() => null);
+      if (!found?.variables?.some((v) => v.name === n)) continue;
+      const got = await api(`/api/results/${id}/series?name=${enc(n)}&width=10`).catch(() => null);
+      const y = got?.variables?.[0]?.y?.[0];
+      if (Number.isFinite(y)) return y;
+    }
+    return 0;
+  }
+
+    /** A chosen shape file as a three.js geometry: DXF 3D faces or STL (binary or ASCII). */
+  async function readShapeFile(file) {
+    if (/\.stl$/i.test(file.name)) {
+      const { STLLoader } = await import('three/addons/loaders/STLLoader.js');
+      const g = new STLLoader().parse(await file.arrayBuffer());
+      if (!g.getAttribute('position')?.count) throw new Error(`${file.name} has no triangles`);
+      return g;
+    }
+    const { positions } = parseDxfFaces(await file.text(), file.name);
+    const { BufferGeometry, BufferAttribute } = await import('three');
+    const g = new BufferGeometry();
+    g.setAttribute('position', new BufferAttribute(positions, 3));
+    return g;
+  }
+
   function dropView() {
     view?.dispose();
     if (window.cad2moShapes === view) delete window.cad2moShapes;
@@ -126,6 +213,7 @@ export async function renderStandalone(main, initialId) {
     history.replaceState(null, '', `#/results/${enc(r.id)}`);
     renderList();
     renderSummary(r, null);
+    fill(filesBox);
     view3d.hidden = false;
     plots.clear();
     player.clear(h('p', { role: 'status' }, `Loading the shapes of ${r.name}…`));
@@ -159,6 +247,7 @@ export async function renderStandalone(main, initialId) {
     } else {
       fill(stage, h('p', { class: 'warning stage-note' }, 'This result has no visual shapes or frames to draw.'));
     }
+    renderFiles(def);
     plots.show();
     player.show(r, h('h3', {}, `Play ${r.name} `, h('small', { class: 'muted' }, `${num(r.stop - r.start)} s, ${plural(s.shapes, 'shape')} and ${plural(s.frames, 'frame')} drawn`)));
   }
@@ -171,6 +260,7 @@ export async function renderStandalone(main, initialId) {
     plots.clear();
     dropView();
     fill(summaryBox);
+    fill(filesBox);
     view3d.hidden = true;
     history.replaceState(null, '', '#/results');
   }
