@@ -397,12 +397,13 @@ async fn mesh_objects_are_uploaded_collide_and_ship() {
     let r = app.client.put(app.url(&format!("/api/models/{id}/scene/meshes/sniffed"))).header("X-Requested-With", "cad2mo");
     json_of(r.body(COLLADA.as_bytes().to_vec()).send().await.expect("put"), 200).await;
     assert_bounds(&stored_stl(&app, &id, "sniffed").await, [0.0, -0.3, 0.0], [0.1, 0.0, 0.2]);
-    // A bad file of each: 422 naming the file, with the file name and line in the message.
+    // A bad file of each: 422 naming the file, with the file name and line in the message (VRML:
+    // the IndexedFaceSet holding the bad index; COLLADA: its <p>).
     let bad_vrml = VRML.replace("0 1 3 -1", "0 1 9 -1");
     let p = json_of(upload("bad", "bad.wrl", bad_vrml.into_bytes()).await.expect("put"), 422).await;
     assert_eq!(p["errors"][0]["field"], "file", "{p:#}");
     let m = p["errors"][0]["message"].as_str().expect("message");
-    assert!(m.starts_with("bad.wrl:5:") && m.contains("coordIndex 9 is out of range"), "{p:#}");
+    assert!(m.starts_with("bad.wrl:3:") && m.contains("coordIndex 9 is out of range"), "{p:#}");
     let bad_dae = COLLADA.replace("0 3 2 1", "0 3 7 1");
     let p = json_of(upload("bad", "bad.dae", bad_dae.into_bytes()).await.expect("put"), 422).await;
     assert_eq!(p["errors"][0]["field"], "file", "{p:#}");
