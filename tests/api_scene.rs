@@ -338,9 +338,8 @@ fn assert_bounds(stl: &[u8], lo: [f64; 3], hi: [f64; 3]) {
             }
         }
     }
-    for i in 0..3 {
-        assert!((a[i] - lo[i]).abs() < 1e-6 && (b[i] - hi[i]).abs() < 1e-6, "bounds {a:?} .. {b:?}, expected {lo:?} .. {hi:?}");
-    }
+    let close = |x: [f64; 3], y: [f64; 3]| x.iter().zip(y).all(|(p, q)| (p - q).abs() < 1e-6);
+    assert!(close(a, lo) && close(b, hi), "bounds {a:?} .. {b:?}, expected {lo:?} .. {hi:?}");
 }
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]

@@ -80,10 +80,10 @@ pub fn read(file: &str, bytes: &[u8]) -> Result<SceneMesh, String> {
 /// refused before the expansion that would pass it.
 fn vrml(file: &str, bytes: &[u8]) -> Result<crate::pipeline::ir::Mesh, String> {
     use crate::pipeline::front::{bundle::Bundle, vrml};
-    use nalgebra::Point3;
     // The bundle holds the one file under its own name (without folders).
     let name = file.rsplit(['/', '\\']).next().unwrap_or(file);
-    let bundle = Bundle::from_files("upload", [(name.to_string(), bytes.to_vec())]).map_err(|_| format!("{file}: not a usable file name"))?;
+    let bundle =
+        Bundle::from_files("upload", [(name.to_string(), bytes.to_vec())]).map_err(|_| format!("{file}: not a usable file name"))?;
     let gz = vrml::Gunzip::new(MAX_MESH_BYTES as u64);
     let (scene, _) = vrml::parse_within(&bundle, name, &gz, MAX_MESH_TRIANGLES).map_err(|e| e.to_string())?;
     let mut mesh = crate::pipeline::ir::Mesh::default();
