@@ -375,6 +375,7 @@ export async function sceneSteps(page, { step, shot }) {
   assert.deepEqual(vBack, [0.25, 0, 0], 'the velocity back after a reload');
   assert.equal(await panel.getByLabel('box1 kind', { exact: true }).inputValue(), 'moving');
   assert.equal(await page.getByLabel('box1 velocity 1', { exact: true }).isVisible(), true);
+  assert.deepEqual([await page.getByLabel('box1 mass', { exact: true }).isVisible(), await page.getByLabel('box1 poses', { exact: true }).isVisible()], [false, false], 'only the velocity shown');
   await page.getByLabel('box1 velocity 1', { exact: true }).scrollIntoViewIfNeeded();
   await shot(page, '38-scene-kind');
   const kindSeconds = (Date.now() - tk) / 1000; // the screenshot included
