@@ -324,6 +324,58 @@ fn cube_stl(edge: f64) -> String {
     s + "endsolid cube\n"
 }
 
+/// A VRML 97 file: a 0.1 × 0.2 × 0.3 box scaled by 2 at x = 1 (12 triangles) and a unit
+/// tetrahedron moved to z = −1 (4 triangles). Bounds: x 0 .. 1.1, y −0.2 .. 1, z −1 .. 0.3.
+const VRML: &str = "#VRML V2.0 utf8
+Transform { translation 1 0 0 scale 2 2 2 children [ Shape { geometry Box { size 0.1 0.2 0.3 } } ] }
+Transform { translation 0 0 -1 children [ Shape { geometry IndexedFaceSet {
+  coord Coordinate { point [ 0 0 0, 1 0 0, 0 1 0, 0 0 1 ] }
+  coordIndex [ 0 2 1 -1, 0 1 3 -1, 0 3 2 -1, 1 2 3 -1 ] } } ] }
+";
+
+/// A COLLADA tetrahedron in millimetres, Y up: corners 0, 100 mm on x, 200 mm on y, 300 mm on z,
+/// so in metres, Z up ((x, y, z) → (x, −z, y)): x 0 .. 0.1, y −0.3 .. 0, z 0 .. 0.2.
+const COLLADA: &str = r##"<?xml version="1.0"?>
+<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
+<asset><unit name="millimeter" meter="0.001"/><up_axis>Y_UP</up_axis></asset>
+<library_geometries><geometry id="t"><mesh>
+<source id="t-pos"><float_array id="t-arr" count="12">0 0 0 100 0 0 0 200 0 0 0 300</float_array>
+<technique_common><accessor source="#t-arr" count="4" stride="3"><param name="X" type="float"/><param name="Y" type="float"/><param name="Z" type="float"/></accessor></technique_common></source>
+<vertices id="t-v"><input semantic="POSITION" source="#t-pos"/></vertices>
+<triangles count="4"><input semantic="VERTEX" source="#t-v" offset="0"/>
+<p>0 2 1 0 1 3 0 3 2 1 2 3</p></triangles>
+</mesh></geometry></library_geometries>
+<library_visual_scenes><visual_scene id="s"><node id="n"><instance_geometry url="#t"/></node></visual_scene></library_visual_scenes>
+<scene><instance_visual_scene url="#s"/></scene>
+</COLLADA>
+"##;
+
+/// The stored binary STL of a scene mesh.
+async fn stored_stl(app: &TestApp, id: &str, name: &str) -> Vec<u8> {
+    let r = app.get(&format!("/api/models/{id}/scene/meshes/{name}")).await;
+    assert_eq!(r.status().as_u16(), 200);
+    r.bytes().await.expect("stl").to_vec()
+}
+
+/// The bounds of a binary STL's corners equal `lo` .. `hi` (to f32 rounding).
+fn assert_bounds(stl: &[u8], lo: [f64; 3], hi: [f64; 3]) {
+    let n = u32::from_le_bytes(stl[80..84].try_into().expect("count")) as usize;
+    assert_eq!(stl.len(), 84 + 50 * n);
+    let (mut a, mut b) = ([f64::MAX; 3], [f64::MIN; 3]);
+    for k in 0..n {
+        for c in 0..3 {
+            for i in 0..3 {
+                let o = 84 + 50 * k + 12 + 12 * c + 4 * i;
+                let x = f32::from_le_bytes(stl[o..o + 4].try_into().expect("f32")) as f64;
+                a[i] = a[i].min(x);
+                b[i] = b[i].max(x);
+            }
+        }
+    }
+    let close = |x: [f64; 3], y: [f64; 3]| x.iter().zip(y).all(|(p, q)| (p - q).abs() < 1e-6);
+    assert!(close(a, lo) && close(b, hi), "bounds {a:?} .. {b:?}, expected {lo:?} .. {hi:?}");
+}
+
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn mesh_objects_are_uploaded_collide_and_ship() {
     let app = TestApp::spawn().await;
@@ -366,6 +418,30 @@ async fn mesh_objects_are_uploaded_collide_and_ship() {
     assert_eq!(p["errors"][0]["field"], "file", "{p:#}");
     let p = json_of(upload("9lives", "c.stl", cube_stl(1.0).into_bytes()).await.expect("put"), 422).await;
     assert_eq!(p["errors"][0]["field"], "name", "{p:#}");
+    // VRML and COLLADA: the file's shapes placed by their transforms (VRML) or in metres, Z up
+    // (COLLADA's <unit> and <up_axis> applied); the stored STL's bounds say so.
+    let r = json_of(upload("vrml", "parts.wrl", VRML.as_bytes().to_vec()).await.expect("put"), 200).await;
+    assert_eq!(r, json!({"name": "vrml", "triangles": 16}));
+    assert_bounds(&stored_stl(&app, &id, "vrml").await, [0.0, -0.2, -1.0], [1.1, 1.0, 0.3]);
+    let r = json_of(upload("dae", "tetra.dae", COLLADA.as_bytes().to_vec()).await.expect("put"), 200).await;
+    assert_eq!(r, json!({"name": "dae", "triangles": 4}));
+    assert_bounds(&stored_stl(&app, &id, "dae").await, [0.0, -0.3, 0.0], [0.1, 0.0, 0.2]);
+    // Without ?file= the body's first bytes choose the reader.
+    let r = app.client.put(app.url(&format!("/api/models/{id}/scene/meshes/sniffed"))).header("X-Requested-With", "cad2mo");
+    json_of(r.body(COLLADA.as_bytes().to_vec()).send().await.expect("put"), 200).await;
+    assert_bounds(&stored_stl(&app, &id, "sniffed").await, [0.0, -0.3, 0.0], [0.1, 0.0, 0.2]);
+    // A bad file of each: 422 naming the file, with the file name and line in the message (VRML:
+    // the IndexedFaceSet holding the bad index; COLLADA: its <p>).
+    let bad_vrml = VRML.replace("0 1 3 -1", "0 1 9 -1");
+    let p = json_of(upload("bad", "bad.wrl", bad_vrml.into_bytes()).await.expect("put"), 422).await;
+    assert_eq!(p["errors"][0]["field"], "file", "{p:#}");
+    let m = p["errors"][0]["message"].as_str().expect("message");
+    assert!(m.starts_with("bad.wrl:3:") && m.contains("coordIndex 9 is out of range"), "{p:#}");
+    let bad_dae = COLLADA.replace("0 3 2 1", "0 3 7 1");
+    let p = json_of(upload("bad", "bad.dae", bad_dae.into_bytes()).await.expect("put"), 422).await;
+    assert_eq!(p["errors"][0]["field"], "file", "{p:#}");
+    let m = p["errors"][0]["message"].as_str().expect("message");
+    assert!(m.starts_with("bad.dae:9:") && m.contains("out of range"), "{p:#}");
     let big = vec![b' '; cad2mo_engine::scene::mesh::MAX_MESH_BYTES + 1];
     assert_eq!(upload("big", "big.stl", big).await.expect("put").status().as_u16(), 413);
 

@@ -241,6 +241,8 @@ async fn end_to_end_in_chromium() {
     println!("scene: {scene}");
     assert!(scene["dragged"][0].as_f64().is_some_and(|x| x > 0.0), "the gizmo moved the box along +x: {scene}");
     assert!(scene["link"].as_str().is_some_and(|l| !l.is_empty()), "the box's interference names a link: {scene}");
+    // Made moving at a velocity, saved, the page reloaded: the values are back (scene.mjs asserts).
+    assert!(scene["kind_seconds"].as_f64().is_some(), "the kind step ran: {scene}");
     for png in [
         "1-models-empty",
         "2-model-3d",
@@ -260,6 +262,7 @@ async fn end_to_end_in_chromium() {
         "35-scene-interference",
         "36-scene-dropped",
         "37-scene-mesh-placed",
+        "38-scene-kind",
     ] {
         assert!(shots.join(format!("{png}.png")).exists(), "screenshot {png}");
     }

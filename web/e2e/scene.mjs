@@ -8,10 +8,13 @@
 // link named in the Scene tab and the Collision tab and marked in 3D. Then: duplicate, hide and
 // undo, drop onto the surface below, attach to a link and follow it, import a mesh (STL in mm)
 // and put it on a point picked in 3D, delete and undo, resize by numbers (0 refused, naming the
-// field). The scene is removed at the end (later steps expect none).
+// field), make box1 moving at a velocity (a refused speed shown at its field, undo and redo),
+// save, reload the page and find the values back. The scene is removed at the end (later steps
+// expect none).
 
 import assert from 'node:assert/strict';
 import { rotationFromAngles } from '../src/views/scene-data.js';
+import { waitForModel } from './lib.mjs';
 
 const H = { 'X-Requested-With': 'cad2mo' };
 
@@ -340,10 +343,47 @@ export async function sceneSteps(page, { step, shot }) {
   await page.waitForFunction(() => window.cad2moViewer.sceneObjects.get('box2')?.mesh.geometry.parameters?.width === 0.3);
   assert.match(await panel.locator('tr[data-object="box2"]').textContent(), /box \(0\.3 × 0\.2 × 0\.2 m\)/);
 
+  // ---- Kind: box1 made moving at a velocity (an undoable edit); a speed the API refuses is
+  // shown at the velocity field; saved, the page reloaded, the values are back.
+  step('scene: kind and motion');
+  const tk = Date.now();
+  await panel.locator('tr[data-object="box1"] button.pick').click();
+  await panel.getByLabel('box1 kind', { exact: true }).selectOption('moving');
+  const speed = async (vx) => {
+    for (const [i, x] of [vx, '0', '0'].entries()) await page.getByLabel(`box1 velocity ${i + 1}`, { exact: true }).fill(x);
+    await panel.getByRole('button', { name: 'Apply kind' }).click();
+  };
+  await speed('500');
+  await panel.locator('tr[data-object="box1"]').filter({ hasText: 'moving' }).waitFor();
+  await page.getByRole('button', { name: 'Undo', exact: true }).click();
+  await panel.locator('tr[data-object="box1"]').filter({ hasText: 'static' }).waitFor();
+  await page.getByRole('button', { name: 'Redo', exact: true }).click();
+  await panel.locator('tr[data-object="box1"]').filter({ hasText: 'moving' }).waitFor();
+  await page.getByRole('button', { name: 'Save scene' }).click();
+  const refused = panel.locator('.scene-editor [data-field="velocity"]');
+  await refused.waitFor();
+  assert.match(await refused.textContent(), /at most 100 m\/s/);
+  await speed('0.25');
+  await page.getByRole('button', { name: 'Save scene' }).click();
+  await panel.getByRole('status').filter({ hasText: /^Saved$/ }).waitFor();
+  await page.reload();
+  await waitForModel(page);
+  await page.getByRole('tab', { name: 'Scene', exact: true }).click();
+  await panel.locator('tr[data-object="box1"] button.pick').click();
+  const vBack = [];
+  for (const i of [1, 2, 3]) vBack.push(Number(await page.getByLabel(`box1 velocity ${i}`, { exact: true }).inputValue()));
+  assert.deepEqual(vBack, [0.25, 0, 0], 'the velocity back after a reload');
+  assert.equal(await panel.getByLabel('box1 kind', { exact: true }).inputValue(), 'moving');
+  assert.equal(await page.getByLabel('box1 velocity 1', { exact: true }).isVisible(), true);
+  assert.deepEqual([await page.getByLabel('box1 mass', { exact: true }).isVisible(), await page.getByLabel('box1 poses', { exact: true }).isVisible()], [false, false], 'only the velocity shown');
+  await page.getByLabel('box1 velocity 1', { exact: true }).scrollIntoViewIfNeeded();
+  await shot(page, '38-scene-kind');
+  const kindSeconds = (Date.now() - tk) / 1000; // the screenshot included
+
   // ---- Clean up: later steps expect a model without a scene.
   await page.evaluate(async ({ path, headers }) => {
     const r = await fetch(path, { method: 'DELETE', headers });
     if (r.status !== 204) throw new Error(`DELETE ${path}: ${r.status}`);
   }, { path: `/api/models/${id}/scene`, headers: H });
-  return { box: target, dragged, turned_deg: about, link: link.name, dropped_onto: rest.onto.name, version: Number(v), seconds: (Date.now() - t0) / 1000 };
+  return { box: target, dragged, turned_deg: about, link: link.name, dropped_onto: rest.onto.name, version: Number(v), kind_seconds: kindSeconds, seconds: (Date.now() - t0) / 1000 };
 }

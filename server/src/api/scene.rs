@@ -48,7 +48,8 @@ pub async fn meshes(state: &AppState, model_id: &str) -> Result<Meshes, ApiError
 
 #[derive(serde::Deserialize)]
 struct MeshQuery {
-    /// The uploaded file's name: its extension chooses the reader (default `mesh.stl`).
+    /// The uploaded file's name: its extension chooses the reader (default: `mesh.wrl` or
+    /// `mesh.dae` for a body that begins like VRML or COLLADA, else `mesh.stl`).
     file: Option<String>,
 }
 
@@ -66,8 +67,8 @@ async fn list_meshes(State(state): State<AppState>, Path(model_id): Path<String>
     Ok(Json(serde_json::json!({ "meshes": meshes })))
 }
 
-/// Uploads (or replaces) a scene mesh: the body is the file (STL binary or ASCII, OBJ, COLLADA),
-/// `?file=` its name (`.stl` by default). A bad name, an unreadable or too large file: 422/413
+/// Uploads (or replaces) a scene mesh: the body is the file (STL binary or ASCII, OBJ, COLLADA,
+/// VRML), `?file=` its name (without it, the body's first bytes choose). A bad name, an unreadable or too large file: 422/413
 /// naming `name` or `file`.
 async fn put_mesh(
     State(state): State<AppState>,
@@ -79,7 +80,7 @@ async fn put_mesh(
     if body.len() > MAX_MESH_BYTES {
         return Err(ApiError::PayloadTooLarge { limit: MAX_MESH_BYTES as u64 });
     }
-    let file = q.file.unwrap_or_else(|| "mesh.stl".into());
+    let file = q.file.unwrap_or_else(|| cad2mo_engine::scene::mesh::default_file(&body).into());
     let blobs = state.blobs.clone();
     let n = name.clone();
     let (hash, triangles) = blocking(move || {

@@ -93,8 +93,8 @@ export function describe(o) {
 /** The units a mesh file may be in, as the API names them (metres per unit in viewer.js). */
 export const MESH_FILE_UNITS = ['m', 'mm', 'cm', 'in'];
 
-/** Mesh files the service reads, by extension. */
-export const MESH_FILE_TYPES = ['.stl', '.obj', '.dae'];
+/** Mesh files the service reads, by extension (STL, OBJ, COLLADA, VRML 97 / 1.0, gzip VRML). */
+export const MESH_FILE_TYPES = ['.stl', '.obj', '.dae', '.wrl', '.wrz', '.vrml'];
 
 /**
  * A copy of `o` under a name no object or body has (`box1` → `box2`, `table` → `table1`),
@@ -115,10 +115,11 @@ export function duplicateObject(o, taken, offset = [0, 0, 0]) {
 export function meshNameFromFile(fileName) {
   const dot = fileName.lastIndexOf('.');
   const ext = dot >= 0 ? fileName.slice(dot).toLowerCase() : '';
-  if (!MESH_FILE_TYPES.includes(ext)) return { error: `file: ${fileName} is not an STL, OBJ or COLLADA (.dae) mesh` };
+  if (!MESH_FILE_TYPES.includes(ext)) return { error: `file: ${fileName} is not an STL, OBJ, COLLADA (.dae) or VRML (.wrl) mesh` };
   let stem = fileName.slice(0, dot).replace(/^.*[\\/]/, '').replace(/[^A-Za-z0-9_]/g, '_');
   if (!/^[A-Za-z]/.test(stem)) stem = `m${stem}`;
-  return { name: stem.slice(0, 60) };
+  // A COLLADA file states its unit, which the service applies: stored in metres.
+  return ext === '.dae' ? { name: stem.slice(0, 60), unit: 'm' } : { name: stem.slice(0, 60) };
 }
 
 /** A new static object showing uploaded mesh `mesh` (file units `unit`) at the origin. */
@@ -230,4 +231,94 @@ export function withShape(o, texts) {
     else shape[f.field] = v;
   }
   return { object: { ...o, shape } };
+}
+
+const IDENTITY_ROWS = [[1, 0, 0], [0, 1, 0], [0, 0, 1]];
+
+/** What kind an object is, as the API names it. */
+export const OBJECT_KINDS = ['static', 'moving', 'free'];
+
+/**
+ * The kind form's texts for object `o`: its kind, its motion (`velocity` m/s, or `poses`: one
+ * row per line, `time x y z` and optionally the angles about x, y, z in degrees), its mass (kg)
+ * and principal inertia (kg·m², blank: the solid shape's, computed by the service).
+ */
+export function kindForm(o) {
+  const m = o.motion || {};
+  const rows = (m.poses || []).map((r) => {
+    const a = anglesFromRotation(r.rotation || IDENTITY_ROWS);
+    const nums = [r.time, ...r.position, ...(a.some((x) => Math.abs(x) > 1e-9) ? a : [])];
+    return nums.map((x) => String(Math.round(x * 1e9) / 1e9)).join(' ');
+  });
+  return {
+    kind: o.kind || 'static',
+    motion: m.poses ? 'poses' : 'velocity',
+    velocity: (m.velocity || [0, 0, 0]).map(String),
+    poses: rows.join('\n') || '0 0 0 0\n1 0.1 0 0',
+    mass: o.mass === undefined ? '1' : String(o.mass),
+    inertia: (o.inertia || ['', '', '']).map(String),
+  };
+}
+
+/**
+ * The object with the kind the form gives (fields of other kinds dropped), or an error naming
+ * the field when a text is not a number. Ranges are the service's to check (its 422 names the
+ * field, e.g. `objects[2].motion.velocity`).
+ */
+export function withKind(o, form) {
+  const next = { ...o };
+  delete next.motion;
+  delete next.mass;
+  delete next.inertia;
+  if (form.kind === 'static') {
+    delete next.kind;
+    return { object: next };
+  }
+  if (!OBJECT_KINDS.includes(form.kind)) return { error: `kind: unknown kind ${form.kind}` };
+  if (o.attached_to) return { error: 'kind: only static objects can be attached to a body: detach it first' };
+  next.kind = form.kind;
+  if (form.kind === 'moving') {
+    if (form.motion === 'velocity') {
+      const v = parseTriple(form.velocity, 'motion.velocity');
+      if (v.error) return { error: v.error };
+      next.motion = { velocity: v.value };
+      return { object: next };
+    }
+    const poses = [];
+    const lines = String(form.poses).split('\n').map((l) => l.trim()).filter((l) => l);
+    for (const [i, line] of lines.entries()) {
+      const x = line.split(/[\s,;]+/).map(Number);
+      if (!(x.length === 4 || x.length === 7) || !x.every(Number.isFinite)) {
+        return { error: `motion.poses[${i}]: a row is "time x y z" or "time x y z ax ay az" (s, m, °)` };
+      }
+      poses.push({ time: x[0], position: x.slice(1, 4), rotation: x.length === 7 ? rotationFromAngles(x.slice(4)) : IDENTITY_ROWS.map((r) => [...r]) });
+    }
+    next.motion = { poses };
+    return { object: next };
+  }
+  const mass = String(form.mass).trim() === '' ? NaN : Number(form.mass);
+  if (!Number.isFinite(mass)) return { error: 'mass: a number (kg) is needed' };
+  next.mass = mass;
+  if (form.inertia.some((t) => String(t).trim() !== '')) {
+    const i = parseTriple(form.inertia, 'inertia');
+    if (i.error) return { error: i.error };
+    next.inertia = i.value;
+  }
+  return { object: next };
+}
+
+/**
+ * The kind form's control showing an API field error of object `k` (`objects[k].motion.velocity`
+ * → `velocity`, `….motion.poses[3].time` → `poses`, `….mass`, `….inertia`, `….kind`,
+ * `….motion` → `motion`), or null for fields it has no control for.
+ */
+export function kindControl(field, k) {
+  const m = /^objects\[(\d+)\]\.(.*)$/.exec(field);
+  if (!m || Number(m[1]) !== k) return null;
+  const f = m[2];
+  if (f === 'motion.velocity' || f.startsWith('motion.velocity')) return 'velocity';
+  if (f.startsWith('motion.poses')) return 'poses';
+  if (f === 'motion') return 'motion';
+  if (f === 'mass' || f === 'inertia' || f === 'kind') return f;
+  return null;
 }

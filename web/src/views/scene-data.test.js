@@ -48,7 +48,9 @@ test('duplicates get a free name and an offset; mesh files give names and object
   assert.equal(duplicateObject({ ...o, name: 'table' }, ['table']).name, 'table1');
   assert.deepEqual(meshNameFromFile('C:\\parts\\2-pallet v3.STL'), { name: 'm2_pallet_v3' });
   assert.deepEqual(meshNameFromFile('fixture.obj'), { name: 'fixture' });
-  assert.match(meshNameFromFile('fixture.wrl').error, /^file: /);
+  assert.deepEqual(meshNameFromFile('cell.WRL'), { name: 'cell' });
+  assert.deepEqual(meshNameFromFile('tool.dae'), { name: 'tool', unit: 'm' }, 'COLLADA states its unit');
+  assert.match(meshNameFromFile('fixture.3ds').error, /^file: /);
   const m = meshObject('fixture', 'mm', ['fixture1']);
   assert.deepEqual([m.name, m.shape], ['fixture2', { kind: 'mesh', mesh: 'fixture', unit: 'mm' }]);
   assert.throws(() => meshObject('fixture', 'furlong', []));
@@ -86,4 +88,33 @@ test('primitive dimensions by typed numbers, checked like the API', async () => 
   assert.deepEqual(withShape(cyl, ['0.05', '0.3']).object.shape, { kind: 'cylinder', radius: 0.05, length: 0.3 });
   assert.match(withShape(cyl, ['x', '0.3']).error, /^shape\.radius/);
   assert.deepEqual(shapeFields(newObject('plane', []).shape), []);
+});
+
+test('the kind form: static, moving by velocity or poses, free with mass and inertia', async () => {
+  const { kindForm, withKind, kindControl, newObject: make } = await import('./scene-data.js');
+  const box = make('box', []);
+  const f = kindForm(box);
+  assert.equal(f.kind, 'static');
+  const moving = withKind(box, { ...f, kind: 'moving', motion: 'velocity', velocity: ['0.5', '0', '-0.1'] }).object;
+  assert.deepEqual([moving.kind, moving.motion], ['moving', { velocity: [0.5, 0, -0.1] }]);
+  assert.deepEqual(kindForm(moving).velocity, ['0.5', '0', '-0.1'], 'the form shows what the object holds');
+  assert.match(withKind(box, { ...f, kind: 'moving', motion: 'velocity', velocity: ['x', '0', '0'] }).error, /^motion\.velocity: /);
+  const table = withKind(box, { ...f, kind: 'moving', motion: 'poses', poses: '0 0 0 0\n2, 1, 0, 0, 0, 0, 90' }).object;
+  assert.equal(table.motion.poses.length, 2);
+  assert.deepEqual(table.motion.poses[1].position, [1, 0, 0]);
+  assert.ok(Math.abs(table.motion.poses[1].rotation[0][1] + 1) < 1e-12, '90° about z');
+  assert.equal(kindForm(table).poses.split('\n')[1], '2 1 0 0 0 0 90');
+  assert.match(withKind(box, { ...f, kind: 'moving', motion: 'poses', poses: '0 0 0\n' }).error, /^motion\.poses\[0\]: /);
+  const free = withKind(moving, { ...f, kind: 'free', mass: '3', inertia: ['', '', ''] }).object;
+  assert.deepEqual([free.kind, free.mass, free.motion, free.inertia], ['free', 3, undefined, undefined]);
+  assert.deepEqual(withKind(box, { ...f, kind: 'free', mass: '2', inertia: ['1', '1', '1.5'] }).object.inertia, [1, 1, 1.5]);
+  assert.match(withKind(box, { ...f, kind: 'free', mass: '' }).error, /^mass: /);
+  const back = withKind(free, { ...kindForm(free), kind: 'static' }).object;
+  assert.deepEqual(Object.keys(back).sort(), Object.keys(box).sort(), 'static drops kind, motion, mass, inertia');
+  assert.match(withKind({ ...box, attached_to: 'ARM' }, { ...f, kind: 'moving' }).error, /^kind: /);
+  assert.equal(kindControl('objects[2].motion.velocity', 2), 'velocity');
+  assert.equal(kindControl('objects[2].motion.poses[1].time', 2), 'poses');
+  assert.equal(kindControl('objects[2].mass', 2), 'mass');
+  assert.equal(kindControl('objects[1].mass', 2), null, 'another object');
+  assert.equal(kindControl('objects[2].position', 2), null);
 });

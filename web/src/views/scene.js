@@ -6,7 +6,9 @@
 // rotate, both ways in sync with the typed numbers) or by typed numbers (position in metres,
 // angles in degrees about x, y, z), snap it onto the surface below it or onto a picked point,
 // duplicate, hide or show, delete, undo and redo (buttons, Ctrl+Z, Ctrl+Shift+Z, Ctrl+Y), and
-// save the whole scene (PUT …/scene); the API's 422 field errors are shown on their object, and
+// set its kind (static; moving by a constant velocity or a table of poses; free with its mass
+// and inertia), save the whole scene (PUT …/scene); the API's 422 field errors are shown on their
+// object (a kind's fields at their control), and
 // after saving the interferences of the scene's objects at the CAD pose are listed.
 
 import { STLLoader } from 'three/addons/loaders/STLLoader.js';
@@ -27,7 +29,12 @@ import {
   sceneInterferences,
   shapeFields,
   withShape,
+  OBJECT_KINDS,
+  kindForm,
+  withKind,
+  kindControl,
 } from './scene-data.js';
+import { placeFieldErrors } from '../field-errors.js';
 import { History, historyKey } from './scene-history.js';
 import { witnessLine } from './collision-data.js';
 
@@ -107,6 +114,7 @@ export function renderScene(panel, ctx) {
   const url = `/api/models/${enc(ctx.modelId)}/scene`;
   let objects = [];
   let errors = new Map();
+  let fieldErrors = []; // the last save's 422 errors, as the API gave them
   let dirty = false;
   let disposed = false;
   let visible = true; // the tab is shown
@@ -123,7 +131,7 @@ export function renderScene(panel, ctx) {
   const kind = h('select', { 'aria-label': 'Primitive' }, ...Object.keys(PRIMITIVES).map((k) => h('option', { value: k }, k)));
   const add = h('button', { type: 'button' }, 'Add');
   const unit = h('select', { id: 'scene-mesh-unit', 'aria-label': 'Unit of the mesh file' }, ...MESH_FILE_UNITS.map((u) => h('option', { value: u, selected: u === 'mm' }, u)));
-  const file = h('input', { type: 'file', id: 'scene-mesh-file', accept: MESH_FILE_TYPES.join(','), 'aria-label': 'Import a mesh (STL, OBJ or COLLADA)' });
+  const file = h('input', { type: 'file', id: 'scene-mesh-file', accept: MESH_FILE_TYPES.join(','), 'aria-label': 'Import a mesh (STL, OBJ, COLLADA or VRML)' });
   const undoBtn = h('button', { type: 'button', id: 'scene-undo' }, 'Undo');
   const redoBtn = h('button', { type: 'button', id: 'scene-redo' }, 'Redo');
   const save = h('button', { type: 'button', class: 'primary' }, 'Save scene');
@@ -135,6 +143,7 @@ export function renderScene(panel, ctx) {
     h('p', { class: 'muted' }, 'The machine\'s environment: objects take part in the collision checks and in the package (regenerate it after saving). Select one to place it with the gizmo or by numbers.'),
     h('div', { class: 'scene-add' }, kind, add),
     h('div', { class: 'scene-import' }, h('label', { for: 'scene-mesh-file' }, 'Import a mesh'), h('label', { for: 'scene-mesh-unit' }, 'in'), unit, file),
+    h('p', { class: 'muted', id: 'scene-mesh-hint' }, 'STL, OBJ, VRML (.wrl) or COLLADA (.dae). The unit applies to STL, OBJ and VRML; a COLLADA file states its own.'),
     h('div', { class: 'scene-history', role: 'group', 'aria-label': 'Undo and redo' }, undoBtn, ' ', redoBtn),
     list,
     editor,
@@ -176,6 +185,7 @@ export function renderScene(panel, ctx) {
     objects = r.state;
     if (selected && indexOf(selected) < 0) selectObject(null);
     errors = new Map();
+    fieldErrors = [];
     changed();
     ctx.say?.(`${which === 'undo' ? 'Undone' : 'Redone'}: ${r.label}`, 'info');
   }
@@ -294,6 +304,55 @@ export function renderScene(panel, ctx) {
         objects[k] = next;
       });
     });
+    // Its kind (an undoable edit): static; moving by a constant velocity or a table of poses;
+    // free with its mass and inertia. The last save's 422 errors show at their control.
+    const kf = kindForm(o);
+    const placed = placeFieldErrors(fieldErrors, (f) => kindControl(f, k)).at;
+    const at = (key) => (placed.get(key) || []).map((m) => h('div', { class: 'error', role: 'alert', 'data-field': key }, m));
+    const num3 = (label, values, unitHint) =>
+      [0, 1, 2].map((i) => h('input', { type: 'text', inputmode: 'decimal', size: 6, value: values[i], placeholder: unitHint, 'aria-label': `${o.name} ${label} ${i + 1}` }));
+    const kindSel = h(
+      'select',
+      { id: 'scene-kind', 'aria-label': `${o.name} kind`, disabled: o.shape.kind === 'plane' || !!o.attached_to, title: o.attached_to ? 'Attached objects are static' : null },
+      ...OBJECT_KINDS.map((x) => h('option', { value: x, selected: x === kf.kind }, x)),
+    );
+    const motionSel = h(
+      'select',
+      { id: 'scene-motion', 'aria-label': `${o.name} motion` },
+      h('option', { value: 'velocity', selected: kf.motion === 'velocity' }, 'constant velocity'),
+      h('option', { value: 'poses', selected: kf.motion === 'poses' }, 'table of poses'),
+    );
+    const vel = num3('velocity', kf.velocity);
+    const poses = h('textarea', { id: 'scene-poses', rows: 4, cols: 30, spellcheck: 'false', 'aria-label': `${o.name} poses` });
+    poses.value = kf.poses;
+    const mass = h('input', { type: 'text', inputmode: 'decimal', size: 6, value: kf.mass, 'aria-label': `${o.name} mass` });
+    const inertia = num3('inertia', kf.inertia, 'auto');
+    const motionRow = h('div', { class: 'scene-actions' }, h('label', { for: 'scene-motion' }, 'Motion'), motionSel, ...at('motion'));
+    const velRow = h('div', { class: 'scene-pose' }, h('span', {}, 'Velocity x, y, z (m/s) '), ...vel, ...at('velocity'));
+    const posesRow = h('div', { class: 'scene-pose' }, h('label', { for: 'scene-poses' }, 'Poses, a row per line: time (s) x y z (m), optionally angles about x y z (°) '), poses, ...at('poses'));
+    const massRow = h('div', { class: 'scene-pose' }, h('span', {}, 'Mass (kg) '), mass, h('span', {}, ' principal inertia (kg·m², blank: solid shape) '), ...inertia, ...at('mass'), ...at('inertia'));
+    const showKind = () => {
+      const kd = kindSel.value;
+      motionRow.hidden = kd !== 'moving';
+      velRow.hidden = kd !== 'moving' || motionSel.value !== 'velocity';
+      posesRow.hidden = kd !== 'moving' || motionSel.value !== 'poses';
+      massRow.hidden = kd !== 'free';
+    };
+    kindSel.addEventListener('change', showKind);
+    motionSel.addEventListener('change', showKind);
+    showKind();
+    const applyKind = h('button', { type: 'button', id: 'scene-apply-kind' }, 'Apply kind');
+    applyKind.addEventListener('click', () => {
+      const form = { kind: kindSel.value, motion: motionSel.value, velocity: vel.map((i) => i.value), poses: poses.value, mass: mass.value, inertia: inertia.map((i) => i.value) };
+      const r = withKind(objects[k], form);
+      if (r.error) {
+        fill(note, r.error);
+        note.hidden = false;
+        return;
+      }
+      edit(`make ${o.name} ${form.kind}`, () => (objects[k] = r.object));
+    });
+    for (const i of [...vel, mass, ...inertia]) i.addEventListener('keydown', (e) => e.key === 'Enter' && applyKind.click());
     fill(
       editor,
       h('h3', {}, `${o.name} `, h('small', { class: 'muted' }, frame)),
@@ -302,6 +361,11 @@ export function renderScene(panel, ctx) {
       h('div', { class: 'scene-actions' }, apply, ' ', h('label', { for: 'scene-gizmo-mode' }, 'Gizmo '), modeSel),
       sizeRow,
       h('div', { class: 'scene-actions' }, h('label', { for: 'scene-attach' }, 'Attached to'), attach, h('label', { for: 'scene-colour' }, 'Colour'), colour),
+      h('div', { class: 'scene-actions scene-kind' }, h('label', { for: 'scene-kind' }, 'Kind'), kindSel, ' ', applyKind, ...at('kind')),
+      motionRow,
+      velRow,
+      posesRow,
+      massRow,
       h(
         'div',
         { class: 'scene-actions' },
@@ -372,6 +436,7 @@ export function renderScene(panel, ctx) {
         dirty = true;
         status.textContent = 'Unsaved changes';
         errors = new Map();
+        fieldErrors = [];
         render();
       },
     });
@@ -399,6 +464,7 @@ export function renderScene(panel, ctx) {
     selectObject(null);
     edit(`delete ${name}`, () => objects.splice(k, 1));
     errors = new Map();
+    fieldErrors = [];
   }
 
   function drop(k) {
@@ -460,7 +526,7 @@ export function renderScene(panel, ctx) {
     try {
       const stored = await api(`${url}/meshes/${enc(named.name)}?file=${encodeURIComponent(f.name)}`, { method: 'PUT', body: await f.arrayBuffer() });
       layer.forget(stored.name);
-      const o = meshObject(stored.name, unit.value, taken());
+      const o = meshObject(stored.name, named.unit || unit.value, taken());
       edit(`import ${f.name} as ${o.name}`, () => objects.push(o));
       selectObject(o.name);
       status.textContent = `Imported ${f.name} (${stored.triangles} triangles) as ${o.name}: unsaved`;
@@ -490,6 +556,7 @@ export function renderScene(panel, ctx) {
       const stored = await api(url, { method: 'PUT', body: { objects } });
       objects = stored.objects;
       errors = new Map();
+      fieldErrors = [];
       dirty = false;
       status.textContent = 'Saved';
       layer.saved(objects);
@@ -498,6 +565,7 @@ export function renderScene(panel, ctx) {
       checkInterferences();
     } catch (e) {
       errors = errorsByObject(e.errors);
+      fieldErrors = e.errors || [];
       if (!errors.size) fill(status, errorBox(e, 'The scene could not be saved'));
       else status.textContent = 'Not saved: see the errors';
     } finally {
