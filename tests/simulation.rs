@@ -496,7 +496,7 @@ fn loops_agree_with_lagrange_multipliers_in_pinocchio() {
         println!(
             "{name}: {n} coordinates, loop cut at {:?} (ours), {:?} (URDF): closure {closure:.1e} m; {compared:?} within {worst_half:.1e} over 0.5 s, {worst:.1e} over 1 s, accelerations within {worst_qdd:.1e} \
              (Pinocchio closure {} at the start, {} after, energy drift {} J); ours {} steps {ours_s:.2} s, Python {} evaluations {theirs_s:.2} s",
-            m.cut_coordinates().iter().map(|c| &c.name).collect::<Vec<_>>(),
+            m.closing_joints().iter().map(|j| pkg.layout.names.as_ref().map_or("?", |l| l.joints[j.index()].as_str())).collect::<Vec<_>>(),
             r["cut"],
             r["closure0"],
             r["closure"],
