@@ -18,7 +18,8 @@ The tree is the URDF's (root link fixed, joint damping and friction ignored), re
 Pinocchio. Each <loop_joint> (type revolute/continuous or prismatic, link1/link2 frames,
 axis in the link1 frame; follower = base * motion(axis, q)) adds constraints e(q) = 0:
   revolute:  p2 - p1 = 0 (3), b1 . a2 = 0 and c1 . a2 = 0 with a = axis, b, c normal to it;
-  prismatic: R1 = R2 (3, as w2 - w1 = 0), b1 . (p2 - p1) = 0 and c1 . (p2 - p1) = 0.
+  prismatic: R1 = R2 (3, as w2 - w1 = 0), b1 . (p2 - p1) = 0 and c1 . (p2 - p1) = 0
+             (not exercised yet: the four-bar's and the slider-crank's URDFs cut a revolute).
 Their Jacobians from Pinocchio's frame Jacobians, their bias J'v exactly from its classical
 frame accelerations at zero joint acceleration. The accelerations solve
   M qdd + h = J^T lambda,  J qdd = -J'v - 2 w e' - w^2 e    (Baumgarte, w = 10 rad/s)
