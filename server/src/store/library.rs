@@ -712,6 +712,9 @@ mod tests {
         let sql = include_str!("../../../migrations/sqlite/0005_library_datasheet.sql");
         let data = sql.split_once("DEFAULT 0;").expect("the ALTER TABLE").1;
         sqlx::raw_sql(data).execute(&store.pool).await.expect("migrate");
+        // 0015 corrects the first-seed RE 40's source text that 0005 wrote.
+        let fix = include_str!("../../../migrations/sqlite/0015_re40_source.sql");
+        sqlx::raw_sql(fix).execute(&store.pool).await.expect("migrate 0015");
         // The datasheet parameters added since 0005 come at start-up (seed_new_classes).
         sqlx::query("DELETE FROM library_seed_offered").execute(&store.pool).await.expect("offered");
         seed_new_classes(&store).await.expect("new parameters");
