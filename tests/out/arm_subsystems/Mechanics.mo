@@ -146,28 +146,28 @@ equation
   connect(world.frame_b, RootPart_ARM.frame_a)
     annotation (Line(points={{30,0},{405,0}}, color={95,95,95}, thickness=0.5));
   connect(RootPart_ARM.frame_a, BASE.frame_a)
-    annotation (Line(points={{405,0},{400,0},{400,-20},{715,-20},{715,0},{725,0}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{405,0},{400,0},{400,25},{720,25},{720,0},{725,0}}, color={95,95,95}, thickness=0.5));
   connect(BASE_CS3.frame_b, BASE_LINK.frame_a)
     annotation (Line(points={{750,-200},{805,-200},{805,0},{810,0}}, color={95,95,95}, thickness=0.5));
   connect(BASE_LINK.frame_b, LINK_UPPER_CS4.frame_b)
     annotation (Line(points={{830,0},{965,0}}, color={95,95,95}, thickness=0.5));
   connect(RootPart_UPPER_CS2.frame_b, LINK_UPPER_CS2.frame_b)
-    annotation (Line(points={{1285,0},{1280,0},{1280,-200},{1075,-200}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{1285,0},{1080,0},{1080,-200},{1075,-200}}, color={95,95,95}, thickness=0.5));
   connect(LINK_UPPER_CS3.frame_b, LINK_LINK.frame_a)
     annotation (Line(points={{1075,-300},{1125,-300},{1125,-100},{1130,-100}}, color={95,95,95}, thickness=0.5));
   connect(LINK_LINK.frame_b, LINK_FORE_CS3.frame_b)
     annotation (Line(points={{1150,-100},{1285,-100}}, color={95,95,95}, thickness=0.5));
   connect(RootPart_FORE_CS2.frame_b, LINK_FORE_CS2.frame_b)
-    annotation (Line(points={{1605,-100},{1600,-100},{1600,-300},{1395,-300}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{1605,-100},{1400,-100},{1400,-300},{1395,-300}}, color={95,95,95}, thickness=0.5));
   connect(BASE.frame_a, BASE_shape.frame_a)
-    annotation (Line(points={{725,0},{710,0},{710,-100},{730,-100}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{725,0},{715,0},{715,-100},{730,-100}}, color={95,95,95}, thickness=0.5));
   connect(LINK_UPPER.frame_a, LINK_UPPER_shape.frame_a)
     annotation (Line(points={{1045,0},{1030,0},{1030,-100},{1045,-100}}, color={95,95,95}, thickness=0.5));
   connect(LINK_FORE.frame_a, LINK_FORE_shape.frame_a)
     annotation (Line(points={{1365,-100},{1355,-100},{1355,-200},{1365,-200}}, color={95,95,95}, thickness=0.5));
   annotation (
     experiment(StopTime=4.0, Interval=0.01, Tolerance=1e-06),
-    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-40,-360},{1760,60}})),
+    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-40,-360},{1760,80}})),
     Icon(coordinateSystem(preserveAspectRatio=false, extent={{-100,-100},{100,100}}), graphics={
       Rectangle(extent={{-100,-100},{100,100}}, lineColor={95,95,95}, fillColor={255,255,255}, fillPattern=FillPattern.Solid, radius=8),
       Rectangle(extent={{-80,-80},{0,-66}}, lineColor={95,95,95}, fillColor={175,175,175}, fillPattern=FillPattern.Solid),

@@ -13,7 +13,7 @@ model Mechatronics "Mechatronic model of ARM: Mechanics with no joint drive"
     R_T={BASE.frame_a.R.T, LINK_UPPER.frame_a.R.T, LINK_FORE.frame_a.R.T},
     v_0={BASE.v_0, LINK_UPPER.v_0, LINK_FORE.v_0},
     w_a={BASE.w_a, LINK_UPPER.w_a, LINK_FORE.w_a}) "Contact forces between the collision shapes (read from Resources/Collision/contact.txt when collisions is true)"
-    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,0})));
+    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,20})));
   ARM.Components.Collision.BodyForce collisionForce_BASE(force=collisionWorld.force[1, :], torque=collisionWorld.torque[1, :]) if collisions "Contact force and torque on BASE (from collisionWorld)"
     annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={705,50})));
   ARM.Components.Collision.BodyForce collisionForce_LINK_UPPER(force=collisionWorld.force[2, :], torque=collisionWorld.torque[2, :]) if collisions "Contact force and torque on LINK_UPPER (from collisionWorld)"

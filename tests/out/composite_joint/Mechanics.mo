@@ -108,7 +108,7 @@ equation
   connect(world.frame_b, RootPart.frame_a)
     annotation (Line(points={{30,0},{405,0}}, color={95,95,95}, thickness=0.5));
   connect(RootPart.frame_a, BASE.frame_a)
-    annotation (Line(points={{405,0},{400,0},{400,-20},{715,-20},{715,0},{725,0}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{405,0},{400,0},{400,25},{720,25},{720,0},{725,0}}, color={95,95,95}, thickness=0.5));
   connect(BASE_CS3.frame_b, BASE_CROSS_1.frame_a)
     annotation (Line(points={{750,-200},{805,-200},{805,0},{810,0}}, color={95,95,95}, thickness=0.5));
   connect(BASE_CROSS_1.frame_b, BASE_CROSS_2.frame_a)
@@ -126,14 +126,14 @@ equation
   connect(CROSS_FLOAT_4.frame_b, FLOAT_CS2.frame_b)
     annotation (Line(points={{1475,0},{1610,0}}, color={95,95,95}, thickness=0.5));
   connect(BASE.frame_a, BASE_shape.frame_a)
-    annotation (Line(points={{725,0},{710,0},{710,-100},{730,-100}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{725,0},{715,0},{715,-100},{730,-100}}, color={95,95,95}, thickness=0.5));
   connect(CROSS.frame_a, CROSS_shape.frame_a)
     annotation (Line(points={{1125,0},{1115,0},{1115,-100},{1130,-100}}, color={95,95,95}, thickness=0.5));
   connect(FLOAT.frame_a, FLOAT_shape.frame_a)
     annotation (Line(points={{1685,0},{1680,0},{1680,-100},{1690,-100}}, color={95,95,95}, thickness=0.5));
   annotation (
     experiment(StopTime=4.0, Interval=0.01, Tolerance=1e-06),
-    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-40,-260},{1760,60}})),
+    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-40,-260},{1760,80}})),
     Icon(coordinateSystem(preserveAspectRatio=false, extent={{-100,-100},{100,100}}), graphics={
       Rectangle(extent={{-100,-100},{100,100}}, lineColor={95,95,95}, fillColor={255,255,255}, fillPattern=FillPattern.Solid, radius=8),
       Rectangle(extent={{-80,-80},{0,-66}}, lineColor={95,95,95}, fillColor={175,175,175}, fillPattern=FillPattern.Solid),

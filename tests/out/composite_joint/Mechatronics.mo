@@ -13,7 +13,7 @@ model Mechatronics "Mechatronic model of UJ: Mechanics with no joint drive"
     R_T={BASE.frame_a.R.T, CROSS.frame_a.R.T, FLOAT.frame_a.R.T},
     v_0={BASE.v_0, CROSS.v_0, FLOAT.v_0},
     w_a={BASE.w_a, CROSS.w_a, FLOAT.w_a}) "Contact forces between the collision shapes (read from Resources/Collision/contact.txt when collisions is true)"
-    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,0})));
+    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,20})));
   UJ.Components.Collision.BodyForce collisionForce_BASE(force=collisionWorld.force[1, :], torque=collisionWorld.torque[1, :]) if collisions "Contact force and torque on BASE (from collisionWorld)"
     annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={705,50})));
   UJ.Components.Collision.BodyForce collisionForce_CROSS(force=collisionWorld.force[2, :], torque=collisionWorld.torque[2, :]) if collisions "Contact force and torque on CROSS (from collisionWorld)"

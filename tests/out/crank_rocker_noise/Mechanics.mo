@@ -142,7 +142,7 @@ equation
   connect(RootPart.frame_a, RootPart_CS3.frame_a)
     annotation (Line(points={{405,0},{395,0},{395,-200},{410,-200}}, color={95,95,95}, thickness=0.5));
   connect(world.frame_b, RootPart.frame_a)
-    annotation (Line(points={{30,0},{405,0}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{30,0},{35,0},{35,5},{400,5},{400,0},{405,0}}, color={95,95,95}, thickness=0.5));
   connect(RootPart_CS2.frame_b, RootPart_CRANK.frame_a)
     annotation (Line(points={{430,-100},{480,-100},{480,0},{485,0}}, color={95,95,95}, thickness=0.5));
   connect(RootPart_CRANK.frame_b, CRANK_CS2.frame_b)
@@ -158,7 +158,7 @@ equation
   connect(ROCKER_CS3.frame_b, ROCKER_RootPart.frame_a)
     annotation (Line(points={{1290,-100},{1235,-100}}, color={238,46,47}, pattern=LinePattern.Dash, thickness=0.5));
   connect(ROCKER_RootPart.frame_b, RootPart_CS3.frame_b)
-    annotation (Line(points={{1205,-100},{1200,-100},{1200,-200},{1125,-200},{1125,-205},{1075,-205},{1075,-215},{435,-215},{435,-200},{430,-200}}, color={238,46,47}, pattern=LinePattern.Dash, thickness=0.5));
+    annotation (Line(points={{1205,-100},{1200,-100},{1200,-215},{435,-215},{435,-200},{430,-200}}, color={238,46,47}, pattern=LinePattern.Dash, thickness=0.5));
   connect(CRANK.frame_a, CRANK_shape.frame_a)
     annotation (Line(points={{725,0},{715,0},{715,-100},{730,-100}}, color={95,95,95}, thickness=0.5));
   connect(COUPLER.frame_a, COUPLER_shape.frame_a)

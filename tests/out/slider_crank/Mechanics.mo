@@ -127,7 +127,7 @@ equation
   connect(ROD_CS3.frame_b, ROD_PISTON.frame_a)
     annotation (Line(points={{970,-100},{910,-100}}, color={238,46,47}, pattern=LinePattern.Dash, thickness=0.5));
   connect(ROD_PISTON.frame_b, PISTON.frame_a)
-    annotation (Line(points={{890,-100},{885,-100},{885,-300},{760,-300},{760,-320},{720,-320},{720,-300},{725,-300}}, color={238,46,47}, pattern=LinePattern.Dash, thickness=0.5));
+    annotation (Line(points={{890,-100},{885,-100},{885,-275},{720,-275},{720,-300},{725,-300}}, color={238,46,47}, pattern=LinePattern.Dash, thickness=0.5));
   connect(CRANK.frame_a, CRANK_shape.frame_a)
     annotation (Line(points={{725,0},{715,0},{715,-100},{730,-100}}, color={95,95,95}, thickness=0.5));
   connect(ROD.frame_a, ROD_shape.frame_a)

@@ -146,7 +146,7 @@ equation
   connect(base.frame_a, base_shoulder_yaw.frame_a)
     annotation (Line(points={{405,0},{400,0},{400,-200},{405,-200}}, color={95,95,95}, thickness=0.5));
   connect(shoulder.frame_a, shoulder_shoulder_pitch.frame_a)
-    annotation (Line(points={{725,0},{720,0},{720,-170},{715,-170},{715,-200},{720,-200}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{725,0},{715,0},{715,-200},{720,-200}}, color={95,95,95}, thickness=0.5));
   connect(upper_arm.frame_a, upper_arm_elbow.frame_a)
     annotation (Line(points={{1045,0},{1040,0},{1040,-200},{1045,-200}}, color={95,95,95}, thickness=0.5));
   connect(forearm.frame_a, forearm_extend.frame_a)
@@ -158,7 +158,7 @@ equation
   connect(base_shoulder_yaw.frame_b, shoulder_yaw.frame_a)
     annotation (Line(points={{435,-200},{485,-200},{485,0},{490,0}}, color={95,95,95}, thickness=0.5));
   connect(shoulder_yaw.frame_b, shoulder.frame_a)
-    annotation (Line(points={{510,0},{725,0}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{510,0},{515,0},{515,5},{720,5},{720,0},{725,0}}, color={95,95,95}, thickness=0.5));
   connect(shoulder_shoulder_pitch.frame_b, shoulder_pitch.frame_a)
     annotation (Line(points={{760,-200},{800,-200},{800,0},{805,0}}, color={95,95,95}, thickness=0.5));
   connect(shoulder_pitch.frame_b, upper_arm.frame_a)
@@ -176,7 +176,7 @@ equation
   connect(base.frame_a, base_shape.frame_a)
     annotation (Line(points={{405,0},{395,0},{395,-100},{410,-100}}, color={95,95,95}, thickness=0.5));
   connect(shoulder.frame_a, shoulder_shape.frame_a)
-    annotation (Line(points={{725,0},{715,0},{715,-100},{725,-100}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{725,0},{720,0},{720,-100},{725,-100}}, color={95,95,95}, thickness=0.5));
   connect(upper_arm.frame_a, upper_arm_shape.frame_a)
     annotation (Line(points={{1045,0},{1035,0},{1035,-100},{1045,-100}}, color={95,95,95}, thickness=0.5));
   connect(forearm.frame_a, forearm_shape.frame_a)

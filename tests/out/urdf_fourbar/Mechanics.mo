@@ -89,42 +89,42 @@ model Mechanics "Mechanical model of urdf_fourbar (4 bodies, 5 joints)"
     "Shape of rocker" annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={1380,-100})));
 equation
   connect(crank.frame_a, crank_crank_coupler.frame_a)
-    annotation (Line(points={{725,0},{720,0},{720,-170},{715,-170},{715,-200},{720,-200}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{725,0},{715,0},{715,-200},{720,-200}}, color={95,95,95}, thickness=0.5));
   connect(ground.frame_a, ground_rocker_pivot.frame_a)
-    annotation (Line(points={{405,0},{400,0},{400,-170},{395,-170},{395,-200},{400,-200}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{405,0},{395,0},{395,-200},{400,-200}}, color={95,95,95}, thickness=0.5));
   connect(coupler.frame_a, coupler_coupler_rocker.frame_a)
-    annotation (Line(points={{1045,0},{1040,0},{1040,-170},{1035,-170},{1035,-200},{1040,-200}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{1045,0},{1035,0},{1035,-200},{1040,-200}}, color={95,95,95}, thickness=0.5));
   connect(rocker.frame_a, rocker_coupler_rocker.frame_a)
     annotation (Line(points={{1365,0},{1320,0}}, color={95,95,95}, thickness=0.5));
   connect(world.frame_b, ground.frame_a)
-    annotation (Line(points={{30,0},{405,0}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{30,0},{35,0},{35,5},{400,5},{400,0},{405,0}}, color={95,95,95}, thickness=0.5));
   connect(ground.frame_a, crank_pivot.frame_a)
-    annotation (Line(points={{405,0},{400,0},{400,25},{485,25},{485,0},{490,0}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{405,0},{400,0},{400,-20},{485,-20},{485,0},{490,0}}, color={95,95,95}, thickness=0.5));
   connect(crank_pivot.frame_b, crank.frame_a)
-    annotation (Line(points={{510,0},{725,0}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{510,0},{515,0},{515,5},{720,5},{720,0},{725,0}}, color={95,95,95}, thickness=0.5));
   connect(crank_crank_coupler.frame_b, crank_coupler.frame_a)
     annotation (Line(points={{760,-200},{800,-200},{800,0},{805,0}}, color={95,95,95}, thickness=0.5));
   connect(crank_coupler.frame_b, coupler.frame_a)
-    annotation (Line(points={{835,0},{1045,0}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{835,0},{840,0},{840,5},{1040,5},{1040,0},{1045,0}}, color={95,95,95}, thickness=0.5));
   connect(coupler_coupler_rocker.frame_b, coupler_rocker.frame_a)
     annotation (Line(points={{1080,-200},{1120,-200},{1120,0},{1125,0}}, color={95,95,95}, thickness=0.5));
   connect(coupler_rocker.frame_b, rocker_coupler_rocker.frame_b)
     annotation (Line(points={{1155,0},{1280,0}}, color={95,95,95}, thickness=0.5));
   connect(ground_rocker_pivot.frame_b, rocker_pivot.frame_a)
-    annotation (Line(points={{440,-200},{710,-200},{710,-115},{1035,-115},{1035,-120},{1125,-120},{1125,-100},{1130,-100}}, color={238,46,47}, pattern=LinePattern.Dash, thickness=0.5));
+    annotation (Line(points={{440,-200},{445,-200},{445,-225},{1125,-225},{1125,-100},{1130,-100}}, color={238,46,47}, pattern=LinePattern.Dash, thickness=0.5));
   connect(rocker_pivot.frame_b, rocker.frame_a)
     annotation (Line(points={{1150,-100},{1360,-100},{1360,0},{1365,0}}, color={238,46,47}, pattern=LinePattern.Dash, thickness=0.5));
   connect(ground.frame_a, ground_shape.frame_a)
-    annotation (Line(points={{405,0},{395,0},{395,-100},{410,-100}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{405,0},{400,0},{400,-100},{410,-100}}, color={95,95,95}, thickness=0.5));
   connect(crank.frame_a, crank_shape.frame_a)
-    annotation (Line(points={{725,0},{715,0},{715,-100},{730,-100}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{725,0},{720,0},{720,-100},{730,-100}}, color={95,95,95}, thickness=0.5));
   connect(coupler.frame_a, coupler_shape.frame_a)
-    annotation (Line(points={{1045,0},{1035,0},{1035,-100},{1045,-100}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{1045,0},{1040,0},{1040,-100},{1045,-100}}, color={95,95,95}, thickness=0.5));
   connect(rocker.frame_a, rocker_shape.frame_a)
     annotation (Line(points={{1365,0},{1355,0},{1355,-100},{1370,-100}}, color={95,95,95}, thickness=0.5));
   annotation (
     experiment(StopTime=9.0, Interval=0.02, Tolerance=1e-06),
-    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-40,-260},{1440,80}})),
+    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-40,-280},{1440,60}})),
     Icon(coordinateSystem(preserveAspectRatio=false, extent={{-100,-100},{100,100}}), graphics={
       Rectangle(extent={{-100,-100},{100,100}}, lineColor={95,95,95}, fillColor={255,255,255}, fillPattern=FillPattern.Solid, radius=8),
       Rectangle(extent={{-80,-80},{0,-66}}, lineColor={95,95,95}, fillColor={175,175,175}, fillPattern=FillPattern.Solid),

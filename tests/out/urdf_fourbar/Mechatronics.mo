@@ -13,7 +13,7 @@ model Mechatronics "Mechatronic model of urdf_fourbar: Mechanics with no joint d
     R_T={ground.frame_a.R.T, crank.frame_a.R.T, coupler.frame_a.R.T, rocker.frame_a.R.T},
     v_0={ground.v_0, crank.v_0, coupler.v_0, rocker.v_0},
     w_a={ground.w_a, crank.w_a, coupler.w_a, rocker.w_a}) "Contact forces between the collision shapes (read from Resources/Collision/contact.txt when collisions is true)"
-    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,20})));
+    annotation (Placement(transformation(extent={{-15,-15},{15,15}}, origin={-80,0})));
   urdf_fourbar.Components.Collision.BodyForce collisionForce_ground(force=collisionWorld.force[1, :], torque=collisionWorld.torque[1, :]) if collisions "Contact force and torque on ground (from collisionWorld)"
     annotation (Placement(transformation(extent={{-10,-10},{10,10}}, origin={385,50})));
   urdf_fourbar.Components.Collision.BodyForce collisionForce_crank(force=collisionWorld.force[2, :], torque=collisionWorld.torque[2, :]) if collisions "Contact force and torque on crank (from collisionWorld)"
@@ -35,7 +35,7 @@ public
 equation
   annotation (
     experiment(StopTime=9.0, Interval=0.02, Tolerance=1e-06),
-    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-140,-260},{1440,100}})),
+    Diagram(coordinateSystem(preserveAspectRatio=false, extent={{-140,-280},{1440,100}})),
     Icon(graphics={
       Rectangle(extent={{10,-70},{60,-30}}, lineColor={0,0,0}, fillColor={0,128,255}, fillPattern=FillPattern.HorizontalCylinder),
       Rectangle(extent={{60,-54},{80,-46}}, lineColor={0,0,0}, fillColor={160,160,164}, fillPattern=FillPattern.HorizontalCylinder),

@@ -202,11 +202,11 @@ equation
   connect(puck.frame_a, puck_shoulder_ball.frame_a)
     annotation (Line(points={{565,-800},{560,-800},{560,-900},{565,-900}}, color={95,95,95}, thickness=0.5));
   connect(ball_link.frame_a, ball_link_cardan_joint.frame_a)
-    annotation (Line(points={{885,-800},{880,-800},{880,-870},{875,-870},{875,-900},{880,-900}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{885,-800},{875,-800},{875,-900},{880,-900}}, color={95,95,95}, thickness=0.5));
   connect(world_2.frame_b, palm.frame_a)
     annotation (Line(points={{110,0},{565,0}}, color={95,95,95}, thickness=0.5));
   connect(world_3.frame_b, table_1.frame_a)
-    annotation (Line(points={{110,-100},{115,-100},{115,-800},{170,-800}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{110,-100},{165,-100},{165,-800},{170,-800}}, color={95,95,95}, thickness=0.5));
   connect(table_1.frame_b, table_2.frame_a)
     annotation (Line(points={{190,-800},{250,-800}}, color={95,95,95}, thickness=0.5));
   connect(table_2.frame_b, table_3.frame_a)
@@ -214,15 +214,15 @@ equation
   connect(table_3.frame_b, puck.frame_a)
     annotation (Line(points={{350,-800},{565,-800}}, color={95,95,95}, thickness=0.5));
   connect(palm_jaw_a_slide.frame_b, jaw_a_slide.frame_a)
-    annotation (Line(points={{595,-300},{645,-300},{645,-220},{640,-220},{640,0},{650,0}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{595,-300},{600,-300},{600,0},{650,0}}, color={95,95,95}, thickness=0.5));
   connect(jaw_a_slide.frame_b, jaw_a.frame_a)
     annotation (Line(points={{670,0},{885,0}}, color={95,95,95}, thickness=0.5));
   connect(palm_jaw_b_slide.frame_b, jaw_b_slide.frame_a)
-    annotation (Line(points={{595,-400},{645,-400},{645,-305},{640,-305},{640,-225},{635,-225},{635,-100},{650,-100}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{595,-400},{640,-400},{640,-100},{650,-100}}, color={95,95,95}, thickness=0.5));
   connect(jaw_b_slide.frame_b, jaw_b.frame_a)
     annotation (Line(points={{670,-100},{885,-100}}, color={95,95,95}, thickness=0.5));
   connect(palm_knuckle_a.frame_b, knuckle_a.frame_a)
-    annotation (Line(points={{595,-100},{600,-100},{600,-295},{645,-295},{645,-300},{650,-300}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{595,-100},{635,-100},{635,-300},{650,-300}}, color={95,95,95}, thickness=0.5));
   connect(knuckle_a.frame_b, finger_a.frame_a)
     annotation (Line(points={{670,-300},{885,-300}}, color={95,95,95}, thickness=0.5));
   connect(palm_knuckle_b.frame_b, knuckle_b.frame_a)
@@ -236,7 +236,7 @@ equation
   connect(puck_shoulder_ball.frame_b, shoulder_ball.frame_a)
     annotation (Line(points={{595,-900},{640,-900},{640,-800},{645,-800}}, color={95,95,95}, thickness=0.5));
   connect(shoulder_ball.frame_b, ball_link.frame_a)
-    annotation (Line(points={{675,-800},{885,-800}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{675,-800},{680,-800},{680,-795},{880,-795},{880,-800},{885,-800}}, color={95,95,95}, thickness=0.5));
   connect(thumb_nail_hinge.frame_b, nail_hinge.frame_a)
     annotation (Line(points={{915,-700},{965,-700},{965,-600},{970,-600}}, color={95,95,95}, thickness=0.5));
   connect(nail_hinge.frame_b, nail.frame_a)
@@ -248,7 +248,7 @@ equation
   connect(cardan_joint_2.frame_b, cardan.frame_a)
     annotation (Line(points={{1075,-800},{1285,-800}}, color={95,95,95}, thickness=0.5));
   connect(knuckle_a.drive, knuckle_b_mimic.flange_a)
-    annotation (Line(points={{654,-290},{654,-280},{635,-280},{635,-500},{645,-500}}, color={0,0,0}));
+    annotation (Line(points={{654,-290},{654,-280},{645,-280},{645,-475},{640,-475},{640,-500},{645,-500}}, color={0,0,0}));
   connect(knuckle_b_mimic.flange_b, knuckle_b.drive)
     annotation (Line(points={{675,-500},{680,-500},{680,-380},{654,-380},{654,-390}}, color={0,0,0}));
   connect(jaw_b_slide_mimic.flangeT, jaw_a_slide.drive)
@@ -258,7 +258,7 @@ equation
   connect(jaw_b_slide_mimic.flangeR, jaw_b_slide_mimic_b.flangeR)
     annotation (Line(points={{645,-200},{640,-200},{640,-220},{715,-220},{715,-200},{720,-200}}, color={0,0,0}));
   connect(knuckle_a.drive, thumb_slide_mimic.flangeR)
-    annotation (Line(points={{654,-290},{654,-280},{675,-280},{675,-475},{640,-475},{640,-700},{645,-700}}, color={0,0,0}));
+    annotation (Line(points={{654,-290},{654,-280},{675,-280},{675,-470},{635,-470},{635,-700},{645,-700}}, color={0,0,0}));
   connect(thumb_slide_mimic.flangeT, thumb_slide.drive)
     annotation (Line(points={{675,-700},{680,-700},{680,-580},{654,-580},{654,-590}}, color={0,0,0}));
   annotation (

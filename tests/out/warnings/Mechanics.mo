@@ -120,7 +120,7 @@ equation
   connect(ASYM_TRI_offset.frame_b, TRI.frame_a)
     annotation (Line(points={{915,0},{1125,0}}, color={95,95,95}, thickness=0.5));
   connect(TRI_CS3.frame_b, GHOST.frame_a)
-    annotation (Line(points={{1150,-200},{1440,-200},{1440,-105},{1435,-105},{1435,0},{1445,0}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{1150,-200},{1435,-200},{1435,0},{1445,0}}, color={95,95,95}, thickness=0.5));
   connect(GHOST_CS3.frame_b, GHOST_BARE.frame_a)
     annotation (Line(points={{1470,-100},{1525,-100},{1525,0},{1530,0}}, color={95,95,95}, thickness=0.5));
   connect(GHOST_BARE.frame_b, BARE.frame_a)

@@ -86,27 +86,27 @@ model Mechanics "Mechanical model of slide arm (5 bodies, 5 joints)"
   // Shapes: CAD meshes in each body frame, metres
 equation
   connect(Base_1.frame_a, Base_1_shoulder_base.frame_a)
-    annotation (Line(points={{405,0},{400,0},{400,-70},{395,-70},{395,-100},{400,-100}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{405,0},{395,0},{395,-100},{400,-100}}, color={95,95,95}, thickness=0.5));
   connect(Link_1.frame_a, Link_1_shoulder_follower.frame_a)
     annotation (Line(points={{725,0},{680,0}}, color={95,95,95}, thickness=0.5));
   connect(Link_1.frame_a, Link_1_Fastened_1_base.frame_a)
     annotation (Line(points={{725,0},{720,0},{720,-70},{715,-70},{715,-100},{720,-100}}, color={95,95,95}, thickness=0.5));
   connect(Carriage_1.frame_a, Carriage_1_Fastened_2_base.frame_a)
-    annotation (Line(points={{1365,0},{1360,0},{1360,-70},{1355,-70},{1355,-100},{1360,-100}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{1365,0},{1355,0},{1355,-100},{1360,-100}}, color={95,95,95}, thickness=0.5));
   connect(Tool_gr_n_1.frame_a, Tool_gr_n_1_Fastened_2_follower.frame_a)
     annotation (Line(points={{1685,0},{1640,0}}, color={95,95,95}, thickness=0.5));
   connect(Rail_1.frame_a, Rail_1_slide_base.frame_a)
     annotation (Line(points={{1045,0},{1040,0},{1040,-100},{1045,-100}}, color={95,95,95}, thickness=0.5));
   connect(Carriage_1.frame_a, Carriage_1_slide_follower.frame_a)
-    annotation (Line(points={{1365,0},{1320,0}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{1365,0},{1360,0},{1360,5},{1325,5},{1325,0},{1320,0}}, color={95,95,95}, thickness=0.5));
   connect(world.frame_b, Base_1.frame_a)
-    annotation (Line(points={{30,0},{405,0}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{30,0},{35,0},{35,5},{400,5},{400,0},{405,0}}, color={95,95,95}, thickness=0.5));
   connect(Base_1_shoulder_base.frame_b, shoulder.frame_a)
     annotation (Line(points={{440,-100},{485,-100},{485,0},{490,0}}, color={95,95,95}, thickness=0.5));
   connect(shoulder.frame_b, Link_1_shoulder_follower.frame_b)
     annotation (Line(points={{510,0},{640,0}}, color={95,95,95}, thickness=0.5));
   connect(Link_1_Fastened_1_base.frame_b, Rail_1.frame_a)
-    annotation (Line(points={{760,-100},{1035,-100},{1035,0},{1045,0}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{760,-100},{765,-100},{765,0},{1045,0}}, color={95,95,95}, thickness=0.5));
   connect(Rail_1_slide_base.frame_b, slide.frame_a)
     annotation (Line(points={{1075,-100},{1125,-100},{1125,0},{1130,0}}, color={95,95,95}, thickness=0.5));
   connect(slide.frame_b, Carriage_1_slide_follower.frame_b)

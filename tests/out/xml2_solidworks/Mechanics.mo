@@ -116,7 +116,7 @@ equation
   connect(world.frame_b, World_3.frame_a)
     annotation (Line(points={{30,0},{35,0},{35,-100},{90,-100}}, color={95,95,95}, thickness=0.5));
   connect(grip_1.frame_a, grip_1_knob_1_rigid_base.frame_a)
-    annotation (Line(points={{885,-100},{880,-100},{880,-170},{875,-170},{875,-200},{880,-200}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{885,-100},{875,-100},{875,-200},{880,-200}}, color={95,95,95}, thickness=0.5));
   connect(crank_1.frame_a, crank_1_revolute_World_crank_1_follower.frame_a)
     annotation (Line(points={{565,-100},{520,-100}}, color={95,95,95}, thickness=0.5));
   connect(puck_1.frame_a, puck_1_planar_World_puck_1_follower.frame_a)
@@ -124,11 +124,11 @@ equation
   connect(crank_1.frame_a, crank_1_weld_crank_1_grip_1_base.frame_a)
     annotation (Line(points={{565,-100},{560,-100},{560,-170},{555,-170},{555,-200},{560,-200}}, color={95,95,95}, thickness=0.5));
   connect(grip_1.frame_a, grip_1_weld_crank_1_grip_1_follower.frame_a)
-    annotation (Line(points={{885,-100},{840,-100}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{885,-100},{880,-100},{880,-95},{845,-95},{845,-100},{840,-100}}, color={95,95,95}, thickness=0.5));
   connect(world.frame_b, plate_1.frame_a)
-    annotation (Line(points={{30,0},{35,0},{35,5},{85,5},{85,20},{560,20},{560,0},{565,0}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{30,0},{35,0},{35,20},{560,20},{560,0},{565,0}}, color={95,95,95}, thickness=0.5));
   connect(World_2.frame_b, revolute_World_crank_1.frame_a)
-    annotation (Line(points={{110,0},{115,0},{115,-100},{160,-100}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{110,0},{155,0},{155,-100},{160,-100}}, color={95,95,95}, thickness=0.5));
   connect(revolute_World_crank_1.frame_b, crank_1_revolute_World_crank_1_follower.frame_b)
     annotation (Line(points={{200,-100},{480,-100}}, color={95,95,95}, thickness=0.5));
   connect(World_3.frame_b, planar_World_puck_1_1.frame_a)
