@@ -144,6 +144,15 @@ export async function resultsSteps(page, { step, shot, downloads }) {
   await summary.waitFor();
   await page.locator('#results-play').waitFor();
   assert.equal(await refusal.count(), 0, 'the refusal is gone');
+  // The list fits the side panel: every Delete inside it, the names not squeezed to a letter per line.
+  const fit = await page.evaluate(() => {
+    const box = document.querySelector('.results-list-box').getBoundingClientRect();
+    const dels = [...document.querySelectorAll('table.results td.actions button')].map((b) => b.getBoundingClientRect());
+    const names = [...document.querySelectorAll('table.results th[scope=row] button.link')].map((b) => b.getBoundingClientRect().width);
+    return { right: box.right, dels: dels.map((d) => d.right), narrowest: Math.min(...names) };
+  });
+  assert.ok(fit.dels.length >= 1 && fit.dels.every((r) => r <= fit.right + 0.5), `Delete out of the panel: ${JSON.stringify(fit)}`);
+  assert.ok(fit.narrowest >= 60, `a result name squeezed to ${fit.narrowest}px`);
   const text = await summary.textContent();
   assert.match(text, /Instants101/);
   assert.match(text, /Time span0 … 2 s/);

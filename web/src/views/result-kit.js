@@ -30,10 +30,14 @@ export function resultTable(results, { current, open, remove }) {
     h(
       'tr',
       { dataset: { resultId: r.id }, class: current?.id === r.id ? 'selected' : null, 'aria-current': current?.id === r.id ? 'true' : null },
-      h('th', { scope: 'row' }, h('button', { type: 'button', class: 'link', 'aria-label': `Open result ${r.name}`, onclick: () => open(r) }, r.name)),
-      h('td', { class: 'num' }, String(r.instants)),
-      h('td', { class: 'nowrap' }, `${num(r.start)} … ${num(r.stop)} s`),
-      h('td', { class: 'num' }, bytes(r.size)),
+      // The name with its instants, time span and size under it (a column each ran the table
+      // out of the side panel and squeezed the name to a letter per line).
+      h(
+        'th',
+        { scope: 'row' },
+        h('button', { type: 'button', class: 'link', 'aria-label': `Open result ${r.name}`, onclick: () => open(r) }, r.name),
+        h('small', { class: 'result-meta muted' }, `${r.instants} instants · ${num(r.start)} … ${num(r.stop)} s · ${bytes(r.size)}`),
+      ),
       h('td', {}, h('small', {}, when(r.created_at))),
       h('td', { class: 'actions' }, h('button', { type: 'button', class: 'danger', 'aria-label': `Delete result ${r.name}`, onclick: () => remove(r) }, 'Delete')),
     ),
@@ -44,7 +48,7 @@ export function resultTable(results, { current, open, remove }) {
     h(
       'table',
       { class: 'results' },
-      h('thead', {}, h('tr', {}, ['Result', 'Instants', 'Time', 'Size', 'Uploaded', ''].map((c) => h('th', { scope: 'col' }, c)))),
+      h('thead', {}, h('tr', {}, ['Result', 'Uploaded', ''].map((c) => h('th', { scope: 'col' }, c)))),
       h('tbody', {}, rows),
     ),
   );
