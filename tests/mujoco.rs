@@ -14,7 +14,7 @@ use std::process::Command;
 use cad2mo_engine::mechanism::{Mechanism, XorShift};
 use cad2mo_engine::pipeline::front::bundle::Bundle;
 use cad2mo_engine::pipeline::{self, Options};
-use cad2mo_tests::common::{files_with_ext, fixtures_dir, python_check, tools_required};
+use cad2mo_tests::common::{files_with_ext, fixtures_dir, python_check, tools_required, use_package_names};
 use nalgebra::Vector3;
 
 #[path = "../engine/benches/support/gen.rs"]
@@ -35,17 +35,7 @@ fn prepare(name: &str, xml: &str) -> Option<(Mechanism, String)> {
     }
     let out = pipeline::convert(&bundle, &opts).ok()?;
     let (_, mjcf) = out.files.iter().find(|(p, _)| p.ends_with(".mjcf.xml"))?;
-    let pkg = cad2mo_engine::pipeline::back::modelica::write(
-        &a.model,
-        &a.validated,
-        &cad2mo_engine::pipeline::back::modelica::Options {
-            package_name: out.report.package_name.clone(),
-            gravity: out.report.options.gravity,
-            converter_version: String::new(),
-            name_hints: Default::default(),
-        },
-    );
-    m.use_layout_names(&pkg.layout);
+    use_package_names(&mut m, &a, &out);
     Some((m, String::from_utf8(mjcf.clone()).ok()?))
 }
 

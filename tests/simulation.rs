@@ -22,7 +22,7 @@ use std::process::Command;
 use cad2mo_engine::mechanism::{Mechanism, XorShift};
 use cad2mo_engine::pipeline::front::bundle::Bundle;
 use cad2mo_engine::pipeline::{self, Options};
-use cad2mo_tests::common::{fixture_urdfs, fixtures_dir, python_check, tools_required, workspace_root};
+use cad2mo_tests::common::{fixture_urdfs, fixtures_dir, python_check, tools_required, use_package_names, workspace_root};
 use nalgebra::Vector3;
 
 /// A fixture URDF's tree mechanism, gravity and the URDF joint name of each coordinate.
@@ -402,17 +402,7 @@ fn loops_agree_with_lagrange_multipliers_in_pinocchio() {
         let urdf = urdf.unwrap_or_else(|| panic!("{name}: no URDF written"));
         let a = pipeline::analyse(&bundle, &opts).expect("analyses as it converted");
         let mut m = Mechanism::from_validated(&a.model, &a.validated).expect("mechanism");
-        let pkg = cad2mo_engine::pipeline::back::modelica::write(
-            &a.model,
-            &a.validated,
-            &cad2mo_engine::pipeline::back::modelica::Options {
-                package_name: out.report.package_name.clone(),
-                gravity: out.report.options.gravity,
-                converter_version: String::new(),
-                name_hints: Default::default(),
-            },
-        );
-        m.use_layout_names(&pkg.layout);
+        let pkg = use_package_names(&mut m, &a, &out);
         assert!(m.has_loops(), "{name}: no loop");
         let n = m.dof();
         let mut q = m.q0();

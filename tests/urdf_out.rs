@@ -11,7 +11,7 @@ use std::path::{Path, PathBuf};
 use cad2mo_engine::mechanism::{Mechanism, XorShift};
 use cad2mo_engine::pipeline::front::bundle::Limits;
 use cad2mo_engine::pipeline::{self, Options};
-use cad2mo_tests::common::{files_with_ext, fixture_bundle, fixtures_dir, python_check, sorted_dirs, workspace_root};
+use cad2mo_tests::common::{files_with_ext, fixture_bundle, fixtures_dir, python_check, sorted_dirs, use_package_names, workspace_root};
 use nalgebra::{Isometry3, Matrix3, Quaternion, Rotation3, Translation3, UnitQuaternion, Vector3};
 
 const TOL: f64 = 1e-9;
@@ -57,17 +57,7 @@ fn check(label: &str, bundle_path: &Path) -> Option<bool> {
     // Our tree mechanisms (no loops, free bodies, sphericals): random coordinates too.
     let a = pipeline::analyse(&bundle, &opts).expect("analyses as it converted");
     let mech = Mechanism::from_validated(&a.model, &a.validated).ok().filter(|m| !m.has_loops() && m.dof() > 0).map(|mut m| {
-        let pkg = cad2mo_engine::pipeline::back::modelica::write(
-            &a.model,
-            &a.validated,
-            &cad2mo_engine::pipeline::back::modelica::Options {
-                package_name: out.report.package_name.clone(),
-                gravity: out.report.options.gravity,
-                converter_version: String::new(),
-                name_hints: Default::default(),
-            },
-        );
-        m.use_layout_names(&pkg.layout);
+        use_package_names(&mut m, &a, &out);
         m
     });
     let mut samples = vec![serde_json::json!({})];

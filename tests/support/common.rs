@@ -3,8 +3,9 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+use cad2mo_engine::mechanism::Mechanism;
 use cad2mo_engine::pipeline::front::bundle::Limits;
-use cad2mo_engine::pipeline::{self, Options, Output};
+use cad2mo_engine::pipeline::{self, Analysed, Options, Output};
 
 /// The workspace root (the folder holding `Cargo.toml`, `server/`, `tests/`).
 pub fn workspace_root() -> PathBuf {
@@ -58,6 +59,23 @@ pub fn python_check(dir: &Path, script: &str, spec: &serde_json::Value, label: &
     }
     assert!(run.status.success(), "{label}: {script} failed:\n{stdout}{}", String::from_utf8_lossy(&run.stderr));
     Some(serde_json::from_str(&std::fs::read_to_string(&output).expect("read out")).expect("json"))
+}
+
+/// Gives `m` the coordinate names of the package `out` holds (its Modelica layout: the joint
+/// names the package's Mechanics uses), as the service does for motions; returns that package.
+pub fn use_package_names(m: &mut Mechanism, a: &Analysed, out: &Output) -> pipeline::back::modelica::Package {
+    let pkg = pipeline::back::modelica::write(
+        &a.model,
+        &a.validated,
+        &pipeline::back::modelica::Options {
+            package_name: out.report.package_name.clone(),
+            gravity: out.report.options.gravity,
+            converter_version: String::new(),
+            name_hints: Default::default(),
+        },
+    );
+    m.use_layout_names(&pkg.layout);
+    pkg
 }
 
 /// Reads a bundle from disk and converts it.
