@@ -455,9 +455,8 @@ pub(super) fn route(sheet: &mut Sheet, a: End, b: End) -> Vec<(f64, f64)> {
         }
     }
     let Some(path) = path else {
-        let r = fallback(sheet, s, t);
         let mut pts = sa;
-        match r {
+        match fallback(sheet, s, t) {
             // Not marked as used: that would cost the wire's length.
             Some(corners) => pts.extend(corners.iter().map(|&(x, y)| (f64::from(x * GRID), f64::from(y * GRID)))),
             // No clear route: a straight orthogonal elbow (the layout test reports it).
