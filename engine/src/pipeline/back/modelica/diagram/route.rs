@@ -1,7 +1,9 @@
-//! Orthogonal routing on the 5-unit grid: A* over grid points outside every component's
-//! keep-out box, with a cost for each bend and for running over a cell another wire already
-//! uses, so wires take few bends and spread out. Each end leaves its connector straight out of
-//! the component first.
+//! Orthogonal routing on the 5-unit grid. A wire first tries a straight line, an elbow or a Z
+//! through a channel near its ends that stays out of every keep-out box and shares no cell with
+//! another wire ([`direct`]); otherwise A* over grid points outside every component's keep-out
+//! box, with a cost for each bend and for running over a cell another wire already uses, so
+//! wires take few bends and spread out. Each end leaves its connector straight out of the
+//! component first.
 
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
