@@ -22,6 +22,7 @@ pub mod library;
 pub mod live;
 pub mod mechanism;
 pub mod motion;
+pub mod numtext;
 pub mod pipeline;
 pub mod results;
 pub mod scene;

@@ -962,6 +962,7 @@ fn decompose(pts: &[P3], tris: &[[u32; 3]], opts: &ShapeOptions, plan: &Decompos
 
 /// Wavefront OBJ of a shape: one `o` per part; spheres, capsules and rounded parts tessellated.
 pub fn obj_text(shape: &BodyShape, name: &str) -> String {
+    use crate::numtext::Disp;
     use std::fmt::Write;
     let mut s = format!("# cad2mo collision shape: {} ({})\n", name, shape.kind.name());
     let mut base = 1usize;
@@ -989,7 +990,7 @@ pub fn obj_text(shape: &BodyShape, name: &str) -> String {
         };
         let _ = writeln!(s, "o {name}_{k}");
         for v in &vs {
-            let _ = writeln!(s, "v {} {} {}", v[0], v[1], v[2]);
+            let _ = writeln!(s, "v {} {} {}", Disp(v[0]), Disp(v[1]), Disp(v[2]));
         }
         for f in &fs {
             let _ = writeln!(s, "f {} {} {}", f[0] as usize + base, f[1] as usize + base, f[2] as usize + base);

@@ -69,8 +69,7 @@ pub fn component(object: &str) -> String {
 }
 
 fn num(x: f64) -> String {
-    let x = if x == 0.0 || x.abs() < 1e-15 { 0.0 } else { x };
-    format!("{x:?}")
+    crate::numtext::dbg(if x.abs() < 1e-15 { 0.0 } else { x })
 }
 
 fn vec3(v: &Vector3<f64>) -> String {

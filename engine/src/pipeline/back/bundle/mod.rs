@@ -10,11 +10,12 @@ pub fn write_zip(files: &[(String, Vec<u8>)]) -> Result<Vec<u8>, std::io::Error>
     write_zip_observed(files, &mut |_, _| {})
 }
 
-/// Deflate level (libdeflate's 1 to 12). Measured on one core on the 2,000-body package with
-/// meshes (6,039 files, 63 MB): level 3 deflates in about half the time zlib's default level 6
-/// took through the `zip` crate, for a zip of 8.9 MB instead of 7.6 MB (level 1: a third of the
-/// time, 10 MB; level 6: 80 % of the time, 7.6 MB); README, Speed.
-const LEVEL: i32 = 3;
+/// Deflate level (libdeflate's 1 to 12). Measured on the 2,000-body package with meshes (6,040
+/// files, 63 MB): level 1 (libdeflate's fastest matcher) deflates it in 1.78 G instructions for a
+/// zip of 10.1 MB; level 3 took 2.79 G for 8.9 MB (a third of the whole conversion's work), zlib's
+/// default level 6 through the `zip` crate about twice that for 7.6 MB (callgrind, 2026-11-29;
+/// README, Speed). The package is written once per conversion and fetched a few times: time wins.
+const LEVEL: i32 = 1;
 /// The classic zip format's limits (no zip64): entries, and sizes and offsets below 4 GiB. A
 /// package beyond them is written by the `zip` crate (zip64), slower.
 const MAX_ENTRIES: usize = 0xFFFE;

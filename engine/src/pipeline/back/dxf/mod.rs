@@ -51,7 +51,7 @@ fn group(out: &mut Vec<u8>, code: u16, value: &str) {
 /// The shortest round-trip decimal of a finite `f32`, `0` otherwise.
 fn number(out: &mut Vec<u8>, x: f32) {
     if x.is_finite() {
-        let _ = write!(out, "{x}");
+        crate::numtext::push_disp32(out, x);
     } else {
         out.push(b'0');
     }

@@ -55,8 +55,7 @@ const _: () = assert!(INDENT.len() == 2 * MAX_INDENT);
 
 /// A number as MJCF gets it: the shortest round-trip decimal, `-0` as `0`.
 pub(crate) fn n(x: f64) -> String {
-    let x = if x == 0.0 { 0.0 } else { x };
-    format!("{x:?}")
+    crate::numtext::dbg(x)
 }
 
 pub(crate) fn v3(v: &Vector3<f64>) -> String {

@@ -426,8 +426,7 @@ pub fn known_classes() -> Vec<KnownClass> {
 
 /// Shortest round-trip decimal; `-0` prints as `0`.
 fn num(x: f64) -> String {
-    let x = if x == 0.0 { 0.0 } else { x };
-    format!("{x:?}")
+    crate::numtext::dbg(x)
 }
 
 /// A trajectory sample: 12 significant digits (far below any controller's resolution), the
@@ -437,7 +436,7 @@ fn tnum(x: f64) -> String {
         return "0".to_string();
     }
     let rounded: f64 = format!("{x:.11e}").parse().unwrap_or(x);
-    let s = format!("{rounded:?}");
+    let s = crate::numtext::dbg(rounded);
     match s.strip_suffix(".0") {
         Some(whole) => whole.to_string(),
         None => s,

@@ -95,15 +95,12 @@ fn num_in(x: f64, scale: f64) -> String {
         return "0.0".to_string();
     }
     // Most CAD numbers are short already: rounding to 15 digits would give the same value.
-    let shortest = format!("{x:?}");
-    let mantissa = shortest.split(['e', 'E']).next().unwrap_or(&shortest);
-    let digits = mantissa.bytes().filter(u8::is_ascii_digit).skip_while(|d| *d == b'0').count();
-    if digits <= 15 {
-        return shortest;
+    if crate::numtext::significant_digits(x) <= 15 {
+        return crate::numtext::dbg(x);
     }
     let rounded: f64 = format!("{x:.14e}").parse().unwrap_or(x);
     let x = if rounded == 0.0 || rounded.abs() < 1e-12 * scale { 0.0 } else { rounded };
-    format!("{x:?}")
+    crate::numtext::dbg(x)
 }
 
 /// A vector, components below 1e-12 of its length written as 0.

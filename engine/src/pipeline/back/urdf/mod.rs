@@ -74,8 +74,7 @@ pub fn relative_file(ros: &(String, Vec<u8>), package: &str) -> (String, Vec<u8>
 
 /// A number, shortest round-trip decimal; `-0` prints as `0`.
 fn n(x: f64) -> String {
-    let x = if x == 0.0 { 0.0 } else { x };
-    format!("{x:?}")
+    crate::numtext::dbg(x)
 }
 
 fn v3(v: &Vector3<f64>) -> String {
