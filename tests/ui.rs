@@ -212,14 +212,17 @@ async fn end_to_end_in_chromium() {
     let xml = std::fs::read_to_string(result["library"].as_str().expect("library path")).expect("library");
     assert!(xml.contains("RobotR3 axis controller"));
     // The Live tab followed the C sender's known motion (web/e2e/live.mjs checked the meshes'
-    // poses against it, mid-stream and after the end).
+    // poses against it, mid-stream, paused, a recorded frame back, replayed and after the end).
     let live = &result["live"];
     println!("live view: {live}");
     if live.get("skipped").is_none() {
         assert_eq!(live["sent"], 151, "the harness sent 3 s at 50 Hz: {live}");
         assert!(live["frames"].as_u64().is_some_and(|n| n > 0), "the page received frames: {live}");
         assert!(live["worst"].as_f64().is_some_and(|d| d < 1e-4), "the meshes followed the motion: {live}");
-        for png in ["24-live-frozen", "25-live-ended"] {
+        // The dock player replayed the recording: paused, a frame back, 0.25x, then live again.
+        assert!(live["recorded"].as_u64().is_some_and(|n| n > 0), "the frames were recorded: {live}");
+        assert!(live["back"].as_f64().zip(live["mid"].as_f64()).is_some_and(|(b, m)| b < m), "one frame back: {live}");
+        for png in ["24-live-paused", "24b-live-replay", "25-live-ended"] {
             assert!(shots.join(format!("{png}.png")).exists(), "screenshot {png}");
         }
     }
@@ -427,6 +430,8 @@ fn models_render_in_chromium() {
             assert_eq!(ws[size]["tabs"].as_object().map(|t| t.len()), Some(9), "{size}: every tab checked: {ws}");
         }
         assert_eq!(ws["viewports"]["quad"].as_array().map(|q| q.len()), Some(4), "four viewports drawn: {ws}");
+        // Dual output stereo: the left eye here, the right eye drawn in a second window.
+        assert!(ws["viewports"]["dual"]["right"].as_f64().is_some_and(|s| s > 0.1), "the second window draws the right eye: {ws}");
         assert!(ws["viewports"]["distance"].as_f64().is_some_and(|d| d > 0.0), "a measured distance: {ws}");
         assert!(ws["viewports"]["collisionShapes"].as_u64().is_some_and(|n| n >= 10), "the hand's collision shapes shown: {ws}");
         for r in &results[2..4] {
@@ -458,6 +463,8 @@ fn models_render_in_chromium() {
             "ws-hand-1440-drives",
             "ws-hand-quad",
             "ws-hand-sbs",
+            "ws-hand-dual",
+            "ws-hand-dual-right-eye",
             "ws-hand-collision-shapes",
             "diagram-left_hand_mk3",
             "diagram-legs_mechanism",
