@@ -356,10 +356,11 @@ fn browser_kinematics_match_the_modelica_model() {
 /// long names) `web/e2e/workspace.mjs` checks the workspace (issue 30): on every tab at 1440×900
 /// and 390×844 no control or table out of its panel or the window, the 3D view and Play on screen
 /// together, the unit choice in the keyframe table and plots, exact typed slider values, four
-/// viewports and side-by-side stereo drawn (pixels), the measuring tool, Enter VR disabled with
-/// its reason (no WebXR in headless Chromium); the hand's and LEGS' diagrams have an icon per
-/// component and names ≥ 9 px high or hidden, and the hand's Mechatronics diagram short contact
-/// force wires; PR2 (30 moving joints) gets the same reach checks at both sizes.
+/// viewports, side-by-side stereo and dual output (the right eye in a second window) drawn
+/// (pixels), the measuring tool, Enter VR disabled with its reason (no WebXR in headless
+/// Chromium); the hand's and LEGS' diagrams have an icon per component, names ≥ 9 px high or
+/// hidden and no two names overlapping, and the hand's Mechatronics diagram short contact force
+/// wires; PR2 (30 moving joints) gets the same reach checks at both sizes.
 #[test]
 fn models_render_in_chromium() {
     if let Some(why) = missing_tools() {
