@@ -136,9 +136,9 @@ export function createPlayer(box, { id, onTime, label = 'Time', speeds = SPEEDS.
       clock.time = clock.clamp(t);
       sync();
     },
-    /** A live player: the recording now spans [start, stop] with these sample instants. */
+    /** A live player: the recording now spans [start, stop] (with these sample instants, if given). */
     extend(start, stop, times) {
-      clock.times = times;
+      if (times !== undefined) clock.times = times;
       const before = clock.time;
       clock.extend(start, stop);
       if (ui) {
