@@ -212,14 +212,17 @@ async fn end_to_end_in_chromium() {
     let xml = std::fs::read_to_string(result["library"].as_str().expect("library path")).expect("library");
     assert!(xml.contains("RobotR3 axis controller"));
     // The Live tab followed the C sender's known motion (web/e2e/live.mjs checked the meshes'
-    // poses against it, mid-stream and after the end).
+    // poses against it, mid-stream, paused, a recorded frame back, replayed and after the end).
     let live = &result["live"];
     println!("live view: {live}");
     if live.get("skipped").is_none() {
         assert_eq!(live["sent"], 151, "the harness sent 3 s at 50 Hz: {live}");
         assert!(live["frames"].as_u64().is_some_and(|n| n > 0), "the page received frames: {live}");
         assert!(live["worst"].as_f64().is_some_and(|d| d < 1e-4), "the meshes followed the motion: {live}");
-        for png in ["24-live-frozen", "25-live-ended"] {
+        // The dock player replayed the recording: paused, a frame back, 0.25x, then live again.
+        assert!(live["recorded"].as_u64().is_some_and(|n| n > 0), "the frames were recorded: {live}");
+        assert!(live["back"].as_f64().zip(live["mid"].as_f64()).is_some_and(|(b, m)| b < m), "one frame back: {live}");
+        for png in ["24-live-paused", "24b-live-replay", "25-live-ended"] {
             assert!(shots.join(format!("{png}.png")).exists(), "screenshot {png}");
         }
     }
@@ -353,10 +356,11 @@ fn browser_kinematics_match_the_modelica_model() {
 /// long names) `web/e2e/workspace.mjs` checks the workspace (issue 30): on every tab at 1440×900
 /// and 390×844 no control or table out of its panel or the window, the 3D view and Play on screen
 /// together, the unit choice in the keyframe table and plots, exact typed slider values, four
-/// viewports and side-by-side stereo drawn (pixels), the measuring tool, Enter VR disabled with
-/// its reason (no WebXR in headless Chromium); the hand's and LEGS' diagrams have an icon per
-/// component and names ≥ 9 px high or hidden, and the hand's Mechatronics diagram short contact
-/// force wires; PR2 (30 moving joints) gets the same reach checks at both sizes.
+/// viewports, side-by-side stereo and dual output (the right eye in a second window) drawn
+/// (pixels), the measuring tool, Enter VR disabled with its reason (no WebXR in headless
+/// Chromium); the hand's and LEGS' diagrams have an icon per component, names ≥ 9 px high or
+/// hidden and no two names overlapping, and the hand's Mechatronics diagram short contact force
+/// wires; PR2 (30 moving joints) gets the same reach checks at both sizes.
 #[test]
 fn models_render_in_chromium() {
     if let Some(why) = missing_tools() {
@@ -427,6 +431,8 @@ fn models_render_in_chromium() {
             assert_eq!(ws[size]["tabs"].as_object().map(|t| t.len()), Some(9), "{size}: every tab checked: {ws}");
         }
         assert_eq!(ws["viewports"]["quad"].as_array().map(|q| q.len()), Some(4), "four viewports drawn: {ws}");
+        // Dual output stereo: the left eye here, the right eye drawn in a second window.
+        assert!(ws["viewports"]["dual"]["right"].as_f64().is_some_and(|s| s > 0.1), "the second window draws the right eye: {ws}");
         assert!(ws["viewports"]["distance"].as_f64().is_some_and(|d| d > 0.0), "a measured distance: {ws}");
         assert!(ws["viewports"]["collisionShapes"].as_u64().is_some_and(|n| n >= 10), "the hand's collision shapes shown: {ws}");
         for r in &results[2..4] {
@@ -458,6 +464,8 @@ fn models_render_in_chromium() {
             "ws-hand-1440-drives",
             "ws-hand-quad",
             "ws-hand-sbs",
+            "ws-hand-dual",
+            "ws-hand-dual-right-eye",
             "ws-hand-collision-shapes",
             "diagram-left_hand_mk3",
             "diagram-legs_mechanism",

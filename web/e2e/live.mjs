@@ -4,7 +4,8 @@
 // CAD pose, the whole model turning about the vertical through its middle at 0.5 rad/s, 3 s at
 // 50 Hz, paced at real time. Checked: how to start a stream (the UDP address, no token on
 // loopback), the connection, the meshes moving, the world pose of every mesh against the motion
-// at the simulated time the page shows, mid-stream with Freeze and after the stream's end, the
+// at the simulated time the page shows, mid-stream paused in the dock player, one recorded frame
+// back and forward, replayed at 0.25× (between frames), live again and after the stream's end, the
 // frame counters, the end, the active runs, the service's counters (GET /api/live), and that
 // leaving the tab closes the socket and hands the bodies back to the joints.
 
@@ -149,19 +150,58 @@ export async function liveSteps(page, { step, shot, harness }) {
   const moved = info.bodies.filter((n) => poseDistance(moving.poses[n], still.poses[n]) > 1e-3);
   assert.ok(moved.length >= 1, 'the meshes move with the stream');
 
-  step('live: freeze mid-stream');
-  await page.getByLabel('Freeze (hold the frame shown)').check();
+  // ---- The dock player over the recording: pause mid-stream (the frame shown holds while frames
+  // keep arriving), one frame back (the recorded frame before it, where the motion puts it),
+  // forward again, a replay at 0.25×, then Go live.
+  step('live: pause mid-stream');
+  const livePlayer = page.locator('.live-player');
+  assert.equal(await livePlayer.getAttribute('data-live'), 'true', 'the player follows the stream');
+  assert.equal(await page.locator('#live-play').textContent(), 'Pause');
+  await page.locator('#live-play').click();
+  await page.getByText(/^Paused: the 3D view shows the recorded frame at/).waitFor();
   const frozen = await observe(page);
-  assert.ok(!frozen.ended && frozen.time < STOP, `frozen before the end: t=${frozen.time}`);
-  const mid = checkPoses(frozen, info.bodies, at, 'frozen mid-stream');
-  await page.getByText(/^Frozen: the 3D view holds the frame at/).waitFor();
+  assert.ok(!frozen.ended && frozen.time < STOP, `paused before the end: t=${frozen.time}`);
+  const mid = checkPoses(frozen, info.bodies, at, 'paused mid-stream');
   await page.waitForTimeout(300);
   const later = await observe(page);
-  assert.equal(later.time, frozen.time, 'the held frame stays while frozen');
-  assert.ok(later.ended || later.frames > frozen.frames, `frames keep arriving while frozen: ${frozen.frames} → ${later.frames}`);
-  for (const name of info.bodies) assert.deepEqual(later.poses[name], frozen.poses[name], `${name} holds still while frozen`);
-  await shot(page, '24-live-frozen');
-  await page.getByLabel('Freeze (hold the frame shown)').uncheck();
+  assert.equal(later.time, frozen.time, 'the frame shown holds while paused');
+  assert.ok(later.ended || later.frames > frozen.frames, `frames keep arriving while paused: ${frozen.frames} → ${later.frames}`);
+  for (const name of info.bodies) assert.deepEqual(later.poses[name], frozen.poses[name], `${name} holds still while paused`);
+  assert.equal(await livePlayer.getAttribute('data-live'), 'false');
+
+  step('live: one frame back and forward');
+  await page.locator('#live-step-back').click();
+  await page.waitForFunction((t) => Number(document.querySelector('.live-status').dataset.time) < t, frozen.time);
+  const back = await observe(page);
+  // The harness sends a frame every 1/50 s: the one before (or, if a datagram was lost, an earlier one).
+  const frames = Math.round((frozen.time - back.time) * RATE);
+  assert.ok(frames >= 1 && frames <= 3 && Math.abs(back.time * RATE - Math.round(back.time * RATE)) < 1e-6, `one recorded frame back: ${frozen.time} → ${back.time}`);
+  checkPoses(back, info.bodies, at, 'one frame back');
+  assert.ok(info.bodies.some((n) => poseDistance(back.poses[n], frozen.poses[n]) > 1e-6), 'the meshes moved back to the earlier frame');
+  await shot(page, '24-live-paused');
+  await page.locator('#live-step').click();
+  await page.waitForFunction((t) => Number(document.querySelector('.live-status').dataset.time) > t, back.time);
+  const fwd = await observe(page);
+  assert.equal(fwd.time, frozen.time, 'Step » goes to the next recorded frame');
+  for (const name of info.bodies) assert.ok(poseDistance(fwd.poses[name], frozen.poses[name]) < 1e-9, `${name} is back at the paused frame`);
+
+  step('live: replay at 0.25×, then go live');
+  await page.locator('#live-speed').selectOption('0.25');
+  await page.locator('#live-play').click();
+  const t0 = Date.now();
+  await page.waitForFunction((t) => Number(document.querySelector('.live-status').dataset.time) > t + 0.02, frozen.time);
+  await page.waitForTimeout(400);
+  const replay = await observe(page);
+  const wall = (Date.now() - t0) / 1000;
+  assert.equal(await livePlayer.getAttribute('data-playing'), 'true', 'replaying');
+  assert.ok(replay.time > frozen.time && replay.time - frozen.time <= 0.25 * wall + 0.05, `0.25× replay: ${frozen.time} → ${replay.time} in ${wall} s of wall time`);
+  // Between two frames the time shown is rounded to 6 digits: the poses are checked at the exact one.
+  assert.equal(Number(replay.shown), Number(replay.time.toPrecision(6)), 'the replayed time is shown');
+  checkPoses({ ...replay, shown: String(replay.time) }, info.bodies, at, 'replayed (between recorded frames)');
+  await shot(page, '24b-live-replay');
+  await page.locator('#live-live').click();
+  assert.equal(await livePlayer.getAttribute('data-live'), 'true', 'following again');
+  await page.waitForFunction((t) => Number(document.querySelector('.live-status').dataset.time) > t + 0.3, replay.time, { timeout: 10_000 });
 
   step('live: the stream ends');
   const out = await sender;
@@ -174,6 +214,9 @@ export async function liveSteps(page, { step, shot, harness }) {
   const last = checkPoses(end, info.bodies, at, 'after the end');
   assert.equal(last.t, STOP, 'the final frame is shown');
   assert.ok(end.frames > 0, 'frames were counted');
+  // Every frame of the run was recorded for the player (3 s, well within the last 60 s).
+  const recorded = Number(await status.getAttribute('data-recorded'));
+  assert.equal(recorded, end.frames, `the frames were recorded: ${recorded} of ${end.frames}`);
   assert.equal(Number(await status.locator('[data-live="frames"]').textContent()), end.frames);
   // The service's numbers of the run (its stats message, about once a second).
   await page.waitForFunction(() => document.querySelector('[data-live="lost"]').textContent !== '—', null, { timeout: 5_000 });
@@ -196,5 +239,5 @@ export async function liveSteps(page, { step, shot, harness }) {
   await page.getByRole('tab', { name: 'Structure' }).click();
   assert.equal(await page.evaluate(() => window.cad2moViewer.posed), null, 'the joints pose the model outside the Live tab');
   assert.equal(await page.locator('.live-status').getAttribute('data-connection'), 'closed');
-  return { sent, frames: end.frames, mid: mid.t, worst: Math.max(mid.worst, last.worst), relayed: service.counters.relayed };
+  return { sent, frames: end.frames, recorded, mid: mid.t, back: back.time, replayed: replay.time, worst: Math.max(mid.worst, last.worst), relayed: service.counters.relayed };
 }

@@ -245,10 +245,11 @@ export async function checkPrismatic(page) {
 }
 
 /**
- * Four viewports (top, front, side orthographic + perspective) each draw the model, and
- * side-by-side stereo draws two different eyes: pixels that differ from the background, counted
- * per viewport on the canvas read back (grid hidden). Then the measuring tool: two clicks on the
- * model give their distance. Screenshots: ws-<name>-quad.png, ws-<name>-sbs.png.
+ * Four viewports (top, front, side orthographic + perspective) each draw the model,
+ * side-by-side stereo draws two different eyes, and dual output draws the left eye here and the
+ * right eye in a second window: pixels that differ from the background, counted per viewport on
+ * the canvas read back (grid hidden). Then the measuring tool: two clicks on the model give their
+ * distance. Screenshots: ws-<name>-quad.png, ws-<name>-sbs.png, ws-<name>-dual(-right-eye).png.
  */
 export async function checkViewports(page, { name, shots }) {
   await page.getByRole('tab', { name: 'Structure', exact: true }).click();
@@ -301,6 +302,50 @@ export async function checkViewports(page, { name, shots }) {
   assert.deepEqual(sbs.map((q) => q.name), ['left', 'right']);
   for (const q of sbs) assert.ok(q.share > 0.1 && q.stray < 20, `the ${q.name} eye draws the model where it sees it: ${JSON.stringify(sbs)}`);
   assert.notEqual(sbs[0].sig, sbs[1].sig, 'the two eyes see the model from different places');
+  // Dual output (polarised dual projection): the left eye here, the right eye in a second window
+  // drawn from the same camera; both checked by their pixels, the right eye's read back from the
+  // second window's canvas and boxed through the right eye's camera at that window's size.
+  const [popup] = await Promise.all([page.waitForEvent('popup'), page.getByLabel('Viewports').selectOption('dual')]);
+  await page.waitForFunction(() => Number(window.cad2moViewer.dual?.canvas.dataset.rendered) > 0);
+  const [left] = await count();
+  const right = await page.evaluate(async () => {
+    const v = window.cad2moViewer;
+    await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
+    v.render();
+    const c = v.dual.canvas;
+    const w = c.clientWidth;
+    const h = c.clientHeight;
+    const ctx = Object.assign(document.createElement('canvas'), { width: w, height: h }).getContext('2d');
+    ctx.drawImage(c, 0, 0, w, h);
+    const img = ctx.getImageData(0, 0, w, h).data;
+    const box = v.screenBox(undefined, { x: 0, y: 0, w, h, camera: v.eye('right', v.dual.win.innerWidth / v.dual.win.innerHeight) });
+    let hit = 0;
+    let all = 0;
+    let stray = 0;
+    for (let y = 2; y < h - 2; y += 2) {
+      for (let x = 2; x < w - 2; x += 2) {
+        const i = (y * w + x) * 4;
+        const inside = x >= box.x0 - 2 && x <= box.x1 + 2 && y >= box.y0 - 2 && y <= box.y1 + 2;
+        const d = Math.abs(img[i] - 0xf3) + Math.abs(img[i + 1] - 0xf5) + Math.abs(img[i + 2] - 0xf8);
+        if (inside) all++;
+        if (d > 24) {
+          if (inside) hit++;
+          else stray++;
+        }
+      }
+    }
+    return { name: 'right', share: hit / Math.max(all, 1), stray, size: [w, h], title: v.dual.win.document.title, eyes: Math.hypot(...[12, 13, 14].map((k) => v.eye('left', 1).matrixWorld.elements[k] - v.eye('right', 1).matrixWorld.elements[k])) };
+  });
+  await page.screenshot({ path: join(shots, `ws-${name}-dual.png`) });
+  await popup.screenshot({ path: join(shots, `ws-${name}-dual-right-eye.png`) });
+  assert.equal(left.name, 'left');
+  for (const q of [left, right]) assert.ok(q.share > 0.1 && q.stray < 20, `dual output: the ${q.name} eye draws the model where it sees it: ${JSON.stringify({ left, right })}`);
+  assert.match(right.title, /right eye/);
+  assert.ok(right.eyes > 0, 'the two eyes are apart');
+  // Closing the second window (the user, or its projector's session) brings the single view back.
+  await popup.close();
+  await page.waitForFunction(() => document.querySelector('#view-layout').value === 'single' && !window.cad2moViewer.dual);
+  const dual = { left: Number(left.share.toFixed(3)), right: Number(right.share.toFixed(3)), window: right.size };
   await page.getByLabel('Viewports').selectOption('single');
   const single = await count();
   assert.equal(single.length, 1);
@@ -408,7 +453,7 @@ export async function checkViewports(page, { name, shots }) {
   await page.screenshot({ path: join(shots, `ws-${name}-measure.png`) });
   await page.getByRole('button', { name: 'Stop measuring' }).click();
   await grid.check();
-  return { quad: quad.map((q) => Number(q.share.toFixed(3))), sbs: sbs.map((q) => Number(q.share.toFixed(3))), distance, collisionShapes: shapes.n, views: Object.keys(views), fit };
+  return { quad: quad.map((q) => Number(q.share.toFixed(3))), sbs: sbs.map((q) => Number(q.share.toFixed(3))), dual, distance, collisionShapes: shapes.n, views: Object.keys(views), fit };
 }
 
 /**
@@ -440,7 +485,31 @@ export async function checkVR(page) {
   return state;
 }
 
-/** Every component name of the diagram in view is at least 9 px high on screen, or hidden; a screenshot. */
+/** Pairs of shown diagram names whose boxes on screen overlap (at most 8 named), in the diagram view `v`. */
+function labelOverlaps(v) {
+  const texts = [...v.querySelectorAll('svg g[data-component] > text')].filter((t) => t.getAttribute('visibility') !== 'hidden');
+  const boxes = texts.map((t) => ({ name: t.textContent, r: t.getBoundingClientRect() })).filter((b) => b.r.width > 0 && b.r.height > 0);
+  boxes.sort((a, b) => a.r.left - b.r.left);
+  const pairs = [];
+  let count = 0;
+  for (let i = 0; i < boxes.length; i++) {
+    const a = boxes[i].r;
+    for (let j = i + 1; j < boxes.length && boxes[j].r.left < a.right - 0.5; j++) {
+      const b = boxes[j].r;
+      if (b.top < a.bottom - 0.5 && a.top < b.bottom - 0.5) {
+        count++;
+        if (pairs.length < 8) pairs.push(`${boxes[i].name} / ${boxes[j].name}`);
+      }
+    }
+  }
+  const abbreviated = texts.filter((t) => t.textContent !== t.closest('g[data-component]').dataset.component).length;
+  return { shown: boxes.length, count, pairs, abbreviated };
+}
+
+/**
+ * Every component name of the diagram in view is at least 9 px high on screen, or hidden, and no
+ * two names shown overlap; a screenshot.
+ */
 export async function checkDiagram(page, { name, shots, contacts = false }) {
   await page.getByRole('tab', { name: 'Modelica diagram', exact: true }).click();
   await page.locator('.diagram-view svg g[data-component]').first().waitFor();
@@ -459,6 +528,11 @@ export async function checkDiagram(page, { name, shots, contacts = false }) {
   });
   assert.ok(look.width.dock >= look.width.workspace - 2 && look.width.under, `${name}: the diagram is not full width: ${JSON.stringify(look.width)}`);
   assert.deepEqual(look.small, [], `${name}: diagram names below 9 px`);
+  // No name covers another: the boxes of the names shown do not overlap (a name that would
+  // collide is abbreviated or hidden; the full name is the component's tooltip).
+  const clash = await page.locator('.diagram-view').evaluate(labelOverlaps);
+  look.labels = { shown: clash.shown, abbreviated: clash.abbreviated };
+  assert.deepEqual(clash.pairs, [], `${name}: ${clash.count} pairs of diagram names overlap at the default zoom (of ${clash.shown} shown)`);
   assert.equal(look.icons, look.components, `${name}: an icon per component`);
   // Zoomed out: names are hidden once their components are small on screen, never drawn
   // unreadable; zoomed back in they return.

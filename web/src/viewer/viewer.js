@@ -10,6 +10,7 @@ import { TransformControls } from 'three/addons/controls/TransformControls.js';
 import { bodyDeltas, frameMatrix } from './kinematics.js';
 import { poseAt } from '../views/scene-data.js';
 import { xrPlacement } from './xr-data.js';
+import { eyeSeparation, eyeCamera } from './stereo-data.js';
 
 /** A scene with the viewers' lights: sky and ground, a sun, a fill light from below behind. */
 export function litScene() {
@@ -83,6 +84,7 @@ export class Viewer {
       this.controls.update();
     });
     this.anaglyph = null;
+    this.eyes = {}; // the stereo eyes' reused cameras (stereo-data.js eyeCamera)
     this.resetView();
 
     this.resize = new ResizeObserver(() => this.fit());
@@ -668,16 +670,19 @@ export class Viewer {
 
   /**
    * The viewport layout: 'single' (the perspective view), 'quad' (top, front and side
-   * orthographic views beside the perspective one) or 'sbs' (side-by-side stereo: left eye on the
-   * left half, right eye on the right, for polarised dual projection and 3D displays).
+   * orthographic views beside the perspective one), 'sbs' (side-by-side stereo: left eye on the
+   * left half, right eye on the right, for 3D displays and projectors that split one picture) or
+   * 'dual' (dual output for polarised projection: the left eye here, the right eye in a second
+   * window of its own, `openDualOutput`). Any other layout closes the second window.
    */
   setLayout(mode) {
-    this.layout = ['quad', 'sbs'].includes(mode) ? mode : 'single';
+    this.layout = ['quad', 'sbs', 'dual'].includes(mode) ? mode : 'single';
+    if (this.layout !== 'dual') this.closeDualOutput();
     this.host.dataset.layout = this.layout;
     this.labels?.remove();
     this.labels = null;
     if (this.layout !== 'single') {
-      const names = this.layout === 'quad' ? ['Top', 'Front', 'Side', 'Perspective'] : ['Left eye', 'Right eye'];
+      const names = { quad: ['Top', 'Front', 'Side', 'Perspective'], sbs: ['Left eye', 'Right eye'], dual: ['Left eye (the right eye is in its own window)'] }[this.layout];
       this.labels = document.createElement('div');
       this.labels.className = `viewport-labels viewport-${this.layout}`;
       this.labels.setAttribute('aria-hidden', 'true');
@@ -689,6 +694,74 @@ export class Viewer {
       this.host.append(this.labels);
     }
     this.invalidate();
+  }
+
+  /**
+   * Dual output: this view shows the left eye and `win` (a window this page opened, e.g.
+   * window.open('', ...), on the second projector or output) the right eye of the same camera,
+   * drawn from this page's scene with a renderer of its own whenever this view draws, so both
+   * stay in step (camera, poses, selection). Double-click the second window for full screen.
+   * `onClosed` is called when that window closes; the layout is then single again.
+   */
+  openDualOutput(win, onClosed) {
+    this.closeDualOutput();
+    const doc = win.document;
+    doc.title = `${this.report.model_name}: right eye (cad2mo)`;
+    for (const el of [doc.documentElement, doc.body]) Object.assign(el.style, { margin: '0', height: '100%', overflow: 'hidden', background: '#f3f5f8' });
+    const canvas = doc.createElement('canvas');
+    Object.assign(canvas.style, { display: 'block', width: '100%', height: '100%' });
+    canvas.setAttribute('role', 'img');
+    canvas.setAttribute('aria-label', `Right eye of the 3D view of ${this.report.model_name}`);
+    canvas.className = 'right-eye';
+    doc.body.replaceChildren(canvas);
+    const renderer = new THREE.WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
+    renderer.setPixelRatio(Math.min(win.devicePixelRatio || 1, 2));
+    renderer.setClearColor(BACKGROUND);
+    const redraw = () => this.invalidate();
+    const closed = () => {
+      if (this.dual?.win !== win) return;
+      this.closeDualOutput();
+      if (this.layout === 'dual') this.setLayout('single');
+      onClosed?.();
+    };
+    win.addEventListener('resize', redraw);
+    win.addEventListener('pagehide', closed);
+    canvas.addEventListener('dblclick', () => canvas.requestFullscreen?.().catch(() => {}));
+    this.dual = { win, canvas, renderer, closed, frames: 0 };
+    this.setLayout('dual');
+    return canvas;
+  }
+
+  /** Closes the dual output's second window (if open). */
+  closeDualOutput() {
+    const d = this.dual;
+    if (!d) return;
+    this.dual = null;
+    d.renderer.dispose();
+    if (!d.win.closed) d.win.close();
+  }
+
+  /** The right eye in the dual output's second window. */
+  renderSecondEye() {
+    const d = this.dual;
+    if (!d) return;
+    if (d.win.closed) return d.closed();
+    const w = Math.max(d.win.innerWidth, 1);
+    const hgt = Math.max(d.win.innerHeight, 1);
+    d.renderer.setSize(w, hgt, false);
+    d.renderer.render(this.scene, this.eye('right', w / hgt));
+    d.frames += 1;
+    d.canvas.dataset.rendered = String(d.frames);
+  }
+
+  /** The camera of one stereo eye ('left', 'right') for a viewport of that aspect. */
+  eye(side, aspect) {
+    return eyeCamera((this.eyes[side] ||= {}), this.camera, this.viewDistance(), side, aspect);
+  }
+
+  /** The distance from the camera to the orbit target: the stereo eyes' convergence. */
+  viewDistance() {
+    return this.camera.position.distanceTo(this.controls.target);
   }
 
   /** An orthographic camera looking at the model along `dir` (towards the model) with `up`. */
@@ -731,21 +804,15 @@ export class Viewer {
       ];
     }
     if (this.layout === 'sbs') {
-      const hw = Math.floor(w / 2);
-      this.stereo ||= new THREE.StereoCamera();
-      this.stereo.eyeSep = this.camera.position.distanceTo(this.controls.target) / 30;
-      const eye = this.sbsCamera ||= new THREE.PerspectiveCamera();
-      eye.copy(this.camera);
       // Each eye keeps the picture's proportions in its half (full side-by-side).
-      eye.aspect = hw / hgt;
-      eye.updateProjectionMatrix();
-      eye.updateMatrixWorld();
-      this.stereo.aspect = 1;
-      this.stereo.update(eye);
+      const hw = Math.floor(w / 2);
       return [
-        { x: 0, y: 0, w: hw, h: hgt, camera: this.stereo.cameraL, name: 'left' },
-        { x: hw, y: 0, w: w - hw, h: hgt, camera: this.stereo.cameraR, name: 'right' },
+        { x: 0, y: 0, w: hw, h: hgt, camera: this.eye('left', hw / hgt), name: 'left' },
+        { x: hw, y: 0, w: w - hw, h: hgt, camera: this.eye('right', (w - hw) / hgt), name: 'right' },
       ];
+    }
+    if (this.layout === 'dual') {
+      return [{ x: 0, y: 0, w, h: hgt, camera: this.eye('left', w / hgt), name: 'left' }];
     }
     return [{ x: 0, y: 0, w, h: hgt, camera: this.camera, name: 'single' }];
   }
@@ -955,12 +1022,12 @@ export class Viewer {
     const t0 = performance.now();
     if (this.anaglyphOn && this.anaglyph) {
       // Eye separation and focal plane scale with the viewing distance (models are mm to m).
-      const dist = this.camera.position.distanceTo(this.controls.target);
-      this.anaglyph.eyeSep = dist / 30;
+      const dist = this.viewDistance();
+      this.anaglyph.eyeSep = eyeSeparation(dist);
       this.anaglyph.planeDistance = dist;
       this.anaglyph.render(this.scene, this.camera);
     }
-    else if (this.layout === 'quad' || this.layout === 'sbs') {
+    else if (this.layout !== 'single') {
       const hgt = Math.max(this.host.clientHeight, 1);
       const r = this.renderer;
       // The whole canvas first: no part of an earlier picture survives in a viewport.
@@ -977,6 +1044,7 @@ export class Viewer {
       r.setScissorTest(false);
       r.setViewport(0, 0, Math.max(this.host.clientWidth, 1), hgt);
     } else this.renderer.render(this.scene, this.camera);
+    if (this.layout === 'dual') this.renderSecondEye();
     this.host.dataset.rendered = String((Number(this.host.dataset.rendered) || 0) + 1);
     if (this.host.dataset.rendered === '1') performance.measure('cad2mo:first-frame', { start: t0 });
   }
@@ -1094,6 +1162,7 @@ export class Viewer {
   }
 
   dispose() {
+    this.closeDualOutput();
     this.xrSession?.end().catch(() => {});
     this.setGhost(null);
     this.clearMeasure();

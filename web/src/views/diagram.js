@@ -3,15 +3,16 @@
 // as SVG). The picture fills the bottom dock across the whole window (the 3D view and the tabs
 // stay above it), with zoom buttons; every component gets an icon drawn from primitives by its
 // class kind, names are labelled in screen pixels (hidden when the component is too small on
-// screen), and clicking a component shows its parameters (and selects a body or joint everywhere).
+// screen, abbreviated or hidden where they would cover another name), and clicking a component shows its parameters (and selects a body or joint everywhere).
 
 import { api, enc } from '../api.js';
 import { h, fill, errorBox, num } from '../ui.js';
-import { componentKind, labelPlan, parseTitle, driveParamRows } from './diagram-data.js';
+import { componentKind, labelPlan, parseTitle, driveParamRows, namePrefix, shortName, fitLabels } from './diagram-data.js';
 import { getUnits, toDisplay, symbolOf } from '../units.js';
-import { abbreviate } from '../layout-data.js';
 
 const SVG = 'http://www.w3.org/2000/svg';
+/** Whose names come first where names would collide: bodies and joints, then drives, then the rest. */
+const LABEL_RANK = { body: 0, revolute: 1, prismatic: 1, drive: 2, motor: 3, gear: 3, controller: 3, world: 4, fixed: 4, force: 5, sensor: 5, translation: 6, other: 7 };
 const el = (tag, attrs) => {
   const e = document.createElementNS(SVG, tag);
   for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, String(v));
@@ -108,28 +109,61 @@ export function renderDiagram(panel, { modelId, version, report, select, stage }
     svg.setAttribute('height', String(Math.round(hgt * zoom)));
     relabel(svg);
   };
-  /** Names at a fixed size on screen, or hidden where the component is too small to carry one. */
+  /**
+   * Names at a fixed size on screen, hidden where the component is too small to carry one,
+   * without the prefix most names share, and never over another name: bodies and joints first,
+   * each name as long as about twice its component's width if that is free, cut down where it
+   * would cover a name already placed, else hidden (fitLabels, then checked on the measured boxes).
+   */
   const relabel = (svg) => {
     const vb = svg.viewBox.baseVal;
     const scale = vb && vb.width ? Number(svg.getAttribute('width')) / vb.width : 1;
+    const groups = [...svg.querySelectorAll('g[data-component]')];
+    const prefix = namePrefix(groups.map((g) => g.dataset.component));
     let hidden = 0;
-    for (const g of svg.querySelectorAll('g[data-component]')) {
+    const shown = [];
+    groups.forEach((g, order) => {
       const rect = g.querySelector(':scope > rect');
       const text = g.querySelector(':scope > text');
-      if (!rect || !text) continue;
-      const plan = labelPlan(scale, Number(rect.getAttribute('width')));
+      if (!rect || !text) return;
+      const width = Number(rect.getAttribute('width'));
+      const plan = labelPlan(scale, width);
       text.setAttribute('pointer-events', 'none');
       if (!plan.visible) {
         text.setAttribute('visibility', 'hidden');
         hidden++;
-        continue;
+        return;
       }
       text.removeAttribute('visibility');
-      // As many characters as about twice the component's width holds (the full name is its title).
-      const px = Number(rect.getAttribute('width')) * scale;
-      text.textContent = abbreviate(g.dataset.component, Math.max(5, Math.floor((2.2 * px) / 6.5)));
+      // As many characters as about twice the component's width holds, where that is free.
+      const max = Math.max(5, Math.floor((2.2 * width * scale) / 6.5));
+      text.textContent = shortName(g.dataset.component, prefix, max);
       text.setAttribute('font-size', String(plan.fontSize));
       text.setAttribute('y', String(Number(rect.getAttribute('y')) - plan.fontSize * 0.25));
+      shown.push({ g, text, max, width, order, rank: LABEL_RANK[g.dataset.kind] ?? 9 });
+    });
+    shown.sort((a, b) => a.rank - b.rank || b.width - a.width || a.order - b.order);
+    // Measured once all are written (one layout), in user units.
+    const measure = (list) =>
+      list.map(({ text }) => {
+        const b = text.getBBox();
+        return { cx: b.x + b.width / 2, y0: b.y, y1: b.y + b.height, width: b.width, chars: text.textContent.length };
+      });
+    const boxes = measure(shown);
+    if (boxes.some((b) => b.width > 0)) {
+      const pad = 6 / scale; // 6 px between names on screen (3 at least once measured)
+      const keep = fitLabels(boxes, { pad, minChars: 6 });
+      shown.forEach((l, i) => {
+        if (!keep[i]) return;
+        if (keep[i] < boxes[i].chars) l.text.textContent = shortName(l.g.dataset.component, prefix, Math.max(5, Math.round((l.max * keep[i]) / boxes[i].chars)));
+      });
+      // The cut names' real widths: any that still touch another are hidden.
+      const placed = shown.filter((_, i) => keep[i]);
+      const final = fitLabels(measure(placed), { pad: 3 / scale, shrink: false });
+      for (const l of [...shown.filter((_, i) => !keep[i]), ...placed.filter((_, i) => !final[i])]) {
+        l.text.setAttribute('visibility', 'hidden');
+        hidden++;
+      }
     }
     svg.dataset.hiddenLabels = String(hidden);
   };

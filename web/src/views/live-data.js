@@ -1,7 +1,7 @@
 // Pure helpers of the Live tab (unit-tested, no DOM): the WebSocket's address and
 // sub-protocols, the binary frames decoded in place into reused typed arrays, its text messages,
-// which run the page follows, the frame rate received, the reconnection backoff and the
-// modifier that starts a stream. The contract: docs/live-protocol.md.
+// which run the page follows, the frame rate received, the recording the player replays, the
+// reconnection backoff and the modifier that starts a stream. The contract: docs/live-protocol.md.
 
 /** Bytes before the poses in a relayed frame: u32 run, u32 seq, f64 time, u32 n, u32 flags. */
 export const FRAME_HEADER = 24;
@@ -213,4 +213,113 @@ export function startModifier(info, pageHost = '127.0.0.1') {
   const parts = ['liveView=true', `liveHost="${host}"`, `livePort=${a.port}`];
   if (info.auth_required) parts.push('liveToken="<an API token>"');
   return `Mechatronics(${parts.join(', ')})`;
+}
+
+/** The live view records the last RECORD_SECONDS of simulated time ... */
+export const RECORD_SECONDS = 60;
+/** ... in at most RECORD_BYTES (frames of many bodies keep fewer seconds). */
+export const RECORD_BYTES = 64 * 1024 * 1024;
+
+/**
+ * The frames of the followed run, recorded for the player (pause, step back, replay): the last
+ * `seconds` of simulated time, its arrays at most `bytes` (f32 poses, exactly as they arrived,
+ * and f64 times). Frames are kept in time order in one array with the oldest dropped from its
+ * front (compacted when the array's end is reached: a quarter of it stays free for that), so
+ * `stream()` is contiguous and the Results tab's interpolation (results-data.js posesAt) reads it.
+ */
+export class FrameRecorder {
+  constructor({ seconds = RECORD_SECONDS, bytes = RECORD_BYTES } = {}) {
+    this.seconds = seconds;
+    this.bytes = bytes;
+    this.reset(0);
+  }
+
+  /** Forgets every frame (a new run, or frames of another body count). */
+  reset(n = this.n) {
+    this.n = n;
+    const frameBytes = 8 + 4 * POSE * Math.max(n, 1);
+    // The array holds `limit` frames plus a quarter more, all within `bytes`.
+    this.limit = Math.max(2, Math.floor(this.bytes / frameBytes / 1.25));
+    this.room = Math.max(3, Math.floor(this.limit * 1.25));
+    this.cap = Math.min(this.room, 256);
+    this.timesBuf = new Float64Array(this.cap);
+    this.posesBuf = new Float32Array(this.cap * n * POSE);
+    this.first = 0;
+    this.end = 0;
+    this.version = 0; // bumped by every change
+  }
+
+  get count() {
+    return this.end - this.first;
+  }
+
+  /** The oldest recorded time (0 when empty). */
+  get start() {
+    return this.count ? this.timesBuf[this.first] : 0;
+  }
+
+  /** The newest recorded time (0 when empty). */
+  get stop() {
+    return this.count ? this.timesBuf[this.end - 1] : 0;
+  }
+
+  /** The recorded times, oldest first (a view: valid until the next push). */
+  get times() {
+    return this.timesBuf.subarray(this.first, this.end);
+  }
+
+  /** Bytes the arrays take now. */
+  get size() {
+    return this.timesBuf.byteLength + this.posesBuf.byteLength;
+  }
+
+  /**
+   * Records a decoded frame ({time, n, poses}); false when it is not newer than the newest
+   * recorded one (a frame out of order) or has no bodies. Frames of another body count start
+   * a new recording.
+   */
+  push(frame) {
+    const n = frame.n;
+    if (!(n > 0) || !Number.isFinite(frame.time)) return false;
+    if (n !== this.n) this.reset(n);
+    if (this.count && !(frame.time > this.timesBuf[this.end - 1])) return false;
+    // Older than the window, or beyond the frame limit: dropped from the front.
+    const cut = frame.time - this.seconds;
+    while (this.first < this.end && this.timesBuf[this.first] < cut) this.first++;
+    if (this.count >= this.limit) this.first += this.count - this.limit + 1;
+    if (this.end === this.cap) this.makeRoom();
+    const stride = n * POSE;
+    this.timesBuf[this.end] = frame.time;
+    this.posesBuf.set(frame.poses.subarray(0, stride), this.end * stride);
+    this.end++;
+    this.version++;
+    return true;
+  }
+
+  /** The array is full at its end: grow it (up to `room`) or move the frames to its front. */
+  makeRoom() {
+    const stride = this.n * POSE;
+    const count = this.count;
+    if (this.cap < this.room && count > this.cap / 2) {
+      const cap = Math.min(this.room, this.cap * 2);
+      const times = new Float64Array(cap);
+      const poses = new Float32Array(cap * stride);
+      times.set(this.timesBuf.subarray(this.first, this.end));
+      poses.set(this.posesBuf.subarray(this.first * stride, this.end * stride));
+      this.timesBuf = times;
+      this.posesBuf = poses;
+      this.cap = cap;
+    } else {
+      this.timesBuf.copyWithin(0, this.first, this.end);
+      this.posesBuf.copyWithin(0, this.first * stride, this.end * stride);
+    }
+    this.first = 0;
+    this.end = count;
+  }
+
+  /** The recording as a pose stream ({bodies, times, poses}) for results-data.js posesAt. */
+  stream(bodies) {
+    const stride = this.n * POSE;
+    return { bodies, times: this.times, poses: this.posesBuf.subarray(this.first * stride, this.end * stride) };
+  }
 }

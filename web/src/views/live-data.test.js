@@ -1,6 +1,7 @@
 import test from 'node:test';
 import assert from 'node:assert/strict';
-import { liveUrl, liveProtocols, newFrame, decodeFrame, copyFrame, parseMessage, RateMeter, LiveRuns, backoff, splitHostPort, startModifier, FINAL } from './live-data.js';
+import { liveUrl, liveProtocols, newFrame, decodeFrame, copyFrame, parseMessage, RateMeter, LiveRuns, backoff, splitHostPort, startModifier, FINAL, FrameRecorder, RECORD_SECONDS, RECORD_BYTES } from './live-data.js';
+import { posesAt } from './results-data.js';
 
 /** A relayed frame as the contract lays it out. */
 function frame({ run = 7, seq = 0, time = 0, flags = 0, poses = [] }) {
@@ -119,4 +120,65 @@ test('splitHostPort and startModifier', () => {
     startModifier({ udp: '0.0.0.0:7000', auth_required: true }, 'cad.example'),
     'Mechatronics(liveView=true, liveHost="cad.example", livePort=7000, liveToken="<an API token>")',
   );
+});
+
+/** A decoded frame of `n` bodies at time t: body k at (t, k, 0), unit quaternions. */
+function posed(t, n = 2) {
+  const f = newFrame(n);
+  f.time = t;
+  f.n = n;
+  for (let k = 0; k < n; k++) f.poses.set([t, k, 0, 0, 0, 0, 1], k * 7);
+  return f;
+}
+
+test('FrameRecorder keeps the last seconds in time order, exactly as received', () => {
+  const r = new FrameRecorder({ seconds: 1 });
+  assert.equal(r.count, 0);
+  for (let i = 0; i <= 150; i++) assert.ok(r.push(posed(i / 50)));
+  assert.equal(r.stop, 3);
+  assert.ok(Math.abs(r.start - 2) < 1e-12, `the last second: from ${r.start}`);
+  assert.equal(r.count, 51);
+  assert.ok(!r.push(posed(2.5)), 'a frame older than the newest is not recorded');
+  assert.ok(!r.push(posed(3)), 'nor one at the same time');
+  const ts = r.times;
+  for (let i = 1; i < ts.length; i++) assert.ok(ts[i] > ts[i - 1], 'ascending');
+  // Interpolated between frames by the results' posesAt; exact at a frame.
+  const s = r.stream(['a', 'b']);
+  const at = posesAt(s, 2.5);
+  assert.deepEqual(Array.from(at.subarray(0, 3)), [Math.fround(2.5), 0, 0]);
+  const mid = posesAt(s, 2.51);
+  assert.ok(Math.abs(mid[0] - 2.51) < 1e-6 && mid[7 + 1] === 1, 'between two frames, lerped');
+});
+
+test('FrameRecorder stays within its byte bound, dropping the oldest frames', () => {
+  const n = 10;
+  const bytes = 64 * 1024;
+  const r = new FrameRecorder({ seconds: 1e9, bytes });
+  for (let i = 0; i < 5000; i++) r.push(posed(i * 0.001, n));
+  assert.ok(r.size <= bytes, `${r.size} bytes of ${bytes}`);
+  assert.equal(r.count, r.limit, 'as many frames as the bound holds');
+  assert.ok(r.limit > 100, `${r.limit} frames of ${n} bodies in 64 KiB`);
+  assert.equal(r.stop, 4.999);
+  assert.ok(Math.abs(r.start - (5000 - r.limit) * 0.001) < 1e-12, 'the newest frames kept');
+  // Each kept frame still holds its own poses after the compactions.
+  const s = r.stream(Array.from({ length: n }, (_, k) => `b${k}`));
+  for (const i of [0, 17, r.count - 1]) {
+    const t = s.times[i];
+    assert.equal(s.poses[i * n * 7], Math.fround(t));
+    assert.equal(s.poses[i * n * 7 + 7 + 1], 1);
+  }
+});
+
+test('FrameRecorder starts again with another body count; the default bound is 60 s or 64 MB', () => {
+  const r = new FrameRecorder();
+  r.push(posed(0, 2));
+  r.push(posed(0.1, 2));
+  assert.ok(r.push(posed(0.05, 3)), 'another body count: a new recording');
+  assert.equal(r.count, 1);
+  assert.equal(RECORD_SECONDS, 60);
+  assert.equal(RECORD_BYTES, 64 * 1024 * 1024);
+  // 29 bodies (LEGS) at 1 kHz for 60 s fit in the bound.
+  const legs = new FrameRecorder();
+  legs.reset(29);
+  assert.ok(legs.limit >= 60_000, `${legs.limit} frames`);
 });

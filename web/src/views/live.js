@@ -4,12 +4,18 @@
 // the newest stream's simulated time, frames per second, lost and stale frames, the real-time
 // factor and its end, lists the version's active runs, and moves the meshes in the 3D view:
 // frames are decoded in place into reused arrays and drawn at most once per animation frame
-// (the newest wins); "Freeze" holds the frame shown. The socket is open only while the tab is
-// shown, and reconnects with backoff when it closes unexpectedly.
+// (the newest wins). Every frame of the followed run is also recorded (the last 60 s, at most
+// 64 MB: FrameRecorder), and the dock player (player.js) replays the recording: Pause holds the
+// frame shown while frames keep arriving, step back and forward frame by frame, scrub, replay at
+// 0.1×–4× (between frames the poses are interpolated as a result's are), then Go live. The
+// socket is open only while the tab is shown, and reconnects with backoff when it closes
+// unexpectedly.
 
 import { api, enc, token } from '../api.js';
 import { h, fill, errorBox, num, plural } from '../ui.js';
-import { liveUrl, liveProtocols, newFrame, decodeFrame, copyFrame, parseMessage, RateMeter, LiveRuns, backoff, splitHostPort, startModifier } from './live-data.js';
+import { liveUrl, liveProtocols, newFrame, decodeFrame, copyFrame, parseMessage, RateMeter, LiveRuns, backoff, splitHostPort, startModifier, FrameRecorder, RECORD_SECONDS, RECORD_BYTES } from './live-data.js';
+import { posesAt } from './results-data.js';
+import { createPlayer } from './player.js';
 
 const POLL_MS = 2000;
 
@@ -48,6 +54,11 @@ export function renderLive(panel, ctx) {
   let fresh = false; // latest is newer than held
   const runs = new LiveRuns();
   const rate = new RateMeter(1);
+  // The followed run's frames, for the player; `replay` when the player shows a recorded time.
+  const recorder = new FrameRecorder();
+  let recorded = -1; // the recorder's version the player knows
+  let replay = false;
+  let drawing = false;
 
   // ---- the panel: how to start a stream, the active runs, the service's counters
   const howBox = h('section', { class: 'live-how', 'aria-label': 'Start a live stream' }, h('p', { class: 'muted' }, 'Asking the service about its live view…'));
@@ -55,14 +66,13 @@ export function renderLive(panel, ctx) {
   const serviceBox = h('section', { class: 'live-service', 'aria-label': 'Live service counters' });
   fill(panel, h('h2', {}, 'Live view'), howBox, runsBox, serviceBox);
 
-  // ---- under the 3D view: the live numbers and the freeze toggle
+  // ---- under the 3D view: the player over the recording, the live numbers
   const value = (key) => h('span', { class: 'live-value', dataset: { live: key } }, '—');
   const cells = {};
   const item = (key, label) => {
     cells[key] = value(key);
     return h('div', { class: 'live-item' }, h('span', { class: 'live-label' }, label), cells[key]);
   };
-  const freeze = h('input', { type: 'checkbox', id: 'live-freeze' });
   const note = h('p', { class: 'live-note' });
   const status = h(
     'div',
@@ -78,18 +88,35 @@ export function renderLive(panel, ctx) {
       item('lost', 'Lost'),
       item('stale', 'Stale'),
       item('rtf', 'Real-time factor'),
+      item('recorded', 'Recorded'),
     ),
     note,
   );
-  fill(
-    ctx.stage,
-    h('div', { class: 'row live-bar' }, h('h3', {}, 'Live stream'), h('span', { class: 'check' }, freeze, h('label', { for: 'live-freeze' }, 'Freeze (hold the frame shown)'))),
-    status,
-  );
-  freeze.addEventListener('change', () => {
-    if (!freeze.checked && latest.n) fresh = true;
-    schedule();
+  const playerBox = h('div', { class: 'player-box live-player' });
+  fill(ctx.stage, playerBox, status);
+  const player = createPlayer(playerBox, {
+    id: 'live',
+    label: 'Recorded time',
+    live: true,
+    unit: 'frame',
+    onTime() {
+      // Following: the newest frame is drawn; otherwise the recording at the player's time.
+      if (player.following) {
+        if (replay && latest.n) fresh = true;
+        replay = false;
+      } else replay = true;
+      if (!drawing) schedule();
+    },
   });
+  player.show(
+    { start: 0, stop: 0, times: () => recorder.times },
+    h(
+      'h3',
+      {},
+      'Live stream ',
+      h('small', { class: 'muted' }, `the last ${RECORD_SECONDS} s are recorded (at most ${Math.round(RECORD_BYTES / 2 ** 20)} MB): pause, step back frame by frame or replay, then Go live`),
+    ),
+  );
 
   // ---- the socket
   function connect() {
@@ -179,8 +206,14 @@ export function renderLive(panel, ctx) {
       return;
     }
     rate.tick(now);
+    if (runs.run !== before) {
+      // A new run: its own recording, followed live.
+      recorder.reset();
+      player.goLive();
+    }
     runs.frame(spare, now);
     spare.received = runs.frames;
+    recorder.push(spare);
     [spare, latest] = [latest, spare];
     fresh = true;
     schedule();
@@ -194,9 +227,26 @@ export function renderLive(panel, ctx) {
   function draw() {
     raf = 0;
     if (!shown || disposed) return;
-    if (fresh && !freeze.checked && bodies) {
-      copyFrame(latest, held);
-      fresh = false;
+    drawing = true;
+    if (recorder.version !== recorded) {
+      recorded = recorder.version;
+      player.extend(recorder.start, recorder.stop);
+    }
+    drawing = false;
+    if (player.following) {
+      if (fresh && bodies) {
+        copyFrame(latest, held);
+        fresh = false;
+        viewer.setBodyPoses(bodies, held.poses);
+      }
+    } else if (replay && bodies && recorder.count && recorder.n === bodies.length) {
+      // The recorded frame at the player's time (interpolated between two frames).
+      const n = recorder.n;
+      if (held.poses.length < n * 7) held.poses = new Float64Array(n * 7);
+      posesAt(recorder.stream(bodies), player.time, held.poses);
+      held.n = n;
+      held.time = player.time;
+      replay = false;
       viewer.setBodyPoses(bodies, held.poses);
     }
     showNumbers();
@@ -220,20 +270,24 @@ export function renderLive(panel, ctx) {
       lost: s ? String(s.lost ?? '—') : '—',
       stale: s ? String(s.stale ?? '—') : '—',
       rtf: s && Number.isFinite(s.realtime_factor) ? num(round(s.realtime_factor, 3)) : '—',
+      recorded: recorder.count ? `${plural(recorder.count, 'frame')}, ${num(round(recorder.stop - recorder.start, 2))} s` : '—',
     };
     for (const [k, v] of Object.entries(text)) if (cells[k].textContent !== v) cells[k].textContent = v;
     const d = status.dataset;
     d.connection = connection;
     d.frames = String(runs.frames);
     d.ended = String(runs.ended);
-    d.held = String(freeze.checked);
+    d.held = String(!player.following);
+    d.recorded = String(recorder.count);
     if (held.n) d.time = String(held.time);
     else delete d.time;
     const lines = [];
     if (off) lines.push(off);
     if (connection === 'reconnecting' && closeNote) lines.push(`The connection closed (${closeNote}).`);
     if (runs.ended) lines.push(`Stream ended at ${num(runs.endTime)} s.`);
-    if (freeze.checked && held.n) lines.push(`Frozen: the 3D view holds the frame at ${num(held.time)} s while ${runs.ended ? 'the stream has ended' : 'frames keep arriving'}.`);
+    if (!player.following && held.n) {
+      lines.push(`Paused: the 3D view shows the recorded frame at ${num(held.time)} s while ${runs.ended ? 'the stream has ended' : 'frames keep arriving (and are recorded)'}; Go live follows them again.`);
+    }
     if (mismatched) lines.push(`${plural(mismatched, 'frame')} with another body count than this version's ${bodies?.length} ignored.`);
     if (unknown.length) lines.push(`Not in the 3D view: ${unknown.join(', ')}.`);
     const joined = lines.join(' ');
@@ -374,6 +428,8 @@ export function renderLive(panel, ctx) {
       } else {
         cancelAnimationFrame(raf);
         raf = 0;
+        // A replay stops with the tab (following the stream goes on when it is shown again).
+        if (player.playing) player.pause();
         disconnect();
         viewer.setBodyPoses(null);
         showNumbers(); // hidden, but its numbers say the socket is closed
@@ -381,6 +437,7 @@ export function renderLive(panel, ctx) {
     },
     dispose() {
       this.shown(false);
+      player.dispose();
       disposed = true;
     },
   };

@@ -99,9 +99,17 @@ export async function renderViewer(main, id, v, initialTab) {
   const units = getUnits();
   const angleSel = h('select', { id: 'unit-angle' }, h('option', { value: 'deg', selected: units.angle === 'deg' }, 'degrees'), h('option', { value: 'rad', selected: units.angle === 'rad' }, 'radians'));
   const lengthSel = h('select', { id: 'unit-length' }, h('option', { value: 'mm', selected: units.length === 'mm' }, 'mm'), h('option', { value: 'm', selected: units.length === 'm' }, 'm'));
-  // Viewports: one perspective view, four (top, front, side orthographic + perspective), or
-  // side-by-side stereo (beside the red-cyan anaglyph); the measuring tool.
-  const layoutSel = h('select', { id: 'view-layout' }, h('option', { value: 'single' }, 'Single view'), h('option', { value: 'quad' }, 'Four views'), h('option', { value: 'sbs' }, 'Side-by-side stereo'));
+  // Viewports: one perspective view, four (top, front, side orthographic + perspective),
+  // side-by-side stereo or dual output (the right eye in a second window, for polarised dual
+  // projection: one window per projector), beside the red-cyan anaglyph; the measuring tool.
+  const layoutSel = h(
+    'select',
+    { id: 'view-layout' },
+    h('option', { value: 'single' }, 'Single view'),
+    h('option', { value: 'quad' }, 'Four views'),
+    h('option', { value: 'sbs' }, 'Side-by-side stereo'),
+    h('option', { value: 'dual', title: 'The left eye here, the right eye in a window of its own (move it to the second projector; double-click it for full screen)' }, 'Dual output stereo (second window)'),
+  );
   // Named views of the whole model, framing the selection, see-through bodies.
   const viewSel = h('select', { id: 'named-view', 'aria-label': 'Named view' }, h('option', { value: '' }, 'View from…'), ...['iso', 'top', 'front', 'side'].map((v) => h('option', { value: v }, { iso: 'Iso', top: 'Top', front: 'Front', side: 'Side' }[v])));
   const transparentBox = h('input', { type: 'checkbox', id: 'transparent' });
@@ -178,7 +186,28 @@ export async function renderViewer(main, id, v, initialTab) {
       say(`Could not enter VR: ${e?.message || e}`, 'error');
     }
   });
-  layoutSel.addEventListener('change', () => viewer.setLayout?.(layoutSel.value));
+  layoutSel.addEventListener('change', () => {
+    if (layoutSel.value !== 'dual' || !viewer.openDualOutput) return viewer.setLayout?.(layoutSel.value);
+    // Opened now, in the user's gesture (a pop-up blocker lets it through).
+    const win = window.open('', `cad2mo-right-eye-${id}-${v}`, 'popup,width=960,height=600');
+    if (!win) {
+      layoutSel.value = 'single';
+      viewer.setLayout('single');
+      say('The browser blocked the second window: allow pop-ups for this page to use dual output.', 'error');
+      return;
+    }
+    try {
+      viewer.openDualOutput(win, () => {
+        if (layoutSel.value === 'dual') layoutSel.value = 'single';
+      });
+      say('Dual output: the right eye is in the second window; move it to the second projector or output and double-click it for full screen.', 'ok');
+    } catch (e) {
+      win.close();
+      layoutSel.value = 'single';
+      viewer.setLayout('single');
+      say(`The second window could not draw: ${e.message}`, 'error');
+    }
+  });
   const showMeasure = (m) => {
     const u = getUnits();
     measureOut.textContent = m.distance === null ? 'Pick the second point' : `Distance ${num(toDisplay(m.distance, 'm', u))} ${symbolOf('m', u)}`;

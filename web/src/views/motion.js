@@ -11,7 +11,7 @@ import { sampleAt, keyframeProblems, throttle, applyAlternative, rotationRows, f
 import { sizingQuery, verdict, standingLabel, limitingText } from './sizing-data.js';
 import { simulationBody, driveRows, trackingErrors, positionVariable, valueAt, contactLine } from './simulation-data.js';
 import { sweepRows, firstContactText, contactMarkers, touchedBy, witnessLine, pairKey } from './collision-data.js';
-import { advance, SPEEDS } from './results-data.js';
+import { createPlayer } from './player.js';
 import { getUnits, factorOf, symbolOf } from '../units.js';
 import { abbreviateAll, filterRows } from '../layout-data.js';
 
@@ -44,8 +44,6 @@ export function renderMotion(panel, ctx) {
   let contactPair = null; // the pair whose closest points are drawn (its key)
   let problems = new Map();
   let time = 0;
-  let playing = false;
-  let raf = 0;
   let plots = [];
   let gizmo = null;
   let disposed = false;
@@ -86,8 +84,6 @@ export function renderMotion(panel, ctx) {
   let sim = null;
   let simView = false;
   let simPlots = [];
-  let speed = 1;
-  let loop = false;
 
   // ---------------------------------------------------------------- loading
   async function load() {
@@ -514,7 +510,7 @@ export function renderMotion(panel, ctx) {
     traj = null;
     sizing = null;
     problems = new Map();
-    fill(playerBox, h('p', { role: 'status' }, 'Planning the trajectory…'));
+    player.clear(h('p', { role: 'status' }, 'Planning the trajectory…'));
     fill(plotsBox);
     fill(sizingBox);
     resetCollisions();
@@ -523,7 +519,7 @@ export function renderMotion(panel, ctx) {
     } catch (e) {
       problems = keyframeProblems(e);
       renderEditor();
-      fill(playerBox, errorBox(e, 'The motion cannot be planned'));
+      player.clear(errorBox(e, 'The motion cannot be planned'));
       if (problems.size) editorBox.querySelector('.kf-problem')?.scrollIntoView({ block: 'nearest' });
       return;
     }
@@ -734,37 +730,17 @@ export function renderMotion(panel, ctx) {
   }
 
   // ---------------------------------------------------------------- player
-  let scrub = null;
-  let clock = null;
-  let playBtn = null;
+  // The dock player (player.js), shared with results and the live view: the planned motion or,
+  // with "Play the simulated motion", the closed-loop run, at 0.1×–4×, a sample per step.
+  const player = createPlayer(playerBox, { id: 'motion', label: 'Motion time', onTime: setTime, clockDigits: 2, timeDigits: 3 });
   let timelineCursor = null;
 
   function renderPlayer() {
     if (!traj) {
-      fill(playerBox);
+      player.clear();
       return;
     }
     const d = traj.duration;
-    scrub = h('input', { type: 'range', id: 'motion-scrub', min: '0', max: String(d), step: String(1 / traj.rate), value: '0' });
-    scrub.addEventListener('input', () => {
-      stop();
-      setTime(Number(scrub.value));
-    });
-    clock = h('output', { for: scrub.id, class: 'motion-clock' });
-    playBtn = h('button', { type: 'button', id: 'motion-play', onclick: () => (playing ? stop() : play()) }, 'Play');
-    const dt = 1 / traj.rate;
-    const back = h('button', { type: 'button', id: 'motion-step-back', 'aria-label': 'Step back one sample', title: 'Step back one sample', onclick: () => seek(time - dt) }, '« Step');
-    const fwd = h('button', { type: 'button', id: 'motion-step', 'aria-label': 'Step forward one sample', title: 'Step forward one sample', onclick: () => seek(time + dt) }, 'Step »');
-    const speedSel = h('select', { id: 'motion-speed' }, SPEEDS.filter((x) => x <= 4).map((x) => h('option', { value: String(x), selected: x === speed }, `${x}×`)));
-    speedSel.addEventListener('change', () => {
-      speed = Number(speedSel.value);
-      if (playing) {
-        stop();
-        play();
-      }
-    });
-    const loopBox = h('input', { type: 'checkbox', id: 'motion-loop', checked: loop });
-    loopBox.addEventListener('change', () => (loop = loopBox.checked));
     timelineCursor = h('div', { class: 'timeline-cursor', 'aria-hidden': 'true' });
     const marks = traj.keyframes.map((k) =>
       h(
@@ -780,27 +756,17 @@ export function renderMotion(panel, ctx) {
         String(k.index),
       ),
     );
-    fill(
-      playerBox,
+    player.show(
+      { start: 0, stop: d, dt: 1 / traj.rate, at: time },
       h('h3', {}, `Play ${traj.motion} `, h('small', { class: 'muted' }, `${num(d)} s, planned on v${traj.version}`)),
       ctx.versionNumber && traj.version !== ctx.versionNumber
         ? h('p', { class: 'warning' }, `Motions are planned on the latest version (v${traj.version}); this page shows v${ctx.versionNumber}, whose joints may differ.`)
         : null,
       h('div', { class: 'timeline', role: 'group', 'aria-label': 'Keyframe and first-contact times' }, marks, contactMarks(d), timelineCursor),
-      h(
-        'div',
-        { class: 'player row' },
-        playBtn,
-        back,
-        fwd,
-        h('label', { for: scrub.id, class: 'visually-hidden' }, 'Motion time'),
-        scrub,
-        clock,
-        h('span', { class: 'player-options' }, h('label', { for: speedSel.id }, 'Speed'), speedSel, h('span', { class: 'check' }, loopBox, h('label', { for: loopBox.id }, 'Loop'))),
-      ),
     );
   }
 
+  /** Shows the motion at time t (the player's time: called by the player). */
   function setTime(t) {
     if (!traj) return;
     time = Math.max(0, Math.min(t, traj.duration));
@@ -812,43 +778,18 @@ export function renderMotion(panel, ctx) {
     // Moving scene objects follow the same clock.
     viewer.setSceneTime?.(time);
     for (const p of simPlots) p.setTime(time);
-    if (scrub) scrub.value = String(time);
-    if (clock) clock.textContent = `${time.toFixed(2)} s / ${num(traj.duration)} s`;
     if (timelineCursor) timelineCursor.style.left = `${traj.duration > 0 ? (time / traj.duration) * 100 : 0}%`;
-    playerBox.dataset.time = time.toFixed(3);
     for (const p of plots) p.setTime(time);
     markTouched();
     poseChanged();
   }
 
   function seek(t) {
-    stop();
-    setTime(t);
-  }
-
-  function play() {
-    if (!traj) return;
-    if (time >= traj.duration && !loop) time = 0;
-    playing = true;
-    playerBox.dataset.playing = 'true';
-    if (playBtn) playBtn.textContent = 'Pause';
-    let last = performance.now();
-    const tick = (now) => {
-      if (!playing) return;
-      const { t, ended } = advance(time, (now - last) / 1000, { speed, start: 0, stop: traj.duration, loop });
-      last = now;
-      setTime(t);
-      if (ended) return stop();
-      raf = requestAnimationFrame(tick);
-    };
-    raf = requestAnimationFrame(tick);
+    if (traj) player.seek(t);
   }
 
   function stop() {
-    playing = false;
-    cancelAnimationFrame(raf);
-    playerBox.dataset.playing = 'false';
-    if (playBtn) playBtn.textContent = 'Play';
+    player.pause();
   }
 
   // ---------------------------------------------------------------- plots
@@ -1415,7 +1356,7 @@ export function renderMotion(panel, ctx) {
     },
     dispose() {
       disposed = true;
-      stop();
+      player.dispose();
       clearSim();
       hideGizmo();
       for (const p of plots) p.destroy();

@@ -1,11 +1,13 @@
 // The pieces both results screens share (a version's Results tab and the standalone Results
-// page): the .mat upload with its refusals, the timeline player (play, pause, scrub, speed,
-// loop) and the charts of searched variables with the cursor at the player's time and the CSV
+// page): the .mat upload with its refusals, the timeline player (the dock player, player.js)
+// and the charts of searched variables with the cursor at the player's time and the CSV
 // export. Each is a small factory over a container element; the screens wire them together.
 
 import { api, upload, enc, ApiError } from '../api.js';
 import { h, fill, errorBox, num, bytes, when, plural, newId, unitLabel } from '../ui.js';
-import { valueAt, advance, SPEEDS, stepTime, signalsCsv, csvName } from './results-data.js';
+import { valueAt, signalsCsv, csvName } from './results-data.js';
+import { SPEEDS } from './player-data.js';
+import { createPlayer } from './player.js';
 
 const SEARCH_LIMIT = 50;
 
@@ -121,115 +123,25 @@ export function resultUpload(box, { url, hint, say, done }) {
 }
 
 /**
- * The timeline of an open result: Play/Pause, a scrub slider, the clock, a step back and
- * forward to the neighbouring sample, speed and loop. The box carries data-time and
- * data-playing (read by the end-to-end tests).
+ * The timeline of an open result: the dock player (player.js: Play/Pause, the scrubber, the
+ * clock, a step back and forward to the neighbouring sample, speed 0.1×–10× and loop). The box
+ * carries data-time and data-playing (read by the end-to-end tests).
  * @param {HTMLElement} box
  * @param {{onTime: (t: number) => void, times?: () => ArrayLike<number> | undefined}} o
  *   onTime: called whenever the time changes; times: the result's sample instants (for Step)
  */
 export function resultPlayer(box, { onTime, times = () => undefined }) {
-  let result = null;
-  let time = 0;
-  let playing = false;
-  let raf = 0;
-  let speed = 1;
-  let loop = false;
-  let scrub = null;
-  let clock = null;
-  let playBtn = null;
-  box.dataset.playing = 'false';
-
-  function stop() {
-    playing = false;
-    cancelAnimationFrame(raf);
-    box.dataset.playing = 'false';
-    if (playBtn) playBtn.textContent = 'Play';
-  }
-
-  function setTime(t) {
-    if (!result) return;
-    time = Math.max(result.start, Math.min(t, result.stop));
-    if (scrub && document.activeElement !== scrub) scrub.value = String(time);
-    if (clock) clock.textContent = `${time.toFixed(3)} s / ${num(result.stop)} s`;
-    box.dataset.time = String(time);
-    onTime(time);
-  }
-
-  function play() {
-    if (!result) return;
-    if (time >= result.stop && !loop) time = result.start;
-    playing = true;
-    box.dataset.playing = 'true';
-    if (playBtn) playBtn.textContent = 'Pause';
-    let last = performance.now();
-    const tick = (now) => {
-      if (!playing) return;
-      const { t, ended } = advance(time, (now - last) / 1000, { speed, start: result.start, stop: result.stop, loop });
-      last = now;
-      setTime(t);
-      if (ended) return stop();
-      raf = requestAnimationFrame(tick);
-    };
-    raf = requestAnimationFrame(tick);
-  }
-
-  /** Shows the player for result `r` (heading and notes above the controls), at its start. */
-  function show(r, ...head) {
-    stop();
-    result = r;
-    time = r.start;
-    scrub = h('input', { type: 'range', id: 'results-scrub', min: String(r.start), max: String(r.stop), step: 'any', value: String(r.start) });
-    scrub.addEventListener('input', () => {
-      stop();
-      setTime(Number(scrub.value));
-    });
-    clock = h('output', { for: scrub.id, class: 'motion-clock' });
-    playBtn = h('button', { type: 'button', id: 'results-play', onclick: () => (playing ? stop() : play()) }, 'Play');
-    const stepBy = (dir) => {
-      stop();
-      setTime(stepTime(times(), time, dir, r));
-    };
-    const back = h('button', { type: 'button', id: 'results-step-back', 'aria-label': 'Step back one sample', title: 'Step back one sample', onclick: () => stepBy(-1) }, '« Step');
-    const fwd = h('button', { type: 'button', id: 'results-step', 'aria-label': 'Step forward one sample', title: 'Step forward one sample', onclick: () => stepBy(1) }, 'Step »');
-    const speedSel = h('select', { id: 'results-speed' }, SPEEDS.map((s) => h('option', { value: String(s), selected: s === speed }, `${s}×`)));
-    speedSel.addEventListener('change', () => {
-      speed = Number(speedSel.value);
-      if (playing) {
-        stop();
-        play();
-      }
-    });
-    const loopBox = h('input', { type: 'checkbox', id: 'results-loop', checked: loop });
-    loopBox.addEventListener('change', () => (loop = loopBox.checked));
-    fill(
-      box,
-      ...head,
-      h('div', { class: 'player row' }, playBtn, h('label', { for: scrub.id, class: 'visually-hidden' }, 'Result time'), scrub, clock),
-      h('div', { class: 'row player-options' }, back, fwd, h('label', { for: speedSel.id }, 'Speed'), speedSel, h('span', { class: 'check' }, loopBox, h('label', { for: loopBox.id }, 'Loop'))),
-    );
-    setTime(time);
-  }
-
-  function clear(...content) {
-    stop();
-    result = null;
-    scrub = clock = playBtn = null;
-    fill(box, ...content);
-  }
-
+  const player = createPlayer(box, { id: 'results', label: 'Result time', onTime, speeds: SPEEDS, clockDigits: 3 });
   return {
-    show,
-    clear,
-    stop,
-    setTime,
+    /** Shows the player for result `r` (heading and notes above the controls), at its start. */
+    show: (r, ...head) => player.show({ start: r.start, stop: r.stop, times: times() }, ...head),
+    clear: (...content) => player.clear(...content),
+    stop: () => player.pause(),
+    setTime: (t) => player.setTime(t),
     /** Stops and goes to time t (a click on a chart). */
-    seek(t) {
-      stop();
-      setTime(t);
-    },
+    seek: (t) => player.seek(t),
     get time() {
-      return time;
+      return player.time;
     },
   };
 }

@@ -1,6 +1,6 @@
 // Pure helpers of the Results tab (unit-tested, no DOM): the binary pose stream of a result,
 // body poses between its steps (position lerped, quaternion slerped), a signal's value at a
-// time, the playback clock, and the CSV of the plotted signals.
+// time, and the CSV of the plotted signals (the playback clock is the dock player's, player-data.js).
 
 const MAGIC = 'C2MP';
 
@@ -117,42 +117,6 @@ export function valueAt(series, t) {
   const y0 = y[i];
   if (a === 0 || i + 1 >= ts.length) return y0;
   return y0 + a * (y[i + 1] - y0);
-}
-
-/**
- * The playback clock: the next time after `dt` seconds of wall time at `speed`, within
- * [start, stop]; with `loop` it wraps to the start, without it stops at the end.
- * @returns {{t: number, ended: boolean}}
- */
-export function advance(t, dt, { speed, start, stop, loop }) {
-  const span = stop - start;
-  let next = t + dt * speed;
-  if (!(span > 0)) return { t: start, ended: !loop };
-  if (next < stop) return { t: Math.max(start, next), ended: false };
-  if (!loop) return { t: stop, ended: true };
-  next = start + ((next - start) % span);
-  return { t: next, ended: false };
-}
-
-/** The playback speeds offered (× real time): 0.1× to 4× everywhere, 10× for long results. */
-export const SPEEDS = [0.1, 0.25, 0.5, 1, 2, 4, 10];
-
-/**
- * The time one step from `t` (`dir` +1 forward, −1 back): the first sample of ascending `times`
- * after t (before it, going back), within [start, stop]; at the last (first) sample it stays.
- * Without samples, a hundredth of the span.
- */
-export function stepTime(times, t, dir, { start, stop }) {
-  const clampT = (x) => Math.max(start, Math.min(stop, x));
-  const n = times?.length ?? 0;
-  if (!n) return clampT(t + (dir * (stop - start)) / 100);
-  const eps = 1e-9 * Math.max(1, Math.abs(stop - start));
-  if (dir > 0) {
-    for (let i = 0; i < n; i++) if (times[i] > t + eps) return clampT(times[i]);
-    return clampT(times[n - 1]);
-  }
-  for (let i = n - 1; i >= 0; i--) if (times[i] < t - eps) return clampT(times[i]);
-  return clampT(times[0]);
 }
 
 function csvField(s) {

@@ -1,6 +1,6 @@
 import test from 'node:test';
 import assert from 'node:assert/strict';
-import { parsePoses, bracket, posesAt, slerp, valueAt, advance, signalsCsv, csvName, stepTime, SPEEDS } from './results-data.js';
+import { parsePoses, bracket, posesAt, slerp, valueAt, signalsCsv, csvName } from './results-data.js';
 
 /** A pose stream as the contract lays it out. */
 function stream(steps, b) {
@@ -81,33 +81,6 @@ test('valueAt interpolates, and is null outside the data', () => {
   assert.equal(valueAt(s, 2), 0);
   assert.equal(valueAt(s, 3), null);
   assert.equal(valueAt({ t: [], y: [] }, 0), null);
-});
-
-test('advance plays at the speed, stops at the end or loops', () => {
-  const o = { speed: 2, start: 1, stop: 3, loop: false };
-  assert.deepEqual(advance(1, 0.25, o), { t: 1.5, ended: false });
-  assert.deepEqual(advance(2.9, 0.25, o), { t: 3, ended: true });
-  const l = advance(2.9, 0.25, { ...o, loop: true });
-  assert.ok(Math.abs(l.t - 1.4) < 1e-12 && !l.ended);
-  assert.deepEqual(advance(1, 0.5, { ...o, speed: 0.1 }), { t: 1.05, ended: false });
-});
-
-test('stepTime goes to the next or previous sample, and stays at the ends', () => {
-  const ts = [0, 0.02, 0.04, 0.04, 0.1];
-  const o = { start: 0, stop: 0.1 };
-  assert.equal(stepTime(ts, 0, 1, o), 0.02);
-  assert.equal(stepTime(ts, 0.03, 1, o), 0.04);
-  assert.equal(stepTime(ts, 0.04, 1, o), 0.1, 'repeated instants are one step');
-  assert.equal(stepTime(ts, 0.1, 1, o), 0.1, 'stays at the last sample');
-  assert.equal(stepTime(ts, 0.1, -1, o), 0.04);
-  assert.equal(stepTime(ts, 0.03, -1, o), 0.02);
-  assert.equal(stepTime(ts, 0, -1, o), 0, 'stays at the first sample');
-  assert.equal(stepTime([], 0.5, 1, { start: 0, stop: 2 }), 0.52, 'a hundredth of the span without samples');
-  assert.equal(stepTime(undefined, 2, 1, { start: 0, stop: 2 }), 2);
-});
-
-test('the speeds offered span 0.1× to 4×', () => {
-  for (const s of [0.1, 0.25, 0.5, 1, 2, 4]) assert.ok(SPEEDS.includes(s), `${s}× offered`);
 });
 
 test('signalsCsv: one time column when shared, merged instants otherwise; names quoted', () => {
