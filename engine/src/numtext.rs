@@ -186,6 +186,11 @@ impl Text {
         }
     }
     fn push_str(&mut self, s: &[u8]) {
+        if self.long.is_empty() && self.len + s.len() <= self.buf.len() {
+            self.buf[self.len..self.len + s.len()].copy_from_slice(s);
+            self.len += s.len();
+            return;
+        }
         for &b in s {
             self.push(b);
         }
@@ -294,10 +299,29 @@ fn lay_out(out: &mut Text, x: f64, single: bool, layout: Layout) {
         out.push_str(if layout == Layout::Debug { b"0.0" } else { b"0" });
         return;
     }
+    let abs = x.abs();
+    // Nearly always `ryu`'s own text is already the standard library's: it differs only where
+    // two shortest candidates tie, for `{:?}` between 1e-5 and 1e-4 (positional there, `1e-5`
+    // in the standard library), and for `{}` in `ryu`'s exponential forms and its `.0`.
+    if abs < 1e38 && !exact_digits(abs).is_some_and(|p| p % 10 == 5) {
+        let mut ryu = ryu::Buffer::new();
+        let t = if single { ryu.format_finite(x as f32) } else { ryu.format_finite(x) };
+        let t = t.strip_prefix('-').unwrap_or(t).as_bytes();
+        match layout {
+            Layout::Debug if !(1e-5..1e-4).contains(&abs) => {
+                out.push_str(t);
+                return;
+            }
+            Layout::Display if !t.contains(&b'e') => {
+                out.push_str(t.strip_suffix(b".0").unwrap_or(t));
+                return;
+            }
+            _ => {}
+        }
+    }
     let digits = shortest(x, single);
     let d = &digits.d[..digits.len];
     let p = digits.point;
-    let abs = x.abs();
     if layout == Layout::Debug && !(1e-4..1e16).contains(&abs) {
         out.push(d[0]);
         if d.len() > 1 {
