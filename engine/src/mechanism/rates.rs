@@ -100,9 +100,8 @@ fn log_rates(phi: &Vector3<f64>, w: &Vector3<f64>, wd: &Vector3<f64>) -> (Vector
     let jinv = |v: &Vector3<f64>| v - 0.5 * phi.cross(v) + c * phi.cross(&phi.cross(v));
     let phid = jinv(w);
     // d/dt J⁻¹ = −½[φ̇] + c'θ̇ [φ]² + c([φ̇][φ] + [φ][φ̇]), c'θ̇ = (c'/θ)(φ·φ̇).
-    let jdot_w = -0.5 * phid.cross(w)
-        + d * phi.dot(&phid) * phi.cross(&phi.cross(w))
-        + c * (phid.cross(&phi.cross(w)) + phi.cross(&phid.cross(w)));
+    let jdot_w =
+        -0.5 * phid.cross(w) + d * phi.dot(&phid) * phi.cross(&phi.cross(w)) + c * (phid.cross(&phi.cross(w)) + phi.cross(&phid.cross(w)));
     (phid, jinv(wd) + jdot_w)
 }
 

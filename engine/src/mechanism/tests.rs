@@ -1,6 +1,6 @@
-//! Unit tests of the mechanism: FK against the CAD, Jacobians against finite differences, loop
-//! assembly, IK, and the inverse dynamics' own consistency (gravity as the gradient of the
-//! potential energy; power balance).
+//! Unit tests of the mechanism: FK against the CAD, Jacobians (geometric, and the closure's
+//! exact rates) against finite differences, loop assembly, IK, and the inverse dynamics' own
+//! consistency (gravity as the gradient of the potential energy; power balance).
 
 use std::path::{Path, PathBuf};
 
@@ -475,7 +475,8 @@ fn closure_form_cases() -> Vec<(String, Mechanism)> {
         let a = analyse_dir(&dir).expect("case analyses");
         let m = Mechanism::from_validated(&a.model, &a.validated).unwrap_or_else(|e| panic!("{name}: {e}"));
         assert!(m.has_dependent(), "{name}");
-        let forms: Vec<String> = m.closures.iter().map(|c| format!("{:?}", c.form).split([' ', '{']).next().unwrap_or("").to_string()).collect();
+        let forms: Vec<String> =
+            m.closures.iter().map(|c| format!("{:?}", c.form).split([' ', '{']).next().unwrap_or("").to_string()).collect();
         println!("{name}: closures {forms:?}, {} couplings", m.couplings.len());
         out.push((name.to_string(), m));
     }
