@@ -387,7 +387,9 @@ fn drives_agree_with_an_independent_python_simulation() {
 ///   9.4e-11 over the first 0.5 s, 4.9e-9 and 1.6e-9 over 1 s, where the mechanisms pass near
 ///   their unstable configurations, which amplify any difference about twofold every 0.05 s).
 ///   With the central differences the closure's rates used before (relative error near 1e-8),
-///   these were 2e-7/4e-7 and 5e-5/2e-5 rad; a sign flip in the velocity-product term fails both.
+///   these were 2e-7/4e-7 and 5e-5/2e-5 rad. Mutations: the velocity-product term's sign flipped
+///   stops our four-bar at 0.45 s (step size underflow); the term scaled by 1 + 1e-6 puts its
+///   coupler 2.7e-8 rad off Pinocchio at 0.3 s.
 #[test]
 fn loops_agree_with_lagrange_multipliers_in_pinocchio() {
     let t_start = std::time::Instant::now();
