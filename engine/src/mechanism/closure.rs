@@ -15,7 +15,7 @@
 
 use nalgebra::{DMatrix, DVector, Vector3};
 
-use super::{element_motion, ClosureForm, ConstraintClass, Kinematics, Mechanism, MechanismError};
+use super::{element_motion, Closure, ClosureForm, ConstraintClass, Kinematics, Mechanism, MechanismError};
 
 /// Closure residuals below this (max-norm, m or rad) count as assembled.
 pub const ASSEMBLY_TOL: f64 = 1e-12;
@@ -31,23 +31,26 @@ pub struct Assembly {
 }
 
 /// Two unit vectors perpendicular to unit `n` and to each other.
-fn perpendiculars(n: &Vector3<f64>) -> (Vector3<f64>, Vector3<f64>) {
+pub(super) fn perpendiculars(n: &Vector3<f64>) -> (Vector3<f64>, Vector3<f64>) {
     let e1 = crate::pipeline::passes::loops::perpendicular(n);
     (e1, n.cross(&e1))
+}
+
+impl Closure {
+    /// Number of this closure's equations.
+    pub(super) fn equations(&self) -> usize {
+        match &self.form {
+            ClosureForm::Plain { .. } => 6,
+            ClosureForm::Planar { .. } => 2,
+            ClosureForm::Constraint { class, locked, .. } => locked.iter().filter(|l| **l).count() + class.rotation_equations(),
+        }
+    }
 }
 
 impl Mechanism {
     /// Number of closure equations.
     pub fn closure_equations(&self) -> usize {
-        self.closures
-            .iter()
-            .map(|c| match &c.form {
-                ClosureForm::Plain { .. } => 6,
-                ClosureForm::Planar { .. } => 2,
-                ClosureForm::Constraint { class, locked, .. } => locked.iter().filter(|l| **l).count() + class.rotation_equations(),
-            })
-            .sum::<usize>()
-            + self.couplings.len()
+        self.closures.iter().map(Closure::equations).sum::<usize>() + self.couplings.len()
     }
 
     /// The closure residuals at tree coordinates `q` and cut coordinates `cut`.
@@ -143,21 +146,14 @@ impl Mechanism {
             if unknowns.is_empty() {
                 break;
             }
-            // Jacobian by central differences.
-            let h = 1e-7;
-            let mut jac = DMatrix::<f64>::zeros(r.len(), unknowns.len());
-            for (c, &u) in unknowns.iter().enumerate() {
-                let x = get(q, cut, u);
-                set(q, cut, u, x + h);
-                eval(q, cut, &mut k, &mut scratch);
-                let plus = scratch.clone();
-                set(q, cut, u, x - h);
-                eval(q, cut, &mut k, &mut scratch);
-                set(q, cut, u, x);
-                for (row, (p, m)) in plus.iter().zip(&scratch).enumerate() {
-                    jac[(row, c)] = (p - m) / (2.0 * h);
-                }
-            }
+            // The exact Jacobian (`rates.rs`), its unknowns' columns.
+            self.forward_into(q, &mut k);
+            let full = self.closure_jacobian_at(&k, cut);
+            let n = q.len();
+            let jac = DMatrix::from_fn(r.len(), unknowns.len(), |row, c| {
+                let (tree, i) = unknowns[c];
+                full[(row, if tree { i } else { n + i })]
+            });
             let svd = jac.svd(true, true);
             let eps = svd.singular_values.max() * 1e-10;
             let step = svd.solve(&(-DVector::from_column_slice(&r)), eps).map_err(|e| MechanismError::Internal(e.to_string()))?;

@@ -14,9 +14,9 @@
 //! - mimic couplings (`q_f = m q_l + offset`) are closure equations too, linear and exact: the
 //!   follower is dependent, its torque lands on its leader (`τ_l += m τ_f`).
 //!
-//! Jacobians are central differences of the residual (step 1e-7; 1e-4 for the second
-//! derivative), which leaves relative errors near 1e-8: far below what sizing needs, checked by
-//! the tests against the energy balance.
+//! The closure's Jacobian `Φ_x` and its velocity-product term `(Φ_x ẋ)_x ẋ` are exact, by
+//! spatial-vector algebra (`rates.rs`), for every closure form; checked against differences of
+//! the residual and of the Jacobian (`tests.rs`) and by the energy balance.
 
 use nalgebra::{DMatrix, DVector, Vector3};
 
@@ -53,49 +53,27 @@ impl Mechanism {
         (driven, follow)
     }
 
-    fn residual_x(&self, x: &[f64]) -> Result<DVector<f64>, MechanismError> {
-        let n = self.coordinates.len();
-        Ok(DVector::from_vec(self.closure_residual(&x[..n], &x[n..])?))
-    }
-
-    /// `∂Φ/∂x` at `x = (q, cut)`: the loops' rows by central differences, the couplings' exact.
+    /// `∂Φ/∂x` at `x = (q, cut)`, exact (`rates.rs`).
     fn closure_jacobian(&self, x: &[f64]) -> Result<DMatrix<f64>, MechanismError> {
-        let h = 1e-7;
-        let mut xp = x.to_vec();
-        let rows = self.closure_equations();
-        let mut jac = DMatrix::zeros(rows, x.len());
-        let first = rows - self.couplings.len();
-        for (r, c) in self.couplings.iter().enumerate() {
-            jac[(first + r, c.follower)] += 1.0;
-            jac[(first + r, c.leader)] -= c.multiplier;
-        }
-        if self.closures.is_empty() {
-            return Ok(jac);
-        }
-        for c in 0..x.len() {
-            xp[c] = x[c] + h;
-            let p = self.residual_x(&xp)?;
-            xp[c] = x[c] - h;
-            let m = self.residual_x(&xp)?;
-            xp[c] = x[c];
-            let col = (p - m) / (2.0 * h);
-            for r in 0..first {
-                jac[(r, c)] = col[r];
-            }
-        }
-        Ok(jac)
+        let n = self.coordinates.len();
+        let k = self.forward(&x[..n])?;
+        Ok(self.closure_jacobian_at(&k, &x[n..]))
     }
 
     /// The closure linearised at `x`: `G = ∂x/∂x_i` (columns: driven coordinates), and `Φ_i` and
     /// the SVD of `Φ_u` for solving the followers' accelerations.
     pub(super) fn linearise(&self, x: &[f64], driven: &[usize], follow: &[usize]) -> Result<Linearised, MechanismError> {
-        let jac = self.closure_jacobian(x)?;
+        self.linearised(&self.closure_jacobian(x)?, driven, follow)
+    }
+
+    /// [`Mechanism::linearise`] from the closure's Jacobian `jac` there.
+    fn linearised(&self, jac: &DMatrix<f64>, driven: &[usize], follow: &[usize]) -> Result<Linearised, MechanismError> {
         let phi_u = jac.select_columns(follow);
         let phi_i = jac.select_columns(driven);
         let svd = phi_u.svd(true, true);
         let eps = svd.singular_values.max() * 1e-10;
         let sol = svd.solve(&(-&phi_i), eps).map_err(|e| MechanismError::Internal(e.to_string()))?;
-        let mut g = DMatrix::zeros(x.len(), driven.len());
+        let mut g = DMatrix::zeros(jac.ncols(), driven.len());
         for (k, &i) in driven.iter().enumerate() {
             g[(i, k)] = 1.0;
         }
@@ -111,6 +89,12 @@ impl Mechanism {
     /// values (others are a starting guess for the position and are overwritten), `state.cut` a
     /// guess of the cut coordinates.
     pub fn close(&self, state: &mut ClosedState) -> Result<(), MechanismError> {
+        self.close_linearised(state).map(|_| ())
+    }
+
+    /// [`Mechanism::close`], returning the closure linearised at the state's position (`None`
+    /// without loops).
+    pub(super) fn close_linearised(&self, state: &mut ClosedState) -> Result<Option<Linearised>, MechanismError> {
         self.check_len("coordinates", &state.q)?;
         self.check_len("speeds", &state.qd)?;
         self.check_len("accelerations", &state.qdd)?;
@@ -119,24 +103,16 @@ impl Mechanism {
             // Mimic couplings only: linear, so speeds and accelerations follow exactly.
             self.propagate_couplings(&mut state.qd, false);
             self.propagate_couplings(&mut state.qdd, false);
-            return Ok(());
+            return Ok(None);
         }
         let n = self.coordinates.len();
         let (driven, follow) = self.x_split();
-        let x: Vec<f64> = state.q.iter().chain(&state.cut).copied().collect();
-        let lin = self.linearise(&x, &driven, &follow)?;
+        let k = self.forward(&state.q)?;
+        let lin = self.linearised(&self.closure_jacobian_at(&k, &state.cut), &driven, &follow)?;
         let qd_i = DVector::from_iterator(driven.len(), driven.iter().map(|&i| state.qd[i]));
         let xd = &lin.g * &qd_i;
-        // (Φ_x ẋ)_x ẋ: the second difference of Φ along ẋ.
-        let h = 1e-4;
-        let shifted = |s: f64| -> Result<DVector<f64>, MechanismError> {
-            let xs: Vec<f64> = x.iter().zip(xd.iter()).map(|(a, b)| a + s * b).collect();
-            self.residual_x(&xs)
-        };
-        let mut curv = (shifted(h)? - shifted(0.0)? * 2.0 + shifted(-h)?) / (h * h);
-        // The couplings are linear: no curvature (the difference would only add rounding).
-        let first = curv.len() - self.couplings.len();
-        curv.rows_mut(first, self.couplings.len()).fill(0.0);
+        // (Φ_x ẋ)_x ẋ, exact (`rates.rs`).
+        let curv = self.closure_curvature(&k, &state.cut, &xd.as_slice()[..n], &xd.as_slice()[n..]);
         let qdd_i = DVector::from_iterator(driven.len(), driven.iter().map(|&i| state.qdd[i]));
         let rhs = -(&lin.phi_i * qdd_i) - curv;
         let xdd_u = lin.svd.solve(&rhs, lin.eps).map_err(|e| MechanismError::Internal(e.to_string()))?;
@@ -146,7 +122,7 @@ impl Mechanism {
                 state.qdd[u] = xdd_u[r];
             }
         }
-        Ok(())
+        Ok(Some(lin))
     }
 
     /// Torques (N·m or N) at the driven coordinates of a closed state, in the order of

@@ -45,7 +45,7 @@ fn skew(v: &Vector3<f64>) -> Matrix3<f64> {
 }
 
 /// Spatial cross product for motion vectors: `v ×ₘ m`.
-fn cross_motion(v: &Vector6<f64>, m: &Vector6<f64>) -> Vector6<f64> {
+pub(super) fn cross_motion(v: &Vector6<f64>, m: &Vector6<f64>) -> Vector6<f64> {
     let (w, vl) = (v.fixed_rows::<3>(0), v.fixed_rows::<3>(3));
     let (mw, mv) = (m.fixed_rows::<3>(0), m.fixed_rows::<3>(3));
     let a = w.cross(&mw);
@@ -230,10 +230,8 @@ impl Mechanism {
         state.qdd.clear();
         state.qdd.resize(n, 0.0);
         // Positions, speeds and the closure's own accelerations a₀ (ẍ_i = 0).
-        self.close(state)?;
-        let (driven, follow) = self.x_split();
-        let x: Vec<f64> = state.q.iter().chain(&state.cut).copied().collect();
-        let g = self.linearise(&x, &driven, &follow)?.g;
+        let g = self.close_linearised(state)?.ok_or_else(|| MechanismError::Internal("loops without a linearisation".into()))?.g;
+        let driven = self.driven();
         let mut bias = vec![0.0; n];
         self.inverse_dynamics(&state.q, &state.qd, &state.qdd, gravity, ws, &mut bias)?;
         let k = driven.len();

@@ -47,6 +47,7 @@ mod forward;
 mod ik;
 mod kinematics;
 mod passive;
+mod rates;
 mod rng;
 
 use std::collections::BTreeMap;

@@ -1,10 +1,10 @@
-//! Unit tests of the mechanism: FK against the CAD, Jacobians against finite differences, loop
-//! assembly, IK, and the inverse dynamics' own consistency (gravity as the gradient of the
-//! potential energy; power balance).
+//! Unit tests of the mechanism: FK against the CAD, Jacobians (geometric, and the closure's
+//! exact rates) against finite differences, loop assembly, IK, and the inverse dynamics' own
+//! consistency (gravity as the gradient of the potential energy; power balance).
 
 use std::path::{Path, PathBuf};
 
-use nalgebra::{Isometry3, Vector3};
+use nalgebra::{DMatrix, DVector, Isometry3, Vector3};
 
 use super::*;
 use crate::pipeline::front::bundle::Bundle;
@@ -463,4 +463,87 @@ fn closed_forward_dynamics_inverts_driven_torques() {
             assert!(r.iter().all(|x| x.abs() < 1e-10), "{name}: residual {r:?}");
         }
     }
+}
+
+/// The closure's forms as the loop cases have them, and every other form put on the four-bar's
+/// cut: each `Joints.Constraints` class (with different locked axes), and a plain cut of a
+/// revolute and a prismatic element, its residual the CAD pose's (so it closes there).
+fn closure_form_cases() -> Vec<(String, Mechanism)> {
+    let mut out = Vec::new();
+    for name in ["fourbar", "crank_rocker_noise", "slider_crank", "sixbar_6digit", "immobile_leg", "urdf_fourbar"] {
+        let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/in").join(name);
+        let a = analyse_dir(&dir).expect("case analyses");
+        let m = Mechanism::from_validated(&a.model, &a.validated).unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert!(m.has_dependent(), "{name}");
+        let forms: Vec<String> =
+            m.closures.iter().map(|c| format!("{:?}", c.form).split([' ', '{']).next().unwrap_or("").to_string()).collect();
+        println!("{name}: closures {forms:?}, {} couplings", m.couplings.len());
+        out.push((name.to_string(), m));
+    }
+    let (_, base) = case("fourbar");
+    let n_axis = Vector3::new(0.3, -0.2, 0.93).normalize();
+    let n_b = crate::pipeline::passes::loops::perpendicular(&n_axis);
+    for (class, locked) in [
+        (ConstraintClass::Spherical, [true, true, true]),
+        (ConstraintClass::Revolute, [true, false, true]),
+        (ConstraintClass::Prismatic, [false, true, true]),
+        (ConstraintClass::Universal, [true, true, false]),
+    ] {
+        let mut m = base.clone();
+        m.closures[0].form = ClosureForm::Constraint { class, locked, n: n_axis, n_b };
+        out.push((format!("fourbar as {class:?}"), m));
+    }
+    let mut m = base.clone();
+    let k = m.forward(&m.q0()).expect("fk");
+    let (a, b) = (m.attachment_pose(&k, &m.closures[0].a), m.attachment_pose(&k, &m.closures[0].b));
+    let elements = vec![(false, Vector3::new(0.0, 0.6, 0.8), 0), (true, Vector3::new(1.0, 0.0, 0.0), 1)];
+    m.closures[0].form = ClosureForm::Plain { elements, residual: a.inverse() * b };
+    let mut c = m.coordinates[0].clone();
+    c.q0 = 0.0;
+    c.independent = false;
+    m.cut_coordinates = vec![c.clone(), Coordinate { kind: CoordKind::Prismatic, ..c }];
+    out.push(("fourbar as a plain revolute + prismatic cut".into(), m));
+    out
+}
+
+/// The exact closure rates (`rates.rs`) against differences, at random states (not closed: the
+/// rates hold anywhere) moved 0.5, 0.05 and 0.002 off the CAD pose (the rotation vectors'
+/// closed form and series): the Jacobian against central differences of the residual (step
+/// 1e-6), and the velocity-product term `(Φ_x ẋ)_x ẋ` against a central difference of the exact
+/// Jacobian along `ẋ`, both within 1e-7 of their largest entry.
+#[test]
+fn closure_rates_match_differences() {
+    let mut rng = XorShift::new(29);
+    let (mut worst_j, mut worst_c) = (0.0f64, 0.0f64);
+    for (name, m) in closure_form_cases() {
+        let (n, nc) = (m.dof(), m.cut_coordinates().len());
+        let x0: Vec<f64> = m.q0().into_iter().chain(m.cut_q0()).collect();
+        let jac = |x: &[f64]| m.closure_jacobian_at(&m.forward(&x[..n]).expect("fk"), &x[n..]);
+        let residual = |x: &[f64]| DVector::from_vec(m.closure_residual(&x[..n], &x[n..]).expect("residual"));
+        for (s, spread) in [0.5, 0.5, 0.05, 0.002].into_iter().enumerate() {
+            let x: Vec<f64> = x0.iter().map(|v| v + rng.range(-spread, spread)).collect();
+            let xd: Vec<f64> = x.iter().map(|_| rng.range(-2.0, 2.0)).collect();
+            let j = jac(&x);
+            let h = 1e-6;
+            let mut fd = DMatrix::zeros(j.nrows(), n + nc);
+            for c in 0..n + nc {
+                let (mut p, mut q) = (x.clone(), x.clone());
+                p[c] += h;
+                q[c] -= h;
+                fd.set_column(c, &((residual(&p) - residual(&q)) / (2.0 * h)));
+            }
+            let scale = j.amax();
+            let err = (&j - &fd).amax() / scale;
+            assert!(err < 1e-7, "{name}, state {s}: Jacobian off by {err:e} of {scale}\nexact {j}\ndifferences {fd}");
+            worst_j = worst_j.max(err);
+            let curv = m.closure_curvature(&m.forward(&x[..n]).expect("fk"), &x[n..], &xd[..n], &xd[n..]);
+            let along = |t: f64| -> Vec<f64> { x.iter().zip(&xd).map(|(a, b)| a + t * b).collect() };
+            let fd_curv = (jac(&along(h)) - jac(&along(-h))) / (2.0 * h) * DVector::from_column_slice(&xd);
+            let scale = curv.amax();
+            let err = (&curv - &fd_curv).amax() / scale;
+            assert!(err < 1e-7, "{name}, state {s}: velocity-product term off by {err:e} of {scale}: exact {curv}, differences {fd_curv}");
+            worst_c = worst_c.max(err);
+        }
+    }
+    println!("closure rates: Jacobians within {worst_j:.1e}, velocity-product terms within {worst_c:.1e} of their largest entry");
 }
