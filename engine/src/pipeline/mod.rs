@@ -197,11 +197,60 @@ impl ConvertError {
 #[derive(Debug)]
 pub struct Output {
     /// Every file of the output zip, paths relative to its root: `<Pkg>/...` and `report.json`.
-    pub files: Vec<(String, Vec<u8>)>,
+    /// The bodies' DXF and STL files come deflated (`FileData::bytes` reads them), so that a
+    /// conversion never holds them all as plain bytes (issue 26, peak memory).
+    pub files: Vec<(String, back::bundle::FileData)>,
     pub report: report::Report,
     /// How many collision shapes were computed and how many came from the shape cache (not in
     /// the report: the output is the same either way).
     pub shapes: back::collision_shapes::ShapeCounts,
+}
+
+/// The DXF and STL file of every body with a shape (`layout.shapes` names them), in body order,
+/// each deflated for the zip as soon as it is written (issue 26, peak memory: the plain bytes of
+/// one body's two files at a time per thread, about 240 bytes per triangle, instead of every
+/// body's; bodies sharing a mesh still get a file each, named after them). Bodies are taken
+/// from a shared counter by up to 4 threads.
+fn mesh_files(model: &Model, layout: &back::modelica::Layout, pkg_name: &str) -> Vec<(String, back::bundle::FileData)> {
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    let dir = format!("{pkg_name}/Resources/Shapes");
+    let todo: Vec<(&str, &ir::Body, &ir::Mesh)> = layout
+        .shapes
+        .iter()
+        .zip(&model.bodies)
+        .filter_map(|(stem, body)| Some((stem.as_deref()?, body, body.mesh.as_deref()?)))
+        .collect();
+    let next = AtomicUsize::new(0);
+    let work = || {
+        let mut deflater = back::bundle::Deflater::default();
+        let mut mine = Vec::new();
+        loop {
+            let i = next.fetch_add(1, Ordering::Relaxed);
+            let Some(&(stem, body, mesh)) = todo.get(i) else { break };
+            let dxf = deflater.file(back::dxf::write(mesh, body.display_rgb(), stem));
+            let stl = deflater.file(back::stl::write_binary(mesh, stem));
+            mine.push((i, dxf, stl));
+        }
+        mine
+    };
+    let threads = std::thread::available_parallelism().map_or(1, |t| t.get()).min(4).min(todo.len()).max(1);
+    let mut written: Vec<Option<(back::bundle::FileData, back::bundle::FileData)>> = (0..todo.len()).map(|_| None).collect();
+    std::thread::scope(|scope| {
+        let helpers: Vec<_> = (0..threads).map(|_| scope.spawn(work)).collect();
+        for h in helpers {
+            for (i, dxf, stl) in h.join().unwrap_or_else(|e| std::panic::resume_unwind(e)) {
+                written[i] = Some((dxf, stl));
+            }
+        }
+    });
+    let mut out = Vec::with_capacity(2 * todo.len());
+    for ((stem, _, _), files) in todo.iter().zip(written) {
+        if let Some((dxf, stl)) = files {
+            out.push((format!("{dir}/{stem}.dxf"), dxf));
+            out.push((format!("{dir}/{stem}.stl"), stl));
+        }
+    }
+    out
 }
 
 /// Front end and passes up to validation: the model as back ends will see it.
@@ -480,18 +529,7 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
         let (model, validated, layout, collision, names, pkg_name, scene) =
             (&a.model, &a.validated, &pkg.layout, &collision, &names, &package_name, &scene);
         let shape_files = opts.write_shapes.then(|| scope.spawn(move || collision.files(pkg_name, names)));
-        let mesh_files = opts.write_shapes.then(|| {
-            scope.spawn(move || {
-                let dir = format!("{pkg_name}/Resources/Shapes");
-                let mut out = Vec::new();
-                for (stem, body) in layout.shapes.iter().zip(&model.bodies) {
-                    let (Some(stem), Some(mesh)) = (stem, &body.mesh) else { continue };
-                    out.push((format!("{dir}/{stem}.dxf"), back::dxf::write(mesh, body.display_rgb(), stem)));
-                    out.push((format!("{dir}/{stem}.stl"), back::stl::write_binary(mesh, stem)));
-                }
-                out
-            })
-        });
+        let mesh_files = opts.write_shapes.then(|| scope.spawn(move || mesh_files(model, layout, pkg_name)));
         let exports = scope.spawn(move || {
             let mut mjcf = back::mjcf::file(model, validated, layout, pkg_name, gravity, opts.write_shapes);
             if !scene.objects.is_empty() {
@@ -500,7 +538,9 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
             let urdf = back::urdf::file(model, validated, layout, pkg_name, opts.write_shapes);
             vec![mjcf, back::urdf::relative_file(&urdf, pkg_name), urdf]
         });
-        let join = |h: std::thread::ScopedJoinHandle<'_, _>| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e));
+        fn join<T>(h: std::thread::ScopedJoinHandle<'_, T>) -> T {
+            h.join().unwrap_or_else(|e| std::panic::resume_unwind(e))
+        }
         let drives = obs.drives(&report, &opts.drives);
         files.extend(back::modelica::mechatronics::components(&package_name));
         if opts.write_shapes {
@@ -568,8 +608,9 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
             *text =
                 back::modelica::doc::package_file(&report, &drives, &back::modelica::provenance(&a.model, VERSION), VERSION).into_bytes();
         }
+        let mut files: Vec<(String, back::bundle::FileData)> = files.into_iter().map(|(p, b)| (p, b.into())).collect();
         if let (Some(shape_files), Some(mesh_files)) = (shape_files, mesh_files) {
-            files.extend(join(shape_files));
+            files.extend(join(shape_files).into_iter().map(|(p, b)| (p, b.into())));
             // Two files (DXF, STL) per body with a shape, a step each as they join the package.
             let meshes = join(mesh_files);
             let n = meshes.len() / 2;
@@ -580,10 +621,10 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
                 files.push(file);
             }
         }
-        files.extend(join(exports));
+        files.extend(join(exports).into_iter().map(|(p, b)| (p, b.into())));
         obs.progress(Stage::Report, 0, 1);
         let json = serde_json::to_vec_pretty(&report).map_err(|e| ConvertError::Options(e.to_string()))?;
-        files.push(("report.json".to_string(), json));
+        files.push(("report.json".to_string(), json.into()));
         Ok(Output { files, report, shapes: collision.counts })
     })
 }

@@ -4,7 +4,7 @@
 //! [`build_package`]: read the zip ([`read_bundle`], with the service's limits), convert it once
 //! with [`pipeline::convert_observed`] (the observer turns the model's drive assignments into
 //! drive plans as soon as the report names the joints, and passes the stages on as
-//! [`BuildStep`]s), add the report's `drives` section, zip the files ([`write_zip`]).
+//! [`BuildStep`]s), add the report's `drives` section, zip the files ([`write_files_observed`]).
 //! Everything here is synchronous and CPU-bound: callers run it off the async runtime (the job
 //! workers, `api::blocking`).
 //!
@@ -13,7 +13,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use cad2mo_engine::pipeline::back::bundle::write_zip_observed;
+use cad2mo_engine::pipeline::back::bundle::write_files_observed;
 use cad2mo_engine::pipeline::back::modelica::mechatronics::DrivePlan;
 use cad2mo_engine::pipeline::front::bundle::{Bundle, BundleError, Limits};
 use cad2mo_engine::pipeline::observe::{Observer, Stage};
@@ -193,10 +193,10 @@ pub fn build_package(
     }
     let report_json = serde_json::to_vec_pretty(&report).map_err(|e| ExportError::Zip(std::io::Error::other(e)))?;
     match files.iter_mut().find(|(path, _)| path == "report.json") {
-        Some((_, bytes)) => *bytes = report_json.clone(),
+        Some((_, bytes)) => *bytes = report_json.clone().into(),
         None => return Err(ExportError::Zip(std::io::Error::other("the conversion wrote no report.json"))),
     }
-    let package_zip = write_zip_observed(&files, &mut |done, total| progress(BuildStep { stage: BuildStage::Package, done, total }))
+    let package_zip = write_files_observed(files, &mut |done, total| progress(BuildStep { stage: BuildStage::Package, done, total }))
         .map_err(ExportError::Zip)?;
     Ok(Built { package_zip, report_json, summary: Summary::of(&out.report), shapes: out.shapes })
 }
