@@ -206,6 +206,34 @@ pub struct Output {
     pub shapes: back::collision_shapes::ShapeCounts,
 }
 
+/// Peak memory of one conversion (`convert` then the zip), estimated from what an upload's check
+/// knows: the bodies' triangles counted after instancing and the bundle's inflated bytes.
+/// Linear: [`PEAK_BASE_BYTES`] + [`PEAK_BYTES_PER_TRIANGLE`] × triangles + 1.5 × bundle bytes
+/// (the bundle is held through the conversion, and distinct meshes are parsed from it). Measured (issue 26, debug build, whole process
+/// `cad2mo convert`, `/usr/bin/time -v`, 2026-11-29), each below its estimate:
+///
+/// | bundle | triangles | bundle bytes | peak | estimate |
+/// |---|---|---|---|---|
+/// | `gen_bundle urdf-shared 5` (one 199,712-triangle OBJ named by 5 links) | 1.0 M | 8.7 MB | 167 MB | 223 MB |
+/// | `urdf-shared 20` | 4.0 M | 8.7 MB | 255 MB | 403 MB |
+/// | `urdf-shared 25` | 5.0 M | 8.7 MB | 268 MB | 463 MB |
+/// | the same grid as 25 distinct OBJ files | 5.0 M | 218 MB | 640 MB | 777 MB |
+/// | the same grid as 25 distinct binary STL files | 5.0 M | 250 MB | 667 MB | 825 MB |
+///
+/// A mesh read once but named by several bodies costs its output files per use (about 23 bytes
+/// per triangle deflated, held until zipped); distinct meshes cost their bundle bytes and their
+/// vertices and triangles besides.
+pub fn peak_memory_estimate(triangles: u64, bundle_bytes: u64) -> u64 {
+    PEAK_BASE_BYTES
+        .saturating_add(triangles.saturating_mul(PEAK_BYTES_PER_TRIANGLE))
+        .saturating_add(bundle_bytes.saturating_add(bundle_bytes / 2))
+}
+
+/// The estimate's fixed part: the process, the libraries, collision shapes and the small files.
+pub const PEAK_BASE_BYTES: u64 = 150_000_000;
+/// The estimate's bytes per triangle (after instancing).
+pub const PEAK_BYTES_PER_TRIANGLE: u64 = 60;
+
 /// The DXF and STL file of every body with a shape (`layout.shapes` names them), in body order,
 /// each deflated for the zip as soon as it is written (issue 26, peak memory: the plain bytes of
 /// one body's two files at a time per thread, about 240 bytes per triangle, instead of every
@@ -627,4 +655,49 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
         files.push(("report.json".to_string(), json.into()));
         Ok(Output { files, report, shapes: collision.counts })
     })
+}
+
+#[cfg(test)]
+mod memory_tests {
+    use super::*;
+
+    /// The bodies' DXF and STL files come deflated (issue 26: a conversion never holds them all
+    /// as plain bytes), inflate to what the writers give, and the zip is the one the plain files
+    /// give: deflating them early changes no byte of a package.
+    #[test]
+    fn shape_files_come_deflated_and_zip_as_plain_ones() {
+        let files = crate::testgen::urdf_shared_obj(3, 40);
+        let bundle = Bundle::from_files("shared", files).expect("bundle");
+        let out = convert(&bundle, &Options { write_shapes: true, ..Options::default() }).expect("converts");
+        let shapes: Vec<_> = out.files.iter().filter(|(p, _)| p.ends_with(".dxf") || p.ends_with(".stl")).collect();
+        assert_eq!(shapes.len(), 6, "a DXF and an STL per link");
+        assert!(shapes.iter().all(|(_, f)| f.is_deflated()), "every shape file deflated");
+        assert!(out.files.iter().filter(|(p, _)| p.ends_with(".mo") || p.ends_with(".json")).all(|(_, f)| !f.is_deflated()));
+        // Each inflates to its writer's bytes.
+        let a = analyse(&bundle, &Options::default()).expect("analyses");
+        let stl = back::stl::write_binary(a.model.bodies[0].mesh.as_deref().expect("a mesh"), "l0");
+        assert_eq!(*out.files.iter().find(|(p, _)| p.ends_with("/l0.stl")).expect("l0.stl").1.bytes(), stl[..]);
+        let plain: Vec<(String, Vec<u8>)> = out.files.iter().map(|(p, f)| (p.clone(), f.bytes().into_owned())).collect();
+        assert_eq!(back::bundle::write_files(out.files).expect("zip"), back::bundle::write_zip(&plain).expect("zip"));
+    }
+
+    /// The estimate is linear: 150 MB, 60 bytes per triangle and 1.5 bytes per bundle byte, and
+    /// above every peak measured (the table of [`peak_memory_estimate`]).
+    #[test]
+    fn peak_memory_estimate_is_linear_and_above_the_measured_peaks() {
+        assert_eq!(peak_memory_estimate(0, 0), 150_000_000);
+        assert_eq!(peak_memory_estimate(5_000_000, 0) - peak_memory_estimate(4_000_000, 0), 60_000_000);
+        assert_eq!(peak_memory_estimate(0, 2_000_000) - peak_memory_estimate(0, 0), 3_000_000);
+        // (triangles, inflated bundle bytes, measured peak)
+        for (t, b, peak) in [
+            (998_560, 8_743_851, 167_000_000),
+            (3_994_240, 8_743_851, 255_000_000),
+            (4_992_800, 8_747_947, 268_000_000),
+            (4_992_800, 218_061_035, 640_000_000),
+            (4_992_800, 249_668_710, 667_000_000),
+        ] {
+            assert!(peak_memory_estimate(t, b) > peak, "{t} triangles, {b} bytes: {} MB", peak_memory_estimate(t, b) / 1_000_000);
+        }
+        assert_eq!(peak_memory_estimate(u64::MAX, u64::MAX), u64::MAX, "saturates");
+    }
 }

@@ -96,6 +96,11 @@ pub struct Checked {
     /// The assembly's name from the XML (the model's default name).
     pub model_name: String,
     pub warnings: usize,
+    /// The bodies' triangles counted after instancing (a mesh once per body that uses it) and the
+    /// bundle's inflated bytes: what the job's memory estimate is made of
+    /// ([`pipeline::peak_memory_estimate`]).
+    pub triangles: u64,
+    pub bundle_bytes: u64,
 }
 
 /// Why a package could not be built.
@@ -128,7 +133,12 @@ pub fn read_bundle(bundle_bytes: &[u8], bundle_name: &str) -> Result<Bundle, Bun
 pub fn check_bundle(bundle_bytes: &[u8], bundle_name: &str, options: &ExportOptions) -> Result<Checked, ExportError> {
     let bundle = read_bundle(bundle_bytes, bundle_name)?;
     let a = pipeline::analyse(&bundle, &options.pipeline())?;
-    Ok(Checked { model_name: a.model.name.clone(), warnings: a.warnings.len() })
+    Ok(Checked {
+        model_name: a.model.name.clone(),
+        warnings: a.warnings.len(),
+        triangles: a.model.bodies.iter().filter_map(|b| b.mesh.as_ref()).map(|m| m.triangles.len() as u64).sum(),
+        bundle_bytes: bundle.total_bytes(),
+    })
 }
 
 /// Where a package build is: a stage of the conversion, or zipping its files.

@@ -25,6 +25,10 @@ pub struct NewVersion<'a> {
     pub bundle_size: i64,
     /// The conversion options, serialised.
     pub options_json: &'a str,
+    /// What the conversion will hold (the upload's check finds it; `None` when unknown): the
+    /// meshes' triangles after instancing and the bundle's inflated bytes (migration 0016).
+    pub triangles: Option<i64>,
+    pub bundle_bytes: Option<i64>,
 }
 
 /// What an upload created.
@@ -116,6 +120,10 @@ pub struct JobSource {
     pub bundle_name: String,
     pub bundle_sha256: String,
     pub options_json: String,
+    /// The version's triangles and inflated bundle bytes (NULL for versions stored before
+    /// migration 0016): the job's memory estimate.
+    pub triangles: Option<i64>,
+    pub bundle_bytes: Option<i64>,
 }
 
 fn new_id() -> String {
@@ -127,8 +135,9 @@ async fn insert_version_and_job(tx: &mut AnyConnection, model_id: &str, version:
     sqlx::query(&sql(
         Engine::of(tx),
         format!(
-            "INSERT INTO versions (model_id, version, created_at, bundle_name, bundle_sha256, bundle_size, options_json, status)
-         VALUES (?, ?, {NOW}, ?, ?, ?, ?, 'queued')"
+            "INSERT INTO versions (model_id, version, created_at, bundle_name, bundle_sha256, bundle_size, options_json, status,
+                                   triangles, bundle_bytes)
+         VALUES (?, ?, {NOW}, ?, ?, ?, ?, 'queued', ?, ?)"
         ),
     ))
     .bind(model_id)
@@ -137,6 +146,8 @@ async fn insert_version_and_job(tx: &mut AnyConnection, model_id: &str, version:
     .bind(v.bundle_sha256)
     .bind(v.bundle_size)
     .bind(v.options_json)
+    .bind(v.triangles)
+    .bind(v.bundle_bytes)
     .execute(&mut *tx)
     .await?;
     insert_job(tx, "convert", model_id, version).await
@@ -440,7 +451,7 @@ pub async fn claim_next_job(pool: &Pool, claimer: &Claimer) -> Result<Option<Cla
     let source: Option<JobSource> = sqlx::query_as(&pool.sql(
         "UPDATE versions SET status = 'running', error_json = NULL
          WHERE model_id = ? AND version = ?
-         RETURNING bundle_name, bundle_sha256, options_json",
+         RETURNING bundle_name, bundle_sha256, options_json, triangles, bundle_bytes",
     ))
     .bind(&model_id)
     .bind(version)
@@ -616,7 +627,7 @@ mod tests {
     }
 
     fn upload() -> NewVersion<'static> {
-        NewVersion { bundle_name: "b.zip", bundle_sha256: "ab", bundle_size: 2, options_json: "{}" }
+        NewVersion { bundle_name: "b.zip", bundle_sha256: "ab", bundle_size: 2, options_json: "{}", triangles: None, bundle_bytes: None }
     }
 
     #[tokio::test]
