@@ -396,6 +396,20 @@ const CLAIMABLE: &str = "(j.status = 'queued' OR (j.status = 'running' AND j.lea
                              AND e.status IN ('queued', 'running')
                              AND (e.version < j.version OR (e.version = j.version AND e.rowid < j.rowid)))";
 
+/// The size of the job [`claim_next_job`] would take now (its version's `triangles` and
+/// `bundle_bytes`, each NULL when unknown), for the worker pool's memory admission; `None` when
+/// nothing is claimable. A read only: the claim may still take another job (another instance
+/// claimed this one meanwhile), and the caller then checks the one it got.
+pub async fn next_job_size(pool: &Pool) -> Result<Option<(Option<i64>, Option<i64>)>, StoreError> {
+    Ok(sqlx::query_as(&pool.sql(format!(
+        "SELECT v.triangles, v.bundle_bytes FROM jobs j
+         LEFT JOIN versions v ON v.model_id = j.model_id AND v.version = j.version
+         WHERE {CLAIMABLE} ORDER BY j.isolate DESC, j.created_at, j.rowid LIMIT 1"
+    )))
+    .fetch_optional(pool)
+    .await?)
+}
+
 /// Takes the oldest claimable job (see [`CLAIMABLE`]), marks it and its version `running` under a
 /// lease of `claimer.lease_secs` held by a new token, counts the attempt (`jobs.attempts`) and
 /// returns it. `None` when nothing is claimable.
