@@ -242,12 +242,8 @@ pub const PEAK_BYTES_PER_TRIANGLE: u64 = 60;
 fn mesh_files(model: &Model, layout: &back::modelica::Layout, pkg_name: &str) -> Vec<(String, back::bundle::FileData)> {
     use std::sync::atomic::{AtomicUsize, Ordering};
     let dir = format!("{pkg_name}/Resources/Shapes");
-    let todo: Vec<(&str, &ir::Body, &ir::Mesh)> = layout
-        .shapes
-        .iter()
-        .zip(&model.bodies)
-        .filter_map(|(stem, body)| Some((stem.as_deref()?, body, body.mesh.as_deref()?)))
-        .collect();
+    let todo: Vec<(&str, &ir::Body, &ir::Mesh)> =
+        layout.shapes.iter().zip(&model.bodies).filter_map(|(stem, body)| Some((stem.as_deref()?, body, body.mesh.as_deref()?))).collect();
     let next = AtomicUsize::new(0);
     let work = || {
         let mut deflater = back::bundle::Deflater::default();

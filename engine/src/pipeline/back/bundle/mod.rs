@@ -17,7 +17,11 @@ pub struct FileData(Data);
 enum Data {
     Plain(Vec<u8>),
     /// Deflated bytes (`method` 8) of `len` plain bytes whose CRC-32 is `crc`.
-    Deflated { len: usize, crc: u32, data: Vec<u8> },
+    Deflated {
+        len: usize,
+        crc: u32,
+        data: Vec<u8>,
+    },
 }
 
 impl FileData {
