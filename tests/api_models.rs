@@ -435,6 +435,8 @@ async fn failed_conversions_keep_their_problem() {
         bundle_sha256: &sha,
         bundle_size: broken.len() as i64,
         options_json: "{}",
+        triangles: None,
+        bundle_bytes: None,
     };
     let created = cad2mo_server::store::models::create_model(&store.pool, "PENDULUM", &version).await.expect("queued");
     let (id, job) = (created.model_id, created.job_id);

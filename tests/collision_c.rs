@@ -526,7 +526,7 @@ fn shape_file_of_a_converted_package_is_read_by_the_c_code() {
     for (p, b) in &out.files {
         let path = pkg_dir.join(p);
         std::fs::create_dir_all(path.parent().expect("folder")).expect("mkdir");
-        std::fs::write(&path, b).expect("write");
+        std::fs::write(&path, b.bytes()).expect("write");
     }
     let pkg = &out.report.package_name;
     let mech = std::fs::read_to_string(pkg_dir.join(pkg).join("Mechatronics.mo")).expect("Mechatronics.mo");

@@ -51,7 +51,9 @@ fn icub_and_legs_diagrams_are_drawn() {
         let out = convert_path(&bundle, &options()).expect("converts");
         let errors = check_package(rel, &out);
         assert!(errors.is_empty(), "{}", errors.join("\n"));
-        let text = |suffix: &str| out.files.iter().find(|(p, _)| p.ends_with(suffix)).map(|(_, b)| String::from_utf8_lossy(b).to_string());
+        let text = |suffix: &str| {
+            out.files.iter().find(|(p, _)| p.ends_with(suffix)).map(|(_, b)| String::from_utf8_lossy(&b.bytes()).to_string())
+        };
         let m = svg::read(&text("/Mechanics.mo").expect("Mechanics"));
         println!("{rel}: {} components, {} lines", m.components.len(), m.lines.len());
         let picture = svg::svg(&[&m], &format!("{}.Mechanics ({rel})", out.report.package_name));
@@ -92,7 +94,7 @@ fn kept_across_versions(case: &Path, xml_name: &str, removed: &str, renamed: &st
             .files
             .iter()
             .find(|(p, _)| p.ends_with("/Mechanics.mo"))
-            .map(|(_, b)| String::from_utf8_lossy(b).to_string())
+            .map(|(_, b)| String::from_utf8_lossy(&b.bytes()).to_string())
             .expect("Mechanics");
         svg::read(&text).components.into_iter().map(|c| (c.name, c.extent)).collect()
     };
@@ -277,7 +279,8 @@ fn routing_work_grows_linearly_with_the_diagram() {
 fn contact_force_wires_stay_beside_their_bodies_on_a_real_model() {
     let Some(fx) = fixtures_dir("contact force wiring on iCub's hand") else { return };
     let out = convert_path(&fx.join("stl/robotology+icub-models-generator/25e4033/left_hand_mk3"), &options()).expect("converts");
-    let text = |suffix: &str| out.files.iter().find(|(p, _)| p.ends_with(suffix)).map(|(_, b)| String::from_utf8_lossy(b).to_string());
+    let text =
+        |suffix: &str| out.files.iter().find(|(p, _)| p.ends_with(suffix)).map(|(_, b)| String::from_utf8_lossy(&b.bytes()).to_string());
     let mechanics = svg::read(&text("/Mechanics.mo").expect("Mechanics"));
     let mechatronics = svg::read(&text("/Mechatronics.mo").expect("Mechatronics"));
     let errors = check_package("left_hand_mk3", &out);

@@ -62,6 +62,7 @@ fn check(name: &str, out: &Output) -> usize {
     let mut problems = Vec::new();
     let mut numbers = 0;
     for (path, bytes) in &out.files {
+        let bytes = &*bytes.bytes();
         if path.ends_with(".mo") {
             let text = std::str::from_utf8(bytes).expect("utf-8");
             problems.extend(bad_words(text, true).into_iter().map(|w| format!("{path}: {w}")));

@@ -36,7 +36,7 @@ fn prepare(name: &str, xml: &str) -> Option<(Mechanism, String)> {
     let out = pipeline::convert(&bundle, &opts).ok()?;
     let (_, mjcf) = out.files.iter().find(|(p, _)| p.ends_with(".mjcf.xml"))?;
     use_package_names(&mut m, &a, &out);
-    Some((m, String::from_utf8(mjcf.clone()).ok()?))
+    Some((m, String::from_utf8(mjcf.bytes().into_owned()).ok()?))
 }
 
 /// Runs the comparison; `Err` with the worst mismatch. `None` when mujoco is unavailable.
@@ -184,7 +184,7 @@ fn mimic_and_degenerate_virtual_links_load_in_mujoco() {
     let bundle = Bundle::from_files("x", [("virt.urdf".to_string(), urdf.as_bytes().to_vec())]).expect("bundle");
     let out = pipeline::convert(&bundle, &Options { write_shapes: false, ..Options::default() }).expect("convert");
     let (_, mjcf) = out.files.iter().find(|(p, _)| p.ends_with(".mjcf.xml")).expect("mjcf");
-    let mjcf = String::from_utf8(mjcf.clone()).expect("utf-8");
+    let mjcf = String::from_utf8(mjcf.bytes().into_owned()).expect("utf-8");
     assert!(mjcf.contains("boundmass=\"1e-9\" boundinertia=\"1e-14\" balanceinertia=\"true\""), "{mjcf}");
     assert!(mjcf.contains("smallest principal moment"), "the floor is stated on the body: {mjcf}");
     assert!(mjcf.contains("<joint name=\"follow_mimic\" joint1=\"follow\" joint2=\"lead\" polycoef=\"0.0 2.0 0 0 0\"/>"), "{mjcf}");
@@ -284,7 +284,7 @@ fn losses_reach_modelica_urdf_and_mjcf() {
     let out = pipeline::convert(&bundle, &Options { write_shapes: false, ..Options::default() }).expect("convert");
     let text = |suffix: &str| {
         let (_, b) = out.files.iter().find(|(p, _)| p.ends_with(suffix)).unwrap_or_else(|| panic!("no {suffix}"));
-        String::from_utf8(b.clone()).expect("utf-8")
+        String::from_utf8(b.bytes().into_owned()).expect("utf-8")
     };
     let mo = text("/Mechanics.mo");
     for want in [
@@ -346,7 +346,7 @@ fn scene_is_in_the_package_and_a_free_pallet_rests_on_the_table_in_mujoco() {
     let out = pipeline::convert(&bundle, &opts).expect("convert");
     let file = |suffix: &str| {
         let (_, b) = out.files.iter().find(|(p, _)| p.ends_with(suffix)).unwrap_or_else(|| panic!("{suffix}"));
-        String::from_utf8(b.clone()).expect("utf-8")
+        String::from_utf8(b.bytes().into_owned()).expect("utf-8")
     };
     let mech = file("/Mechatronics.mo");
     for needle in [
@@ -371,7 +371,7 @@ fn scene_is_in_the_package_and_a_free_pallet_rests_on_the_table_in_mujoco() {
     for (p, b) in &out.files {
         let path = dir.path().join(p);
         std::fs::create_dir_all(path.parent().expect("folder")).expect("mkdir");
-        std::fs::write(&path, b).expect("write");
+        std::fs::write(&path, b.bytes()).expect("write");
     }
     let pkg = dir.path().join(&out.report.package_name);
     match cad2mo_tests::common::msl_check(&pkg) {

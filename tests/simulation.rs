@@ -400,7 +400,7 @@ fn loops_agree_with_lagrange_multipliers_in_pinocchio() {
         let bundle = cad2mo::read_bundle(&dir, &Default::default()).unwrap_or_else(|e| panic!("{name}: {e}"));
         let opts = Options { write_shapes: false, ..Options::default() };
         let out = pipeline::convert(&bundle, &opts).unwrap_or_else(|e| panic!("{name}: {e}"));
-        let urdf = out.files.iter().find(|(p, _)| p.ends_with(".urdf")).map(|(_, b)| String::from_utf8_lossy(b).into_owned());
+        let urdf = out.files.iter().find(|(p, _)| p.ends_with(".urdf")).map(|(_, b)| String::from_utf8_lossy(&b.bytes()).into_owned());
         let urdf = urdf.unwrap_or_else(|| panic!("{name}: no URDF written"));
         let a = pipeline::analyse(&bundle, &opts).expect("analyses as it converted");
         let mut m = Mechanism::from_validated(&a.model, &a.validated).expect("mechanism");

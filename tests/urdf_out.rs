@@ -51,7 +51,7 @@ fn check(label: &str, bundle_path: &Path) -> Option<bool> {
             return Some(false);
         }
     };
-    let urdf = out.files.iter().find(|(p, _)| p.ends_with(".urdf")).map(|(_, b)| String::from_utf8(b.clone()).expect("utf-8"));
+    let urdf = out.files.iter().find(|(p, _)| p.ends_with(".urdf")).map(|(_, b)| String::from_utf8(b.bytes().into_owned()).expect("utf-8"));
     let urdf = urdf.unwrap_or_else(|| panic!("{label}: no .urdf in the output"));
     assert!(!urdf.contains("<mesh"), "{label}: meshes written without shapes");
     // Our tree mechanisms (no loops, free bodies, sphericals): random coordinates too.

@@ -45,7 +45,7 @@ fn vrml_meshes_land_on_the_vrml_geometry() {
                 _ => assert_eq!(rule, "position", "{name}: {node}"),
             }
             let stl_path = format!("{}.stl", body.shape.as_ref().expect("shape").trim_end_matches(".dxf"));
-            let bytes = &out.files.iter().find(|(p, _)| *p == stl_path).expect("stl written").1;
+            let bytes = &*out.files.iter().find(|(p, _)| *p == stl_path).expect("stl written").1.bytes();
             let x = v3(&serde_json::to_value(body.cs1.x_axis_world).expect("x"));
             let y = v3(&serde_json::to_value(body.cs1.y_axis_world).expect("y"));
             let r = Matrix3::from_columns(&[x, y, x.cross(&y)]);

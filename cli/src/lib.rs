@@ -303,7 +303,7 @@ pub fn main() -> ExitCode {
                 }
             };
             print_warnings(&out.report.warnings);
-            let zip = match pipeline::back::bundle::write_zip(&out.files) {
+            let zip = match pipeline::back::bundle::write_files(out.files) {
                 Ok(z) => z,
                 Err(e) => {
                     eprintln!("error: writing zip: {e}");

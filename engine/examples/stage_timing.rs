@@ -43,6 +43,6 @@ fn main() {
     }
     println!("convert      {:8.1} ms", total * 1e3);
     let t = Instant::now();
-    let zip = cad2mo_engine::pipeline::back::bundle::write_zip(&out.files).expect("zip");
+    let zip = cad2mo_engine::pipeline::back::bundle::write_files(out.files.clone()).expect("zip");
     println!("zip          {:8.1} ms ({} files, {} bytes)", t.elapsed().as_secs_f64() * 1e3, out.files.len(), zip.len());
 }

@@ -220,7 +220,8 @@ pub fn convert(data: &[u8]) {
     };
     let mechanics = out.files.iter().find(|(p, _)| p.ends_with("/Mechanics.mo"));
     let (path, bytes) = mechanics.expect("a successful conversion writes Mechanics.mo");
-    let text = std::str::from_utf8(bytes).expect("Mechanics.mo is UTF-8");
+    let bytes = bytes.bytes();
+    let text = std::str::from_utf8(&bytes).expect("Mechanics.mo is UTF-8");
     let bad = non_finite_tokens(text);
     if let Some(&at) = bad.first() {
         let line = text[..at].matches('\n').count() + 1;

@@ -51,7 +51,8 @@ pub async fn start_jobs(
     settings: &Settings,
     live: Option<(String, u16)>,
 ) -> Result<Jobs, crate::store::StoreError> {
-    Jobs::start(store, blobs, settings.workers, live, settings.lease, settings.shape_cache_bytes, crate::api::error::job_problem).await
+    let workers = crate::jobs::Workers { count: settings.workers, memory: settings.job_memory };
+    Jobs::start(store, blobs, workers, live, settings.lease, settings.shape_cache_bytes, crate::api::error::job_problem).await
 }
 
 impl App {

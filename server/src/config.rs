@@ -32,6 +32,11 @@ pub struct ServeArgs {
     /// Conversion worker threads (default: the number of cores).
     #[arg(long, env = "CAD2MO_WORKERS")]
     pub workers: Option<usize>,
+    /// Megabytes (10^6 bytes) the conversions running at once may need together, by their
+    /// estimates (from each version's triangles and bundle size): a job waits until its estimate
+    /// fits beside the running ones; one estimated over it runs alone.
+    #[arg(long, env = "CAD2MO_JOB_MEMORY", default_value_t = crate::jobs::DEFAULT_JOB_MEMORY / 1_000_000)]
+    pub job_memory: u64,
     /// Megabytes of collision shapes kept in memory by mesh content, shared by all conversions
     /// (re-exports and new versions reuse the shapes of unchanged meshes); 0: none kept.
     #[arg(long, env = "CAD2MO_SHAPE_CACHE_MB", default_value_t = 256)]
@@ -111,6 +116,8 @@ pub struct Settings {
     pub data_dir: PathBuf,
     pub max_upload: u64,
     pub workers: usize,
+    /// Bytes the running conversions' memory estimates may add up to (see `crate::jobs::MemoryBudget`).
+    pub job_memory: u64,
     /// Bytes of the process's collision shape cache (see `cad2mo_engine::collision::MemoryShapeCache`).
     pub shape_cache_bytes: usize,
     /// Require tokens even on loopback.
@@ -149,6 +156,7 @@ impl Settings {
             data_dir: a.data_dir,
             max_upload: a.max_upload,
             workers,
+            job_memory: a.job_memory.max(1).saturating_mul(1_000_000),
             shape_cache_bytes: a.shape_cache_mb.saturating_mul(1 << 20),
             force_auth: a.require_auth,
             max_checks: a.max_checks.filter(|n| *n > 0).unwrap_or(workers),
@@ -178,6 +186,7 @@ impl Settings {
             data_dir: dir.to_path_buf(),
             max_upload: 64 * 1024 * 1024,
             workers: 2,
+            job_memory: crate::jobs::DEFAULT_JOB_MEMORY,
             shape_cache_bytes: cad2mo_engine::collision::DEFAULT_CACHE_BYTES,
             force_auth: false,
             max_checks: 2,

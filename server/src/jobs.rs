@@ -34,6 +34,14 @@
 //! lease). A start re-queues only jobs no live instance holds (see
 //! `store::models::requeue_unfinished`).
 //!
+//! Memory (issue 26): each job's peak memory is estimated from its version's size, stored at
+//! upload (`versions.triangles`, `versions.bundle_bytes`; [`cad2mo_engine::pipeline::peak_memory_estimate`]),
+//! and a [`MemoryBudget`] (`--job-memory`) holds the estimates of the running jobs: the dispatcher
+//! claims the next job only once its estimate fits beside theirs, so the workers together stay
+//! within the budget; a job estimated over the whole budget (or of unknown size: versions stored
+//! before migration 0016) takes all of it and runs alone. The budget is fair (first come, first
+//! served): a large job waiting for room is not overtaken by small ones behind it.
+//!
 //! Progress: a running job's latest step (conversion stage, `done` of `total`, an overall
 //! fraction) is kept in memory on a [`ProgressBoard`] shared with the API, which shows it on
 //! `GET /api/jobs/{id}`, and written to `jobs.progress_json` at most every [`PROGRESS_EVERY`]
@@ -53,7 +61,7 @@ use std::time::Duration;
 
 use serde::Serialize;
 
-use tokio::sync::{mpsc, watch, Semaphore};
+use tokio::sync::{mpsc, watch, OwnedSemaphorePermit, Semaphore};
 use tokio::task::{JoinHandle, JoinSet};
 use tracing::Instrument;
 
@@ -76,6 +84,57 @@ pub const MAX_ATTEMPTS: i64 = 10;
 /// How often a running job's progress is written to the database at most (4 a second), so that
 /// every instance can show it.
 const PROGRESS_EVERY: Duration = Duration::from_millis(250);
+
+/// The default `--job-memory`: 1.2 GB for the conversions running at once, so the service
+/// (about 200 MB besides them) stays under 1.5 GB.
+pub const DEFAULT_JOB_MEMORY: u64 = 1_200_000_000;
+
+/// The worker pool's size: conversions at once, and the memory their estimates may add up to.
+#[derive(Clone, Copy, Debug)]
+pub struct Workers {
+    pub count: usize,
+    /// Bytes (`--job-memory`).
+    pub memory: u64,
+}
+
+/// Memory for the running conversions, in whole megabytes (10^6 bytes), handed out first come,
+/// first served (a tokio semaphore is fair): a job holds its estimate's share while it runs.
+#[derive(Clone, Debug)]
+pub struct MemoryBudget {
+    permits: Arc<Semaphore>,
+    total: u32,
+}
+
+impl MemoryBudget {
+    /// A budget of `bytes` (at least 1 MB).
+    pub fn new(bytes: u64) -> MemoryBudget {
+        let total = u32::try_from(bytes.div_ceil(1_000_000)).unwrap_or(u32::MAX).clamp(1, Semaphore::MAX_PERMITS as u32);
+        MemoryBudget { permits: Arc::new(Semaphore::new(total as usize)), total }
+    }
+
+    /// The megabytes a job with this estimate holds: its estimate rounded up, at least 1, at most
+    /// the whole budget (a job over it runs alone); the whole budget when the size is unknown.
+    pub fn share(&self, estimate: Option<u64>) -> u32 {
+        estimate.map_or(self.total, |b| u32::try_from(b.div_ceil(1_000_000)).unwrap_or(u32::MAX).clamp(1, self.total))
+    }
+
+    /// Waits until `share` megabytes are free (after every earlier request), and holds them
+    /// until the permit is dropped. (`None` only were the semaphore closed, which it never is.)
+    pub async fn admit(&self, share: u32) -> Option<OwnedSemaphorePermit> {
+        self.permits.clone().acquire_many_owned(share.clamp(1, self.total)).await.ok()
+    }
+
+    /// Megabytes not held by running jobs.
+    pub fn free(&self) -> usize {
+        self.permits.available_permits()
+    }
+}
+
+/// A job's estimated peak memory from its version's size (`None`: unknown).
+fn estimate(triangles: Option<i64>, bundle_bytes: Option<i64>) -> Option<u64> {
+    let (t, b) = (u64::try_from(triangles?).ok()?, u64::try_from(bundle_bytes?).ok()?);
+    Some(cad2mo_engine::pipeline::peak_memory_estimate(t, b))
+}
 
 /// Why a job failed. Stored with the job as the document `describe` (given to [`Jobs::start`] by
 /// the app: the API's problem+json) makes of it.
@@ -235,14 +294,15 @@ impl ProgressBoard {
 }
 
 impl Jobs {
-    /// Re-queues unfinished jobs, then starts the dispatcher with `workers` workers (at least one).
+    /// Re-queues unfinished jobs, then starts the dispatcher with `workers.count` workers (at
+    /// least one) whose jobs' memory estimates add up to at most `workers.memory` (see the module doc).
     /// Packages get a live view sending to `live` (host, UDP port) when it is given.
     /// Must be called inside a tokio runtime.
     /// A claim holds for `lease` and is renewed every third of it while the job runs.
     pub async fn start(
         store: Store,
         blobs: Blobs,
-        workers: usize,
+        workers: Workers,
         live: Option<(String, u16)>,
         lease: Duration,
         shape_cache_bytes: usize,
@@ -261,7 +321,8 @@ impl Jobs {
         let steps = Arc::new(cad2mo_engine::pipeline::front::mesh::step::MemoryStepCache::default());
         let ctx = Ctx { store: store.clone(), blobs, board: board.clone(), live, claimer, shapes: shapes.clone(), steps, describe };
         let (signal, halted) = watch::channel(false);
-        let dispatcher = tokio::spawn(dispatch(ctx, workers.max(1), rx, halted).instrument(tracing::info_span!("jobs")));
+        let budget = MemoryBudget::new(workers.memory);
+        let dispatcher = tokio::spawn(dispatch(ctx, workers.count.max(1), budget, rx, halted).instrument(tracing::info_span!("jobs")));
         let halt = Arc::new(Halt { signal, dispatcher: Mutex::new(Some(dispatcher)) });
         let jobs = Jobs { wake, board, halt, shapes, store, instance };
         jobs.notify(); // pick up what is already queued
@@ -312,10 +373,10 @@ impl Jobs {
 
 /// Claims queued jobs while permits are free; sleeps until notified when nothing is queued.
 /// Running jobs live in a [`JoinSet`] so that a halt can abandon them.
-async fn dispatch(ctx: Ctx, workers: usize, mut wake: mpsc::Receiver<()>, mut halted: watch::Receiver<bool>) {
+async fn dispatch(ctx: Ctx, workers: usize, budget: MemoryBudget, mut wake: mpsc::Receiver<()>, mut halted: watch::Receiver<bool>) {
     let permits = Arc::new(Semaphore::new(workers));
     let mut running = JoinSet::new();
-    tracing::info!(workers, "job workers started");
+    tracing::info!(workers, memory_mb = budget.total, "job workers started");
     loop {
         while running.try_join_next().is_some() {}
         let permit = tokio::select! {
@@ -338,14 +399,38 @@ async fn dispatch(ctx: Ctx, workers: usize, mut wake: mpsc::Receiver<()>, mut ha
                 break;
             }
         }
+        // Memory: the job the claim would take starts only once its estimate fits beside the
+        // running jobs' (a read first: nothing is claimed while it waits, so the table shows it
+        // queued and a stop meanwhile charges it nothing).
+        let mut memory = None;
+        if let Ok(Some((triangles, bytes))) = models::next_job_size(&ctx.store.pool).await {
+            let share = budget.share(estimate(triangles, bytes));
+            if (share as usize) > budget.free() {
+                tracing::info!(share_mb = share, free_mb = budget.free(), "the next job waits for memory");
+            }
+            tokio::select! {
+                m = budget.admit(share) => memory = m,
+                () = halt_requested(&mut halted) => break,
+            }
+        }
         match models::claim_next_job(&ctx.store.pool, &ctx.claimer).await {
             Ok(Some(job)) => {
                 let span =
                     tracing::info_span!("job", job_id = %job.id, kind = %job.kind, model_id = %job.model_id, version = job.version, alone);
+                // Another job than the one read (queued or claimed elsewhere meanwhile): its own share.
+                let share = budget.share(job.source.as_ref().and_then(|s| estimate(s.triangles, s.bundle_bytes)));
+                if memory.as_ref().is_none_or(|m| m.num_permits() < share as usize) {
+                    drop(memory.take());
+                    tokio::select! {
+                        m = budget.admit(share) => memory = m,
+                        () = halt_requested(&mut halted) => break,
+                    }
+                }
                 let ctx = ctx.clone();
                 running.spawn(
                     async move {
                         run(&ctx, job).await;
+                        drop(memory);
                         drop(permit);
                     }
                     .instrument(span),
@@ -358,6 +443,7 @@ async fn dispatch(ctx: Ctx, workers: usize, mut wake: mpsc::Receiver<()>, mut ha
                 }
             }
             Ok(None) => {
+                drop(memory);
                 drop(permit);
                 // Woken by a new job, or after a short while: a job held back behind an earlier
                 // job of its model becomes claimable when that one finishes, and on PostgreSQL
@@ -378,6 +464,7 @@ async fn dispatch(ctx: Ctx, workers: usize, mut wake: mpsc::Receiver<()>, mut ha
                 }
             }
             Err(e) => {
+                drop(memory);
                 drop(permit);
                 tracing::error!(error = %e, "claiming a job failed; retrying");
                 tokio::select! {
@@ -617,6 +704,84 @@ async fn convert(ctx: &Ctx, job: &ClaimedJob) -> Result<Stored, JobError> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Shares: the estimate in whole MB, at least 1, at most the budget; unknown sizes take it
+    /// all. Two jobs over half the budget never hold it at once; small ones do, beside a large one.
+    #[tokio::test]
+    async fn memory_budget_admits_what_fits() {
+        let budget = MemoryBudget::new(1_000_000_000);
+        assert_eq!((budget.share(Some(600_000_001)), budget.share(Some(0)), budget.share(Some(5_000_000_000))), (601, 1, 1000));
+        assert_eq!(budget.share(None), 1000, "unknown size: the whole budget");
+        let soon = Duration::from_millis(50);
+        let large = budget.admit(600).await.expect("admitted");
+        assert!(tokio::time::timeout(soon, budget.admit(600)).await.is_err(), "a second large job waits");
+        let small = [budget.admit(200).await.expect("a"), budget.admit(200).await.expect("b")];
+        assert_eq!(budget.free(), 0);
+        drop(large);
+        let second = tokio::time::timeout(soon, budget.admit(600)).await.expect("admitted once the first ended").expect("permit");
+        drop((second, small));
+        assert_eq!(budget.free(), 1000);
+        // First come, first served: a small request behind a waiting large one waits too.
+        let held = budget.admit(500).await.expect("held");
+        let waiting = tokio::spawn({
+            let b = budget.clone();
+            async move { b.admit(600).await.map(|p| p.num_permits()) }
+        });
+        tokio::time::sleep(Duration::from_millis(20)).await;
+        assert!(tokio::time::timeout(soon, budget.admit(100)).await.is_err(), "not overtaken");
+        drop(held);
+        assert_eq!(waiting.await.expect("joined"), Some(600));
+    }
+
+    /// The dispatcher's admission (two workers, a 1 GB budget): two jobs estimated at 690 MB run
+    /// one after the other, and a 150 MB job runs beside the second.
+    #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+    async fn large_jobs_run_apart_and_small_ones_beside_them() {
+        let dir = tempfile::tempdir().expect("tempdir");
+        let store = Store::open(&format!("sqlite://{}?mode=rwc", dir.path().join("t.db").display())).await.expect("store");
+        let blobs = Blobs::new(dir.path()).expect("blobs");
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/in/pendulum");
+        let files: Vec<(String, Vec<u8>)> = ["PENDULUM.xml", "meshes/LINK_prt.stl"]
+            .iter()
+            .map(|f| (f.to_string(), std::fs::read(root.join(f)).expect("pendulum")))
+            .collect();
+        let zip = cad2mo_engine::pipeline::back::bundle::write_zip(&files).expect("zip");
+        let sha = blobs.put(&zip).expect("put");
+        // 150 MB + 60 B × 9 M triangles = 690 MB; 150 MB + 60 B × 1,000 = 150.06 MB.
+        let mut ids = Vec::new();
+        for (name, triangles) in [("large1", 9_000_000), ("large2", 9_000_000), ("small1", 1_000), ("small2", 1_000)] {
+            let v = models::NewVersion {
+                bundle_name: "p.zip",
+                bundle_sha256: &sha,
+                bundle_size: zip.len() as i64,
+                options_json: "{}",
+                triangles: Some(triangles),
+                bundle_bytes: Some(0),
+            };
+            ids.push(models::create_model(&store.pool, name, &v).await.expect("queued").job_id);
+        }
+        let workers = Workers { count: 2, memory: 1_000_000_000 };
+        let describe: DescribeFailure = |e| serde_json::json!({ "detail": e.to_string() });
+        let jobs = Jobs::start(store.clone(), blobs, workers, None, Duration::from_secs(30), 0, describe).await.expect("start");
+        let deadline = std::time::Instant::now() + Duration::from_secs(120);
+        let rows = loop {
+            let mut rows = Vec::new();
+            for id in &ids {
+                rows.push(models::get_job(&store.pool, id).await.expect("read").expect("job"));
+            }
+            if rows.iter().all(|r| r.status == "succeeded" || r.status == "failed") {
+                break rows;
+            }
+            assert!(std::time::Instant::now() < deadline, "jobs still running: {rows:?}");
+            tokio::time::sleep(Duration::from_millis(50)).await;
+        };
+        jobs.halt().await;
+        assert!(rows.iter().all(|r| r.status == "succeeded"), "{rows:?}");
+        let span = |i: usize| (rows[i].started_at.clone().expect("started"), rows[i].finished_at.clone().expect("finished"));
+        let (l1, l2, s1) = (span(0), span(1), span(2));
+        assert!(l2.0 >= l1.1, "the large jobs overlapped: {l1:?} {l2:?}");
+        assert!(s1.0 < l2.1 && l2.0 < s1.1, "the small job did not run beside the second large one: {l2:?} {s1:?}");
+    }
 
     #[test]
     fn stage_table_follows_the_pipeline_stages() {

@@ -89,13 +89,16 @@ pub fn write_output(out: &Output, dir: &Path) {
     for (path, bytes) in &out.files {
         let p = dir.join(path);
         std::fs::create_dir_all(p.parent().expect("file has a folder")).expect("create folder");
-        std::fs::write(&p, bytes).expect("write file");
+        std::fs::write(&p, bytes.bytes()).expect("write file");
     }
 }
 
-/// The text of one output file.
+/// The text of one output file (text files are held plain; the deflated shape files are not text).
 pub fn file_text<'a>(out: &'a Output, suffix: &str) -> Option<&'a str> {
-    out.files.iter().find(|(p, _)| p.ends_with(suffix)).and_then(|(_, b)| std::str::from_utf8(b).ok())
+    out.files.iter().find(|(p, _)| p.ends_with(suffix)).and_then(|(_, b)| match b.bytes() {
+        std::borrow::Cow::Borrowed(b) => std::str::from_utf8(b).ok(),
+        std::borrow::Cow::Owned(_) => None,
+    })
 }
 
 /// Runs `../shared/tools/msl-check` on `dir`. `None` (with a notice) when the tool is absent;

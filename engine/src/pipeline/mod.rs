@@ -197,11 +197,84 @@ impl ConvertError {
 #[derive(Debug)]
 pub struct Output {
     /// Every file of the output zip, paths relative to its root: `<Pkg>/...` and `report.json`.
-    pub files: Vec<(String, Vec<u8>)>,
+    /// The bodies' DXF and STL files come deflated (`FileData::bytes` reads them), so that a
+    /// conversion never holds them all as plain bytes (issue 26, peak memory).
+    pub files: Vec<(String, back::bundle::FileData)>,
     pub report: report::Report,
     /// How many collision shapes were computed and how many came from the shape cache (not in
     /// the report: the output is the same either way).
     pub shapes: back::collision_shapes::ShapeCounts,
+}
+
+/// Peak memory of one conversion (`convert` then the zip), estimated from what an upload's check
+/// knows: the bodies' triangles counted after instancing and the bundle's inflated bytes.
+/// Linear: [`PEAK_BASE_BYTES`] + [`PEAK_BYTES_PER_TRIANGLE`] × triangles + 1.5 × bundle bytes
+/// (the bundle is held through the conversion, and distinct meshes are parsed from it). Measured (issue 26, debug build, whole process
+/// `cad2mo convert`, `/usr/bin/time -v`, 2026-11-29), each below its estimate:
+///
+/// | bundle | triangles | bundle bytes | peak | estimate |
+/// |---|---|---|---|---|
+/// | `gen_bundle urdf-shared 5` (one 199,712-triangle OBJ named by 5 links) | 1.0 M | 8.7 MB | 167 MB | 223 MB |
+/// | `urdf-shared 20` | 4.0 M | 8.7 MB | 255 MB | 403 MB |
+/// | `urdf-shared 25` | 5.0 M | 8.7 MB | 268 MB | 463 MB |
+/// | the same grid as 25 distinct OBJ files | 5.0 M | 218 MB | 640 MB | 777 MB |
+/// | the same grid as 25 distinct binary STL files | 5.0 M | 250 MB | 667 MB | 825 MB |
+///
+/// A mesh read once but named by several bodies costs its output files per use (about 23 bytes
+/// per triangle deflated, held until zipped); distinct meshes cost their bundle bytes and their
+/// vertices and triangles besides.
+pub fn peak_memory_estimate(triangles: u64, bundle_bytes: u64) -> u64 {
+    PEAK_BASE_BYTES
+        .saturating_add(triangles.saturating_mul(PEAK_BYTES_PER_TRIANGLE))
+        .saturating_add(bundle_bytes.saturating_add(bundle_bytes / 2))
+}
+
+/// The estimate's fixed part: the process, the libraries, collision shapes and the small files.
+pub const PEAK_BASE_BYTES: u64 = 150_000_000;
+/// The estimate's bytes per triangle (after instancing).
+pub const PEAK_BYTES_PER_TRIANGLE: u64 = 60;
+
+/// The DXF and STL file of every body with a shape (`layout.shapes` names them), in body order,
+/// each deflated for the zip as soon as it is written (issue 26, peak memory: the plain bytes of
+/// one body's two files at a time per thread, about 240 bytes per triangle, instead of every
+/// body's; bodies sharing a mesh still get a file each, named after them). Bodies are taken
+/// from a shared counter by up to 4 threads.
+fn mesh_files(model: &Model, layout: &back::modelica::Layout, pkg_name: &str) -> Vec<(String, back::bundle::FileData)> {
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    let dir = format!("{pkg_name}/Resources/Shapes");
+    let todo: Vec<(&str, &ir::Body, &ir::Mesh)> =
+        layout.shapes.iter().zip(&model.bodies).filter_map(|(stem, body)| Some((stem.as_deref()?, body, body.mesh.as_deref()?))).collect();
+    let next = AtomicUsize::new(0);
+    let work = || {
+        let mut deflater = back::bundle::Deflater::default();
+        let mut mine = Vec::new();
+        loop {
+            let i = next.fetch_add(1, Ordering::Relaxed);
+            let Some(&(stem, body, mesh)) = todo.get(i) else { break };
+            let dxf = deflater.file(back::dxf::write(mesh, body.display_rgb(), stem));
+            let stl = deflater.file(back::stl::write_binary(mesh, stem));
+            mine.push((i, dxf, stl));
+        }
+        mine
+    };
+    let threads = std::thread::available_parallelism().map_or(1, |t| t.get()).min(4).min(todo.len()).max(1);
+    let mut written: Vec<Option<(back::bundle::FileData, back::bundle::FileData)>> = (0..todo.len()).map(|_| None).collect();
+    std::thread::scope(|scope| {
+        let helpers: Vec<_> = (0..threads).map(|_| scope.spawn(work)).collect();
+        for h in helpers {
+            for (i, dxf, stl) in h.join().unwrap_or_else(|e| std::panic::resume_unwind(e)) {
+                written[i] = Some((dxf, stl));
+            }
+        }
+    });
+    let mut out = Vec::with_capacity(2 * todo.len());
+    for ((stem, _, _), files) in todo.iter().zip(written) {
+        if let Some((dxf, stl)) = files {
+            out.push((format!("{dir}/{stem}.dxf"), dxf));
+            out.push((format!("{dir}/{stem}.stl"), stl));
+        }
+    }
+    out
 }
 
 /// Front end and passes up to validation: the model as back ends will see it.
@@ -480,18 +553,7 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
         let (model, validated, layout, collision, names, pkg_name, scene) =
             (&a.model, &a.validated, &pkg.layout, &collision, &names, &package_name, &scene);
         let shape_files = opts.write_shapes.then(|| scope.spawn(move || collision.files(pkg_name, names)));
-        let mesh_files = opts.write_shapes.then(|| {
-            scope.spawn(move || {
-                let dir = format!("{pkg_name}/Resources/Shapes");
-                let mut out = Vec::new();
-                for (stem, body) in layout.shapes.iter().zip(&model.bodies) {
-                    let (Some(stem), Some(mesh)) = (stem, &body.mesh) else { continue };
-                    out.push((format!("{dir}/{stem}.dxf"), back::dxf::write(mesh, body.display_rgb(), stem)));
-                    out.push((format!("{dir}/{stem}.stl"), back::stl::write_binary(mesh, stem)));
-                }
-                out
-            })
-        });
+        let mesh_files = opts.write_shapes.then(|| scope.spawn(move || mesh_files(model, layout, pkg_name)));
         let exports = scope.spawn(move || {
             let mut mjcf = back::mjcf::file(model, validated, layout, pkg_name, gravity, opts.write_shapes);
             if !scene.objects.is_empty() {
@@ -500,7 +562,9 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
             let urdf = back::urdf::file(model, validated, layout, pkg_name, opts.write_shapes);
             vec![mjcf, back::urdf::relative_file(&urdf, pkg_name), urdf]
         });
-        let join = |h: std::thread::ScopedJoinHandle<'_, _>| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e));
+        fn join<T>(h: std::thread::ScopedJoinHandle<'_, T>) -> T {
+            h.join().unwrap_or_else(|e| std::panic::resume_unwind(e))
+        }
         let drives = obs.drives(&report, &opts.drives);
         files.extend(back::modelica::mechatronics::components(&package_name));
         if opts.write_shapes {
@@ -568,8 +632,9 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
             *text =
                 back::modelica::doc::package_file(&report, &drives, &back::modelica::provenance(&a.model, VERSION), VERSION).into_bytes();
         }
+        let mut files: Vec<(String, back::bundle::FileData)> = files.into_iter().map(|(p, b)| (p, b.into())).collect();
         if let (Some(shape_files), Some(mesh_files)) = (shape_files, mesh_files) {
-            files.extend(join(shape_files));
+            files.extend(join(shape_files).into_iter().map(|(p, b)| (p, b.into())));
             // Two files (DXF, STL) per body with a shape, a step each as they join the package.
             let meshes = join(mesh_files);
             let n = meshes.len() / 2;
@@ -580,10 +645,55 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
                 files.push(file);
             }
         }
-        files.extend(join(exports));
+        files.extend(join(exports).into_iter().map(|(p, b)| (p, b.into())));
         obs.progress(Stage::Report, 0, 1);
         let json = serde_json::to_vec_pretty(&report).map_err(|e| ConvertError::Options(e.to_string()))?;
-        files.push(("report.json".to_string(), json));
+        files.push(("report.json".to_string(), json.into()));
         Ok(Output { files, report, shapes: collision.counts })
     })
+}
+
+#[cfg(test)]
+mod memory_tests {
+    use super::*;
+
+    /// The bodies' DXF and STL files come deflated (issue 26: a conversion never holds them all
+    /// as plain bytes), inflate to what the writers give, and the zip is the one the plain files
+    /// give: deflating them early changes no byte of a package.
+    #[test]
+    fn shape_files_come_deflated_and_zip_as_plain_ones() {
+        let files = crate::testgen::urdf_shared_obj(3, 40);
+        let bundle = Bundle::from_files("shared", files).expect("bundle");
+        let out = convert(&bundle, &Options { write_shapes: true, ..Options::default() }).expect("converts");
+        let shapes: Vec<_> = out.files.iter().filter(|(p, _)| p.ends_with(".dxf") || p.ends_with(".stl")).collect();
+        assert_eq!(shapes.len(), 6, "a DXF and an STL per link");
+        assert!(shapes.iter().all(|(_, f)| f.is_deflated()), "every shape file deflated");
+        assert!(out.files.iter().filter(|(p, _)| p.ends_with(".mo") || p.ends_with(".json")).all(|(_, f)| !f.is_deflated()));
+        // Each inflates to its writer's bytes.
+        let a = analyse(&bundle, &Options::default()).expect("analyses");
+        let stl = back::stl::write_binary(a.model.bodies[0].mesh.as_deref().expect("a mesh"), "l0");
+        assert_eq!(*out.files.iter().find(|(p, _)| p.ends_with("/l0.stl")).expect("l0.stl").1.bytes(), stl[..]);
+        let plain: Vec<(String, Vec<u8>)> = out.files.iter().map(|(p, f)| (p.clone(), f.bytes().into_owned())).collect();
+        assert_eq!(back::bundle::write_files(out.files).expect("zip"), back::bundle::write_zip(&plain).expect("zip"));
+    }
+
+    /// The estimate is linear: 150 MB, 60 bytes per triangle and 1.5 bytes per bundle byte, and
+    /// above every peak measured (the table of [`peak_memory_estimate`]).
+    #[test]
+    fn peak_memory_estimate_is_linear_and_above_the_measured_peaks() {
+        assert_eq!(peak_memory_estimate(0, 0), 150_000_000);
+        assert_eq!(peak_memory_estimate(5_000_000, 0) - peak_memory_estimate(4_000_000, 0), 60_000_000);
+        assert_eq!(peak_memory_estimate(0, 2_000_000) - peak_memory_estimate(0, 0), 3_000_000);
+        // (triangles, inflated bundle bytes, measured peak)
+        for (t, b, peak) in [
+            (998_560, 8_743_851, 167_000_000),
+            (3_994_240, 8_743_851, 255_000_000),
+            (4_992_800, 8_747_947, 268_000_000),
+            (4_992_800, 218_061_035, 640_000_000),
+            (4_992_800, 249_668_710, 667_000_000),
+        ] {
+            assert!(peak_memory_estimate(t, b) > peak, "{t} triangles, {b} bytes: {} MB", peak_memory_estimate(t, b) / 1_000_000);
+        }
+        assert_eq!(peak_memory_estimate(u64::MAX, u64::MAX), u64::MAX, "saturates");
+    }
 }

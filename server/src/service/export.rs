@@ -4,7 +4,7 @@
 //! [`build_package`]: read the zip ([`read_bundle`], with the service's limits), convert it once
 //! with [`pipeline::convert_observed`] (the observer turns the model's drive assignments into
 //! drive plans as soon as the report names the joints, and passes the stages on as
-//! [`BuildStep`]s), add the report's `drives` section, zip the files ([`write_zip`]).
+//! [`BuildStep`]s), add the report's `drives` section, zip the files ([`write_files_observed`]).
 //! Everything here is synchronous and CPU-bound: callers run it off the async runtime (the job
 //! workers, `api::blocking`).
 //!
@@ -13,7 +13,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use cad2mo_engine::pipeline::back::bundle::write_zip_observed;
+use cad2mo_engine::pipeline::back::bundle::write_files_observed;
 use cad2mo_engine::pipeline::back::modelica::mechatronics::DrivePlan;
 use cad2mo_engine::pipeline::front::bundle::{Bundle, BundleError, Limits};
 use cad2mo_engine::pipeline::observe::{Observer, Stage};
@@ -96,6 +96,11 @@ pub struct Checked {
     /// The assembly's name from the XML (the model's default name).
     pub model_name: String,
     pub warnings: usize,
+    /// The bodies' triangles counted after instancing (a mesh once per body that uses it) and the
+    /// bundle's inflated bytes: what the job's memory estimate is made of
+    /// ([`pipeline::peak_memory_estimate`]).
+    pub triangles: u64,
+    pub bundle_bytes: u64,
 }
 
 /// Why a package could not be built.
@@ -128,7 +133,12 @@ pub fn read_bundle(bundle_bytes: &[u8], bundle_name: &str) -> Result<Bundle, Bun
 pub fn check_bundle(bundle_bytes: &[u8], bundle_name: &str, options: &ExportOptions) -> Result<Checked, ExportError> {
     let bundle = read_bundle(bundle_bytes, bundle_name)?;
     let a = pipeline::analyse(&bundle, &options.pipeline())?;
-    Ok(Checked { model_name: a.model.name.clone(), warnings: a.warnings.len() })
+    Ok(Checked {
+        model_name: a.model.name.clone(),
+        warnings: a.warnings.len(),
+        triangles: a.model.bodies.iter().filter_map(|b| b.mesh.as_ref()).map(|m| m.triangles.len() as u64).sum(),
+        bundle_bytes: bundle.total_bytes(),
+    })
 }
 
 /// Where a package build is: a stage of the conversion, or zipping its files.
@@ -193,10 +203,10 @@ pub fn build_package(
     }
     let report_json = serde_json::to_vec_pretty(&report).map_err(|e| ExportError::Zip(std::io::Error::other(e)))?;
     match files.iter_mut().find(|(path, _)| path == "report.json") {
-        Some((_, bytes)) => *bytes = report_json.clone(),
+        Some((_, bytes)) => *bytes = report_json.clone().into(),
         None => return Err(ExportError::Zip(std::io::Error::other("the conversion wrote no report.json"))),
     }
-    let package_zip = write_zip_observed(&files, &mut |done, total| progress(BuildStep { stage: BuildStage::Package, done, total }))
+    let package_zip = write_files_observed(files, &mut |done, total| progress(BuildStep { stage: BuildStage::Package, done, total }))
         .map_err(ExportError::Zip)?;
     Ok(Built { package_zip, report_json, summary: Summary::of(&out.report), shapes: out.shapes })
 }

@@ -72,10 +72,10 @@ pub struct Upload {
     pub options: ExportOptions,
 }
 
-/// Checks the bundle and stores its blob. Returns the upload, its blob hash and the model name
-/// the bundle gives. The permit moves into the blocking task, so a client that hangs up does
+/// Checks the bundle and stores its blob. Returns the upload, its blob hash and what the check
+/// found (the model name the bundle gives, its size for the job's memory estimate). The permit moves into the blocking task, so a client that hangs up does
 /// not free it before its check has really finished.
-async fn check_and_store(ctx: Ctx<'_>, upload: Upload) -> Result<(Upload, String, String), ModelError> {
+async fn check_and_store(ctx: Ctx<'_>, upload: Upload) -> Result<(Upload, String, export::Checked), ModelError> {
     let permit = match tokio::time::timeout(ctx.checks.wait, ctx.checks.permits.clone().acquire_owned()).await {
         Ok(Ok(permit)) => permit,
         Ok(Err(_)) | Err(_) => {
@@ -88,17 +88,19 @@ async fn check_and_store(ctx: Ctx<'_>, upload: Upload) -> Result<(Upload, String
         let _permit = permit;
         let checked = export::check_bundle(&upload.bundle, &upload.bundle_name, &upload.options)?;
         let sha = blobs.put(&upload.bundle).map_err(|e| anyhow::Error::new(e).context("storing the bundle"))?;
-        Ok((upload, sha, checked.model_name))
+        Ok((upload, sha, checked))
     })
     .await
 }
 
-fn new_version<'u>(upload: &'u Upload, sha: &'u str, options: &'u str) -> NewVersion<'u> {
+fn new_version<'u>(upload: &'u Upload, sha: &'u str, options: &'u str, checked: &export::Checked) -> NewVersion<'u> {
     NewVersion {
         bundle_name: &upload.bundle_name,
         bundle_sha256: sha,
         bundle_size: i64::try_from(upload.bundle.len()).unwrap_or(i64::MAX),
         options_json: options,
+        triangles: Some(i64::try_from(checked.triangles).unwrap_or(i64::MAX)),
+        bundle_bytes: Some(i64::try_from(checked.bundle_bytes).unwrap_or(i64::MAX)),
     }
 }
 
@@ -108,10 +110,10 @@ fn options_json(o: &ExportOptions) -> Result<String, ModelError> {
 
 /// A new model from its first upload (named `upload.name`, else as the bundle's assembly).
 pub async fn create_model(ctx: Ctx<'_>, upload: Upload) -> Result<Created, ModelError> {
-    let (upload, sha, model_name) = check_and_store(ctx, upload).await?;
-    let name = upload.name.clone().unwrap_or(model_name);
+    let (upload, sha, checked) = check_and_store(ctx, upload).await?;
+    let name = upload.name.clone().unwrap_or_else(|| checked.model_name.clone());
     let options = options_json(&upload.options)?;
-    let created = db::create_model(&ctx.store.pool, &name, &new_version(&upload, &sha, &options)).await?;
+    let created = db::create_model(&ctx.store.pool, &name, &new_version(&upload, &sha, &options, &checked)).await?;
     ctx.jobs.notify();
     Ok(created)
 }
@@ -119,9 +121,9 @@ pub async fn create_model(ctx: Ctx<'_>, upload: Upload) -> Result<Created, Model
 /// A new version of model `id` (refused before the analysis when the model is unknown).
 pub async fn create_version(ctx: Ctx<'_>, id: &str, upload: Upload) -> Result<Created, ModelError> {
     model(ctx.store, id).await?;
-    let (upload, sha, _) = check_and_store(ctx, upload).await?;
+    let (upload, sha, checked) = check_and_store(ctx, upload).await?;
     let options = options_json(&upload.options)?;
-    let created = db::create_version(&ctx.store.pool, id, &new_version(&upload, &sha, &options))
+    let created = db::create_version(&ctx.store.pool, id, &new_version(&upload, &sha, &options, &checked))
         .await?
         .ok_or_else(|| ModelError::NotFound(format!("model {id}")))?;
     ctx.jobs.notify();

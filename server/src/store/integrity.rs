@@ -92,7 +92,7 @@ mod tests {
         let blobs = Blobs::new(dir.path()).unwrap();
         let bundle = blobs.put(b"bundle bytes").unwrap();
         fn v(sha: &str) -> NewVersion<'_> {
-            NewVersion { bundle_name: "b.zip", bundle_sha256: sha, bundle_size: 1, options_json: "{}" }
+            NewVersion { bundle_name: "b.zip", bundle_sha256: sha, bundle_size: 1, options_json: "{}", triangles: None, bundle_bytes: None }
         }
         models::create_model(&store.pool, "m", &v(&bundle)).await.unwrap();
         let r = check(&store, &blobs).await.unwrap();

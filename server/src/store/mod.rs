@@ -298,7 +298,7 @@ mod tests {
     }
 
     fn upload() -> NewVersion<'static> {
-        NewVersion { bundle_name: "b.zip", bundle_sha256: "ab", bundle_size: 2, options_json: "{}" }
+        NewVersion { bundle_name: "b.zip", bundle_sha256: "ab", bundle_size: 2, options_json: "{}", triangles: None, bundle_bytes: None }
     }
 
     fn claimer(instance: &str, lease_secs: f64) -> Claimer {

@@ -25,6 +25,10 @@ pub struct NewVersion<'a> {
     pub bundle_size: i64,
     /// The conversion options, serialised.
     pub options_json: &'a str,
+    /// What the conversion will hold (the upload's check finds it; `None` when unknown): the
+    /// meshes' triangles after instancing and the bundle's inflated bytes (migration 0016).
+    pub triangles: Option<i64>,
+    pub bundle_bytes: Option<i64>,
 }
 
 /// What an upload created.
@@ -116,6 +120,10 @@ pub struct JobSource {
     pub bundle_name: String,
     pub bundle_sha256: String,
     pub options_json: String,
+    /// The version's triangles and inflated bundle bytes (NULL for versions stored before
+    /// migration 0016): the job's memory estimate.
+    pub triangles: Option<i64>,
+    pub bundle_bytes: Option<i64>,
 }
 
 fn new_id() -> String {
@@ -127,8 +135,9 @@ async fn insert_version_and_job(tx: &mut AnyConnection, model_id: &str, version:
     sqlx::query(&sql(
         Engine::of(tx),
         format!(
-            "INSERT INTO versions (model_id, version, created_at, bundle_name, bundle_sha256, bundle_size, options_json, status)
-         VALUES (?, ?, {NOW}, ?, ?, ?, ?, 'queued')"
+            "INSERT INTO versions (model_id, version, created_at, bundle_name, bundle_sha256, bundle_size, options_json, status,
+                                   triangles, bundle_bytes)
+         VALUES (?, ?, {NOW}, ?, ?, ?, ?, 'queued', ?, ?)"
         ),
     ))
     .bind(model_id)
@@ -137,6 +146,8 @@ async fn insert_version_and_job(tx: &mut AnyConnection, model_id: &str, version:
     .bind(v.bundle_sha256)
     .bind(v.bundle_size)
     .bind(v.options_json)
+    .bind(v.triangles)
+    .bind(v.bundle_bytes)
     .execute(&mut *tx)
     .await?;
     insert_job(tx, "convert", model_id, version).await
@@ -385,6 +396,20 @@ const CLAIMABLE: &str = "(j.status = 'queued' OR (j.status = 'running' AND j.lea
                              AND e.status IN ('queued', 'running')
                              AND (e.version < j.version OR (e.version = j.version AND e.rowid < j.rowid)))";
 
+/// The size of the job [`claim_next_job`] would take now (its version's `triangles` and
+/// `bundle_bytes`, each NULL when unknown), for the worker pool's memory admission; `None` when
+/// nothing is claimable. A read only: the claim may still take another job (another instance
+/// claimed this one meanwhile), and the caller then checks the one it got.
+pub async fn next_job_size(pool: &Pool) -> Result<Option<(Option<i64>, Option<i64>)>, StoreError> {
+    Ok(sqlx::query_as(&pool.sql(format!(
+        "SELECT v.triangles, v.bundle_bytes FROM jobs j
+         LEFT JOIN versions v ON v.model_id = j.model_id AND v.version = j.version
+         WHERE {CLAIMABLE} ORDER BY j.isolate DESC, j.created_at, j.rowid LIMIT 1"
+    )))
+    .fetch_optional(pool)
+    .await?)
+}
+
 /// Takes the oldest claimable job (see [`CLAIMABLE`]), marks it and its version `running` under a
 /// lease of `claimer.lease_secs` held by a new token, counts the attempt (`jobs.attempts`) and
 /// returns it. `None` when nothing is claimable.
@@ -440,7 +465,7 @@ pub async fn claim_next_job(pool: &Pool, claimer: &Claimer) -> Result<Option<Cla
     let source: Option<JobSource> = sqlx::query_as(&pool.sql(
         "UPDATE versions SET status = 'running', error_json = NULL
          WHERE model_id = ? AND version = ?
-         RETURNING bundle_name, bundle_sha256, options_json",
+         RETURNING bundle_name, bundle_sha256, options_json, triangles, bundle_bytes",
     ))
     .bind(&model_id)
     .bind(version)
@@ -616,7 +641,7 @@ mod tests {
     }
 
     fn upload() -> NewVersion<'static> {
-        NewVersion { bundle_name: "b.zip", bundle_sha256: "ab", bundle_size: 2, options_json: "{}" }
+        NewVersion { bundle_name: "b.zip", bundle_sha256: "ab", bundle_size: 2, options_json: "{}", triangles: None, bundle_bytes: None }
     }
 
     #[tokio::test]

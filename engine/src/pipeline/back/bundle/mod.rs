@@ -1,13 +1,123 @@
 //! The output bundle: one zip holding the package and `report.json`.
 //!
 //! Entries are stored in the order given, with a fixed timestamp, so the same conversion gives
-//! byte-identical zips.
+//! byte-identical zips. A file may come already deflated ([`FileData`]): the conversion deflates
+//! the large shape files (DXF and STL per body) as it writes them, so it never holds them all as
+//! plain bytes (issue 26, peak memory); the zip lays them out as they are.
 
+use std::borrow::Cow;
 use std::io::Write;
 
-/// Zips `files` (paths relative to the zip root) into memory.
+/// One file of the output: its bytes, or its bytes deflated for the zip (the same entry either
+/// way: [`write_files`] deflates plain files exactly as [`Deflater`] does).
+#[derive(Clone, Debug)]
+pub struct FileData(Data);
+
+#[derive(Clone, Debug)]
+enum Data {
+    Plain(Vec<u8>),
+    /// Deflated bytes (`method` 8) of `len` plain bytes whose CRC-32 is `crc`.
+    Deflated {
+        len: usize,
+        crc: u32,
+        data: Vec<u8>,
+    },
+}
+
+impl FileData {
+    /// The plain bytes' length.
+    pub fn len(&self) -> usize {
+        match &self.0 {
+            Data::Plain(b) => b.len(),
+            Data::Deflated { len, .. } => *len,
+        }
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Whether the bytes are held deflated.
+    pub fn is_deflated(&self) -> bool {
+        matches!(self.0, Data::Deflated { .. })
+    }
+
+    /// The plain bytes (inflated when held deflated: a copy, for readers and tests).
+    pub fn bytes(&self) -> Cow<'_, [u8]> {
+        match &self.0 {
+            Data::Plain(b) => Cow::Borrowed(b),
+            Data::Deflated { len, data, .. } => {
+                let mut out = vec![0; *len];
+                // Our own deflate of exactly `len` bytes: it inflates to them.
+                match libdeflater::Decompressor::new().deflate_decompress(data, &mut out) {
+                    Ok(n) if n == *len => Cow::Owned(out),
+                    _ => Cow::Owned(Vec::new()),
+                }
+            }
+        }
+    }
+
+    /// The plain bytes, by value.
+    pub fn into_bytes(self) -> Vec<u8> {
+        match self.0 {
+            Data::Plain(b) => b,
+            d @ Data::Deflated { .. } => FileData(d).bytes().into_owned(),
+        }
+    }
+}
+
+impl From<Vec<u8>> for FileData {
+    fn from(bytes: Vec<u8>) -> FileData {
+        FileData(Data::Plain(bytes))
+    }
+}
+
+/// Files are equal when their plain bytes are, however they are held.
+impl PartialEq for FileData {
+    fn eq(&self, other: &FileData) -> bool {
+        match (&self.0, &other.0) {
+            (Data::Plain(a), Data::Plain(b)) => a == b,
+            (Data::Deflated { len: la, crc: ca, data: da }, Data::Deflated { len: lb, crc: cb, data: db }) => {
+                la == lb && ca == cb && da == db
+            }
+            _ => self.len() == other.len() && self.bytes() == other.bytes(),
+        }
+    }
+}
+
+/// Deflates files for the zip ahead of it, with one reused compressor.
+pub struct Deflater(libdeflater::Compressor);
+
+impl Default for Deflater {
+    fn default() -> Deflater {
+        Deflater(compressor())
+    }
+}
+
+impl Deflater {
+    /// `bytes` as the zip will hold them: deflated, or plain when deflating does not shrink them
+    /// (the zip then stores them). The plain bytes are dropped once deflated.
+    pub fn file(&mut self, bytes: Vec<u8>) -> FileData {
+        match pack(&mut self.0, &bytes) {
+            (crc, Some(data)) => FileData(Data::Deflated { len: bytes.len(), crc, data }),
+            (_, None) => FileData(Data::Plain(bytes)),
+        }
+    }
+}
+
+fn compressor() -> libdeflater::Compressor {
+    libdeflater::Compressor::new(libdeflater::CompressionLvl::new(LEVEL).unwrap_or_default())
+}
+
+/// Zips `files` (paths relative to the zip root) into memory. They are copied first: a package
+/// is zipped by [`write_files`], which frees each file as it goes.
 pub fn write_zip(files: &[(String, Vec<u8>)]) -> Result<Vec<u8>, std::io::Error> {
-    write_zip_observed(files, &mut |_, _| {})
+    write_files(files.iter().map(|(p, b)| (p.clone(), FileData::from(b.clone()))).collect())
+}
+
+/// Zips `files` (paths relative to the zip root) into memory.
+pub fn write_files(files: Vec<(String, FileData)>) -> Result<Vec<u8>, std::io::Error> {
+    write_files_observed(files, &mut |_, _| {})
 }
 
 /// Deflate level (libdeflate's 1 to 12). Measured on the 2,000-body package with meshes (6,040
@@ -26,14 +136,9 @@ const DOS_DATE: u16 = (1 << 5) | 1;
 /// Unix regular file, rw-r--r--, in the external attributes' upper half.
 const UNIX_FILE: u32 = 0o100644 << 16;
 
-/// One entry's deflated (or stored, when deflating does not shrink it) bytes.
-struct Packed {
-    crc: u32,
-    method: u16,
-    data: Vec<u8>,
-}
-
-fn pack(compressor: &mut libdeflater::Compressor, bytes: &[u8]) -> Packed {
+/// `bytes`' CRC-32 and their deflated bytes, when deflating shrinks them (else the zip stores
+/// them as they are).
+fn pack(compressor: &mut libdeflater::Compressor, bytes: &[u8]) -> (u32, Option<Vec<u8>>) {
     let crc = crc32fast::hash(bytes);
     let mut data = vec![0; compressor.deflate_compress_bound(bytes.len())];
     match compressor.deflate_compress(bytes, &mut data) {
@@ -42,41 +147,48 @@ fn pack(compressor: &mut libdeflater::Compressor, bytes: &[u8]) -> Packed {
             // as the files (issue 26, peak memory).
             data.truncate(n);
             data.shrink_to_fit();
-            Packed { crc, method: 8, data }
+            (crc, Some(data))
         }
-        _ => Packed { crc, method: 0, data: bytes.to_vec() },
+        _ => (crc, None),
     }
 }
 
-/// [`write_zip`], calling `done(i, n)` as the `n` files are deflated. Each file is deflated on
-/// its own (libdeflate, one compressor per thread, reused), on all cores, and the entries are
-/// then laid out in the order given: the bytes do not depend on the number of threads.
+/// [`write_files`], calling `done(i, n)` as the `n` plain files are deflated. Each file is deflated
+/// on its own (libdeflate, one compressor per thread, reused), on all cores, and the entries are
+/// then laid out in the order given: the bytes do not depend on the number of threads, nor on
+/// which files came deflated (a [`Deflater`] deflates exactly as this does). Each file is freed
+/// once laid out.
 ///
 /// The `zip` crate gave no way to write an entry deflated elsewhere and made a fresh deflate
 /// state per entry (about 0.5 MB cleared each time, most of the cost for a package of thousands
 /// of small shape files); the container itself is a few headers, read back by the `zip` crate
 /// and Python's `zipfile` in the tests.
-pub fn write_zip_observed(files: &[(String, Vec<u8>)], done: &mut dyn FnMut(usize, usize)) -> Result<Vec<u8>, std::io::Error> {
+pub fn write_files_observed(files: Vec<(String, FileData)>, done: &mut dyn FnMut(usize, usize)) -> Result<Vec<u8>, std::io::Error> {
     let total: u64 = files.iter().map(|(p, b)| (b.len() + 2 * p.len() + 76) as u64).sum::<u64>() + 22;
     if files.len() > MAX_ENTRIES || total > MAX_SIZE {
-        return zip_crate(files, done);
+        return zip_crate(&files, done);
     }
-    let n = files.len();
+    let n_files = files.len();
+    // The plain files, deflated here.
+    let plain: Vec<usize> = (0..n_files).filter(|&i| !files[i].1.is_deflated()).collect();
+    let n = plain.len();
     let next = std::sync::atomic::AtomicUsize::new(0);
     let finished = std::sync::atomic::AtomicUsize::new(0);
     let work = |report: &mut dyn FnMut(usize)| {
-        let mut compressor = libdeflater::Compressor::new(libdeflater::CompressionLvl::new(LEVEL).unwrap_or_default());
+        let mut compressor = compressor();
         let mut mine = Vec::new();
         loop {
-            let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-            let Some((_, bytes)) = files.get(i) else { break };
-            mine.push((i, pack(&mut compressor, bytes)));
+            let k = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+            let Some(&i) = plain.get(k) else { break };
+            if let (_, FileData(Data::Plain(bytes))) = &files[i] {
+                mine.push((i, pack(&mut compressor, bytes)));
+            }
             report(finished.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1);
         }
         mine
     };
     let threads = std::thread::available_parallelism().map_or(1, |t| t.get()).min(n.max(1)).min(8);
-    let mut packed: Vec<Option<Packed>> = (0..n).map(|_| None).collect();
+    let mut packed: Vec<Option<(u32, Option<Vec<u8>>)>> = (0..n_files).map(|_| None).collect();
     // Progress is reported from this thread only (`done` need not be `Send`): the files it
     // deflates, then the end, which the other threads may reach first (on a busy machine they
     // can deflate every file before this thread takes one).
@@ -98,23 +210,40 @@ pub fn write_zip_observed(files: &[(String, Vec<u8>)], done: &mut dyn FnMut(usiz
     if last < n {
         done(n, n);
     }
-    let size: usize =
-        packed.iter().flatten().map(|p| p.data.len()).sum::<usize>() + files.iter().map(|(p, _)| 2 * p.len() + 76).sum::<usize>() + 22;
+    // Each entry: (method, CRC, the bytes the zip holds), from the file or from its deflate here.
+    let entry = |file: &FileData, p: Option<&(u32, Option<Vec<u8>>)>| -> Option<(u16, u32, usize)> {
+        match (&file.0, p) {
+            (Data::Deflated { crc, data, .. }, _) => Some((8, *crc, data.len())),
+            (Data::Plain(_), Some((crc, Some(d)))) => Some((8, *crc, d.len())),
+            (Data::Plain(b), Some((crc, None))) => Some((0, *crc, b.len())),
+            (Data::Plain(_), None) => None,
+        }
+    };
+    let mut size = 22;
+    for ((path, file), p) in files.iter().zip(&packed) {
+        let (_, _, len) = entry(file, p.as_ref()).ok_or_else(|| std::io::Error::other("a zip entry was not deflated"))?;
+        size += len + 2 * path.len() + 76;
+    }
     let mut out = Vec::with_capacity(size);
     let mut central = Vec::new();
-    // Each entry's deflated bytes are freed once copied.
-    for ((path, bytes), p) in files.iter().zip(packed) {
-        let p = p.ok_or_else(|| std::io::Error::other("a zip entry was not deflated"))?;
+    // Each file and its deflated bytes are freed once copied.
+    for ((path, file), p) in files.into_iter().zip(packed) {
+        let (method, crc, _) = entry(&file, p.as_ref()).ok_or_else(|| std::io::Error::other("a zip entry was not deflated"))?;
+        let len = file.len();
+        let data: Vec<u8> = match (file.0, p) {
+            (Data::Deflated { data, .. }, _) | (Data::Plain(_), Some((_, Some(data)))) => data,
+            (Data::Plain(b), _) => b,
+        };
         let name = path.as_bytes();
         let flags: u16 = if path.is_ascii() { 0 } else { 1 << 11 };
-        let needed: u16 = if p.method == 8 { 20 } else { 10 };
+        let needed: u16 = if method == 8 { 20 } else { 10 };
         let offset = out.len() as u32;
         // The fields a local header and a central directory entry share, from the version needed on.
         let mut common = Vec::with_capacity(26);
-        for v in [needed, flags, p.method, 0, DOS_DATE] {
+        for v in [needed, flags, method, 0, DOS_DATE] {
             common.extend_from_slice(&v.to_le_bytes());
         }
-        for v in [p.crc, p.data.len() as u32, bytes.len() as u32] {
+        for v in [crc, data.len() as u32, len as u32] {
             common.extend_from_slice(&v.to_le_bytes());
         }
         common.extend_from_slice(&(name.len() as u16).to_le_bytes());
@@ -122,7 +251,7 @@ pub fn write_zip_observed(files: &[(String, Vec<u8>)], done: &mut dyn FnMut(usiz
         out.extend_from_slice(&0x0403_4b50u32.to_le_bytes());
         out.extend_from_slice(&common);
         out.extend_from_slice(name);
-        out.extend_from_slice(&p.data);
+        out.extend_from_slice(&data);
         central.extend_from_slice(&0x0201_4b50u32.to_le_bytes());
         central.extend_from_slice(&((3u16 << 8) | 20).to_le_bytes());
         central.extend_from_slice(&common);
@@ -136,7 +265,7 @@ pub fn write_zip_observed(files: &[(String, Vec<u8>)], done: &mut dyn FnMut(usiz
     let (cd_offset, cd_size) = (out.len() as u32, central.len() as u32);
     out.extend_from_slice(&central);
     out.extend_from_slice(&0x0605_4b50u32.to_le_bytes());
-    for v in [0u16, 0, n as u16, n as u16] {
+    for v in [0u16, 0, n_files as u16, n_files as u16] {
         out.extend_from_slice(&v.to_le_bytes());
     }
     out.extend_from_slice(&cd_size.to_le_bytes());
@@ -147,7 +276,7 @@ pub fn write_zip_observed(files: &[(String, Vec<u8>)], done: &mut dyn FnMut(usiz
 
 /// Zips `files` in turn with the `zip` crate (zip64 where needed), calling `done(i, n)` before
 /// each of the `n`.
-fn zip_crate(files: &[(String, Vec<u8>)], done: &mut dyn FnMut(usize, usize)) -> Result<Vec<u8>, std::io::Error> {
+fn zip_crate(files: &[(String, FileData)], done: &mut dyn FnMut(usize, usize)) -> Result<Vec<u8>, std::io::Error> {
     let mut out = std::io::Cursor::new(Vec::new());
     {
         let mut zip = zip::ZipWriter::new(&mut out);
@@ -158,7 +287,7 @@ fn zip_crate(files: &[(String, Vec<u8>)], done: &mut dyn FnMut(usize, usize)) ->
         for (i, (path, bytes)) in files.iter().enumerate() {
             done(i, files.len());
             zip.start_file(path.as_str(), opts).map_err(std::io::Error::other)?;
-            zip.write_all(bytes)?;
+            zip.write_all(&bytes.bytes())?;
         }
         zip.finish().map_err(std::io::Error::other)?;
     }
@@ -171,11 +300,11 @@ mod tests {
     /// the entries of a package are all held until laid out (issue 26, peak memory).
     #[test]
     fn a_deflated_entry_holds_only_its_bytes() {
-        let mut c = libdeflater::Compressor::new(libdeflater::CompressionLvl::new(super::LEVEL).unwrap_or_default());
+        let mut c = super::compressor();
         let text = b"0 0 0\n".repeat(100_000);
-        let p = super::pack(&mut c, &text);
-        assert_eq!(p.method, 8);
-        assert!(p.data.len() < text.len() / 100 && p.data.capacity() == p.data.len(), "{} of {}", p.data.len(), p.data.capacity());
+        let (_, data) = super::pack(&mut c, &text);
+        let data = data.expect("deflated");
+        assert!(data.len() < text.len() / 100 && data.capacity() == data.len(), "{} of {}", data.len(), data.capacity());
     }
 
     #[test]
@@ -215,7 +344,17 @@ mod tests {
         let zip = super::write_zip(&files).unwrap();
         assert_eq!(read_back(&zip), files);
         assert_eq!(zip, super::write_zip(&files).unwrap());
-        assert_eq!(read_back(&super::zip_crate(&files, &mut |_, _| {}).unwrap()), files);
+        let held: Vec<(String, super::FileData)> = files.iter().map(|(p, b)| (p.clone(), b.clone().into())).collect();
+        assert_eq!(read_back(&super::zip_crate(&held, &mut |_, _| {}).unwrap()), files);
+        // Files deflated ahead (as the conversion deflates its shape files) read back as given
+        // and give the same zip, on either path.
+        let mut d = super::Deflater::default();
+        let ahead: Vec<(String, super::FileData)> = files.iter().map(|(p, b)| (p.clone(), d.file(b.clone()))).collect();
+        assert_eq!(ahead.iter().filter(|(_, f)| f.is_deflated()).count(), 41, "all but the noise and the empty file");
+        assert!(ahead.iter().zip(&files).all(|((_, f), (_, b))| f.len() == b.len() && *f.bytes() == **b));
+        assert!(ahead.iter().zip(&held).all(|((_, a), (_, b))| a == b), "equal however held");
+        assert_eq!(super::write_files(ahead.clone()).unwrap(), zip);
+        assert_eq!(read_back(&super::zip_crate(&ahead, &mut |_, _| {}).unwrap()), files);
         // Deflated where that shrinks, stored where not.
         let mut z = zip::ZipArchive::new(std::io::Cursor::new(&zip)).unwrap();
         assert_eq!(z.by_name("P/f3.txt").unwrap().compression(), zip::CompressionMethod::Deflated);
@@ -228,7 +367,7 @@ mod tests {
     fn progress_counts_up() {
         let files: Vec<(String, Vec<u8>)> = (0..300).map(|i| (format!("P/f{i}.txt"), vec![b'a'; 1000 + i])).collect();
         let mut seen = Vec::new();
-        super::write_zip_observed(&files, &mut |k, n| seen.push((k, n))).unwrap();
+        super::write_files_observed(files.into_iter().map(|(p, b)| (p, b.into())).collect(), &mut |k, n| seen.push((k, n))).unwrap();
         assert!(!seen.is_empty());
         assert_eq!(seen.last(), Some(&(300, 300)), "the end is reported");
         assert!(seen.iter().all(|&(k, n)| n == 300 && (1..=300).contains(&k)));
