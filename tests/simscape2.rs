@@ -82,7 +82,7 @@ fn convert(model: &Model, validated: &Validated, warnings: Vec<Warning>) -> Outp
         warnings,
         version: VERSION,
     });
-    Output { files: pkg.files, report, shapes: Default::default() }
+    Output { files: pkg.files, report, shapes: Default::default(), step: Default::default() }
 }
 
 /// Joints of the model by primitive signature (`revolute`, `prismatic+revolute`, ...).
