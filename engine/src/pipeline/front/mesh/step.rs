@@ -32,9 +32,15 @@
 //! Every face the crates cannot mesh (a surface type they do not know, a boundary loop they
 //! cannot read) is a warning naming the face's entity (`#id`) and its solid, and the rest of the
 //! part is kept; a shell that cannot be converted at all is a warning naming it. A face meshed
-//! over a hole it should have cut (`truck-meshalgo` does this on some trimmed B-spline and
-//! cylinder faces with inner loops) is caught by comparing the length of the face mesh's rim
-//! with its boundary loops' and warned about, naming the face ([`MIN_BOUNDARY_RATIO`]).
+//! over a hole it should have cut is caught by comparing the length of the face mesh's rim with
+//! its boundary loops' and warned about, naming the face ([`MIN_BOUNDARY_RATIO`]).
+//!
+//! Periodic B-spline edges: `truck-stepio` keeps an edge's B-spline curve whole and
+//! `truck-meshalgo` samples it over its whole knot vector; for an unclamped (periodic) knot
+//! vector the ends of that range lie outside the curve's domain and fall to the origin, so the
+//! edge's polyline started and ended at (0, 0, 0) and both faces it bounds were meshed over the
+//! hole it cuts (the Onshape arm's `Arm 011.step`, +42 % volume, and `Base.step`, +0.65 %). Such
+//! edges are cut to their domain before meshing (`trim_unclamped_edges`).
 //!
 //! # Bounds
 //! Checked before parsing: at most [`MAX_STEP_BYTES`] bytes and [`MAX_STEP_ENTITIES`] entity
@@ -73,9 +79,10 @@ pub const RELATIVE_TOLERANCE: f64 = 5e-4;
 /// (about 0.3 % of a full circle's area lost at most).
 pub const ANGULAR_TOLERANCE: f64 = 2e-3;
 /// A face whose mesh rim is shorter than this fraction of its B-rep boundary is warned about
-/// (see `boundary_ratio`; 0.29 to 0.66 on the faces found wrong against OpenCASCADE, 0.97 or more
-/// on faithful ones, except six small B-spline faces of the MG996R servo at 0.59 whose part's
-/// volume is right: warned too, a false alarm we prefer to a silent hole).
+/// (see `boundary_ratio`; 0.29 to 0.66 on the faces found wrong against OpenCASCADE before
+/// periodic B-spline edges were cut to their domain, 0.97 or more on faithful ones, except six
+/// small B-spline faces of the MG996R servo at 0.59 whose part's volume is right: warned, a false
+/// alarm we prefer to a silent hole).
 pub const MIN_BOUNDARY_RATIO: f64 = 0.8;
 /// Deepest chain of placements (assembly nesting) followed.
 const MAX_DEPTH: usize = 64;
@@ -98,6 +105,9 @@ pub struct StepMesh {
     pub failed_faces: usize,
     /// Faces whose mesh lacks part of their boundary (each also a warning naming the face).
     pub suspect_faces: usize,
+    /// B-spline edge curves restricted to their knot vector's valid domain (see
+    /// `trim_unclamped_edges`).
+    pub trimmed_edges: usize,
     /// What could not be meshed faithfully (faces, shells), each naming the entity.
     pub warnings: Vec<String>,
 }
@@ -326,18 +336,18 @@ fn mesh_shell(
             ));
         }
     }
-    let meshed = catch_unwind(AssertUnwindSafe(|| {
-        let diag = bbox_diagonal(&compressed.vertices) * scale;
-        let mut tol = CHORDAL_TOLERANCE.max(RELATIVE_TOLERANCE * diag);
-        // Small round faces: a chord 0.05 mm off a 10 mm cylinder loses 0.7 % of its section;
-        // bound the deviation by the smallest radius too (not below half the default: finer
-        // costs seconds on parts with small holes).
-        if let Some(r) = file.min_radius(&face_ids) {
-            tol = tol.min((ANGULAR_TOLERANCE * r * scale).max(CHORDAL_TOLERANCE / 2.0));
-        }
-        let tol = tol / scale;
-        compressed.robust_triangulation(tol)
-    }));
+    let mut compressed = compressed;
+    out.trimmed_edges += trim_unclamped_edges(&mut compressed.edges);
+    let diag = bbox_diagonal(&compressed.vertices) * scale;
+    let mut tol = CHORDAL_TOLERANCE.max(RELATIVE_TOLERANCE * diag);
+    // Small round faces: a chord 0.05 mm off a 10 mm cylinder loses 0.7 % of its section;
+    // bound the deviation by the smallest radius too (not below half the default: finer
+    // costs seconds on parts with small holes).
+    if let Some(r) = file.min_radius(&face_ids) {
+        tol = tol.min((ANGULAR_TOLERANCE * r * scale).max(CHORDAL_TOLERANCE / 2.0));
+    }
+    let tol = tol / scale;
+    let meshed = catch_unwind(AssertUnwindSafe(|| compressed.robust_triangulation(tol)));
     let poly = match meshed {
         Ok(p) => p,
         Err(_) => {
@@ -382,12 +392,8 @@ fn mesh_shell(
             let t = idx.map(|i| base + i as u32);
             local.triangles.push(if reverse { [t[0], t[2], t[1]] } else { t });
         }
-        // The face's own colour (its entity, or the face an ORIENTED_FACE uses), else the shell's.
-        let colour = id.and_then(|f| sink.styles.of(f).or_else(|| file.face_record_id(f).and_then(|g| sink.styles.of(g)))).or(sink.colour);
-        if let Some(c) = colour {
-            push_run(sink.colours, first..local.triangles.len(), c);
-        }
-        let ratio = boundary_ratio(surface, &face.boundaries, &poly.edges);
+        let tris: Vec<[usize; 3]> = surface.faces().triangle_iter().map(|t| [t[0].pos, t[1].pos, t[2].pos]).collect();
+        let ratio = boundary_ratio(positions, &tris, &face.boundaries, &poly.edges);
         if ratio < MIN_BOUNDARY_RATIO {
             out.suspect_faces += 1;
             out.warnings.push(format!(
@@ -396,21 +402,83 @@ fn mesh_shell(
                 ratio * 100.0
             ));
         }
+        // The face's own colour (its entity, or the face an ORIENTED_FACE uses), else the shell's.
+        let colour = id.and_then(|f| sink.styles.of(f).or_else(|| file.face_record_id(f).and_then(|g| sink.styles.of(g)))).or(sink.colour);
+        if let Some(c) = colour {
+            push_run(sink.colours, first..local.triangles.len(), c);
+        }
     }
 }
+
+/// Restricts every B-spline edge curve with an unclamped knot vector (a periodic curve: Onshape
+/// writes the closed intersection curve of two cylinders as `B_SPLINE_CURVE_WITH_KNOTS` with
+/// single knots from -0.0068 on) to the domain where its basis functions sum to one,
+/// `[t_p, t_(m-p)]` for degree p and knots t_0..t_m. `truck-stepio` keeps such a curve whole and
+/// `truck-meshalgo` samples it over `[t_0, t_m]`, where the curve falls towards the origin: the
+/// edge's polyline then starts and ends at (0, 0, 0), and both faces bounded by it lose the hole
+/// it cuts (`Arm 011.step`, `Base.step`). Returns how many edges were trimmed.
+fn trim_unclamped_edges(edges: &mut [truck_topology::compress::CompressedEdge<truck_stepio::r#in::alias::Curve3D>]) -> usize {
+    use truck_meshalgo::rexport_polymesh::Cut;
+    use truck_stepio::r#in::alias::Curve3D;
+    let mut n = 0;
+    for e in edges {
+        let (p, first, lo, hi, last) = match &e.curve {
+            Curve3D::BSplineCurve(c) => {
+                let k = c.knot_vec();
+                let (p, m) = (c.degree(), k.len() - 1);
+                if m < 2 * p + 1 {
+                    continue;
+                }
+                (p, k[0], k[p], k[m - p], k[m])
+            }
+            Curve3D::NurbsCurve(c) => {
+                let k = c.knot_vec();
+                let (p, m) = (c.degree(), k.len() - 1);
+                if m < 2 * p + 1 {
+                    continue;
+                }
+                (p, k[0], k[p], k[m - p], k[m])
+            }
+            _ => continue,
+        };
+        if p == 0 || !(lo < hi) || (first >= lo && last <= hi) {
+            continue;
+        }
+        match &mut e.curve {
+            Curve3D::BSplineCurve(c) => {
+                let mut mid = if first < lo { c.cut(lo) } else { c.clone() };
+                if last > hi {
+                    mid.cut(hi);
+                }
+                *c = mid;
+            }
+            Curve3D::NurbsCurve(c) => {
+                let mut mid = if first < lo { c.cut(lo) } else { c.clone() };
+                if last > hi {
+                    mid.cut(hi);
+                }
+                *c = mid;
+            }
+            _ => continue,
+        }
+        n += 1;
+    }
+    n
+}
+
+type MeshedEdge =
+    truck_topology::compress::CompressedEdge<truck_meshalgo::rexport_polymesh::PolylineCurve<truck_meshalgo::rexport_polymesh::Point3>>;
 
 /// The length of a face's boundary in its mesh (triangle edges used once) over the length of its
 /// B-rep boundary loops (the edges' polylines, shared with the neighbouring faces). A face
 /// meshed over a hole it should have cut (seen in `truck-meshalgo` on trimmed B-spline and
 /// cylinder faces with inner loops) lacks the hole's rim: the ratio falls below one.
 fn boundary_ratio(
-    poly: &truck_meshalgo::rexport_polymesh::PolygonMesh,
+    p: &[truck_meshalgo::rexport_polymesh::Point3],
+    triangles: &[[usize; 3]],
     loops: &[Vec<truck_topology::compress::CompressedEdgeIndex>],
-    edges: &[truck_topology::compress::CompressedEdge<
-        truck_meshalgo::rexport_polymesh::PolylineCurve<truck_meshalgo::rexport_polymesh::Point3>,
-    >],
+    edges: &[MeshedEdge],
 ) -> f64 {
-    let p = poly.positions();
     // Vertices welded by position (a periodic surface's mesh repeats its seam's vertices), to
     // 1e-9 of the face's size.
     let size = p.iter().flat_map(|q| [q.x.abs(), q.y.abs(), q.z.abs()]).fold(0.0f64, f64::max).max(1e-300);
@@ -424,9 +492,9 @@ fn boundary_ratio(
         })
         .collect();
     let mut count: HashMap<(usize, usize), (u32, usize, usize)> = HashMap::new();
-    for t in poly.faces().triangle_iter() {
+    for t in triangles {
         for k in 0..3 {
-            let (i, j) = (t[k].pos, t[(k + 1) % 3].pos);
+            let (i, j) = (t[k], t[(k + 1) % 3]);
             let (Some(&a), Some(&b)) = (welded.get(i), welded.get(j)) else { continue };
             if a != b {
                 count.entry((a.min(b), a.max(b))).or_insert((0, i, j)).0 += 1;
