@@ -152,17 +152,17 @@ pub fn read_meshes(
     Ok((warnings, counts))
 }
 
+/// STEP files meshed by this conversion, by content (each result kept for the body loop).
+type Meshed = HashMap<StepKey, Result<mesh::step::StepMesh, MeshError>>;
+/// STEP tessellations the cache held, by content.
+type Cached = HashMap<StepKey, Arc<mesh::step::StepMesh>>;
+
 /// The distinct STEP files the bodies name: those the cache holds (looked up once each), and the
 /// others meshed, on up to two
 /// threads (the STEP files of an export are meshed in about half the time on this project's
 /// 2-core machine; each file is still meshed by one thread). Errors are kept for the body loop,
 /// which reports the first in body order.
-fn mesh_step_files(
-    model: &Model,
-    bundle: &Bundle,
-    xml_path: &str,
-    step_cache: Option<&dyn StepCache>,
-) -> (HashMap<StepKey, Result<mesh::step::StepMesh, MeshError>>, HashMap<StepKey, Arc<mesh::step::StepMesh>>) {
+fn mesh_step_files(model: &Model, bundle: &Bundle, xml_path: &str, step_cache: Option<&dyn StepCache>) -> (Meshed, Cached) {
     let mut todo: Vec<(StepKey, &str, &[u8])> = Vec::new();
     let mut cached = HashMap::new();
     for body in &model.bodies {

@@ -441,7 +441,7 @@ fn trim_unclamped_edges(edges: &mut [truck_topology::compress::CompressedEdge<tr
             }
             _ => continue,
         };
-        if p == 0 || !(lo < hi) || (first >= lo && last <= hi) {
+        if p == 0 || lo.partial_cmp(&hi) != Some(std::cmp::Ordering::Less) || (first >= lo && last <= hi) {
             continue;
         }
         match &mut e.curve {

@@ -918,7 +918,7 @@ fn step_colours_per_face_over_their_solid() {
     // Only the faces styled, the larger part of the surface unstyled: no body colour.
     let only_face = coloured_tetra("MANIFOLD_SOLID_BREP", &[3]).replace("#907=STYLED_ITEM('',(#906),", "#907=STYLED_ITEM('',(#999),");
     let m = step::read("t.step", only_face.as_bytes()).expect("face only");
-    assert_eq!(triangle_colours(&m).iter().filter(|c| c.is_none()).count() > 0, true);
+    assert!(triangle_colours(&m).iter().any(Option::is_none), "the solid is not styled: faces without a colour");
     assert_eq!(m.colour, None, "86.6 mm^2 red against 150 mm^2 without a colour");
 }
 
