@@ -455,8 +455,9 @@ fn models_render_in_chromium() {
         let arm = &results[5];
         assert!(arm["bodies"].as_u64().is_some_and(|n| n >= 16), "{arm}");
         assert_eq!(arm["meshes"], arm["bodies"], "every body of the Onshape arm has its STEP shape: {arm}");
-        let coloured = arm["pixels"]["colours"].as_array().map_or(0, |c| c.len());
-        assert!(coloured >= 8, "the arm's blue and green parts are checked in their colours: {arm}");
+        let seen =
+            arm["pixels"]["colours"].as_array().map_or(0, |c| c.iter().filter(|b| b["found"].as_u64().is_some_and(|n| n >= 20)).count());
+        assert!(seen >= 11, "the arm's blue and green parts are drawn in their colours: {arm}");
         for png in [
             "render-onshape_arm",
             "ws-pr2-1440-motion",

@@ -45,7 +45,10 @@ try {
     assert.equal(counts.listedBodies, counts.bodies, `${name}: every body is listed`);
     // PR2 has many small or hidden parts (sensor frames inside the head, finger tips) that no
     // default view shows in their colour: the per-body colour check is for the other models.
-    const pixels = counts.meshes && !/pr2/i.test(name) ? await checkModelPixels(page) : null;
+    // The Onshape arm's first Arm 01 (a 20 mm link between two servos) is behind them in the
+    // default view (6 pixels of its blue): one coloured body may be hidden there.
+    const hidden = /onshape/i.test(name) ? 1 : 0;
+    const pixels = counts.meshes && !/pr2/i.test(name) ? await checkModelPixels(page, { hidden }) : null;
     // The report's geometry matches (VRML) and loops link into the 3D view.
     await page.getByRole('tab', { name: 'Report' }).click();
     const report = await page.evaluate(() => window.cad2moViewer.report);
