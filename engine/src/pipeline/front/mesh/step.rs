@@ -337,7 +337,17 @@ fn mesh_shell(
         }
     }
     let mut compressed = compressed;
-    out.trimmed_edges += trim_unclamped_edges(&mut compressed.edges);
+    // `cut` asserts on degenerate knot vectors: a panic leaves the shell's edges as read.
+    let mut edges = compressed.edges.clone();
+    match catch_unwind(AssertUnwindSafe(|| trim_unclamped_edges(&mut edges))) {
+        Ok(n) => {
+            out.trimmed_edges += n;
+            compressed.edges = edges;
+        }
+        Err(_) => {
+            out.warnings.push(format!("{path}: {what}: its periodic B-spline edges could not be cut to their domain; meshed as read"))
+        }
+    }
     let diag = bbox_diagonal(&compressed.vertices) * scale;
     let mut tol = CHORDAL_TOLERANCE.max(RELATIVE_TOLERANCE * diag);
     // Small round faces: a chord 0.05 mm off a 10 mm cylinder loses 0.7 % of its section;
