@@ -82,7 +82,12 @@ fn convert(model: &Model, validated: &Validated, warnings: Vec<Warning>) -> Outp
         warnings,
         version: VERSION,
     });
-    Output { files: pkg.files.into_iter().map(|(p, b)| (p, b.into())).collect(), report, shapes: Default::default() }
+    Output {
+        files: pkg.files.into_iter().map(|(p, b)| (p, b.into())).collect(),
+        report,
+        shapes: Default::default(),
+        step: Default::default(),
+    }
 }
 
 /// Joints of the model by primitive signature (`revolute`, `prismatic+revolute`, ...).

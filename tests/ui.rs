@@ -402,7 +402,10 @@ fn models_render_in_chromium() {
             .collect();
         let pr2 = work.path().join("pr2.zip");
         std::fs::write(&pr2, cad2mo_engine::pipeline::back::bundle::write_zip(&files).expect("zip")).expect("zip");
-        bundles.extend([hand, legs, pr2]);
+        // The Onshape arm (issue 31): a second-generation export whose 16 parts are STEP files.
+        let arm = work.path().join("onshape_arm.zip");
+        std::fs::write(&arm, zip_dir(&fixtures.join("xml2/ErroujiOussama+Arm-Robot/8d2b4829/Simulation/Simscape"))).expect("zip");
+        bundles.extend([hand, legs, pr2, arm]);
     }
     let shots = workspace_root().join("target/ui-screenshots");
     std::fs::create_dir_all(&shots).expect("screenshot folder");
@@ -453,7 +456,16 @@ fn models_render_in_chromium() {
             assert_eq!(ws[size]["viewAndPlay"]["play"], true, "PR2 {size}: {ws}");
             assert_eq!(ws[size]["tabs"].as_object().map(|t| t.len()), Some(9), "PR2 {size}: every tab checked: {ws}");
         }
+        // The Onshape arm: every body drawn from its STEP part, each coloured one in its colour
+        // (checkModelPixels: at least 20 pixels of its chromaticity inside its own screen box).
+        let arm = &results[5];
+        assert!(arm["bodies"].as_u64().is_some_and(|n| n >= 16), "{arm}");
+        assert_eq!(arm["meshes"], arm["bodies"], "every body of the Onshape arm has its STEP shape: {arm}");
+        let seen =
+            arm["pixels"]["colours"].as_array().map_or(0, |c| c.iter().filter(|b| b["found"].as_u64().is_some_and(|n| n >= 20)).count());
+        assert!(seen >= 11, "the arm's blue and green parts are drawn in their colours: {arm}");
         for png in [
+            "render-onshape_arm",
             "ws-pr2-1440-motion",
             "ws-pr2-1440-drives",
             "ws-pr2-390-motion",

@@ -303,7 +303,7 @@ fn lay_out(out: &mut Text, x: f64, single: bool, layout: Layout) {
     // Nearly always `ryu`'s own text is already the standard library's: it differs only where
     // two shortest candidates tie, for `{:?}` between 1e-5 and 1e-4 (positional there, `1e-5`
     // in the standard library), and for `{}` in `ryu`'s exponential forms and its `.0`.
-    if abs < 1e38 && !exact_digits(abs).is_some_and(|p| p % 10 == 5) {
+    if abs < 1e38 && exact_digits(abs).is_none_or(|p| p % 10 != 5) {
         let mut ryu = ryu::Buffer::new();
         let t = if single { ryu.format_finite(x as f32) } else { ryu.format_finite(x) };
         let t = t.strip_prefix('-').unwrap_or(t).as_bytes();

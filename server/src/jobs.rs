@@ -171,6 +171,8 @@ pub struct Jobs {
     board: ProgressBoard,
     halt: Arc<Halt>,
     shapes: Arc<MemoryShapeCache>,
+    /// STEP tessellations by file content, shared by the upload checks and every job.
+    steps: Arc<cad2mo_engine::pipeline::front::mesh::step::MemoryStepCache>,
     /// For [`Jobs::stop`]: the store and this instance's claims.
     store: Store,
     instance: String,
@@ -319,12 +321,21 @@ impl Jobs {
         let claimer = Claimer { instance: instance.clone(), lease_secs: lease.as_secs_f64().max(0.1) };
         let shapes = Arc::new(MemoryShapeCache::new(shape_cache_bytes));
         let steps = Arc::new(cad2mo_engine::pipeline::front::mesh::step::MemoryStepCache::default());
-        let ctx = Ctx { store: store.clone(), blobs, board: board.clone(), live, claimer, shapes: shapes.clone(), steps, describe };
+        let ctx = Ctx {
+            store: store.clone(),
+            blobs,
+            board: board.clone(),
+            live,
+            claimer,
+            shapes: shapes.clone(),
+            steps: steps.clone(),
+            describe,
+        };
         let (signal, halted) = watch::channel(false);
         let budget = MemoryBudget::new(workers.memory);
         let dispatcher = tokio::spawn(dispatch(ctx, workers.count.max(1), budget, rx, halted).instrument(tracing::info_span!("jobs")));
         let halt = Arc::new(Halt { signal, dispatcher: Mutex::new(Some(dispatcher)) });
-        let jobs = Jobs { wake, board, halt, shapes, store, instance };
+        let jobs = Jobs { wake, board, halt, shapes, steps, store, instance };
         jobs.notify(); // pick up what is already queued
         Ok(jobs)
     }
@@ -333,6 +344,12 @@ impl Jobs {
     /// (`hits`) and computed by them (`misses`).
     pub fn shape_cache_stats(&self) -> CacheStats {
         self.shapes.stats()
+    }
+
+    /// The process's STEP tessellations by file content: the upload check puts the parts it
+    /// meshes there, so the job converting the upload meshes them no more.
+    pub fn step_cache(&self) -> Arc<dyn cad2mo_engine::pipeline::front::mesh::step::StepCache> {
+        self.steps.clone()
     }
 
     /// Tells the dispatcher that jobs may be queued (call after committing one).

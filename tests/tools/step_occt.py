@@ -6,8 +6,10 @@ generator of our own small STEP cases.
                                            (m^3), centroid (m) and bounding-box diagonal (m),
                                            placements and units applied by OCCT's own reader
     python3 step_occt.py generate DIR      writes box.step, cylinder.step, torus.step,
-                                           assembly.step (one part placed twice) and
-                                           inch_box.step (a box written in inches) into DIR
+                                           assembly.step (one part placed twice),
+                                           inch_box.step (a box written in inches) and
+                                           colours.step (a box coloured sRGB (0.8, 0.4, 0.2);
+                                           a white cylinder whose top face is blue) into DIR
 
 OCCT prints its statistics on stdout, hence the OUT file. Everything is in metres whatever unit the file uses (OCCT converts to its session unit,
 millimetres here; we divide by 1000).
@@ -113,6 +115,46 @@ def generate(folder):
     w.Transfer(doc, STEPControl_AsIs)
     if w.Write(f"{folder}/assembly.step") != IFSelect_RetDone:
         raise SystemExit("assembly.step: OCCT cannot write it")
+    colours(folder)
+
+
+def colours(folder):
+    # Two parts coloured through XCAF: a 20 x 10 x 5 mm box, sRGB (0.8, 0.4, 0.2) (OCCT writes
+    # COLOUR_RGB); a cylinder of radius 10 mm and height 10 mm standing on (50, 0, 0), white, its
+    # top face blue (OCCT writes DRAUGHTING_PRE_DEFINED_COLOURs and an OVER_RIDING_STYLED_ITEM).
+    from OCP.TDocStd import TDocStd_Document
+    from OCP.TCollection import TCollection_ExtendedString
+    from OCP.XCAFDoc import XCAFDoc_DocumentTool, XCAFDoc_ColorSurf
+    from OCP.STEPCAFControl import STEPCAFControl_Writer
+    from OCP.Quantity import Quantity_Color, Quantity_TOC_RGB, Quantity_TOC_sRGB
+    from OCP.TopAbs import TopAbs_FACE
+    from OCP.BRepAdaptor import BRepAdaptor_Surface
+    from OCP.GeomAbs import GeomAbs_Plane
+
+    doc = TDocStd_Document(TCollection_ExtendedString("XmlOcaf"))
+    shapes = XCAFDoc_DocumentTool.ShapeTool_s(doc.Main())
+    colours = XCAFDoc_DocumentTool.ColorTool_s(doc.Main())
+    box = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 20, 10, 5).Shape()
+    cyl = BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(50, 0, 0), gp_Dir(0, 0, 1)), 10, 10).Shape()
+    box_label = shapes.AddShape(box, False)
+    cyl_label = shapes.AddShape(cyl, False)
+    colours.SetColor(box_label, Quantity_Color(0.8, 0.4, 0.2, Quantity_TOC_sRGB), XCAFDoc_ColorSurf)
+    colours.SetColor(cyl_label, Quantity_Color(1.0, 1.0, 1.0, Quantity_TOC_RGB), XCAFDoc_ColorSurf)
+    exp = TopExp_Explorer(cyl, TopAbs_FACE)
+    while exp.More():
+        face = TopoDS.Face(exp.Current())
+        if BRepAdaptor_Surface(face).GetType() == GeomAbs_Plane:
+            props = GProp_GProps()
+            BRepGProp.SurfaceProperties_s(face, props)
+            if props.CentreOfMass().Z() > 5:
+                top = shapes.AddSubShape(cyl_label, face)
+                colours.SetColor(top, Quantity_Color(0.0, 0.0, 1.0, Quantity_TOC_RGB), XCAFDoc_ColorSurf)
+        exp.Next()
+    Interface_Static.SetCVal_s("write.step.unit", "MM")
+    w = STEPCAFControl_Writer()
+    w.Transfer(doc, STEPControl_AsIs)
+    if w.Write(f"{folder}/colours.step") != IFSelect_RetDone:
+        raise SystemExit("colours.step: OCCT cannot write it")
 
 
 if __name__ == "__main__":

@@ -204,6 +204,8 @@ pub struct Output {
     /// How many collision shapes were computed and how many came from the shape cache (not in
     /// the report: the output is the same either way).
     pub shapes: back::collision_shapes::ShapeCounts,
+    /// How many STEP files were meshed and how many came from the STEP cache (likewise).
+    pub step: passes::geometry::StepCounts,
 }
 
 /// Peak memory of one conversion (`convert` then the zip), estimated from what an upload's check
@@ -289,6 +291,8 @@ pub struct Analysed {
     pub warnings: Vec<Warning>,
     /// How VRML geometry was matched, when the bundle had VRML.
     pub vrml: Option<passes::geometry_match::MatchReport>,
+    /// How many STEP files were meshed and how many came from the STEP cache.
+    pub step: passes::geometry::StepCounts,
 }
 
 /// Parses and analyses a bundle.
@@ -301,19 +305,24 @@ pub fn analyse_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
     obs.progress(Stage::Xml, 0, 1);
     let (kind, path) = find_source(bundle)?;
     let bytes = bundle.get(&path).unwrap_or_default();
+    let mut step = passes::geometry::StepCounts::default();
     let (mut model, mut warnings) = match kind {
         SourceKind::SecondGeneration => {
             let (mut model, mut warnings) = front::simscape2::parse(&path, bytes)?;
-            warnings.extend(passes::geometry::read_meshes(&mut model, bundle, &path, opts.step_cache.as_deref(), &mut |i, n| {
+            let (w, counts) = passes::geometry::read_meshes(&mut model, bundle, &path, opts.step_cache.as_deref(), &mut |i, n| {
                 obs.progress(Stage::Meshes, i, n)
-            })?);
+            })?;
+            warnings.extend(w);
+            step = counts;
             (model, warnings)
         }
         SourceKind::FirstGeneration => {
             let (mut model, mut warnings) = front::simmechanics::parse(&path, bytes)?;
-            warnings.extend(passes::geometry::read_meshes(&mut model, bundle, &path, opts.step_cache.as_deref(), &mut |i, n| {
+            let (w, counts) = passes::geometry::read_meshes(&mut model, bundle, &path, opts.step_cache.as_deref(), &mut |i, n| {
                 obs.progress(Stage::Meshes, i, n)
-            })?);
+            })?;
+            warnings.extend(w);
+            step = counts;
             (model, warnings)
         }
         SourceKind::Urdf => {
@@ -339,7 +348,7 @@ pub fn analyse_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
     let analysis = Analysis { hierarchy: planned.hierarchy, chains: planned.chains, loops: planned.loops };
     let validated = valid::validate(&model, analysis)?;
     warnings.extend(validated.warnings.iter().cloned());
-    Ok(Analysed { model, validated, merged, absorbed, warnings, vrml })
+    Ok(Analysed { model, validated, merged, absorbed, warnings, vrml, step })
 }
 
 /// Gravity where the user gives none: CAD assemblies (first-generation SimMechanics XML) are
@@ -489,6 +498,7 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
         return Err(ConvertError::Options(format!("gravity {g:?} is not finite")));
     }
     let a = analyse_observed(bundle, opts, obs)?;
+    let step_counts = a.step;
     let gravity = opts.gravity.unwrap_or_else(|| default_gravity(&a.model));
     let package_name = match &opts.package_name {
         Some(p) if back::modelica::sanitize(p, "P") == *p => p.clone(),
@@ -649,7 +659,7 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
         obs.progress(Stage::Report, 0, 1);
         let json = serde_json::to_vec_pretty(&report).map_err(|e| ConvertError::Options(e.to_string()))?;
         files.push(("report.json".to_string(), json.into()));
-        Ok(Output { files, report, shapes: collision.counts })
+        Ok(Output { files, report, shapes: collision.counts, step: step_counts })
     })
 }
 

@@ -360,7 +360,7 @@ mod tests {
     /// Each use case's error becomes the problem the API promises (status and type).
     #[test]
     fn use_case_errors_map_to_problems() {
-        let e = crate::service::export::check_bundle(b"not a zip", "x.zip", &Default::default()).expect_err("not a zip");
+        let e = crate::service::export::check_bundle(b"not a zip", "x.zip", &Default::default(), None).expect_err("not a zip");
         let p = ApiError::from(e).problem_json();
         assert_eq!((p["status"].as_u64(), p["type"].as_str()), (Some(422), Some("/problems/invalid")));
         assert!(p["detail"].as_str().is_some_and(|d| d.contains("x.zip")), "{p}");

@@ -88,6 +88,8 @@ pub struct Built {
     pub summary: Summary,
     /// Collision shapes computed by this build and served by the shape cache.
     pub shapes: pipeline::back::collision_shapes::ShapeCounts,
+    /// STEP files meshed by this build and served by the STEP cache.
+    pub step: pipeline::passes::geometry::StepCounts,
 }
 
 /// What a bundle check found (the upload-time analysis).
@@ -130,9 +132,18 @@ pub fn read_bundle(bundle_bytes: &[u8], bundle_name: &str) -> Result<Bundle, Bun
 
 /// Upload-time check: the zip reads safely and its XML parses, resolves and validates
 /// ([`pipeline::analyse`], no back ends). Fast; bad input is refused before anything is stored.
-pub fn check_bundle(bundle_bytes: &[u8], bundle_name: &str, options: &ExportOptions) -> Result<Checked, ExportError> {
+/// The STEP parts it meshes go into `step_cache` (the service's, which its jobs share: the
+/// conversion that follows the upload meshes them no more).
+pub fn check_bundle(
+    bundle_bytes: &[u8],
+    bundle_name: &str,
+    options: &ExportOptions,
+    step_cache: Option<std::sync::Arc<dyn cad2mo_engine::pipeline::front::mesh::step::StepCache>>,
+) -> Result<Checked, ExportError> {
     let bundle = read_bundle(bundle_bytes, bundle_name)?;
-    let a = pipeline::analyse(&bundle, &options.pipeline())?;
+    let mut opts = options.pipeline();
+    opts.step_cache = step_cache;
+    let a = pipeline::analyse(&bundle, &opts)?;
     Ok(Checked {
         model_name: a.model.name.clone(),
         warnings: a.warnings.len(),
@@ -208,7 +219,7 @@ pub fn build_package(
     }
     let package_zip = write_files_observed(files, &mut |done, total| progress(BuildStep { stage: BuildStage::Package, done, total }))
         .map_err(ExportError::Zip)?;
-    Ok(Built { package_zip, report_json, summary: Summary::of(&out.report), shapes: out.shapes })
+    Ok(Built { package_zip, report_json, summary: Summary::of(&out.report), shapes: out.shapes, step: out.step })
 }
 
 /// What a version's package is written for beyond its bundle and options: the Modelica names of
@@ -327,7 +338,54 @@ mod tests {
         assert_eq!((a.summary.bodies, a.summary.joints), (2, 2));
         let report: serde_json::Value = serde_json::from_slice(&a.report_json).unwrap();
         assert_eq!(report["package_name"], "PENDULUM");
-        assert_eq!(check_bundle(&zip, "p.zip", &opts).unwrap().model_name, "PENDULUM");
+        assert_eq!(check_bundle(&zip, "p.zip", &opts, None).unwrap().model_name, "PENDULUM");
+    }
+
+    /// A second-generation bundle of one part whose geometry is the fuzz seed's hand-written
+    /// STEP tetrahedron (10 mm edges, millimetres).
+    fn step_part_zip() -> Vec<u8> {
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+        let step = std::fs::read(root.join("fuzz/seeds/step/tetra_mm.step")).unwrap();
+        let xml = r#"<?xml version="1.0" encoding="utf-8"?>
+<SimscapeMultibodyImportXML xmlns="urn:mathworks:SimscapeMultibody:import" version="2.0">
+  <Created by="t" from="Onshape" on="1/1/25" using="Simscape Multibody Exporter"/>
+  <ModelUnits length="millimeter" mass="kilogram"/>
+  <DataUnits length="meter" mass="kilogram"/>
+  <RootAssembly name="tet" uid="A">
+    <InstanceTree>
+      <Instance entityUid="P1" grounded="true" name="Base &lt;1&gt;" uid="b">
+        <Transform><Rotation>1 0 0 0 1 0 0 0 1</Rotation><Translation>0 0 0</Translation></Transform>
+      </Instance>
+    </InstanceTree>
+  </RootAssembly>
+  <Parts>
+    <Part name="P" uid="P1">
+      <MassProperties><Mass>0.0005</Mass><CenterOfMass>0.0025 0.0025 0.0025</CenterOfMass><Inertia>1e-8 1e-8 1e-8 0 0 0</Inertia></MassProperties>
+      <GeometryFile name="T.step" type="STEP"/>
+    </Part>
+  </Parts>
+</SimscapeMultibodyImportXML>"#;
+        write_zip(&[("tet.xml".to_string(), xml.as_bytes().to_vec()), ("T.step".to_string(), step)]).unwrap()
+    }
+
+    #[test]
+    fn the_upload_check_leaves_its_step_meshes_to_the_build() {
+        use cad2mo_engine::pipeline::front::mesh::step::{MemoryStepCache, StepCache};
+        let zip = step_part_zip();
+        let opts = ExportOptions::default();
+        let build = |context: &Context| build_package(&zip, "t.zip", &opts, &[], &MotionsInput::default(), context, &mut |_| {}).unwrap();
+        // Without a cache the build meshes the STEP file itself.
+        let alone = build(&Context::default());
+        assert_eq!((alone.step.meshed, alone.step.cached), (1, 0));
+        // The service's path: the upload check meshes it into the shared cache, the job's build
+        // takes it from there, and the package is the same.
+        let cache = std::sync::Arc::new(MemoryStepCache::default());
+        let shared: std::sync::Arc<dyn StepCache> = cache.clone();
+        check_bundle(&zip, "t.zip", &opts, Some(shared.clone())).unwrap();
+        assert_eq!(cache.stats().2, 1, "the check left the tetrahedron in the cache");
+        let built = build(&Context { step_cache: Some(shared), ..Context::default() });
+        assert_eq!((built.step.meshed, built.step.cached), (0, 1), "the build meshed no STEP file");
+        assert_eq!(built.package_zip, alone.package_zip);
     }
 
     #[test]

@@ -84,9 +84,10 @@ async fn check_and_store(ctx: Ctx<'_>, upload: Upload) -> Result<(Upload, String
         }
     };
     let blobs = ctx.blobs.clone();
+    let steps = ctx.jobs.step_cache();
     blocking(move || {
         let _permit = permit;
-        let checked = export::check_bundle(&upload.bundle, &upload.bundle_name, &upload.options)?;
+        let checked = export::check_bundle(&upload.bundle, &upload.bundle_name, &upload.options, Some(steps))?;
         let sha = blobs.put(&upload.bundle).map_err(|e| anyhow::Error::new(e).context("storing the bundle"))?;
         Ok((upload, sha, checked))
     })

@@ -6,7 +6,8 @@
 //! STL front end scales them to metres. STEP files (second-generation exports) carry their own
 //! unit and are tessellated by `front::mesh::step`, in the part's frame; each file's content is
 //! meshed once per conversion however many bodies name it (keyed by SHA-256 of its bytes), and
-//! each face it could not mesh is a `step-face` warning. A named file that is missing from the
+//! each face it could not mesh is a `step-face` warning. A part the XML gives no colour
+//! (`Diffuse`) takes its STEP file's (the colour of the largest area of its faces). A named file that is missing from the
 //! bundle is a warning (the model converts without that shape); two candidates for one name, or a
 //! corrupt STL or STEP file, are errors.
 
@@ -34,6 +35,15 @@ pub enum GeometryError {
     TriangleBudget { file: String, body: String, total: usize, max: usize },
 }
 
+/// How a conversion got its STEP tessellations (distinct file contents: a file named by several
+/// bodies counts once): meshed, or served by the STEP cache. Not in the report (the output is
+/// the same either way).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct StepCounts {
+    pub meshed: usize,
+    pub cached: usize,
+}
+
 /// Fills `Body::mesh` for every body whose STL is in the bundle. `xml_path` is the XML's path in
 /// the bundle (references are resolved from its folder). STEP tessellations are taken from and
 /// put into `step_cache` when given. `done(i, n)` is told after each of the `n` bodies that name
@@ -44,8 +54,9 @@ pub fn read_meshes(
     xml_path: &str,
     step_cache: Option<&dyn StepCache>,
     done: &mut dyn FnMut(usize, usize),
-) -> Result<Vec<Warning>, GeometryError> {
+) -> Result<(Vec<Warning>, StepCounts), GeometryError> {
     let mut warnings = Vec::new();
+    let mut counts = StepCounts::default();
     let scale = model.length_scale;
     let total = model.bodies.iter().filter(|b| b.geometry_file.is_some()).count();
     // Triangles of the bodies' meshes so far, a shared file counted once per body
@@ -53,8 +64,8 @@ pub fn read_meshes(
     let mut triangles = 0usize;
     let mut read: HashMap<&str, Arc<Mesh>> = HashMap::new();
     // STEP meshes by file content, for this conversion (the cache may be shared or absent).
-    let mut step_meshes: HashMap<StepKey, Arc<Mesh>> = HashMap::new();
-    let mut fresh = mesh_step_files(model, bundle, xml_path, step_cache);
+    let mut step_meshes: HashMap<StepKey, (Arc<Mesh>, Option<[f64; 3]>)> = HashMap::new();
+    let (mut fresh, mut cached) = mesh_step_files(model, bundle, xml_path, step_cache);
     let mut parsed = parse_stl_files(model, bundle, xml_path, scale);
     for (i, body) in model.bodies.iter_mut().filter(|b| b.geometry_file.is_some()).enumerate() {
         done(i, total);
@@ -64,25 +75,49 @@ pub fn read_meshes(
                 let bytes = bundle.get(path).unwrap_or_default();
                 let mesh = if is_step(path) {
                     let key = StepKey::of(bytes);
-                    match step_meshes.get(&key) {
+                    let (mesh, colour) = match step_meshes.get(&key) {
                         Some(m) => m.clone(),
                         None => {
-                            let tess = match (fresh.remove(&key), step_cache.and_then(|c| c.get(&key))) {
-                                (Some(r), _) => Arc::new(r?),
-                                (None, Some(r)) => r,
-                                (None, None) => Arc::new(mesh::step::read(path, bytes)?),
+                            // Meshed by `mesh_step_files` for this conversion, else from the
+                            // cache, else (a thread of `mesh_step_files` failed) meshed here.
+                            let tess = match fresh.remove(&key) {
+                                Some(r) => {
+                                    counts.meshed += 1;
+                                    let t = Arc::new(r?);
+                                    if let Some(c) = step_cache {
+                                        c.put(key, t.clone());
+                                    }
+                                    t
+                                }
+                                None => match cached.remove(&key) {
+                                    Some(t) => {
+                                        counts.cached += 1;
+                                        t
+                                    }
+                                    None => {
+                                        counts.meshed += 1;
+                                        let t = Arc::new(mesh::step::read(path, bytes)?);
+                                        if let Some(c) = step_cache {
+                                            c.put(key, t.clone());
+                                        }
+                                        t
+                                    }
+                                },
                             };
-                            if let Some(c) = step_cache {
-                                c.put(key, tess.clone());
-                            }
                             for w in &tess.warnings {
                                 warnings.push(Warning::new("step-face", w.clone(), body.loc.to_string()));
                             }
                             let m = Arc::new(mesh::finish(path, tess.mesh.clone())?);
-                            step_meshes.insert(key, m.clone());
-                            m
+                            step_meshes.insert(key, (m.clone(), tess.colour));
+                            (m, tess.colour)
                         }
+                    };
+                    // The file's colour where the XML gives the part none (an XML `Diffuse`
+                    // stays, as the VRML colours do not replace a CAD material).
+                    if body.material.is_none() {
+                        body.material = colour.map(|color| ir::Material { color, transparency: 0.0, specular: 0.0 });
                     }
+                    mesh
                 } else {
                     match read.get(path) {
                         Some(m) => m.clone(),
@@ -118,20 +153,22 @@ pub fn read_meshes(
             )),
         }
     }
-    Ok(warnings)
+    Ok((warnings, counts))
 }
 
-/// Meshes the distinct STEP files the bodies name that the cache does not hold, on up to two
+/// STEP files meshed by this conversion, by content (each result kept for the body loop).
+type Meshed = HashMap<StepKey, Result<mesh::step::StepMesh, MeshError>>;
+/// STEP tessellations the cache held, by content.
+type Cached = HashMap<StepKey, Arc<mesh::step::StepMesh>>;
+
+/// The distinct STEP files the bodies name: those the cache holds (looked up once each), and the
+/// others meshed, on up to two
 /// threads (the STEP files of an export are meshed in about half the time on this project's
 /// 2-core machine; each file is still meshed by one thread). Errors are kept for the body loop,
 /// which reports the first in body order.
-fn mesh_step_files(
-    model: &Model,
-    bundle: &Bundle,
-    xml_path: &str,
-    step_cache: Option<&dyn StepCache>,
-) -> HashMap<StepKey, Result<mesh::step::StepMesh, MeshError>> {
+fn mesh_step_files(model: &Model, bundle: &Bundle, xml_path: &str, step_cache: Option<&dyn StepCache>) -> (Meshed, Cached) {
     let mut todo: Vec<(StepKey, &str, &[u8])> = Vec::new();
+    let mut cached = HashMap::new();
     for body in &model.bodies {
         let Some(name) = &body.geometry_file else { continue };
         let Ok(Some(path)) = bundle.resolve(xml_path, name) else { continue };
@@ -140,7 +177,11 @@ fn mesh_step_files(
         }
         let bytes = bundle.get(path).unwrap_or_default();
         let key = StepKey::of(bytes);
-        if todo.iter().any(|(k, _, _)| *k == key) || step_cache.is_some_and(|c| c.get(&key).is_some()) {
+        if todo.iter().any(|(k, _, _)| *k == key) || cached.contains_key(&key) {
+            continue;
+        }
+        if let Some(t) = step_cache.and_then(|c| c.get(&key)) {
+            cached.insert(key, t);
             continue;
         }
         todo.push((key, path, bytes));
@@ -164,7 +205,7 @@ fn mesh_step_files(
             }
         }
     });
-    out
+    (out, cached)
 }
 
 /// Parses the distinct STL files the bodies name on up to two threads (37 MB of ASCII STL for

@@ -12,7 +12,17 @@
 //! do is done here, over `ruststep`'s entity records: the length unit of each representation
 //! context (SI prefixes and conversion-based units such as inches), assembly placements
 //! (`REPRESENTATION_RELATIONSHIP_WITH_TRANSFORMATION` + `ITEM_DEFINED_TRANSFORMATION`, and
-//! `MAPPED_ITEM`), and colours (`STYLED_ITEM` ... `COLOUR_RGB`).
+//! `MAPPED_ITEM`), and colours.
+//!
+//! # Colours
+//! Surface colours styled onto solids, shells and faces (`STYLED_ITEM` and the
+//! `OVER_RIDING_STYLED_ITEM`s Onshape writes for faces coloured apart from their part, through
+//! `PRESENTATION_STYLE_ASSIGNMENT` / `SURFACE_STYLE_USAGE` / `SURFACE_SIDE_STYLE` /
+//! `SURFACE_STYLE_FILL_AREA` / `FILL_AREA_STYLE` / `FILL_AREA_STYLE_COLOUR` (or AP242's
+//! `SURFACE_STYLE_RENDERING`) to a `COLOUR_RGB` or a `DRAUGHTING_PRE_DEFINED_COLOUR`) are read per
+//! face: a face takes its own colour, else its shell's, else its solid's ([`StepMesh::colours`],
+//! runs of triangles). The pipeline's shapes have one colour each (Modelica's `FixedShape`, the
+//! 3D view, the report), so [`StepMesh::colour`] is the colour of the largest area.
 //!
 //! # Tessellation
 //! Each shell within a chordal deviation of [`CHORDAL_TOLERANCE`] (0.05 mm) or, for large parts,
@@ -22,9 +32,15 @@
 //! Every face the crates cannot mesh (a surface type they do not know, a boundary loop they
 //! cannot read) is a warning naming the face's entity (`#id`) and its solid, and the rest of the
 //! part is kept; a shell that cannot be converted at all is a warning naming it. A face meshed
-//! over a hole it should have cut (`truck-meshalgo` does this on some trimmed B-spline and
-//! cylinder faces with inner loops) is caught by comparing the length of the face mesh's rim
-//! with its boundary loops' and warned about, naming the face ([`MIN_BOUNDARY_RATIO`]).
+//! over a hole it should have cut is caught by comparing the length of the face mesh's rim with
+//! its boundary loops' and warned about, naming the face ([`MIN_BOUNDARY_RATIO`]).
+//!
+//! Periodic B-spline edges: `truck-stepio` keeps an edge's B-spline curve whole and
+//! `truck-meshalgo` samples it over its whole knot vector; for an unclamped (periodic) knot
+//! vector the ends of that range lie outside the curve's domain and fall to the origin, so the
+//! edge's polyline started and ended at (0, 0, 0) and both faces it bounds were meshed over the
+//! hole it cuts (the Onshape arm's `Arm 011.step`, +42 % volume, and `Base.step`, +0.65 %). Such
+//! edges are cut to their domain before meshing (`trim_unclamped_edges`).
 //!
 //! # Bounds
 //! Checked before parsing: at most [`MAX_STEP_BYTES`] bytes and [`MAX_STEP_ENTITIES`] entity
@@ -63,9 +79,10 @@ pub const RELATIVE_TOLERANCE: f64 = 5e-4;
 /// (about 0.3 % of a full circle's area lost at most).
 pub const ANGULAR_TOLERANCE: f64 = 2e-3;
 /// A face whose mesh rim is shorter than this fraction of its B-rep boundary is warned about
-/// (see `boundary_ratio`; 0.29 to 0.66 on the faces found wrong against OpenCASCADE, 0.97 or more
-/// on faithful ones, except six small B-spline faces of the MG996R servo at 0.59 whose part's
-/// volume is right: warned too, a false alarm we prefer to a silent hole).
+/// (see `boundary_ratio`; 0.29 to 0.66 on the faces found wrong against OpenCASCADE before
+/// periodic B-spline edges were cut to their domain, 0.97 or more on faithful ones, except six
+/// small B-spline faces of the MG996R servo at 0.59 whose part's volume is right: warned, a false
+/// alarm we prefer to a silent hole).
 pub const MIN_BOUNDARY_RATIO: f64 = 0.8;
 /// Deepest chain of placements (assembly nesting) followed.
 const MAX_DEPTH: usize = 64;
@@ -75,8 +92,12 @@ const MAX_DEPTH: usize = 64;
 pub struct StepMesh {
     /// Every solid (and shell-based surface model) of the file, placed, in metres.
     pub mesh: ir::Mesh,
-    /// The colour of the first coloured solid, RGB in 0..1.
+    /// The colour of the largest part of the file's surface (by area, placed), RGB in 0..1;
+    /// `None` when that part has no colour (a file without styles, or mostly unstyled faces).
     pub colour: Option<[f64; 3]>,
+    /// The coloured triangles of `mesh`: runs of triangles and their colour, in triangle order
+    /// (a face's own style first, else its shell's, else its solid's; see [`Styles`]).
+    pub colours: Vec<(std::ops::Range<usize>, [f64; 3])>,
     /// The triangles of each placed solid in `mesh` (a part placed twice: two ranges).
     pub solids: Vec<std::ops::Range<usize>>,
     /// Faces meshed, and faces that could not be (each also a warning).
@@ -84,6 +105,9 @@ pub struct StepMesh {
     pub failed_faces: usize,
     /// Faces whose mesh lacks part of their boundary (each also a warning naming the face).
     pub suspect_faces: usize,
+    /// B-spline edge curves restricted to their knot vector's valid domain (see
+    /// `trim_unclamped_edges`).
+    pub trimmed_edges: usize,
     /// What could not be meshed faithfully (faces, shells), each naming the entity.
     pub warnings: Vec<String>,
 }
@@ -147,6 +171,7 @@ pub fn read_with(path: &str, bytes: &[u8], budget: Duration) -> Result<StepMesh,
     if solids.is_empty() {
         return Err(step_err(path, "no solid or shell (MANIFOLD_SOLID_BREP, BREP_WITH_VOIDS, SHELL_BASED_SURFACE_MODEL) in the file"));
     }
+    let styles = file.styles();
     let mut placements_total = 0usize;
     for solid in &solids {
         let placements = file.placements(solid.rep, path)?;
@@ -155,15 +180,15 @@ pub fn read_with(path: &str, bytes: &[u8], budget: Duration) -> Result<StepMesh,
             return Err(step_err(path, format!("more than {MAX_PLACEMENTS} placed solids, the limit per STEP file")));
         }
         let scale = file.length_scale(solid.rep).map_err(|e| step_err(path, e))?;
-        if out.colour.is_none() {
-            out.colour = file.colour(solid.id);
-        }
         let mut local = ir::Mesh::default();
+        let mut local_colours: Vec<(std::ops::Range<usize>, [f64; 3])> = Vec::new();
         for &(shell, flip) in &solid.shells {
             if start.elapsed() > budget {
                 return Err(step_err(path, format!("meshing took longer than the limit of {} s per STEP file", budget.as_secs())));
             }
-            mesh_shell(&table, &file, path, solid, shell, flip, scale, &mut local, &mut out);
+            let shell_colour = styles.of(shell).or_else(|| styles.of(solid.id));
+            let mut sink = Sink { mesh: &mut local, colours: &mut local_colours, colour: shell_colour, styles: &styles };
+            mesh_shell(&table, &file, path, solid, shell, flip, scale, &mut sink, &mut out);
             if local.triangles.len().saturating_mul(placements.len().max(1)) > super::MAX_TRIANGLES {
                 return Err(err(path, MeshErrorKind::TooManyTriangles { max: super::MAX_TRIANGLES }));
             }
@@ -177,6 +202,9 @@ pub fn read_with(path: &str, bytes: &[u8], budget: Duration) -> Result<StepMesh,
             }
             out.mesh.triangles.extend(local.triangles.iter().map(|t| [t[0] + base, t[1] + base, t[2] + base]));
             out.solids.push(first..out.mesh.triangles.len());
+            for (r, c) in &local_colours {
+                push_run(&mut out.colours, r.start + first..r.end + first, *c);
+            }
             if out.mesh.triangles.len() > super::MAX_TRIANGLES {
                 return Err(err(path, MeshErrorKind::TooManyTriangles { max: super::MAX_TRIANGLES }));
             }
@@ -185,7 +213,61 @@ pub fn read_with(path: &str, bytes: &[u8], budget: Duration) -> Result<StepMesh,
     if start.elapsed() > budget {
         return Err(step_err(path, format!("meshing took longer than the limit of {} s per STEP file", budget.as_secs())));
     }
+    out.colour = dominant_colour(&out.mesh, &out.colours);
     Ok(out)
+}
+
+/// Appends a run of coloured triangles, merged with the last run when it continues it.
+fn push_run(runs: &mut Vec<(std::ops::Range<usize>, [f64; 3])>, r: std::ops::Range<usize>, c: [f64; 3]) {
+    if r.is_empty() {
+        return;
+    }
+    if let Some((last, lc)) = runs.last_mut() {
+        if last.end == r.start && *lc == c {
+            last.end = r.end;
+            return;
+        }
+    }
+    runs.push((r, c));
+}
+
+/// The colour of the largest area of `mesh`, counting the uncoloured triangles as one more
+/// candidate (`None` when they win or nothing is coloured).
+fn dominant_colour(mesh: &ir::Mesh, runs: &[(std::ops::Range<usize>, [f64; 3])]) -> Option<[f64; 3]> {
+    if runs.is_empty() {
+        return None;
+    }
+    let area = |t: &[u32; 3]| {
+        let p = t.map(|i| {
+            let v = mesh.vertices.get(i as usize).copied().unwrap_or_default();
+            Vector3::new(f64::from(v[0]), f64::from(v[1]), f64::from(v[2]))
+        });
+        (p[1] - p[0]).cross(&(p[2] - p[0])).norm() / 2.0
+    };
+    let total: f64 = mesh.triangles.iter().map(area).sum();
+    let mut by_colour: Vec<([f64; 3], f64)> = Vec::new();
+    for (r, c) in runs {
+        let a: f64 = mesh.triangles.get(r.clone()).unwrap_or_default().iter().map(area).sum();
+        match by_colour.iter_mut().find(|(k, _)| k == c) {
+            Some((_, s)) => *s += a,
+            None => by_colour.push((*c, a)),
+        }
+    }
+    let coloured: f64 = by_colour.iter().map(|(_, a)| a).sum();
+    let (best, a) = by_colour.into_iter().fold(None::<([f64; 3], f64)>, |m, (c, a)| match m {
+        Some((_, b)) if b >= a => m,
+        _ => Some((c, a)),
+    })?;
+    (a >= total - coloured).then_some(best)
+}
+
+/// Where [`mesh_shell`] puts a shell's triangles: the solid's mesh, its colour runs, the colour
+/// of the shell (its own style, else its solid's) and the file's styles for its faces.
+struct Sink<'a> {
+    mesh: &'a mut ir::Mesh,
+    colours: &'a mut Vec<(std::ops::Range<usize>, [f64; 3])>,
+    colour: Option<[f64; 3]>,
+    styles: &'a Styles,
 }
 
 /// Meshes one shell into `local` (metres, the solid's representation frame).
@@ -198,9 +280,10 @@ fn mesh_shell(
     shell: u64,
     flip: bool,
     scale: f64,
-    local: &mut ir::Mesh,
+    sink: &mut Sink,
     out: &mut StepMesh,
 ) {
+    let local = &mut *sink.mesh;
     let what = format!("shell #{shell} of {} #{}", solid.kind, solid.id);
     let Some(holder) = table.shell.get(&shell) else {
         out.warnings.push(format!("{path}: {what} is not a shell the geometry reader knows; the solid has no shape from it"));
@@ -253,18 +336,28 @@ fn mesh_shell(
             ));
         }
     }
-    let meshed = catch_unwind(AssertUnwindSafe(|| {
-        let diag = bbox_diagonal(&compressed.vertices) * scale;
-        let mut tol = CHORDAL_TOLERANCE.max(RELATIVE_TOLERANCE * diag);
-        // Small round faces: a chord 0.05 mm off a 10 mm cylinder loses 0.7 % of its section;
-        // bound the deviation by the smallest radius too (not below half the default: finer
-        // costs seconds on parts with small holes).
-        if let Some(r) = file.min_radius(&face_ids) {
-            tol = tol.min((ANGULAR_TOLERANCE * r * scale).max(CHORDAL_TOLERANCE / 2.0));
+    let mut compressed = compressed;
+    // `cut` asserts on degenerate knot vectors: a panic leaves the shell's edges as read.
+    let mut edges = compressed.edges.clone();
+    match catch_unwind(AssertUnwindSafe(|| trim_unclamped_edges(&mut edges))) {
+        Ok(n) => {
+            out.trimmed_edges += n;
+            compressed.edges = edges;
         }
-        let tol = tol / scale;
-        compressed.robust_triangulation(tol)
-    }));
+        Err(_) => {
+            out.warnings.push(format!("{path}: {what}: its periodic B-spline edges could not be cut to their domain; meshed as read"))
+        }
+    }
+    let diag = bbox_diagonal(&compressed.vertices) * scale;
+    let mut tol = CHORDAL_TOLERANCE.max(RELATIVE_TOLERANCE * diag);
+    // Small round faces: a chord 0.05 mm off a 10 mm cylinder loses 0.7 % of its section;
+    // bound the deviation by the smallest radius too (not below half the default: finer
+    // costs seconds on parts with small holes).
+    if let Some(r) = file.min_radius(&face_ids) {
+        tol = tol.min((ANGULAR_TOLERANCE * r * scale).max(CHORDAL_TOLERANCE / 2.0));
+    }
+    let tol = tol / scale;
+    let meshed = catch_unwind(AssertUnwindSafe(|| compressed.robust_triangulation(tol)));
     let poly = match meshed {
         Ok(p) => p,
         Err(_) => {
@@ -300,6 +393,7 @@ fn mesh_shell(
             continue;
         }
         let n = positions.len();
+        let first = local.triangles.len();
         for tri in surface.faces().triangle_iter() {
             let idx = [tri[0].pos, tri[1].pos, tri[2].pos];
             if idx.iter().any(|&i| i >= n) {
@@ -308,7 +402,8 @@ fn mesh_shell(
             let t = idx.map(|i| base + i as u32);
             local.triangles.push(if reverse { [t[0], t[2], t[1]] } else { t });
         }
-        let ratio = boundary_ratio(surface, &face.boundaries, &poly.edges);
+        let tris: Vec<[usize; 3]> = surface.faces().triangle_iter().map(|t| [t[0].pos, t[1].pos, t[2].pos]).collect();
+        let ratio = boundary_ratio(positions, &tris, &face.boundaries, &poly.edges);
         if ratio < MIN_BOUNDARY_RATIO {
             out.suspect_faces += 1;
             out.warnings.push(format!(
@@ -317,21 +412,83 @@ fn mesh_shell(
                 ratio * 100.0
             ));
         }
+        // The face's own colour (its entity, or the face an ORIENTED_FACE uses), else the shell's.
+        let colour = id.and_then(|f| sink.styles.of(f).or_else(|| file.face_record_id(f).and_then(|g| sink.styles.of(g)))).or(sink.colour);
+        if let Some(c) = colour {
+            push_run(sink.colours, first..local.triangles.len(), c);
+        }
     }
 }
+
+/// Restricts every B-spline edge curve with an unclamped knot vector (a periodic curve: Onshape
+/// writes the closed intersection curve of two cylinders as `B_SPLINE_CURVE_WITH_KNOTS` with
+/// single knots from -0.0068 on) to the domain where its basis functions sum to one,
+/// `[t_p, t_(m-p)]` for degree p and knots t_0..t_m. `truck-stepio` keeps such a curve whole and
+/// `truck-meshalgo` samples it over `[t_0, t_m]`, where the curve falls towards the origin: the
+/// edge's polyline then starts and ends at (0, 0, 0), and both faces bounded by it lose the hole
+/// it cuts (`Arm 011.step`, `Base.step`). Returns how many edges were trimmed.
+fn trim_unclamped_edges(edges: &mut [truck_topology::compress::CompressedEdge<truck_stepio::r#in::alias::Curve3D>]) -> usize {
+    use truck_meshalgo::rexport_polymesh::Cut;
+    use truck_stepio::r#in::alias::Curve3D;
+    let mut n = 0;
+    for e in edges {
+        let (p, first, lo, hi, last) = match &e.curve {
+            Curve3D::BSplineCurve(c) => {
+                let k = c.knot_vec();
+                let (p, m) = (c.degree(), k.len() - 1);
+                if m < 2 * p + 1 {
+                    continue;
+                }
+                (p, k[0], k[p], k[m - p], k[m])
+            }
+            Curve3D::NurbsCurve(c) => {
+                let k = c.knot_vec();
+                let (p, m) = (c.degree(), k.len() - 1);
+                if m < 2 * p + 1 {
+                    continue;
+                }
+                (p, k[0], k[p], k[m - p], k[m])
+            }
+            _ => continue,
+        };
+        if p == 0 || lo.partial_cmp(&hi) != Some(std::cmp::Ordering::Less) || (first >= lo && last <= hi) {
+            continue;
+        }
+        match &mut e.curve {
+            Curve3D::BSplineCurve(c) => {
+                let mut mid = if first < lo { c.cut(lo) } else { c.clone() };
+                if last > hi {
+                    mid.cut(hi);
+                }
+                *c = mid;
+            }
+            Curve3D::NurbsCurve(c) => {
+                let mut mid = if first < lo { c.cut(lo) } else { c.clone() };
+                if last > hi {
+                    mid.cut(hi);
+                }
+                *c = mid;
+            }
+            _ => continue,
+        }
+        n += 1;
+    }
+    n
+}
+
+type MeshedEdge =
+    truck_topology::compress::CompressedEdge<truck_meshalgo::rexport_polymesh::PolylineCurve<truck_meshalgo::rexport_polymesh::Point3>>;
 
 /// The length of a face's boundary in its mesh (triangle edges used once) over the length of its
 /// B-rep boundary loops (the edges' polylines, shared with the neighbouring faces). A face
 /// meshed over a hole it should have cut (seen in `truck-meshalgo` on trimmed B-spline and
 /// cylinder faces with inner loops) lacks the hole's rim: the ratio falls below one.
 fn boundary_ratio(
-    poly: &truck_meshalgo::rexport_polymesh::PolygonMesh,
+    p: &[truck_meshalgo::rexport_polymesh::Point3],
+    triangles: &[[usize; 3]],
     loops: &[Vec<truck_topology::compress::CompressedEdgeIndex>],
-    edges: &[truck_topology::compress::CompressedEdge<
-        truck_meshalgo::rexport_polymesh::PolylineCurve<truck_meshalgo::rexport_polymesh::Point3>,
-    >],
+    edges: &[MeshedEdge],
 ) -> f64 {
-    let p = poly.positions();
     // Vertices welded by position (a periodic surface's mesh repeats its seam's vertices), to
     // 1e-9 of the face's size.
     let size = p.iter().flat_map(|q| [q.x.abs(), q.y.abs(), q.z.abs()]).fold(0.0f64, f64::max).max(1e-300);
@@ -345,9 +502,9 @@ fn boundary_ratio(
         })
         .collect();
     let mut count: HashMap<(usize, usize), (u32, usize, usize)> = HashMap::new();
-    for t in poly.faces().triangle_iter() {
+    for t in triangles {
         for k in 0..3 {
-            let (i, j) = (t[k].pos, t[(k + 1) % 3].pos);
+            let (i, j) = (t[k], t[(k + 1) % 3]);
             let (Some(&a), Some(&b)) = (welded.get(i), welded.get(j)) else { continue };
             if a != b {
                 count.entry((a.min(b), a.max(b))).or_insert((0, i, j)).0 += 1;
@@ -607,6 +764,11 @@ impl<'a> Entities<'a> {
         Some(rec)
     }
 
+    /// The face an `ORIENTED_FACE` uses (`None` for any other entity).
+    fn face_record_id(&self, face: u64) -> Option<u64> {
+        params(self.record(face, "ORIENTED_FACE")?).get(2).and_then(as_ref)
+    }
+
     /// The surface entity of a face (`ADVANCED_FACE(name, bounds, surface, same_sense)`).
     fn face_surface(&self, face: u64) -> Option<u64> {
         params(self.face_record(face)?).get(2).and_then(as_ref)
@@ -783,38 +945,110 @@ impl<'a> Entities<'a> {
         Ok(distinct)
     }
 
-    /// The colour styled onto `item` (`STYLED_ITEM` ... `COLOUR_RGB`).
-    fn colour(&self, item: u64) -> Option<[f64; 3]> {
-        for e in self.by_id.values() {
-            for r in records(e) {
-                if r.name != "STYLED_ITEM" && r.name != "OVER_RIDING_STYLED_ITEM" {
-                    continue;
-                }
+    /// Every surface colour styled onto an item of the file (see [`Styles`]).
+    fn styles(&self) -> Styles {
+        let mut out = Styles::default();
+        let mut ids: Vec<u64> = self.by_id.keys().copied().collect();
+        ids.sort_unstable();
+        for id in ids {
+            for r in records(self.by_id[&id]) {
+                // STYLED_ITEM(name, styles, item); its subtypes OVER_RIDING_STYLED_ITEM(..,
+                // over_ridden_style) and CONTEXT_DEPENDENT_OVER_RIDING_STYLED_ITEM(.., style_context).
+                let rank = match r.name.as_str() {
+                    "STYLED_ITEM" => 0,
+                    "OVER_RIDING_STYLED_ITEM" | "CONTEXT_DEPENDENT_OVER_RIDING_STYLED_ITEM" => 1,
+                    _ => continue,
+                };
                 let p = params(r);
-                if p.get(2).and_then(as_ref) != Some(item) {
+                let Some(item) = p.get(2).and_then(as_ref) else { continue };
+                let Some(c) = p.get(1).map(as_refs).unwrap_or_default().into_iter().find_map(|s| self.assignment_colour(s)) else {
                     continue;
-                }
-                let mut stack: Vec<(u64, usize)> = p.get(1).map(as_refs).unwrap_or_default().into_iter().map(|s| (s, 0)).collect();
-                while let Some((id, depth)) = stack.pop() {
-                    let Some(e) = self.by_id.get(&id) else { continue };
-                    for r in records(e) {
-                        if r.name == "COLOUR_RGB" {
-                            let q = params(r);
-                            let c = [1, 2, 3].map(|k| q.get(k).and_then(as_real).unwrap_or(f64::NAN));
-                            if c.iter().all(|x| x.is_finite()) {
-                                return Some(c.map(|x| x.clamp(0.0, 1.0)));
-                            }
-                        }
-                        if depth < 8 {
-                            for q in params(r) {
-                                stack.extend(as_refs(q).into_iter().map(|s| (s, depth + 1)));
-                            }
-                        }
+                };
+                match out.by_item.get(&item) {
+                    Some((r0, _)) if *r0 > rank => {}
+                    // The same rank twice: the first in file order stays.
+                    Some((r0, _)) if *r0 == rank => {}
+                    _ => {
+                        out.by_item.insert(item, (rank, c));
                     }
                 }
             }
         }
+        out
+    }
+
+    /// The surface colour of a `PRESENTATION_STYLE_ASSIGNMENT` (or `PRESENTATION_STYLE_BY_CONTEXT`):
+    /// `SURFACE_STYLE_USAGE(side, SURFACE_SIDE_STYLE(name, (SURFACE_STYLE_FILL_AREA(
+    /// FILL_AREA_STYLE(name, (FILL_AREA_STYLE_COLOUR(name, colour)))), ...)))`, or a
+    /// `SURFACE_STYLE_RENDERING(method, colour)` among the side style's elements (AP242). Curve
+    /// and point styles (edge colours) are not surface colours and are not taken.
+    fn assignment_colour(&self, psa: u64) -> Option<[f64; 3]> {
+        let rec = self.record(psa, "PRESENTATION_STYLE_ASSIGNMENT").or_else(|| self.record(psa, "PRESENTATION_STYLE_BY_CONTEXT"))?;
+        for style in params(rec).first().map(as_refs).unwrap_or_default() {
+            let Some(usage) = self.record(style, "SURFACE_STYLE_USAGE") else { continue };
+            let Some(side) = params(usage).get(1).and_then(as_ref).and_then(|s| self.record(s, "SURFACE_SIDE_STYLE")) else { continue };
+            for element in params(side).get(1).map(as_refs).unwrap_or_default() {
+                let colour = if let Some(fill) = self.record(element, "SURFACE_STYLE_FILL_AREA") {
+                    params(fill)
+                        .first()
+                        .and_then(as_ref)
+                        .and_then(|f| self.record(f, "FILL_AREA_STYLE"))
+                        .map(|f| params(f).get(1).map(as_refs).unwrap_or_default())
+                        .unwrap_or_default()
+                        .into_iter()
+                        .filter_map(|c| self.record(c, "FILL_AREA_STYLE_COLOUR"))
+                        .find_map(|c| params(c).get(1).and_then(as_ref).and_then(|c| self.colour_value(c)))
+                } else {
+                    let rendering = self
+                        .record(element, "SURFACE_STYLE_RENDERING")
+                        .or_else(|| self.record(element, "SURFACE_STYLE_RENDERING_WITH_PROPERTIES"));
+                    rendering.and_then(|r| params(r).get(1).and_then(as_ref)).and_then(|c| self.colour_value(c))
+                };
+                if colour.is_some() {
+                    return colour;
+                }
+            }
+        }
         None
+    }
+
+    /// A `COLOUR_RGB` (components clamped to 0..1), or a `DRAUGHTING_PRE_DEFINED_COLOUR` by
+    /// name (ISO 10303-46's eight: red, green, blue, yellow, magenta, cyan, black, white).
+    fn colour_value(&self, id: u64) -> Option<[f64; 3]> {
+        if let Some(r) = self.record(id, "COLOUR_RGB") {
+            let q = params(r);
+            let c = [1, 2, 3].map(|k| q.get(k).and_then(as_real).unwrap_or(f64::NAN));
+            return c.iter().all(|x| x.is_finite()).then(|| c.map(|x| x.clamp(0.0, 1.0)));
+        }
+        let r = self.record(id, "DRAUGHTING_PRE_DEFINED_COLOUR")?;
+        let Some(Parameter::String(name)) = params(r).first() else { return None };
+        Some(match name.trim().trim_matches('\'').to_ascii_lowercase().as_str() {
+            "red" => [1.0, 0.0, 0.0],
+            "green" => [0.0, 1.0, 0.0],
+            "blue" => [0.0, 0.0, 1.0],
+            "yellow" => [1.0, 1.0, 0.0],
+            "magenta" => [1.0, 0.0, 1.0],
+            "cyan" => [0.0, 1.0, 1.0],
+            "black" => [0.0, 0.0, 0.0],
+            "white" => [1.0, 1.0, 1.0],
+            _ => return None,
+        })
+    }
+}
+
+/// The surface colours styled onto a file's items (solids, shells, faces), by item entity: an
+/// `OVER_RIDING_STYLED_ITEM` (Onshape, SolidWorks: a face coloured apart from its part) before a
+/// plain `STYLED_ITEM`, else the first in file order. Which presentation representation lists
+/// the styled item (`MECHANICAL_DESIGN_GEOMETRIC_PRESENTATION_REPRESENTATION`, a
+/// `DRAUGHTING_MODEL`) does not matter: every styled item of the file is taken.
+#[derive(Default)]
+struct Styles {
+    by_item: HashMap<u64, (u8, [f64; 3])>,
+}
+
+impl Styles {
+    fn of(&self, item: u64) -> Option<[f64; 3]> {
+        self.by_item.get(&item).map(|(_, c)| *c)
     }
 }
 

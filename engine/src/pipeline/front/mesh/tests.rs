@@ -829,3 +829,184 @@ fn step_limits_and_garbage_are_errors_naming_the_file() {
     );
     assert!(!m.mesh.triangles.is_empty());
 }
+
+/// The entity id of the `k`-th entity named `name` in a STEP text (`#n=NAME(`).
+fn entity_id(text: &str, name: &str, k: usize) -> u64 {
+    let ids: Vec<u64> = text
+        .lines()
+        .filter_map(|l| {
+            let (id, rest) = l.strip_prefix('#')?.split_once('=')?;
+            rest.starts_with(&format!("{name}(")).then(|| id.parse().ok()).flatten()
+        })
+        .collect();
+    ids[k]
+}
+
+/// A surface style chain from entity `#n` on: `#n+6` is the `PRESENTATION_STYLE_ASSIGNMENT` of
+/// colour entity `colour` (written as `#n`).
+fn surface_style(n: u64, colour: &str) -> String {
+    format!(
+        "#{n}={colour};\n#{}=FILL_AREA_STYLE_COLOUR('',#{n});\n#{}=FILL_AREA_STYLE('',(#{}));\n#{}=SURFACE_STYLE_FILL_AREA(#{});\n\
+         #{}=SURFACE_SIDE_STYLE('',(#{}));\n#{}=SURFACE_STYLE_USAGE(.BOTH.,#{});\n#{}=PRESENTATION_STYLE_ASSIGNMENT((#{}));\n",
+        n + 1,
+        n + 2,
+        n + 1,
+        n + 3,
+        n + 2,
+        n + 4,
+        n + 3,
+        n + 5,
+        n + 4,
+        n + 6,
+        n + 5
+    )
+}
+
+/// The tetrahedron with its solid (or shell) styled `COLOUR_RGB(0.2, 0.4, 0.6)`, the faces of
+/// `red` (indices in file order) over-ridden with the predefined colour red, and face 0 given an
+/// edge colour (a curve style: not a surface colour).
+fn coloured_tetra(on: &str, red: &[usize]) -> String {
+    let plain = tetra_step("SI_UNIT(.MILLI.,.METRE.)", 10.0, "");
+    let target = entity_id(&plain, on, 0);
+    let mut extra = surface_style(900, "COLOUR_RGB('',0.2,0.4,0.6)");
+    extra += &format!("#907=STYLED_ITEM('',(#906),#{target});\n");
+    extra += &surface_style(910, "DRAUGHTING_PRE_DEFINED_COLOUR('red')");
+    for (k, f) in red.iter().enumerate() {
+        extra += &format!("#{}=OVER_RIDING_STYLED_ITEM('',(#916),#{},#907);\n", 920 + k, entity_id(&plain, "ADVANCED_FACE", *f));
+    }
+    extra += "#930=COLOUR_RGB('',0.0,1.0,0.0);\n#931=CURVE_STYLE('',$,$,#930);\n#932=PRESENTATION_STYLE_ASSIGNMENT((#931));\n";
+    extra += &format!("#933=STYLED_ITEM('',(#932),#{});\n", entity_id(&plain, "ADVANCED_FACE", 0));
+    extra += "#934=MECHANICAL_DESIGN_GEOMETRIC_PRESENTATION_REPRESENTATION('',(#907,#920,#933),#999);\n";
+    tetra_step("SI_UNIT(.MILLI.,.METRE.)", 10.0, &extra)
+}
+
+/// The colour of each triangle of a STEP mesh (`None`: uncoloured).
+fn triangle_colours(m: &step::StepMesh) -> Vec<Option<[f64; 3]>> {
+    let mut out = vec![None; m.mesh.triangles.len()];
+    for (r, c) in &m.colours {
+        for t in r.clone() {
+            out[t] = Some(*c);
+        }
+    }
+    out
+}
+
+#[test]
+fn step_colours_per_face_over_their_solid() {
+    const BLUE: [f64; 3] = [0.2, 0.4, 0.6];
+    const RED: [f64; 3] = [1.0, 0.0, 0.0];
+    // No style: no colour.
+    let plain = step::read("t.step", tetra_step("SI_UNIT(.MILLI.,.METRE.)", 10.0, "").as_bytes()).expect("plain");
+    assert_eq!((plain.colour, plain.colours.len()), (None, 0));
+    // The slanted face (the last, 86.6 mm^2) red over a blue solid (three faces of 50 mm^2): the
+    // body's colour is the solid's, the red face's triangles are red, the edge style is ignored.
+    for on in ["MANIFOLD_SOLID_BREP", "CLOSED_SHELL"] {
+        let m = step::read("t.step", coloured_tetra(on, &[3]).as_bytes()).expect("coloured");
+        assert_eq!(m.warnings, Vec::<String>::new());
+        let per = triangle_colours(&m);
+        assert!(per.iter().all(Option::is_some), "every face coloured through its {on}: {per:?}");
+        let red = per.iter().filter(|c| **c == Some(RED)).count();
+        assert!(red >= 1 && red < per.len(), "{on}: {red} of {} triangles red", per.len());
+        // Faces are meshed in order: the last face's triangles are the red ones.
+        assert_eq!(per.last().copied().flatten(), Some(RED), "{on}");
+        assert_eq!(per[0], Some(BLUE), "{on}: face 0 keeps its solid's colour (an edge colour is not a surface colour)");
+        assert_eq!(m.colour, Some(BLUE), "{on}: the blue faces have the larger area");
+    }
+    // Two faces red (136.6 mm^2) against two blue (100 mm^2): the body is red.
+    let m = step::read("t.step", coloured_tetra("MANIFOLD_SOLID_BREP", &[1, 3]).as_bytes()).expect("coloured");
+    assert_eq!(m.colour, Some(RED));
+    // Only the faces styled, the larger part of the surface unstyled: no body colour.
+    let only_face = coloured_tetra("MANIFOLD_SOLID_BREP", &[3]).replace("#907=STYLED_ITEM('',(#906),", "#907=STYLED_ITEM('',(#999),");
+    let m = step::read("t.step", only_face.as_bytes()).expect("face only");
+    assert!(triangle_colours(&m).iter().any(Option::is_none), "the solid is not styled: faces without a colour");
+    assert_eq!(m.colour, None, "86.6 mm^2 red against 150 mm^2 without a colour");
+}
+
+/// A second-generation export of one part, its geometry `T.step`; `visual` goes into the part
+/// (a `VisualProperties` element or nothing).
+fn one_part_export(visual: &str) -> String {
+    format!(
+        r#"<?xml version="1.0" encoding="utf-8"?>
+<SimscapeMultibodyImportXML xmlns="urn:mathworks:SimscapeMultibody:import" version="2.0">
+  <Created by="t" from="Onshape" on="1/1/25" using="Simscape Multibody Exporter"/>
+  <ModelUnits length="millimeter" mass="kilogram"/>
+  <DataUnits length="meter" mass="kilogram"/>
+  <RootAssembly name="tet" uid="A">
+    <InstanceTree>
+      <Instance entityUid="P1" grounded="true" name="Base &lt;1&gt;" uid="b">
+        <Transform><Rotation>1 0 0 0 1 0 0 0 1</Rotation><Translation>0 0 0</Translation></Transform>
+      </Instance>
+      <Instance entityUid="P1" name="Arm &lt;1&gt;" uid="a">
+        <Transform><Rotation>1 0 0 0 1 0 0 0 1</Rotation><Translation>0 0 0.02</Translation></Transform>
+      </Instance>
+    </InstanceTree>
+    <Joints>
+      <Revolute name="j1">
+        <BaseFrame><InstancePath><Uid>b</Uid></InstancePath>
+          <Transform><Rotation>1 0 0 0 1 0 0 0 1</Rotation><Translation>0 0 0.02</Translation></Transform></BaseFrame>
+        <FollowerFrame><InstancePath><Uid>a</Uid></InstancePath>
+          <Transform><Rotation>1 0 0 0 1 0 0 0 1</Rotation><Translation>0 0 0</Translation></Transform></FollowerFrame>
+      </Revolute>
+    </Joints>
+  </RootAssembly>
+  <Parts>
+    <Part name="P" uid="P1">
+      <MassProperties><Mass>0.0005</Mass><CenterOfMass>0.0025 0.0025 0.0025</CenterOfMass><Inertia>1e-8 1e-8 1e-8 0 0 0</Inertia></MassProperties>
+      <GeometryFile name="T.step" type="STEP"/>
+      {visual}
+    </Part>
+  </Parts>
+</SimscapeMultibodyImportXML>"#
+    )
+}
+
+#[test]
+fn step_colour_reaches_the_body_and_the_step_cache_counts_tessellations() {
+    use crate::pipeline::front::bundle::Bundle;
+    use crate::pipeline::{self, Options};
+    let bundle = |visual: &str, step: &str| {
+        Bundle::from_files(
+            "b",
+            [("tet.xml".to_string(), one_part_export(visual).into_bytes()), ("T.step".to_string(), step.as_bytes().to_vec())],
+        )
+        .expect("bundle")
+    };
+    let red_faces = coloured_tetra("MANIFOLD_SOLID_BREP", &[1, 3]);
+    // No Diffuse in the XML: both bodies take the STEP file's colour (report, Modelica).
+    let out = pipeline::convert(&bundle("", &red_faces), &Options::default()).expect("converts");
+    assert_eq!(out.report.bodies.len(), 2);
+    assert!(
+        out.report.bodies.iter().all(|b| b.color == [1.0, 0.0, 0.0]),
+        "{:?}",
+        out.report.bodies.iter().map(|b| b.color).collect::<Vec<_>>()
+    );
+    let mech = out
+        .files
+        .iter()
+        .find(|(p, _)| p.ends_with("/Mechanics.mo"))
+        .map(|(_, b)| String::from_utf8_lossy(&b.bytes()).to_string())
+        .expect("Mechanics.mo");
+    assert!(mech.contains("{255, 0, 0}"), "the shapes are drawn red");
+    // One file named by two bodies: meshed once.
+    assert_eq!(out.step, pipeline::passes::geometry::StepCounts { meshed: 1, cached: 0 });
+    // The XML's Diffuse stays.
+    let diffuse = r#"<VisualProperties><Diffuse r="0" g="0.5" b="0" a="1"/></VisualProperties>"#;
+    let out = pipeline::convert(&bundle(diffuse, &red_faces), &Options::default()).expect("converts");
+    assert!(out.report.bodies.iter().all(|b| b.color == [0.0, 0.5, 0.0]));
+
+    // The cache: a second conversion of the same files meshes nothing; a changed file is meshed.
+    let cache = std::sync::Arc::new(step::MemoryStepCache::default());
+    let shared: std::sync::Arc<dyn step::StepCache> = cache.clone();
+    let opts = Options { step_cache: Some(shared), write_shapes: false, ..Options::default() };
+    let first = pipeline::convert(&bundle("", &red_faces), &opts).expect("converts");
+    assert_eq!((first.step.meshed, first.step.cached), (1, 0));
+    let again = pipeline::convert(&bundle("", &red_faces), &opts).expect("converts");
+    assert_eq!((again.step.meshed, again.step.cached), (0, 1), "the same STEP file again is not meshed");
+    assert!(again.files == first.files, "the same package from the cache");
+    let other = coloured_tetra("MANIFOLD_SOLID_BREP", &[3]);
+    let changed = pipeline::convert(&bundle("", &other), &opts).expect("converts");
+    assert_eq!((changed.step.meshed, changed.step.cached), (1, 0), "a changed file is meshed");
+    assert!(changed.report.bodies.iter().all(|b| b.color == [0.2, 0.4, 0.6]));
+    let (hits, misses, entries, _) = cache.stats();
+    assert_eq!((hits, misses, entries), (1, 2, 2), "one lookup per distinct file and conversion");
+}
