@@ -193,6 +193,7 @@ pub fn read_with(path: &str, bytes: &[u8], budget: Duration) -> Result<StepMesh,
                 return Err(err(path, MeshErrorKind::TooManyTriangles { max: super::MAX_TRIANGLES }));
             }
         }
+        weld(&mut local, &mut local_colours);
         for p in &placements {
             let first = out.mesh.triangles.len();
             let base = out.mesh.vertices.len() as u32;
@@ -215,6 +216,63 @@ pub fn read_with(path: &str, bytes: &[u8], budget: Duration) -> Result<StepMesh,
     }
     out.colour = dominant_colour(&out.mesh, &out.colours);
     Ok(out)
+}
+
+/// Distance within which the corners of neighbouring faces are one vertex: far below the chordal
+/// tolerance (0.025 mm at the finest), far above the rounding of a point evaluated on two faces'
+/// surfaces.
+const WELD_DISTANCE: f32 = 1e-7;
+
+/// Joins the faces of a solid: the tessellator meshes each face with its own vertices, though
+/// neighbouring faces take their shared edge's points from the same polyline (evaluated on each
+/// face's surface, so equal up to rounding). Corners within [`WELD_DISTANCE`] become one vertex,
+/// so a closed B-rep gives a closed mesh (collision shapes decompose it instead of taking its
+/// hull); triangles left with two equal corners are dropped and the colour runs follow.
+fn weld(mesh: &mut ir::Mesh, runs: &mut [(std::ops::Range<usize>, [f64; 3])]) {
+    let cell = |v: &[f32; 3]| v.map(|x| (x / WELD_DISTANCE).floor() as i64);
+    let mut grid: HashMap<[i64; 3], Vec<u32>> = HashMap::with_capacity(mesh.vertices.len());
+    let mut vertices: Vec<[f32; 3]> = Vec::with_capacity(mesh.vertices.len() / 2 + 1);
+    let mut map: Vec<u32> = Vec::with_capacity(mesh.vertices.len());
+    for v in &mesh.vertices {
+        let c = cell(v);
+        let mut found = None;
+        'search: for dx in -1..=1 {
+            for dy in -1..=1 {
+                for dz in -1..=1 {
+                    for &k in grid.get(&[c[0] + dx, c[1] + dy, c[2] + dz]).map_or(&[][..], Vec::as_slice) {
+                        let w = vertices[k as usize];
+                        if (0..3).all(|i| (w[i] - v[i]).abs() <= WELD_DISTANCE) {
+                            found = Some(k);
+                            break 'search;
+                        }
+                    }
+                }
+            }
+        }
+        let k = found.unwrap_or_else(|| {
+            vertices.push(*v);
+            let k = vertices.len() as u32 - 1;
+            grid.entry(c).or_default().push(k);
+            k
+        });
+        map.push(k);
+    }
+    // kept[k]: triangles kept among the first k.
+    let mut kept = Vec::with_capacity(mesh.triangles.len() + 1);
+    kept.push(0usize);
+    let mut triangles = Vec::with_capacity(mesh.triangles.len());
+    for t in &mesh.triangles {
+        let w = t.map(|i| map.get(i as usize).copied().unwrap_or(0));
+        if w[0] != w[1] && w[1] != w[2] && w[0] != w[2] {
+            triangles.push(w);
+        }
+        kept.push(triangles.len());
+    }
+    for (r, _) in runs.iter_mut() {
+        *r = kept[r.start.min(kept.len() - 1)]..kept[r.end.min(kept.len() - 1)];
+    }
+    mesh.vertices = vertices;
+    mesh.triangles = triangles;
 }
 
 /// Appends a run of coloured triangles, merged with the last run when it continues it.

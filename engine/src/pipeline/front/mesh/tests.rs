@@ -765,6 +765,20 @@ fn step_tetrahedron_in_millimetres() {
     // Through the extension dispatch too.
     let mesh = read("parts/T.STEP", text.as_bytes()).expect("by extension");
     assert_eq!(mesh.triangles.len(), m.mesh.triangles.len());
+    // The faces are joined: every edge is shared by exactly two triangles, in opposite
+    // directions (a closed, consistently wound mesh), and the four corners are four vertices.
+    let mut edges: std::collections::HashMap<(u32, u32), i32> = std::collections::HashMap::new();
+    for t in &m.mesh.triangles {
+        for k in 0..3 {
+            let (a, b) = (t[k], t[(k + 1) % 3]);
+            *edges.entry((a.min(b), a.max(b))).or_default() += if a < b { 1 } else { -1 };
+        }
+    }
+    let uses = |e: &(u32, u32)| {
+        m.mesh.triangles.iter().filter(|t| (0..3).any(|k| (t[k].min(t[(k + 1) % 3]), t[k].max(t[(k + 1) % 3])) == *e)).count()
+    };
+    assert!(edges.iter().all(|(e, d)| *d == 0 && uses(e) == 2), "open edges: {edges:?}");
+    assert_eq!(m.mesh.vertices.len(), 4, "{:?}", m.mesh.vertices);
 }
 
 #[test]
