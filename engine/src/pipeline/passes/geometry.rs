@@ -162,10 +162,9 @@ type Meshed = HashMap<StepKey, Result<mesh::step::StepMesh, MeshError>>;
 type Cached = HashMap<StepKey, Arc<mesh::step::StepMesh>>;
 
 /// The distinct STEP files the bodies name: those the cache holds (looked up once each), and the
-/// others meshed, on up to two
-/// threads (the STEP files of an export are meshed in about half the time on this project's
-/// 2-core machine; each file is still meshed by one thread). Errors are kept for the body loop,
-/// which reports the first in body order.
+/// others meshed on up to two threads (the STEP files of an export are meshed in about half the
+/// time on this project's 2-core machine; each file is still meshed by one thread). Errors are
+/// kept for the body loop, which reports the first in body order.
 fn mesh_step_files(model: &Model, bundle: &Bundle, xml_path: &str, step_cache: Option<&dyn StepCache>) -> (Meshed, Cached) {
     let mut todo: Vec<(StepKey, &str, &[u8])> = Vec::new();
     let mut cached = HashMap::new();
@@ -186,26 +185,38 @@ fn mesh_step_files(model: &Model, bundle: &Bundle, xml_path: &str, step_cache: O
         }
         todo.push((key, path, bytes));
     }
-    // Largest first, dealt alternately: the two threads get about equal work.
     todo.sort_by_key(|(_, _, b)| std::cmp::Reverse(b.len()));
-    let threads = std::thread::available_parallelism().map_or(1, |n| n.get()).clamp(1, 2);
-    let mut out = HashMap::new();
-    std::thread::scope(|scope| {
-        let handles: Vec<_> = (0..threads)
-            .map(|t| {
-                let mine: Vec<(StepKey, &str, &[u8])> = todo.iter().skip(t).step_by(threads).copied().collect();
-                scope.spawn(move || mine.into_iter().map(|(k, p, b)| (k, mesh::step::read(p, b))).collect::<Vec<_>>())
-            })
-            .collect();
-        for h in handles {
-            // `read` contains its own panics; a thread that still panicked leaves its files to the
-            // body loop, which reads them again and reports the error.
-            if let Ok(v) = h.join() {
-                out.extend(v);
-            }
-        }
-    });
+    // `read` contains its own panics.
+    let out = on_two_threads(&todo, || true, |&(k, p, b)| (k, mesh::step::read(p, b))).into_iter().collect();
     (out, cached)
+}
+
+/// `work` on each item of `todo` (in that order: largest first balances the threads), on up to
+/// two threads that each take the next item while `go_on()`. A thread that panicked leaves its
+/// items out: the body loop reads their files again and reports the error.
+fn on_two_threads<T: Sync, R: Send>(todo: &[T], go_on: impl Fn() -> bool + Sync, work: impl Fn(&T) -> R + Sync) -> Vec<R> {
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    let next = AtomicUsize::new(0);
+    let run = || {
+        let mut mine = Vec::new();
+        while go_on() {
+            let Some(item) = todo.get(next.fetch_add(1, Ordering::Relaxed)) else { break };
+            mine.push(work(item));
+        }
+        mine
+    };
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+    if threads < 2 || todo.len() < 2 {
+        return std::panic::catch_unwind(std::panic::AssertUnwindSafe(run)).unwrap_or_default();
+    }
+    std::thread::scope(|scope| {
+        let helper = scope.spawn(run);
+        let mut out = std::panic::catch_unwind(std::panic::AssertUnwindSafe(run)).unwrap_or_default();
+        if let Ok(v) = helper.join() {
+            out.extend(v);
+        }
+        out
+    })
 }
 
 /// Parses the distinct STL files the bodies name on up to two threads (37 MB of ASCII STL for
@@ -226,35 +237,18 @@ fn parse_stl_files<'b>(model: &Model, bundle: &'b Bundle, xml_path: &str, scale:
         }
         todo.push((path, bundle.get(path).unwrap_or_default()));
     }
-    let threads = std::thread::available_parallelism().map_or(1, |n| n.get()).clamp(1, 2);
-    if todo.len() < 2 || threads < 2 {
-        return HashMap::new();
-    }
     todo.sort_by_key(|(_, b)| std::cmp::Reverse(b.len()));
-    let next = AtomicUsize::new(0);
     let triangles = AtomicUsize::new(0);
-    let work = || {
-        let mut mine = Vec::new();
-        while triangles.load(Ordering::Relaxed) <= MAX_BUNDLE_TRIANGLES {
-            let Some(&(path, bytes)) = todo.get(next.fetch_add(1, Ordering::Relaxed)) else { break };
-            let r = stl::parse(path, bytes, scale);
-            if let Ok(m) = &r {
-                triangles.fetch_add(m.triangles.len(), Ordering::Relaxed);
-            }
-            mine.push((path, r));
+    let go_on = || triangles.load(Ordering::Relaxed) <= MAX_BUNDLE_TRIANGLES;
+    on_two_threads(&todo, go_on, |&(path, bytes)| {
+        let r = stl::parse(path, bytes, scale);
+        if let Ok(m) = &r {
+            triangles.fetch_add(m.triangles.len(), Ordering::Relaxed);
         }
-        mine
-    };
-    let mut out = HashMap::new();
-    std::thread::scope(|scope| {
-        let helper = scope.spawn(work);
-        out.extend(work());
-        // A helper that panicked leaves its files to the body loop, which parses them again.
-        if let Ok(v) = helper.join() {
-            out.extend(v);
-        }
-    });
-    out
+        (path, r)
+    })
+    .into_iter()
+    .collect()
 }
 
 /// A STEP file, by its extension.

@@ -95,8 +95,9 @@ fn num_in(x: f64, scale: f64) -> String {
         return "0.0".to_string();
     }
     // Most CAD numbers are short already: rounding to 15 digits would give the same value.
-    if crate::numtext::significant_digits(x) <= 15 {
-        return crate::numtext::dbg(x);
+    let shortest = crate::numtext::dbg(x);
+    if crate::numtext::digits_in(&shortest) <= 15 {
+        return shortest;
     }
     let rounded: f64 = format!("{x:.14e}").parse().unwrap_or(x);
     let x = if rounded == 0.0 || rounded.abs() < 1e-12 * scale { 0.0 } else { rounded };
