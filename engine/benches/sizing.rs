@@ -78,15 +78,18 @@ fn settings() -> Settings {
     }
 }
 
-fn size_all(t: &[f64], axes: &[Axis], drives: &[(Motor, Gear)], catalog: &Catalog) -> Vec<DriveSizing> {
+fn size_all(t: &[f64], axes: &[Axis], drives: &[(Motor, Gear)], catalog: &Catalog, threads: usize) -> Vec<DriveSizing> {
     let settings = settings();
-    axes.iter()
+    let jobs: Vec<sizing::DriveJob> = axes
+        .iter()
         .zip(drives)
-        .map(|(a, (m, g))| {
-            let load = AxisLoad { joint: &a.name, kind: a.kind, t, qd: &a.qd, qdd: &a.qdd, tau: &a.tau, load_inertia: a.inertia };
-            sizing::size_drive(load, m, g, Some(catalog), &settings, sizing::TOP).expect("sizes")
+        .map(|(a, (m, g))| sizing::DriveJob {
+            load: AxisLoad { joint: &a.name, kind: a.kind, t, qd: &a.qd, qdd: &a.qdd, tau: &a.tau, load_inertia: a.inertia },
+            motor: m.clone(),
+            gear: g.clone(),
         })
-        .collect()
+        .collect();
+    sizing::size_drives(&jobs, Some(catalog), &settings, sizing::TOP, threads).into_iter().map(|r| r.expect("sizes")).collect()
 }
 
 /// The catalogue size, for timing: the seed's motors and gears repeated (48 motors, 36
@@ -142,22 +145,34 @@ fn bench(c: &mut Criterion) {
     let t: Vec<f64> = (0..=10_000).map(|i| i as f64 * 1e-3).collect();
     let axes = axes(&t);
     let big = full_catalog(&catalog);
+    let threads = sizing::sizing_threads();
     for (what, cat) in [("the seed library", &catalog), ("a 48-motor x 36-gear catalogue", &big)] {
         let combos = cat.gears.len() * cat.motors.len();
-        let start = Instant::now();
-        let runs = 10;
-        for _ in 0..runs {
-            black_box(size_all(&t, &axes, &drives, cat));
+        for n in [1, threads] {
+            let start = Instant::now();
+            let runs = 10;
+            for _ in 0..runs {
+                black_box(size_all(&t, &axes, &drives, cat, n));
+            }
+            let per = start.elapsed().as_secs_f64() / runs as f64;
+            println!(
+                "sizing: 6 axes x {} samples against {combos} motor x gear combinations of {what} (each axis tries those whose gear fits it), {n} thread(s): {:.1} ms per full sizing",
+                t.len(),
+                per * 1e3,
+            );
         }
-        let per = start.elapsed().as_secs_f64() / runs as f64;
-        println!(
-            "sizing: 6 axes x {} samples against {combos} motor x gear combinations of {what} (each axis tries those whose gear fits it): {:.1} ms per full sizing",
-            t.len(),
-            per * 1e3,
-        );
     }
-    c.bench_function("sizing/6 axes, 10 s at 1 kHz, whole seed library", |b| b.iter(|| black_box(size_all(&t, &axes, &drives, &catalog))));
-    c.bench_function("sizing/6 axes, 10 s at 1 kHz, 48 motors x 36 gears", |b| b.iter(|| black_box(size_all(&t, &axes, &drives, &big))));
+    assert_eq!(
+        size_all(&t, &axes, &drives, &catalog, 1),
+        size_all(&t, &axes, &drives, &catalog, threads),
+        "the same on one thread and on several"
+    );
+    c.bench_function("sizing/6 axes, 10 s at 1 kHz, whole seed library", |b| {
+        b.iter(|| black_box(size_all(&t, &axes, &drives, &catalog, threads)))
+    });
+    c.bench_function("sizing/6 axes, 10 s at 1 kHz, 48 motors x 36 gears", |b| {
+        b.iter(|| black_box(size_all(&t, &axes, &drives, &big, threads)))
+    });
 }
 
 /// The service's whole path for one motion on a real mechanism: plan a 10 s motion of the

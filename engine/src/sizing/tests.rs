@@ -651,3 +651,31 @@ fn ac_servo_without_resistance() {
     let d = size(&back, JointKind::Revolute, 0.0, &dc, &gear(10.0, 0.8), &bus);
     assert!(check(&d, "voltage").value.is_some() && check(&d, "braking").value.is_some());
 }
+
+/// Several drives sized at once on several threads: the same results, in the order given, as
+/// sized one by one against the seed catalogue (a drive that does not fit stays an error in its
+/// place).
+#[test]
+fn drives_sized_together_on_threads() {
+    let cat = Catalog::from_library(&seed::library().expect("seed"));
+    let loads: Vec<Samples> = (0..5).map(|k| Samples::new(301, move |t| (1.0 + k as f64 * t, 2.0, 0.05 * (1 + k) as f64))).collect();
+    let jobs: Vec<DriveJob> = loads
+        .iter()
+        .enumerate()
+        .map(|(k, s)| DriveJob {
+            load: AxisLoad { joint: ["J1", "J2", "J3", "J4", "J5"][k], ..s.load(JointKind::Revolute, 0.01 * (1 + k) as f64) },
+            motor: motor(),
+            // The fourth drive's gear is a screw: it does not fit a revolute joint.
+            gear: if k == 3 { Gear { lead: Some(0.005), ..gear(10.0, 0.9) } } else { gear(10.0 + k as f64, 0.9) },
+        })
+        .collect();
+    let one: Vec<_> = jobs.iter().map(|j| size_drive(j.load, &j.motor, &j.gear, Some(&cat), &with_amp(), TOP)).collect();
+    for threads in [1, 2, 3, 8] {
+        let together = size_drives(&jobs, Some(&cat), &with_amp(), TOP, threads);
+        assert_eq!(together, one, "{threads} threads");
+    }
+    assert!(one[3].is_err() && one.iter().filter(|r| r.is_ok()).count() == 4);
+    let names: Vec<&str> = one.iter().filter_map(|r| r.as_ref().ok()).map(|d| d.joint.as_str()).collect();
+    assert_eq!(names, ["J1", "J2", "J3", "J5"]);
+    assert!(one[0].as_ref().expect("J1").alternatives.len() == TOP, "ranked against the catalogue");
+}

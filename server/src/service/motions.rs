@@ -612,6 +612,14 @@ pub fn sizing(
             report.orphaned.push(d.joint.clone());
         }
     }
+    // Each driven joint's drive is prepared here (in the joints' order), then all are sized at
+    // once on the machine's cores; a drive whose parts cannot be read is not sized.
+    enum Pending {
+        Sized { job: usize, effort: Option<f64> },
+        NotSized(NotSized),
+    }
+    let mut jobs: Vec<cad2mo_engine::sizing::DriveJob> = Vec::new();
+    let mut pending: Vec<Pending> = Vec::new();
     for (i, axis) in p.axes.iter().enumerate() {
         if !driven.contains(&i) {
             continue;
@@ -635,7 +643,7 @@ pub fn sizing(
                     }
                     report.undriven.push(u)
                 }
-                Err(e) => report.not_sized.push(NotSized { joint: axis.name.clone(), problem: e.to_string() }),
+                Err(e) => pending.push(Pending::NotSized(NotSized { joint: axis.name.clone(), problem: e.to_string() })),
             }
             continue;
         };
@@ -648,25 +656,45 @@ pub fn sizing(
                 None => Ok(Vec::new()),
             }
         };
-        let sized = overrides("motor", &d.motor.1)
+        let parts = overrides("motor", &d.motor.1)
             .and_then(|mo| cad2mo_engine::sizing::parts::motor(&d.motor.1, &d.motor.0, &mo).map_err(|e| e.to_string()))
             .and_then(|motor| {
                 let go = overrides("gear", &d.gear.1)?;
                 let gear = cad2mo_engine::sizing::parts::gear(&d.gear.1, &d.gear.0, &go).map_err(|e| e.to_string())?;
-                cad2mo_engine::sizing::size_drive(load, &motor, &gear, Some(catalog), settings, cad2mo_engine::sizing::TOP)
-                    .map_err(|e| e.to_string())
+                Ok((motor, gear))
             });
-        match sized {
-            Ok(mut s) => {
-                if let Some(e) = effort {
-                    let c = cad2mo_engine::sizing::effort_check(load.kind, load.tau, e);
-                    s.pass &= c.pass;
-                    s.passes_with_reserve &= c.pass;
-                    s.checks.push(c);
-                }
-                report.drives.push(s)
+        match parts {
+            Ok((motor, gear)) => {
+                pending.push(Pending::Sized { job: jobs.len(), effort });
+                jobs.push(cad2mo_engine::sizing::DriveJob { load, motor, gear });
             }
-            Err(problem) => report.not_sized.push(NotSized { joint: axis.name.clone(), problem }),
+            Err(problem) => pending.push(Pending::NotSized(NotSized { joint: axis.name.clone(), problem })),
+        }
+    }
+    let threads = cad2mo_engine::sizing::sizing_threads();
+    let mut sized = cad2mo_engine::sizing::size_drives(&jobs, Some(catalog), settings, cad2mo_engine::sizing::TOP, threads)
+        .into_iter()
+        .map(Some)
+        .collect::<Vec<_>>();
+    for entry in pending {
+        match entry {
+            Pending::NotSized(n) => report.not_sized.push(n),
+            Pending::Sized { job, effort } => {
+                let load = &jobs[job].load;
+                match sized[job].take() {
+                    Some(Ok(mut s)) => {
+                        if let Some(e) = effort {
+                            let c = cad2mo_engine::sizing::effort_check(load.kind, load.tau, e);
+                            s.pass &= c.pass;
+                            s.passes_with_reserve &= c.pass;
+                            s.checks.push(c);
+                        }
+                        report.drives.push(s)
+                    }
+                    Some(Err(e)) => report.not_sized.push(NotSized { joint: load.joint.to_string(), problem: e.to_string() }),
+                    None => {}
+                }
+            }
         }
     }
     Ok(report)
