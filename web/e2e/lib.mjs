@@ -21,6 +21,57 @@ export async function waitForModel(page) {
 }
 
 /**
+ * Page-side helpers the pixel checks share, installed before the page's scripts run (call once,
+ * right after the page is made): `window.e2ePixels.read(canvas)` renders the viewer and reads a
+ * canvas (default: the 3D view) back at its CSS size; `window.e2ePixels.count(px, rect, box, margin)`
+ * counts, every second pixel of `rect`, those that differ from the background inside `box`
+ * (grown by `margin`) and outside it, with a signature of where they are.
+ */
+export async function installPixelProbe(page) {
+  await page.addInitScript(() => {
+    const bg = [0xf3, 0xf5, 0xf8];
+    window.e2ePixels = {
+      async read(canvas) {
+        const v = window.cad2moViewer;
+        await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
+        v.render();
+        const c = canvas || v.renderer.domElement;
+        const w = c.clientWidth;
+        const h = c.clientHeight;
+        const ctx = Object.assign(document.createElement('canvas'), { width: w, height: h }).getContext('2d');
+        ctx.drawImage(c, 0, 0, w, h);
+        return { img: ctx.getImageData(0, 0, w, h).data, w, h };
+      },
+      drawn({ img, w }, x, y) {
+        const i = (y * w + x) * 4;
+        return Math.abs(img[i] - bg[0]) + Math.abs(img[i + 1] - bg[1]) + Math.abs(img[i + 2] - bg[2]) > 24;
+      },
+      count(px, rect, box, margin) {
+        let all = 0;
+        let hit = 0;
+        let outside = 0;
+        let stray = 0;
+        let sig = 0;
+        for (let y = rect.y0; y < rect.y1; y += 2) {
+          for (let x = rect.x0; x < rect.x1; x += 2) {
+            const inside = x >= box.x0 - margin && x <= box.x1 + margin && y >= box.y0 - margin && y <= box.y1 + margin;
+            const d = this.drawn(px, x, y);
+            if (inside) all++;
+            else outside++;
+            if (d) {
+              if (inside) hit++;
+              else stray++;
+              sig = (sig * 31 + (x - rect.x0) * 7 + (y - rect.y0)) % 1000003;
+            }
+          }
+        }
+        return { all, hit, outside, stray, share: hit / Math.max(all, 1), sig };
+      },
+    };
+  });
+}
+
+/**
  * Reads the 3D canvas back and counts pixels that differ from the background, inside and outside
  * the screen rectangle the model's meshes project to (the grid and world frame are hidden first
  * and shown again after). Asserts the model is drawn where it should be and nowhere else.
@@ -30,31 +81,11 @@ export async function checkModelPixels(page, { hidden = 0 } = {}) {
   await grid.uncheck();
   const pixels = await page.evaluate(async () => {
     const v = window.cad2moViewer;
-    await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
-    v.render();
-    const c = v.renderer.domElement;
-    const w = c.clientWidth;
-    const h = c.clientHeight;
-    const ctx = Object.assign(document.createElement('canvas'), { width: w, height: h }).getContext('2d');
-    ctx.drawImage(c, 0, 0, w, h);
-    const img = ctx.getImageData(0, 0, w, h).data;
-    const bg = [0xf3, 0xf5, 0xf8];
-    const differs = (x, y) => {
-      const i = (y * w + x) * 4;
-      return Math.abs(img[i] - bg[0]) + Math.abs(img[i + 1] - bg[1]) + Math.abs(img[i + 2] - bg[2]) > 24;
-    };
+    const px = await window.e2ePixels.read();
+    const { img, w, h } = px;
     const box = v.screenBox();
-    let inside = 0;
-    let insideHit = 0;
-    let outside = 0;
-    let outsideHit = 0;
-    for (let y = 0; y < h; y += 2) {
-      for (let x = 0; x < w; x += 2) {
-        const isIn = x >= box.x0 - 1 && x <= box.x1 + 1 && y >= box.y0 - 1 && y <= box.y1 + 1;
-        const hit = differs(x, y);
-        if (isIn) { inside++; insideHit += hit; } else { outside++; outsideHit += hit; }
-      }
-    }
+    const n = window.e2ePixels.count(px, { x0: 0, y0: 0, x1: w, y1: h }, box, 1);
+    const [inside, insideHit, outside, outsideHit] = [n.all, n.hit, n.outside, n.stray];
     // CAD colours: pixels whose chromaticity is that of a body's colour, inside its own box.
     // Shading scales linear r, g and b alike, so r/(r+g+b) etc. of the linear values survive
     // it (the canvas holds sRGB); greys are skipped.

@@ -4,7 +4,7 @@
 // result says how long its bundle took (upload, conversion, checks).
 import assert from 'node:assert/strict';
 import { basename, join } from 'node:path';
-import { launch, waitForModel, checkModelPixels } from './lib.mjs';
+import { launch, waitForModel, checkModelPixels, installPixelProbe } from './lib.mjs';
 import { checkWorkspace, checkUnits, checkViewports, checkDiagram, checkVR, checkPrismatic } from './workspace.mjs';
 
 const url = process.env.CAD2MO_URL;
@@ -15,6 +15,7 @@ const browser = await launch();
 const results = [];
 try {
   const page = await browser.newPage({ viewport: { width: 1280, height: 860 } });
+  await installPixelProbe(page);
   const errors = [];
   page.on('pageerror', (e) => errors.push(String(e)));
   page.setDefaultTimeout(60_000);

@@ -258,37 +258,12 @@ export async function checkViewports(page, { name, shots }) {
   const count = () =>
     page.evaluate(async () => {
       const v = window.cad2moViewer;
-      await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
-      v.render();
-      const c = v.renderer.domElement;
-      const w = c.clientWidth;
-      const h = c.clientHeight;
-      const ctx = Object.assign(document.createElement('canvas'), { width: w, height: h }).getContext('2d');
-      ctx.drawImage(c, 0, 0, w, h);
-      const img = ctx.getImageData(0, 0, w, h).data;
-      const bg = [0xf3, 0xf5, 0xf8];
+      const px = await window.e2ePixels.read();
       // Per viewport: drawn pixels inside the box the model projects to through that viewport's
       // own camera (share), and outside it (stray: a stale or misplaced picture).
       return v.viewports().map((vp) => {
-        const box = v.screenBox(undefined, vp);
-        let hit = 0;
-        let all = 0;
-        let stray = 0;
-        let sig = 0;
-        for (let y = vp.y + 2; y < vp.y + vp.h - 2; y += 2) {
-          for (let x = vp.x + 2; x < vp.x + vp.w - 2; x += 2) {
-            const i = (y * w + x) * 4;
-            const inside = x >= box.x0 - 2 && x <= box.x1 + 2 && y >= box.y0 - 2 && y <= box.y1 + 2;
-            const d = Math.abs(img[i] - bg[0]) + Math.abs(img[i + 1] - bg[1]) + Math.abs(img[i + 2] - bg[2]);
-            if (inside) all++;
-            if (d > 24) {
-              if (inside) hit++;
-              else stray++;
-              sig = (sig * 31 + (x - vp.x) * 7 + (y - vp.y)) % 1000003;
-            }
-          }
-        }
-        return { name: vp.name, share: hit / Math.max(all, 1), stray, sig };
+        const n = window.e2ePixels.count(px, { x0: vp.x + 2, y0: vp.y + 2, x1: vp.x + vp.w - 2, y1: vp.y + vp.h - 2 }, v.screenBox(undefined, vp), 2);
+        return { name: vp.name, share: n.share, stray: n.stray, sig: n.sig };
       });
     });
   await page.getByLabel('Viewports').selectOption('quad');
@@ -310,31 +285,11 @@ export async function checkViewports(page, { name, shots }) {
   const [left] = await count();
   const right = await page.evaluate(async () => {
     const v = window.cad2moViewer;
-    await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
-    v.render();
-    const c = v.dual.canvas;
-    const w = c.clientWidth;
-    const h = c.clientHeight;
-    const ctx = Object.assign(document.createElement('canvas'), { width: w, height: h }).getContext('2d');
-    ctx.drawImage(c, 0, 0, w, h);
-    const img = ctx.getImageData(0, 0, w, h).data;
+    const px = await window.e2ePixels.read(v.dual.canvas);
+    const { w, h } = px;
     const box = v.screenBox(undefined, { x: 0, y: 0, w, h, camera: v.eye('right', v.dual.win.innerWidth / v.dual.win.innerHeight) });
-    let hit = 0;
-    let all = 0;
-    let stray = 0;
-    for (let y = 2; y < h - 2; y += 2) {
-      for (let x = 2; x < w - 2; x += 2) {
-        const i = (y * w + x) * 4;
-        const inside = x >= box.x0 - 2 && x <= box.x1 + 2 && y >= box.y0 - 2 && y <= box.y1 + 2;
-        const d = Math.abs(img[i] - 0xf3) + Math.abs(img[i + 1] - 0xf5) + Math.abs(img[i + 2] - 0xf8);
-        if (inside) all++;
-        if (d > 24) {
-          if (inside) hit++;
-          else stray++;
-        }
-      }
-    }
-    return { name: 'right', share: hit / Math.max(all, 1), stray, size: [w, h], title: v.dual.win.document.title, eyes: Math.hypot(...[12, 13, 14].map((k) => v.eye('left', 1).matrixWorld.elements[k] - v.eye('right', 1).matrixWorld.elements[k])) };
+    const { share, stray } = window.e2ePixels.count(px, { x0: 2, y0: 2, x1: w - 2, y1: h - 2 }, box, 2);
+    return { name: 'right', share, stray, size: [w, h], title: v.dual.win.document.title, eyes: Math.hypot(...[12, 13, 14].map((k) => v.eye('left', 1).matrixWorld.elements[k] - v.eye('right', 1).matrixWorld.elements[k])) };
   });
   await page.screenshot({ path: join(shots, `ws-${name}-dual.png`) });
   await popup.screenshot({ path: join(shots, `ws-${name}-dual-right-eye.png`) });
