@@ -153,6 +153,22 @@ export async function motionSteps(page, { joint, step, shot, downloads, strict }
   assert.ok(Math.abs(stepped - Math.min(Number(paused) + sample, end)) < 2e-3 && (await player.getAttribute('data-playing')) === 'false', `Step » moves one sample (${sample} s) from ${paused}: ${stepped}`);
   await page.locator('#motion-step-back').click();
   assert.ok(Math.abs(Number(await player.getAttribute('data-time')) - Math.max(stepped - sample, 0)) < 2e-3, '« Step goes back one sample');
+  // The same with the keys, the focus on the Step button: → and ← step, Space plays and pauses
+  // (not clicking the focused button), End and Home go to the ends.
+  const back1 = Number(await player.getAttribute('data-time'));
+  await page.locator('#motion-step').focus();
+  await page.keyboard.press('ArrowRight');
+  assert.ok(Math.abs(Number(await player.getAttribute('data-time')) - Math.min(back1 + sample, end)) < 2e-3, '→ steps forward');
+  await page.keyboard.press('ArrowLeft');
+  assert.ok(Math.abs(Number(await player.getAttribute('data-time')) - back1) < 2e-3, '← steps back');
+  await page.keyboard.press('Space');
+  assert.equal(await player.getAttribute('data-playing'), 'true', 'Space plays');
+  await page.keyboard.press('Space');
+  assert.equal(await player.getAttribute('data-playing'), 'false', 'Space pauses');
+  await page.keyboard.press('End');
+  assert.ok(Math.abs(Number(await player.getAttribute('data-time')) - end) < 2e-3, 'End goes to the end');
+  await page.keyboard.press('Home');
+  assert.equal(Number(await player.getAttribute('data-time')), 0, 'Home goes to the start');
   const duration = Number(await page.locator('#motion-scrub').getAttribute('max'));
   assert.ok(duration > 0, 'the motion takes time');
   await page.locator('#motion-scrub').fill(String(duration / 2));

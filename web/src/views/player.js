@@ -3,10 +3,24 @@
 // scrubber, the clock, speed 0.1×–4× (10× where offered) and loop, and for the live view Go live.
 // Its clock (player-data.js) holds the state; this draws it and runs it on animation frames.
 // The box carries data-time and data-playing (and data-live for a live player), which the
-// end-to-end tests read.
+// end-to-end tests read. Keys, while a control of the player has the focus (see KEYS): Space or
+// K plays and pauses, ← → (or comma, period) step, Home and End go to the ends, G goes live.
 
 import { h, fill, num } from '../ui.js';
 import { PlayerClock, SPEEDS } from './player-data.js';
+
+/** The player's keys (while one of its controls has the focus; the scrubber keeps its own arrows). */
+export const KEYS = {
+  ' ': 'toggle',
+  k: 'toggle',
+  ArrowLeft: 'back',
+  ArrowRight: 'forward',
+  ',': 'back',
+  '.': 'forward',
+  Home: 'start',
+  End: 'end',
+  g: 'live',
+};
 
 /**
  * @param {HTMLElement} box  where the controls go (with any heading given to `show`)
@@ -27,6 +41,32 @@ export function createPlayer(box, { id, onTime, label = 'Time', speeds = SPEEDS.
   let ui = null; // the controls while shown
   box.dataset.playing = 'false';
   if (live) box.dataset.live = 'true';
+  box.addEventListener('keydown', (e) => {
+    if (!ui || e.ctrlKey || e.metaKey || e.altKey) return;
+    // Typing in a field of the box's headings is not a command.
+    const t = e.target;
+    if (t.isContentEditable || t.tagName === 'TEXTAREA' || (t.tagName === 'INPUT' && !['range', 'checkbox'].includes(t.type))) return;
+    const what = KEYS[e.key.length === 1 ? e.key.toLowerCase() : e.key];
+    // The scrubber and the speed list keep their arrows, Home and End, the Loop box its Space;
+    // Space on a button is taken here (play/pause) instead of clicking it.
+    const own = e.target === ui.scrub || e.target.tagName === 'SELECT';
+    const check = e.target.type === 'checkbox';
+    if (!what || (own && what !== 'toggle' && what !== 'live') || (check && e.key === ' ') || (what === 'live' && !live)) return;
+    e.preventDefault();
+    const actions = {
+      toggle: () => clock.toggle(),
+      back: () => clock.step(-1),
+      forward: () => clock.step(1),
+      start: () => clock.seek(clock.start),
+      end: () => clock.seek(clock.stop),
+      live: () => clock.goLive(),
+    };
+    act(actions[what]);
+  });
+  // Space released on a focused button would click it: the key handler already acted.
+  box.addEventListener('keyup', (e) => {
+    if (ui && e.key === ' ' && e.target.tagName === 'BUTTON') e.preventDefault();
+  });
 
   function sync() {
     const t = clock.time;
@@ -85,9 +125,9 @@ export function createPlayer(box, { id, onTime, label = 'Time', speeds = SPEEDS.
     const scrub = h('input', { type: 'range', id: `${id}-scrub`, min: String(start), max: String(Math.max(start, stop)), step: dt > 0 ? String(dt) : 'any', value: String(start) });
     scrub.addEventListener('input', () => act(() => clock.seek(Number(scrub.value))));
     const out = h('output', { for: scrub.id, class: 'motion-clock' });
-    const play = h('button', { type: 'button', id: `${id}-play`, onclick: () => act(() => clock.toggle()) }, 'Play');
-    const back = h('button', { type: 'button', id: `${id}-step-back`, class: 'step', 'aria-label': `Step back one ${unit}`, title: `Step back one ${unit}`, onclick: () => act(() => clock.step(-1)) }, '« Step');
-    const fwd = h('button', { type: 'button', id: `${id}-step`, class: 'step', 'aria-label': `Step forward one ${unit}`, title: `Step forward one ${unit}`, onclick: () => act(() => clock.step(1)) }, 'Step »');
+    const play = h('button', { type: 'button', id: `${id}-play`, title: 'Play or pause (Space, K)', 'aria-keyshortcuts': 'Space K', onclick: () => act(() => clock.toggle()) }, 'Play');
+    const back = h('button', { type: 'button', id: `${id}-step-back`, class: 'step', 'aria-label': `Step back one ${unit}`, title: `Step back one ${unit} (←, comma)`, 'aria-keyshortcuts': 'ArrowLeft Comma', onclick: () => act(() => clock.step(-1)) }, '« Step');
+    const fwd = h('button', { type: 'button', id: `${id}-step`, class: 'step', 'aria-label': `Step forward one ${unit}`, title: `Step forward one ${unit} (→, period)`, 'aria-keyshortcuts': 'ArrowRight Period', onclick: () => act(() => clock.step(1)) }, 'Step »');
     const speed = h('select', { id: `${id}-speed` }, speeds.map((s) => h('option', { value: String(s), selected: s === clock.speed }, `${s}×`)));
     speed.addEventListener('change', () => clock.setSpeed(speed.value));
     const loop = h('input', { type: 'checkbox', id: `${id}-loop`, checked: clock.loop });
