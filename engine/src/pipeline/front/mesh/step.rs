@@ -35,6 +35,12 @@
 //! over a hole it should have cut is caught by comparing the length of the face mesh's rim with
 //! its boundary loops' and warned about, naming the face ([`MIN_BOUNDARY_RATIO`]).
 //!
+//! A solid's faces are joined afterwards: corners within 0.1 µm ([`weld`]), then corners of open
+//! edges within 10 µm ([`join_open_corners`]: a shared edge evaluated on two trimmed B-spline
+//! surfaces) and T-junctions ([`close_t_junctions`]: an edge sampled more densely on one side),
+//! so a closed B-rep gives a closed mesh (collision shapes decompose it instead of taking its
+//! hull).
+//!
 //! Periodic B-spline edges: `truck-stepio` keeps an edge's B-spline curve whole and
 //! `truck-meshalgo` samples it over its whole knot vector; for an unclamped (periodic) knot
 //! vector the ends of that range lie outside the curve's domain and fall to the origin, so the
@@ -108,6 +114,11 @@ pub struct StepMesh {
     /// B-spline edge curves restricted to their knot vector's valid domain (see
     /// `trim_unclamped_edges`).
     pub trimmed_edges: usize,
+    /// Vertices of one face inserted into the edge of its neighbour that passes through them
+    /// (T-junctions, see [`close_t_junctions`]).
+    pub t_junctions: usize,
+    /// Corners on open edges joined to one within a few µm (see [`join_open_corners`]).
+    pub joined_corners: usize,
     /// What could not be meshed faithfully (faces, shells), each naming the entity.
     pub warnings: Vec<String>,
 }
@@ -182,18 +193,24 @@ pub fn read_with(path: &str, bytes: &[u8], budget: Duration) -> Result<StepMesh,
         let scale = file.length_scale(solid.rep).map_err(|e| step_err(path, e))?;
         let mut local = ir::Mesh::default();
         let mut local_colours: Vec<(std::ops::Range<usize>, [f64; 3])> = Vec::new();
+        // The largest chordal deviation the solid's shells were meshed with (m).
+        let mut chord = 0.0f64;
         for &(shell, flip) in &solid.shells {
             if start.elapsed() > budget {
                 return Err(step_err(path, format!("meshing took longer than the limit of {} s per STEP file", budget.as_secs())));
             }
             let shell_colour = styles.of(shell).or_else(|| styles.of(solid.id));
             let mut sink = Sink { mesh: &mut local, colours: &mut local_colours, colour: shell_colour, styles: &styles };
-            mesh_shell(&table, &file, path, solid, shell, flip, scale, &mut sink, &mut out);
+            if let Some(t) = mesh_shell(&table, &file, path, solid, shell, flip, scale, &mut sink, &mut out) {
+                chord = chord.max(t);
+            }
             if local.triangles.len().saturating_mul(placements.len().max(1)) > super::MAX_TRIANGLES {
                 return Err(err(path, MeshErrorKind::TooManyTriangles { max: super::MAX_TRIANGLES }));
             }
         }
         weld(&mut local, &mut local_colours);
+        out.joined_corners += join_open_corners(&mut local, &mut local_colours, chord);
+        out.t_junctions += close_t_junctions(&mut local, &mut local_colours, chord);
         for p in &placements {
             let first = out.mesh.triangles.len();
             let base = out.mesh.vertices.len() as u32;
@@ -275,6 +292,206 @@ fn weld(mesh: &mut ir::Mesh, runs: &mut [(std::ops::Range<usize>, [f64; 3])]) {
     mesh.triangles = triangles;
 }
 
+/// Farthest apart two corners on the open edges of a solid's mesh may be and still be joined by
+/// [`join_open_corners`]: the tessellator evaluates a shared edge's points on each face's own
+/// surface, and on trimmed B-spline faces the two evaluations differ by up to a few µm (the
+/// Onshape arm: 1–10 µm); below the finest chordal tolerance (25 µm), so no feature the
+/// tessellation keeps is narrower.
+const GAP_DISTANCE: f64 = 1e-5;
+
+/// Joins the corners of open edges (directed edges without their reverse) that lie within
+/// `min(GAP_DISTANCE, chord / 2)` of each other, the first in vertex order standing for the
+/// others: the gaps [`weld`] leaves between neighbouring faces whose shared edge points were
+/// evaluated a few µm apart. Corners inside a face's mesh are never moved. Triangles left with
+/// two equal corners are dropped, the colour runs follow, unused vertices are removed. Returns
+/// how many corners were joined to another.
+pub(super) fn join_open_corners(mesh: &mut ir::Mesh, runs: &mut [(std::ops::Range<usize>, [f64; 3])], chord: f64) -> usize {
+    let dist = GAP_DISTANCE.min(chord / 2.0);
+    if dist <= 0.0 || !dist.is_finite() {
+        return 0;
+    }
+    let mut directed: HashSet<(u32, u32)> = HashSet::with_capacity(mesh.triangles.len() * 3);
+    for t in &mesh.triangles {
+        for k in 0..3 {
+            directed.insert((t[k], t[(k + 1) % 3]));
+        }
+    }
+    let mut open: Vec<u32> = directed.iter().filter(|(a, b)| !directed.contains(&(*b, *a))).flat_map(|&(a, b)| [a, b]).collect();
+    open.sort_unstable();
+    open.dedup();
+    if open.is_empty() {
+        return 0;
+    }
+    let at = |i: u32| {
+        mesh.vertices.get(i as usize).map_or(Vector3::zeros(), |v| Vector3::new(f64::from(v[0]), f64::from(v[1]), f64::from(v[2])))
+    };
+    let cell = |p: &Vector3<f64>| [p.x, p.y, p.z].map(|x| (x / dist).floor() as i64);
+    let mut grid: HashMap<[i64; 3], Vec<u32>> = HashMap::with_capacity(open.len());
+    let mut map: HashMap<u32, u32> = HashMap::new();
+    for &v in &open {
+        let p = at(v);
+        let c = cell(&p);
+        let mut found = None;
+        'search: for dx in -1..=1 {
+            for dy in -1..=1 {
+                for dz in -1..=1 {
+                    for &k in grid.get(&[c[0] + dx, c[1] + dy, c[2] + dz]).map_or(&[][..], Vec::as_slice) {
+                        if (at(k) - p).norm() <= dist {
+                            found = Some(k);
+                            break 'search;
+                        }
+                    }
+                }
+            }
+        }
+        match found {
+            Some(k) => {
+                map.insert(v, k);
+            }
+            None => grid.entry(c).or_default().push(v),
+        }
+    }
+    if map.is_empty() {
+        return 0;
+    }
+    let mut kept = Vec::with_capacity(mesh.triangles.len() + 1);
+    kept.push(0usize);
+    let mut triangles = Vec::with_capacity(mesh.triangles.len());
+    for t in &mesh.triangles {
+        let w = t.map(|i| map.get(&i).copied().unwrap_or(i));
+        if w[0] != w[1] && w[1] != w[2] && w[0] != w[2] {
+            triangles.push(w);
+        }
+        kept.push(triangles.len());
+    }
+    for (r, _) in runs.iter_mut() {
+        *r = kept[r.start.min(kept.len() - 1)]..kept[r.end.min(kept.len() - 1)];
+    }
+    // Keep the vertices still used, in their order.
+    let mut new_index = vec![u32::MAX; mesh.vertices.len()];
+    for t in &triangles {
+        for &i in t {
+            if let Some(n) = new_index.get_mut(i as usize) {
+                *n = 0;
+            }
+        }
+    }
+    let mut vertices = Vec::with_capacity(mesh.vertices.len());
+    for (i, v) in mesh.vertices.iter().enumerate() {
+        if new_index[i] == 0 {
+            new_index[i] = vertices.len() as u32;
+            vertices.push(*v);
+        }
+    }
+    mesh.triangles = triangles.into_iter().map(|t| t.map(|i| new_index[i as usize])).collect();
+    mesh.vertices = vertices;
+    map.len()
+}
+
+/// Most open edges times open-edge vertices [`close_t_junctions`] compares in one pass; a solid
+/// with more keeps its T-junctions (its collision shape is then its hull, as before).
+const MAX_JUNCTION_PAIRS: usize = 20_000_000;
+
+/// Closes T-junctions: the tessellator samples an edge shared by two faces separately for each
+/// face where the faces need different densities, so one face's corner lies on the other face's
+/// triangle edge instead of being a corner of it, and the welded mesh stays open there. Each open
+/// edge (a directed edge without its reverse) gets every open-edge vertex lying on it inserted:
+/// within `chord` (the chordal deviation the solid was meshed with: one face's corner is on the
+/// curve, the other face's chord up to that far from it) of the segment, strictly between its
+/// ends, and with an open edge of its own along the segment (within about 37°); its triangle is
+/// split into a fan from the opposite corner, keeping its winding. Repeated (a triangle with
+/// several such edges) up to four passes. Returns how many vertices were inserted.
+pub(super) fn close_t_junctions(mesh: &mut ir::Mesh, runs: &mut [(std::ops::Range<usize>, [f64; 3])], chord: f64) -> usize {
+    let at = |i: u32| {
+        mesh.vertices.get(i as usize).map_or(Vector3::zeros(), |v| Vector3::new(f64::from(v[0]), f64::from(v[1]), f64::from(v[2])))
+    };
+    let mut inserted = 0usize;
+    for _pass in 0..4 {
+        let mut directed: HashSet<(u32, u32)> = HashSet::with_capacity(mesh.triangles.len() * 3);
+        for t in &mesh.triangles {
+            for k in 0..3 {
+                directed.insert((t[k], t[(k + 1) % 3]));
+            }
+        }
+        // Open edges: (triangle, which edge); the open-edge vertices with their open edges' directions.
+        let mut open: Vec<(usize, usize)> = Vec::new();
+        let mut dirs: HashMap<u32, Vec<Vector3<f64>>> = HashMap::new();
+        for (ti, t) in mesh.triangles.iter().enumerate() {
+            for k in 0..3 {
+                let (a, b) = (t[k], t[(k + 1) % 3]);
+                if !directed.contains(&(b, a)) {
+                    open.push((ti, k));
+                    let d = (at(b) - at(a)).normalize();
+                    dirs.entry(a).or_default().push(d);
+                    dirs.entry(b).or_default().push(d);
+                }
+            }
+        }
+        if open.is_empty() || open.len().saturating_mul(dirs.len()) > MAX_JUNCTION_PAIRS {
+            break;
+        }
+        let mut verts: Vec<(u32, Vector3<f64>)> = dirs.keys().map(|&v| (v, at(v))).collect();
+        verts.sort_by_key(|(v, _)| *v);
+        // Per triangle: the first open edge with vertices on it, and those vertices in order.
+        let mut splits: HashMap<usize, (usize, Vec<u32>)> = HashMap::new();
+        for &(ti, k) in &open {
+            if splits.contains_key(&ti) {
+                continue;
+            }
+            let t = mesh.triangles[ti];
+            let (a, b) = (t[k], t[(k + 1) % 3]);
+            let (pa, pb) = (at(a), at(b));
+            let d = pb - pa;
+            let len2 = d.norm_squared();
+            if len2 <= 0.0 {
+                continue;
+            }
+            let len = len2.sqrt();
+            let mut on: Vec<(f64, u32)> = Vec::new();
+            for &(v, pv) in &verts {
+                if v == a || v == b {
+                    continue;
+                }
+                let s = (pv - pa).dot(&d) / len2;
+                if s * len <= 1e-6 || (1.0 - s) * len <= 1e-6 || (pv - pa - d * s).norm() > chord {
+                    continue;
+                }
+                let along = dirs.get(&v).is_some_and(|ds| ds.iter().any(|e| e.dot(&d).abs() >= 0.8 * len));
+                if along {
+                    on.push((s, v));
+                }
+            }
+            if !on.is_empty() {
+                on.sort_by(|x, y| x.0.total_cmp(&y.0));
+                splits.insert(ti, (k, on.into_iter().map(|(_, v)| v).collect()));
+            }
+        }
+        if splits.is_empty() {
+            break;
+        }
+        let mut kept = Vec::with_capacity(mesh.triangles.len() + 1);
+        kept.push(0usize);
+        let mut triangles = Vec::with_capacity(mesh.triangles.len() + splits.len() * 2);
+        for (ti, t) in mesh.triangles.iter().enumerate() {
+            match splits.get(&ti) {
+                Some((k, on)) => {
+                    let (a, b, c) = (t[*k], t[(k + 1) % 3], t[(k + 2) % 3]);
+                    let chain: Vec<u32> = std::iter::once(a).chain(on.iter().copied()).chain(std::iter::once(b)).collect();
+                    triangles.extend(chain.windows(2).map(|w| [w[0], w[1], c]));
+                    inserted += on.len();
+                }
+                None => triangles.push(*t),
+            }
+            kept.push(triangles.len());
+        }
+        for (r, _) in runs.iter_mut() {
+            *r = kept[r.start.min(kept.len() - 1)]..kept[r.end.min(kept.len() - 1)];
+        }
+        mesh.triangles = triangles;
+    }
+    inserted
+}
+
 /// Appends a run of coloured triangles, merged with the last run when it continues it.
 fn push_run(runs: &mut Vec<(std::ops::Range<usize>, [f64; 3])>, r: std::ops::Range<usize>, c: [f64; 3]) {
     if r.is_empty() {
@@ -340,12 +557,12 @@ fn mesh_shell(
     scale: f64,
     sink: &mut Sink,
     out: &mut StepMesh,
-) {
+) -> Option<f64> {
     let local = &mut *sink.mesh;
     let what = format!("shell #{shell} of {} #{}", solid.kind, solid.id);
     let Some(holder) = table.shell.get(&shell) else {
         out.warnings.push(format!("{path}: {what} is not a shell the geometry reader knows; the solid has no shape from it"));
-        return;
+        return None;
     };
     let face_ids = file.shell_faces(shell);
     let converted = catch_unwind(AssertUnwindSafe(|| table.to_compressed_shell(holder).map_err(|e| format!("{e:?}"))));
@@ -353,11 +570,11 @@ fn mesh_shell(
         Ok(Ok(c)) => c,
         Ok(Err(e)) => {
             out.warnings.push(format!("{path}: {what} could not be converted ({}); the solid has no shape from it", ir::clip(&e, 200)));
-            return;
+            return None;
         }
         Err(_) => {
             out.warnings.push(format!("{path}: {what} made the B-rep reader fail; the solid has no shape from it"));
-            return;
+            return None;
         }
     };
     // `truck-stepio` leaves out, without a word, every face whose surface it cannot convert and
@@ -414,13 +631,14 @@ fn mesh_shell(
     if let Some(r) = file.min_radius(&face_ids) {
         tol = tol.min((ANGULAR_TOLERANCE * r * scale).max(CHORDAL_TOLERANCE / 2.0));
     }
+    let chord = tol;
     let tol = tol / scale;
     let meshed = catch_unwind(AssertUnwindSafe(|| compressed.robust_triangulation(tol)));
     let poly = match meshed {
         Ok(p) => p,
         Err(_) => {
             out.warnings.push(format!("{path}: {what} made the tessellator fail; the solid has no shape from it"));
-            return;
+            return None;
         }
     };
     for (k, face) in poly.faces.iter().enumerate() {
@@ -476,6 +694,7 @@ fn mesh_shell(
             push_run(sink.colours, first..local.triangles.len(), c);
         }
     }
+    Some(chord)
 }
 
 /// Restricts every B-spline edge curve with an unclamped knot vector (a periodic curve: Onshape
