@@ -386,21 +386,21 @@ fn classes() -> Vec<(&'static str, ClassDraft)> {
                 vec![
                     ratio(),
                     real("lead", "m", None, None, false, None, "Screw lead: travel per screw revolution (negative: left-hand thread; must not be 0)"),
-                    datasheet(
-                        "F_peak",
-                        "N",
-                        "Datasheet (superseded by C_0a, kept for libraries that have it): maximum axial force of screw, nut and bearings; the static check's limit where an instance has no C_0a",
-                    ),
+                    // Superseded by C_0a; kept (with migration 0005's comment) so that libraries that
+                    // have F_peak values keep them: the static check's limit where there is no C_0a.
+                    datasheet("F_peak", "N", "Datasheet: maximum axial force of screw, nut and bearings"),
+                    datasheet("w_in_max", "rad/s", "Datasheet: maximum input (screw or gearbox input) speed"),
+                    datasheet("J_in", "kg.m2", "Datasheet: moment of inertia referred to the input (motor) shaft"),
+                    datasheet("mass", "kg", "Datasheet: mass of screw, nut and bearings"),
+                    price_class(),
+                    // Added after the first seed (ADDED_DATASHEET), in the order an installation seeded
+                    // before receives them (after mass and price_class, before motor_mounts).
                     datasheet(
                         "C_a",
                         "N",
                         "Datasheet: basic dynamic axial load rating Ca of the screw and nut (ISO 3408-5: 10^6 revolutions of nominal life L10)",
                     ),
                     datasheet("C_0a", "N", "Datasheet: basic static axial load rating C0a of the screw and nut (ISO 3408-5)"),
-                    datasheet("w_in_max", "rad/s", "Datasheet: maximum input (screw or gearbox input) speed"),
-                    datasheet("J_in", "kg.m2", "Datasheet: moment of inertia referred to the input (motor) shaft"),
-                    datasheet("mass", "kg", "Datasheet: mass of screw, nut and bearings"),
-                    price_class(),
                     datasheet_text("motor_mounts", "Datasheet: mounting codes (motor mount) of the motors this screw mounts on, separated by \";\"; empty: any motor"),
                 ],
             ),
