@@ -37,7 +37,9 @@
 //! | `peak_current` | max `|I|` | amplifier `I_peak` |
 //! | `rms_current` | RMS of `I` over the duty cycle | amplifier `I_cont` |
 //! | `gear_input_speed` | max `|ω_m|` | gear `w_in_max` |
-//! | `gear_peak_torque` | max `|τ|` at the output (N·m, or N for a screw) | gear `T_peak`, the repeated-peak limit (screw: `F_peak`) |
+//! | `gear_peak_torque` | max `|τ|` at the output (N·m; rotary gears) | gear `T_peak`, the repeated-peak limit |
+//! | `screw_static_load` | max `|F|` at the nut (N; screws) | the screw's basic static axial load rating `C_0a` (ISO 3408-5; the reserve is the static safety factor), else a library's older `F_peak` |
+//! | `screw_life` | cubic-mean force `F_m = (Σ|v|·|F|³·Δt / Σ|v|·Δt)^(1/3)` (N; screws) | `C_a·(10⁶/L_req)^(1/3)`: the nominal life `L10 = (C_a/F_m)³·10⁶` revolutions (ISO 3408-5) covers `L_req`, the revolutions of the user's `screw_life` hours of the duty cycle |
 //! | `gear_rms_torque` | RMS of `τ` over the duty cycle | gear `T_rated` (rotary gears) |
 //! | `gear_avg_torque` | `(Σ|q̇|·|τ|³·Δt / Σ|q̇|·Δt)^(1/3)` (Harmonic Drive's average torque) | gear `T_avg_max`, where the maker gives one |
 //! | `inertia_ratio` | `(J_load/n² + J_gear,in) / J_motor`: the gear's input inertia counted on the load side | 10 (≤ 3 good, 3–5 common, 5–10 needs stiff mechanics); the reserve does not apply |
@@ -45,7 +47,7 @@
 //!
 //! A check whose limit (or whose value's input) is a value the library or the settings lack is
 //! reported `not_evaluated` and the value is named in `missing` (`motor.T_nom`, `gear.J_in`,
-//! `amplifier.I_peak`, `supply_voltage`); `where given` checks (`thermal_torque`,
+//! `amplifier.I_peak`, `supply_voltage`, `gear.C_a`, `screw_life`); `where given` checks (`thermal_torque`,
 //! `gear_avg_torque`) are `not_evaluated` without being missing. A check passes when
 //! `value <= limit`; it keeps the reserve when `margin >= reserve` (default 20 %).
 //!
