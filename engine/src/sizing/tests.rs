@@ -472,6 +472,14 @@ fn parts_from_the_seed_library() {
     let pbsa = parts::gear(c, i, &[]).expect("PBSA 20");
     assert_eq!((pbsa.lead, pbsa.c_a, pbsa.out_peak, pbsa.out_peak_name()), (Some(0.02), Some(5900.0), Some(12200.0), "C_0a"));
     assert_eq!((pbsa.j_in, pbsa.w_in_max, pbsa.fits()), (None, None, JointKind::Prismatic));
+    // A screw of a library entered before C_0a existed: its F_peak is the static limit.
+    let (c, i) = inst(seed::BALL_SCREW_16X5);
+    let mut older = i.clone();
+    older.values.push(("F_peak".to_string(), Value::Real(5000.0)));
+    let g = parts::gear(c, &older, &[]).expect("older screw");
+    assert_eq!((g.out_peak, g.out_peak_name(), g.c_a), (Some(5000.0), "F_peak", None));
+    let bare = parts::gear(c, i, &[]).expect("screw without ratings");
+    assert_eq!((bare.out_peak, bare.out_peak_name()), (None, "C_0a"));
 }
 
 /// Ranking: real combinations only (each gear at its catalogue ratio, motors that mount on the
