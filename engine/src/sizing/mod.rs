@@ -188,7 +188,10 @@ impl Settings {
             _ => {}
         }
         if let Some(h) = self.screw_life.filter(|h| !(h.is_finite() && *h > 0.0 && *h <= MAX_SCREW_LIFE)) {
-            out.push(Issue::new("screw_life", format!("the required screw life {h} h must be greater than 0 and at most {MAX_SCREW_LIFE} h")));
+            out.push(Issue::new(
+                "screw_life",
+                format!("the required screw life {h} h must be greater than 0 and at most {MAX_SCREW_LIFE} h"),
+            ));
         }
         out
     }
@@ -789,7 +792,8 @@ impl Outcome {
 /// the revolutions of the required life `screw_life` (hours of the repeated duty cycle), checked
 /// as a force: `F_m <= C_a·(10⁶/L_req)^(1/3)`, so the reserve is a reserve of load as elsewhere.
 fn screw_life(o: &mut Outcome, axis: &Axis, gear: &Gear, gname: &str, lead: f64, settings: &Settings) {
-    let spec = Spec { check: "screw_life", label: "Screw nominal life (dynamic load rating)", rule: rule::SCREW_LIFE, unit: "N", reserve: true };
+    let spec =
+        Spec { check: "screw_life", label: "Screw nominal life (dynamic load rating)", rule: rule::SCREW_LIFE, unit: "N", reserve: true };
     let Some(f_m) = axis.avg_tau else {
         o.not_evaluated(spec, &[], "the joint never moves: the screw does not turn, so it does not wear".to_string());
         return;
@@ -986,7 +990,9 @@ fn evaluate(axis: &Axis, side: &GearSide, motor: &Motor, gear: &Gear, settings: 
                 unit: out_unit,
                 reserve: true,
             },
-            None => Spec { check: "gear_peak_torque", label: "Peak gear output torque", rule: rule::GEAR_PEAK, unit: out_unit, reserve: true },
+            None => {
+                Spec { check: "gear_peak_torque", label: "Peak gear output torque", rule: rule::GEAR_PEAK, unit: out_unit, reserve: true }
+            }
         },
         Some(axis.peak_tau.0),
         gear.out_peak,
