@@ -206,6 +206,7 @@ async fn limits_motions_trajectories_and_ik() {
         ("supply_voltage=24", "supply_voltage"),
         ("brake_power=10&bus_capacitance=0.001&bus_voltage_max=60", "brake_power"),
         ("bus_capacitance=0.001", "bus_voltage_max"),
+        ("screw_life=0", "screw_life"),
     ] {
         let p = json_of(app.get(&format!("{base}/motions/{mid}/sizing?{q}")).await, 422).await;
         assert_eq!(p["errors"][0]["field"], field, "{q}: {p:#}");

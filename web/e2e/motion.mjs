@@ -303,15 +303,19 @@ async function sizingSteps(page, { joint, step, shot }) {
   // Without an amplifier (or without the gear input inertia the motor torque needs) the voltage
   // is not evaluated, and says what is missing.
   assert.match(await sizing.locator("tr[data-check=voltage] td.source").textContent(), /missing: (amplifier|gear\.J_in)/);
-  // The settings: a 10 % reserve and a 2 s dwell, sized again; the summary states them.
+  // The settings: a 10 % reserve, a 2 s dwell and a screw life, sized again; the summary states them.
   const settings = page.getByRole('form', { name: 'Sizing settings' });
   await settings.locator('input[name=reservePercent]').fill('10');
   await settings.locator('input[name=reservePercent]').dispatchEvent('change');
   await settings.locator('input[name=dwell]').fill('2');
   await settings.locator('input[name=dwell]').dispatchEvent('change');
+  // The required life of a ball or lead screw (a revolute joint's drive has no screw check).
+  await settings.locator('input[name=screwLife]').fill('20000');
+  await settings.locator('input[name=screwLife]').dispatchEvent('change');
   await settings.getByRole('button', { name: 'Size again' }).click();
   await page.locator('.sizing-summary', { hasText: 'Reserve 10 % · duty cycle' }).waitFor();
   assert.match(await page.locator('.sizing-summary').textContent(), /dwell 2 s/);
+  assert.match(await page.locator('.sizing-summary').textContent(), /required screw life 20000 h/);
   // A refused setting: 422 naming the field, the form stays.
   await settings.locator('input[name=reservePercent]').fill('150');
   await settings.locator('input[name=reservePercent]').dispatchEvent('change');

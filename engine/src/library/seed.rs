@@ -7,7 +7,7 @@
 //! the same file everywhere.
 //!
 //! Motor and gear classes also declare datasheet parameters (`T_nom`, `T_peak`, `w_max`;
-//! `T_rated`, `T_peak`, `w_in_max`, `J_in`; a screw's `F_peak`) for the drive sizing. An instance
+//! `T_rated`, `T_peak`, `w_in_max`, `J_in`; a screw's `C_a` and `C_0a`) for the drive sizing. An instance
 //! carries only the ones its source prints and we could verify; its `source` says which, and why
 //! the others are left out. Migration 0005 brings installations seeded before them to this seed.
 
@@ -15,8 +15,10 @@ use serde_json::{json, Map, Value as Json};
 
 use super::{check_class, check_instance, ClassDraft, InstanceDraft, Issue, Library, ParameterDraft};
 
+mod screws;
 mod yaskawa;
 
+pub use screws::PBSA_SCREWS;
 pub use yaskawa::YASKAWA_SERVOS;
 
 pub const DC_MOTOR: &str = "93162c18-a028-4dbb-a9a7-c37bb6da9e15";
@@ -31,7 +33,8 @@ pub const ADDED_CLASSES: [&str; 2] = [SERVO_AMPLIFIER, AC_SERVO];
 
 /// Datasheet parameters added to the seed's classes after the first seed (issue 27's checks and
 /// ranking): an installation seeded before receives each once, in every seed class that has it.
-pub const ADDED_DATASHEET: [&str; 8] = ["T_stall", "tau_th_w", "mass", "price_class", "mount", "T_avg_max", "motor_mounts", "backlash"];
+pub const ADDED_DATASHEET: [&str; 10] =
+    ["T_stall", "tau_th_w", "mass", "price_class", "mount", "T_avg_max", "motor_mounts", "backlash", "C_a", "C_0a"];
 
 /// The drive amplifier class (sizing only: every parameter a datasheet value, no Modelica class).
 pub const SERVO_AMPLIFIER: &str = "5b0b3c0e-3f7e-4d43-9a53-2f1f0f7c9a27";
@@ -150,8 +153,10 @@ pub const MAXON_EC45_FLAT_MOTORS: [&str; 6] = [
 ];
 
 /// The catalogue instances of the seed (see above); `seed::library` holds them all.
-pub const CATALOGUE: [&str; 104] =
-    concat::<74, 30, 104>(concat::<14, 60, 74>(concat(FAULHABER_MOTORS, MAXON_EC45_FLAT_MOTORS), BECKHOFF_GEARS), YASKAWA_SERVOS);
+pub const CATALOGUE: [&str; 107] = concat::<104, 3, 107>(
+    concat::<74, 30, 104>(concat::<14, 60, 74>(concat(FAULHABER_MOTORS, MAXON_EC45_FLAT_MOTORS), BECKHOFF_GEARS), YASKAWA_SERVOS),
+    PBSA_SCREWS,
+);
 
 /// `a` then `b`, in a constant.
 const fn concat<const A: usize, const B: usize, const C: usize>(a: [&'static str; A], b: [&'static str; B]) -> [&'static str; C] {
@@ -381,11 +386,21 @@ fn classes() -> Vec<(&'static str, ClassDraft)> {
                 vec![
                     ratio(),
                     real("lead", "m", None, None, false, None, "Screw lead: travel per screw revolution (negative: left-hand thread; must not be 0)"),
+                    // Superseded by C_0a; kept (with migration 0005's comment) so that libraries that
+                    // have F_peak values keep them: the static check's limit where there is no C_0a.
                     datasheet("F_peak", "N", "Datasheet: maximum axial force of screw, nut and bearings"),
                     datasheet("w_in_max", "rad/s", "Datasheet: maximum input (screw or gearbox input) speed"),
                     datasheet("J_in", "kg.m2", "Datasheet: moment of inertia referred to the input (motor) shaft"),
                     datasheet("mass", "kg", "Datasheet: mass of screw, nut and bearings"),
                     price_class(),
+                    // Added after the first seed (ADDED_DATASHEET), in the order an installation seeded
+                    // before receives them (after mass and price_class, before motor_mounts).
+                    datasheet(
+                        "C_a",
+                        "N",
+                        "Datasheet: basic dynamic axial load rating Ca of the screw and nut (ISO 3408-5: 10^6 revolutions of nominal life L10)",
+                    ),
+                    datasheet("C_0a", "N", "Datasheet: basic static axial load rating C0a of the screw and nut (ISO 3408-5)"),
                     datasheet_text("motor_mounts", "Datasheet: mounting codes (motor mount) of the motors this screw mounts on, separated by \";\"; empty: any motor"),
                 ],
             ),
@@ -581,7 +596,8 @@ pub fn library() -> Result<Library, Vec<Issue>> {
         .chain(catalogue().into_iter().map(|(id, class, name, source, values)| (id, class, name.to_string(), source, values)))
         .chain(maxon_catalogue())
         .chain(gear_catalogue())
-        .chain(yaskawa::catalogue());
+        .chain(yaskawa::catalogue())
+        .chain(screws::catalogue());
     for (id, class_id, name, source, values) in all {
         let Some(class) = lib.class(class_id) else {
             issues.push(Issue::new(format!("seed instance {name}"), format!("no seed class {class_id}")));

@@ -330,8 +330,8 @@ fn the_seed_is_valid_and_ids_are_unique() {
     assert_eq!(motors, 18, "motors of our own class: 4 of the first seed and 14 catalogue motors");
     assert_eq!(
         lib.instances.len(),
-        113,
-        "instances: 9 of the first seed, 14 catalogue DC motors, 60 catalogue gear units and 30 AC servo motors"
+        116,
+        "instances: 9 of the first seed, 14 catalogue DC motors, 60 catalogue gear units, 30 AC servo motors and 3 ball screws"
     );
     let servos = lib.instances.iter().filter(|i| i.class_id == seed::AC_SERVO).count();
     assert_eq!(servos, 30, "AC servo motors: 15 Yaskawa Σ-7 models, each without and with holding brake");
@@ -387,8 +387,21 @@ fn the_seed_is_valid_and_ids_are_unique() {
 }
 
 /// The makers a catalogue source may name.
-const MAKERS: [&str; 11] =
-    ["FAULHABER", "maxon", "Portescap", "Nanotec", "Harmonic Drive", "Neugart", "Bosch Rexroth", "HIWIN", "THK", "Beckhoff", "Yaskawa"];
+/// Makers, and the one seller whose catalogue page names no other maker (Super Slides' PBSA page).
+const MAKERS: [&str; 12] = [
+    "FAULHABER",
+    "maxon",
+    "Portescap",
+    "Nanotec",
+    "Harmonic Drive",
+    "Neugart",
+    "Bosch Rexroth",
+    "HIWIN",
+    "THK",
+    "Beckhoff",
+    "Yaskawa",
+    "Super Slides",
+];
 
 /// Why a catalogue instance's source is not good enough, if it is not: it names a maker, a
 /// document (a URL) and a page, table or line; says for every value it has which datasheet line it
@@ -449,6 +462,14 @@ fn every_catalogue_value_has_a_source() {
     assert!(catalogue_source_problem(&lib, &no_k).expect("no k").contains("where k comes from"));
     let no_reason = Instance { source: i.source.replace("T_peak missing: ", ""), ..i.clone() };
     assert!(catalogue_source_problem(&lib, &no_reason).expect("no reason").contains("why T_peak is missing"));
+    // The ball screws too: each load rating's line, and why J_in is missing.
+    let i = lib.instances.iter().find(|i| i.id == seed::PBSA_SCREWS[0]).expect("PBSA 16");
+    let no_c0a = Instance { source: i.source.replace("C_0a = ", "C_0a is "), ..i.clone() };
+    assert!(catalogue_source_problem(&lib, &no_c0a).expect("no C_0a").contains("where C_0a comes from"));
+    let no_ca = Instance { source: i.source.replace("C_a = ", "C_a is "), ..i.clone() };
+    assert!(catalogue_source_problem(&lib, &no_ca).expect("no C_a").contains("where C_a comes from"));
+    let no_j = Instance { source: i.source.replace("J_in missing: ", ""), ..i.clone() };
+    assert!(catalogue_source_problem(&lib, &no_j).expect("no reason").contains("why J_in is missing"));
 }
 
 /// Catalogue values as printed, in SI units (one motor per document).
@@ -491,6 +512,12 @@ fn catalogue_values_are_the_datasheets() {
         close(get(g, "w_in_max"), 7500.0 * std::f64::consts::PI / 30.0) && close(get(g, "J_in"), 0.64e-4) && close(get(g, "mass"), 3.8)
     );
     assert!(close(get(g, "backlash"), 3.0 * std::f64::consts::PI / 10800.0));
+    // The PBSA ball screws, one per row: lead, C_a and C_0a of the page's ball-screw table, in N.
+    for (id, lead, ca, c0a) in [(0, 0.016, 3800.0, 6800.0), (1, 0.02, 5900.0, 12200.0), (2, 0.025, 8900.0, 19100.0)] {
+        let s = seed::PBSA_SCREWS[id];
+        assert!(close(get(s, "lead"), lead) && close(get(s, "C_a"), ca) && close(get(s, "C_0a"), c0a), "{id}");
+        assert!(close(get(s, "ratio"), 1.0) && get(s, "J_in").is_none() && get(s, "F_peak").is_none() && get(s, "mass").is_none());
+    }
     // Its neighbour at ratio 8 has its own ratings (no ratio of a family borrows another's).
     let h = seed::BECKHOFF_GEARS[8];
     assert!(close(get(h, "ratio"), 8.0) && close(get(h, "T_peak"), 126.0) && close(get(h, "T_rated"), 80.0));

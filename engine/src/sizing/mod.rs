@@ -37,7 +37,9 @@
 //! | `peak_current` | max `|I|` | amplifier `I_peak` |
 //! | `rms_current` | RMS of `I` over the duty cycle | amplifier `I_cont` |
 //! | `gear_input_speed` | max `|ω_m|` | gear `w_in_max` |
-//! | `gear_peak_torque` | max `|τ|` at the output (N·m, or N for a screw) | gear `T_peak`, the repeated-peak limit (screw: `F_peak`) |
+//! | `gear_peak_torque` | max `|τ|` at the output (N·m; rotary gears) | gear `T_peak`, the repeated-peak limit |
+//! | `screw_static_load` | max `|F|` at the nut (N; screws) | the screw's basic static axial load rating `C_0a` (ISO 3408-5; the reserve is the static safety factor), else a library's older `F_peak` |
+//! | `screw_life` | cubic-mean force `F_m = (Σ|v|·|F|³·Δt / Σ|v|·Δt)^(1/3)` (N; screws) | `C_a·(10⁶/L_req)^(1/3)`: the nominal life `L10 = (C_a/F_m)³·10⁶` revolutions (ISO 3408-5) covers `L_req`, the revolutions of the user's `screw_life` hours of the duty cycle |
 //! | `gear_rms_torque` | RMS of `τ` over the duty cycle | gear `T_rated` (rotary gears) |
 //! | `gear_avg_torque` | `(Σ|q̇|·|τ|³·Δt / Σ|q̇|·Δt)^(1/3)` (Harmonic Drive's average torque) | gear `T_avg_max`, where the maker gives one |
 //! | `inertia_ratio` | `(J_load/n² + J_gear,in) / J_motor`: the gear's input inertia counted on the load side | 10 (≤ 3 good, 3–5 common, 5–10 needs stiff mechanics); the reserve does not apply |
@@ -45,7 +47,7 @@
 //!
 //! A check whose limit (or whose value's input) is a value the library or the settings lack is
 //! reported `not_evaluated` and the value is named in `missing` (`motor.T_nom`, `gear.J_in`,
-//! `amplifier.I_peak`, `supply_voltage`); `where given` checks (`thermal_torque`,
+//! `amplifier.I_peak`, `supply_voltage`, `gear.C_a`, `screw_life`); `where given` checks (`thermal_torque`,
 //! `gear_avg_torque`) are `not_evaluated` without being missing. A check passes when
 //! `value <= limit`; it keeps the reserve when `margin >= reserve` (default 20 %).
 //!
@@ -78,6 +80,9 @@ pub const DEFAULT_RESERVE: f64 = 0.2;
 
 /// The longest dwell a duty cycle takes (s): a day.
 pub const MAX_DWELL: f64 = 86_400.0;
+
+/// The longest required screw life (h): a century of operation.
+pub const MAX_SCREW_LIFE: f64 = 876_600.0;
 
 /// At most this many operating points are returned.
 pub const MAX_POINTS: usize = 2000;
@@ -122,17 +127,20 @@ pub struct Settings {
     /// The drive amplifier, with the supply voltage the user sets.
     pub amplifier: Option<Amplifier>,
     pub brake: Option<Brake>,
+    /// The required nominal life of a ball or lead screw (h of the repeated duty cycle); without
+    /// it the screw's life check is not evaluated (`screw_life` missing).
+    pub screw_life: Option<f64>,
 }
 
 impl Default for Settings {
     fn default() -> Settings {
-        Settings { reserve: DEFAULT_RESERVE, dwell: 0.0, amplifier: None, brake: None }
+        Settings { reserve: DEFAULT_RESERVE, dwell: 0.0, amplifier: None, brake: None, screw_life: None }
     }
 }
 
 impl Settings {
     /// Every problem with the settings, naming the field (`reserve`, `dwell`, `supply_voltage`,
-    /// `brake_power`, `bus_capacitance`, `bus_voltage_max`).
+    /// `brake_power`, `bus_capacitance`, `bus_voltage_max`, `screw_life`).
     pub fn check(&self) -> Vec<Issue> {
         let mut out = Vec::new();
         if !(self.reserve.is_finite() && (0.0..1.0).contains(&self.reserve)) {
@@ -178,6 +186,12 @@ impl Settings {
                 }
             }
             _ => {}
+        }
+        if let Some(h) = self.screw_life.filter(|h| !(h.is_finite() && *h > 0.0 && *h <= MAX_SCREW_LIFE)) {
+            out.push(Issue::new(
+                "screw_life",
+                format!("the required screw life {h} h must be greater than 0 and at most {MAX_SCREW_LIFE} h"),
+            ));
         }
         out
     }
@@ -393,6 +407,8 @@ struct Axis<'a> {
     uniform: bool,
     /// The joint's holding torque during the dwell (the last sample's).
     tau_hold: f64,
+    /// The joint's travel over one motion, `Σ|q̇|·Δt` (rad or m).
+    travel: f64,
     peak_tau: (f64, usize),
     rms_tau: f64,
     /// Harmonic Drive's average output torque, `None` when the joint never moves.
@@ -460,7 +476,7 @@ impl<'a> Axis<'a> {
         }
         let avg_tau = (den > 0.0).then(|| (num / den).cbrt());
         let max_qd = argmax_abs(load.qd);
-        Ok(Axis { load, w, motion, dwell, period, uniform, tau_hold, peak_tau, rms_tau, avg_tau, max_qd })
+        Ok(Axis { load, w, motion, dwell, period, uniform, tau_hold, peak_tau, rms_tau, avg_tau, travel: den, max_qd })
     }
 
     fn at(&self, i: usize) -> String {
@@ -660,7 +676,9 @@ mod rule {
     pub const PEAK_CURRENT: &str = "max |T_m/k| <= the amplifier's peak output current I_peak";
     pub const RMS_CURRENT: &str = "RMS of T_m/k over the duty cycle <= the amplifier's continuous output current I_cont";
     pub const GEAR_SPEED: &str = "max |ω_m| <= the gear's maximum input speed w_in_max";
-    pub const GEAR_PEAK: &str = "max |τ| at the output <= the gear's repeated-peak limit T_peak (screw: axial force F_peak)";
+    pub const GEAR_PEAK: &str = "max |τ| at the output <= the gear's repeated-peak limit T_peak";
+    pub const SCREW_STATIC: &str = "max |F| at the nut <= the screw's basic static axial load rating C_0a (ISO 3408-5; the user's reserve is the static safety factor: 20 % reserve = f_s 1.25), else a library's older axial force limit F_peak";
+    pub const SCREW_LIFE: &str = "cubic-mean axial force F_m = (Σ|v|·|F|³·Δt / Σ|v|·Δt)^(1/3) <= C_a·(10⁶/L_req)^(1/3): the nominal life L10 = (C_a/F_m)³·10⁶ screw revolutions (ISO 3408-5, load factor 1) covers L_req, the revolutions of the required life screw_life (h of the repeated duty cycle)";
     pub const GEAR_RMS: &str = "RMS of τ over the duty cycle <= the gear's rated (continuous) output torque T_rated";
     pub const GEAR_AVG: &str = "(Σ|q̇|·|τ|³·Δt / Σ|q̇|·Δt)^(1/3) <= the gear's limit for average torque T_avg_max, where given";
     pub const INERTIA: &str =
@@ -767,6 +785,53 @@ impl Outcome {
             detail,
         });
     }
+}
+
+/// The screw's nominal life (ISO 3408-5 and the screw makers' catalogues): `L10 = (C_a/F_m)³·10⁶`
+/// revolutions under the cubic-mean axial force `F_m` (weighted by the screw's speed), against
+/// the revolutions of the required life `screw_life` (hours of the repeated duty cycle), checked
+/// as a force: `F_m <= C_a·(10⁶/L_req)^(1/3)`, so the reserve is a reserve of load as elsewhere.
+fn screw_life(o: &mut Outcome, axis: &Axis, gear: &Gear, gname: &str, lead: f64, settings: &Settings) {
+    let spec =
+        Spec { check: "screw_life", label: "Screw nominal life (dynamic load rating)", rule: rule::SCREW_LIFE, unit: "N", reserve: true };
+    let Some(f_m) = axis.avg_tau else {
+        o.not_evaluated(spec, &[], "the joint never moves: the screw does not turn, so it does not wear".to_string());
+        return;
+    };
+    // Screw revolutions per cycle (the gear ratio in front of the screw does not change them).
+    let revs = axis.travel / lead.abs();
+    let (Some(c_a), Some(hours)) = (gear.c_a, settings.screw_life) else {
+        let mut missing = Vec::new();
+        if gear.c_a.is_none() {
+            missing.push("gear.C_a");
+        }
+        if settings.screw_life.is_none() {
+            missing.push("screw_life");
+        }
+        o.not_evaluated(spec, &missing, format!("F_m = {} N over {} screw revolutions per cycle", short(f_m), short(revs)));
+        return;
+    };
+    let required = hours * 3600.0 / axis.period * revs;
+    let allowed = c_a * (1e6 / required).cbrt();
+    let l10 = if f_m > 0.0 { (c_a / f_m).powi(3) * 1e6 } else { f64::INFINITY };
+    let l10_h = l10 / revs * axis.period / 3600.0;
+    o.limit(
+        spec,
+        Some(f_m),
+        Some(allowed),
+        || format!("gear \"{gname}\": C_a (datasheet) and setting screw_life {} h", short(hours)),
+        &[],
+        settings.reserve,
+        format!(
+            "L10 = (C_a/F_m)³·10⁶ = {} revolutions = {} h of the duty cycle ({} screw revolutions per cycle of {} s); required {} h = {} revolutions",
+            short(l10),
+            short(l10_h),
+            short(revs),
+            short(axis.period),
+            short(hours),
+            short(required)
+        ),
+    );
 }
 
 fn of(slot: &str, name: &str, param: &str) -> String {
@@ -917,12 +982,17 @@ fn evaluate(axis: &Axis, side: &GearSide, motor: &Motor, gear: &Gear, settings: 
     );
     let missing_peak = format!("gear.{}", gear.out_peak_name());
     o.limit(
-        Spec {
-            check: "gear_peak_torque",
-            label: if gear.lead.is_some() { "Peak axial force" } else { "Peak gear output torque" },
-            rule: rule::GEAR_PEAK,
-            unit: out_unit,
-            reserve: true,
+        match gear.lead {
+            Some(_) => Spec {
+                check: "screw_static_load",
+                label: "Peak axial force (static load rating)",
+                rule: rule::SCREW_STATIC,
+                unit: out_unit,
+                reserve: true,
+            },
+            None => {
+                Spec { check: "gear_peak_torque", label: "Peak gear output torque", rule: rule::GEAR_PEAK, unit: out_unit, reserve: true }
+            }
         },
         Some(axis.peak_tau.0),
         gear.out_peak,
@@ -931,6 +1001,9 @@ fn evaluate(axis: &Axis, side: &GearSide, motor: &Motor, gear: &Gear, settings: 
         reserve,
         format!("{}; output {out_what} = joint {out_what}", axis.at(axis.peak_tau.1)),
     );
+    if let Some(lead) = gear.lead {
+        screw_life(&mut o, axis, gear, gname, lead, settings);
+    }
     if gear.lead.is_none() {
         o.limit(
             Spec { check: "gear_rms_torque", label: "RMS gear output torque", rule: rule::GEAR_RMS, unit: "N.m", reserve: true },

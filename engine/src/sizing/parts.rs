@@ -118,8 +118,13 @@ pub struct Gear {
     pub t_rated: Option<f64>,
     /// Datasheet: limit for the average output torque (N·m), where the maker gives one.
     pub t_avg_max: Option<f64>,
-    /// Datasheet: repeated peak output torque (N·m), or for a screw its axial force limit (N).
+    /// Datasheet: repeated peak output torque (N·m), or for a screw its static axial limit (N):
+    /// the basic static axial load rating `C_0a`, else a library's older `F_peak`.
     pub out_peak: Option<f64>,
+    /// Screws: the basic dynamic axial load rating `C_a` (N; 10⁶ revolutions of nominal life,
+    /// ISO 3408-5) and whether `out_peak` is the static rating `C_0a` (else `F_peak`).
+    pub c_a: Option<f64>,
+    pub out_peak_is_c0a: bool,
     /// Datasheet: maximum input speed (rad/s).
     pub w_in_max: Option<f64>,
     /// Datasheet: inertia referred to the input shaft (kg·m²); missing when not given (never 0).
@@ -159,12 +164,13 @@ impl Gear {
         }
     }
 
-    /// The name of the output limit parameter (`T_peak` or, for screws, `F_peak`).
+    /// The name of the output limit parameter (`T_peak`; for screws `C_0a`, or a library's older
+    /// `F_peak` where the instance has no `C_0a`).
     pub fn out_peak_name(&self) -> &'static str {
-        if self.lead.is_some() {
-            "F_peak"
-        } else {
-            "T_peak"
+        match (self.lead.is_some(), self.out_peak_is_c0a || self.out_peak.is_none()) {
+            (false, _) => "T_peak",
+            (true, true) => "C_0a",
+            (true, false) => "F_peak",
         }
     }
 }
@@ -283,7 +289,10 @@ pub fn gear(class: &Class, instance: &Instance, overrides: &[(String, Value)]) -
     let catalog_ratio =
         library::resolved_values(class, instance, &[]).iter().find(|(n, _)| n == "ratio").and_then(|(_, v)| v.as_f64()).unwrap_or(ratio);
     let rated = |name: &str| if ratio == catalog_ratio { real(&v, name) } else { None };
-    let out_peak = if lead.is_some() { rated("F_peak") } else { rated("T_peak") };
+    // A screw's static limit: its basic static axial load rating C_0a; a library entered before
+    // C_0a existed may have an F_peak instead, which stays the limit there.
+    let c_0a = if lead.is_some() { rated("C_0a") } else { None };
+    let out_peak = if lead.is_some() { c_0a.or_else(|| rated("F_peak")) } else { rated("T_peak") };
     let motor_mounts = text(&v, "motor_mounts")
         .map(|s| s.split(';').map(|x| x.trim().to_string()).filter(|x| !x.is_empty()).collect::<Vec<_>>())
         .filter(|l| !l.is_empty());
@@ -298,6 +307,8 @@ pub fn gear(class: &Class, instance: &Instance, overrides: &[(String, Value)]) -
         t_rated: if lead.is_some() { None } else { rated("T_rated") },
         t_avg_max: if lead.is_some() { None } else { rated("T_avg_max") },
         out_peak,
+        c_a: if lead.is_some() { rated("C_a") } else { None },
+        out_peak_is_c0a: c_0a.is_some(),
         w_in_max: rated("w_in_max"),
         j_in: rated("J_in"),
         mass: real(&v, "mass"),

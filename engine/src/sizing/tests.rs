@@ -45,6 +45,8 @@ fn gear(ratio: f64, eta: f64) -> Gear {
         t_rated: Some(10.0),
         t_avg_max: None,
         out_peak: Some(20.0),
+        c_a: None,
+        out_peak_is_c0a: false,
         w_in_max: Some(500.0),
         j_in: Some(0.0),
         mass: None,
@@ -258,7 +260,8 @@ fn efficiency_follows_the_power_flow_and_braking() {
     assert!(e < per_sample(0.0, 0.6) && e >= per_sample(0.0, 0.3), "{e}");
 }
 
-/// A lead screw: ω_m = ratio·2π/lead·ṡ, T_m = F·lead/(2π·ratio); the force limit is F_peak.
+/// A lead screw: ω_m = ratio·2π/lead·ṡ, T_m = F·lead/(2π·ratio); its static limit C_0a and
+/// its life check's C_a and required life are named missing.
 #[test]
 fn lead_screw_converts_force_to_torque() {
     let lead = 0.005;
@@ -271,7 +274,8 @@ fn lead_screw_converts_force_to_torque() {
     let n = 2.0 * 2.0 * PI / lead;
     close(value(&d, "inertia_ratio"), 3.0 / (n * n * 1e-4), 1e-12);
     assert!(d.checks.iter().all(|c| c.check != "gear_rms_torque"));
-    assert_eq!(d.missing, vec!["motor.w_max", "gear.F_peak"]);
+    assert_eq!(d.missing, vec!["motor.w_max", "gear.C_0a", "gear.C_a", "screw_life"]);
+    assert!(d.checks.iter().all(|c| c.check != "gear_peak_torque" && c.check != "gear_avg_torque"));
     // A screw on a revolute joint (and a rotary gear on a prismatic one) is refused.
     let e = size_drive(s.load(JointKind::Revolute, 3.0), &m, &screw, None, &with_amp(), TOP).expect_err("does not fit");
     assert!(e.to_string().contains("fits prismatic joints"), "{e}");
@@ -397,9 +401,12 @@ fn settings_are_checked() {
         dwell: -1.0,
         amplifier: Some(Amplifier { u_supply: Some(60.0), ..amplifier() }),
         brake: Some(Brake::Bus { capacitance: 0.0, voltage_max: 20.0 }),
+        screw_life: Some(0.0),
     };
     let fields: Vec<String> = bad.check().into_iter().map(|i| i.field).collect();
-    assert_eq!(fields, vec!["reserve", "dwell", "supply_voltage", "bus_capacitance", "bus_voltage_max"]);
+    assert_eq!(fields, vec!["reserve", "dwell", "supply_voltage", "bus_capacitance", "bus_voltage_max", "screw_life"]);
+    assert_eq!(Settings { screw_life: Some(f64::INFINITY), ..Settings::default() }.check()[0].field, "screw_life");
+    assert!(Settings { screw_life: Some(20_000.0), ..Settings::default() }.check().is_empty());
     let bus = Settings { brake: Some(Brake::Bus { capacitance: 0.01, voltage_max: 20.0 }), ..with_amp() };
     assert_eq!(bus.check()[0].field, "bus_voltage_max");
     assert_eq!(Settings { brake: Some(Brake::Resistor { power: f64::NAN }), ..Settings::default() }.check()[0].field, "brake_power");
@@ -458,8 +465,21 @@ fn parts_from_the_seed_library() {
     assert!(cat.skipped.is_empty(), "{:?}", cat.skipped);
     assert_eq!(cat.motors.len(), lib.instances.iter().filter(|i| lib.class(&i.class_id).is_some_and(|c| c.domain == "motor")).count());
     // 5 motors of the first seed, 14 catalogue DC motors and 30 AC servo motors; 3 gears of the
-    // first seed and 60 catalogue gear units.
-    assert_eq!((cat.motors.len(), cat.gears.len()), (49, 63));
+    // first seed, 60 catalogue gear units and 3 catalogue ball screws.
+    assert_eq!((cat.motors.len(), cat.gears.len()), (49, 66));
+    // A catalogue ball screw: its lead and its load ratings C_a and C_0a, in N.
+    let (c, i) = inst(seed::PBSA_SCREWS[1]);
+    let pbsa = parts::gear(c, i, &[]).expect("PBSA 20");
+    assert_eq!((pbsa.lead, pbsa.c_a, pbsa.out_peak, pbsa.out_peak_name()), (Some(0.02), Some(5900.0), Some(12200.0), "C_0a"));
+    assert_eq!((pbsa.j_in, pbsa.w_in_max, pbsa.fits()), (None, None, JointKind::Prismatic));
+    // A screw of a library entered before C_0a existed: its F_peak is the static limit.
+    let (c, i) = inst(seed::BALL_SCREW_16X5);
+    let mut older = i.clone();
+    older.values.push(("F_peak".to_string(), Value::Real(5000.0)));
+    let g = parts::gear(c, &older, &[]).expect("older screw");
+    assert_eq!((g.out_peak, g.out_peak_name(), g.c_a), (Some(5000.0), "F_peak", None));
+    let bare = parts::gear(c, i, &[]).expect("screw without ratings");
+    assert_eq!((bare.out_peak, bare.out_peak_name()), (None, "C_0a"));
 }
 
 /// Ranking: real combinations only (each gear at its catalogue ratio, motors that mount on the
@@ -678,4 +698,114 @@ fn drives_sized_together_on_threads() {
     let names: Vec<&str> = one.iter().filter_map(|r| r.as_ref().ok()).map(|d| d.joint.as_str()).collect();
     assert_eq!(names, ["J1", "J2", "J3", "J5"]);
     assert!(one[0].as_ref().expect("J1").alternatives.len() == TOP, "ranked against the catalogue");
+}
+
+/// A ball screw's checks by hand (ISO 3408-5 as the screw makers print it): the static check
+/// max |F| <= C_0a, and the nominal life L10 = (C_a/F_m)³·10⁶ revolutions against the required
+/// life, checked as F_m <= C_a·(10⁶/L_req)^(1/3).
+#[test]
+fn screw_static_load_and_life() {
+    let lead = 0.016;
+    // 1 s at 0.1 m/s, then at 0.3 m/s for 1 s, with forces 1000 N and 500 N; a 2 s dwell.
+    let s = Samples::over(2001, 2.0, |t| if t < 1.0 { (0.1, 0.0, 1000.0) } else { (0.3, 0.0, -500.0) });
+    let screw = Gear {
+        lead: Some(lead),
+        t_rated: None,
+        out_peak: Some(6800.0),
+        out_peak_is_c0a: true,
+        c_a: Some(3800.0),
+        w_in_max: Some(10_000.0),
+        ..gear(1.0, 1.0)
+    };
+    // F_m ≈ 700 N; 20 000 h of the 4 s cycle are 4.5·10⁸ revolutions: C_a allows ≈ 496 N.
+    let life = Settings { dwell: 2.0, screw_life: Some(20_000.0), ..with_amp() };
+    let d = size(&s, JointKind::Prismatic, 1.0, &motor(), &screw, &life);
+    let st = check(&d, "screw_static_load");
+    assert_eq!((st.value, st.limit, st.status, st.unit), (Some(1000.0), Some(6800.0), Status::Pass, "N"));
+    assert!(st.source.as_deref().is_some_and(|x| x.contains("C_0a")) && st.rule.contains("C_0a"), "{st:?}");
+    // By hand: the trapezoid weights give the two halves 0.1·(1 - 0.0005) + ... : the travel is
+    // Σ|v|·w and F_m³ = Σ|v|·|F|³·w / Σ|v|·w, with w = 1 ms (0.5 ms at both ends) and the sample
+    // at t = 1 s in the second half.
+    let w = |i: usize| if i == 0 || i == 2000 { 0.0005 } else { 0.001 };
+    let (mut travel, mut num) = (0.0, 0.0);
+    for i in 0..2001 {
+        let (v, f) = (s.qd[i].abs(), s.tau[i].abs());
+        travel += v * w(i);
+        num += v * f.powi(3) * w(i);
+    }
+    let f_m = (num / travel).cbrt();
+    let revs = travel / lead;
+    let required = 20_000.0 * 3600.0 / 4.0 * revs;
+    let l = check(&d, "screw_life");
+    close(l.value.expect("F_m"), f_m, 1e-12);
+    close(l.limit.expect("allowed"), 3800.0 * (1e6 / required).cbrt(), 1e-12);
+    assert_eq!(l.status, Status::Fail, "{l:?}");
+    // The life in the detail: (C_a/F_m)³·10⁶ revolutions.
+    let l10 = (3800.0 / f_m).powi(3) * 1e6;
+    assert!(l.detail.contains(&short(l10)), "{} vs {}", l.detail, short(l10));
+    // A 2000 h life passes (≈ 1068 N): the limit grows as the cube root of the shorter life.
+    let short_life = Settings { screw_life: Some(2000.0), ..life.clone() };
+    let d = size(&s, JointKind::Prismatic, 1.0, &motor(), &screw, &short_life);
+    let l = check(&d, "screw_life");
+    close(l.limit.expect("allowed"), 3800.0 * (1e6 / (required / 10.0)).cbrt(), 1e-12);
+    assert_eq!(l.status, Status::Pass);
+    // Over C_0a the static check fails.
+    let heavy = Samples::new(11, |_| (0.1, 0.0, 7000.0));
+    let d = size(&heavy, JointKind::Prismatic, 1.0, &motor(), &screw, &life);
+    assert_eq!(check(&d, "screw_static_load").status, Status::Fail);
+    // A library entered before C_0a: its F_peak stays the static limit, named as such.
+    let older = Gear { out_peak: Some(5000.0), out_peak_is_c0a: false, c_a: None, ..screw.clone() };
+    let d = size(&heavy, JointKind::Prismatic, 1.0, &motor(), &older, &life);
+    let st = check(&d, "screw_static_load");
+    assert!(st.limit == Some(5000.0) && st.source.as_deref().is_some_and(|x| x.contains("F_peak")), "{st:?}");
+    assert_eq!(d.missing, vec!["gear.C_a"]);
+    // A screw that never turns does not wear: not evaluated, nothing missing.
+    let still = Samples::new(11, |_| (0.0, 0.0, 100.0));
+    let d = size(&still, JointKind::Prismatic, 1.0, &motor(), &screw, &Settings { screw_life: None, ..life });
+    assert_eq!(check(&d, "screw_life").status, Status::NotEvaluated);
+    assert!(d.missing.is_empty(), "{:?}", d.missing);
+}
+
+/// The seed's catalogue ball screws in the ranking of a prismatic joint: chosen where they carry
+/// the load, refused where it exceeds their static rating C_0a.
+#[test]
+fn catalogue_screws_are_chosen_and_refused() {
+    let lib = seed::library().expect("seed");
+    let cat = Catalog::from_library(&lib);
+    let pbsa = |name: &str| name.starts_with("PBSA ball screw");
+    let settings = Settings { screw_life: Some(5000.0), ..with_amp() };
+    // 2 kN at 0.05 m/s: every PBSA screw carries it (C_0a 6.8 to 19.1 kN).
+    let light = Samples::new(101, |_| (0.05, 0.0, 2000.0));
+    let alts = rank(light.load(JointKind::Prismatic, 5.0), &cat, &settings, 10_000).expect("ranks");
+    assert!(alts.iter().all(|a| cat.gears.iter().any(|g| g.part.id == a.gear.id && g.lead.is_some())));
+    let chosen: Vec<&Alternative> = alts.iter().filter(|a| pbsa(&a.gear.name)).collect();
+    assert_eq!(chosen.len(), 3 * cat.motors.len(), "each PBSA screw with every motor");
+    assert!(chosen.iter().all(|a| !a.failed.contains(&"screw_static_load") && !a.missing.iter().any(|m| m == "gear.C_0a")));
+    // Their life: 5000 h of 1 s cycles at 0.05 m/s are 3.125, 2.5 and 2 revolutions per cycle
+    // (leads 16, 20, 25 mm), so C_a·(10⁶/L_req)^(1/3) allows 992 N, 1658 N and 2696 N: only the
+    // 25 mm screw lasts 5000 h under 2 kN.
+    for a in &chosen {
+        assert_eq!(a.failed.contains(&"screw_life"), !a.gear.name.contains("25x25"), "{}: {:?}", a.gear.name, a.failed);
+    }
+    // The best-ranked alternative with a PBSA screw: its static and life checks pass.
+    let best = chosen.iter().min_by_key(|a| a.rank).expect("a PBSA alternative");
+    let m = cat.motors.iter().find(|m| m.part.id == best.motor.id).expect("motor");
+    let g = cat.gears.iter().find(|g| g.part.id == best.gear.id).expect("screw");
+    let d = size_drive(light.load(JointKind::Prismatic, 5.0), m, g, None, &settings, TOP).expect("sizes");
+    assert_eq!(check(&d, "screw_static_load").status, Status::Pass);
+    assert_eq!(check(&d, "screw_life").status, Status::Pass, "{:?}", check(&d, "screw_life"));
+    // 10 kN: over the 16 mm screw's C_0a (6.8 kN), within the 20 and 25 mm ones' (12.2, 19.1 kN);
+    // 25 kN is over all three.
+    let heavy = Samples::new(101, |_| (0.05, 0.0, 10_000.0));
+    let alts = rank(heavy.load(JointKind::Prismatic, 5.0), &cat, &settings, 10_000).expect("ranks");
+    for a in alts.iter().filter(|a| pbsa(&a.gear.name)) {
+        let refused = a.failed.contains(&"screw_static_load");
+        assert_eq!(refused, a.gear.name.contains("16x16"), "{}: {:?}", a.gear.name, a.failed);
+        if refused {
+            assert_eq!(a.standing, Standing::Fails);
+        }
+    }
+    let crushing = Samples::new(101, |_| (0.05, 0.0, 25_000.0));
+    let alts = rank(crushing.load(JointKind::Prismatic, 5.0), &cat, &settings, 10_000).expect("ranks");
+    assert!(alts.iter().filter(|a| pbsa(&a.gear.name)).all(|a| a.failed.contains(&"screw_static_load")));
 }

@@ -271,7 +271,7 @@ async fn trajectory(
     Ok(Json(view))
 }
 
-/// `?reserve=&dwell=&amplifier=&supply_voltage=&brake_power=&bus_capacitance=&bus_voltage_max=`
+/// `?reserve=&dwell=&amplifier=&supply_voltage=&brake_power=&bus_capacitance=&bus_voltage_max=&screw_life=`
 /// (each optional; see `motions::SizingRequest`).
 async fn sizing(
     State(state): State<AppState>,

@@ -435,6 +435,8 @@ pub struct SizingRequest {
     /// The DC bus's capacitance (F) and highest voltage (V).
     pub bus_capacitance: Option<f64>,
     pub bus_voltage_max: Option<f64>,
+    /// The required nominal life of a ball or lead screw, h of the repeated duty cycle.
+    pub screw_life: Option<f64>,
 }
 
 /// The settings a sizing ran with, as the report states them.
@@ -442,6 +444,8 @@ pub struct SizingRequest {
 pub struct SizingSettings {
     pub reserve: f64,
     pub dwell: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub screw_life: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub amplifier: Option<AmplifierView>,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -527,6 +531,7 @@ pub fn sizing_settings(
         dwell: req.dwell.unwrap_or(0.0),
         amplifier,
         brake,
+        screw_life: req.screw_life,
     };
     errors.extend(settings.check().into_iter().map(FieldError::from));
     if errors.is_empty() {
@@ -588,6 +593,7 @@ pub fn sizing(
         settings: SizingSettings {
             reserve: settings.reserve,
             dwell: settings.dwell,
+            screw_life: settings.screw_life,
             amplifier: settings.amplifier.as_ref().map(|a| AmplifierView {
                 id: a.part.id.clone(),
                 name: a.part.name.clone(),

@@ -38,7 +38,7 @@ export function renderMotion(panel, ctx) {
   let traj = null;
   let sizing = null;
   // The sizing's settings (the form under "Drive sizing"): kept while the view lives.
-  const sizingSettings = { reservePercent: 20, dwell: 0, amplifier: '', supplyVoltage: '', brake: 'none', brakePower: '', busCapacitance: '', busVoltageMax: '' };
+  const sizingSettings = { reservePercent: 20, dwell: 0, amplifier: '', supplyVoltage: '', brake: 'none', brakePower: '', busCapacitance: '', busVoltageMax: '', screwLife: '' };
   let amplifiers = null;
   let collisions = null; // GET …/collisions of the current motion
   let contactPair = null; // the pair whose closest points are drawn (its key)
@@ -953,6 +953,7 @@ export function renderMotion(panel, ctx) {
       input('brakePower', 'Resistor power (W)', s.brakePower),
       input('busCapacitance', 'Bus capacitance (F)', s.busCapacitance),
       input('busVoltageMax', 'Bus max voltage (V)', s.busVoltageMax),
+      input('screwLife', 'Required screw life (h)', s.screwLife, { title: 'Ball and lead screws: the nominal life L10 = (C_a/F_m)³·10⁶ revolutions must cover this many hours of the repeated motion; empty: not checked' }),
       h('button', { type: 'submit' }, 'Size again'),
     );
   }
@@ -968,6 +969,7 @@ export function renderMotion(panel, ctx) {
       `Reserve ${num(Math.round(st.reserve * 1000) / 10)} % · duty cycle: motion ${num(sizing.duration)} s + dwell ${num(st.dwell)} s · `,
       a ? `amplifier ${a.name} at ${a.supply_voltage === null ? '(no supply voltage set)' : `${num(a.supply_voltage)} V`} (${a.i_cont === null ? '?' : num(a.i_cont)} A continuous, ${a.i_peak === null ? '?' : num(a.i_peak)} A peak)` : 'no amplifier',
       ` · ${brake}`,
+      st.screw_life ? ` · required screw life ${num(st.screw_life)} h` : '',
       a?.source ? h('small', { title: a.source }, ' (amplifier source)') : null,
     );
   }

@@ -22,6 +22,7 @@ export function sizingQuery(s) {
     put('bus_capacitance', s.busCapacitance);
     put('bus_voltage_max', s.busVoltageMax);
   }
+  put('screw_life', s.screwLife);
   const text = q.toString();
   return text ? `?${text}` : '';
 }

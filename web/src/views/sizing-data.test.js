@@ -8,6 +8,8 @@ test('sizingQuery sends only what is set, the reserve as a fraction', () => {
   const q = sizingQuery({ reservePercent: 10, dwell: '', amplifier: 'a1', supplyVoltage: 24, brake: 'bus', busCapacitance: 0.001, busVoltageMax: 60, brakePower: 50 });
   assert.equal(q, '?reserve=0.1&amplifier=a1&supply_voltage=24&bus_capacitance=0.001&bus_voltage_max=60');
   assert.equal(sizingQuery({ reservePercent: '', dwell: '', brake: 'resistor', brakePower: 50, supplyVoltage: 24 }), '?brake_power=50');
+  assert.equal(sizingQuery({ reservePercent: '', dwell: '', screwLife: 20000 }), '?screw_life=20000');
+  assert.equal(sizingQuery({ reservePercent: '', dwell: '', screwLife: '' }), '');
 });
 
 test('verdict distinguishes fail, not evaluated and the reserve', () => {

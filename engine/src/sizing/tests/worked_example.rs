@@ -71,7 +71,7 @@ fn settings() -> Settings {
         i_peak: Some(20.0),
         source: "the example's amplifier: 12–60 V supply, 10 A continuous, 20 A peak".into(),
     };
-    Settings { reserve: 0.2, dwell: DWELL, amplifier: Some(amplifier), brake: Some(Brake::Resistor { power: 20.0 }) }
+    Settings { reserve: 0.2, dwell: DWELL, amplifier: Some(amplifier), brake: Some(Brake::Resistor { power: 20.0 }), screw_life: None }
 }
 
 /// The catalogue of the example: the seed's DC motors from catalogues (maxon EC 45 flat,
