@@ -158,7 +158,14 @@ async fn limits_motions_trajectories_and_ik() {
         .as_str()
         .expect("id")
         .to_string();
-    let gear = instance_named(&app, "Ideal gear 100:1").await;
+    // A gear with every value the checks read (the seed's "Ideal gear 100:1" lacks its torque
+    // ratings since migration 0017).
+    let gear = json!({"class_id": class_of("Modelica.Mechanics.Rotational.Components.IdealGear"), "name": "test gear 100:1", "source": "test values",
+        "values": {"ratio": 100, "T_rated": 31, "T_peak": 70, "w_in_max": 764.5, "J_in": 7.9e-6}});
+    let gear = json_of(app.client.post(app.url("/api/library/instances")).json(&gear).send().await.expect("post"), 201).await["id"]
+        .as_str()
+        .expect("id")
+        .to_string();
     let controller = seeded_instance(&app, "cad2mo.Drives.Controllers.CascadePPI").await;
     let drive = json!({"motor_instance": motor, "gear_instance": gear, "controller_instance": controller});
     json_of(app.client.put(app.url(&format!("{base}/drives/{}", names[0]))).json(&drive).send().await.expect("put"), 200).await;

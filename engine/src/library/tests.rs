@@ -368,10 +368,11 @@ fn the_seed_is_valid_and_ids_are_unique() {
     let gp42 = lib.instances.iter().find(|i| i.id == seed::MAXON_GP42C_74).expect("GP 42 C");
     assert_eq!(gp42.value("eta"), Some(&Value::Real(0.72)));
     assert_eq!(gp42.value("T_peak"), Some(&Value::Real(22.5)));
-    // Datasheet values: CSF-17-100 ratings, in SI units.
+    // Datasheet values of the size-17 strain-wave gear, in SI units; its torque ratings are
+    // missing (no maker's page at hand for the first seed's figures: its source says why).
     let csf = lib.instances.iter().find(|i| i.id == seed::GEAR_100).expect("CSF-17-100");
-    assert_eq!(csf.value("T_rated"), Some(&Value::Real(31.0)));
-    assert_eq!(csf.value("T_peak"), Some(&Value::Real(70.0)));
+    assert_eq!((csf.value("T_rated"), csf.value("T_peak")), (None, None));
+    assert!(csf.source.contains("T_rated and T_peak missing"), "{}", csf.source);
     assert_eq!(csf.value("J_in"), Some(&Value::Real(7.9e-6)));
     let w = csf.value("w_in_max").and_then(Value::as_f64).expect("w_in_max");
     assert!((w - 7300.0 * std::f64::consts::PI / 30.0).abs() < 1e-9, "{w}");

@@ -715,6 +715,9 @@ mod tests {
         // 0015 corrects the first-seed RE 40's source text that 0005 wrote.
         let fix = include_str!("../../../migrations/sqlite/0015_re40_source.sql");
         sqlx::raw_sql(fix).execute(&store.pool).await.expect("migrate 0015");
+        // 0017 removes the first-seed gear's unsourced torque ratings that 0005 wrote.
+        let fix = include_str!("../../../migrations/sqlite/0017_gear100_ratings.sql");
+        sqlx::raw_sql(fix).execute(&store.pool).await.expect("migrate 0017");
         // The datasheet parameters added since 0005 come at start-up (seed_new_classes).
         sqlx::query("DELETE FROM library_seed_offered").execute(&store.pool).await.expect("offered");
         seed_new_classes(&store).await.expect("new parameters");
