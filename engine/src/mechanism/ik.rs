@@ -7,7 +7,7 @@
 
 use nalgebra::{DMatrix, DVector, Isometry3, Vector3};
 
-use super::{element_motion, CoordKind, Mechanism, MechanismError, XorShift};
+use super::{element_motion, Attachment, CoordKind, Mechanism, MechanismError, XorShift};
 use crate::pipeline::ir::FrameId;
 
 /// What the tool frame should reach.
@@ -64,6 +64,20 @@ pub struct IkResult {
 }
 
 impl Mechanism {
+    /// The tool's attachment and the joint limits of an IK request, its lengths checked.
+    fn ik_inputs(&self, tool: FrameId, seed: &[f64], opts: &IkOptions) -> Result<(Attachment, Vec<(f64, f64)>), MechanismError> {
+        self.check_len("seed", seed)?;
+        let at = *self.frame_attachment(tool).ok_or_else(|| MechanismError::Internal(format!("no frame {}", tool.0)))?;
+        let limits = match &opts.limits {
+            Some(l) => {
+                self.check_len("limits", &l.iter().map(|x| x.0).collect::<Vec<_>>())?;
+                l.clone()
+            }
+            None => self.default_limits(),
+        };
+        Ok((at, limits))
+    }
+
     /// Limits for IK when none are given (CAD exports carry none): a full turn centred on the
     /// CAD pose for revolute coordinates, ±0.1 m around it for prismatic ones.
     pub fn default_limits(&self) -> Vec<(f64, f64)> {
@@ -91,15 +105,7 @@ impl Mechanism {
         if self.has_dependent() {
             return self.inverse_kinematics_closed(tool, target, seed, opts, rng);
         }
-        self.check_len("seed", seed)?;
-        let at = *self.frame_attachment(tool).ok_or_else(|| MechanismError::Internal(format!("no frame {}", tool.0)))?;
-        let limits = match &opts.limits {
-            Some(l) => {
-                self.check_len("limits", &l.iter().map(|x| x.0).collect::<Vec<_>>())?;
-                l.clone()
-            }
-            None => self.default_limits(),
-        };
+        let (at, limits) = self.ik_inputs(tool, seed, opts)?;
         // The links moving the tool, root first.
         let mut path = Vec::new();
         let mut cur = at.link;
@@ -226,15 +232,7 @@ impl Mechanism {
         opts: &IkOptions,
         rng: &mut XorShift,
     ) -> Result<IkResult, MechanismError> {
-        self.check_len("seed", seed)?;
-        let at = *self.frame_attachment(tool).ok_or_else(|| MechanismError::Internal(format!("no frame {}", tool.0)))?;
-        let limits = match &opts.limits {
-            Some(l) => {
-                self.check_len("limits", &l.iter().map(|x| x.0).collect::<Vec<_>>())?;
-                l.clone()
-            }
-            None => self.default_limits(),
-        };
+        let (at, limits) = self.ik_inputs(tool, seed, opts)?;
         let driven = self.driven();
         let nd = driven.len();
         if nd == 0 {

@@ -822,19 +822,7 @@ impl Experiment {
 
 /// The output interval for a run of `stop` seconds: 500 intervals, as a round number.
 pub fn interval(stop: f64) -> f64 {
-    let raw = stop / 500.0;
-    let p = 10f64.powf(raw.log10().floor());
-    let m = raw / p;
-    let m = if m <= 1.0 {
-        1.0
-    } else if m <= 2.0 {
-        2.0
-    } else if m <= 5.0 {
-        5.0
-    } else {
-        10.0
-    };
-    let v = m * p;
+    let v = one_two_five_up(stop / 500.0);
     format!("{v:.12e}").parse().unwrap_or(v)
 }
 
@@ -843,6 +831,11 @@ fn nice_up(x: f64) -> f64 {
     if x > 2.0 {
         return x.ceil();
     }
+    one_two_five_up(x)
+}
+
+/// `x` (> 0) rounded up to 1, 2 or 5 times a power of ten.
+fn one_two_five_up(x: f64) -> f64 {
     let p = 10f64.powf(x.log10().floor());
     let m = x / p;
     let m = if m <= 1.0 {
