@@ -307,7 +307,6 @@ impl Collision {
         for (&(a, b), why) in &self.joined {
             r.default_allowed.push(AllowedPair { a: names[a].clone(), b: names[b].clone(), why: why.clone() });
         }
-        let world = collision::World::new(&self.shapes);
         let poses = cad_poses(model);
         let mut warnings = Vec::new();
         // Bodies with mass but no mesh cannot collide (massless root parts are frame hubs).
@@ -353,7 +352,9 @@ impl Collision {
                 "collision shapes".to_string(),
             ));
         }
-        for c in collision::contacts_at(&world, &poses, &|a, b| self.checked(a, b), 0.0) {
+        // Only the bodies of pairs whose boxes meet get parry shapes (the same contacts as
+        // `contacts_at` of the whole world).
+        for c in collision::contacts_of(&self.shapes, &poses, &|a, b| self.checked(a, b), 0.0) {
             if c.distance >= 0.0 {
                 continue;
             }
