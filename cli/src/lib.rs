@@ -628,3 +628,36 @@ mod warning_tests {
         assert_eq!(lines.last().unwrap(), "warning[joint-frames-misaligned]: 1313 more like these (every one is in report.json)");
     }
 }
+
+#[cfg(test)]
+mod read_tests {
+    use cad2mo_engine::pipeline::front::bundle::Limits;
+
+    /// A folder's files, read on several threads, land at their own paths with their own bytes;
+    /// the limits are checked on the listed sizes before anything is read.
+    #[test]
+    fn a_folder_reads_whole_and_within_its_limits() {
+        let dir = tempfile::tempdir().expect("temp dir");
+        let mut want = Vec::new();
+        for i in 0..64 {
+            let rel = if i % 3 == 0 { format!("sub/d{}/f{i}.stl", i % 4) } else { format!("f{i}.txt") };
+            let bytes: Vec<u8> = (0..(i * 37 % 500)).map(|k| (k * 31 + i) as u8).collect();
+            let path = dir.path().join(&rel);
+            std::fs::create_dir_all(path.parent().expect("parent")).expect("mkdir");
+            std::fs::write(&path, &bytes).expect("write");
+            want.push((rel, bytes));
+        }
+        let total: u64 = want.iter().map(|(_, b)| b.len() as u64).sum();
+        let b = super::read_bundle(dir.path(), &Limits::default()).expect("reads");
+        assert_eq!(b.len(), want.len());
+        for (rel, bytes) in &want {
+            assert_eq!(b.get(rel), Some(&bytes[..]), "{rel}");
+        }
+        let tight = |max_total_bytes, max_entries| Limits { max_total_bytes, max_entries, ..Limits::default() };
+        assert!(super::read_bundle(dir.path(), &tight(total, 64)).is_ok());
+        for limits in [tight(total - 1, 64), tight(total, 63)] {
+            let e = super::read_bundle(dir.path(), &limits).expect_err("beyond the limits");
+            assert!(e.contains("bundle exceeds"), "{e}");
+        }
+    }
+}
