@@ -527,13 +527,27 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
             h.join().unwrap_or_else(|e| std::panic::resume_unwind(e))
         }
         let (model, pkg_name) = (&a.model, &package_name);
-        let shapes = scope.spawn(move || back::collision_shapes::body_shapes(model, &Default::default(), opts.shape_cache.as_deref()));
         let body_names = back::modelica::assign_with_hints(&a.model, &modelica_options.name_hints);
+        // The collision shapes, then their files (`Resources/Collision`, deflated), which need
+        // only the shapes and the bodies' names: written while this thread still routes the
+        // diagram's wires.
+        let shape_names = body_names.bodies.clone();
+        let shapes = scope.spawn(move || {
+            let shapes = back::collision_shapes::body_shapes(model, &Default::default(), opts.shape_cache.as_deref());
+            let files = opts.write_shapes.then(|| {
+                let mut deflater = back::bundle::Deflater::default();
+                back::collision_shapes::shape_files(&shapes.0, pkg_name, &shape_names)
+                    .into_iter()
+                    .map(|(p, b)| (p, deflater.file(b)))
+                    .collect::<Vec<_>>()
+            });
+            (shapes, files)
+        });
         let stems = back::modelica::shape_stems(&a.model, &body_names);
         let mesh_files = opts.write_shapes.then(|| scope.spawn(move || mesh_files(model, &stems, pkg_name)));
         let back::modelica::Package { files: pkg_files, layout: pkg_layout } =
             back::modelica::write_named(&a.model, &a.validated, &modelica_options, body_names);
-        let shapes = join(shapes);
+        let (shapes, shape_files) = join(shapes);
         let mut report = report::build(report::ReportInput {
             model: &a.model,
             validated: &a.validated,
@@ -559,18 +573,16 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
         // The scene: its objects checked against this version's bodies (those it cannot take left
         // out, named), then its part of Mechatronics and of the MJCF.
         let (scene, omitted) = crate::scene::check_stored(&opts.scene, &names, &opts.scene_meshes);
-        // The collision shape files and the MuJoCo and URDF exports depend on nothing below:
-        // they are written on other threads while this one checks the CAD pose's interferences
-        // and writes Mechatronics.
+        // The MuJoCo and URDF exports depend on nothing below: they are written on other threads
+        // while this one checks the CAD pose's interferences and writes Mechatronics.
         std::thread::scope(|inner| {
-            let (validated, layout, collision_ref, names_ref, scene_ref) = (&a.validated, &pkg_layout, &collision, &names, &scene);
+            let (validated, layout, scene_ref) = (&a.validated, &pkg_layout, &scene);
             // When the package is written (`write_shapes`), files that are final are deflated for
             // the zip where they are made, on the threads beside this one.
             let ahead = |files: Vec<(String, Vec<u8>)>| -> Vec<(String, back::bundle::FileData)> {
                 let mut deflater = opts.write_shapes.then(back::bundle::Deflater::default);
                 files.into_iter().map(|(p, b)| (p, if let Some(d) = &mut deflater { d.file(b) } else { b.into() })).collect()
             };
-            let shape_files = opts.write_shapes.then(|| inner.spawn(move || ahead(collision_ref.files(pkg_name, names_ref))));
             let exports = inner.spawn(move || {
                 let mut mjcf = back::mjcf::file(model, validated, layout, pkg_name, gravity, opts.write_shapes);
                 if !scene_ref.objects.is_empty() {
@@ -679,7 +691,7 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
                 files[i].1 = b;
             }
             if let (Some(shape_files), Some(mesh_files)) = (shape_files, mesh_files) {
-                files.extend(join(shape_files));
+                files.extend(shape_files);
                 // Two files (DXF, STL) per body with a shape, a step each as they join the package.
                 let meshes = join(mesh_files);
                 let n = meshes.len() / 2;
