@@ -394,16 +394,11 @@ impl Collision {
         }
         (r, warnings)
     }
-
-    /// `Resources/Collision/<body>.obj` per body with a shape, and `shapes.json` (every part's
-    /// vertices and radius, by body name) for the service.
-    pub fn files(&self, pkg: &str, names: &[String]) -> Vec<(String, Vec<u8>)> {
-        shape_files(&self.shapes, pkg, names)
-    }
 }
 
-/// [`Collision::files`] of `shapes` (what [`body_shapes`] gives): a conversion writes them as
-/// soon as the shapes are made.
+/// `Resources/Collision/<body>.obj` per body with a shape, and `shapes.json` (every part's
+/// vertices and radius, by body name) for the service, from `shapes` as [`body_shapes`] gives
+/// them: a conversion writes them as soon as the shapes are made.
 pub fn shape_files(shapes: &[Option<BodyShape>], pkg: &str, names: &[String]) -> Vec<(String, Vec<u8>)> {
     // shapes.json, its keys in alphabetical order (as a JSON value's would be).
     #[derive(serde::Serialize)]
