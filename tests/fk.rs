@@ -137,7 +137,7 @@ fn lumped_mass_properties_match_the_generator() {
     let out = convert_path(&case, &options(&case)).expect("lump_welds converts");
     let expect: Value = serde_json::from_str(&std::fs::read_to_string(case.join("expect.json")).expect("expect.json")).expect("json");
     let mechanics = cad2mo_tests::common::file_text(&out, "/Mechanics.mo").expect("Mechanics.mo");
-    let model = cad2mo_tests::fk::parse_mechanics(mechanics).expect("parse");
+    let model = cad2mo_tests::fk::parse_mechanics(&mechanics).expect("parse");
     let poses = cad2mo_tests::fk::forward_kinematics(&model).expect("fk");
     let groups = expect["lumped"].as_array().expect("lumped groups");
     assert!(!groups.is_empty());
@@ -187,7 +187,7 @@ fn planar_loops_have_parallel_axes_in_the_emitted_model() {
             continue;
         }
         let text = cad2mo_tests::common::file_text(&out, "/Mechanics.mo").expect("Mechanics.mo");
-        let model = cad2mo_tests::fk::parse_mechanics(text).expect("parse");
+        let model = cad2mo_tests::fk::parse_mechanics(&text).expect("parse");
         let poses = cad2mo_tests::fk::forward_kinematics(&model).expect("fk");
         for l in planar {
             let mut axes = Vec::new();

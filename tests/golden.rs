@@ -90,10 +90,10 @@ fn golden() {
                 problems.extend(check_file(&out_dir.join("ir.txt"), &ir::dump::dump(&analysed.model), bless));
                 for f in ["Mechanics.mo", "Mechatronics.mo", "package.mo", "report.json"] {
                     let text = file_text(&out, &format!("/{f}")).or_else(|| file_text(&out, f)).expect("file present");
-                    problems.extend(check_file(&out_dir.join(f), text, bless));
+                    problems.extend(check_file(&out_dir.join(f), &text, bless));
                 }
                 if let Some(mjcf) = file_text(&out, ".mjcf.xml") {
-                    problems.extend(check_file(&out_dir.join("model.mjcf.xml"), mjcf, bless));
+                    problems.extend(check_file(&out_dir.join("model.mjcf.xml"), &mjcf, bless));
                 }
                 let list: String = out.files.iter().map(|(p, b)| format!("{p} {}\n", b.len())).collect();
                 problems.extend(check_file(&out_dir.join("files.txt"), &list, bless));

@@ -80,10 +80,10 @@ fn own_cases_have_no_redundant_equations() {
             .filter_map(|p| std::fs::read_to_string(p).ok())
             .find(|t| t.contains("<PhysicalModelingXMLFile"));
         let result = match first_gen {
-            Some(xml) => check(&name, mechanics, &xml),
+            Some(xml) => check(&name, &mechanics, &xml),
             // URDF and second-generation cases: the emitted model alone has no redundant
             // equation (their sources' mobility is checked by their own tests).
-            None => parse_mechanics(mechanics)
+            None => parse_mechanics(&mechanics)
                 .and_then(|model| {
                     let poses = forward_kinematics(&model)?;
                     model_structure(&model, &poses)
@@ -126,7 +126,7 @@ fn every_fixture_xml_has_no_redundant_equations() {
             }
         };
         let mechanics = file_text(&out, "/Mechanics.mo").expect("Mechanics.mo");
-        if let Err(e) = check(&rel, mechanics, &text) {
+        if let Err(e) = check(&rel, &mechanics, &text) {
             failures.push(e);
         }
         // The diagram's layout (issue 17), on the same conversion.

@@ -152,7 +152,11 @@ pub fn read_bundle(path: &Path, limits: &Limits) -> Result<Bundle, String> {
         return Err(format!("{}: not a regular file or a directory", path.display()));
     }
     if meta.is_dir() {
-        let mut files = Vec::new();
+        // The files are listed (with their sizes, so the limits are checked before anything is
+        // read), then read on up to four threads into their places in the list (issue 23: the
+        // kernel's copies of a bundle's thousands of files are most of a large conversion's
+        // start). The bundle does not depend on the threads.
+        let mut listed: Vec<(PathBuf, String, u64)> = Vec::new();
         let mut total = 0u64;
         let mut stack = vec![path.to_path_buf()];
         while let Some(dir) = stack.pop() {
@@ -164,9 +168,9 @@ pub fn read_bundle(path: &Path, limits: &Limits) -> Result<Bundle, String> {
                 if ft.is_dir() {
                     stack.push(p);
                 } else if ft.is_file() {
-                    let bytes = read_bounded(&p, limits.max_total_bytes.saturating_sub(total))?;
-                    total += bytes.len() as u64;
-                    if total > limits.max_total_bytes || files.len() >= limits.max_entries {
+                    let len = entry.metadata().map_err(|e| format!("{}: {e}", p.display()))?.len();
+                    total = total.saturating_add(len);
+                    if total > limits.max_total_bytes || listed.len() >= limits.max_entries {
                         return Err(format!(
                             "{}: bundle exceeds {} bytes or {} files",
                             path.display(),
@@ -176,15 +180,52 @@ pub fn read_bundle(path: &Path, limits: &Limits) -> Result<Bundle, String> {
                     }
                     let rel = p.strip_prefix(path).map_err(|e| e.to_string())?;
                     let rel = rel.components().map(|c| c.as_os_str().to_string_lossy()).collect::<Vec<_>>().join("/");
-                    files.push((rel, bytes));
+                    listed.push((p, rel, len));
                 }
             }
         }
+        let read = read_listed(&listed)?;
+        let files = listed.into_iter().zip(read).map(|((_, rel, _), bytes)| (rel, bytes));
         Bundle::from_files(&name, files).map_err(|e| e.to_string())
     } else {
         let bytes = read_bounded(path, limits.max_total_bytes)?;
         Bundle::from_zip(&name, &bytes, limits).map_err(|e| e.to_string())
     }
+}
+
+/// Reads the listed files (path, relative path, size when listed), each at most its listed size
+/// (a file that grew since is refused: the limits were checked on the sizes), on up to four
+/// threads; the first failure in list order is reported.
+fn read_listed(listed: &[(PathBuf, String, u64)]) -> Result<Vec<Vec<u8>>, String> {
+    use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+    let next = AtomicUsize::new(0);
+    let failed = AtomicBool::new(false);
+    let work = || {
+        let mut mine = Vec::new();
+        while !failed.load(Ordering::Relaxed) {
+            let i = next.fetch_add(1, Ordering::Relaxed);
+            let Some((p, _, len)) = listed.get(i) else { break };
+            let r = read_bounded(p, *len);
+            failed.fetch_or(r.is_err(), Ordering::Relaxed);
+            mine.push((i, r));
+        }
+        mine
+    };
+    let threads = std::thread::available_parallelism().map_or(1, |t| t.get()).min(4).min(listed.len()).max(1);
+    let mut read: Vec<Option<Result<Vec<u8>, String>>> = (0..listed.len()).map(|_| None).collect();
+    std::thread::scope(|scope| {
+        let helpers: Vec<_> = (1..threads).map(|_| scope.spawn(work)).collect();
+        for (i, r) in work() {
+            read[i] = Some(r);
+        }
+        for h in helpers {
+            for (i, r) in h.join().unwrap_or_else(|e| std::panic::resume_unwind(e)) {
+                read[i] = Some(r);
+            }
+        }
+    });
+    // A failure stops the threads, so files after it may be unread: the first failure is reported.
+    read.into_iter().map(|r| r.unwrap_or_else(|| Err("a file of the bundle was not read".to_string()))).collect()
 }
 
 /// Reads a regular file of at most `max` bytes (a file that grows while read, or that was swapped
@@ -585,5 +626,38 @@ mod warning_tests {
         assert_eq!(lines.len(), super::WARNINGS_PER_CODE + 2, "{lines:?}");
         assert!(lines.iter().any(|l| l.starts_with("warning[interference]: collision shapes: a and b")));
         assert_eq!(lines.last().unwrap(), "warning[joint-frames-misaligned]: 1313 more like these (every one is in report.json)");
+    }
+}
+
+#[cfg(test)]
+mod read_tests {
+    use cad2mo_engine::pipeline::front::bundle::Limits;
+
+    /// A folder's files, read on several threads, land at their own paths with their own bytes;
+    /// the limits are checked on the listed sizes before anything is read.
+    #[test]
+    fn a_folder_reads_whole_and_within_its_limits() {
+        let dir = tempfile::tempdir().expect("temp dir");
+        let mut want = Vec::new();
+        for i in 0..64 {
+            let rel = if i % 3 == 0 { format!("sub/d{}/f{i}.stl", i % 4) } else { format!("f{i}.txt") };
+            let bytes: Vec<u8> = (0..(i * 37 % 500)).map(|k| (k * 31 + i) as u8).collect();
+            let path = dir.path().join(&rel);
+            std::fs::create_dir_all(path.parent().expect("parent")).expect("mkdir");
+            std::fs::write(&path, &bytes).expect("write");
+            want.push((rel, bytes));
+        }
+        let total: u64 = want.iter().map(|(_, b)| b.len() as u64).sum();
+        let b = super::read_bundle(dir.path(), &Limits::default()).expect("reads");
+        assert_eq!(b.len(), want.len());
+        for (rel, bytes) in &want {
+            assert_eq!(b.get(rel), Some(&bytes[..]), "{rel}");
+        }
+        let tight = |max_total_bytes, max_entries| Limits { max_total_bytes, max_entries, ..Limits::default() };
+        assert!(super::read_bundle(dir.path(), &tight(total, 64)).is_ok());
+        for limits in [tight(total - 1, 64), tight(total, 63)] {
+            let e = super::read_bundle(dir.path(), &limits).expect_err("beyond the limits");
+            assert!(e.contains("bundle exceeds"), "{e}");
+        }
     }
 }

@@ -36,6 +36,29 @@ pub fn push_dbg(s: &mut String, x: f64) {
     s.push_str(out.as_str());
 }
 
+/// Appends `x` as `format!("{x}")` prints it (as [`Disp`]) to `s`, without going through
+/// `core::fmt`.
+pub fn push_disp(s: &mut String, x: f64) {
+    let mut out = Text::new();
+    lay_out(&mut out, x, false, Layout::Display);
+    s.push_str(out.as_str());
+}
+
+/// Appends the integer `n` in decimal to `s`, as `format!("{n}")` prints it.
+pub fn push_uint(s: &mut String, mut n: u64) {
+    let mut digits = [0u8; 20];
+    let mut at = digits.len();
+    loop {
+        at -= 1;
+        digits[at] = b'0' + (n % 10) as u8;
+        n /= 10;
+        if n == 0 {
+            break;
+        }
+    }
+    s.push_str(std::str::from_utf8(&digits[at..]).unwrap_or_default());
+}
+
 /// Appends the `f32` `x` as `format!("{x}")` prints it to `out`.
 pub fn push_disp32(out: &mut Vec<u8>, x: f32) {
     let mut text = Text::new();
@@ -407,6 +430,9 @@ mod tests {
         for x in values(400_000) {
             assert_eq!(Disp(x).to_string(), format!("{x}"), "{:e} ({:#x})", x, x.to_bits());
             let mut s = String::from("a");
+            push_disp(&mut s, x);
+            assert_eq!(s, format!("a{x}"), "{:e} ({:#x})", x, x.to_bits());
+            let mut s = String::from("a");
             push_dbg(&mut s, x);
             assert_eq!(s, format!("a{x:?}"), "{:e} ({:#x})", x, x.to_bits());
             if x != 0.0 {
@@ -416,6 +442,17 @@ mod tests {
             let mut b = Vec::new();
             push_disp32(&mut b, y);
             assert_eq!(String::from_utf8_lossy(&b), format!("{y}"), "{y:e} ({:#x})", y.to_bits());
+        }
+    }
+
+    #[test]
+    fn integers_as_the_standard_library_prints_them() {
+        for n in
+            [0u64, 1, 9, 10, 99, 100, 12_345, 999_999, 1 << 32, u64::MAX - 1, u64::MAX].into_iter().chain((0..2_000).map(|k| k * 7_919))
+        {
+            let mut s = String::from("v ");
+            push_uint(&mut s, n);
+            assert_eq!(s, format!("v {n}"));
         }
     }
 

@@ -49,7 +49,7 @@ pub fn fk_check_with_inertia(
     mass_props: &BTreeMap<String, (f64, Matrix3<f64>)>,
 ) -> Result<FkStats, String> {
     let text = file_text(out, "/Mechanics.mo").ok_or("no Mechanics.mo in output")?;
-    let model = fk::parse_mechanics(text)?;
+    let model = fk::parse_mechanics(&text)?;
     let poses = fk::forward_kinematics(&model)?;
     let mut stats = FkStats { loop_checks: poses.loop_checks, ..FkStats::default() };
     let mut errors = Vec::new();

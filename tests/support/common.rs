@@ -93,12 +93,10 @@ pub fn write_output(out: &Output, dir: &Path) {
     }
 }
 
-/// The text of one output file (text files are held plain; the deflated shape files are not text).
-pub fn file_text<'a>(out: &'a Output, suffix: &str) -> Option<&'a str> {
-    out.files.iter().find(|(p, _)| p.ends_with(suffix)).and_then(|(_, b)| match b.bytes() {
-        std::borrow::Cow::Borrowed(b) => std::str::from_utf8(b).ok(),
-        std::borrow::Cow::Owned(_) => None,
-    })
+/// The text of one output file (inflated where the conversion deflated it ahead).
+pub fn file_text(out: &Output, suffix: &str) -> Option<String> {
+    // Files may come deflated (`FileData::bytes` inflates them).
+    out.files.iter().find(|(p, _)| p.ends_with(suffix)).and_then(|(_, b)| String::from_utf8(b.bytes().into_owned()).ok())
 }
 
 /// Runs `../shared/tools/msl-check` on `dir`. `None` (with a notice) when the tool is absent;

@@ -70,34 +70,56 @@ pub(crate) fn prepared_part(p: &ConvexPart) -> Option<(Isometry3<f64>, SharedSha
     }
 }
 
+/// One body's parry shapes (None: no usable part).
+fn prepare(s: &BodyShape) -> Option<Prepared> {
+    let parts: Vec<(Isometry3<f64>, SharedShape, Aabb)> = s
+        .parts
+        .iter()
+        .filter_map(prepared_part)
+        .map(|(iso, sh)| {
+            let bb = sh.compute_aabb(&iso);
+            (iso, sh, bb)
+        })
+        .collect();
+    let reach = s
+        .parts
+        .iter()
+        .flat_map(|p| p.vertices.iter().map(move |v| nalgebra::Vector3::from(*v).norm() + p.radius.max(0.0)))
+        .fold(0.0, f64::max);
+    let mut local_aabb = parts.first()?.2;
+    for p in &parts[1..] {
+        local_aabb.merge(&p.2);
+    }
+    Some(Prepared { parts, local_aabb, reach })
+}
+
+/// A box in the body frame holding every part [`prepare`] would make of `s` (their vertices,
+/// each grown by the part's radius, and a little more for rounding), without making them: None
+/// where no part can be made. A part whose faces and hull parry both refuse is in it all the
+/// same (a larger box than [`World::new`]'s costs only a pair the narrow phase rejects).
+fn bound(s: &BodyShape) -> Option<Aabb> {
+    let mut out: Option<Aabb> = None;
+    for p in &s.parts {
+        let r = p.radius.max(0.0);
+        let finite = p.vertices.iter().all(|v| v.iter().all(|c| c.is_finite())) && r.is_finite();
+        // The parts `prepared_part` leaves out.
+        if !finite || p.vertices.is_empty() || (p.vertices.len() <= 2 && r <= 0.0) {
+            continue;
+        }
+        let pts: Vec<Point3<f64>> = p.vertices.iter().map(|v| Point3::from(*v)).collect();
+        let bb = Aabb::from_points(pts.iter().copied()).loosened(r);
+        match &mut out {
+            Some(o) => o.merge(&bb),
+            None => out = Some(bb),
+        }
+    }
+    let o = out?;
+    Some(o.loosened(1e-9 * (1.0 + (o.maxs - o.mins).norm() + o.maxs.coords.amax().max(o.mins.coords.amax()))))
+}
+
 impl World {
     pub fn new(shapes: &[Option<BodyShape>]) -> World {
-        let bodies = shapes
-            .iter()
-            .map(|s| {
-                let s = s.as_ref()?;
-                let parts: Vec<(Isometry3<f64>, SharedShape, Aabb)> = s
-                    .parts
-                    .iter()
-                    .filter_map(prepared_part)
-                    .map(|(iso, sh)| {
-                        let bb = sh.compute_aabb(&iso);
-                        (iso, sh, bb)
-                    })
-                    .collect();
-                let reach = s
-                    .parts
-                    .iter()
-                    .flat_map(|p| p.vertices.iter().map(move |v| nalgebra::Vector3::from(*v).norm() + p.radius.max(0.0)))
-                    .fold(0.0, f64::max);
-                let mut local_aabb = parts.first()?.2;
-                for p in &parts[1..] {
-                    local_aabb.merge(&p.2);
-                }
-                Some(Prepared { parts, local_aabb, reach })
-            })
-            .collect();
-        World { bodies }
+        World { bodies: shapes.iter().map(|s| prepare(s.as_ref()?)).collect() }
     }
 
     /// Number of bodies (with or without shapes).
@@ -186,6 +208,57 @@ pub fn contacts_at(world: &World, poses: &[Isometry3<f64>], checked: &dyn Fn(usi
             continue;
         }
         let (Some(Some(sa)), Some(Some(sb))) = (world.bodies.get(a), world.bodies.get(b)) else { continue };
+        if let Some(c) = pair_contact(sa, &poses[a], sb, &poses[b], margin) {
+            if c.dist <= margin {
+                out.push(Contact {
+                    a,
+                    b,
+                    distance: c.dist,
+                    point_a: arr(&c.point1),
+                    point_b: arr(&c.point2),
+                    normal: [c.normal1.x, c.normal1.y, c.normal1.z],
+                });
+            }
+        }
+    }
+    out
+}
+
+/// [`contacts_at`] of `World::new(shapes)` (the same contacts), making the parry shapes of only
+/// the bodies in the pairs the broad phase finds and `checked` keeps: a conversion's check at
+/// the CAD pose meets few of its thousands of bodies (issue 23; preparing every body's parts was
+/// most of that check). The broad phase takes each body's [`bound`], which holds the box
+/// `World::new` gives it: a pair it adds is one whose parts' boxes are apart by more than
+/// `margin`, which the narrow phase rejects before any query.
+pub fn contacts_of(
+    shapes: &[Option<BodyShape>],
+    poses: &[Isometry3<f64>],
+    checked: &dyn Fn(usize, usize) -> bool,
+    margin: f64,
+) -> Vec<Contact> {
+    let margin = if margin.is_finite() { margin.max(0.0) } else { 0.0 };
+    let aabbs: Vec<Option<Aabb>> = shapes
+        .iter()
+        .enumerate()
+        .map(|(i, s)| {
+            let x = poses.get(i).filter(|x| x.translation.vector.iter().chain(x.rotation.coords.iter()).all(|c| c.is_finite()))?;
+            Some(bound(s.as_ref()?)?.transform_by(x))
+        })
+        .collect();
+    let mut pairs = Vec::new();
+    broad_pairs(&aabbs, margin / 2.0 + 1e-12, &mut pairs);
+    let mut prepared: Vec<Option<Option<Prepared>>> = (0..shapes.len()).map(|_| None).collect();
+    let mut out = Vec::new();
+    for (a, b) in pairs {
+        if !checked(a, b) {
+            continue;
+        }
+        for i in [a, b] {
+            if prepared[i].is_none() {
+                prepared[i] = Some(shapes[i].as_ref().and_then(prepare));
+            }
+        }
+        let (Some(Some(sa)), Some(Some(sb))) = (&prepared[a], &prepared[b]) else { continue };
         if let Some(c) = pair_contact(sa, &poses[a], sb, &poses[b], margin) {
             if c.dist <= margin {
                 out.push(Contact {

@@ -21,6 +21,6 @@ mod shape;
 mod tests;
 
 pub use cache::{shape_bytes, CacheStats, MemoryShapeCache, ShapeCache, ShapeKey, DEFAULT_CACHE_BYTES};
-pub use check::{contacts_at, sweep, Contact, PairSweep, Sweep, SweepOptions, World};
+pub use check::{contacts_at, contacts_of, sweep, Contact, PairSweep, Sweep, SweepOptions, World};
 pub(crate) use shape::hull_part;
 pub use shape::{body_shape, decomposition_plan, obj_text, BodyShape, DecompositionPlan, ShapeKind, ShapeOptions};

@@ -962,8 +962,9 @@ fn decompose(pts: &[P3], tris: &[[u32; 3]], opts: &ShapeOptions, plan: &Decompos
 
 /// Wavefront OBJ of a shape: one `o` per part; spheres, capsules and rounded parts tessellated.
 pub fn obj_text(shape: &BodyShape, name: &str) -> String {
-    use crate::numtext::Disp;
-    use std::fmt::Write;
+    use crate::numtext::{push_disp, push_uint};
+    // Numbers straight into the text (`core::fmt` was a third of writing a large package's
+    // shape files).
     let mut s = format!("# cad2mo collision shape: {} ({})\n", name, shape.kind.name());
     let mut base = 1usize;
     for (k, p) in shape.parts.iter().enumerate() {
@@ -988,12 +989,24 @@ pub fn obj_text(shape: &BodyShape, name: &str) -> String {
         } else {
             (p.vertices.clone(), p.faces.clone())
         };
-        let _ = writeln!(s, "o {name}_{k}");
+        s.push_str("o ");
+        s.push_str(name);
+        s.push('_');
+        push_uint(&mut s, k as u64);
+        s.push('\n');
         for v in &vs {
-            let _ = writeln!(s, "v {} {} {}", Disp(v[0]), Disp(v[1]), Disp(v[2]));
+            for (i, &x) in v.iter().enumerate() {
+                s.push_str(if i == 0 { "v " } else { " " });
+                push_disp(&mut s, x);
+            }
+            s.push('\n');
         }
         for f in &fs {
-            let _ = writeln!(s, "f {} {} {}", f[0] as usize + base, f[1] as usize + base, f[2] as usize + base);
+            for (i, &x) in f.iter().enumerate() {
+                s.push_str(if i == 0 { "f " } else { " " });
+                push_uint(&mut s, (x as usize + base) as u64);
+            }
+            s.push('\n');
         }
         base += vs.len();
     }

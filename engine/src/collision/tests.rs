@@ -577,3 +577,45 @@ fn parts_prepared_from_their_faces_measure_as_hulls() {
         }
     }
 }
+
+/// `contacts_of` (the conversion's CAD-pose check: parry shapes only for the bodies the broad
+/// phase meets) gives exactly `contacts_at` of the whole world: boxes, a sphere (one point and a
+/// radius), a cylinder, an L decomposition, a body without a shape and one whose only part
+/// cannot be made, swinging through contact, at two margins.
+#[test]
+fn contacts_of_equals_contacts_at_of_the_whole_world() {
+    let (vs, ts) = box_mesh([-0.04, -0.03, -0.02], [0.04, 0.03, 0.02]);
+    let unusable = BodyShape {
+        parts: vec![ConvexPart { vertices: vec![[0.0; 3], [0.1, 0.0, 0.0]], faces: Vec::new(), radius: 0.0 }],
+        ..box_shape(0.01)
+    };
+    let shapes = vec![
+        Some(body_shape(&mesh(&vs, &ts), &opts())),
+        Some(body_shape(&uv_sphere([0.0; 3], 0.05, 12, 24), &opts())),
+        Some(body_shape(&cylinder_mesh(0.03, 0.1, 32), &opts())),
+        Some(box_shape(0.04)),
+        Some(body_shape(&l_mesh(), &ShapeOptions::default())),
+        None,
+        Some(unusable),
+    ];
+    let w = World::new(&shapes);
+    let checked = |a: usize, b: usize| (a, b) != (0, 3);
+    let mut met = 0;
+    for k in 0..=200 {
+        let t = k as f64 * 1e-2;
+        let poses: Vec<Isometry3<f64>> = (0..shapes.len())
+            .map(|i| {
+                let fi = i as f64;
+                let x = 0.1 * fi + 0.05 * (3.0 * t + fi).sin();
+                let q = UnitQuaternion::from_euler_angles(0.7 * t * fi, 0.4 * t, 0.2 * fi);
+                Isometry3::from_parts(Translation3::new(x, 0.03 * (2.0 * t + 2.0 * fi).cos(), 0.0), q)
+            })
+            .collect();
+        for margin in [0.0, 0.02] {
+            let all = contacts_at(&w, &poses, &checked, margin);
+            assert_eq!(contacts_of(&shapes, &poses, &checked, margin), all, "t = {t}, margin {margin}");
+            met += all.len();
+        }
+    }
+    assert!(met > 100, "the scene has contacts: {met}");
+}

@@ -197,8 +197,12 @@ impl ConvertError {
 #[derive(Debug)]
 pub struct Output {
     /// Every file of the output zip, paths relative to its root: `<Pkg>/...` and `report.json`.
-    /// The bodies' DXF and STL files come deflated (`FileData::bytes` reads them), so that a
-    /// conversion never holds them all as plain bytes (issue 26, peak memory).
+    /// When the package is written (`Options::write_shapes`), the bodies' DXF and STL files come
+    /// deflated (`FileData::bytes` reads them), so that a conversion never holds them all as
+    /// plain bytes (issue 26, peak memory), and so do the other files that are final when made
+    /// (all but `package.mo`, the `package.order` files, Mechatronics and what the observer
+    /// adds): they are deflated on the threads that make them, beside the Modelica writing
+    /// (issue 23). Which files come deflated does not depend on the threads.
     pub files: Vec<(String, back::bundle::FileData)>,
     pub report: report::Report,
     /// How many collision shapes were computed and how many came from the shape cache (not in
@@ -236,16 +240,16 @@ pub const PEAK_BASE_BYTES: u64 = 150_000_000;
 /// The estimate's bytes per triangle (after instancing).
 pub const PEAK_BYTES_PER_TRIANGLE: u64 = 60;
 
-/// The DXF and STL file of every body with a shape (`layout.shapes` names them), in body order,
+/// The DXF and STL file of every body with a shape (`stems` names them: [`back::modelica::shape_stems`]), in body order,
 /// each deflated for the zip as soon as it is written (issue 26, peak memory: the plain bytes of
 /// one body's two files at a time per thread, about 240 bytes per triangle, instead of every
 /// body's; bodies sharing a mesh still get a file each, named after them). Bodies are taken
 /// from a shared counter by up to 4 threads.
-fn mesh_files(model: &Model, layout: &back::modelica::Layout, pkg_name: &str) -> Vec<(String, back::bundle::FileData)> {
+fn mesh_files(model: &Model, stems: &[Option<String>], pkg_name: &str) -> Vec<(String, back::bundle::FileData)> {
     use std::sync::atomic::{AtomicUsize, Ordering};
     let dir = format!("{pkg_name}/Resources/Shapes");
     let todo: Vec<(&str, &ir::Body, &ir::Mesh)> =
-        layout.shapes.iter().zip(&model.bodies).filter_map(|(stem, body)| Some((stem.as_deref()?, body, body.mesh.as_deref()?))).collect();
+        stems.iter().zip(&model.bodies).filter_map(|(stem, body)| Some((stem.as_deref()?, body, body.mesh.as_deref()?))).collect();
     let next = AtomicUsize::new(0);
     let work = || {
         let mut deflater = back::bundle::Deflater::default();
@@ -507,159 +511,202 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
     };
     let package_name = if package_name == "P" { "CadModel".to_string() } else { package_name };
     obs.progress(Stage::Modelica, 0, 1);
-    // The bodies' collision shapes need no names: they are made (on all cores) while this
-    // thread writes the Modelica text.
-    let (pkg, shapes) = std::thread::scope(|scope| {
-        let shapes = scope.spawn(|| back::collision_shapes::body_shapes(&a.model, &Default::default(), opts.shape_cache.as_deref()));
-        let pkg = back::modelica::write(
-            &a.model,
-            &a.validated,
-            &back::modelica::Options {
-                package_name: package_name.clone(),
-                gravity,
-                converter_version: VERSION.to_string(),
-                name_hints: opts.name_hints.clone(),
-            },
-        );
-        (pkg, shapes.join().unwrap_or_else(|e| std::panic::resume_unwind(e)))
-    });
-    let mut report = report::build(report::ReportInput {
-        model: &a.model,
-        validated: &a.validated,
-        layout: &pkg.layout,
-        package_name: &package_name,
-        options: report::ReportOptions { lump_welds: opts.lump_welds, gravity },
-        merged: &a.merged,
-        absorbed: &a.absorbed,
-        vrml: a.vrml.as_ref(),
-        warnings: a.warnings,
-        version: VERSION,
-    });
-    for (c, done) in a.model.couplings.iter().zip(&pkg.layout.couplings) {
-        if let Err(why) = done {
-            report.warnings.push(Warning::new("mimic-not-expressible", format!("coupling not emitted: {why}"), c.loc.to_string()));
-        }
-    }
-    // Collision shapes of every body with a mesh; interferences at the CAD pose are warnings.
-    obs.progress(Stage::Collision, 0, 1);
-    let names: Vec<String> = pkg.layout.names.as_ref().map(|n| n.bodies.clone()).unwrap_or_default();
-    let joint_names: Vec<String> = pkg.layout.names.as_ref().map(|n| n.joints.clone()).unwrap_or_default();
-    let collision = back::collision_shapes::Collision::from_shapes(shapes, &a.model, &names, &joint_names, &opts.collision_edits);
-    let (collision_report, collision_warnings) = collision.report(&a.model, &names);
-    obs.progress(Stage::Collision, 1, 1);
-    report.warnings.extend(collision_warnings);
-    report.collision = Some(collision_report);
-    // The scene: its objects checked against this version's bodies (those it cannot take left
-    // out, named), then its part of Mechatronics and of the MJCF.
-    let (scene, omitted) = crate::scene::check_stored(&opts.scene, &names, &opts.scene_meshes);
-    for i in omitted {
-        report.warnings.push(Warning::new("scene-object-omitted", format!("{} {}: left out of the package", i.field, i.message), ""));
-    }
-    let scene_modelica = crate::scene::package::modelica(&scene, &package_name);
-    // The shape files (collision parts, DXF and STL per body) and the MuJoCo and URDF exports
-    // depend on nothing below: they are written on other threads meanwhile.
-    let mut files = pkg.files;
+    let modelica_options = back::modelica::Options {
+        package_name: package_name.clone(),
+        gravity,
+        converter_version: VERSION.to_string(),
+        name_hints: opts.name_hints.clone(),
+    };
+    let front_warnings = a.warnings;
+    // Work that depends on nothing below runs on other threads while this one writes the
+    // Modelica text (issue 23: the second core is never left idle): the bodies' collision shapes
+    // (they need no names) and the DXF and STL file of every body with a shape (named as the
+    // package names them: `shape_stems`, the package's `Layout::shapes`).
     std::thread::scope(|scope| {
-        let (model, validated, layout, collision, names, pkg_name, scene) =
-            (&a.model, &a.validated, &pkg.layout, &collision, &names, &package_name, &scene);
-        let shape_files = opts.write_shapes.then(|| scope.spawn(move || collision.files(pkg_name, names)));
-        let mesh_files = opts.write_shapes.then(|| scope.spawn(move || mesh_files(model, layout, pkg_name)));
-        let exports = scope.spawn(move || {
-            let mut mjcf = back::mjcf::file(model, validated, layout, pkg_name, gravity, opts.write_shapes);
-            if !scene.objects.is_empty() {
-                mjcf.1 = crate::scene::package::mjcf(&String::from_utf8_lossy(&mjcf.1), scene).into_bytes();
-            }
-            let urdf = back::urdf::file(model, validated, layout, pkg_name, opts.write_shapes);
-            vec![mjcf, back::urdf::relative_file(&urdf, pkg_name), urdf]
-        });
         fn join<T>(h: std::thread::ScopedJoinHandle<'_, T>) -> T {
             h.join().unwrap_or_else(|e| std::panic::resume_unwind(e))
         }
-        let drives = obs.drives(&report, &opts.drives);
-        files.extend(back::modelica::mechatronics::components(&package_name));
-        if opts.write_shapes {
-            files.extend(crate::scene::package::mesh_files(scene, &opts.scene_meshes, &package_name));
-        }
-        let extras = obs.extras(
-            &observe::ModelView { model: &a.model, validated: &a.validated, layout: &pkg.layout, package_name: &package_name },
-            &drives,
-        );
-        // A live view frame carries at most MAX_BODIES bodies: larger models are written without one.
-        let bodies: &[String] = pkg.layout.names.as_ref().map(|n| n.bodies.as_slice()).unwrap_or_default();
-        let live = opts
-            .live
-            .as_ref()
-            .filter(|_| (1..=back::modelica::mechatronics::live::MAX_BODIES).contains(&bodies.len()))
-            .map(|t| (t, bodies));
-        if opts.live.is_some() && live.is_none() {
-            report.warnings.push(Warning::new(
-                "live-view-omitted",
-                format!(
-                    "{} bodies: a live view frame carries 1 to {}, so the package has no LiveView",
-                    bodies.len(),
-                    back::modelica::mechatronics::live::MAX_BODIES
-                ),
-                "",
-            ));
-        }
-        let parts = collision.parts();
-        let contacts = back::modelica::mechatronics::collision::declarations_with_scene(
-            &package_name,
-            names,
-            &parts,
-            &collision.allowed_pairs(),
-            &scene_modelica.members,
-        );
-        files.extend(back::modelica::mechatronics::mechatronics(
-            &package_name,
-            &drives,
-            &extras.motions,
-            &back::modelica::mechatronics::Additions {
-                live,
-                collision: contacts.as_ref(),
-                scene: (!scene_modelica.declarations.is_empty()).then_some(scene_modelica.declarations.as_str()),
-                diagram: Some(&pkg.layout.diagram),
-                experiment: Some(&back::modelica::Experiment::for_model(&a.model, gravity)),
-            },
-            &back::modelica::provenance(&a.model, VERSION),
-        )?);
-        if !extras.motions.is_empty() {
-            if let Some((_, order)) = files.iter_mut().find(|(p, _)| *p == format!("{package_name}/package.order")) {
-                order.extend_from_slice(b"Motions\n");
+        let (model, pkg_name) = (&a.model, &package_name);
+        let body_names = back::modelica::assign_with_hints(&a.model, &modelica_options.name_hints);
+        // The collision shapes, then their files (`Resources/Collision`, deflated), which need
+        // only the shapes and the bodies' names: written while this thread still routes the
+        // diagram's wires.
+        let shape_names = body_names.bodies.clone();
+        let shapes = scope.spawn(move || {
+            let shapes = back::collision_shapes::body_shapes(model, &Default::default(), opts.shape_cache.as_deref());
+            let files = opts.write_shapes.then(|| {
+                let mut deflater = back::bundle::Deflater::default();
+                back::collision_shapes::shape_files(&shapes.0, pkg_name, &shape_names)
+                    .into_iter()
+                    .map(|(p, b)| (p, deflater.file(b)))
+                    .collect::<Vec<_>>()
+            });
+            (shapes, files)
+        });
+        let stems = back::modelica::shape_stems(&a.model, &body_names);
+        let mesh_files = opts.write_shapes.then(|| scope.spawn(move || mesh_files(model, &stems, pkg_name)));
+        let back::modelica::Package { files: pkg_files, layout: pkg_layout } =
+            back::modelica::write_named(&a.model, &a.validated, &modelica_options, body_names);
+        let (shapes, shape_files) = join(shapes);
+        let mut report = report::build(report::ReportInput {
+            model: &a.model,
+            validated: &a.validated,
+            layout: &pkg_layout,
+            package_name: &package_name,
+            options: report::ReportOptions { lump_welds: opts.lump_welds, gravity },
+            merged: &a.merged,
+            absorbed: &a.absorbed,
+            vrml: a.vrml.as_ref(),
+            warnings: front_warnings,
+            version: VERSION,
+        });
+        for (c, done) in a.model.couplings.iter().zip(&pkg_layout.couplings) {
+            if let Err(why) = done {
+                report.warnings.push(Warning::new("mimic-not-expressible", format!("coupling not emitted: {why}"), c.loc.to_string()));
             }
         }
-        if let Some((_, order)) = files.iter_mut().find(|(p, _)| *p == format!("{package_name}/Components/package.order")) {
-            if live.is_some() {
-                order.extend_from_slice(b"Visualization\n");
-            }
-            if contacts.is_some() {
-                order.extend_from_slice(b"Collision\n");
-            }
-        }
-        files.extend(extras.files);
-        // The package documentation lists the report's findings and the drives.
-        if let Some((_, text)) = files.iter_mut().find(|(p, _)| *p == format!("{package_name}/package.mo")) {
-            *text =
-                back::modelica::doc::package_file(&report, &drives, &back::modelica::provenance(&a.model, VERSION), VERSION).into_bytes();
-        }
-        let mut files: Vec<(String, back::bundle::FileData)> = files.into_iter().map(|(p, b)| (p, b.into())).collect();
-        if let (Some(shape_files), Some(mesh_files)) = (shape_files, mesh_files) {
-            files.extend(join(shape_files).into_iter().map(|(p, b)| (p, b.into())));
-            // Two files (DXF, STL) per body with a shape, a step each as they join the package.
-            let meshes = join(mesh_files);
-            let n = meshes.len() / 2;
-            for (k, file) in meshes.into_iter().enumerate() {
-                if k % 2 == 0 {
-                    obs.progress(Stage::Shapes, k / 2, n);
+        // Collision shapes of every body with a mesh; interferences at the CAD pose are warnings.
+        obs.progress(Stage::Collision, 0, 1);
+        let names: Vec<String> = pkg_layout.names.as_ref().map(|n| n.bodies.clone()).unwrap_or_default();
+        let joint_names: Vec<String> = pkg_layout.names.as_ref().map(|n| n.joints.clone()).unwrap_or_default();
+        let collision = back::collision_shapes::Collision::from_shapes(shapes, &a.model, &names, &joint_names, &opts.collision_edits);
+        // The scene: its objects checked against this version's bodies (those it cannot take left
+        // out, named), then its part of Mechatronics and of the MJCF.
+        let (scene, omitted) = crate::scene::check_stored(&opts.scene, &names, &opts.scene_meshes);
+        // The MuJoCo and URDF exports depend on nothing below: they are written on other threads
+        // while this one checks the CAD pose's interferences and writes Mechatronics.
+        std::thread::scope(|inner| {
+            let (validated, layout, scene_ref) = (&a.validated, &pkg_layout, &scene);
+            // When the package is written (`write_shapes`), files that are final are deflated for
+            // the zip where they are made, on the threads beside this one.
+            let ahead = |files: Vec<(String, Vec<u8>)>| -> Vec<(String, back::bundle::FileData)> {
+                let mut deflater = opts.write_shapes.then(back::bundle::Deflater::default);
+                files.into_iter().map(|(p, b)| (p, if let Some(d) = &mut deflater { d.file(b) } else { b.into() })).collect()
+            };
+            let exports = inner.spawn(move || {
+                let mut mjcf = back::mjcf::file(model, validated, layout, pkg_name, gravity, opts.write_shapes);
+                if !scene_ref.objects.is_empty() {
+                    mjcf.1 = crate::scene::package::mjcf(&String::from_utf8_lossy(&mjcf.1), scene_ref).into_bytes();
                 }
-                files.push(file);
+                let urdf = back::urdf::file(model, validated, layout, pkg_name, opts.write_shapes);
+                ahead(vec![mjcf, back::urdf::relative_file(&urdf, pkg_name), urdf])
+            });
+            // The package's own files are final but for the package documentation and the
+            // package.order files, which get lines below.
+            let mut files = pkg_files;
+            let final_file = |p: &str| opts.write_shapes && !p.ends_with("/package.order") && *p != format!("{package_name}/package.mo");
+            let finished: Vec<usize> = (0..files.len()).filter(|&i| final_file(&files[i].0)).collect();
+            let taken: Vec<(String, Vec<u8>)> = finished.iter().map(|&i| (String::new(), std::mem::take(&mut files[i].1))).collect();
+            let pkg_deflated = inner.spawn(move || ahead(taken));
+            let (collision_report, collision_warnings) = collision.report(&a.model, &names);
+            obs.progress(Stage::Collision, 1, 1);
+            report.warnings.extend(collision_warnings);
+            report.collision = Some(collision_report);
+            for i in omitted {
+                report.warnings.push(Warning::new(
+                    "scene-object-omitted",
+                    format!("{} {}: left out of the package", i.field, i.message),
+                    "",
+                ));
             }
-        }
-        files.extend(join(exports).into_iter().map(|(p, b)| (p, b.into())));
-        obs.progress(Stage::Report, 0, 1);
-        let json = serde_json::to_vec_pretty(&report).map_err(|e| ConvertError::Options(e.to_string()))?;
-        files.push(("report.json".to_string(), json.into()));
-        Ok(Output { files, report, shapes: collision.counts, step: step_counts })
+            let scene_modelica = crate::scene::package::modelica(&scene, &package_name);
+            let drives = obs.drives(&report, &opts.drives);
+            files.extend(back::modelica::mechatronics::components(&package_name));
+            if opts.write_shapes {
+                files.extend(crate::scene::package::mesh_files(&scene, &opts.scene_meshes, &package_name));
+            }
+            let extras = obs.extras(
+                &observe::ModelView { model: &a.model, validated: &a.validated, layout: &pkg_layout, package_name: &package_name },
+                &drives,
+            );
+            // A live view frame carries at most MAX_BODIES bodies: larger models are written without one.
+            let bodies: &[String] = pkg_layout.names.as_ref().map(|n| n.bodies.as_slice()).unwrap_or_default();
+            let live = opts
+                .live
+                .as_ref()
+                .filter(|_| (1..=back::modelica::mechatronics::live::MAX_BODIES).contains(&bodies.len()))
+                .map(|t| (t, bodies));
+            if opts.live.is_some() && live.is_none() {
+                report.warnings.push(Warning::new(
+                    "live-view-omitted",
+                    format!(
+                        "{} bodies: a live view frame carries 1 to {}, so the package has no LiveView",
+                        bodies.len(),
+                        back::modelica::mechatronics::live::MAX_BODIES
+                    ),
+                    "",
+                ));
+            }
+            // The report is final: its JSON is written beside Mechatronics.
+            let report = report;
+            let (mut files, json) = std::thread::scope(|last| -> Result<_, ConvertError> {
+                let json = last.spawn(|| -> Result<_, ConvertError> {
+                    let json = serde_json::to_vec_pretty(&report).map_err(|e| ConvertError::Options(e.to_string()))?;
+                    Ok(ahead(vec![("report.json".to_string(), json)]))
+                });
+                let parts = collision.parts();
+                let contacts = back::modelica::mechatronics::collision::declarations_with_scene(
+                    &package_name,
+                    &names,
+                    &parts,
+                    &collision.allowed_pairs(),
+                    &scene_modelica.members,
+                );
+                files.extend(back::modelica::mechatronics::mechatronics(
+                    &package_name,
+                    &drives,
+                    &extras.motions,
+                    &back::modelica::mechatronics::Additions {
+                        live,
+                        collision: contacts.as_ref(),
+                        scene: (!scene_modelica.declarations.is_empty()).then_some(scene_modelica.declarations.as_str()),
+                        diagram: Some(&pkg_layout.diagram),
+                        experiment: Some(&back::modelica::Experiment::for_model(&a.model, gravity)),
+                    },
+                    &back::modelica::provenance(&a.model, VERSION),
+                )?);
+                if !extras.motions.is_empty() {
+                    if let Some((_, order)) = files.iter_mut().find(|(p, _)| *p == format!("{package_name}/package.order")) {
+                        order.extend_from_slice(b"Motions\n");
+                    }
+                }
+                if let Some((_, order)) = files.iter_mut().find(|(p, _)| *p == format!("{package_name}/Components/package.order")) {
+                    if live.is_some() {
+                        order.extend_from_slice(b"Visualization\n");
+                    }
+                    if contacts.is_some() {
+                        order.extend_from_slice(b"Collision\n");
+                    }
+                }
+                files.extend(extras.files);
+                // The package documentation lists the report's findings and the drives.
+                if let Some((_, text)) = files.iter_mut().find(|(p, _)| *p == format!("{package_name}/package.mo")) {
+                    *text = back::modelica::doc::package_file(&report, &drives, &back::modelica::provenance(&a.model, VERSION), VERSION)
+                        .into_bytes();
+                }
+                let files: Vec<(String, back::bundle::FileData)> = files.into_iter().map(|(p, b)| (p, b.into())).collect();
+                Ok((files, join(json)?))
+            })?;
+            for (i, (_, b)) in finished.into_iter().zip(join(pkg_deflated)) {
+                files[i].1 = b;
+            }
+            if let (Some(shape_files), Some(mesh_files)) = (shape_files, mesh_files) {
+                files.extend(shape_files);
+                // Two files (DXF, STL) per body with a shape, a step each as they join the package.
+                let meshes = join(mesh_files);
+                let n = meshes.len() / 2;
+                for (k, file) in meshes.into_iter().enumerate() {
+                    if k % 2 == 0 {
+                        obs.progress(Stage::Shapes, k / 2, n);
+                    }
+                    files.push(file);
+                }
+            }
+            files.extend(join(exports));
+            obs.progress(Stage::Report, 0, 1);
+            files.extend(json);
+            Ok(Output { files, report, shapes: collision.counts, step: step_counts })
+        })
     })
 }
 
@@ -668,8 +715,9 @@ mod memory_tests {
     use super::*;
 
     /// The bodies' DXF and STL files come deflated (issue 26: a conversion never holds them all
-    /// as plain bytes), inflate to what the writers give, and the zip is the one the plain files
-    /// give: deflating them early changes no byte of a package.
+    /// as plain bytes), and so do the other files final when made (issue 23); they inflate to
+    /// what the writers give, and the zip is the one the plain files give: deflating them early
+    /// changes no byte of a package.
     #[test]
     fn shape_files_come_deflated_and_zip_as_plain_ones() {
         let files = crate::testgen::urdf_shared_obj(3, 40);
@@ -678,7 +726,18 @@ mod memory_tests {
         let shapes: Vec<_> = out.files.iter().filter(|(p, _)| p.ends_with(".dxf") || p.ends_with(".stl")).collect();
         assert_eq!(shapes.len(), 6, "a DXF and an STL per link");
         assert!(shapes.iter().all(|(_, f)| f.is_deflated()), "every shape file deflated");
-        assert!(out.files.iter().filter(|(p, _)| p.ends_with(".mo") || p.ends_with(".json")).all(|(_, f)| !f.is_deflated()));
+        // The files final when made come deflated too (issue 23: on the threads that make them);
+        // those that get lines later, and Mechatronics, come plain.
+        let deflated = |suffix: &str| out.files.iter().find(|(p, _)| p.ends_with(suffix)).map(|(_, f)| f.is_deflated());
+        for final_file in ["/Mechanics.mo", "report.json", "/shapes.json", ".mjcf.xml", ".urdf"] {
+            assert_eq!(deflated(final_file), Some(true), "{final_file}");
+        }
+        for later in ["/package.mo", "/package.order", "/Components/package.order", "/Mechatronics.mo"] {
+            assert_eq!(deflated(later), Some(false), "{later}");
+        }
+        // Without the package's shape files (the service's analyses), every file comes plain.
+        let text = convert(&bundle, &Options { write_shapes: false, ..Options::default() }).expect("converts");
+        assert!(text.files.iter().all(|(p, f)| !f.is_deflated() && !p.ends_with(".dxf")));
         // Each inflates to its writer's bytes.
         let a = analyse(&bundle, &Options::default()).expect("analyses");
         let stl = back::stl::write_binary(a.model.bodies[0].mesh.as_deref().expect("a mesh"), "l0");

@@ -307,7 +307,6 @@ impl Collision {
         for (&(a, b), why) in &self.joined {
             r.default_allowed.push(AllowedPair { a: names[a].clone(), b: names[b].clone(), why: why.clone() });
         }
-        let world = collision::World::new(&self.shapes);
         let poses = cad_poses(model);
         let mut warnings = Vec::new();
         // Bodies with mass but no mesh cannot collide (massless root parts are frame hubs).
@@ -353,7 +352,9 @@ impl Collision {
                 "collision shapes".to_string(),
             ));
         }
-        for c in collision::contacts_at(&world, &poses, &|a, b| self.checked(a, b), 0.0) {
+        // Only the bodies of pairs whose boxes meet get parry shapes (the same contacts as
+        // `contacts_at` of the whole world).
+        for c in collision::contacts_of(&self.shapes, &poses, &|a, b| self.checked(a, b), 0.0) {
             if c.distance >= 0.0 {
                 continue;
             }
@@ -393,40 +394,41 @@ impl Collision {
         }
         (r, warnings)
     }
+}
 
-    /// `Resources/Collision/<body>.obj` per body with a shape, and `shapes.json` (every part's
-    /// vertices and radius, by body name) for the service.
-    pub fn files(&self, pkg: &str, names: &[String]) -> Vec<(String, Vec<u8>)> {
-        // shapes.json, its keys in alphabetical order (as a JSON value's would be).
-        #[derive(serde::Serialize)]
-        struct Part<'a> {
-            radius: f64,
-            vertices: &'a [[f64; 3]],
-        }
-        #[derive(serde::Serialize)]
-        struct Body<'a> {
-            body: &'a str,
-            kind: &'static str,
-            parts: Vec<Part<'a>>,
-        }
-        #[derive(serde::Serialize)]
-        struct Shapes<'a> {
-            bodies: Vec<Body<'a>>,
-        }
-        let mut files = Vec::new();
-        let mut json = Vec::new();
-        for (i, s) in self.shapes.iter().enumerate() {
-            let (Some(s), Some(name)) = (s, names.get(i)) else { continue };
-            files.push((format!("{pkg}/Resources/Collision/{name}.obj"), collision::obj_text(s, name).into_bytes()));
-            let parts = s.parts.iter().map(|p| Part { radius: p.radius, vertices: &p.vertices }).collect();
-            json.push(Body { body: name, kind: s.kind.name(), parts });
-        }
-        if !json.is_empty() {
-            let text = serde_json::to_vec(&Shapes { bodies: json }).unwrap_or_default();
-            files.push((format!("{pkg}/Resources/Collision/shapes.json"), text));
-        }
-        files
+/// `Resources/Collision/<body>.obj` per body with a shape, and `shapes.json` (every part's
+/// vertices and radius, by body name) for the service, from `shapes` as [`body_shapes`] gives
+/// them: a conversion writes them as soon as the shapes are made.
+pub fn shape_files(shapes: &[Option<BodyShape>], pkg: &str, names: &[String]) -> Vec<(String, Vec<u8>)> {
+    // shapes.json, its keys in alphabetical order (as a JSON value's would be).
+    #[derive(serde::Serialize)]
+    struct Part<'a> {
+        radius: f64,
+        vertices: &'a [[f64; 3]],
     }
+    #[derive(serde::Serialize)]
+    struct Body<'a> {
+        body: &'a str,
+        kind: &'static str,
+        parts: Vec<Part<'a>>,
+    }
+    #[derive(serde::Serialize)]
+    struct Shapes<'a> {
+        bodies: Vec<Body<'a>>,
+    }
+    let mut files = Vec::new();
+    let mut json = Vec::new();
+    for (i, s) in shapes.iter().enumerate() {
+        let (Some(s), Some(name)) = (s, names.get(i)) else { continue };
+        files.push((format!("{pkg}/Resources/Collision/{name}.obj"), collision::obj_text(s, name).into_bytes()));
+        let parts = s.parts.iter().map(|p| Part { radius: p.radius, vertices: &p.vertices }).collect();
+        json.push(Body { body: name, kind: s.kind.name(), parts });
+    }
+    if !json.is_empty() {
+        let text = serde_json::to_vec(&Shapes { bodies: json }).unwrap_or_default();
+        files.push((format!("{pkg}/Resources/Collision/shapes.json"), text));
+    }
+    files
 }
 
 /// The world pose of every body's frame_a (CS1) at the CAD pose.

@@ -21,4 +21,4 @@ mod names;
 mod write;
 
 pub use names::{assign_with_hints, sanitize, Hints, Names, Scope, KEYWORDS};
-pub use write::{provenance_html as provenance, write, Experiment, Layout, Options, Package};
+pub use write::{provenance_html as provenance, shape_stems, write, write_named, Experiment, Layout, Options, Package};

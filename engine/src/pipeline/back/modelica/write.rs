@@ -124,12 +124,35 @@ fn cardan_xyz(r: &Matrix3<f64>) -> Vector3<f64> {
 
 /// Escapes text for a Modelica string literal.
 pub(super) fn mstr(s: &str) -> String {
-    s.replace('\\', "\\\\").replace('"', "\\\"")
+    escaped(s, &|c| match c {
+        '\\' => Some("\\\\"),
+        '"' => Some("\\\""),
+        _ => None,
+    })
 }
 
 /// HTML-escapes text (not yet escaped for a Modelica string: see [`mstr`]).
 pub(super) fn html(s: &str) -> String {
-    s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
+    escaped(s, &|c| match c {
+        '&' => Some("&amp;"),
+        '<' => Some("&lt;"),
+        '>' => Some("&gt;"),
+        '"' => Some("&quot;"),
+        _ => None,
+    })
+}
+
+/// `s` with each character `escape` maps replaced, in one pass (a `replace` per character was a
+/// string each, for every name of a large model).
+fn escaped(s: &str, escape: &dyn Fn(char) -> Option<&'static str>) -> String {
+    let mut out = String::with_capacity(s.len());
+    for c in s.chars() {
+        match escape(c) {
+            Some(e) => out.push_str(e),
+            None => out.push(c),
+        }
+    }
+    out
 }
 
 struct Writer<'a> {
@@ -568,7 +591,24 @@ pub(super) fn shown_frames(model: &Model) -> Vec<FrameId> {
 /// Writes the package. Shapes are referenced for every body with a mesh; the caller writes the
 /// files under `<Pkg>/Resources/Shapes/<stem>.dxf|.stl` using [`Layout::shapes`].
 pub fn write(model: &Model, v: &Validated, opts: &Options) -> Package {
-    let names = names::assign_with_hints(model, &opts.name_hints);
+    write_named(model, v, opts, names::assign_with_hints(model, &opts.name_hints))
+}
+
+/// The stem of each body's shape files (`<Pkg>/Resources/Shapes/<stem>.dxf|.stl`): the body's
+/// name when it has a mesh with triangles, else `None`. [`Layout::shapes`] is this; a caller that
+/// assigned the names itself ([`write_named`]) knows it before the package is written.
+pub fn shape_stems(model: &Model, names: &names::Names) -> Vec<Option<String>> {
+    model
+        .bodies
+        .iter()
+        .zip(&names.bodies)
+        .map(|(body, name)| body.mesh.as_ref().is_some_and(|m| !m.triangles.is_empty()).then(|| name.clone()))
+        .collect()
+}
+
+/// [`write`] with the names already assigned (`names::assign_with_hints(model,
+/// &opts.name_hints)`), so that work needing them ([`shape_stems`]) can start beside it.
+pub fn write_named(model: &Model, v: &Validated, opts: &Options, names: names::Names) -> Package {
     let pkg = opts.package_name.as_str();
     let mut w = Writer {
         model,
@@ -577,7 +617,7 @@ pub fn write(model: &Model, v: &Validated, opts: &Options) -> Package {
         scope: names.scope.clone(),
         decl: String::new(),
         layout: Layout {
-            shapes: vec![None; model.bodies.len()],
+            shapes: shape_stems(model, &names),
             joint_elements: vec![Vec::new(); model.joints.len()],
             emitted_as: vec![""; model.joints.len()],
             ..Layout::default()
@@ -685,7 +725,6 @@ pub fn write(model: &Model, v: &Validated, opts: &Options) -> Package {
             mstr(&body.cad_name)
         );
         w.connect(&format!("{bname}.frame_a"), &format!("{sname}.frame_a"));
-        w.layout.shapes[i] = Some(bname.clone());
     }
 
     for (a, b, style) in std::mem::take(&mut w.wires) {

@@ -230,8 +230,16 @@ pub fn declarations_with_scene(
         for p in member_parts(k).into_iter().filter(|p| !p.vertices.is_empty()) {
             parts += 1;
             let _ = writeln!(f, "part {} {} {}", k + 1, num(p.radius.max(0.0)), p.vertices.len());
+            // The vertices as `num` writes them, straight into the text (a string per number
+            // was most of this file's cost for thousands of bodies).
             for v in &p.vertices {
-                let _ = writeln!(f, "{} {} {}", num(v[0]), num(v[1]), num(v[2]));
+                for (i, &x) in v.iter().enumerate() {
+                    if i > 0 {
+                        f.push(' ');
+                    }
+                    crate::numtext::push_dbg(&mut f, if x == 0.0 { 0.0 } else { x });
+                }
+                f.push('\n');
             }
         }
     }
