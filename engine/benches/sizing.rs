@@ -207,11 +207,12 @@ fn bench_full(c: &mut Criterion) {
         let p = mplan::plan(&mech, &axes, &spec).expect("plans");
         let s = p.closed_samples(&mech, 1000.0).expect("samples");
         let (tau, inertia) = mplan::inverse_dynamics(&mech, &s, &g, 10).expect("inverse dynamics");
-        let out: Vec<DriveSizing> = axes
+        // As the service does: every drive at once on the machine's cores.
+        let jobs: Vec<sizing::DriveJob> = axes
             .iter()
             .enumerate()
-            .map(|(i, ax)| {
-                let load = AxisLoad {
+            .map(|(i, ax)| sizing::DriveJob {
+                load: AxisLoad {
                     joint: &ax.name,
                     kind: JointKind::Revolute,
                     t: &s.t,
@@ -219,9 +220,14 @@ fn bench_full(c: &mut Criterion) {
                     qdd: &s.qdd[i],
                     tau: &tau[i],
                     load_inertia: inertia[i],
-                };
-                sizing::size_drive(load, &motor, &gear, Some(&catalog), &settings(), sizing::TOP).expect("sizes")
+                },
+                motor: motor.clone(),
+                gear: gear.clone(),
             })
+            .collect();
+        let out: Vec<DriveSizing> = sizing::size_drives(&jobs, Some(&catalog), &settings(), sizing::TOP, sizing::sizing_threads())
+            .into_iter()
+            .map(|r| r.expect("sizes"))
             .collect();
         (s.t.len(), out)
     };
