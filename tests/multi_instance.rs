@@ -194,7 +194,7 @@ async fn killed_instance_job_is_finished_by_the_other() {
     let mut cluster =
         Cluster::new("killed_instance_job_is_finished_by_the_other", &["--workers", "1", "--lease-secs", &lease.to_string()]).await;
     let mut a = cluster.start().await;
-    let (model, id) = upload(&a, heavy_pendulum(400_000)).await;
+    let (model, id) = upload(&a, heavy_pendulum(1_200_000)).await;
     // A claims it (B is not started yet) and reports progress.
     let deadline = Instant::now() + Duration::from_secs(60);
     loop {
@@ -234,7 +234,11 @@ async fn killed_instance_job_is_finished_by_the_other() {
         tokio::time::sleep(Duration::from_millis(100)).await;
     };
     assert_eq!(done["status"], "succeeded", "{done:#}");
-    assert!(killed.elapsed() >= Duration::from_secs(lease - 1), "taken over before the lease could expire");
+    assert!(
+        killed.elapsed() >= Duration::from_secs(lease - 1),
+        "taken over before the lease could expire: {:?} after the kill: {done:#}",
+        killed.elapsed()
+    );
     let (store, _) = cluster.open().await;
     let attempts = integrity::job_attempts(&store).await.expect("jobs");
     assert_eq!(attempts.get(&id), Some(&("succeeded".to_string(), 2)), "claimed by a, then by b");
