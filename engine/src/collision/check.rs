@@ -208,20 +208,30 @@ pub fn contacts_at(world: &World, poses: &[Isometry3<f64>], checked: &dyn Fn(usi
             continue;
         }
         let (Some(Some(sa)), Some(Some(sb))) = (world.bodies.get(a), world.bodies.get(b)) else { continue };
-        if let Some(c) = pair_contact(sa, &poses[a], sb, &poses[b], margin) {
-            if c.dist <= margin {
-                out.push(Contact {
-                    a,
-                    b,
-                    distance: c.dist,
-                    point_a: arr(&c.point1),
-                    point_b: arr(&c.point2),
-                    normal: [c.normal1.x, c.normal1.y, c.normal1.z],
-                });
-            }
-        }
+        out.extend(contact_within(a, sa, &poses[a], b, sb, &poses[b], margin));
     }
     out
+}
+
+/// The contact of bodies `a` and `b` at their poses when they are within `margin`.
+fn contact_within(
+    a: usize,
+    sa: &Prepared,
+    pa: &Isometry3<f64>,
+    b: usize,
+    sb: &Prepared,
+    pb: &Isometry3<f64>,
+    margin: f64,
+) -> Option<Contact> {
+    let c = pair_contact(sa, pa, sb, pb, margin)?;
+    (c.dist <= margin).then(|| Contact {
+        a,
+        b,
+        distance: c.dist,
+        point_a: arr(&c.point1),
+        point_b: arr(&c.point2),
+        normal: [c.normal1.x, c.normal1.y, c.normal1.z],
+    })
 }
 
 /// [`contacts_at`] of `World::new(shapes)` (the same contacts), making the parry shapes of only
@@ -259,18 +269,7 @@ pub fn contacts_of(
             }
         }
         let (Some(Some(sa)), Some(Some(sb))) = (&prepared[a], &prepared[b]) else { continue };
-        if let Some(c) = pair_contact(sa, &poses[a], sb, &poses[b], margin) {
-            if c.dist <= margin {
-                out.push(Contact {
-                    a,
-                    b,
-                    distance: c.dist,
-                    point_a: arr(&c.point1),
-                    point_b: arr(&c.point2),
-                    normal: [c.normal1.x, c.normal1.y, c.normal1.z],
-                });
-            }
-        }
+        out.extend(contact_within(a, sa, &poses[a], b, sb, &poses[b], margin));
     }
     out
 }
