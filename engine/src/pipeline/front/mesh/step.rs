@@ -252,20 +252,10 @@ fn weld(mesh: &mut ir::Mesh, runs: &mut [(std::ops::Range<usize>, [f64; 3])]) {
     let mut map: Vec<u32> = Vec::with_capacity(mesh.vertices.len());
     for v in &mesh.vertices {
         let c = cell(v);
-        let mut found = None;
-        'search: for dx in -1..=1 {
-            for dy in -1..=1 {
-                for dz in -1..=1 {
-                    for &k in grid.get(&[c[0] + dx, c[1] + dy, c[2] + dz]).map_or(&[][..], Vec::as_slice) {
-                        let w = vertices[k as usize];
-                        if (0..3).all(|i| (w[i] - v[i]).abs() <= WELD_DISTANCE) {
-                            found = Some(k);
-                            break 'search;
-                        }
-                    }
-                }
-            }
-        }
+        let found = near_in_grid(&grid, c, |k| {
+            let w = vertices[k as usize];
+            (0..3).all(|i| (w[i] - v[i]).abs() <= WELD_DISTANCE)
+        });
         let k = found.unwrap_or_else(|| {
             vertices.push(*v);
             let k = vertices.len() as u32 - 1;
@@ -274,22 +264,81 @@ fn weld(mesh: &mut ir::Mesh, runs: &mut [(std::ops::Range<usize>, [f64; 3])]) {
         });
         map.push(k);
     }
-    // kept[k]: triangles kept among the first k.
+    mesh.vertices = vertices;
+    remap_corners(mesh, runs, |i| map.get(i as usize).copied().unwrap_or(0));
+}
+
+/// The first vertex of the grid cells around `c` (its own and the 26 next to it) that `hit`
+/// accepts.
+fn near_in_grid(grid: &HashMap<[i64; 3], Vec<u32>>, c: [i64; 3], mut hit: impl FnMut(u32) -> bool) -> Option<u32> {
+    for dx in -1..=1 {
+        for dy in -1..=1 {
+            for dz in -1..=1 {
+                for &k in grid.get(&[c[0] + dx, c[1] + dy, c[2] + dz]).map_or(&[][..], Vec::as_slice) {
+                    if hit(k) {
+                        return Some(k);
+                    }
+                }
+            }
+        }
+    }
+    None
+}
+
+/// Rebuilds the triangles, each replaced by those `emit` pushes for it (none, itself, or
+/// pieces), and moves the colour runs with them.
+fn rebuild_triangles(
+    mesh: &mut ir::Mesh,
+    runs: &mut [(std::ops::Range<usize>, [f64; 3])],
+    mut emit: impl FnMut(usize, &[u32; 3], &mut Vec<[u32; 3]>),
+) {
+    // kept[k]: triangles made from the first k.
     let mut kept = Vec::with_capacity(mesh.triangles.len() + 1);
     kept.push(0usize);
     let mut triangles = Vec::with_capacity(mesh.triangles.len());
-    for t in &mesh.triangles {
-        let w = t.map(|i| map.get(i as usize).copied().unwrap_or(0));
-        if w[0] != w[1] && w[1] != w[2] && w[0] != w[2] {
-            triangles.push(w);
-        }
+    for (ti, t) in mesh.triangles.iter().enumerate() {
+        emit(ti, t, &mut triangles);
         kept.push(triangles.len());
     }
     for (r, _) in runs.iter_mut() {
         *r = kept[r.start.min(kept.len() - 1)]..kept[r.end.min(kept.len() - 1)];
     }
-    mesh.vertices = vertices;
     mesh.triangles = triangles;
+}
+
+/// Every corner `i` becomes `to(i)`; triangles left with two equal corners are dropped.
+fn remap_corners(mesh: &mut ir::Mesh, runs: &mut [(std::ops::Range<usize>, [f64; 3])], to: impl Fn(u32) -> u32) {
+    rebuild_triangles(mesh, runs, |_, t, out| {
+        let w = t.map(&to);
+        if w[0] != w[1] && w[1] != w[2] && w[0] != w[2] {
+            out.push(w);
+        }
+    });
+}
+
+/// The open edges of `mesh` (directed edges without their reverse): (triangle, corner where the
+/// edge starts).
+fn open_edges(mesh: &ir::Mesh) -> Vec<(usize, usize)> {
+    let mut directed: HashSet<(u32, u32)> = HashSet::with_capacity(mesh.triangles.len() * 3);
+    for t in &mesh.triangles {
+        for k in 0..3 {
+            directed.insert((t[k], t[(k + 1) % 3]));
+        }
+    }
+    let mut open = Vec::new();
+    for (ti, t) in mesh.triangles.iter().enumerate() {
+        for k in 0..3 {
+            if !directed.contains(&(t[(k + 1) % 3], t[k])) {
+                open.push((ti, k));
+            }
+        }
+    }
+    open
+}
+
+/// Vertex `i` of `mesh` in f64 (the origin for an index out of range).
+fn point(mesh: &ir::Mesh, i: u32) -> Vector3<f64> {
+    mesh.vertices.get(i as usize).map_or(Vector3::zeros(), |v| Vector3::new(f64::from(v[0]), f64::from(v[1]), f64::from(v[2])))
 }
 
 /// Farthest apart two corners on the open edges of a solid's mesh may be and still be joined by
@@ -310,41 +359,22 @@ pub(super) fn join_open_corners(mesh: &mut ir::Mesh, runs: &mut [(std::ops::Rang
     if dist <= 0.0 || !dist.is_finite() {
         return 0;
     }
-    let mut directed: HashSet<(u32, u32)> = HashSet::with_capacity(mesh.triangles.len() * 3);
-    for t in &mesh.triangles {
-        for k in 0..3 {
-            directed.insert((t[k], t[(k + 1) % 3]));
-        }
-    }
-    let mut open: Vec<u32> = directed.iter().filter(|(a, b)| !directed.contains(&(*b, *a))).flat_map(|&(a, b)| [a, b]).collect();
+    let mut open: Vec<u32> = open_edges(mesh)
+        .into_iter()
+        .flat_map(|(ti, k)| {
+            let t = mesh.triangles[ti];
+            [t[k], t[(k + 1) % 3]]
+        })
+        .collect();
     open.sort_unstable();
     open.dedup();
-    if open.is_empty() {
-        return 0;
-    }
-    let at = |i: u32| {
-        mesh.vertices.get(i as usize).map_or(Vector3::zeros(), |v| Vector3::new(f64::from(v[0]), f64::from(v[1]), f64::from(v[2])))
-    };
     let cell = |p: &Vector3<f64>| [p.x, p.y, p.z].map(|x| (x / dist).floor() as i64);
     let mut grid: HashMap<[i64; 3], Vec<u32>> = HashMap::with_capacity(open.len());
     let mut map: HashMap<u32, u32> = HashMap::new();
     for &v in &open {
-        let p = at(v);
+        let p = point(mesh, v);
         let c = cell(&p);
-        let mut found = None;
-        'search: for dx in -1..=1 {
-            for dy in -1..=1 {
-                for dz in -1..=1 {
-                    for &k in grid.get(&[c[0] + dx, c[1] + dy, c[2] + dz]).map_or(&[][..], Vec::as_slice) {
-                        if (at(k) - p).norm() <= dist {
-                            found = Some(k);
-                            break 'search;
-                        }
-                    }
-                }
-            }
-        }
-        match found {
+        match near_in_grid(&grid, c, |k| (point(mesh, k) - p).norm() <= dist) {
             Some(k) => {
                 map.insert(v, k);
             }
@@ -354,37 +384,26 @@ pub(super) fn join_open_corners(mesh: &mut ir::Mesh, runs: &mut [(std::ops::Rang
     if map.is_empty() {
         return 0;
     }
-    let mut kept = Vec::with_capacity(mesh.triangles.len() + 1);
-    kept.push(0usize);
-    let mut triangles = Vec::with_capacity(mesh.triangles.len());
-    for t in &mesh.triangles {
-        let w = t.map(|i| map.get(&i).copied().unwrap_or(i));
-        if w[0] != w[1] && w[1] != w[2] && w[0] != w[2] {
-            triangles.push(w);
-        }
-        kept.push(triangles.len());
-    }
-    for (r, _) in runs.iter_mut() {
-        *r = kept[r.start.min(kept.len() - 1)]..kept[r.end.min(kept.len() - 1)];
-    }
+    remap_corners(mesh, runs, |i| map.get(&i).copied().unwrap_or(i));
     // Keep the vertices still used, in their order.
-    let mut new_index = vec![u32::MAX; mesh.vertices.len()];
-    for t in &triangles {
-        for &i in t {
-            if let Some(n) = new_index.get_mut(i as usize) {
-                *n = 0;
-            }
+    let mut used = vec![false; mesh.vertices.len()];
+    for &i in mesh.triangles.iter().flatten() {
+        if let Some(u) = used.get_mut(i as usize) {
+            *u = true;
         }
     }
+    let mut new_index = vec![u32::MAX; mesh.vertices.len()];
     let mut vertices = Vec::with_capacity(mesh.vertices.len());
     for (i, v) in mesh.vertices.iter().enumerate() {
-        if new_index[i] == 0 {
+        if used[i] {
             new_index[i] = vertices.len() as u32;
             vertices.push(*v);
         }
     }
-    mesh.triangles = triangles.into_iter().map(|t| t.map(|i| new_index[i as usize])).collect();
     mesh.vertices = vertices;
+    for t in &mut mesh.triangles {
+        *t = t.map(|i| new_index[i as usize]);
+    }
     map.len()
 }
 
@@ -402,35 +421,22 @@ const MAX_JUNCTION_PAIRS: usize = 20_000_000;
 /// split into a fan from the opposite corner, keeping its winding. Repeated (a triangle with
 /// several such edges) up to four passes. Returns how many vertices were inserted.
 pub(super) fn close_t_junctions(mesh: &mut ir::Mesh, runs: &mut [(std::ops::Range<usize>, [f64; 3])], chord: f64) -> usize {
-    let at = |i: u32| {
-        mesh.vertices.get(i as usize).map_or(Vector3::zeros(), |v| Vector3::new(f64::from(v[0]), f64::from(v[1]), f64::from(v[2])))
-    };
     let mut inserted = 0usize;
     for _pass in 0..4 {
-        let mut directed: HashSet<(u32, u32)> = HashSet::with_capacity(mesh.triangles.len() * 3);
-        for t in &mesh.triangles {
-            for k in 0..3 {
-                directed.insert((t[k], t[(k + 1) % 3]));
-            }
-        }
-        // Open edges: (triangle, which edge); the open-edge vertices with their open edges' directions.
-        let mut open: Vec<(usize, usize)> = Vec::new();
+        // The open edges, and the open-edge vertices with their open edges' directions.
+        let open = open_edges(mesh);
         let mut dirs: HashMap<u32, Vec<Vector3<f64>>> = HashMap::new();
-        for (ti, t) in mesh.triangles.iter().enumerate() {
-            for k in 0..3 {
-                let (a, b) = (t[k], t[(k + 1) % 3]);
-                if !directed.contains(&(b, a)) {
-                    open.push((ti, k));
-                    let d = (at(b) - at(a)).normalize();
-                    dirs.entry(a).or_default().push(d);
-                    dirs.entry(b).or_default().push(d);
-                }
-            }
+        for &(ti, k) in &open {
+            let t = mesh.triangles[ti];
+            let (a, b) = (t[k], t[(k + 1) % 3]);
+            let d = (point(mesh, b) - point(mesh, a)).normalize();
+            dirs.entry(a).or_default().push(d);
+            dirs.entry(b).or_default().push(d);
         }
         if open.is_empty() || open.len().saturating_mul(dirs.len()) > MAX_JUNCTION_PAIRS {
             break;
         }
-        let mut verts: Vec<(u32, Vector3<f64>)> = dirs.keys().map(|&v| (v, at(v))).collect();
+        let mut verts: Vec<(u32, Vector3<f64>)> = dirs.keys().map(|&v| (v, point(mesh, v))).collect();
         verts.sort_by_key(|(v, _)| *v);
         // Per triangle: the first open edge with vertices on it, and those vertices in order.
         let mut splits: HashMap<usize, (usize, Vec<u32>)> = HashMap::new();
@@ -440,7 +446,7 @@ pub(super) fn close_t_junctions(mesh: &mut ir::Mesh, runs: &mut [(std::ops::Rang
             }
             let t = mesh.triangles[ti];
             let (a, b) = (t[k], t[(k + 1) % 3]);
-            let (pa, pb) = (at(a), at(b));
+            let (pa, pb) = (point(mesh, a), point(mesh, b));
             let d = pb - pa;
             let len2 = d.norm_squared();
             if len2 <= 0.0 {
@@ -469,25 +475,15 @@ pub(super) fn close_t_junctions(mesh: &mut ir::Mesh, runs: &mut [(std::ops::Rang
         if splits.is_empty() {
             break;
         }
-        let mut kept = Vec::with_capacity(mesh.triangles.len() + 1);
-        kept.push(0usize);
-        let mut triangles = Vec::with_capacity(mesh.triangles.len() + splits.len() * 2);
-        for (ti, t) in mesh.triangles.iter().enumerate() {
-            match splits.get(&ti) {
-                Some((k, on)) => {
-                    let (a, b, c) = (t[*k], t[(k + 1) % 3], t[(k + 2) % 3]);
-                    let chain: Vec<u32> = std::iter::once(a).chain(on.iter().copied()).chain(std::iter::once(b)).collect();
-                    triangles.extend(chain.windows(2).map(|w| [w[0], w[1], c]));
-                    inserted += on.len();
-                }
-                None => triangles.push(*t),
+        rebuild_triangles(mesh, runs, |ti, t, out| match splits.get(&ti) {
+            Some((k, on)) => {
+                let (a, b, c) = (t[*k], t[(k + 1) % 3], t[(k + 2) % 3]);
+                let chain: Vec<u32> = std::iter::once(a).chain(on.iter().copied()).chain(std::iter::once(b)).collect();
+                out.extend(chain.windows(2).map(|w| [w[0], w[1], c]));
+                inserted += on.len();
             }
-            kept.push(triangles.len());
-        }
-        for (r, _) in runs.iter_mut() {
-            *r = kept[r.start.min(kept.len() - 1)]..kept[r.end.min(kept.len() - 1)];
-        }
-        mesh.triangles = triangles;
+            None => out.push(*t),
+        });
     }
     inserted
 }
@@ -513,10 +509,7 @@ fn dominant_colour(mesh: &ir::Mesh, runs: &[(std::ops::Range<usize>, [f64; 3])])
         return None;
     }
     let area = |t: &[u32; 3]| {
-        let p = t.map(|i| {
-            let v = mesh.vertices.get(i as usize).copied().unwrap_or_default();
-            Vector3::new(f64::from(v[0]), f64::from(v[1]), f64::from(v[2]))
-        });
+        let p = t.map(|i| point(mesh, i));
         (p[1] - p[0]).cross(&(p[2] - p[0])).norm() / 2.0
     };
     let total: f64 = mesh.triangles.iter().map(area).sum();
