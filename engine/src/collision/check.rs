@@ -191,17 +191,7 @@ fn leaves_overlap(a: &Option<Aabb>, b: &Option<Aabb>, grow: f64) -> bool {
 /// the bodies' world AABBs grown by margin/2. Distance < 0 is the penetration depth (EPA).
 pub fn contacts_at(world: &World, poses: &[Isometry3<f64>], checked: &dyn Fn(usize, usize) -> bool, margin: f64) -> Vec<Contact> {
     let margin = if margin.is_finite() { margin.max(0.0) } else { 0.0 };
-    let aabbs: Vec<Option<Aabb>> = world
-        .bodies
-        .iter()
-        .enumerate()
-        .map(|(i, b)| {
-            let x = poses.get(i).filter(|x| x.translation.vector.iter().chain(x.rotation.coords.iter()).all(|c| c.is_finite()))?;
-            Some(b.as_ref()?.local_aabb.transform_by(x))
-        })
-        .collect();
-    let mut pairs = Vec::new();
-    broad_pairs(&aabbs, margin / 2.0 + 1e-12, &mut pairs);
+    let pairs = posed_pairs(world.bodies.iter().map(|b| b.as_ref().map(|b| b.local_aabb)), poses, margin);
     let mut out = Vec::new();
     for (a, b) in pairs {
         if !checked(a, b) {
@@ -211,6 +201,21 @@ pub fn contacts_at(world: &World, poses: &[Isometry3<f64>], checked: &dyn Fn(usi
         out.extend(contact_within(a, sa, &poses[a], b, sb, &poses[b], margin));
     }
     out
+}
+
+/// The broad phase at `poses`: the pairs (a < b) whose local boxes, placed at their body's pose
+/// (none for a missing box or a non-finite pose), come within `margin`.
+fn posed_pairs(local: impl Iterator<Item = Option<Aabb>>, poses: &[Isometry3<f64>], margin: f64) -> Vec<(usize, usize)> {
+    let aabbs: Vec<Option<Aabb>> = local
+        .enumerate()
+        .map(|(i, bb)| {
+            let x = poses.get(i).filter(|x| x.translation.vector.iter().chain(x.rotation.coords.iter()).all(|c| c.is_finite()))?;
+            Some(bb?.transform_by(x))
+        })
+        .collect();
+    let mut pairs = Vec::new();
+    broad_pairs(&aabbs, margin / 2.0 + 1e-12, &mut pairs);
+    pairs
 }
 
 /// The contact of bodies `a` and `b` at their poses when they are within `margin`.
@@ -247,16 +252,7 @@ pub fn contacts_of(
     margin: f64,
 ) -> Vec<Contact> {
     let margin = if margin.is_finite() { margin.max(0.0) } else { 0.0 };
-    let aabbs: Vec<Option<Aabb>> = shapes
-        .iter()
-        .enumerate()
-        .map(|(i, s)| {
-            let x = poses.get(i).filter(|x| x.translation.vector.iter().chain(x.rotation.coords.iter()).all(|c| c.is_finite()))?;
-            Some(bound(s.as_ref()?)?.transform_by(x))
-        })
-        .collect();
-    let mut pairs = Vec::new();
-    broad_pairs(&aabbs, margin / 2.0 + 1e-12, &mut pairs);
+    let pairs = posed_pairs(shapes.iter().map(|s| s.as_ref().and_then(bound)), poses, margin);
     let mut prepared: Vec<Option<Option<Prepared>>> = (0..shapes.len()).map(|_| None).collect();
     let mut out = Vec::new();
     for (a, b) in pairs {
