@@ -366,20 +366,26 @@ fn huge_bumpy_mesh_gets_a_simplified_capped_hull() {
     assert!(s.fit_error > 0.005 && s.fit_error < 0.03, "{}", s.fit_error);
 }
 
-#[test]
-fn sweep_matches_brute_force_on_a_tumbling_scene() {
-    // Six bodies (boxes, a sphere, a cylinder, an L decomposition) swinging and spinning so that
-    // several pairs touch: first_contact and max_depth of every pair must equal those of
-    // contacts_at evaluated at every sample; min_distance (when below near) within tolerance.
+/// Six bodies of the tumbling scenes: a box mesh, a sphere, a cylinder, a box, an L
+/// decomposition and one without a shape.
+fn tumbling_shapes() -> Vec<Option<BodyShape>> {
     let (vs, ts) = box_mesh([-0.04, -0.03, -0.02], [0.04, 0.03, 0.02]);
-    let shapes = vec![
+    vec![
         Some(body_shape(&mesh(&vs, &ts), &opts())),
         Some(body_shape(&uv_sphere([0.0; 3], 0.05, 12, 24), &opts())),
         Some(body_shape(&cylinder_mesh(0.03, 0.1, 32), &opts())),
         Some(box_shape(0.04)),
         Some(body_shape(&l_mesh(), &ShapeOptions::default())),
         None,
-    ];
+    ]
+}
+
+#[test]
+fn sweep_matches_brute_force_on_a_tumbling_scene() {
+    // Six bodies (boxes, a sphere, a cylinder, an L decomposition) swinging and spinning so that
+    // several pairs touch: first_contact and max_depth of every pair must equal those of
+    // contacts_at evaluated at every sample; min_distance (when below near) within tolerance.
+    let shapes = tumbling_shapes();
     assert_eq!(shapes[4].as_ref().map(|s| s.kind), Some(ShapeKind::Decomposition));
     let w = World::new(&shapes);
     let times: Vec<f64> = (0..=2000).map(|k| k as f64 * 1e-3).collect();
@@ -584,20 +590,12 @@ fn parts_prepared_from_their_faces_measure_as_hulls() {
 /// cannot be made, swinging through contact, at two margins.
 #[test]
 fn contacts_of_equals_contacts_at_of_the_whole_world() {
-    let (vs, ts) = box_mesh([-0.04, -0.03, -0.02], [0.04, 0.03, 0.02]);
     let unusable = BodyShape {
         parts: vec![ConvexPart { vertices: vec![[0.0; 3], [0.1, 0.0, 0.0]], faces: Vec::new(), radius: 0.0 }],
         ..box_shape(0.01)
     };
-    let shapes = vec![
-        Some(body_shape(&mesh(&vs, &ts), &opts())),
-        Some(body_shape(&uv_sphere([0.0; 3], 0.05, 12, 24), &opts())),
-        Some(body_shape(&cylinder_mesh(0.03, 0.1, 32), &opts())),
-        Some(box_shape(0.04)),
-        Some(body_shape(&l_mesh(), &ShapeOptions::default())),
-        None,
-        Some(unusable),
-    ];
+    let mut shapes = tumbling_shapes();
+    shapes.push(Some(unusable));
     let w = World::new(&shapes);
     let checked = |a: usize, b: usize| (a, b) != (0, 3);
     let mut met = 0;
