@@ -15,6 +15,7 @@
 //! - [`live`]: the live view's frames (decoding and verifying what a running model sends).
 //! - [`scene`]: a model's environment (scene objects: primitives, static, moving or free).
 //! - [`diff`]: what changed between two conversions.
+//! - [`par`]: work spread over scoped threads, results in order.
 
 pub mod collision;
 pub mod diff;
@@ -23,6 +24,7 @@ pub mod live;
 pub mod mechanism;
 pub mod motion;
 pub mod numtext;
+pub mod par;
 pub mod pipeline;
 pub mod results;
 pub mod scene;

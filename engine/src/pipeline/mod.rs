@@ -243,42 +243,22 @@ pub const PEAK_BYTES_PER_TRIANGLE: u64 = 60;
 /// The DXF and STL file of every body with a shape (`stems` names them: [`back::modelica::shape_stems`]), in body order,
 /// each deflated for the zip as soon as it is written (issue 26, peak memory: the plain bytes of
 /// one body's two files at a time per thread, about 240 bytes per triangle, instead of every
-/// body's; bodies sharing a mesh still get a file each, named after them). Bodies are taken
-/// from a shared counter by up to 4 threads.
+/// body's; bodies sharing a mesh still get a file each, named after them), on up to 4 threads
+/// ([`crate::par::map_ordered`]).
 fn mesh_files(model: &Model, stems: &[Option<String>], pkg_name: &str) -> Vec<(String, back::bundle::FileData)> {
-    use std::sync::atomic::{AtomicUsize, Ordering};
     let dir = format!("{pkg_name}/Resources/Shapes");
     let todo: Vec<(&str, &ir::Body, &ir::Mesh)> =
         stems.iter().zip(&model.bodies).filter_map(|(stem, body)| Some((stem.as_deref()?, body, body.mesh.as_deref()?))).collect();
-    let next = AtomicUsize::new(0);
-    let work = || {
-        let mut deflater = back::bundle::Deflater::default();
-        let mut mine = Vec::new();
-        loop {
-            let i = next.fetch_add(1, Ordering::Relaxed);
-            let Some(&(stem, body, mesh)) = todo.get(i) else { break };
+    let written =
+        crate::par::map_ordered(&todo, crate::par::threads(4), back::bundle::Deflater::default, |deflater, &(stem, body, mesh)| {
             let dxf = deflater.file(back::dxf::write(mesh, body.display_rgb(), stem));
             let stl = deflater.file(back::stl::write_binary(mesh, stem));
-            mine.push((i, dxf, stl));
-        }
-        mine
-    };
-    let threads = std::thread::available_parallelism().map_or(1, |t| t.get()).min(4).min(todo.len()).max(1);
-    let mut written: Vec<Option<(back::bundle::FileData, back::bundle::FileData)>> = (0..todo.len()).map(|_| None).collect();
-    std::thread::scope(|scope| {
-        let helpers: Vec<_> = (0..threads).map(|_| scope.spawn(work)).collect();
-        for h in helpers {
-            for (i, dxf, stl) in h.join().unwrap_or_else(|e| std::panic::resume_unwind(e)) {
-                written[i] = Some((dxf, stl));
-            }
-        }
-    });
+            (dxf, stl)
+        });
     let mut out = Vec::with_capacity(2 * todo.len());
-    for ((stem, _, _), files) in todo.iter().zip(written) {
-        if let Some((dxf, stl)) = files {
-            out.push((format!("{dir}/{stem}.dxf"), dxf));
-            out.push((format!("{dir}/{stem}.stl"), stl));
-        }
+    for ((stem, _, _), (dxf, stl)) in todo.iter().zip(written) {
+        out.push((format!("{dir}/{stem}.dxf"), dxf));
+        out.push((format!("{dir}/{stem}.stl"), stl));
     }
     out
 }

@@ -1239,36 +1239,12 @@ pub fn size_drives(
     top: usize,
     threads: usize,
 ) -> Vec<Result<DriveSizing, SizingError>> {
-    let one = |j: &DriveJob| size_drive(j.load, &j.motor, &j.gear, catalog, settings, top);
-    let threads = threads.clamp(1, jobs.len().max(1));
-    if threads == 1 {
-        return jobs.iter().map(one).collect();
-    }
-    let next = std::sync::atomic::AtomicUsize::new(0);
-    let work = || {
-        let mut done = Vec::new();
-        loop {
-            let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-            let Some(j) = jobs.get(i) else { break done };
-            done.push((i, one(j)));
-        }
-    };
-    let mut all: Vec<(usize, Result<DriveSizing, SizingError>)> = std::thread::scope(|scope| {
-        let helpers: Vec<_> = (1..threads).map(|_| scope.spawn(work)).collect();
-        let mut all = work();
-        for h in helpers {
-            // A panic in a helper is re-raised here, as it would be without threads.
-            all.extend(h.join().unwrap_or_else(|p| std::panic::resume_unwind(p)));
-        }
-        all
-    });
-    all.sort_by_key(|(i, _)| *i);
-    all.into_iter().map(|(_, r)| r).collect()
+    crate::par::map_ordered(jobs, threads, || (), |_, j| size_drive(j.load, &j.motor, &j.gear, catalog, settings, top))
 }
 
 /// The number of threads [`size_drives`] should use on this machine: its cores, at most 4.
 pub fn sizing_threads() -> usize {
-    std::thread::available_parallelism().map_or(1, |n| n.get().min(4))
+    crate::par::threads(4)
 }
 
 /// The `top` best real motor × gear combinations of `catalog` for a joint (see the module doc

@@ -8,7 +8,6 @@
 //! bodies' Modelica names, so they survive CAD changes.
 
 use std::collections::{BTreeMap, HashMap};
-use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Arc;
 
 use nalgebra::Isometry3;
@@ -127,33 +126,15 @@ pub fn body_shapes(model: &Model, opts: &ShapeOptions, cache: Option<&dyn ShapeC
     // Largest meshes first (ties by body index).
     let mut order: Vec<(ShapeKey, usize, &Mesh)> = unique.iter().map(|(k, &(i, m))| (*k, i, m)).collect();
     order.sort_by_key(|&(_, i, m)| (std::cmp::Reverse(m.triangles.len()), i));
-    let threads = std::thread::available_parallelism().map_or(1, |n| n.get()).min(order.len());
-    let done: Vec<(ShapeKey, BodyShape, bool)> = if threads < 2 {
-        order
-            .iter()
-            .map(|(k, _, m)| {
-                let (s, hit) = shape_of(k, m);
-                (*k, s, hit)
-            })
-            .collect()
-    } else {
-        let next = AtomicUsize::new(0);
-        std::thread::scope(|scope| {
-            let handles: Vec<_> = (0..threads)
-                .map(|_| {
-                    scope.spawn(|| {
-                        let mut mine = Vec::new();
-                        while let Some((k, _, m)) = order.get(next.fetch_add(1, Ordering::Relaxed)) {
-                            let (s, hit) = shape_of(k, m);
-                            mine.push((*k, s, hit));
-                        }
-                        mine
-                    })
-                })
-                .collect();
-            handles.into_iter().flat_map(|h| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e))).collect()
-        })
-    };
+    let done = crate::par::map_ordered(
+        &order,
+        crate::par::threads(usize::MAX),
+        || (),
+        |_, (k, _, m)| {
+            let (s, hit) = shape_of(k, m);
+            (*k, s, hit)
+        },
+    );
     let mut counts = ShapeCounts::default();
     let mut by_key: BTreeMap<ShapeKey, BodyShape> = BTreeMap::new();
     for (k, s, hit) in done {
