@@ -153,7 +153,7 @@ async fn end_to_end_in_chromium() {
     let broken = work.path().join("broken.zip");
     std::fs::write(&broken, zip_dir(&workspace_root().join("tests/in/broken_truncated"))).expect("broken bundle");
     let heavy = work.path().join("heavy.zip");
-    std::fs::write(&heavy, heavy_pendulum(200_000)).expect("heavy bundle");
+    std::fs::write(&heavy, heavy_pendulum(1_000_000)).expect("heavy bundle");
     let bundle_v2 = work.path().join("arm-v2.zip");
     std::fs::write(&bundle_v2, v2).expect("bundle v2");
     let shots = workspace_root().join("target/ui-screenshots");
