@@ -233,7 +233,7 @@ fn routing_work_grows_linearly_with_the_diagram() {
         let mut parts = vec![format!("Mechanics {}", sheet.work())];
         for wired in [false, true] {
             let text = mechatronics_text("Gen", sheet, &bodies, wired);
-            let (mt, _, mt_work) = extend::lay_out_counted(&text, sheet);
+            let (mt, _, mt_work) = extend::lay_out_counted(&text, sheet.clone());
             wires += mt.matches("  connect(").count();
             work += mt_work;
             parts.push(format!("Mechatronics{} {mt_work}", if wired { " (wired contact forces)" } else { "" }));

@@ -336,7 +336,7 @@ pub fn main() -> ExitCode {
             };
             let matching = pipeline::passes::geometry_match::MatchOptions { tolerance_m: match_tolerance, angle_tolerance: match_angle };
             let opts = Options { package_name, gravity, lump_welds, write_shapes: true, matching, ..Options::default() };
-            let out = match pipeline::convert(&b, &opts) {
+            let out = match pipeline::convert_owned(b, &opts) {
                 Ok(o) => o,
                 Err(e) => {
                     eprintln!("error: {e}");

@@ -217,7 +217,7 @@ async fn put(
             let resolved = drives::ResolvedDrive { joint: joint.clone(), motor, gear, controller, reference: reference.clone() };
             let (plans, _) = drives::plans(&report, &[resolved]);
             if let Err(e) =
-                cad2mo_engine::pipeline::back::modelica::mechatronics::mechatronics("Check", &plans, &[], &Default::default(), "")
+                cad2mo_engine::pipeline::back::modelica::mechatronics::mechatronics("Check", &plans, &[], Default::default(), "")
             {
                 let classes: Vec<(&str, &str)> = classes.iter().map(|(s, c)| (*s, c.as_str())).collect();
                 errors.push(FieldError { field: drives::generator_field(&e, &classes), message: e.to_string() });

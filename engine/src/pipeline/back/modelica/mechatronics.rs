@@ -686,7 +686,7 @@ fn reference_html(r: &Ref, kind: JointKind, start: f64) -> String {
 }
 
 /// What `Mechatronics` may declare beyond drives and motions.
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Debug, Default)]
 pub struct Additions<'a> {
     /// The live view: where it sends, and the bodies in package order.
     pub live: Option<(&'a live::LiveTarget, &'a [String])>,
@@ -696,8 +696,9 @@ pub struct Additions<'a> {
     /// The scene's declarations (`crate::scene::package::Modelica::declarations`: its objects'
     /// shapes, tables, free bodies; their contacts come with `collision`).
     pub scene: Option<&'a str>,
-    /// The Mechanics diagram, which Mechatronics places its components around.
-    pub diagram: Option<&'a Sheet>,
+    /// The Mechanics diagram, which Mechatronics places its components around (extended in
+    /// place: taken, not copied).
+    pub diagram: Option<Sheet>,
     /// The experiment Mechanics runs (Mechatronics runs it too unless a motion or a reference
     /// table is longer).
     pub experiment: Option<&'a Experiment>,
@@ -712,7 +713,7 @@ pub fn mechatronics(
     pkg: &str,
     drives: &[DrivePlan],
     motions: &[MotionTable],
-    additions: &Additions<'_>,
+    additions: Additions<'_>,
     provenance_html: &str,
 ) -> Result<Vec<(String, Vec<u8>)>, MechatronicsError> {
     let live = additions.live;
@@ -878,8 +879,7 @@ pub fn mechatronics(
         body,
         mstr(&html(&experiment.why))
     );
-    let empty = Sheet::default();
-    let (text, extent) = super::diagram::extend::lay_out(&text, additions.diagram.unwrap_or(&empty));
+    let (text, extent) = super::diagram::extend::lay_out(&text, additions.diagram.unwrap_or_default());
     let text = text.replacen("Diagram(\u{1})", &format!("Diagram({})", super::diagram::coordinate_system(&extent)), 1);
     let mut files = vec![(format!("{pkg}/Mechatronics.mo"), text.into_bytes())];
     if !motions.is_empty() {

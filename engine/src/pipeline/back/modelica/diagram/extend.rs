@@ -74,16 +74,21 @@ fn style(a: &str, b: &str) -> Style {
 }
 
 /// Places the components and routes the connects of a Mechatronics text written with
-/// placeholders; the text with placements and lines, and the extent of the whole diagram.
-pub fn lay_out(text: &str, base: &Sheet) -> (String, Rect) {
+/// placeholders among those of `base` (the Mechanics diagram, extended here: taken, not copied,
+/// since a 2,000-body sheet is megabytes); the text with placements and lines, and the extent
+/// of the whole diagram.
+pub fn lay_out(text: &str, base: Sheet) -> (String, Rect) {
     let (text, extent, _) = lay_out_counted(text, base);
     (text, extent)
 }
 
 /// [`lay_out`], with the routing work it did (see [`Sheet::work`]).
-pub fn lay_out_counted(text: &str, base: &Sheet) -> (String, Rect, u64) {
-    let mut sheet = base.clone();
+pub fn lay_out_counted(text: &str, base: Sheet) -> (String, Rect, u64) {
+    let base_work = base.work();
     let base_extent = base.extent(0);
+    // The components of `base` keep their places: where a Mechatronics component wants to
+    // stand is read from them, and they are the same in the growing sheet.
+    let mut sheet = base;
     let top = base_extent.y2 - 20;
     let mut row = 0;
     let mut out = String::with_capacity(text.len() * 2);
@@ -97,7 +102,7 @@ pub fn lay_out_counted(text: &str, base: &Sheet) -> (String, Rect, u64) {
             current = Some((c.to_string(), n.to_string()));
         }
         if let (Some(at), Some((class, name))) = (line.find(PLACEHOLDER), current.as_ref()) {
-            let (kind, w) = want(class, name, base, &mut row, base_extent.x1, top);
+            let (kind, w) = want(class, name, &sheet, &mut row, base_extent.x1, top);
             let placed = sheet.add(name, kind, w);
             lines.push(format!("{}{}{}", &line[..at], placed.annotation(), &line[at + PLACEHOLDER.len()..]));
             continue;
@@ -140,6 +145,6 @@ pub fn lay_out_counted(text: &str, base: &Sheet) -> (String, Rect, u64) {
         out.push_str(&line);
         out.push('\n');
     }
-    let work = sheet.work() - base.work();
+    let work = sheet.work() - base_work;
     (out, sheet.extent(40), work)
 }

@@ -74,30 +74,29 @@ const DIRS: [(i32, i32); 4] = [(1, 0), (-1, 0), (0, 1), (0, -1)];
 /// array per wire cost more in clearing memory than the search itself on large sheets). They
 /// are all zero when clean, so the memory a search never reaches is never written (the
 /// allocator's zeroed pages): a large window costs what the search visits.
+///
+/// Cells are numbered by tiles of [`TILE`] × [`TILE`] ([`Window::cell`]), and a state's cost and
+/// predecessor lie side by side, so the states a search reaches around a grid point share a few
+/// pages: numbered row by row, a window 1,000 cells wide put every row of a search on pages of
+/// its own, and the first touch of each page (the kernel's zeroing) was a third of the routing.
 enum Cells {
     Dense(Dense),
-    Sparse { state: GridMap<usize, u8>, best: GridMap<usize, u32>, from: GridMap<usize, u32> },
+    Sparse { state: GridMap<usize, u8>, nodes: GridMap<usize, [u32; 2]> },
 }
 
-/// Dense search state of [`DENSE_CELLS`] cells, zero outside `touched_*`: `best` holds a
-/// state's cost plus one and `from` its predecessor plus one (0: none yet).
+/// Dense search state of [`DENSE_CELLS`] cells, zero outside `touched_*`: per cell 0 unknown,
+/// 1 free, 2 blocked; per state (cell × 5 + arriving direction) its cost plus one and its
+/// predecessor plus one (0: none yet).
 struct Dense {
     state: Vec<u8>,
-    best: Vec<u32>,
-    from: Vec<u32>,
+    nodes: Vec<[u32; 2]>,
     touched_cells: Vec<u32>,
     touched_nodes: Vec<u32>,
 }
 
 impl Dense {
     fn fresh() -> Dense {
-        Dense {
-            state: vec![0; DENSE_CELLS],
-            best: vec![0; DENSE_CELLS * 5],
-            from: vec![0; DENSE_CELLS * 5],
-            touched_cells: Vec::new(),
-            touched_nodes: Vec::new(),
-        }
+        Dense { state: vec![0; DENSE_CELLS], nodes: vec![[0, 0]; DENSE_CELLS * 5], touched_cells: Vec::new(), touched_nodes: Vec::new() }
     }
 }
 
@@ -112,15 +111,12 @@ impl Drop for Cells {
                 d.state[c as usize] = 0;
             }
             for &n in &d.touched_nodes {
-                d.best[n as usize] = 0;
-                d.from[n as usize] = 0;
+                d.nodes[n as usize] = [0, 0];
             }
             d.touched_cells.clear();
             d.touched_nodes.clear();
-            let clean = std::mem::replace(
-                d,
-                Dense { state: Vec::new(), best: Vec::new(), from: Vec::new(), touched_cells: Vec::new(), touched_nodes: Vec::new() },
-            );
+            let clean =
+                std::mem::replace(d, Dense { state: Vec::new(), nodes: Vec::new(), touched_cells: Vec::new(), touched_nodes: Vec::new() });
             DENSE_POOL.with(|p| p.borrow_mut().push(clean));
         }
     }
@@ -130,12 +126,64 @@ impl Drop for Cells {
 /// per routing thread, of which only the pages a search reaches are ever written).
 const DENSE_CELLS: usize = 1 << 20;
 
+/// The side of a tile of cells numbered together (a power of two).
+const TILE: i32 = 16;
+const TILE_BITS: u32 = TILE.trailing_zeros();
+
+/// A search window and the numbering of its cells: tile by tile (tiles row by row), each
+/// tile's cells row by row.
+#[derive(Clone, Copy)]
+struct Window {
+    x1: i32,
+    y1: i32,
+    x2: i32,
+    y2: i32,
+    /// Tiles per row.
+    tiles_x: usize,
+    /// Cells per row.
+    width: usize,
+}
+
+impl Window {
+    fn new(win: Rect) -> Window {
+        let w = (win.x2 - win.x1 + 1) as usize;
+        Window { x1: win.x1, y1: win.y1, x2: win.x2, y2: win.y2, tiles_x: w.div_ceil(TILE as usize), width: w }
+    }
+    /// Cells the numbering spans (whole tiles).
+    fn cells(&self) -> usize {
+        let rows = ((self.y2 - self.y1 + 1) as usize).div_ceil(TILE as usize);
+        self.tiles_x * rows * (TILE * TILE) as usize
+    }
+    fn contains(&self, p: P) -> bool {
+        self.x1 <= p.0 && p.0 <= self.x2 && self.y1 <= p.1 && p.1 <= self.y2
+    }
+    fn cell(&self, p: P) -> usize {
+        let (lx, ly) = ((p.0 - self.x1) as usize, (p.1 - self.y1) as usize);
+        let tile = (ly >> TILE_BITS) * self.tiles_x + (lx >> TILE_BITS);
+        let mask = TILE as usize - 1;
+        (tile << (2 * TILE_BITS)) + ((ly & mask) << TILE_BITS) + (lx & mask)
+    }
+    /// The cell's place in the window row by row: what breaks ties between states of equal
+    /// cost (the order the search took before the cells were numbered by tiles, so the routes
+    /// stay the same).
+    fn rank(&self, p: P) -> usize {
+        (p.0 - self.x1) as usize + (p.1 - self.y1) as usize * self.width
+    }
+    fn point(&self, c: usize) -> P {
+        let (tile, inside) = (c >> (2 * TILE_BITS), c & ((TILE * TILE) as usize - 1));
+        let mask = TILE as usize - 1;
+        let lx = ((tile % self.tiles_x) << TILE_BITS) + (inside & mask);
+        let ly = ((tile / self.tiles_x) << TILE_BITS) + (inside >> TILE_BITS);
+        (self.x1 + lx as i32, self.y1 + ly as i32)
+    }
+}
+
 impl Cells {
     fn new(cells: usize) -> Cells {
         if cells <= DENSE_CELLS {
             Cells::Dense(DENSE_POOL.with(|p| p.borrow_mut().pop()).unwrap_or_else(Dense::fresh))
         } else {
-            Cells::Sparse { state: GridMap::default(), best: GridMap::default(), from: GridMap::default() }
+            Cells::Sparse { state: GridMap::default(), nodes: GridMap::default() }
         }
     }
     fn state(&mut self, c: usize, f: impl FnOnce() -> u8) -> u8 {
@@ -152,28 +200,27 @@ impl Cells {
     }
     fn best(&self, n: usize) -> u32 {
         match self {
-            Cells::Dense(d) => d.best[n].wrapping_sub(1),
-            Cells::Sparse { best, .. } => best.get(&n).copied().unwrap_or(u32::MAX),
+            Cells::Dense(d) => d.nodes[n][0].wrapping_sub(1),
+            Cells::Sparse { nodes, .. } => nodes.get(&n).map_or(u32::MAX, |e| e[0]),
         }
     }
     fn from(&self, n: usize) -> u32 {
         match self {
-            Cells::Dense(d) => d.from[n].wrapping_sub(1),
-            Cells::Sparse { from, .. } => from.get(&n).copied().unwrap_or(u32::MAX),
+            Cells::Dense(d) => d.nodes[n][1].wrapping_sub(1),
+            Cells::Sparse { nodes, .. } => nodes.get(&n).map_or(u32::MAX, |e| e[1]),
         }
     }
     fn set(&mut self, n: usize, cost: u32, prev: u32) {
         match self {
             Cells::Dense(d) => {
-                if d.best[n] == 0 && d.from[n] == 0 {
+                let e = &mut d.nodes[n];
+                if *e == [0, 0] {
                     d.touched_nodes.push(n as u32);
                 }
-                d.best[n] = cost.wrapping_add(1);
-                d.from[n] = prev.wrapping_add(1);
+                *e = [cost.wrapping_add(1), prev.wrapping_add(1)];
             }
-            Cells::Sparse { best, from, .. } => {
-                best.insert(n, cost);
-                from.insert(n, prev);
+            Cells::Sparse { nodes, .. } => {
+                nodes.insert(n, [cost, prev]);
             }
         }
     }
@@ -183,20 +230,18 @@ impl Cells {
 /// grid point `s` to `t` within `win` (grid units), expanding at most `limit` nodes; the grid
 /// points of the path, and the nodes expanded.
 fn search(sheet: &Sheet, s: P, t: P, win: Rect, limit: u64) -> (Option<Vec<P>>, u64) {
-    let w = (win.x2 - win.x1 + 1) as usize;
-    let hgt = (win.y2 - win.y1 + 1) as usize;
-    let cell = |p: P| (p.0 - win.x1) as usize + (p.1 - win.y1) as usize * w;
+    let win = Window::new(win);
     let h = |p: P| 2 * ((p.0 - t.0).abs() + (p.1 - t.1).abs()) as u32;
     // Per cell: 0 unknown, 1 free, 2 blocked. Per state (cell, arriving direction 0..5): best
     // cost and the state it came from.
-    let mut cells = Cells::new(w * hgt);
+    let mut cells = Cells::new(win.cells());
     let mut heap = BinaryHeap::new();
-    let start = cell(s) * 5 + 4;
+    let start = win.cell(s) * 5 + 4;
     cells.set(start, 0, u32::MAX);
-    heap.push(Reverse((h(s), 0u32, start as u32)));
+    heap.push(Reverse((h(s), 0u32, (win.rank(s) * 5 + 4) as u32, start as u32)));
     let mut expansions = 0u64;
-    let goal = cell(t);
-    while let Some(Reverse((_, cost, node))) = heap.pop() {
+    let goal = win.cell(t);
+    while let Some(Reverse((_, cost, _, node))) = heap.pop() {
         let node = node as usize;
         if cells.best(node) < cost {
             continue;
@@ -206,8 +251,7 @@ fn search(sheet: &Sheet, s: P, t: P, win: Rect, limit: u64) -> (Option<Vec<P>>, 
             let mut path = Vec::new();
             let mut cur = node;
             loop {
-                let cc = cur / 5;
-                path.push((win.x1 + (cc % w) as i32, win.y1 + (cc / w) as i32));
+                path.push(win.point(cur / 5));
                 let prev = cells.from(cur);
                 if prev == u32::MAX {
                     break;
@@ -221,7 +265,7 @@ fn search(sheet: &Sheet, s: P, t: P, win: Rect, limit: u64) -> (Option<Vec<P>>, 
             return (None, expansions);
         }
         expansions += 1;
-        let (x, y) = (win.x1 + (c % w) as i32, win.y1 + (c / w) as i32);
+        let (x, y) = win.point(c);
         for (d, (dx, dy)) in DIRS.iter().enumerate() {
             let d = d as u8;
             // No U-turns.
@@ -229,10 +273,10 @@ fn search(sheet: &Sheet, s: P, t: P, win: Rect, limit: u64) -> (Option<Vec<P>>, 
                 continue;
             }
             let (nx, ny) = (x + dx, y + dy);
-            if nx < win.x1 || nx > win.x2 || ny < win.y1 || ny > win.y2 {
+            if !win.contains((nx, ny)) {
                 continue;
             }
-            let nc = cell((nx, ny));
+            let nc = win.cell((nx, ny));
             if cells.state(nc, || if sheet.blocked(nx, ny) { 2 } else { 1 }) == 2 && nc != goal {
                 continue;
             }
@@ -244,7 +288,7 @@ fn search(sheet: &Sheet, s: P, t: P, win: Rect, limit: u64) -> (Option<Vec<P>>, 
             let cst = cost + step;
             if cst < cells.best(next) {
                 cells.set(next, cst, node as u32);
-                heap.push(Reverse((cst + h((nx, ny)), cst, next as u32)));
+                heap.push(Reverse((cst + h((nx, ny)), cst, (win.rank((nx, ny)) * 5 + d as usize) as u32, next as u32)));
             }
         }
     }
@@ -479,4 +523,28 @@ pub(super) fn route(sheet: &mut Sheet, a: End, b: End) -> Vec<(f64, f64)> {
     sb.reverse();
     pts.extend(sb);
     simplify(pts)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every point of a window gets its own cell number below `cells()`, and the number gives the
+    /// point back; windows narrower than a tile, a tile wide and wider, at negative coordinates.
+    #[test]
+    fn tile_numbering_is_one_to_one() {
+        for (x1, y1, x2, y2) in [(-3, -7, 9, 4), (0, 0, 15, 15), (-40, 10, 17, 50), (5, -33, 5, -33)] {
+            let win = Window::new(Rect { x1, y1, x2, y2 });
+            let mut seen = std::collections::HashSet::new();
+            for y in y1..=y2 {
+                for x in x1..=x2 {
+                    let c = win.cell((x, y));
+                    assert!(c < win.cells(), "{c} of {} at ({x}, {y})", win.cells());
+                    assert!(seen.insert(c), "cell {c} twice");
+                    assert_eq!(win.point(c), (x, y));
+                    assert_eq!(win.rank((x, y)), (x - x1) as usize + (y - y1) as usize * (x2 - x1 + 1) as usize);
+                }
+            }
+        }
+    }
 }

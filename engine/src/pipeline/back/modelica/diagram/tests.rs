@@ -169,7 +169,7 @@ fn contact_forces_stand_beside_their_bodies_with_short_wires() {
         text.push_str(&format!("  connect(collisionForce_{b}.frame_b, {b}.frame_a);\n"));
     }
     text.push_str("end Mechatronics;\n");
-    let (out, _, work) = extend::lay_out_counted(&text, &base);
+    let (out, _, work) = extend::lay_out_counted(&text, base.clone());
     assert!(!out.contains(ph), "{out}");
     let drawing = svg::read(&out);
     let at = |name: &str| {
@@ -204,7 +204,7 @@ fn contact_forces_stand_beside_their_bodies_with_short_wires() {
 fn declarations_may_start_with_inner() {
     let text =
         format!("  inner P.Components.Collision.World collisionWorld(nBodies=3) if collisions \"World\"\n    {};\n", extend::PLACEHOLDER);
-    let (out, _) = extend::lay_out(&text, &Sheet::default());
+    let (out, _) = extend::lay_out(&text, Sheet::default());
     assert!(!out.contains(extend::PLACEHOLDER), "{out}");
     assert_eq!(svg::read(&out).components.first().map(|c| c.name.as_str()), Some("collisionWorld"), "{out}");
 }

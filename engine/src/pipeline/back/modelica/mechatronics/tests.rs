@@ -52,7 +52,7 @@ fn output_text(out: &crate::pipeline::Output, path: &str) -> String {
 }
 
 fn mechatronics_text(drives: &[DrivePlan]) -> String {
-    let files = mechatronics("P", drives, &[], &Default::default(), "<p>From \"x.xml\".</p>").expect("mechatronics");
+    let files = mechatronics("P", drives, &[], Default::default(), "<p>From \"x.xml\".</p>").expect("mechatronics");
     assert_eq!(files.len(), 1);
     text(&files, "P/Mechatronics.mo")
 }
@@ -216,7 +216,7 @@ fn split_strings(s: &str) -> (String, Vec<String>) {
 #[test]
 fn html_stays_inside_string_literals() {
     let mut files = components("P");
-    files.extend(mechatronics("P", &[plan("J")], &[], &Default::default(), "<p class=\"x\">a \\ b</p>").expect("mechatronics"));
+    files.extend(mechatronics("P", &[plan("J")], &[], Default::default(), "<p class=\"x\">a \\ b</p>").expect("mechatronics"));
     for (path, bytes) in files.iter().filter(|(p, _)| p.ends_with(".mo")) {
         let (code, literals) = split_strings(&String::from_utf8(bytes.clone()).expect("utf-8"));
         for tag in ["<p", "</", "<html", "<code", "<tr", "<pre", "<table", "<li", "cellspacing"] {
@@ -317,7 +317,7 @@ fn prismatic_drive_and_tables() {
 
 #[test]
 fn errors() {
-    let err = |plans: &[DrivePlan]| mechatronics("P", plans, &[], &Default::default(), "").expect_err("must fail");
+    let err = |plans: &[DrivePlan]| mechatronics("P", plans, &[], Default::default(), "").expect_err("must fail");
 
     let mut p = plan("J");
     p.motor = choice(IDEAL, &[("ratio", r(2.0))]);
@@ -385,7 +385,7 @@ fn errors() {
     p.start = f64::NAN;
     assert!(matches!(err(&[p]), MechatronicsError::BadReference { .. }));
 
-    assert!(matches!(mechatronics("1P", &[], &[], &Default::default(), ""), Err(MechatronicsError::BadPackageName(_))));
+    assert!(matches!(mechatronics("1P", &[], &[], Default::default(), ""), Err(MechatronicsError::BadPackageName(_))));
 }
 
 #[test]
@@ -472,7 +472,7 @@ fn write_package_with(
 ) -> (tempfile::TempDir, String) {
     let mut all = files;
     all.extend(components(pkg));
-    let mech = mechatronics(pkg, drives, motions, &Default::default(), "<p>Converted by cad2mo for a test.</p>").expect("mechatronics");
+    let mech = mechatronics(pkg, drives, motions, Default::default(), "<p>Converted by cad2mo for a test.</p>").expect("mechatronics");
     let text = String::from_utf8(mech[0].1.clone()).expect("utf-8");
     all.extend(mech);
     let tmp = tempfile::tempdir().expect("tempdir");
@@ -625,7 +625,7 @@ fn drives_following_motions_pass_the_tools() {
     // Bad tables are refused, naming the motion.
     let mut bad = ramp("jumpy", &axes, 0.1);
     bad.t[3] = bad.t[2];
-    let e = mechatronics(&pkg, &plans, &[bad], &Default::default(), "").expect_err("times must increase");
+    let e = mechatronics(&pkg, &plans, &[bad], Default::default(), "").expect_err("times must increase");
     assert!(e.to_string().contains("motion \"jumpy\": times must start at 0 and increase"), "{e}");
 }
 
