@@ -260,10 +260,16 @@ fn output_overwrites_input(input: &Path, output: &Path) -> bool {
 
 /// Writes `bytes` to `path` through a temporary file in the same folder and a rename.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    write_atomic_with(path, |f| f.write_all(bytes))
+}
+
+/// Writes what `write` writes to `path` through a temporary file in the same folder and a
+/// rename: `path` is the whole output or untouched.
+pub fn write_atomic_with(path: &Path, write: impl FnOnce(&mut dyn std::io::Write) -> std::io::Result<()>) -> std::io::Result<()> {
     let dir = path.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."));
     let file_name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
     let tmp = dir.join(format!(".{file_name}.{}.tmp", std::process::id()));
-    let result = std::fs::write(&tmp, bytes).and_then(|_| std::fs::rename(&tmp, path));
+    let result = std::fs::File::create(&tmp).and_then(|mut f| write(&mut f)).and_then(|_| std::fs::rename(&tmp, path));
     if result.is_err() {
         let _ = std::fs::remove_file(&tmp);
     }
@@ -344,15 +350,9 @@ pub fn main() -> ExitCode {
                 }
             };
             print_warnings(&out.report.warnings);
-            let zip = match pipeline::back::bundle::write_files(out.files) {
-                Ok(z) => z,
-                Err(e) => {
-                    eprintln!("error: writing zip: {e}");
-                    return ExitCode::from(1);
-                }
-            };
-            if let Err(e) = write_atomic(&output, &zip) {
-                eprintln!("error: {}: {e}", output.display());
+            // The zip goes straight into the file (never held whole in memory).
+            if let Err(e) = write_atomic_with(&output, |f| pipeline::back::bundle::write_files_into(out.files, &mut |_, _| {}, f)) {
+                eprintln!("error: writing {}: {e}", output.display());
                 return ExitCode::from(1);
             }
             eprintln!(

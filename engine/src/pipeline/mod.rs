@@ -648,6 +648,12 @@ fn write_output(a: Analysed, opts: &Options, obs: &mut dyn Observer) -> Result<O
                     let json = serde_json::to_vec_pretty(&report).map_err(|e| ConvertError::Options(e.to_string()))?;
                     Ok(ahead(vec![("report.json".to_string(), json)]))
                 });
+                // The package documentation lists the report's findings and the drives: written
+                // beside Mechatronics too.
+                let doc = last.spawn(|| {
+                    let text = back::modelica::doc::package_file(&report, &drives, &back::modelica::provenance(&a.model, VERSION), VERSION);
+                    ahead(vec![(String::new(), text.into_bytes())]).pop().map(|(_, b)| b)
+                });
                 let parts = collision.parts();
                 let contacts = back::modelica::mechatronics::collision::declarations_with_scene(
                     &package_name,
@@ -683,12 +689,12 @@ fn write_output(a: Analysed, opts: &Options, obs: &mut dyn Observer) -> Result<O
                     }
                 }
                 files.extend(extras.files);
-                // The package documentation lists the report's findings and the drives.
-                if let Some((_, text)) = files.iter_mut().find(|(p, _)| *p == format!("{package_name}/package.mo")) {
-                    *text = back::modelica::doc::package_file(&report, &drives, &back::modelica::provenance(&a.model, VERSION), VERSION)
-                        .into_bytes();
+                let mut files: Vec<(String, back::bundle::FileData)> = files.into_iter().map(|(p, b)| (p, b.into())).collect();
+                if let (Some((_, text)), Some(doc)) =
+                    (files.iter_mut().find(|(p, _)| *p == format!("{package_name}/package.mo")), join(doc))
+                {
+                    *text = doc;
                 }
-                let files: Vec<(String, back::bundle::FileData)> = files.into_iter().map(|(p, b)| (p, b.into())).collect();
                 Ok((files, join(json)?))
             })?;
             for (i, (_, b)) in finished.into_iter().zip(join(pkg_deflated)) {
@@ -730,13 +736,14 @@ mod memory_tests {
         let shapes: Vec<_> = out.files.iter().filter(|(p, _)| p.ends_with(".dxf") || p.ends_with(".stl")).collect();
         assert_eq!(shapes.len(), 6, "a DXF and an STL per link");
         assert!(shapes.iter().all(|(_, f)| f.is_deflated()), "every shape file deflated");
-        // The files final when made come deflated too (issue 23: on the threads that make them);
-        // those that get lines later, and Mechatronics, come plain.
+        // The files final when made come deflated too (issue 23: on the threads that make them,
+        // the package documentation among them); those that get lines later, and Mechatronics,
+        // come plain.
         let deflated = |suffix: &str| out.files.iter().find(|(p, _)| p.ends_with(suffix)).map(|(_, f)| f.is_deflated());
-        for final_file in ["/Mechanics.mo", "report.json", "/shapes.json", ".mjcf.xml", ".urdf"] {
+        for final_file in ["/Mechanics.mo", "report.json", "/shapes.json", ".mjcf.xml", ".urdf", "/package.mo"] {
             assert_eq!(deflated(final_file), Some(true), "{final_file}");
         }
-        for later in ["/package.mo", "/package.order", "/Components/package.order", "/Mechatronics.mo"] {
+        for later in ["/package.order", "/Components/package.order", "/Mechatronics.mo"] {
             assert_eq!(deflated(later), Some(false), "{later}");
         }
         // Without the package's shape files (the service's analyses), every file comes plain.

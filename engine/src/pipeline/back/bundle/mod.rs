@@ -164,9 +164,49 @@ fn pack(compressor: &mut libdeflater::Compressor, bytes: &[u8]) -> (u32, Option<
 /// of small shape files); the container itself is a few headers, read back by the `zip` crate
 /// and Python's `zipfile` in the tests.
 pub fn write_files_observed(files: Vec<(String, FileData)>, done: &mut dyn FnMut(usize, usize)) -> Result<Vec<u8>, std::io::Error> {
+    let mut out = Vec::new();
+    write_zip_to(files, done, Sink::Memory(&mut out))?;
+    Ok(out)
+}
+
+/// Where [`write_zip_to`] writes: memory (reserved once, to the zip's size) or a stream.
+enum Sink<'a> {
+    Memory(&'a mut Vec<u8>),
+    Stream(&'a mut dyn Write),
+}
+
+impl Sink<'_> {
+    fn reserve(&mut self, n: usize) {
+        if let Sink::Memory(v) = self {
+            v.reserve_exact(n);
+        }
+    }
+    fn write_all(&mut self, bytes: &[u8]) -> Result<(), std::io::Error> {
+        match self {
+            Sink::Memory(v) => {
+                v.extend_from_slice(bytes);
+                Ok(())
+            }
+            Sink::Stream(w) => w.write_all(bytes),
+        }
+    }
+}
+
+/// [`write_files_observed`] into `sink` (a file: the zip is never held whole in memory, and its
+/// bytes are copied once, into the file). What is written is the same as
+/// [`write_files_observed`]'s bytes; on an error, part of it may have been written.
+pub fn write_files_into(
+    files: Vec<(String, FileData)>,
+    done: &mut dyn FnMut(usize, usize),
+    sink: &mut dyn Write,
+) -> Result<(), std::io::Error> {
+    write_zip_to(files, done, Sink::Stream(sink))
+}
+
+fn write_zip_to(files: Vec<(String, FileData)>, done: &mut dyn FnMut(usize, usize), mut sink: Sink<'_>) -> Result<(), std::io::Error> {
     let total: u64 = files.iter().map(|(p, b)| (b.len() + 2 * p.len() + 76) as u64).sum::<u64>() + 22;
     if files.len() > MAX_ENTRIES || total > MAX_SIZE {
-        return zip_crate(&files, done);
+        return sink.write_all(&zip_crate(&files, done)?);
     }
     let n_files = files.len();
     // The plain files, deflated here.
@@ -224,7 +264,10 @@ pub fn write_files_observed(files: Vec<(String, FileData)>, done: &mut dyn FnMut
         let (_, _, len) = entry(file, p.as_ref()).ok_or_else(|| std::io::Error::other("a zip entry was not deflated"))?;
         size += len + 2 * path.len() + 76;
     }
-    let mut out = Vec::with_capacity(size);
+    sink.reserve(size);
+    // Headers are gathered and written with the data before them, so the sink sees few writes.
+    let mut out = Vec::with_capacity(size.min(1 << 16));
+    let mut written = 0usize;
     let mut central = Vec::new();
     // Each file and its deflated bytes are freed once copied.
     for ((path, file), p) in files.into_iter().zip(packed) {
@@ -237,7 +280,7 @@ pub fn write_files_observed(files: Vec<(String, FileData)>, done: &mut dyn FnMut
         let name = path.as_bytes();
         let flags: u16 = if path.is_ascii() { 0 } else { 1 << 11 };
         let needed: u16 = if method == 8 { 20 } else { 10 };
-        let offset = out.len() as u32;
+        let offset = (written + out.len()) as u32;
         // The fields a local header and a central directory entry share, from the version needed on.
         let mut common = Vec::with_capacity(26);
         for v in [needed, flags, method, 0, DOS_DATE] {
@@ -251,7 +294,14 @@ pub fn write_files_observed(files: Vec<(String, FileData)>, done: &mut dyn FnMut
         out.extend_from_slice(&0x0403_4b50u32.to_le_bytes());
         out.extend_from_slice(&common);
         out.extend_from_slice(name);
-        out.extend_from_slice(&data);
+        if out.len() + data.len() > 1 << 16 {
+            written += out.len() + data.len();
+            sink.write_all(&out)?;
+            sink.write_all(&data)?;
+            out.clear();
+        } else {
+            out.extend_from_slice(&data);
+        }
         central.extend_from_slice(&0x0201_4b50u32.to_le_bytes());
         central.extend_from_slice(&((3u16 << 8) | 20).to_le_bytes());
         central.extend_from_slice(&common);
@@ -262,7 +312,7 @@ pub fn write_files_observed(files: Vec<(String, FileData)>, done: &mut dyn FnMut
         central.extend_from_slice(&offset.to_le_bytes());
         central.extend_from_slice(name);
     }
-    let (cd_offset, cd_size) = (out.len() as u32, central.len() as u32);
+    let (cd_offset, cd_size) = ((written + out.len()) as u32, central.len() as u32);
     out.extend_from_slice(&central);
     out.extend_from_slice(&0x0605_4b50u32.to_le_bytes());
     for v in [0u16, 0, n_files as u16, n_files as u16] {
@@ -271,7 +321,7 @@ pub fn write_files_observed(files: Vec<(String, FileData)>, done: &mut dyn FnMut
     out.extend_from_slice(&cd_size.to_le_bytes());
     out.extend_from_slice(&cd_offset.to_le_bytes());
     out.extend_from_slice(&0u16.to_le_bytes());
-    Ok(out)
+    sink.write_all(&out)
 }
 
 /// Zips `files` in turn with the `zip` crate (zip64 where needed), calling `done(i, n)` before
@@ -305,6 +355,50 @@ mod tests {
         let (_, data) = super::pack(&mut c, &text);
         let data = data.expect("deflated");
         assert!(data.len() < text.len() / 100 && data.capacity() == data.len(), "{} of {}", data.len(), data.capacity());
+    }
+
+    /// Streamed into a writer (the command line's file), the zip is the one made in memory:
+    /// small entries gathered, large ones (beyond the 64 KB batch) written through, plain,
+    /// deflated and stored entries alike.
+    #[test]
+    fn a_streamed_zip_is_the_one_made_in_memory() {
+        let big: Vec<u8> = (0..300_000u32).flat_map(|i| (i % 251).to_le_bytes()).collect();
+        let mix = |i: u64| {
+            let x = (i ^ 0x9e37_79b9_7f4a_7c15).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+            let x = (x ^ (x >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+            (x ^ (x >> 31)) as u8
+        };
+        // Not shrunk by deflating: stored, and larger than a batch.
+        let random: Vec<u8> = (0..100_000u64).map(mix).collect();
+        let files = || {
+            vec![
+                ("P/a.mo".to_string(), super::FileData::from(b"model a end a;".to_vec())),
+                ("P/big.txt".to_string(), super::Deflater::default().file(big.clone())),
+                ("P/random.bin".to_string(), super::FileData::from(random.clone())),
+                ("P/b.mo".to_string(), super::FileData::from(b"model b end b;".to_vec())),
+            ]
+        };
+        let mut streamed: Vec<u8> = Vec::new();
+        super::write_files_into(files(), &mut |_, _| {}, &mut streamed as &mut dyn std::io::Write).unwrap();
+        let memory = super::write_files(files()).unwrap();
+        assert!(memory.len() > random.len(), "the random entry is stored");
+        assert_eq!(streamed, memory);
+        let back = read_back(&streamed);
+        let names: Vec<&str> = back.iter().map(|(n, _)| n.as_str()).collect();
+        assert_eq!(names, ["P/a.mo", "P/big.txt", "P/random.bin", "P/b.mo"]);
+        assert_eq!(back[0].1, b"model a end a;");
+        assert_eq!(back[1].1, big);
+        assert_eq!(back[2].1, random);
+        assert_eq!(back[3].1, b"model b end b;");
+        // Python's zipfile reads each entry at its local header's offset.
+        let mut z = zip::ZipArchive::new(std::io::Cursor::new(&streamed)).unwrap();
+        for i in 0..z.len() {
+            let f = z.by_index(i).unwrap();
+            let at = f.header_start() as usize;
+            assert_eq!(&streamed[at..at + 4], b"PK\x03\x04", "{}", f.name());
+            let name_len = u16::from_le_bytes([streamed[at + 26], streamed[at + 27]]) as usize;
+            assert_eq!(&streamed[at + 30..at + 30 + name_len], f.name().as_bytes());
+        }
     }
 
     #[test]
