@@ -145,6 +145,13 @@ fn parse_gravity(s: &str) -> Result<[f64; 3], String> {
 
 /// Reads a bundle from a zip file or a directory tree.
 pub fn read_bundle(path: &Path, limits: &Limits) -> Result<Bundle, String> {
+    read_bundle_ahead(path, limits, false).map(|(b, _)| b)
+}
+
+/// [`read_bundle`]; with `parse`, a directory's model source (its one `.xml` or `.urdf` file
+/// that is one) is read first and parsed while the other files are read
+/// ([`pipeline::parse_ahead`]; issue 23: the parse no longer waits for thousands of meshes).
+pub fn read_bundle_ahead(path: &Path, limits: &Limits, parse: bool) -> Result<(Bundle, Option<pipeline::ParsedAhead>), String> {
     let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_else(|| path.display().to_string());
     let meta = std::fs::metadata(path).map_err(|e| format!("{}: {e}", path.display()))?;
     if !meta.is_dir() && !meta.is_file() {
@@ -184,48 +191,70 @@ pub fn read_bundle(path: &Path, limits: &Limits) -> Result<Bundle, String> {
                 }
             }
         }
-        let read = read_listed(&listed)?;
+        let (read, ahead) = read_listed(&listed, parse)?;
         let files = listed.into_iter().zip(read).map(|((_, rel, _), bytes)| (rel, bytes));
-        Bundle::from_files(&name, files).map_err(|e| e.to_string())
+        Ok((Bundle::from_files(&name, files).map_err(|e| e.to_string())?, ahead))
     } else {
         let bytes = read_bounded(path, limits.max_total_bytes)?;
-        Bundle::from_zip(&name, &bytes, limits).map_err(|e| e.to_string())
+        Ok((Bundle::from_zip(&name, &bytes, limits).map_err(|e| e.to_string())?, None))
     }
 }
 
 /// Reads the listed files (path, relative path, size when listed), each at most its listed size
 /// (a file that grew since is refused: the limits were checked on the sizes), on up to four
-/// threads; the first failure in list order is reported.
-fn read_listed(listed: &[(PathBuf, String, u64)]) -> Result<Vec<Vec<u8>>, String> {
+/// threads; the first failure in list order is reported. With `parse`, this thread first reads
+/// the `.xml` and `.urdf` files and, when exactly one of them is a model source, parses it while
+/// the other threads read the rest ([`pipeline::parse_ahead`]).
+fn read_listed(listed: &[(PathBuf, String, u64)], parse: bool) -> Result<(Vec<Vec<u8>>, Option<pipeline::ParsedAhead>), String> {
     use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+    let mut read: Vec<Option<Result<Vec<u8>, String>>> = (0..listed.len()).map(|_| None).collect();
+    let is_source = |rel: &str| {
+        let lower = rel.to_ascii_lowercase();
+        lower.ends_with(".xml") || lower.ends_with(".urdf")
+    };
+    let first: Vec<usize> = if parse { (0..listed.len()).filter(|&i| is_source(&listed[i].1)).collect() } else { Vec::new() };
+    for &i in &first {
+        read[i] = Some(read_bounded(&listed[i].0, listed[i].2));
+    }
+    let queue: Vec<usize> = (0..listed.len()).filter(|&i| read[i].is_none()).collect();
     let next = AtomicUsize::new(0);
-    let failed = AtomicBool::new(false);
+    let failed = AtomicBool::new(read.iter().flatten().any(|r| r.is_err()));
     let work = || {
         let mut mine = Vec::new();
         while !failed.load(Ordering::Relaxed) {
-            let i = next.fetch_add(1, Ordering::Relaxed);
-            let Some((p, _, len)) = listed.get(i) else { break };
+            let Some(&i) = queue.get(next.fetch_add(1, Ordering::Relaxed)) else { break };
+            let (p, _, len) = &listed[i];
             let r = read_bounded(p, *len);
             failed.fetch_or(r.is_err(), Ordering::Relaxed);
             mine.push((i, r));
         }
         mine
     };
-    let threads = std::thread::available_parallelism().map_or(1, |t| t.get()).min(4).min(listed.len()).max(1);
-    let mut read: Vec<Option<Result<Vec<u8>, String>>> = (0..listed.len()).map(|_| None).collect();
+    let threads = std::thread::available_parallelism().map_or(1, |t| t.get()).min(4).min(queue.len()).max(1);
+    let mut ahead = None;
     std::thread::scope(|scope| {
         let helpers: Vec<_> = (1..threads).map(|_| scope.spawn(work)).collect();
-        for (i, r) in work() {
-            read[i] = Some(r);
+        let sources: Vec<(&str, &[u8])> = first
+            .iter()
+            .filter_map(|&i| match &read[i] {
+                Some(Ok(bytes)) => pipeline::SourceKind::of(&listed[i].1, bytes).map(|_| (listed[i].1.as_str(), bytes.as_slice())),
+                _ => None,
+            })
+            .collect();
+        if let [(rel, bytes)] = sources[..] {
+            ahead = pipeline::parse_ahead(rel, bytes);
         }
+        let mut done = work();
         for h in helpers {
-            for (i, r) in h.join().unwrap_or_else(|e| std::panic::resume_unwind(e)) {
-                read[i] = Some(r);
-            }
+            done.extend(h.join().unwrap_or_else(|e| std::panic::resume_unwind(e)));
+        }
+        for (i, r) in done {
+            read[i] = Some(r);
         }
     });
     // A failure stops the threads, so files after it may be unread: the first failure is reported.
-    read.into_iter().map(|r| r.unwrap_or_else(|| Err("a file of the bundle was not read".to_string()))).collect()
+    let read = read.into_iter().map(|r| r.unwrap_or_else(|| Err("a file of the bundle was not read".to_string()))).collect::<Result<_, _>>()?;
+    Ok((read, ahead))
 }
 
 /// Reads a regular file of at most `max` bytes (a file that grows while read, or that was swapped
@@ -333,7 +362,7 @@ pub fn main() -> ExitCode {
                 );
                 return ExitCode::from(2);
             }
-            let b = match read_bundle(&bundle, &limits) {
+            let (b, ahead) = match read_bundle_ahead(&bundle, &limits, true) {
                 Ok(b) => b,
                 Err(e) => {
                     eprintln!("error: {e}");
@@ -342,7 +371,7 @@ pub fn main() -> ExitCode {
             };
             let matching = pipeline::passes::geometry_match::MatchOptions { tolerance_m: match_tolerance, angle_tolerance: match_angle };
             let opts = Options { package_name, gravity, lump_welds, write_shapes: true, matching, ..Options::default() };
-            let out = match pipeline::convert_owned(b, &opts) {
+            let out = match pipeline::convert_owned_ahead(b, ahead, &opts) {
                 Ok(o) => o,
                 Err(e) => {
                     eprintln!("error: {e}");

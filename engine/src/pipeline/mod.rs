@@ -286,13 +286,62 @@ pub fn analyse(bundle: &Bundle, opts: &Options) -> Result<Analysed, ConvertError
 
 /// [`analyse`], telling `obs` how far it is.
 pub fn analyse_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer) -> Result<Analysed, ConvertError> {
+    analyse_ahead(bundle, None, opts, obs)
+}
+
+/// A model source parsed before the rest of its bundle was read ([`parse_ahead`]): the command
+/// line parses the XML while the thousands of mesh files are still being read (issue 23).
+pub struct ParsedAhead {
+    kind: SourceKind,
+    path: String,
+    len: usize,
+    crc: u32,
+    parsed: Result<ParsedSource, ConvertError>,
+}
+
+enum ParsedSource {
+    Xml(Model, Vec<Warning>),
+    Urdf(Box<front::urdf::Urdf>),
+}
+
+/// The file at `path` (relative to the bundle's root) parsed as the model source it is, or
+/// `None` when it is none. The conversion of a bundle holding this file as its one source
+/// takes the result instead of parsing it again ([`convert_owned_ahead`]); anything else
+/// (another source found, other bytes) is converted as without it.
+pub fn parse_ahead(path: &str, bytes: &[u8]) -> Option<ParsedAhead> {
+    let path = front::bundle::normalise(path)?;
+    let kind = SourceKind::of(&path, bytes)?;
+    let parsed = parse_source(kind, &path, bytes);
+    Some(ParsedAhead { kind, len: bytes.len(), crc: crc32fast::hash(bytes), path, parsed })
+}
+
+fn parse_source(kind: SourceKind, path: &str, bytes: &[u8]) -> Result<ParsedSource, ConvertError> {
+    Ok(match kind {
+        SourceKind::FirstGeneration => {
+            let (model, warnings) = front::simmechanics::parse(path, bytes)?;
+            ParsedSource::Xml(model, warnings)
+        }
+        SourceKind::SecondGeneration => {
+            let (model, warnings) = front::simscape2::parse(path, bytes)?;
+            ParsedSource::Xml(model, warnings)
+        }
+        SourceKind::Urdf => ParsedSource::Urdf(Box::new(front::urdf::parse(path, bytes)?)),
+    })
+}
+
+/// [`analyse_observed`], taking the source parsed ahead when it is the bundle's source.
+fn analyse_ahead(bundle: &Bundle, ahead: Option<ParsedAhead>, opts: &Options, obs: &mut dyn Observer) -> Result<Analysed, ConvertError> {
     obs.progress(Stage::Xml, 0, 1);
     let (kind, path) = find_source(bundle)?;
     let bytes = bundle.get(&path).unwrap_or_default();
+    let parsed = match ahead {
+        Some(a) if a.kind == kind && a.path == path && a.len == bytes.len() && a.crc == crc32fast::hash(bytes) => a.parsed?,
+        _ => parse_source(kind, &path, bytes)?,
+    };
     let mut step = passes::geometry::StepCounts::default();
-    let (mut model, mut warnings) = match kind {
-        SourceKind::SecondGeneration => {
-            let (mut model, mut warnings) = front::simscape2::parse(&path, bytes)?;
+    let (mut model, mut warnings) = match parsed {
+        // Both XML generations: the parts' meshes are read (STL, STEP) by file name.
+        ParsedSource::Xml(mut model, mut warnings) => {
             let (w, counts) = passes::geometry::read_meshes(&mut model, bundle, &path, opts.step_cache.as_deref(), &mut |i, n| {
                 obs.progress(Stage::Meshes, i, n)
             })?;
@@ -300,17 +349,7 @@ pub fn analyse_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
             step = counts;
             (model, warnings)
         }
-        SourceKind::FirstGeneration => {
-            let (mut model, mut warnings) = front::simmechanics::parse(&path, bytes)?;
-            let (w, counts) = passes::geometry::read_meshes(&mut model, bundle, &path, opts.step_cache.as_deref(), &mut |i, n| {
-                obs.progress(Stage::Meshes, i, n)
-            })?;
-            warnings.extend(w);
-            step = counts;
-            (model, warnings)
-        }
-        SourceKind::Urdf => {
-            let mut urdf = front::urdf::parse(&path, bytes)?;
+        ParsedSource::Urdf(mut urdf) => {
             let w = front::urdf::attach_meshes(&mut urdf, bundle, &path, &mut |i, n| obs.progress(Stage::Meshes, i, n))?;
             urdf.warnings.extend(w);
             (urdf.model, urdf.warnings)
@@ -488,8 +527,13 @@ pub fn convert_observed(bundle: &Bundle, opts: &Options, obs: &mut dyn Observer)
 /// (the 2,000-body tree's 37 MB of STL: a fifth of the conversion's peak, each page of it
 /// faulted in again). What the command line's conversion calls.
 pub fn convert_owned(bundle: Bundle, opts: &Options) -> Result<Output, ConvertError> {
+    convert_owned_ahead(bundle, None, opts)
+}
+
+/// [`convert_owned`], with the bundle's source parsed ahead ([`parse_ahead`]).
+pub fn convert_owned_ahead(bundle: Bundle, ahead: Option<ParsedAhead>, opts: &Options) -> Result<Output, ConvertError> {
     check_options(opts)?;
-    let a = analyse_observed(&bundle, opts, &mut Quiet)?;
+    let a = analyse_ahead(&bundle, ahead, opts, &mut Quiet)?;
     drop(bundle);
     write_output(a, opts, &mut Quiet)
 }
