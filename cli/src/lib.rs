@@ -253,7 +253,8 @@ fn read_listed(listed: &[(PathBuf, String, u64)], parse: bool) -> Result<(Vec<Ve
         }
     });
     // A failure stops the threads, so files after it may be unread: the first failure is reported.
-    let read = read.into_iter().map(|r| r.unwrap_or_else(|| Err("a file of the bundle was not read".to_string()))).collect::<Result<_, _>>()?;
+    let read =
+        read.into_iter().map(|r| r.unwrap_or_else(|| Err("a file of the bundle was not read".to_string()))).collect::<Result<_, _>>()?;
     Ok((read, ahead))
 }
 

@@ -249,9 +249,9 @@ pub struct Sheet {
     used: UsedCells,
     /// Per vertical grid line (x / GRID): the keep-out boxes the line runs strictly inside, as
     /// disjoint open y intervals (start to end); a straight segment is checked in log time.
-    across_v: GridMap<i32, BTreeMap<i32, i32>>,
+    across_v: GridMap<i32, Intervals>,
     /// Per horizontal grid line (y / GRID): the same with x intervals.
-    across_h: GridMap<i32, BTreeMap<i32, i32>>,
+    across_h: GridMap<i32, Intervals>,
     /// Routing work done so far: A* node expansions plus straight segments checked by the
     /// fallback routes (see [`Sheet::work`]).
     work: u64,
@@ -265,24 +265,32 @@ pub struct Sheet {
 /// everything placed (about 22 rings around the wanted spot).
 pub const SPOTS_PER_ADD: u64 = 2_000;
 
+/// Disjoint open intervals (start, end) in order: what a grid line runs strictly inside.
+type Intervals = Vec<(i32, i32)>;
+
 /// Adds the open interval (a, b) to disjoint open intervals, merging what it overlaps.
-fn add_interval(map: &mut BTreeMap<i32, i32>, a: i32, b: i32) {
-    let over: Vec<(i32, i32)> = map.range(..b).rev().take_while(|(_, &e)| e > a).map(|(&s, &e)| (s, e)).collect();
-    let (mut lo, mut hi) = (a, b);
-    for (s, e) in over {
-        map.remove(&s);
-        lo = lo.min(s);
-        hi = hi.max(e);
+fn add_interval(list: &mut Intervals, a: i32, b: i32) {
+    // The intervals it overlaps, (s, e) with s < b and a < e, are consecutive: ends rise with
+    // starts.
+    let first = list.partition_point(|&(_, e)| e <= a);
+    let past = list.partition_point(|&(s, _)| s < b);
+    if first >= past {
+        list.insert(first, (a, b));
+    } else {
+        let merged = (a.min(list[first].0), b.max(list[past - 1].1));
+        list.splice(first..past, [merged]);
     }
-    map.insert(lo, hi);
 }
 
 /// Whether the closed segment [a, b] meets one of the disjoint open intervals.
-fn meets(map: Option<&BTreeMap<i32, i32>>, a: i32, b: i32) -> bool {
+fn meets(list: Option<&Intervals>, a: i32, b: i32) -> bool {
     let (a, b) = (a.min(b), a.max(b));
     // [a, b] meets (s, e) when s < b and a < e; of the intervals starting before b, the last
     // ends last (they are disjoint).
-    map.and_then(|m| m.range(..b).next_back()).is_some_and(|(_, &e)| e > a)
+    list.is_some_and(|l| {
+        let before = l.partition_point(|&(s, _)| s < b);
+        before > 0 && l[before - 1].1 > a
+    })
 }
 
 const BUCKET: i32 = 100;
