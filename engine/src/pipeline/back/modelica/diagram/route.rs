@@ -8,7 +8,7 @@
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 
-use super::{floor_div, GridMap, Rect, Sheet, BUCKET, GRID};
+use super::{GridMap, Rect, Sheet, GRID};
 
 type End = (((f64, f64), (i32, i32)), Rect);
 
@@ -37,15 +37,10 @@ fn g(v: f64) -> i32 {
 }
 
 impl Sheet {
-    /// True when grid point (ix, iy) lies strictly inside a component's keep-out box.
+    /// True when grid point (ix, iy) lies strictly inside a component's keep-out box (the grid
+    /// points [`Sheet::add`] marks).
     fn blocked(&self, ix: i32, iy: i32) -> bool {
-        let (x, y) = (ix * GRID, iy * GRID);
-        self.buckets.get(&(floor_div(x, BUCKET), floor_div(y, BUCKET))).is_some_and(|list| {
-            list.iter().any(|&i| {
-                let k = Sheet::keep_out(&self.rects[i]);
-                k.x1 < x && x < k.x2 && k.y1 < y && y < k.y2
-            })
-        })
+        self.inside.contains((ix, iy))
     }
 }
 
@@ -67,6 +62,12 @@ fn stub(((px, py), (dx, dy)): ((f64, f64), (i32, i32)), rect: &Rect) -> Vec<(f64
 }
 
 const DIRS: [(i32, i32); 4] = [(1, 0), (-1, 0), (0, 1), (0, -1)];
+
+/// A cell's state in a search (0: not looked at yet).
+const FREE: u8 = 1;
+const BLOCKED: u8 = 2;
+/// Free, and used by a wire already.
+const USED: u8 = 3;
 
 /// Per-search state: dense arrays for a window of up to [`DENSE_CELLS`] cells, hash maps for a
 /// larger one (a long wire's window is mostly never visited). The dense arrays are kept per
@@ -277,11 +278,22 @@ fn search(sheet: &Sheet, s: P, t: P, win: Rect, limit: u64) -> (Option<Vec<P>>, 
                 continue;
             }
             let nc = win.cell((nx, ny));
-            if cells.state(nc, || if sheet.blocked(nx, ny) { 2 } else { 1 }) == 2 && nc != goal {
+            // Looked up once per cell and search (wires are marked after it): blocked, or free
+            // and whether a wire already uses it.
+            let state = cells.state(nc, || {
+                if sheet.blocked(nx, ny) {
+                    BLOCKED
+                } else if sheet.used.contains((nx, ny)) {
+                    USED
+                } else {
+                    FREE
+                }
+            });
+            if state == BLOCKED && nc != goal {
                 continue;
             }
             let mut step = 1 + if dir != 4 && dir != d { BEND } else { 0 };
-            if sheet.used.contains((nx, ny)) {
+            if state == USED {
                 step += SHARED;
             }
             let next = nc * 5 + d as usize;
