@@ -213,12 +213,9 @@ fn read_listed(listed: &[(PathBuf, String, u64)], parse: bool) -> Result<(Vec<Ve
         lower.ends_with(".xml") || lower.ends_with(".urdf")
     };
     let first: Vec<usize> = if parse { (0..listed.len()).filter(|&i| is_source(&listed[i].1)).collect() } else { Vec::new() };
-    for &i in &first {
-        read[i] = Some(read_bounded(&listed[i].0, listed[i].2));
-    }
-    let queue: Vec<usize> = (0..listed.len()).filter(|&i| read[i].is_none()).collect();
+    let queue: Vec<usize> = (0..listed.len()).filter(|i| !first.contains(i)).collect();
     let next = AtomicUsize::new(0);
-    let failed = AtomicBool::new(read.iter().flatten().any(|r| r.is_err()));
+    let failed = AtomicBool::new(false);
     let work = || {
         let mut mine = Vec::new();
         while !failed.load(Ordering::Relaxed) {
@@ -234,6 +231,12 @@ fn read_listed(listed: &[(PathBuf, String, u64)], parse: bool) -> Result<(Vec<Ve
     let mut ahead = None;
     std::thread::scope(|scope| {
         let helpers: Vec<_> = (1..threads).map(|_| scope.spawn(work)).collect();
+        // The sources, read here while the other threads start on the rest.
+        for &i in &first {
+            let r = read_bounded(&listed[i].0, listed[i].2);
+            failed.fetch_or(r.is_err(), Ordering::Relaxed);
+            read[i] = Some(r);
+        }
         let sources: Vec<(&str, &[u8])> = first
             .iter()
             .filter_map(|&i| match &read[i] {
@@ -252,7 +255,11 @@ fn read_listed(listed: &[(PathBuf, String, u64)], parse: bool) -> Result<(Vec<Ve
             read[i] = Some(r);
         }
     });
-    // A failure stops the threads, so files after it may be unread: the first failure is reported.
+    // A failure stops the threads, so other files may be unread: the first failure in list
+    // order is reported.
+    if let Some(Some(Err(e))) = read.iter().find(|r| matches!(r, Some(Err(_)))) {
+        return Err(e.clone());
+    }
     let read =
         read.into_iter().map(|r| r.unwrap_or_else(|| Err("a file of the bundle was not read".to_string()))).collect::<Result<_, _>>()?;
     Ok((read, ahead))
@@ -393,6 +400,10 @@ pub fn main() -> ExitCode {
                 out.report.joints.len(),
                 out.report.warnings.len()
             );
+            // The conversion is written: its report and what is left of it go back with the
+            // process instead of being freed one allocation at a time (tens of thousands on a
+            // large model).
+            std::mem::forget(out.report);
             ExitCode::SUCCESS
         }
         Command::Inspect { bundle, lump_welds } => {
@@ -662,6 +673,64 @@ mod warning_tests {
 #[cfg(test)]
 mod read_tests {
     use cad2mo_engine::pipeline::front::bundle::Limits;
+    use cad2mo_engine::pipeline::{self, Options};
+
+    fn pendulum_files() -> Vec<(String, Vec<u8>)> {
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/in/pendulum");
+        ["PENDULUM.xml", "meshes/LINK_prt.stl"].iter().map(|f| (f.to_string(), std::fs::read(dir.join(f)).expect("fixture"))).collect()
+    }
+
+    fn folder(files: &[(String, Vec<u8>)]) -> tempfile::TempDir {
+        let dir = tempfile::tempdir().expect("temp dir");
+        for (rel, bytes) in files {
+            let p = dir.path().join(rel);
+            std::fs::create_dir_all(p.parent().expect("parent")).expect("mkdir");
+            std::fs::write(p, bytes).expect("write");
+        }
+        dir
+    }
+
+    /// The source parsed while the meshes are read gives the conversion parsing it in turn
+    /// gives, file for file; a broken source fails the same way either way (naming the file and
+    /// line); two sources are not parsed ahead, and the bundle's error says there are two.
+    #[test]
+    fn a_source_parsed_ahead_converts_as_one_parsed_in_turn() {
+        let opts = Options { write_shapes: true, ..Options::default() };
+        let convert_both = |dir: &std::path::Path| {
+            let (bundle, ahead) = super::read_bundle_ahead(dir, &Limits::default(), true).expect("reads");
+            let had_ahead = ahead.is_some();
+            let fast = pipeline::convert_owned_ahead(bundle, ahead, &opts).map(|o| o.files);
+            let plain = pipeline::convert(&super::read_bundle(dir, &Limits::default()).expect("reads"), &opts).map(|o| o.files);
+            (had_ahead, fast.map_err(|e| e.to_string()), plain.map_err(|e| e.to_string()))
+        };
+        let good = folder(&pendulum_files());
+        let (had_ahead, fast, plain) = convert_both(good.path());
+        assert!(had_ahead);
+        let (fast, plain) = (fast.expect("converts"), plain.expect("converts"));
+        assert_eq!(fast.len(), plain.len());
+        for ((pa, fa), (pb, fb)) in fast.iter().zip(&plain) {
+            assert_eq!(pa, pb);
+            assert!(fa.bytes() == fb.bytes(), "{pa}");
+        }
+
+        let mut broken = pendulum_files();
+        let cut = broken[0].1.len() * 2 / 3;
+        broken[0].1.truncate(cut);
+        let dir = folder(&broken);
+        let (had_ahead, fast, plain) = convert_both(dir.path());
+        assert!(had_ahead, "a truncated XML is still sniffed as the source");
+        let e = fast.expect_err("truncated");
+        assert_eq!(Err::<(), _>(e.clone()), plain.map(|_| ()));
+        assert!(e.contains("PENDULUM.xml"), "{e}");
+
+        let mut two = pendulum_files();
+        two.push(("copy/OTHER.xml".to_string(), two[0].1.clone()));
+        let dir = folder(&two);
+        let (had_ahead, fast, plain) = convert_both(dir.path());
+        assert!(!had_ahead);
+        let e = fast.expect_err("two sources");
+        assert_eq!(Err::<(), _>(e.clone()), plain.map(|_| ()));
+    }
 
     /// A folder's files, read on several threads, land at their own paths with their own bytes;
     /// the limits are checked on the listed sizes before anything is read.

@@ -803,6 +803,24 @@ mod memory_tests {
         assert_eq!(back::bundle::write_files(out.files).expect("zip"), back::bundle::write_zip(&plain).expect("zip"));
     }
 
+    /// A source parsed ahead is taken for the bundle's source with the same path and bytes
+    /// only: other bytes at that path are parsed again.
+    #[test]
+    fn a_source_parsed_ahead_is_taken_only_for_its_own_bytes() {
+        let files = crate::testgen::urdf_shared_obj(3, 10);
+        let (path, bytes) = files.iter().find(|(p, _)| p.ends_with(".urdf")).cloned().expect("a URDF");
+        let other = String::from_utf8(bytes.clone()).expect("text").replacen("<robot name=\"shared\"", "<robot name=\"other\"", 1);
+        assert_ne!(other.as_bytes(), &bytes[..]);
+        let bundle = || Bundle::from_files("b", files.clone()).expect("bundle");
+        let plain = convert(&bundle(), &Options::default()).expect("converts").report.model_name;
+        assert_eq!(plain, "shared");
+        let taken = convert_owned_ahead(bundle(), parse_ahead(&path, &bytes), &Options::default()).expect("converts");
+        assert_eq!(taken.report.model_name, plain);
+        let stale = convert_owned_ahead(bundle(), parse_ahead(&path, other.as_bytes()), &Options::default()).expect("converts");
+        assert_eq!(stale.report.model_name, plain, "other bytes at the path: parsed again");
+        assert!(parse_ahead("notes.txt", &bytes).is_none(), "not a source");
+    }
+
     /// The estimate is linear: 150 MB, 60 bytes per triangle and 1.5 bytes per bundle byte, and
     /// above every peak measured (the table of [`peak_memory_estimate`]).
     #[test]
