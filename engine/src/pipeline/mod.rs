@@ -303,7 +303,7 @@ pub struct ParsedAhead {
 
 enum ParsedSource {
     Xml(Model, Vec<Warning>),
-    Urdf(Box<front::urdf::Urdf>),
+    Urdf(front::urdf::Urdf),
 }
 
 /// The file at `path` (relative to the bundle's root) parsed as the model source it is, or
@@ -327,7 +327,7 @@ fn parse_source(kind: SourceKind, path: &str, bytes: &[u8]) -> Result<ParsedSour
             let (model, warnings) = front::simscape2::parse(path, bytes)?;
             ParsedSource::Xml(model, warnings)
         }
-        SourceKind::Urdf => ParsedSource::Urdf(Box::new(front::urdf::parse(path, bytes)?)),
+        SourceKind::Urdf => ParsedSource::Urdf(front::urdf::parse(path, bytes)?),
     })
 }
 
