@@ -200,8 +200,8 @@ pub struct Output {
     /// When the package is written (`Options::write_shapes`), the bodies' DXF and STL files come
     /// deflated (`FileData::bytes` reads them), so that a conversion never holds them all as
     /// plain bytes (issue 26, peak memory), and so do the other files that are final when made
-    /// (all but `package.mo`, the `package.order` files, Mechatronics and what the observer
-    /// adds): they are deflated on the threads that make them, beside the Modelica writing
+    /// (all but the `package.order` files, Mechatronics and what the observer adds;
+    /// `package.mo`'s documentation is written beside Mechatronics): they are deflated on the threads that make them, beside the Modelica writing
     /// (issue 23). Which files come deflated does not depend on the threads.
     pub files: Vec<(String, back::bundle::FileData)>,
     pub report: report::Report,
