@@ -201,8 +201,9 @@ pub struct Output {
     /// deflated (`FileData::bytes` reads them), so that a conversion never holds them all as
     /// plain bytes (issue 26, peak memory), and so do the other files that are final when made
     /// (all but the `package.order` files, Mechatronics and what the observer adds;
-    /// `package.mo`'s documentation is written beside Mechatronics): they are deflated on the threads that make them, beside the Modelica writing
-    /// (issue 23). Which files come deflated does not depend on the threads.
+    /// `package.mo`'s documentation is written beside Mechatronics): they are deflated on the
+    /// threads that make them, beside the Modelica writing (issue 23). Which files come
+    /// deflated does not depend on the threads.
     pub files: Vec<(String, back::bundle::FileData)>,
     pub report: report::Report,
     /// How many collision shapes were computed and how many came from the shape cache (not in
