@@ -247,9 +247,6 @@ pub struct Sheet {
     pub wires: Vec<Wire>,
     /// Cells wires already use (for spreading later wires apart).
     used: UsedCells,
-    /// Grid points strictly inside a component's keep-out box, where no wire may run (marked
-    /// as components are added: a search asks for every cell it reaches).
-    inside: UsedCells,
     /// Per vertical grid line (x / GRID): the keep-out boxes the line runs strictly inside, as
     /// disjoint open y intervals (start to end); a straight segment is checked in log time.
     across_v: GridMap<i32, Intervals>,
@@ -384,10 +381,6 @@ impl Sheet {
         }
         for gy in floor_div(g.y1, GRID) + 1..=-floor_div(-g.y2, GRID) - 1 {
             add_interval(self.across_h.entry(gy).or_default(), g.x1, g.x2);
-            // The grid points strictly inside: x1 < x < x2, y1 < y < y2.
-            for gx in floor_div(g.x1, GRID) + 1..=-floor_div(-g.x2, GRID) - 1 {
-                self.inside.insert((gx, gy));
-            }
         }
         for bx in floor_div(g.x1 - BUCKET, BUCKET)..=floor_div(g.x2 + BUCKET, BUCKET) {
             for by in floor_div(g.y1 - BUCKET, BUCKET)..=floor_div(g.y2 + BUCKET, BUCKET) {

@@ -37,10 +37,11 @@ fn g(v: f64) -> i32 {
 }
 
 impl Sheet {
-    /// True when grid point (ix, iy) lies strictly inside a component's keep-out box (the grid
-    /// points [`Sheet::add`] marks).
+    /// True when grid point (ix, iy) lies strictly inside a component's keep-out box: its
+    /// horizontal grid line's intervals (the open x extents of the boxes the line runs strictly
+    /// inside) hold its x.
     fn blocked(&self, ix: i32, iy: i32) -> bool {
-        self.inside.contains((ix, iy))
+        super::meets(self.across_h.get(&iy), ix * GRID, ix * GRID)
     }
 }
 
