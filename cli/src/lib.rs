@@ -202,9 +202,9 @@ pub fn read_bundle_ahead(path: &Path, limits: &Limits, parse: bool) -> Result<(B
 
 /// Reads the listed files (path, relative path, size when listed), each at most its listed size
 /// (a file that grew since is refused: the limits were checked on the sizes), on up to four
-/// threads; the first failure in list order is reported. With `parse`, this thread first reads
-/// the `.xml` and `.urdf` files and, when exactly one of them is a model source, parses it while
-/// the other threads read the rest ([`pipeline::parse_ahead`]).
+/// threads; the first failure in list order is reported. With `parse`, this thread reads the
+/// `.xml` and `.urdf` files while the other threads start on the rest and, when exactly one of
+/// them is a model source, parses it before it joins them ([`pipeline::parse_ahead`]).
 fn read_listed(listed: &[(PathBuf, String, u64)], parse: bool) -> Result<(Vec<Vec<u8>>, Option<pipeline::ParsedAhead>), String> {
     use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
     let mut read: Vec<Option<Result<Vec<u8>, String>>> = (0..listed.len()).map(|_| None).collect();
@@ -212,8 +212,7 @@ fn read_listed(listed: &[(PathBuf, String, u64)], parse: bool) -> Result<(Vec<Ve
         let lower = rel.to_ascii_lowercase();
         lower.ends_with(".xml") || lower.ends_with(".urdf")
     };
-    let first: Vec<usize> = if parse { (0..listed.len()).filter(|&i| is_source(&listed[i].1)).collect() } else { Vec::new() };
-    let queue: Vec<usize> = (0..listed.len()).filter(|i| !first.contains(i)).collect();
+    let (first, queue): (Vec<usize>, Vec<usize>) = (0..listed.len()).partition(|&i| parse && is_source(&listed[i].1));
     let next = AtomicUsize::new(0);
     let failed = AtomicBool::new(false);
     let work = || {
@@ -400,10 +399,6 @@ pub fn main() -> ExitCode {
                 out.report.joints.len(),
                 out.report.warnings.len()
             );
-            // The conversion is written: its report and what is left of it go back with the
-            // process instead of being freed one allocation at a time (tens of thousands on a
-            // large model).
-            std::mem::forget(out.report);
             ExitCode::SUCCESS
         }
         Command::Inspect { bundle, lump_welds } => {
