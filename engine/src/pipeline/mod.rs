@@ -582,20 +582,13 @@ fn write_output(a: Analysed, opts: &Options, obs: &mut dyn Observer) -> Result<O
         let shape_names = body_names.bodies.clone();
         let shapes = scope.spawn(move || {
             let shapes = back::collision_shapes::body_shapes(model, &Default::default(), opts.shape_cache.as_deref());
-            let files = opts.write_shapes.then(|| {
-                let mut deflater = back::bundle::Deflater::default();
-                back::collision_shapes::shape_files(&shapes.0, pkg_name, &shape_names)
-                    .into_iter()
-                    .map(|(p, b)| (p, deflater.file(b)))
-                    .collect::<Vec<_>>()
-            });
+            let files = opts.write_shapes.then(|| back::collision_shapes::shape_files(&shapes.0, pkg_name, &shape_names));
             (shapes, files)
         });
         let stems = back::modelica::shape_stems(&a.model, &body_names);
         let mesh_files = opts.write_shapes.then(|| scope.spawn(move || mesh_files(model, &stems, pkg_name)));
         let back::modelica::Package { files: pkg_files, layout: pkg_layout } =
             back::modelica::write_named(&a.model, &a.validated, &modelica_options, body_names);
-        let (shapes, shape_files) = join(shapes);
         let mut report = report::build(report::ReportInput {
             model: &a.model,
             validated: &a.validated,
@@ -617,6 +610,8 @@ fn write_output(a: Analysed, opts: &Options, obs: &mut dyn Observer) -> Result<O
         obs.progress(Stage::Collision, 0, 1);
         let names: Vec<String> = pkg_layout.names.as_ref().map(|n| n.bodies.clone()).unwrap_or_default();
         let joint_names: Vec<String> = pkg_layout.names.as_ref().map(|n| n.joints.clone()).unwrap_or_default();
+        // The shapes are waited for only here: the report above is made meanwhile.
+        let (shapes, shape_files) = join(shapes);
         let collision = back::collision_shapes::Collision::from_shapes(shapes, &a.model, &names, &joint_names, &opts.collision_edits);
         // The scene: its objects checked against this version's bodies (those it cannot take left
         // out, named), then its part of Mechatronics and of the MJCF.

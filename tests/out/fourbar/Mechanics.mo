@@ -137,7 +137,7 @@ equation
   connect(ROCKER.frame_a, ROCKER_CS3.frame_a)
     annotation (Line(points={{1365,0},{1360,0},{1360,-100},{1310,-100}}, color={95,95,95}, thickness=0.5));
   connect(world.frame_b, RootPart.frame_a)
-    annotation (Line(points={{30,0},{35,0},{35,5},{400,5},{400,0},{405,0}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{30,0},{405,0}}, color={95,95,95}, thickness=0.5));
   connect(RootPart_CS2.frame_b, RootPart_CRANK.frame_a)
     annotation (Line(points={{430,-100},{480,-100},{480,0},{485,0}}, color={95,95,95}, thickness=0.5));
   connect(RootPart_CRANK.frame_b, CRANK_CS2.frame_b)

@@ -158,7 +158,7 @@ equation
   connect(base_shoulder_yaw.frame_b, shoulder_yaw.frame_a)
     annotation (Line(points={{435,-200},{485,-200},{485,0},{490,0}}, color={95,95,95}, thickness=0.5));
   connect(shoulder_yaw.frame_b, shoulder.frame_a)
-    annotation (Line(points={{510,0},{515,0},{515,5},{720,5},{720,0},{725,0}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{510,0},{725,0}}, color={95,95,95}, thickness=0.5));
   connect(shoulder_shoulder_pitch.frame_b, shoulder_pitch.frame_a)
     annotation (Line(points={{760,-200},{800,-200},{800,0},{805,0}}, color={95,95,95}, thickness=0.5));
   connect(shoulder_pitch.frame_b, upper_arm.frame_a)

@@ -97,15 +97,15 @@ equation
   connect(rocker.frame_a, rocker_coupler_rocker.frame_a)
     annotation (Line(points={{1365,0},{1320,0}}, color={95,95,95}, thickness=0.5));
   connect(world.frame_b, ground.frame_a)
-    annotation (Line(points={{30,0},{35,0},{35,5},{400,5},{400,0},{405,0}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{30,0},{405,0}}, color={95,95,95}, thickness=0.5));
   connect(ground.frame_a, crank_pivot.frame_a)
     annotation (Line(points={{405,0},{400,0},{400,-20},{485,-20},{485,0},{490,0}}, color={95,95,95}, thickness=0.5));
   connect(crank_pivot.frame_b, crank.frame_a)
-    annotation (Line(points={{510,0},{515,0},{515,5},{720,5},{720,0},{725,0}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{510,0},{725,0}}, color={95,95,95}, thickness=0.5));
   connect(crank_crank_coupler.frame_b, crank_coupler.frame_a)
     annotation (Line(points={{760,-200},{800,-200},{800,0},{805,0}}, color={95,95,95}, thickness=0.5));
   connect(crank_coupler.frame_b, coupler.frame_a)
-    annotation (Line(points={{835,0},{840,0},{840,5},{1040,5},{1040,0},{1045,0}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{835,0},{1045,0}}, color={95,95,95}, thickness=0.5));
   connect(coupler_coupler_rocker.frame_b, coupler_rocker.frame_a)
     annotation (Line(points={{1080,-200},{1120,-200},{1120,0},{1125,0}}, color={95,95,95}, thickness=0.5));
   connect(coupler_rocker.frame_b, rocker_coupler_rocker.frame_b)

@@ -196,7 +196,7 @@ equation
   connect(palm.frame_a, palm_jaw_b_slide.frame_a)
     annotation (Line(points={{565,0},{545,0},{545,-400},{565,-400}}, color={95,95,95}, thickness=0.5));
   connect(palm.frame_a, palm_thumb_slide.frame_a)
-    annotation (Line(points={{565,0},{560,0},{560,5},{540,5},{540,-500},{565,-500}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{565,0},{540,0},{540,-500},{565,-500}}, color={95,95,95}, thickness=0.5));
   connect(thumb.frame_a, thumb_nail_hinge.frame_a)
     annotation (Line(points={{885,-600},{880,-600},{880,-700},{885,-700}}, color={95,95,95}, thickness=0.5));
   connect(puck.frame_a, puck_shoulder_ball.frame_a)
@@ -236,7 +236,7 @@ equation
   connect(puck_shoulder_ball.frame_b, shoulder_ball.frame_a)
     annotation (Line(points={{595,-900},{640,-900},{640,-800},{645,-800}}, color={95,95,95}, thickness=0.5));
   connect(shoulder_ball.frame_b, ball_link.frame_a)
-    annotation (Line(points={{675,-800},{680,-800},{680,-795},{880,-795},{880,-800},{885,-800}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{675,-800},{885,-800}}, color={95,95,95}, thickness=0.5));
   connect(thumb_nail_hinge.frame_b, nail_hinge.frame_a)
     annotation (Line(points={{915,-700},{965,-700},{965,-600},{970,-600}}, color={95,95,95}, thickness=0.5));
   connect(nail_hinge.frame_b, nail.frame_a)

@@ -73,7 +73,7 @@ equation
   connect(RootPart.frame_a, RootPart_CS3.frame_a)
     annotation (Line(points={{405,0},{395,0},{395,-200},{410,-200}}, color={95,95,95}, thickness=0.5));
   connect(world.frame_b, RootPart.frame_a)
-    annotation (Line(points={{30,0},{35,0},{35,5},{400,5},{400,0},{405,0}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{30,0},{405,0}}, color={95,95,95}, thickness=0.5));
   connect(RootPart_CS2.frame_b, RootPart_BOLT.frame_a)
     annotation (Line(points={{430,-100},{480,-100},{480,0},{485,0}}, color={95,95,95}, thickness=0.5));
   connect(RootPart_BOLT.frame_b, BOLT.frame_a)

@@ -98,9 +98,9 @@ equation
   connect(Rail_1.frame_a, Rail_1_slide_base.frame_a)
     annotation (Line(points={{1045,0},{1040,0},{1040,-100},{1045,-100}}, color={95,95,95}, thickness=0.5));
   connect(Carriage_1.frame_a, Carriage_1_slide_follower.frame_a)
-    annotation (Line(points={{1365,0},{1360,0},{1360,5},{1325,5},{1325,0},{1320,0}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{1365,0},{1320,0}}, color={95,95,95}, thickness=0.5));
   connect(world.frame_b, Base_1.frame_a)
-    annotation (Line(points={{30,0},{35,0},{35,5},{400,5},{400,0},{405,0}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{30,0},{405,0}}, color={95,95,95}, thickness=0.5));
   connect(Base_1_shoulder_base.frame_b, shoulder.frame_a)
     annotation (Line(points={{440,-100},{485,-100},{485,0},{490,0}}, color={95,95,95}, thickness=0.5));
   connect(shoulder.frame_b, Link_1_shoulder_follower.frame_b)

@@ -124,7 +124,7 @@ equation
   connect(crank_1.frame_a, crank_1_weld_crank_1_grip_1_base.frame_a)
     annotation (Line(points={{565,-100},{560,-100},{560,-170},{555,-170},{555,-200},{560,-200}}, color={95,95,95}, thickness=0.5));
   connect(grip_1.frame_a, grip_1_weld_crank_1_grip_1_follower.frame_a)
-    annotation (Line(points={{885,-100},{880,-100},{880,-95},{845,-95},{845,-100},{840,-100}}, color={95,95,95}, thickness=0.5));
+    annotation (Line(points={{885,-100},{840,-100}}, color={95,95,95}, thickness=0.5));
   connect(world.frame_b, plate_1.frame_a)
     annotation (Line(points={{30,0},{35,0},{35,20},{560,20},{560,0},{565,0}}, color={95,95,95}, thickness=0.5));
   connect(World_2.frame_b, revolute_World_crank_1.frame_a)

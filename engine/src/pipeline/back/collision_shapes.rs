@@ -14,6 +14,7 @@ use nalgebra::Isometry3;
 use serde::Serialize;
 
 use crate::collision::{self, BodyShape, ConvexPart, ShapeCache, ShapeKey, ShapeOptions};
+use crate::pipeline::back::bundle::{Deflater, FileData};
 use crate::pipeline::ir::{FrameOwner, Mesh, Model, Warning};
 
 /// Interferences (the deepest) and collision shape warnings (the first, by body) given a
@@ -379,8 +380,10 @@ impl Collision {
 
 /// `Resources/Collision/<body>.obj` per body with a shape, and `shapes.json` (every part's
 /// vertices and radius, by body name) for the service, from `shapes` as [`body_shapes`] gives
-/// them: a conversion writes them as soon as the shapes are made.
-pub fn shape_files(shapes: &[Option<BodyShape>], pkg: &str, names: &[String]) -> Vec<(String, Vec<u8>)> {
+/// them, deflated for the zip: a conversion writes them as soon as the shapes are made. The OBJ
+/// files are written on up to two threads (this one among them) and `shapes.json` on a third
+/// beside them; the files are in body order, `shapes.json` last, whatever the threads' timing.
+pub fn shape_files(shapes: &[Option<BodyShape>], pkg: &str, names: &[String]) -> Vec<(String, FileData)> {
     // shapes.json, its keys in alphabetical order (as a JSON value's would be).
     #[derive(serde::Serialize)]
     struct Part<'a> {
@@ -397,19 +400,28 @@ pub fn shape_files(shapes: &[Option<BodyShape>], pkg: &str, names: &[String]) ->
     struct Shapes<'a> {
         bodies: Vec<Body<'a>>,
     }
-    let mut files = Vec::new();
-    let mut json = Vec::new();
-    for (i, s) in shapes.iter().enumerate() {
-        let (Some(s), Some(name)) = (s, names.get(i)) else { continue };
-        files.push((format!("{pkg}/Resources/Collision/{name}.obj"), collision::obj_text(s, name).into_bytes()));
-        let parts = s.parts.iter().map(|p| Part { radius: p.radius, vertices: &p.vertices }).collect();
-        json.push(Body { body: name, kind: s.kind.name(), parts });
-    }
-    if !json.is_empty() {
-        let text = serde_json::to_vec(&Shapes { bodies: json }).unwrap_or_default();
-        files.push((format!("{pkg}/Resources/Collision/shapes.json"), text));
-    }
-    files
+    let with: Vec<(&BodyShape, &String)> = shapes.iter().zip(names).filter_map(|(s, n)| Some((s.as_ref()?, n))).collect();
+    std::thread::scope(|scope| {
+        let json = scope.spawn(|| {
+            let bodies: Vec<Body> = with
+                .iter()
+                .map(|(s, name)| Body {
+                    body: name,
+                    kind: s.kind.name(),
+                    parts: s.parts.iter().map(|p| Part { radius: p.radius, vertices: &p.vertices }).collect(),
+                })
+                .collect();
+            (!bodies.is_empty()).then(|| {
+                let text = serde_json::to_vec(&Shapes { bodies }).unwrap_or_default();
+                (format!("{pkg}/Resources/Collision/shapes.json"), Deflater::default().file(text))
+            })
+        });
+        let mut files = crate::par::map_ordered(&with, crate::par::threads(2), Deflater::default, |d, (s, name)| {
+            (format!("{pkg}/Resources/Collision/{name}.obj"), d.file(collision::obj_text(s, name).into_bytes()))
+        });
+        files.extend(json.join().unwrap_or_else(|e| std::panic::resume_unwind(e)));
+        files
+    })
 }
 
 /// The world pose of every body's frame_a (CS1) at the CAD pose.

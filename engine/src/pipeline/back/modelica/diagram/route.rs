@@ -1,6 +1,6 @@
 //! Orthogonal routing on the 5-unit grid. A wire first tries a straight line, an elbow or a Z
 //! through a channel near its ends that stays out of every keep-out box and shares no cell with
-//! another wire ([`direct`]); otherwise A* over grid points outside every component's keep-out
+//! another wire beyond a short trunk at its ends ([`direct`]); otherwise A* over grid points outside every component's keep-out
 //! box, with a cost for each bend and for running over a cell another wire already uses, so
 //! wires take few bends and spread out. Each end leaves its connector straight out of the
 //! component first.
@@ -386,24 +386,60 @@ fn fallback(sheet: &mut Sheet, s: P, t: P) -> Option<Vec<P>> {
     None
 }
 
-/// Longest direct route (grid units) [`direct`] tries: its check costs a unit of work per cell,
-/// so this bounds that work per wire.
-const DIRECT_CELLS: i32 = 400;
+/// Longest direct route (grid units) [`direct`] tries: as long as a search may go
+/// ([`WIRE_EXPANSIONS`]; a longer wire goes to [`fallback`]). Its checks cost a unit of work per
+/// tile of 16 × 16 cells a candidate passes, at most [`DIRECT_WORK`] per wire.
+const DIRECT_CELLS: i32 = WIRE_EXPANSIONS as i32;
+/// Work [`direct`] may spend on one wire's candidates before it leaves the wire to the search.
+const DIRECT_WORK: u64 = 2_000;
+/// Cells a wire may share with other wires next to each of its ends (a trunk: wires fanning out
+/// of one connector run side by side out of it, as the search routes them too).
+pub(super) const TRUNK: i32 = 8;
 
-/// Whether no wire uses a cell of the corner list `pts` other than its two ends (one unit of
-/// work per tile of 16 × 16 cells looked at). Wires from one connector all start at its grid
-/// point, so the ends are shared by every route alike and the search charges them alike.
+/// Whether no wire uses a cell of the corner list `pts`, other than its two ends and the cells
+/// of a trunk at either end: up to [`TRUNK`] used cells in a row along the first segment from
+/// the first point, and along the last segment to the last; a straight route's trunks must not
+/// meet (one unit of work per tile of 16 × 16 cells looked at). Wires from one connector all start at its grid point, so the ends are
+/// shared by every route alike and the search charges them alike.
 fn unused(sheet: &mut Sheet, pts: &[P]) -> bool {
-    let (s, t) = (pts[0], pts[pts.len() - 1]);
-    let mut work = 0;
-    let clear = pts.windows(2).all(|w| !sheet.used.any_on(w[0], w[1], s, t, &mut work));
+    let n = pts.len();
+    let (s, t) = (pts[0], pts[n - 1]);
+    // The end of a segment's trunk at `from`, going towards `to`: the last of the used cells
+    // in a row after `from` (at most TRUNK), or `from` itself.
+    let trunk = |sheet: &Sheet, from: P, to: P| {
+        let (dx, dy) = ((to.0 - from.0).signum(), (to.1 - from.1).signum());
+        let len = (to.0 - from.0).abs() + (to.1 - from.1).abs();
+        let mut end = from;
+        for k in 1..=TRUNK.min(len - 1) {
+            let p = (from.0 + k * dx, from.1 + k * dy);
+            if !sheet.used.contains(p) {
+                break;
+            }
+            end = p;
+        }
+        end
+    };
+    let (first, last) = (trunk(sheet, s, pts[1]), trunk(sheet, t, pts[n - 2]));
+    // A straight route whose trunks meet would run on other wires from end to end.
+    if n == 2 && (first.0 - s.0).abs() + (first.1 - s.1).abs() + 1 >= (last.0 - s.0).abs() + (last.1 - s.1).abs() {
+        return first == s && last == t;
+    }
+    let mut work = 2;
+    // Each segment checked from corner to corner; a trunk's cells are skipped by starting the
+    // first segment at its trunk's end (itself skipped), and the last likewise.
+    let clear = (0..n - 1).all(|i| {
+        let (a, skip_a) = if i == 0 { (first, first) } else { (pts[i], s) };
+        let (b, skip_b) = if i == n - 2 { (last, last) } else { (pts[i + 1], t) };
+        !sheet.used.any_on(a, b, skip_a, skip_b, &mut work)
+    });
     sheet.work += work;
     clear
 }
 
 /// A route from `s` to `t` that needs no search: a straight line, one elbow, or two elbows (a Z
 /// through a channel near one of the ends), the first that stays out of every keep-out box and
-/// shares no cell with another wire. The straight line and the elbows (the only routes with at
+/// shares no cell with another wire but those of a trunk at its ends ([`unused`]), within
+/// [`DIRECT_WORK`]. The straight line and the elbows (the only routes with at
 /// most one bend, as short as any route) are tried first, then the Zs that go only towards
 /// `t` (as short), then those that overshoot (around a component, or out and back where both
 /// connectors face the same way). The elbow first leaves `s` along `first_x` (the stub's
@@ -412,7 +448,8 @@ fn direct(sheet: &mut Sheet, s: P, t: P, first_x: bool) -> Option<Vec<P>> {
     if (s.0 - t.0).abs() + (s.1 - t.1).abs() > DIRECT_CELLS {
         return None;
     }
-    let ok = |sheet: &mut Sheet, pts: &[P]| clear_path(sheet, pts) && unused(sheet, pts);
+    let start = sheet.work;
+    let ok = |sheet: &mut Sheet, pts: &[P]| sheet.work - start <= DIRECT_WORK && clear_path(sheet, pts) && unused(sheet, pts);
     if s.0 == t.0 || s.1 == t.1 {
         if ok(sheet, &[s, t]) {
             return Some(vec![s, t]);

@@ -234,3 +234,56 @@ fn hundreds_of_components_wanting_one_spot_are_placed_with_bounded_work() {
         assert!(rects[i + 1..].iter().all(|b| !a.overlaps(b)), "{a:?} overlaps");
     }
 }
+
+#[test]
+fn wires_fanning_out_of_one_connector_share_a_short_trunk_and_need_no_search() {
+    // A body's frame_a wired to three frames stacked below and to the right of it (a body's
+    // coordinate systems): every wire leaves the connector along the same cells, and the later
+    // ones are drawn without a search, each clean and with two bends.
+    let mut s = Sheet::default();
+    s.add("body", Class::TwoPort, want(10, 0));
+    for k in 1..=3 {
+        s.add(&format!("cs{k}"), Class::TwoPort, want(15, -100 - 100 * k));
+    }
+    for k in 1..=3 {
+        s.connect("body.frame_a", &format!("cs{k}.frame_a"), Style::Frame);
+    }
+    for w in &s.wires {
+        clean(&s, w).unwrap_or_else(|e| panic!("{e}: {:?}", w.points));
+        assert_eq!(w.points.len(), 4, "{:?}", w.points);
+    }
+    assert_eq!(s.spent, 0, "A* expansions");
+    // The later wires run on the first one's cells only next to the connector.
+    let first: std::collections::HashSet<(i64, i64)> = s.wires[0].points.windows(2).flat_map(|p| cells(p[0], p[1])).collect();
+    for w in &s.wires[1..] {
+        let shared = w.points.windows(2).flat_map(|p| cells(p[0], p[1])).filter(|c| first.contains(c)).count();
+        assert!((1..=route_trunk() + 2).contains(&shared), "{shared} cells shared: {:?}", w.points);
+    }
+}
+
+/// The grid cells (units of 5) of a straight segment, both ends.
+fn cells(a: (f64, f64), b: (f64, f64)) -> Vec<(i64, i64)> {
+    let g = |v: f64| (v / 5.0).round() as i64;
+    let (a, b) = ((g(a.0), g(a.1)), (g(b.0), g(b.1)));
+    let n = (b.0 - a.0).abs() + (b.1 - a.1).abs();
+    (0..=n).map(|k| (a.0 + k * (b.0 - a.0).signum(), a.1 + k * (b.1 - a.1).signum())).collect()
+}
+
+fn route_trunk() -> usize {
+    route::TRUNK as usize
+}
+
+#[test]
+fn a_long_wire_with_a_clear_elbow_is_drawn_without_a_search() {
+    // Ends 1,000 grid units apart (longer than a search window's margin, shorter than a search
+    // may go) and nothing between them: one elbow, found without expanding a node.
+    let mut s = Sheet::default();
+    s.add("a", Class::TwoPort, want(0, 0));
+    s.add("b", Class::TwoPort, Want { x: 200, y: -4_800, half: 10, flip: false });
+    let before = s.work();
+    s.connect("a.frame_b", "b.frame_a", Style::Frame);
+    let w = &s.wires[0];
+    clean(&s, w).unwrap_or_else(|e| panic!("{e}: {:?}", w.points));
+    assert_eq!(s.spent, 0, "A* expansions: {:?}", w.points);
+    assert!(s.work() - before < 200, "{} units of work", s.work() - before);
+}
