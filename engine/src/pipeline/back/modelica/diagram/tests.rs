@@ -127,13 +127,13 @@ fn the_fallback_threads_channels_between_rows_and_columns() {
 
 #[test]
 fn open_intervals_merge_and_answer_segment_queries() {
-    let mut m = Vec::new();
+    let mut m = Intervals::new();
     add_interval(&mut m, 0, 10);
     add_interval(&mut m, 20, 30);
     add_interval(&mut m, 5, 22);
     assert_eq!(m, vec![(0, 30)]);
     // Kept in order; touching intervals stay apart, an inner one is absorbed.
-    let mut m = Vec::new();
+    let mut m = Intervals::new();
     for (a, b) in [(50, 60), (0, 10), (30, 40), (10, 20), (32, 35), (-20, -10), (55, 70)] {
         add_interval(&mut m, a, b);
     }
@@ -142,7 +142,7 @@ fn open_intervals_merge_and_answer_segment_queries() {
     assert!(!meets(Some(&m), 41, 49));
     assert!(!meets(Some(&m), 40, 50), "between (30, 40) and (50, 70), touching both");
     assert!(meets(Some(&m), 5, 5));
-    let mut m = Vec::new();
+    let mut m = Intervals::new();
     add_interval(&mut m, 0, 10);
     add_interval(&mut m, 10, 20);
     assert!(!meets(Some(&m), 10, 10), "a point between two boxes");
