@@ -411,7 +411,7 @@ pub fn main() -> ExitCode {
             };
             let opts = Options { lump_welds, write_shapes: false, ..Options::default() };
             match pipeline::convert(&b, &opts) {
-                Ok(out) => match serde_json::to_string_pretty(&out.report) {
+                Ok(out) => match cad2mo_engine::jsontext::to_string(&out.report) {
                     Ok(s) => {
                         println!("{s}");
                         ExitCode::SUCCESS

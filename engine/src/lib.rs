@@ -19,6 +19,7 @@
 
 pub mod collision;
 pub mod diff;
+pub mod jsontext;
 pub mod library;
 pub mod live;
 pub mod mechanism;

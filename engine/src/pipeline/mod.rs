@@ -687,7 +687,7 @@ fn write_output(a: Analysed, opts: &Options, obs: &mut dyn Observer) -> Result<O
             let report = report;
             let (mut files, json) = std::thread::scope(|last| -> Result<_, ConvertError> {
                 let json = last.spawn(|| -> Result<_, ConvertError> {
-                    let json = serde_json::to_vec_pretty(&report).map_err(|e| ConvertError::Options(e.to_string()))?;
+                    let json = crate::jsontext::to_vec(&report).map_err(|e| ConvertError::Options(e.to_string()))?;
                     Ok(ahead(vec![("report.json".to_string(), json)]))
                 });
                 // The package documentation lists the report's findings and the drives: written

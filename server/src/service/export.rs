@@ -212,7 +212,7 @@ pub fn build_package(
     if !motions.specs.is_empty() {
         report["motions"] = serde_json::json!({ "written": written, "skipped": skipped });
     }
-    let report_json = serde_json::to_vec_pretty(&report).map_err(|e| ExportError::Zip(std::io::Error::other(e)))?;
+    let report_json = cad2mo_engine::jsontext::to_vec(&report).map_err(|e| ExportError::Zip(std::io::Error::other(e)))?;
     match files.iter_mut().find(|(path, _)| path == "report.json") {
         Some((_, bytes)) => *bytes = report_json.clone().into(),
         None => return Err(ExportError::Zip(std::io::Error::other("the conversion wrote no report.json"))),
