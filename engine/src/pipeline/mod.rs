@@ -731,7 +731,24 @@ fn write_output(a: Analysed, opts: &Options, obs: &mut dyn Observer) -> Result<O
                     }
                 }
                 files.extend(extras.files);
-                let mut files: Vec<(String, back::bundle::FileData)> = files.into_iter().map(|(p, b)| (p, b.into())).collect();
+                // The files still plain are final now, but for package.mo (the documentation,
+                // made beside) and those deflated ahead (`finished`, empty until they come back):
+                // deflated here, while the report's JSON may still be written, rather than when
+                // the zip is, after everything else.
+                let mut deflater = opts.write_shapes.then(back::bundle::Deflater::default);
+                let pkg_mo = format!("{package_name}/package.mo");
+                let mut files: Vec<(String, back::bundle::FileData)> = files
+                    .into_iter()
+                    .enumerate()
+                    .map(|(i, (p, b))| {
+                        let later = p == pkg_mo || finished.binary_search(&i).is_ok();
+                        let data = match &mut deflater {
+                            Some(d) if !later => d.file(b),
+                            _ => b.into(),
+                        };
+                        (p, data)
+                    })
+                    .collect();
                 if let (Some((_, text)), Some(doc)) =
                     (files.iter_mut().find(|(p, _)| *p == format!("{package_name}/package.mo")), join(doc))
                 {
@@ -778,15 +795,15 @@ mod memory_tests {
         let shapes: Vec<_> = out.files.iter().filter(|(p, _)| p.ends_with(".dxf") || p.ends_with(".stl")).collect();
         assert_eq!(shapes.len(), 6, "a DXF and an STL per link");
         assert!(shapes.iter().all(|(_, f)| f.is_deflated()), "every shape file deflated");
-        // The files final when made come deflated too (issue 23: on the threads that make them,
-        // the package documentation among them); those that get lines later, and Mechatronics,
-        // come plain.
+        // The other files come deflated too (issue 23: on the threads that make them, the
+        // package documentation among them, and the last ones before the conversion returns),
+        // but for those deflating does not shrink (the package.order files, a few lines).
         let deflated = |suffix: &str| out.files.iter().find(|(p, _)| p.ends_with(suffix)).map(|(_, f)| f.is_deflated());
-        for final_file in ["/Mechanics.mo", "report.json", "/shapes.json", ".mjcf.xml", ".urdf", "/package.mo"] {
-            assert_eq!(deflated(final_file), Some(true), "{final_file}");
+        for file in ["/Mechanics.mo", "/Mechatronics.mo", "report.json", "/shapes.json", ".mjcf.xml", ".urdf", "/package.mo"] {
+            assert_eq!(deflated(file), Some(true), "{file}");
         }
-        for later in ["/package.order", "/Components/package.order", "/Mechatronics.mo"] {
-            assert_eq!(deflated(later), Some(false), "{later}");
+        for (p, f) in &out.files {
+            assert!(f.is_deflated() || f.len() < 512, "{p}: {} bytes, plain", f.len());
         }
         // Without the package's shape files (the service's analyses), every file comes plain.
         let text = convert(&bundle, &Options { write_shapes: false, ..Options::default() }).expect("converts");
