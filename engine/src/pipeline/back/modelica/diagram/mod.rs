@@ -205,6 +205,25 @@ impl UsedCells {
         self.tiles.get(&tile).is_some_and(|t| t[word] & mask != 0)
     }
 
+    /// Marks every cell of the straight grid segment from `a` to `b` (one axis), both ends
+    /// included: one map lookup per tile the segment crosses.
+    fn insert_segment(&mut self, a: (i32, i32), b: (i32, i32)) {
+        let horizontal = a.1 == b.1;
+        let (lo, hi, fixed) = if horizontal { (a.0.min(b.0), a.0.max(b.0), a.1) } else { (a.1.min(b.1), a.1.max(b.1), a.0) };
+        let mut v = lo;
+        while v <= hi {
+            let end = (v | 15).min(hi);
+            let at = |k: i32| if horizontal { (k, fixed) } else { (fixed, k) };
+            let (tile, _, _) = Self::at(at(v));
+            let bits = self.tiles.entry(tile).or_default();
+            for k in v..=end {
+                let (_, word, mask) = Self::at(at(k));
+                bits[word] |= mask;
+            }
+            v = end + 1;
+        }
+    }
+
     /// Whether a cell of the straight grid segment from `a` to `b` (one axis) other than
     /// `skip1` and `skip2` is used; `work` counts the tiles looked at.
     fn any_on(&self, a: (i32, i32), b: (i32, i32), skip1: (i32, i32), skip2: (i32, i32), work: &mut u64) -> bool {

@@ -486,18 +486,6 @@ fn direct(sheet: &mut Sheet, s: P, t: P, first_x: bool) -> Option<Vec<P>> {
     None
 }
 
-/// The grid points of a corner list, each once, from its first to its last.
-fn cells_of(pts: &[P]) -> Vec<P> {
-    let mut out = vec![pts[0]];
-    for w in pts.windows(2) {
-        let (a, b) = (w[0], w[1]);
-        let n = (b.0 - a.0).abs() + (b.1 - a.1).abs();
-        let (dx, dy) = ((b.0 - a.0).signum(), (b.1 - a.1).signum());
-        out.extend((1..=n).map(|k| (a.0 + k * dx, a.1 + k * dy)));
-    }
-    out
-}
-
 /// Drops repeated points and the middle one of three collinear points.
 fn simplify(pts: Vec<(f64, f64)>) -> Vec<(f64, f64)> {
     let mut out: Vec<(f64, f64)> = Vec::with_capacity(pts.len());
@@ -533,7 +521,18 @@ pub(super) fn route(sheet: &mut Sheet, a: End, b: End) -> Vec<(f64, f64)> {
     let distance = u64::from((s.0 - t.0).unsigned_abs() + (s.1 - t.1).unsigned_abs());
     // The stub of `a` leaves its connector along x when its first segment is horizontal.
     let first_x = sa.len() >= 2 && (sa[0].1 - sa[1].1).abs() < 1e-9 && (sa[0].0 - sa[1].0).abs() > 1e-9;
-    let mut path = direct(sheet, s, t, first_x).map(|corners| cells_of(&corners));
+    // A direct route is marked and drawn by its corners (a long wire has thousands of cells).
+    if let Some(corners) = direct(sheet, s, t, first_x) {
+        for w in corners.windows(2) {
+            sheet.used.insert_segment(w[0], w[1]);
+        }
+        let mut pts = sa;
+        pts.extend(corners.iter().map(|&(x, y)| (f64::from(x * GRID), f64::from(y * GRID))));
+        sb.reverse();
+        pts.extend(sb);
+        return simplify(pts);
+    }
+    let mut path = None;
     for grow in WINDOWS {
         if path.is_some() {
             break;
