@@ -19,8 +19,8 @@ pub fn to_vec<T: Serialize + ?Sized>(value: &T) -> serde_json::Result<Vec<u8>> {
 
 /// `value` as [`to_vec`] writes it, as a string.
 pub fn to_string<T: Serialize + ?Sized>(value: &T) -> serde_json::Result<String> {
-    // serde_json writes only valid UTF-8.
-    to_vec(value).map(|v| String::from_utf8_lossy(&v).into_owned())
+    // serde_json writes only valid UTF-8: the bytes are taken as they are.
+    to_vec(value).map(|v| String::from_utf8(v).unwrap_or_else(|e| String::from_utf8_lossy(e.as_bytes()).into_owned()))
 }
 
 /// An open array: whether its elements went on lines of their own (the first was an array or

@@ -199,11 +199,11 @@ pub struct Output {
     /// Every file of the output zip, paths relative to its root: `<Pkg>/...` and `report.json`.
     /// When the package is written (`Options::write_shapes`), the bodies' DXF and STL files come
     /// deflated (`FileData::bytes` reads them), so that a conversion never holds them all as
-    /// plain bytes (issue 26, peak memory), and so do the other files that are final when made
-    /// (all but the `package.order` files, Mechatronics and what the observer adds;
-    /// `package.mo`'s documentation is written beside Mechatronics): they are deflated on the
-    /// threads that make them, beside the Modelica writing (issue 23). Which files come
-    /// deflated does not depend on the threads.
+    /// plain bytes (issue 26, peak memory), and so do the other files: those final when made on
+    /// the threads that make them, beside the Modelica writing (`package.mo`'s documentation
+    /// beside Mechatronics), the rest (Mechatronics, the `package.order` files, what the
+    /// observer adds) before the conversion returns (issue 23). A file deflating does not
+    /// shrink stays plain. Which files come deflated does not depend on the threads.
     pub files: Vec<(String, back::bundle::FileData)>,
     pub report: report::Report,
     /// How many collision shapes were computed and how many came from the shape cache (not in
@@ -749,9 +749,7 @@ fn write_output(a: Analysed, opts: &Options, obs: &mut dyn Observer) -> Result<O
                         (p, data)
                     })
                     .collect();
-                if let (Some((_, text)), Some(doc)) =
-                    (files.iter_mut().find(|(p, _)| *p == format!("{package_name}/package.mo")), join(doc))
-                {
+                if let (Some((_, text)), Some(doc)) = (files.iter_mut().find(|(p, _)| *p == pkg_mo), join(doc)) {
                     *text = doc;
                 }
                 Ok((files, join(json)?))

@@ -208,49 +208,48 @@ impl UsedCells {
     /// Marks every cell of the straight grid segment from `a` to `b` (one axis), both ends
     /// included: one map lookup per tile the segment crosses.
     fn insert_segment(&mut self, a: (i32, i32), b: (i32, i32)) {
-        let horizontal = a.1 == b.1;
-        let (lo, hi, fixed) = if horizontal { (a.0.min(b.0), a.0.max(b.0), a.1) } else { (a.1.min(b.1), a.1.max(b.1), a.0) };
-        let mut v = lo;
-        while v <= hi {
-            let end = (v | 15).min(hi);
-            let at = |k: i32| if horizontal { (k, fixed) } else { (fixed, k) };
-            let (tile, _, _) = Self::at(at(v));
+        for (tile, cells) in tile_runs(a, b) {
             let bits = self.tiles.entry(tile).or_default();
-            for k in v..=end {
-                let (_, word, mask) = Self::at(at(k));
+            for p in cells {
+                let (_, word, mask) = Self::at(p);
                 bits[word] |= mask;
             }
-            v = end + 1;
         }
     }
 
     /// Whether a cell of the straight grid segment from `a` to `b` (one axis) other than
     /// `skip1` and `skip2` is used; `work` counts the tiles looked at.
     fn any_on(&self, a: (i32, i32), b: (i32, i32), skip1: (i32, i32), skip2: (i32, i32), work: &mut u64) -> bool {
-        let horizontal = a.1 == b.1;
-        let (lo, hi, fixed) = if horizontal { (a.0.min(b.0), a.0.max(b.0), a.1) } else { (a.1.min(b.1), a.1.max(b.1), a.0) };
-        let mut v = lo;
-        while v <= hi {
-            let end = (v | 15).min(hi); // the last cell of this tile along the segment
+        for (tile, mut cells) in tile_runs(a, b) {
             *work += 1;
-            let probe = if horizontal { (v, fixed) } else { (fixed, v) };
-            let (tile, _, _) = Self::at(probe);
             if let Some(t) = self.tiles.get(&tile) {
-                for k in v..=end {
-                    let p = if horizontal { (k, fixed) } else { (fixed, k) };
-                    if p == skip1 || p == skip2 {
-                        continue;
-                    }
+                if cells.any(|p| {
                     let (_, word, mask) = Self::at(p);
-                    if t[word] & mask != 0 {
-                        return true;
-                    }
+                    p != skip1 && p != skip2 && t[word] & mask != 0
+                }) {
+                    return true;
                 }
             }
-            v = end + 1;
         }
         false
     }
+}
+
+/// The cells of the straight grid segment from `a` to `b` (one axis), both ends included, in
+/// runs of one [`UsedCells`] tile each, from the lower end: the tile's key and its cells.
+fn tile_runs(a: (i32, i32), b: (i32, i32)) -> impl Iterator<Item = ((i32, i32), impl Iterator<Item = (i32, i32)>)> {
+    let horizontal = a.1 == b.1;
+    let (lo, hi, fixed) = if horizontal { (a.0.min(b.0), a.0.max(b.0), a.1) } else { (a.1.min(b.1), a.1.max(b.1), a.0) };
+    let at = move |k: i32| if horizontal { (k, fixed) } else { (fixed, k) };
+    let mut v = lo;
+    std::iter::from_fn(move || {
+        (v <= hi).then(|| {
+            // The last cell of this tile along the segment.
+            let (start, end) = (v, (v | 15).min(hi));
+            v = end + 1;
+            (UsedCells::at(at(start)).0, (start..=end).map(at))
+        })
+    })
 }
 
 /// The components of a diagram and their wires.

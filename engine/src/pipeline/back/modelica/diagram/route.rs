@@ -1,8 +1,8 @@
 //! Orthogonal routing on the 5-unit grid. A wire first tries a straight line, an elbow or a Z
 //! through a channel near its ends that stays out of every keep-out box and shares no cell with
-//! another wire beyond a short trunk at its ends ([`direct`]); otherwise A* over grid points outside every component's keep-out
-//! box, with a cost for each bend and for running over a cell another wire already uses, so
-//! wires take few bends and spread out. Each end leaves its connector straight out of the
+//! another wire beyond a short trunk at its ends ([`direct`]); otherwise A* over grid points
+//! outside every component's keep-out box, with a cost for each bend and for running over a
+//! cell another wire already uses, so wires take few bends and spread out. Each end leaves its connector straight out of the
 //! component first.
 
 use std::cmp::Reverse;
@@ -399,8 +399,9 @@ pub(super) const TRUNK: i32 = 8;
 /// Whether no wire uses a cell of the corner list `pts`, other than its two ends and the cells
 /// of a trunk at either end: up to [`TRUNK`] used cells in a row along the first segment from
 /// the first point, and along the last segment to the last; a straight route's trunks must not
-/// meet (one unit of work per tile of 16 × 16 cells looked at). Wires from one connector all start at its grid point, so the ends are
-/// shared by every route alike and the search charges them alike.
+/// meet (one unit of work per tile of 16 × 16 cells looked at). Wires from one connector all
+/// start at its grid point, so the ends are shared by every route alike and the search charges
+/// them alike.
 fn unused(sheet: &mut Sheet, pts: &[P]) -> bool {
     let n = pts.len();
     let (s, t) = (pts[0], pts[n - 1]);
@@ -439,8 +440,8 @@ fn unused(sheet: &mut Sheet, pts: &[P]) -> bool {
 /// A route from `s` to `t` that needs no search: a straight line, one elbow, or two elbows (a Z
 /// through a channel near one of the ends), the first that stays out of every keep-out box and
 /// shares no cell with another wire but those of a trunk at its ends ([`unused`]), within
-/// [`DIRECT_WORK`]. The straight line and the elbows (the only routes with at
-/// most one bend, as short as any route) are tried first, then the Zs that go only towards
+/// [`DIRECT_WORK`]. The straight line and the elbows (the only routes with at most one bend, as
+/// short as any route) are tried first, then the Zs that go only towards
 /// `t` (as short), then those that overshoot (around a component, or out and back where both
 /// connectors face the same way). The elbow first leaves `s` along `first_x` (the stub's
 /// direction). Only for ends at most [`DIRECT_CELLS`] apart.
@@ -510,7 +511,7 @@ fn simplify(pts: Vec<(f64, f64)>) -> Vec<(f64, f64)> {
 /// marking the cells it uses.
 pub(super) fn route(sheet: &mut Sheet, a: End, b: End) -> Vec<(f64, f64)> {
     let sa = stub(a.0, &a.1);
-    let mut sb = stub(b.0, &b.1);
+    let sb = stub(b.0, &b.1);
     let s = sa.last().map(|p| (g(p.0), g(p.1))).unwrap_or_default();
     let t = sb.last().map(|p| (g(p.0), g(p.1))).unwrap_or_default();
     let bbox = Rect { x1: s.0.min(t.0), y1: s.1.min(t.1), x2: s.0.max(t.0), y2: s.1.max(t.1) };
@@ -526,17 +527,10 @@ pub(super) fn route(sheet: &mut Sheet, a: End, b: End) -> Vec<(f64, f64)> {
         for w in corners.windows(2) {
             sheet.used.insert_segment(w[0], w[1]);
         }
-        let mut pts = sa;
-        pts.extend(corners.iter().map(|&(x, y)| (f64::from(x * GRID), f64::from(y * GRID))));
-        sb.reverse();
-        pts.extend(sb);
-        return simplify(pts);
+        return drawn(sa, &corners, sb);
     }
     let mut path = None;
     for grow in WINDOWS {
-        if path.is_some() {
-            break;
-        }
         if distance > allowance {
             break;
         }
@@ -550,25 +544,26 @@ pub(super) fn route(sheet: &mut Sheet, a: End, b: End) -> Vec<(f64, f64)> {
         }
     }
     let Some(path) = path else {
-        let mut pts = sa;
-        match fallback(sheet, s, t) {
+        return match fallback(sheet, s, t) {
             // Not marked as used: that would cost the wire's length.
-            Some(corners) => pts.extend(corners.iter().map(|&(x, y)| (f64::from(x * GRID), f64::from(y * GRID)))),
+            Some(corners) => drawn(sa, &corners, sb),
             // No clear route: a straight orthogonal elbow (the layout test reports it).
             None => {
                 let (pa, pb) = (a.0 .0, b.0 .0);
-                return vec![pa, (pb.0, pa.1), pb];
+                vec![pa, (pb.0, pa.1), pb]
             }
-        }
-        sb.reverse();
-        pts.extend(sb);
-        return simplify(pts);
+        };
     };
     for p in &path {
         sheet.used.insert(*p);
     }
-    let mut pts = sa;
-    pts.extend(path.iter().map(|&(x, y)| (f64::from(x * GRID), f64::from(y * GRID))));
+    drawn(sa, &path, sb)
+}
+
+/// A wire's points: the stub out of its first connector (`sa`), the grid points `via` (grid
+/// units), then the stub `sb` back into its last connector, simplified.
+fn drawn(mut pts: Vec<(f64, f64)>, via: &[P], mut sb: Vec<(f64, f64)>) -> Vec<(f64, f64)> {
+    pts.extend(via.iter().map(|&(x, y)| (f64::from(x * GRID), f64::from(y * GRID))));
     sb.reverse();
     pts.extend(sb);
     simplify(pts)
